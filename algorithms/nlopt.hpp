@@ -1,0 +1,157 @@
+#pragma once
+// Any NLopt algorithm (Johnson, The NLopt nonlinear-optimization package,
+// https://github.com/stevengj/nlopt) by its NLopt name, on any box problem, as a baseline.
+//
+// Mapping to the framework: the evaluation limit becomes maxeval and is also enforced by the
+// evaluation guard (the objective stops NLopt before an evaluation past the budget); a target
+// value becomes stopval; wall time becomes maxtime; the seed seeds NLopt's generator
+// (nlopt_srand) and draws the starting point. NLopt has no iterations: one "iteration" here is a
+// block of `record_every` evaluations, so histories are comparable with population algorithms of
+// that size.
+// Decided by this project: the starting point is uniform in the box (drawn from the seed), so
+// that local algorithms differ between seeds; when NLopt stops on its own before any limit of the
+// run (it converged, possibly to a local minimum), it is restarted from a new uniform point, so a
+// baseline always spends the budget it is compared under (`restart = false` runs NLopt once);
+// algorithms that need a local optimiser (MLSL, AUGLAG) get LN_SBPLX; gradient-based algorithms
+// (LD_*, GD_*) are refused, since problems here give no gradients.
+#include <nlopt.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "framework/error.hpp"
+#include "framework/observer.hpp"
+#include "framework/problem.hpp"
+#include "framework/random.hpp"
+#include "framework/result.hpp"
+#include "framework/run_state.hpp"
+#include "framework/termination.hpp"
+
+namespace pride {
+
+/// Every NLopt algorithm that needs no gradient, by NLopt's name ("LN_SBPLX", "GN_CRS2_LM", ...).
+inline std::vector<std::string> nlopt_derivative_free_names() {
+    std::vector<std::string> names;
+    for (int a = 0; a < NLOPT_NUM_ALGORITHMS; ++a) {
+        const std::string name = nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(a));
+        if (name.find("D_") == std::string::npos) names.push_back(name);
+    }
+    return names;
+}
+
+class Nlopt {
+public:
+    /// `algorithm`: NLopt's name, with or without the "nlopt:" prefix.
+    explicit Nlopt(std::string algorithm, std::int64_t record_every = 50) : record_every(record_every) {
+        if (algorithm.rfind("nlopt:", 0) == 0) algorithm.erase(0, 6);
+        algorithm_ = algorithm;
+        validate();
+    }
+
+    std::int64_t record_every;
+    bool restart = true;
+
+    std::string name() const { return "nlopt:" + algorithm_; }
+
+    void validate() const {
+        const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm_.c_str());
+        require(static_cast<int>(a) >= 0, "--algo",
+                "unknown NLopt algorithm '" + algorithm_ + "' (see 'pride list')");
+        require(algorithm_.find("D_") == std::string::npos, name(),
+                "needs gradients, which pride's problems do not provide; use an LN_ or GN_ algorithm");
+        require(record_every >= 1, name(), "pop (evaluations per recorded iteration) must be >= 1");
+    }
+
+    template <BoxProblem P, Observer O = NoObserver>
+    Result run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
+        validate();
+        termination.validate(name());
+        const std::size_t dim = problem.dimension();
+        const auto lo = problem.lower();
+        const auto hi = problem.upper();
+        Rng rng(seed);
+        std::vector<double> x0(dim);
+        for (std::size_t d = 0; d < dim; ++d) x0[d] = rng.uniform(lo[d], hi[d]);
+        nlopt::srand(static_cast<unsigned long>(seed));
+
+        RunState state(termination, dim);
+        Matrix current(static_cast<Eigen::Index>(dim), 1);  // what the observer sees: the last point
+        double current_f = kInf;
+        auto record = [&] { state.end_iteration(observer, current, std::span<const double>(&current_f, 1)); };
+        std::int64_t limit = std::numeric_limits<std::int64_t>::max();
+        if (termination.max_evaluations) limit = *termination.max_evaluations;
+        if (termination.max_iterations) limit = std::min(limit, (*termination.max_iterations + 1) * record_every);
+
+        struct Context {
+            P* problem;
+            RunState* state;
+            Matrix* current;
+            double* current_f;
+            std::int64_t limit;
+            std::int64_t record_every;
+            decltype(record)* record_iteration;
+            const Termination* termination;
+        } context{&problem, &state, &current, &current_f, limit, record_every, &record, &termination};
+
+        auto objective = [](unsigned n, const double* x, double*, void* data) -> double {
+            auto& c = *static_cast<Context*>(data);
+            if (c.state->exhausted() || c.state->progress().evaluations >= c.limit ||
+                (c.state->progress().evaluations > 0 && c.termination->done(c.state->progress())))
+                throw nlopt::forced_stop();
+            const std::span<const double> point(x, n);
+            const double f = c.state->evaluate(*c.problem, point);
+            std::copy(point.begin(), point.end(), c.current->data());
+            *c.current_f = f;
+            if (c.state->progress().evaluations % c.record_every == 0) (*c.record_iteration)();
+            return f;
+        };
+        const std::vector<double> lower(lo.begin(), lo.end()), upper(hi.begin(), hi.end());
+        while (true) {
+            nlopt::opt opt = make_optimiser(dim);
+            opt.set_lower_bounds(lower);
+            opt.set_upper_bounds(upper);
+            opt.set_min_objective(objective, &context);
+            const std::int64_t left = limit - state.progress().evaluations;
+            if (left < std::numeric_limits<int>::max()) opt.set_maxeval(static_cast<int>(left));
+            if (termination.target) opt.set_stopval(*termination.target);
+            if (termination.wall_time) {
+                const auto spent = Clock::now() - state.progress().start;
+                opt.set_maxtime(std::chrono::duration<double>(*termination.wall_time - spent).count());
+            }
+            double fmin = kInf;
+            bool stopped_by_us = false;
+            try {
+                opt.optimize(x0, fmin);
+            } catch (const nlopt::forced_stop&) {
+                stopped_by_us = true;
+            } catch (const nlopt::roundoff_limited&) {
+            } catch (const std::invalid_argument& e) {
+                throw InputError(name() + ": NLopt refused the problem: " + e.what());
+            }
+            const bool limit_reached = stopped_by_us || state.progress().evaluations >= limit ||
+                                       termination.done(state.progress());
+            if (limit_reached || !restart || state.progress().evaluations == 0) break;
+            for (std::size_t d = 0; d < dim; ++d) x0[d] = rng.uniform(lo[d], hi[d]);
+        }
+        if (state.progress().evaluations % record_every != 0 || state.progress().evaluations == 0) record();
+        return state.finish();
+    }
+
+private:
+    nlopt::opt make_optimiser(std::size_t dim) const {
+        nlopt::opt opt(algorithm_.c_str(), static_cast<unsigned>(dim));
+        if (algorithm_.find("MLSL") != std::string::npos || algorithm_.find("AUGLAG") != std::string::npos) {
+            nlopt::opt local(nlopt::LN_SBPLX, static_cast<unsigned>(dim));
+            local.set_xtol_rel(1e-10);
+            opt.set_local_optimizer(local);
+        }
+        return opt;
+    }
+
+    std::string algorithm_;
+};
+
+}  // namespace pride

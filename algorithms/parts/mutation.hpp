@@ -1,0 +1,67 @@
+#pragma once
+// Mutation for real-coded GAs.
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <string>
+
+#include "algorithms/parts/power.hpp"
+#include "framework/error.hpp"
+#include "framework/random.hpp"
+
+namespace pride {
+
+/// Polynomial mutation, bounded form (Deb and Goyal 1996; the form of Deb's NSGA-II code and
+/// pagmo2). Each coordinate mutates with probability pm (pm < 0 means 1/D, the spec's default):
+///   d1 = (y - low)/(high - low), d2 = (high - y)/(high - low), u ~ U(0,1)
+///   u <= 1/2: dq = (2u + (1 - 2u)(1 - d1)^(eta+1))^(1/(eta+1)) - 1
+///   u >  1/2: dq = 1 - (2(1 - u) + 2(u - 1/2)(1 - d2)^(eta+1))^(1/(eta+1))
+///   y <- clamp(y + dq (high - low)).  Spec: eta = 20.
+/// The coordinates to mutate are found by geometric skips (one draw per mutated coordinate instead
+/// of one per coordinate); each coordinate still mutates independently with probability pm.
+class PolynomialMutation {
+public:
+    double eta = 20.0;
+    double probability = -1.0;
+
+    void validate(const std::string& where) const {
+        require(eta >= 0.0 && eta <= 1000.0, where, "eta_m must be in [0, 1000], got " + std::to_string(eta));
+        require(probability < 0.0 || probability <= 1.0, where,
+                "pm must be in [0, 1] (or negative for 1/D), got " + std::to_string(probability));
+    }
+
+    void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
+        const std::size_t n = x.size();
+        const double pm = probability < 0.0 ? 1.0 / static_cast<double>(n) : probability;
+        if (pm <= 0.0) return;
+        const FixedPower power(eta + 1.0);
+        const FixedPower root(1.0 / (eta + 1.0));
+        const double log_keep = std::log1p(-pm);  // -inf when pm = 1: every coordinate mutates
+        std::size_t i = next_skip(rng, log_keep);
+        for (; i < n; i += 1 + next_skip(rng, log_keep)) {
+            const double width = hi[i] - lo[i];
+            if (!(width > 0.0)) continue;
+            const double y = x[i];
+            const double u = rng.uniform();
+            double dq;
+            if (u <= 0.5) {
+                const double val = 2.0 * u + (1.0 - 2.0 * u) * power(1.0 - (y - lo[i]) / width);
+                dq = root(val) - 1.0;
+            } else {
+                const double val = 2.0 * (1.0 - u) + 2.0 * (u - 0.5) * power(1.0 - (hi[i] - y) / width);
+                dq = 1.0 - root(val);
+            }
+            x[i] = std::clamp(y + dq * width, lo[i], hi[i]);
+        }
+    }
+
+private:
+    /// Coordinates skipped before the next mutation: Geometric(pm) on {0, 1, ...}.
+    static std::size_t next_skip(Rng& rng, double log_keep) noexcept {
+        if (std::isinf(log_keep)) return 0;
+        const double skips = std::floor(std::log1p(-rng.uniform()) / log_keep);
+        return skips < 1e15 ? static_cast<std::size_t>(skips) : static_cast<std::size_t>(1e15);
+    }
+};
+
+}  // namespace pride

@@ -1,0 +1,54 @@
+#pragma once
+// x^e for a fixed exponent e, computed many times. The operators of Deb's real-coded GA raise to
+// 1/(eta+1) and eta+1, and std::pow costs tens of nanoseconds; for the usual integer eta these are
+// integer powers (exact by repeated squaring) or, when eta+1 is a power of two, repeated square
+// roots (each correctly rounded). Other exponents fall back to std::pow. The result depends only
+// on (x, e), so runs stay bit-reproducible.
+#include <cmath>
+
+namespace pride {
+
+class FixedPower {
+public:
+    explicit FixedPower(double exponent) : e_(exponent) {
+        if (exponent == std::floor(exponent) && std::abs(exponent) <= 64.0) {
+            kind_ = Kind::integer;
+            n_ = static_cast<int>(std::abs(exponent));
+            negative_ = exponent < 0;
+        } else {
+            const double inv = 1.0 / exponent;
+            for (int k = 1; k <= 6; ++k)
+                if (inv == static_cast<double>(1 << k)) {
+                    kind_ = Kind::roots;
+                    n_ = k;
+                }
+        }
+    }
+
+    double operator()(double x) const noexcept {
+        switch (kind_) {
+            case Kind::integer: {
+                double result = 1.0, base = x;
+                for (int n = n_; n > 0; n >>= 1) {
+                    if (n & 1) result *= base;
+                    base *= base;
+                }
+                return negative_ ? 1.0 / result : result;
+            }
+            case Kind::roots:
+                for (int k = 0; k < n_; ++k) x = std::sqrt(x);
+                return x;
+            default:
+                return std::pow(x, e_);
+        }
+    }
+
+private:
+    enum class Kind { integer, roots, general };
+    double e_;
+    Kind kind_ = Kind::general;
+    int n_ = 0;
+    bool negative_ = false;
+};
+
+}  // namespace pride

@@ -1,0 +1,36 @@
+#pragma once
+// The subcommands, separated from argument parsing so that each reads like its contract in
+// shared/spec/cli.md. Each writes its whole output only once it has succeeded.
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pride::cli {
+
+struct RunOptions {
+    std::string problem;
+    std::int64_t dim = 0;
+    std::string algo;
+    std::optional<std::int64_t> evals;
+    std::optional<std::int64_t> iters;
+    std::optional<double> target;
+    std::optional<double> wall_ms;
+    std::optional<std::int64_t> pop;
+    std::uint64_t seed = 1;
+    std::vector<std::string> params;  // "name=value"
+    bool json = false;
+};
+int run_command(const RunOptions& o, std::ostream& out);
+
+struct EvalOptions {
+    std::string problem;
+    std::string x;  // "v1,v2,..." or "-" for stdin
+    std::optional<std::int64_t> dim;
+};
+int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out);
+
+int list_command(bool json, std::ostream& out);
+
+}  // namespace pride::cli

@@ -1,0 +1,59 @@
+// pride: the command line of the framework (shared/spec/cli.md). Exit status 0 on success, 2 on
+// bad input (one line on stderr naming what and where), 1 on an internal failure.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "framework/error.hpp"
+
+int main(int argc, char** argv) {
+    using namespace pride::cli;
+    CLI::App app{"pride: metaheuristic optimisation with pluggable problems"};
+    app.require_subcommand(1);
+
+    RunOptions run;
+    auto* run_cmd = app.add_subcommand("run", "one run of an algorithm on a continuous problem");
+    run_cmd->add_option("--problem", run.problem, "problem name (see 'pride list')")->required();
+    run_cmd->add_option("--dim", run.dim, "dimension")->required();
+    run_cmd->add_option("--algo", run.algo, "algorithm name, e.g. pso, ga, nlopt:LN_SBPLX")->required();
+    auto* evals = run_cmd->add_option("--evals", run.evals, "evaluation budget (default 10000 * dim)");
+    run_cmd->add_option("--iters", run.iters, "iteration limit")->excludes(evals);
+    run_cmd->add_option("--target", run.target, "stop once the best value is <= this");
+    run_cmd->add_option("--wall-ms", run.wall_ms, "stop after this many milliseconds");
+    run_cmd->add_option("--pop", run.pop, "population size (NLopt: evaluations per recorded iteration)");
+    run_cmd->add_option("--seed", run.seed, "random seed (default 1)");
+    run_cmd->add_option("--param", run.params, "algorithm parameter NAME=VALUE (repeatable)");
+    run_cmd->add_flag("--json", run.json, "print one JSON object");
+
+    EvalOptions eval;
+    auto* eval_cmd = app.add_subcommand("eval", "the value of a continuous problem at given points");
+    eval_cmd->add_option("--problem", eval.problem, "problem name (see 'pride list')")->required();
+    eval_cmd->add_option("--x", eval.x, "V1,V2,... or - to read one point per line from stdin")->required();
+    eval_cmd->add_option("--dim", eval.dim, "check that every point has this many coordinates");
+
+    bool list_json = false;
+    auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
+    list_cmd->add_flag("--json", list_json, "print one JSON object");
+
+    try {
+        app.parse(argc, argv);
+        if (*run_cmd) return run_command(run, std::cout);
+        if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
+        if (*list_cmd) return list_command(list_json, std::cout);
+        return 2;
+    } catch (const CLI::Success& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        fmt::print(stderr, "pride: {}\n", e.what());
+        return 2;
+    } catch (const pride::InputError& e) {
+        fmt::print(stderr, "pride: {}\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "pride: internal error: {}\n", e.what());
+        return 1;
+    }
+}

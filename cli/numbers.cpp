@@ -1,0 +1,77 @@
+#include "cli/numbers.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+
+#include "framework/error.hpp"
+
+namespace pride::cli {
+
+namespace {
+std::string_view trim(std::string_view s) {
+    const auto first = s.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos) return {};
+    const auto last = s.find_last_not_of(" \t\r");
+    return s.substr(first, last - first + 1);
+}
+}  // namespace
+
+double parse_finite(std::string_view text, const std::string& where) {
+    const std::string_view t = trim(text);
+    double v = 0.0;
+    const char* begin = t.data();
+    const char* end = t.data() + t.size();
+    if (!t.empty() && *begin == '+') ++begin;  // from_chars refuses a leading '+'
+    const auto [ptr, ec] = std::from_chars(begin, end, v);
+    require(!t.empty() && ec == std::errc() && ptr == end && std::isfinite(v), where,
+            "'" + std::string(t) + "' is not a finite number");
+    return v;
+}
+
+std::vector<double> parse_point(std::string_view text, const std::string& where) {
+    require(!trim(text).empty(), where, "no coordinates given");
+    std::vector<double> point;
+    std::size_t start = 0;
+    for (std::size_t k = 1;; ++k) {
+        const auto comma = text.find(',', start);
+        const std::string_view token = text.substr(start, comma == std::string_view::npos ? text.npos : comma - start);
+        require(!trim(token).empty(), where, "coordinate " + std::to_string(k) + " is empty");
+        point.push_back(parse_finite(token, where + " coordinate " + std::to_string(k)));
+        if (comma == std::string_view::npos) break;
+        start = comma + 1;
+    }
+    return point;
+}
+
+std::string json_number(double v) { return std::isfinite(v) ? fmt::format("{}", v) : "null"; }
+
+std::string json_array(const std::vector<double>& values) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (i) out += ", ";
+        out += json_number(values[i]);
+    }
+    return out + "]";
+}
+
+std::string json_string(std::string_view s) {
+    std::string out = "\"";
+    for (const char c : s) {
+        switch (c) {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20)
+                    out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
+                else
+                    out += c;
+        }
+    }
+    return out + "\"";
+}
+
+}  // namespace pride::cli

@@ -1,0 +1,39 @@
+#pragma once
+// Bound handling as a policy: what to do with a coordinate an operator moved out of the box.
+#include <cmath>
+#include <cstddef>
+#include <span>
+
+namespace pride {
+
+/// Puts each coordinate on the nearest face of the box (the spec's default); NaN goes to the
+/// lower face.
+struct Clamp {
+    static constexpr const char* name = "clamp";
+    void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi) const {
+        for (std::size_t i = 0; i < x.size(); ++i) x[i] = !(x[i] >= lo[i]) ? lo[i] : (x[i] > hi[i] ? hi[i] : x[i]);
+    }
+};
+
+/// Mirrors each coordinate at the faces it crossed, as often as needed (so far excursions land
+/// inside too); a NaN coordinate goes to the lower face.
+struct Reflect {
+    static constexpr const char* name = "reflect";
+    void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi) const {
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            double v = x[i];
+            if (v >= lo[i] && v <= hi[i]) continue;
+            const double width = hi[i] - lo[i];
+            if (!(width > 0.0) || !std::isfinite(v)) {
+                x[i] = std::isnan(v) ? lo[i] : (v < lo[i] ? lo[i] : hi[i]);
+                continue;
+            }
+            double r = std::fmod(v - lo[i], 2.0 * width);  // position in one mirror period
+            if (r < 0) r += 2.0 * width;
+            v = r <= width ? lo[i] + r : hi[i] - (r - width);
+            x[i] = v < lo[i] ? lo[i] : (v > hi[i] ? hi[i] : v);  // rounding guard
+        }
+    }
+};
+
+}  // namespace pride

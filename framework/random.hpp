@@ -1,0 +1,98 @@
+#pragma once
+// Seeded random streams. There is no global generator: every run owns an Rng made from
+// (master seed, stream index), so a run is reproducible from its seed alone, bit for bit, whatever
+// else runs beside it. The generator is xoshiro256++ (Blackman and Vigna 2019) seeded through
+// splitmix64; the variates are computed here rather than with <random>'s distributions, whose
+// results differ between standard libraries.
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace pride {
+
+/// splitmix64 step (Steele, Lea and Flood 2014): a bijective mixer used to expand seeds.
+constexpr std::uint64_t splitmix64(std::uint64_t& state) noexcept {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
+__extension__ typedef unsigned __int128 uint128;  // GCC/Clang built-in, for Lemire's method
+
+class Rng {
+public:
+    using result_type = std::uint64_t;
+
+    /// One generator for one (master seed, stream) pair. Different pairs give streams whose
+    /// 256-bit starting states are hashed apart by splitmix64; stream 0 is the run's own stream.
+    explicit Rng(std::uint64_t seed, std::uint64_t stream = 0) noexcept {
+        std::uint64_t sm = seed;
+        std::uint64_t mixed = splitmix64(sm) ^ (stream * 0xD1B54A32D192ED03ULL + 0x8CB92BA72F3D8DD7ULL);
+        for (auto& word : s_) word = splitmix64(mixed);
+    }
+
+    static constexpr result_type min() noexcept { return 0; }
+    static constexpr result_type max() noexcept { return std::numeric_limits<result_type>::max(); }
+
+    result_type operator()() noexcept {
+        const std::uint64_t result = std::rotl(s_[0] + s_[3], 23) + s_[0];
+        const std::uint64_t t = s_[1] << 17;
+        s_[2] ^= s_[0];
+        s_[3] ^= s_[1];
+        s_[1] ^= s_[2];
+        s_[0] ^= s_[3];
+        s_[2] ^= t;
+        s_[3] = std::rotl(s_[3], 45);
+        return result;
+    }
+
+    /// U[0, 1) with 53 random bits.
+    double uniform() noexcept { return static_cast<double>((*this)() >> 11) * 0x1.0p-53; }
+
+    /// U[a, b).
+    double uniform(double a, double b) noexcept { return a + (b - a) * uniform(); }
+
+    /// Uniform integer in [0, n), unbiased (Lemire 2019), n > 0.
+    std::uint64_t below(std::uint64_t n) noexcept {
+        uint128 m = static_cast<uint128>((*this)()) * n;
+        auto low = static_cast<std::uint64_t>(m);
+        if (low < n) {
+            const std::uint64_t threshold = (0 - n) % n;
+            while (low < threshold) {
+                m = static_cast<uint128>((*this)()) * n;
+                low = static_cast<std::uint64_t>(m);
+            }
+        }
+        return static_cast<std::uint64_t>(m >> 64);
+    }
+
+    bool bernoulli(double p) noexcept { return uniform() < p; }
+
+    /// N(0, 1) by Marsaglia's polar method; the second variate of each pair is kept for the next
+    /// call, so the sequence depends only on the seed.
+    double normal() noexcept {
+        if (has_spare_) {
+            has_spare_ = false;
+            return spare_;
+        }
+        double u, v, s;
+        do {
+            u = 2.0 * uniform() - 1.0;
+            v = 2.0 * uniform() - 1.0;
+            s = u * u + v * v;
+        } while (s >= 1.0 || s == 0.0);
+        const double factor = std::sqrt(-2.0 * std::log(s) / s);
+        spare_ = v * factor;
+        has_spare_ = true;
+        return u * factor;
+    }
+
+private:
+    std::uint64_t s_[4]{};
+    double spare_ = 0.0;
+    bool has_spare_ = false;
+};
+
+}  // namespace pride

@@ -1,0 +1,22 @@
+#pragma once
+// What every run reports, whatever the algorithm: the best point ever evaluated and its value,
+// the evaluations and iterations used, the best value after each iteration, and the wall time.
+#include <cstdint>
+#include <vector>
+
+namespace pride {
+
+struct Result {
+    std::vector<double> best_x;  // the genotype; an Encoded problem's decode() gives the solution
+    double best_f = 0.0;         // +inf when no evaluation gave a finite value
+    std::int64_t evaluations = 0;
+    std::int64_t iterations = 0;  // completed iterations after the initial population
+    /// history[k]: best value after iteration k (k = 0 is the initial population), and
+    /// history_evaluations[k] the evaluations spent by then; one entry more than `iterations`
+    /// when the run stopped at the end of an iteration.
+    std::vector<double> history;
+    std::vector<std::int64_t> history_evaluations;
+    double wall_ms = 0.0;  // from population set-up to the end of the run
+};
+
+}  // namespace pride

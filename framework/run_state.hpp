@@ -1,0 +1,117 @@
+#pragma once
+// The run driver every algorithm shares: the evaluation guard (exact budget, NaN/inf never best,
+// the best point ever evaluated), the stopping rules, the history and the observer calls, and the
+// wall clock. An algorithm's loop is then only its own equations.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "framework/observer.hpp"
+#include "framework/problem.hpp"
+#include "framework/result.hpp"
+#include "framework/termination.hpp"
+
+namespace pride {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// NaN and +-inf become +inf: worse than every finite value, so never the best.
+inline double sanitize(double f) noexcept { return std::isfinite(f) ? f : kInf; }
+
+class RunState {
+public:
+    RunState(const Termination& termination, std::size_t dimension)
+        : termination_(termination),
+          limit_(termination.max_evaluations.value_or(std::numeric_limits<std::int64_t>::max())),
+          best_x_(dimension, std::numeric_limits<double>::quiet_NaN()) {
+        progress_.start = Clock::now();
+    }
+
+    /// One counted evaluation. Precondition: !exhausted(); breaking it is a bug in the algorithm,
+    /// and throws rather than overspend the budget.
+    template <BoxProblem P>
+    double evaluate(P& problem, std::span<const double> x) {
+        if (progress_.evaluations >= limit_) throw std::logic_error("evaluation budget overspent");
+        const double f = sanitize(problem.evaluate(x));
+        ++progress_.evaluations;
+        if (f < progress_.best) {
+            progress_.best = f;
+            std::copy(x.begin(), x.end(), best_x_.begin());
+        }
+        return f;
+    }
+
+    /// Evaluates the first min(points.cols(), remaining()) columns into `values` and returns how
+    /// many; columns past the budget get +inf. Uses the problem's batch evaluation when it has one.
+    template <BoxProblem P>
+    Eigen::Index evaluate_columns(P& problem, const Matrix& points, std::span<double> values) {
+        const Eigen::Index n = std::min<Eigen::Index>(points.cols(), static_cast<Eigen::Index>(remaining()));
+        if constexpr (BatchBoxProblem<P>) {
+            problem.evaluate_batch(points.leftCols(n), values.first(static_cast<std::size_t>(n)));
+            for (Eigen::Index j = 0; j < n; ++j) {
+                auto& f = values[static_cast<std::size_t>(j)];
+                f = sanitize(f);
+                ++progress_.evaluations;
+                if (f < progress_.best) {
+                    progress_.best = f;
+                    const auto x = column(points, j);
+                    std::copy(x.begin(), x.end(), best_x_.begin());
+                }
+            }
+        } else {
+            for (Eigen::Index j = 0; j < n; ++j) values[static_cast<std::size_t>(j)] = evaluate(problem, column(points, j));
+        }
+        for (auto j = static_cast<std::size_t>(n); j < static_cast<std::size_t>(points.cols()); ++j) values[j] = kInf;
+        return n;
+    }
+
+    bool exhausted() const noexcept { return progress_.evaluations >= limit_; }
+    std::int64_t remaining() const noexcept { return limit_ - progress_.evaluations; }
+    /// True once a stopping rule holds or the budget is spent.
+    bool done() const { return exhausted() || termination_.done(progress_); }
+
+    /// Closes an iteration: the first call closes the initial population (iteration 0), each later
+    /// one the next iteration. Records the history and shows the population to the observer.
+    template <Observer O>
+    void end_iteration(O& observer, const Matrix& population, std::span<const double> fitness) {
+        if (started_) ++progress_.iterations;
+        started_ = true;
+        history_.push_back(progress_.best);
+        history_evaluations_.push_back(progress_.evaluations);
+        observer(IterationView{progress_.iterations, progress_.evaluations, progress_.best, best_x_,
+                               population, fitness});
+    }
+
+    const Progress& progress() const noexcept { return progress_; }
+    std::int64_t iteration() const noexcept { return progress_.iterations; }
+    double best() const noexcept { return progress_.best; }
+    std::span<const double> best_x() const noexcept { return best_x_; }
+    const Termination& termination() const noexcept { return termination_; }
+
+    Result finish() {
+        Result r;
+        r.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - progress_.start).count();
+        r.best_x = std::move(best_x_);
+        r.best_f = progress_.best;
+        r.evaluations = progress_.evaluations;
+        r.iterations = progress_.iterations;
+        r.history = std::move(history_);
+        r.history_evaluations = std::move(history_evaluations_);
+        return r;
+    }
+
+private:
+    Termination termination_;
+    std::int64_t limit_;
+    Progress progress_;
+    std::vector<double> best_x_;
+    std::vector<double> history_;
+    std::vector<std::int64_t> history_evaluations_;
+    bool started_ = false;
+};
+
+}  // namespace pride

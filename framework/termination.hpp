@@ -1,0 +1,84 @@
+#pragma once
+// Stopping rules: maximum evaluations (exact: the evaluation guard never exceeds it), maximum
+// iterations, a target value, wall time. Each is a Termination with one limit set; `a | b` stops
+// at whichever comes first. Checked once per iteration, never per evaluation.
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "framework/error.hpp"
+
+namespace pride {
+
+using Clock = std::chrono::steady_clock;
+
+/// Where a run stands, as the stopping rules see it.
+struct Progress {
+    std::int64_t evaluations = 0;
+    std::int64_t iterations = 0;  // completed iterations after the initial population
+    double best = std::numeric_limits<double>::infinity();
+    Clock::time_point start{};
+};
+
+class Termination {
+public:
+    std::optional<std::int64_t> max_evaluations;
+    std::optional<std::int64_t> max_iterations;
+    std::optional<double> target;  // stop once best <= target
+    std::optional<Clock::duration> wall_time;
+
+    /// True when any limit set is reached.
+    bool done(const Progress& p) const {
+        if (max_evaluations && p.evaluations >= *max_evaluations) return true;
+        if (max_iterations && p.iterations >= *max_iterations) return true;
+        if (target && p.best <= *target) return true;
+        if (wall_time && Clock::now() - p.start >= *wall_time) return true;
+        return false;
+    }
+
+    /// Throws unless a run under these rules is bound to end (a target alone may never be met).
+    void validate(const std::string& where) const {
+        require(max_evaluations || max_iterations || wall_time, where,
+                "no evaluation, iteration or wall-time limit is set, so the run might never end");
+        if (max_evaluations) require(*max_evaluations >= 1, where, "the evaluation limit must be >= 1");
+        if (max_iterations) require(*max_iterations >= 0, where, "the iteration limit must be >= 0");
+    }
+
+    /// The number of iterations T that schedules (inertia weight, step sizes) run over: the
+    /// iteration limit, or the iterations the evaluation limit allows after an initial population
+    /// of `initial_evaluations` at `evaluations_per_iteration` each (a partial last iteration
+    /// counts). Empty when neither limit is set.
+    std::optional<std::int64_t> horizon(std::int64_t initial_evaluations,
+                                        std::int64_t evaluations_per_iteration) const {
+        std::optional<std::int64_t> t = max_iterations;
+        if (max_evaluations && evaluations_per_iteration > 0) {
+            const std::int64_t left = std::max<std::int64_t>(0, *max_evaluations - initial_evaluations);
+            const std::int64_t by_evals =
+                (left + evaluations_per_iteration - 1) / evaluations_per_iteration;
+            t = t ? std::min(*t, by_evals) : by_evals;
+        }
+        return t;
+    }
+
+    friend Termination operator|(Termination a, const Termination& b) {
+        auto tighter = [](auto& x, const auto& y, auto pick) {
+            if (y) x = x ? pick(*x, *y) : *y;
+        };
+        auto min = [](auto u, auto v) { return std::min(u, v); };
+        auto max = [](auto u, auto v) { return std::max(u, v); };
+        tighter(a.max_evaluations, b.max_evaluations, min);
+        tighter(a.max_iterations, b.max_iterations, min);
+        tighter(a.target, b.target, max);
+        tighter(a.wall_time, b.wall_time, min);
+        return a;
+    }
+};
+
+inline Termination max_evaluations(std::int64_t n) { Termination t; t.max_evaluations = n; return t; }
+inline Termination max_iterations(std::int64_t n) { Termination t; t.max_iterations = n; return t; }
+inline Termination target_value(double f) { Termination t; t.target = f; return t; }
+inline Termination wall_time(Clock::duration d) { Termination t; t.wall_time = d; return t; }
+
+}  // namespace pride

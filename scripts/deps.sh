@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs, with apt-get, only the Debian packages pride needs that are missing.
+# Idempotent: when everything is present it runs no apt command and returns at once.
+# Usage: scripts/deps.sh [--bench]   (--bench adds libpagmo-dev for the side-by-side benchmark)
+set -euo pipefail
+packages=(build-essential cmake ninja-build libeigen3-dev libnlopt-cxx-dev catch2 libfmt-dev libcli11-dev)
+[[ "${1:-}" == "--bench" ]] && packages+=(libpagmo-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "deps: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  [[ $(id -u) -ne 0 ]] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
