@@ -7,7 +7,8 @@
 //   Clerc, M. and Kennedy, J. (2002). The particle swarm - explosion, stability, and convergence in
 //     a multidimensional complex space. IEEE TEC 6(1), 58-73 (the constriction factor).
 //
-// Per iteration t, for each particle i and coordinate d, with r1, r2 ~ U(0,1) drawn per coordinate:
+// Per iteration t, for each particle i and coordinate d, with r1, r2 ~ U(0,1) drawn per coordinate
+// (for each particle: r1 of every coordinate, then r2 of every coordinate):
 //   (1) v_id <- a v_id + b1 r1 (p_id - x_id) + b2 r2 (g_d - x_id)   (a, b1, b2 from the Velocity policy:
 //       w(t), c1, c2 for the inertia form; chi, chi c, chi c for the constriction form)
 //   (2) v_id <- clamp(v_id, -vmax_d, vmax_d)                          (VelocityClamp policy)
@@ -70,8 +71,9 @@ public:
 
         Rng rng(seed);
         RunState state(termination, dim);
-        Matrix x(static_cast<Eigen::Index>(dim), n), v(x.rows(), n), p(x.rows(), n);
-        std::vector<double> fx(static_cast<std::size_t>(n)), fp(fx.size()), vmax(dim), g(dim);
+        const auto rows = static_cast<Eigen::Index>(dim);
+        Matrix x(rows, n), v(rows, n), p(rows, n);
+        std::vector<double> fx(static_cast<std::size_t>(n)), fp(fx.size()), vmax(dim), g(dim), r1(dim), r2(dim);
         for (std::size_t d = 0; d < dim; ++d) vmax[d] = velocity_clamp.limit(lo[d], hi[d]);
 
         init(problem, rng, x);
@@ -83,9 +85,8 @@ public:
         p = x;
         fp = fx;
         auto refresh_global_best = [&] {
-            const auto best = std::min_element(fp.begin(), fp.end()) - fp.begin();
-            const auto col = column(p, best);
-            std::copy(col.begin(), col.end(), g.begin());
+            const auto best = column(p, std::min_element(fp.begin(), fp.end()) - fp.begin());
+            std::copy(best.begin(), best.end(), g.begin());
         };
         refresh_global_best();
         state.end_iteration(observer, x, fx);
@@ -96,13 +97,12 @@ public:
                 double* xi = x.col(i).data();
                 double* vi = v.col(i).data();
                 const double* pi = p.col(i).data();
+                rng.fill_uniform(r1);  // r1 for every coordinate, then r2
+                rng.fill_uniform(r2);
                 for (std::size_t d = 0; d < dim; ++d) {
-                    const double r1 = rng.uniform();
-                    const double r2 = rng.uniform();
-                    double vd = a * vi[d] + b1 * r1 * (pi[d] - xi[d]) + b2 * r2 * (g[d] - xi[d]);  // (1)
-                    vd = std::clamp(vd, -vmax[d], vmax[d]);                                       // (2)
-                    vi[d] = vd;
-                    xi[d] += vd;                                                                  // (3)
+                    const double vd = a * vi[d] + b1 * r1[d] * (pi[d] - xi[d]) + b2 * r2[d] * (g[d] - xi[d]);  // (1)
+                    vi[d] = std::max(-vmax[d], std::min(vd, vmax[d]));  // (2), branch-free
+                    xi[d] += vi[d];                                     // (3)
                 }
                 bounds(column(x, i), lo, hi);
                 const auto ui = static_cast<std::size_t>(i);

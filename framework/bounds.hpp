@@ -1,5 +1,6 @@
 #pragma once
 // Bound handling as a policy: what to do with a coordinate an operator moved out of the box.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <span>
@@ -11,7 +12,8 @@ namespace pride {
 struct Clamp {
     static constexpr const char* name = "clamp";
     void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi) const {
-        for (std::size_t i = 0; i < x.size(); ++i) x[i] = !(x[i] >= lo[i]) ? lo[i] : (x[i] > hi[i] ? hi[i] : x[i]);
+        // max(lo, min(x, hi)) compiles to branch-free minsd/maxsd and sends NaN to lo.
+        for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::max(lo[i], std::min(x[i], hi[i]));
     }
 };
 

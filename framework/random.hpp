@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 
 namespace pride {
 
@@ -36,20 +37,22 @@ public:
     static constexpr result_type min() noexcept { return 0; }
     static constexpr result_type max() noexcept { return std::numeric_limits<result_type>::max(); }
 
-    result_type operator()() noexcept {
-        const std::uint64_t result = std::rotl(s_[0] + s_[3], 23) + s_[0];
-        const std::uint64_t t = s_[1] << 17;
-        s_[2] ^= s_[0];
-        s_[3] ^= s_[1];
-        s_[1] ^= s_[2];
-        s_[0] ^= s_[3];
-        s_[2] ^= t;
-        s_[3] = std::rotl(s_[3], 45);
-        return result;
-    }
+    result_type operator()() noexcept { return step(s_[0], s_[1], s_[2], s_[3]); }
 
     /// U[0, 1) with 53 random bits.
-    double uniform() noexcept { return static_cast<double>((*this)() >> 11) * 0x1.0p-53; }
+    double uniform() noexcept { return to_unit((*this)()); }
+
+    /// Fills `out` with U[0, 1) draws: the same numbers, in the same order, as out.size() calls
+    /// of uniform(), but with the state held in registers, so hot loops can draw in bulk first
+    /// and then run vectorisable arithmetic.
+    void fill_uniform(std::span<double> out) noexcept {
+        std::uint64_t a = s_[0], b = s_[1], c = s_[2], d = s_[3];
+        for (double& v : out) v = to_unit(step(a, b, c, d));
+        s_[0] = a;
+        s_[1] = b;
+        s_[2] = c;
+        s_[3] = d;
+    }
 
     /// U[a, b).
     double uniform(double a, double b) noexcept { return a + (b - a) * uniform(); }
@@ -90,6 +93,21 @@ public:
     }
 
 private:
+    static double to_unit(std::uint64_t bits) noexcept { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
+
+    /// One xoshiro256++ step on the state words given.
+    static std::uint64_t step(std::uint64_t& s0, std::uint64_t& s1, std::uint64_t& s2, std::uint64_t& s3) noexcept {
+        const std::uint64_t result = std::rotl(s0 + s3, 23) + s0;
+        const std::uint64_t t = s1 << 17;
+        s2 ^= s0;
+        s3 ^= s1;
+        s1 ^= s2;
+        s0 ^= s3;
+        s2 ^= t;
+        s3 = std::rotl(s3, 45);
+        return result;
+    }
+
     std::uint64_t s_[4]{};
     double spare_ = 0.0;
     bool has_spare_ = false;
