@@ -32,12 +32,21 @@
 
 namespace pride {
 
-/// Every NLopt algorithm that needs no gradient, by NLopt's name ("LN_SBPLX", "GN_CRS2_LM", ...).
+/// NLopt names its gradient-based algorithms LD_* and GD_*.
+inline bool nlopt_needs_gradient(const std::string& name) {
+    return name.size() > 3 && name[1] == 'D' && name[2] == '_';
+}
+
+/// Every NLopt algorithm of this NLopt build that needs no gradient, by NLopt's name ("LN_SBPLX",
+/// "GN_CRS2_LM", ...); algorithms the build left out ("NOT COMPILED") are not listed.
 inline std::vector<std::string> nlopt_derivative_free_names() {
     std::vector<std::string> names;
     for (int a = 0; a < NLOPT_NUM_ALGORITHMS; ++a) {
-        const std::string name = nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(a));
-        if (name.find("D_") == std::string::npos) names.push_back(name);
+        const auto algorithm = static_cast<nlopt_algorithm>(a);
+        const std::string name = nlopt_algorithm_to_string(algorithm);
+        if (!nlopt_needs_gradient(name) &&
+            std::string(nlopt_algorithm_name(algorithm)).find("NOT COMPILED") == std::string::npos)
+            names.push_back(name);
     }
     return names;
 }
@@ -60,7 +69,9 @@ public:
         const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm_.c_str());
         require(static_cast<int>(a) >= 0, "--algo",
                 "unknown NLopt algorithm '" + algorithm_ + "' (see 'pride list')");
-        require(algorithm_.find("D_") == std::string::npos, name(),
+        require(std::string(nlopt_algorithm_name(a)).find("NOT COMPILED") == std::string::npos, name(),
+                "is not compiled into this NLopt build");
+        require(!nlopt_needs_gradient(algorithm_), name(),
                 "needs gradients, which pride's problems do not provide; use an LN_ or GN_ algorithm");
         require(record_every >= 1, name(), "pop (evaluations per recorded iteration) must be >= 1");
     }
@@ -83,7 +94,13 @@ public:
         auto record = [&] { state.end_iteration(observer, current, std::span<const double>(&current_f, 1)); };
         std::int64_t limit = std::numeric_limits<std::int64_t>::max();
         if (termination.max_evaluations) limit = *termination.max_evaluations;
-        if (termination.max_iterations) limit = std::min(limit, (*termination.max_iterations + 1) * record_every);
+        if (termination.max_iterations && *termination.max_iterations < limit / record_every - 1)
+            limit = std::min(limit, (*termination.max_iterations + 1) * record_every);
+        // Inside NLopt only the target and the wall clock are checked per evaluation; evaluation
+        // and iteration limits are `limit`.
+        Termination per_evaluation = termination;
+        per_evaluation.max_evaluations.reset();
+        per_evaluation.max_iterations.reset();
 
         struct Context {
             P* problem;
@@ -94,7 +111,7 @@ public:
             std::int64_t record_every;
             decltype(record)* record_iteration;
             const Termination* termination;
-        } context{&problem, &state, &current, &current_f, limit, record_every, &record, &termination};
+        } context{&problem, &state, &current, &current_f, limit, record_every, &record, &per_evaluation};
 
         auto objective = [](unsigned n, const double* x, double*, void* data) -> double {
             auto& c = *static_cast<Context*>(data);

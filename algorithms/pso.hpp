@@ -8,7 +8,7 @@
 //     a multidimensional complex space. IEEE TEC 6(1), 58-73 (the constriction factor).
 //
 // Per iteration t, for each particle i and coordinate d, with r1, r2 ~ U(0,1) drawn per coordinate
-// (for each particle: r1 of every coordinate, then r2 of every coordinate):
+// (both from one generator step, 32 bits each: see Rng::fill_uniform_pairs):
 //   (1) v_id <- a v_id + b1 r1 (p_id - x_id) + b2 r2 (g_d - x_id)   (a, b1, b2 from the Velocity policy:
 //       w(t), c1, c2 for the inertia form; chi, chi c, chi c for the constriction form)
 //   (2) v_id <- clamp(v_id, -vmax_d, vmax_d)                          (VelocityClamp policy)
@@ -97,8 +97,7 @@ public:
                 double* xi = x.col(i).data();
                 double* vi = v.col(i).data();
                 const double* pi = p.col(i).data();
-                rng.fill_uniform(r1);  // r1 for every coordinate, then r2
-                rng.fill_uniform(r2);
+                rng.fill_uniform_pairs(r1, r2);
                 for (std::size_t d = 0; d < dim; ++d) {
                     const double vd = a * vi[d] + b1 * r1[d] * (pi[d] - xi[d]) + b2 * r2[d] * (g[d] - xi[d]);  // (1)
                     vi[d] = std::max(-vmax[d], std::min(vd, vmax[d]));  // (2), branch-free

@@ -38,10 +38,14 @@ int run_command(const RunOptions& o, std::ostream& out) {
     if (o.target) t = t | target_value(*o.target);
     if (o.wall_ms) {
         require(*o.wall_ms > 0, "--wall-ms", "must be > 0");
-        t = t | wall_time(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(*o.wall_ms)));
+        // A limit beyond what the clock can count (about 292 years) is no limit.
+        const double longest = std::chrono::duration<double, std::milli>(Clock::duration::max()).count();
+        if (*o.wall_ms < longest)
+            t = t | wall_time(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(*o.wall_ms)));
     }
 
-    const Result r = runner(problem, t, o.seed);
+    require(o.seed >= 0, "--seed", "must be >= 0, got " + std::to_string(o.seed));
+    const Result r = runner(problem, t, static_cast<std::uint64_t>(o.seed));
     if (o.json) {
         out << fmt::format(
             "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"seed\": {}, \"best_f\": {}, \"best_x\": {}, "
@@ -76,7 +80,7 @@ int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out) {
     if (o.dim)
         require(static_cast<std::int64_t>(dim) == *o.dim, o.x == "-" ? "stdin" : "--x",
                 "expected " + std::to_string(*o.dim) + " coordinates (--dim), got " + std::to_string(dim));
-    auto problem = continuous::make_problem(o.problem, static_cast<std::int64_t>(dim));
+    auto problem = continuous::make_problem(o.problem, static_cast<std::int64_t>(dim), o.x == "-" ? "stdin" : "--x");
     std::string text;
     for (const auto& x : points)
         text += fmt::format("{:.17g}\n", std::visit([&](auto& p) { return p.evaluate(x); }, problem));

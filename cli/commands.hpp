@@ -18,7 +18,7 @@ struct RunOptions {
     std::optional<double> target;
     std::optional<double> wall_ms;
     std::optional<std::int64_t> pop;
-    std::uint64_t seed = 1;
+    std::int64_t seed = 1;
     std::vector<std::string> params;  // "name=value"
     bool json = false;
 };

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -39,6 +40,11 @@ int main(int argc, char** argv) {
     list_cmd->add_flag("--json", list_json, "print one JSON object");
 
     try {
+        const auto subcommands = app.get_subcommands([](const CLI::App*) { return true; });
+        const bool known = argc > 1 && std::any_of(subcommands.begin(), subcommands.end(),
+                                                   [&](const CLI::App* s) { return s->get_name() == argv[1]; });
+        if (argc > 1 && argv[1][0] != '-' && !known)
+            throw pride::InputError(std::string("unknown subcommand '") + argv[1] + "' (expected run, eval or list)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);

@@ -30,10 +30,15 @@ struct Reflect {
                 x[i] = std::isnan(v) ? lo[i] : (v < lo[i] ? lo[i] : hi[i]);
                 continue;
             }
+            const double outside = v < lo[i] ? lo[i] - v : v - hi[i];  // > 0
+            if (outside <= width) {  // one mirror, the usual case; also safe near +-DBL_MAX
+                x[i] = v < lo[i] ? std::min(hi[i], lo[i] + outside) : std::max(lo[i], hi[i] - outside);
+                continue;
+            }
             double r = std::fmod(v - lo[i], 2.0 * width);  // position in one mirror period
             if (r < 0) r += 2.0 * width;
             v = r <= width ? lo[i] + r : hi[i] - (r - width);
-            x[i] = v < lo[i] ? lo[i] : (v > hi[i] ? hi[i] : v);  // rounding guard
+            x[i] = !(v >= lo[i]) ? lo[i] : (v > hi[i] ? hi[i] : v);  // rounding (and overflow) guard
         }
     }
 };

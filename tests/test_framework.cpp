@@ -199,16 +199,21 @@ TEST_CASE("framework: Rng below(n) is in range and roughly uniform", "[framework
     CHECK(chi2 < 40.0);
 
     // A range that is not a power of two and near 2^64: the upper and lower thirds get about
-    // as many draws each (a modulo-biased method would favour the low values).
+    // as many draws each (a modulo-biased method would favour the low values), and so do the
+    // residues mod 3. Multiply-shift without Lemire's rejection step maps two of the 2^64 words
+    // to every multiple of 3 and one to the others, so half the draws would be multiples of 3.
     const std::uint64_t big = 0xC000000000000000ULL;  // 3 * 2^62
-    int low_third = 0, high_third = 0;
+    int low_third = 0, high_third = 0, multiple_of_3 = 0;
     for (int i = 0; i < 90000; ++i) {
         const std::uint64_t v = r.below(big);
+        REQUIRE(v < big);
         low_third += v < big / 3;
         high_third += v >= 2 * (big / 3);
+        multiple_of_3 += v % 3 == 0;
     }
-    CHECK(std::abs(low_third - 30000) < 1000);
+    CHECK(std::abs(low_third - 30000) < 1000);    // sd 141
     CHECK(std::abs(high_third - 30000) < 1000);
+    CHECK(std::abs(multiple_of_3 - 30000) < 1000);
 }
 
 TEST_CASE("framework: Rng normal() has mean 0 and variance 1", "[framework][rng]") {
@@ -451,6 +456,28 @@ TEST_CASE("framework: Clamp and Reflect on hand-worked examples", "[framework][b
     CHECK(clamp1(nan_, 0.0, 10.0) == 0.0);
     CHECK(clamp1(inf, 0.0, 10.0) == 10.0);
     CHECK(clamp1(-inf, 0.0, 10.0) == 0.0);
+}
+
+TEST_CASE("framework: Reflect on boxes with a face at +-DBL_MAX", "[framework][bounds]") {
+    // A half-unbounded box written with DBL_MAX, as a user-defined problem might. The excursion is
+    // small, so one mirror at the crossed face is the answer; v - lo and 2 * width overflow, which
+    // must not turn the coordinate into NaN (nor move it to the far face).
+    constexpr double big = std::numeric_limits<double>::max();
+    auto reflect1 = [](double v, double lo, double hi) {
+        double x[1] = {v};
+        const double l[1] = {lo}, h[1] = {hi};
+        pride::Reflect{}(x, l, h);
+        return x[0];
+    };
+    const double a = reflect1(5.0, -big, 0.0);
+    CHECK_FALSE(std::isnan(a));
+    CHECK(a == -5.0);
+    const double b = reflect1(-5.0, 0.0, big);
+    CHECK(b == 5.0);
+    const double c = reflect1(1.7e308, -1e308, 1e308);  // width overflows to +inf
+    CHECK_FALSE(std::isnan(c));
+    CHECK(c >= -1e308);
+    CHECK(c <= 1e308);
 }
 
 TEST_CASE("framework: Reflect agrees with mirroring step by step", "[framework][bounds]") {

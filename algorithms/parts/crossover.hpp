@@ -40,7 +40,7 @@ public:
         // Coordinates go in blocks of 64: one 64-bit draw gives the block's "cross this
         // coordinate?" coins, a second its "swap the children?" coins; the roots of a block are
         // then taken in one tight loop, where the processor overlaps them.
-        double y1[64], y2[64], arg1[64], arg2[64];
+        double y1[64], y2[64], arg[128];  // arg[k]: first child's, arg[64 + k]: second child's
         std::size_t index[64];
         for (std::size_t start = 0; start < a.size(); start += 64) {
             const std::size_t end = std::min(a.size(), start + 64);
@@ -52,20 +52,19 @@ public:
                 const double u = rng.uniform();
                 const double alpha1 = 2.0 - spread(1.0 + 2.0 * (lower - lo[i]) / gap);
                 const double alpha2 = 2.0 - spread(1.0 + 2.0 * (hi[i] - upper) / gap);
-                arg1[m] = u <= 1.0 / alpha1 ? u * alpha1 : 1.0 / (2.0 - u * alpha1);
-                arg2[m] = u <= 1.0 / alpha2 ? u * alpha2 : 1.0 / (2.0 - u * alpha2);
+                arg[m] = u <= 1.0 / alpha1 ? u * alpha1 : 1.0 / (2.0 - u * alpha1);
+                arg[64 + m] = u <= 1.0 / alpha2 ? u * alpha2 : 1.0 / (2.0 - u * alpha2);
                 y1[m] = lower;
                 y2[m] = upper;
                 index[m++] = i;
             }
-            for (std::size_t k = 0; k < m; ++k) {
-                arg1[k] = root(arg1[k]);  // betaq of the first child
-                arg2[k] = root(arg2[k]);  // betaq of the second child
-            }
+            if (m == 0) continue;
+            if (m < 64) std::copy_n(arg + 64, m, arg + m);  // both children's arguments side by side
+            root.apply({arg, 2 * m});           // betaq of each child
             for (std::size_t k = 0; k < m; ++k, swap >>= 1) {
                 const std::size_t i = index[k];
-                double c1 = std::clamp(0.5 * ((y1[k] + y2[k]) - arg1[k] * (y2[k] - y1[k])), lo[i], hi[i]);
-                double c2 = std::clamp(0.5 * ((y1[k] + y2[k]) + arg2[k] * (y2[k] - y1[k])), lo[i], hi[i]);
+                double c1 = std::clamp(0.5 * ((y1[k] + y2[k]) - arg[k] * (y2[k] - y1[k])), lo[i], hi[i]);
+                double c2 = std::clamp(0.5 * ((y1[k] + y2[k]) + arg[m + k] * (y2[k] - y1[k])), lo[i], hi[i]);
                 if (swap & 1u) std::swap(c1, c2);
                 a[i] = c1;
                 b[i] = c2;

@@ -26,7 +26,7 @@ public:
 
     void validate(const std::string& where) const {
         require(eta >= 0.0 && eta <= 1000.0, where, "eta_m must be in [0, 1000], got " + std::to_string(eta));
-        require(probability < 0.0 || probability <= 1.0, where,
+        require(probability <= 1.0, where,
                 "pm must be in [0, 1] (or negative for 1/D), got " + std::to_string(probability));
     }
 

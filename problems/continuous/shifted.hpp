@@ -27,24 +27,31 @@ inline std::vector<double> shift_optimum(std::size_t dim, double lower, double u
     return o;
 }
 
+/// Composition, not inheritance: whatever capability F gains later (batch evaluation, say) does
+/// not leak through unshifted.
 template <class F>
-class Shifted : public F {
+class Shifted {
 public:
     static inline const std::string shifted_name = "shifted-" + std::string(F::info.name);
 
     explicit Shifted(std::size_t dim)
-        : F(dim), optimum_(shift_optimum(dim, F::info.lower, F::info.upper)), moved_(dim) {}
+        : base_(dim), optimum_(shift_optimum(dim, F::info.lower, F::info.upper)), moved_(dim) {}
 
+    std::size_t dimension() const noexcept { return base_.dimension(); }
+    std::span<const double> lower() const noexcept { return base_.lower(); }
+    std::span<const double> upper() const noexcept { return base_.upper(); }
     std::string_view name() const noexcept { return shifted_name; }
     std::vector<double> optimum_point() const { return optimum_; }
+    double optimum_value() const noexcept { return F::info.optimum_value; }
 
     double evaluate(std::span<const double> x) {
         const double c = F::info.optimum_coordinate;
         for (std::size_t i = 0; i < moved_.size(); ++i) moved_[i] = x[i] - optimum_[i] + c;
-        return F::evaluate(std::span<const double>(moved_.data(), x.size()));
+        return base_.evaluate(std::span<const double>(moved_.data(), x.size()));
     }
 
 private:
+    F base_;
     std::vector<double> optimum_;
     std::vector<double> moved_;  // scratch: no allocation per evaluation
 };

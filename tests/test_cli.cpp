@@ -1,0 +1,588 @@
+// Tests of the `pride` command as a user runs it (shared/spec/cli.md): exit statuses and error
+// lines, the JSON of `run` and `list`, the values printed by `eval`.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "problems/continuous/catalog.hpp"
+
+namespace {
+
+using pride::test::run_pride;
+
+// ---------------------------------------------------------------------------------------------
+// A small strict JSON reader (no JSON library is available): enough to check the documents pride
+// prints. Object members are kept in order, duplicates included, so duplicates can be detected.
+
+struct Json {
+    enum class Type { null, boolean, number, string, array, object } type = Type::null;
+    bool boolean = false;
+    double number = 0.0;
+    std::string text;  // a string's value, or a number's literal text
+    std::vector<Json> items;
+    std::vector<std::pair<std::string, Json>> members;
+
+    const Json& at(const std::string& key) const {
+        for (const auto& [k, v] : members)
+            if (k == key) return v;
+        throw std::runtime_error("no member '" + key + "'");
+    }
+    bool has(const std::string& key) const {
+        return std::any_of(members.begin(), members.end(), [&](const auto& m) { return m.first == key; });
+    }
+    std::vector<std::string> keys() const {
+        std::vector<std::string> k;
+        for (const auto& m : members) k.push_back(m.first);
+        return k;
+    }
+};
+
+class JsonReader {
+public:
+    explicit JsonReader(const std::string& s) : s_(s) {}
+
+    Json document() {
+        Json v = value();
+        space();
+        if (i_ != s_.size()) fail("trailing characters");
+        return v;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) const {
+        throw std::runtime_error("JSON: " + what + " at offset " + std::to_string(i_));
+    }
+    void space() {
+        while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\n' || s_[i_] == '\t' || s_[i_] == '\r')) ++i_;
+    }
+    bool eat(char c) {
+        space();
+        if (i_ < s_.size() && s_[i_] == c) {
+            ++i_;
+            return true;
+        }
+        return false;
+    }
+    void expect(char c) {
+        if (!eat(c)) fail(std::string("expected '") + c + "'");
+    }
+    bool word(const char* w) {
+        const std::string ws(w);
+        if (s_.compare(i_, ws.size(), ws) == 0) {
+            i_ += ws.size();
+            return true;
+        }
+        return false;
+    }
+    std::string string_literal() {
+        expect('"');
+        std::string out;
+        while (true) {
+            if (i_ >= s_.size()) fail("unterminated string");
+            const char c = s_[i_++];
+            if (c == '"') return out;
+            if (static_cast<unsigned char>(c) < 0x20) fail("control character in string");
+            if (c != '\\') {
+                out += c;
+                continue;
+            }
+            if (i_ >= s_.size()) fail("bad escape");
+            const char e = s_[i_++];
+            switch (e) {
+                case '"': out += '"'; break;
+                case '\\': out += '\\'; break;
+                case '/': out += '/'; break;
+                case 'b': out += '\b'; break;
+                case 'f': out += '\f'; break;
+                case 'n': out += '\n'; break;
+                case 'r': out += '\r'; break;
+                case 't': out += '\t'; break;
+                case 'u': {
+                    if (i_ + 4 > s_.size()) fail("bad \\u escape");
+                    const unsigned code = static_cast<unsigned>(std::stoul(s_.substr(i_, 4), nullptr, 16));
+                    i_ += 4;
+                    if (code < 0x80) out += static_cast<char>(code);
+                    else out += '?';
+                    break;
+                }
+                default: fail("bad escape");
+            }
+        }
+    }
+    Json value() {
+        space();
+        if (i_ >= s_.size()) fail("unexpected end");
+        Json v;
+        const char c = s_[i_];
+        if (c == '{') {
+            ++i_;
+            v.type = Json::Type::object;
+            if (eat('}')) return v;
+            do {
+                space();
+                std::string key = string_literal();
+                expect(':');
+                v.members.emplace_back(std::move(key), value());
+            } while (eat(','));
+            expect('}');
+        } else if (c == '[') {
+            ++i_;
+            v.type = Json::Type::array;
+            if (eat(']')) return v;
+            do v.items.push_back(value());
+            while (eat(','));
+            expect(']');
+        } else if (c == '"') {
+            v.type = Json::Type::string;
+            v.text = string_literal();
+        } else if (word("true")) {
+            v.type = Json::Type::boolean;
+            v.boolean = true;
+        } else if (word("false")) {
+            v.type = Json::Type::boolean;
+        } else if (word("null")) {
+            v.type = Json::Type::null;
+        } else {
+            // number: -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?
+            const std::size_t start = i_;
+            auto digits = [&] {
+                const std::size_t d = i_;
+                while (i_ < s_.size() && s_[i_] >= '0' && s_[i_] <= '9') ++i_;
+                return i_ - d;
+            };
+            if (i_ < s_.size() && s_[i_] == '-') ++i_;
+            if (i_ < s_.size() && s_[i_] == '0') ++i_;
+            else if (digits() == 0) fail("bad value");
+            if (i_ < s_.size() && s_[i_] == '.') {
+                ++i_;
+                if (digits() == 0) fail("bad fraction");
+            }
+            if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
+                ++i_;
+                if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) ++i_;
+                if (digits() == 0) fail("bad exponent");
+            }
+            v.type = Json::Type::number;
+            v.text = s_.substr(start, i_ - start);
+            v.number = std::strtod(v.text.c_str(), nullptr);
+        }
+        return v;
+    }
+
+    const std::string& s_;
+    std::size_t i_ = 0;
+};
+
+Json parse_json(const std::string& s) { return JsonReader(s).document(); }
+
+std::vector<double> numbers(const Json& array) {
+    REQUIRE(array.type == Json::Type::array);
+    std::vector<double> out;
+    for (const auto& item : array.items) {
+        REQUIRE(item.type == Json::Type::number);
+        out.push_back(item.number);
+    }
+    return out;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const auto nl = text.find('\n', start);
+        if (nl == std::string::npos) {
+            lines.push_back(text.substr(start));
+            break;
+        }
+        lines.push_back(text.substr(start, nl - start));
+        start = nl + 1;
+    }
+    return lines;
+}
+
+std::string format17(double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.17g", v);
+    return buffer;
+}
+
+/// The command fails as bad input: exit status 2, nothing on stdout, exactly one non-empty line
+/// on stderr (ending in a single '\n') that contains each of `words`.
+void expect_input_error(const std::string& args, const std::vector<std::string>& words = {},
+                        const std::string& stdin_text = "") {
+    INFO("pride " << args);
+    const auto r = run_pride(args, stdin_text);
+    INFO("stdout: " << r.out);
+    INFO("stderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    REQUIRE(r.err.size() >= 2);
+    CHECK(r.err.back() == '\n');
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.find_first_not_of(" \t\n") != std::string::npos);
+    CHECK(r.err[r.err.size() - 2] != '\n');
+    for (const auto& w : words) {
+        INFO("the message should name '" << w << "'");
+        CHECK(r.err.find(w) != std::string::npos);
+    }
+}
+
+/// Runs a command that must succeed, returning its stdout.
+std::string expect_success(const std::string& args, const std::string& stdin_text = "") {
+    INFO("pride " << args);
+    const auto r = run_pride(args, stdin_text);
+    INFO("stderr: " << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.empty());
+    return r.out;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// 1. Errors
+
+TEST_CASE("cli: unknown names are input errors", "[cli][errors]") {
+    expect_input_error("run --problem sphere --dim 3 --algo nosuchalgo --evals 100", {"nosuchalgo"});
+    expect_input_error("run --problem nosuchproblem --dim 3 --algo pso --evals 100", {"nosuchproblem"});
+    expect_input_error("eval --problem nosuchproblem --x 1,2", {"nosuchproblem"});
+    expect_input_error("run --problem sphere --dim 3 --algo nlopt:LN_NOSUCH --evals 100", {"LN_NOSUCH"});
+    expect_input_error("run --problem sphere --dim 3 --algo nlopt:LD_MMA --evals 100", {"LD_MMA"});
+    expect_input_error("run --problem sphere --dim 3 --algo nlopt:LD_LBFGS --evals 100", {"LD_LBFGS"});
+}
+
+TEST_CASE("cli: bad dimensions are input errors", "[cli][errors]") {
+    expect_input_error("run --problem sphere --dim -3 --algo pso --evals 100", {"--dim"});
+    expect_input_error("run --problem sphere --dim 0 --algo pso --evals 100", {"--dim"});
+    expect_input_error("run --problem sphere --dim abc --algo pso --evals 100", {"--dim"});
+    expect_input_error("run --problem sphere --dim 2.5 --algo pso --evals 100", {"--dim"});
+    expect_input_error("run --problem rosenbrock --dim 1 --algo pso --evals 100", {"--dim"});  // needs >= 2
+    expect_input_error("eval --problem rosenbrock --x 1", {"rosenbrock"});
+}
+
+TEST_CASE("cli: malformed points are input errors", "[cli][errors]") {
+    expect_input_error("eval --problem sphere --x 1,,2", {"--x"});
+    expect_input_error("eval --problem sphere --x abc", {"--x", "abc"});
+    expect_input_error("eval --problem sphere --x 1,2,", {"--x"});
+    expect_input_error("eval --problem sphere --x ''", {"--x"});
+    expect_input_error("eval --problem sphere --x ,1", {"--x"});
+    expect_input_error("eval --problem sphere --x 1,nan", {"--x"});
+    expect_input_error("eval --problem sphere --x 1,inf", {"--x"});
+    expect_input_error("eval --problem sphere --x 1e999", {"--x"});
+    expect_input_error("eval --problem sphere --x 1x", {"--x"});
+    expect_input_error("eval --problem sphere --x '1 2'", {"--x"});
+    expect_input_error("eval --problem sphere --dim 3 --x 1,2", {"3"});
+}
+
+TEST_CASE("cli: malformed stdin points name the line", "[cli][errors]") {
+    expect_input_error("eval --problem sphere --x -", {"line 3"}, "1,2\n3,4\n1,x\n5,6\n");
+    expect_input_error("eval --problem sphere --x -", {"line 2"}, "1,2\n3,,4\n");
+    expect_input_error("eval --problem sphere --x -", {"line 3"}, "1,2\n3,4\n1,2,3\n");  // not like the first
+    expect_input_error("eval --problem sphere --x -", {}, "");                          // no point at all
+    expect_input_error("eval --problem sphere --dim 3 --x -", {"3"}, "1,2\n3,4\n");
+}
+
+TEST_CASE("cli: option errors are input errors", "[cli][errors]") {
+    expect_input_error("run --bogus");
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --bogus", {"--bogus"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 stray", {"stray"});
+    expect_input_error("run --problem sphere --dim 3 --evals 100", {"--algo"});  // missing required option
+    expect_input_error("run --dim 3 --algo pso --evals 100", {"--problem"});
+    expect_input_error("eval --problem sphere", {"--x"});
+    expect_input_error("");  // no subcommand
+    expect_input_error("nosuchcommand", {"nosuchcommand"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --iters 5", {"--evals", "--iters"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 0", {"--evals"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals -5", {"--evals"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 1e3", {"--evals"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --iters -1", {"--iters"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --wall-ms 0", {"--wall-ms"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --seed 1.5", {"--seed"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --pop 1", {"population"});
+}
+
+TEST_CASE("cli: a negative seed is refused rather than wrapped around", "[cli][errors]") {
+    // --seed is unsigned; "-1" must not silently become 18446744073709551615.
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --seed -1", {"--seed"});
+}
+
+TEST_CASE("cli: bad algorithm parameters are input errors", "[cli][errors]") {
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --param pop=abc", {"pop", "abc"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --param nosuchparam=1", {"nosuchparam"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --param pop", {"pop"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --param pop=2.5", {"pop"});
+    expect_input_error("run --problem sphere --dim 3 --algo pso --evals 100 --param w_start=-1", {"w_start"});
+    expect_input_error("run --problem sphere --dim 3 --algo ga --evals 100 --param pc=1.5", {"pc"});
+    expect_input_error("run --problem sphere --dim 3 --algo ga --evals 100 --param tournament=-2", {"tournament"});
+    expect_input_error("run --problem sphere --dim 3 --algo ga --evals 100 --param elitism=50", {"elitism"});
+    // a parameter of another algorithm
+    expect_input_error("run --problem sphere --dim 3 --algo ga --evals 100 --param w_start=0.5", {"w_start"});
+    expect_input_error("run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 100 --param elitism=1",
+                       {"elitism"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. run --json
+
+namespace {
+
+/// The JSON of one run, with the wall time (the one field allowed to differ) blanked.
+std::string without_wall_ms(const std::string& out) {
+    const auto key = out.find("\"wall_ms\"");
+    if (key == std::string::npos) return out;
+    const auto colon = out.find(':', key);
+    const auto end = out.find_first_of(",}", colon);
+    return out.substr(0, colon + 1) + "#" + out.substr(end);
+}
+
+}  // namespace
+
+TEST_CASE("cli: run --json prints one object with the documented keys", "[cli][run]") {
+    const std::string args = "run --problem rastrigin --dim 5 --algo pso --evals 1000 --seed 3 --json";
+    const std::string out = expect_success(args);
+    REQUIRE(!out.empty());
+    CHECK(out.back() == '\n');
+    CHECK(std::count(out.begin(), out.end(), '\n') == 1);
+    const Json j = parse_json(out);
+    REQUIRE(j.type == Json::Type::object);
+
+    auto keys = j.keys();
+    const std::set<std::string> unique(keys.begin(), keys.end());
+    CHECK(unique.size() == keys.size());  // no key twice
+    const std::set<std::string> expected = {"algo", "problem", "dim", "seed", "best_f", "best_x",
+                                            "evaluations", "wall_ms", "history"};
+    CHECK(unique == expected);
+
+    CHECK(j.at("algo").type == Json::Type::string);
+    CHECK(j.at("algo").text == "pso");
+    CHECK(j.at("problem").text == "rastrigin");
+    CHECK(j.at("dim").type == Json::Type::number);
+    CHECK(j.at("dim").text == "5");
+    CHECK(j.at("seed").text == "3");
+    CHECK(j.at("evaluations").text == "1000");
+    REQUIRE(j.at("wall_ms").type == Json::Type::number);
+    CHECK(j.at("wall_ms").number >= 0.0);
+    REQUIRE(j.at("best_f").type == Json::Type::number);
+    const double best_f = j.at("best_f").number;
+    CHECK(std::isfinite(best_f));
+    CHECK(best_f >= 0.0);
+
+    const auto best_x = numbers(j.at("best_x"));
+    REQUIRE(best_x.size() == 5);
+    for (double v : best_x) {
+        CHECK(v >= -5.12);
+        CHECK(v <= 5.12);
+    }
+    const auto history = numbers(j.at("history"));
+    REQUIRE(!history.empty());
+    CHECK(history.size() == 20);  // default population 50: 1 + 19 iterations in 1000 evaluations
+    for (std::size_t k = 1; k < history.size(); ++k) CHECK(history[k] <= history[k - 1]);
+    CHECK(history.back() == best_f);
+
+    // Numbers are printed so that they read back exactly: evaluating best_x gives best_f.
+    std::string x_text;
+    for (std::size_t i = 0; i < best_x.size(); ++i) x_text += (i ? "," : "") + j.at("best_x").items[i].text;
+    const std::string value = expect_success("eval --problem rastrigin --x " + x_text);
+    CHECK(std::strtod(value.c_str(), nullptr) == best_f);
+
+    // Same command, same output except the wall time; another seed, another run.
+    const std::string again = expect_success(args);
+    CHECK(without_wall_ms(again) == without_wall_ms(out));
+    CHECK(without_wall_ms(out) != out);  // the blanking did find the field
+    const std::string other = expect_success("run --problem rastrigin --dim 5 --algo pso --evals 1000 --seed 4 --json");
+    const Json o = parse_json(other);
+    CHECK(o.at("seed").text == "4");
+    CHECK(numbers(o.at("history")) != history);
+}
+
+TEST_CASE("cli: run --json for every algorithm family and limit", "[cli][run]") {
+    struct Case {
+        std::string args;
+        std::int64_t evaluations;  // -1: less than the budget
+    };
+    const Case cases[] = {
+        {"--problem sphere --dim 4 --algo ga --evals 777 --pop 20", 777},
+        {"--problem shifted-ackley --dim 3 --algo pso-constriction --evals 501 --pop 10", 501},
+        {"--problem griewank --dim 2 --algo nlopt:GN_CRS2_LM --evals 333", 333},
+        {"--problem sphere --dim 2 --algo pso --iters 5 --pop 10", 60},
+        {"--problem sphere --dim 2 --algo ga --iters 4 --pop 10 --param elitism=2", 10 + 4 * 8},
+        {"--problem sphere --dim 3 --algo pso --evals 100000 --target 1e-3 --pop 20", -1},
+        {"--problem sphere --dim 3 --algo pso --param pop=30 --param w_start=0.8 --param c1=1.5 --evals 90", 90},
+    };
+    for (const auto& c : cases) {
+        INFO(c.args);
+        const Json j = parse_json(expect_success("run " + c.args + " --json"));
+        const auto evaluations = static_cast<std::int64_t>(j.at("evaluations").number);
+        if (c.evaluations >= 0) CHECK(evaluations == c.evaluations);
+        else {
+            CHECK(evaluations < 100000);
+            CHECK(j.at("best_f").number <= 1e-3);
+        }
+        const auto history = numbers(j.at("history"));
+        REQUIRE(!history.empty());
+        CHECK(history.back() == j.at("best_f").number);
+    }
+}
+
+TEST_CASE("cli: a wall-time limit far in the future does not end the run", "[cli][run]") {
+    // 1e13 ms (about 317 years) overflows a nanosecond duration; it must still mean "no limit yet".
+    for (const char* wall : {"1e6", "1e13", "1e300"}) {
+        INFO("--wall-ms " << wall);
+        const Json j = parse_json(
+            expect_success(std::string("run --problem sphere --dim 3 --algo pso --evals 1000 --json --wall-ms ") + wall));
+        CHECK(j.at("evaluations").number == 1000);
+    }
+}
+
+TEST_CASE("cli: run without --json prints a readable report", "[cli][run]") {
+    const std::string out = expect_success("run --problem sphere --dim 2 --algo ga --evals 200 --seed 2");
+    CHECK(out.find("best_f") != std::string::npos);
+    CHECK(out.find("200") != std::string::npos);
+    CHECK(out.find("ga") != std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3. eval
+
+TEST_CASE("cli: eval prints 17 significant digits", "[cli][eval]") {
+    CHECK(expect_success("eval --problem rastrigin --x 1,1,1,1,1") == "5\n");
+    CHECK(expect_success("eval --problem rastrigin --x 1") == "1\n");
+    CHECK(expect_success("eval --problem rosenbrock --x 1,1,1,1,1") == "0\n");
+    CHECK(expect_success("eval --problem sphere --x ' 1 , +2 '") == "5\n");
+    CHECK(expect_success("eval --problem sphere --x 0.1") == "0.010000000000000002\n");
+
+    // Reference values from pagmo2's tests (shared/data/continuous/reference_values.md), rel 1e-15.
+    struct Case {
+        const char* problem;
+        const char* x;
+        double value;
+    };
+    const Case cases[] = {
+        {"ackley", "-23.45,12.34,111.12", 21.941495638130885},
+        {"ackley", "1.12", 4.659037611351948},
+        {"griewank", "1.12", 0.5646311537232878},
+        {"griewank", "-23.45,12.34,111.12", 4.241511427781268},
+        {"schwefel", "1.12", 418.0067810680098},
+        {"schwefel", "-23.45,12.34,111.12", 1338.0260195323838},
+    };
+    for (const auto& c : cases) {
+        INFO(c.problem << " at " << c.x);
+        const std::string out = expect_success(std::string("eval --problem ") + c.problem + " --x " + c.x);
+        REQUIRE(!out.empty());
+        CHECK(out.back() == '\n');
+        CHECK(std::count(out.begin(), out.end(), '\n') == 1);
+        const std::string line = out.substr(0, out.size() - 1);
+        const double v = std::strtod(line.c_str(), nullptr);
+        CHECK(v == Approx(c.value).epsilon(1e-15));
+        CHECK(line == format17(v));  // printed as %.17g
+    }
+    const std::string ackley = expect_success("eval --problem ackley --x -23.45,12.34,111.12");
+    CHECK(std::strtod(ackley.c_str(), nullptr) == Approx(21.941495638130885).epsilon(1e-15));
+}
+
+TEST_CASE("cli: eval --x - reads one point per line", "[cli][eval]") {
+    const std::string out = expect_success("eval --problem sphere --x -", "1,2,3\n0,0,0\n-1.5,0.5,2\n");
+    CHECK(out == "14\n0\n6.5\n");
+    const auto lines = lines_of(expect_success("eval --problem ackley --x -", "-23.45,12.34,111.12\n1,2,3\n0,0,0\n"));
+    REQUIRE(lines.size() == 3);
+    CHECK(lines[0] == lines_of(expect_success("eval --problem ackley --x -23.45,12.34,111.12"))[0]);
+    CHECK(lines[1] == lines_of(expect_success("eval --problem ackley --x 1,2,3"))[0]);
+    CHECK(std::abs(std::strtod(lines[2].c_str(), nullptr)) < 1e-14);
+    // A last line without a newline still counts.
+    CHECK(expect_success("eval --problem sphere --x -", "1\n2") == "1\n4\n");
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4. list and help
+
+TEST_CASE("cli: list names every algorithm and problem", "[cli][list]") {
+    const std::string out = expect_success("list");
+    std::set<std::string> first_words;
+    for (const auto& line : lines_of(out)) {
+        const auto start = line.find_first_not_of(' ');
+        if (start == std::string::npos) continue;
+        first_words.insert(line.substr(start, line.find(' ', start) - start));
+    }
+    std::vector<std::string> expected = {"pso", "ga", "pso-constriction", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"};
+    for (const auto& item : pride::continuous::catalog().items()) expected.push_back(item.name);
+    CHECK(pride::continuous::catalog().items().size() >= 6);
+    for (const auto& name : expected) {
+        INFO(name);
+        CHECK(first_words.count(name) == 1);
+    }
+    CHECK(out.find("nlopt:LD_") == std::string::npos);  // gradient algorithms cannot run here
+
+    const Json j = parse_json(expect_success("list --json"));
+    REQUIRE(j.type == Json::Type::object);
+    std::set<std::string> algorithms, problems;
+    REQUIRE(j.has("algorithms"));
+    REQUIRE(j.has("problems"));
+    for (const auto& a : j.at("algorithms").items) algorithms.insert(a.at("name").text);
+    for (const auto& p : j.at("problems").items) problems.insert(p.at("name").text);
+    for (const char* a : {"pso", "ga", "pso-constriction", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"}) CHECK(algorithms.count(a) == 1);
+    for (const auto& item : pride::continuous::catalog().items()) CHECK(problems.count(item.name) == 1);
+    // Every listed problem can be evaluated, every listed algorithm run.
+    for (const auto& name : problems) {
+        INFO(name);
+        const auto r = run_pride("eval --problem " + name + " --x 0.5,0.25,0.125");
+        CHECK(r.status == 0);
+        CHECK(lines_of(r.out).size() == 1);
+    }
+    for (const char* a : {"pso", "ga", "pso-constriction", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM", "nlopt:LN_COBYLA",
+                          "nlopt:GN_DIRECT_L", "nlopt:GN_ISRES"}) {
+        INFO(a);
+        REQUIRE(algorithms.count(a) == 1);
+        const Json r = parse_json(expect_success(std::string("run --problem sphere --dim 2 --evals 120 --json --algo ") + a));
+        CHECK(r.at("evaluations").number == 120);
+    }
+}
+
+TEST_CASE("cli: help", "[cli][help]") {
+    const auto top = run_pride("--help");
+    CHECK(top.status == 0);
+    CHECK(top.err.empty());
+    for (const char* sub : {"run", "eval", "list"}) CHECK(top.out.find(sub) != std::string::npos);
+
+    const auto run = run_pride("run --help");
+    CHECK(run.status == 0);
+    for (const char* opt : {"--problem", "--dim", "--algo", "--evals", "--iters", "--pop", "--seed", "--json"}) {
+        INFO(opt);
+        CHECK(run.out.find(opt) != std::string::npos);
+    }
+    for (const char* sub : {"eval --help", "list --help"}) {
+        const auto r = run_pride(sub);
+        INFO(sub);
+        CHECK(r.status == 0);
+        CHECK(!r.out.empty());
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5. NLopt through the command line
+
+TEST_CASE("cli: NLopt subplex on the sphere", "[cli][nlopt]") {
+    const Json j = parse_json(expect_success("run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 2000 --json"));
+    CHECK(j.at("algo").text == "nlopt:LN_SBPLX");
+    CHECK(j.at("evaluations").number == 2000);
+    CHECK(j.at("best_f").number < 1e-10);
+    CHECK(numbers(j.at("best_x")).size() == 3);
+
+    // restart=0 runs NLopt once: it converges and stops before the budget.
+    const Json once = parse_json(expect_success(
+        "run --problem sphere --dim 2 --algo nlopt:LN_SBPLX --evals 100000 --param restart=0 --json"));
+    CHECK(once.at("evaluations").number < 100000);
+    CHECK(once.at("best_f").number < 1e-12);
+    // pop sets the evaluations per recorded iteration: 2000 / 100 = 20 entries.
+    const Json blocks = parse_json(expect_success(
+        "run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 2000 --pop 100 --json"));
+    CHECK(numbers(blocks.at("history")).size() == 20);
+}
