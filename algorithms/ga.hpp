@@ -76,6 +76,9 @@ public:
         std::vector<double> fx(static_cast<std::size_t>(n)), fy(fx.size());
         std::vector<std::size_t> order(fx.size());
 
+        const auto& cross = prepared(crossover, dim);
+        const auto& mutate = prepared(mutation, dim);
+
         init(problem, rng, x);
         for (Eigen::Index i = 0; i < n; ++i) bounds(column(x, i), lo, hi);
         state.evaluate_columns(problem, x, fx);
@@ -98,9 +101,9 @@ public:
                 y.col(k) = x.col(a);
                 auto child2 = second >= 0 ? column(y, second) : column(spare, 0);
                 std::copy_n(x.col(b).data(), dim, child2.data());
-                crossover(column(y, k), child2, lo, hi, rng);
-                mutation(column(y, k), lo, hi, rng);
-                mutation(child2, lo, hi, rng);
+                cross(column(y, k), child2, lo, hi, rng);
+                mutate(column(y, k), lo, hi, rng);
+                mutate(child2, lo, hi, rng);
                 bounds(column(y, k), lo, hi);
                 bounds(child2, lo, hi);
             }
@@ -119,6 +122,16 @@ public:
     }
 
 private:
+    /// An operator policy may offer prepare(dim), its constants worked out once per run; the
+    /// result lives as long as the run (lifetime extension of the temporary bound to a const&).
+    template <class Op>
+    static decltype(auto) prepared(const Op& op, std::size_t dim) {
+        if constexpr (requires { op.prepare(dim); })
+            return op.prepare(dim);
+        else
+            return (op);
+    }
+
     template <class P>
     static Eigen::Index evaluate_offspring(P& problem, RunState& state, const Matrix& y, Eigen::Index first,
                                            std::vector<double>& fy) {

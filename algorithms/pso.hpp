@@ -19,7 +19,8 @@
 // Decided by this project where the papers are silent: initial velocities are U(-vmax, vmax);
 // w(t) runs over the horizon T = the iteration limit, or the iterations the evaluation budget
 // allows, reaching w_end on the last one; when the budget ends inside a sweep the remaining
-// particles do not move.
+// particles do not move; the constriction variant keeps the velocity clamp (Eberhart and Shi 2000
+// found constriction with a clamp better than either alone; Clerc and Kennedy need none).
 #include <algorithm>
 #include <cstdint>
 #include <span>

@@ -32,14 +32,24 @@ public:
                 "pc must be in [0, 1], got " + std::to_string(probability));
     }
 
+    /// The operator with its constants worked out once per run (see Prepared).
+    class Prepared;
+    Prepared prepare(std::size_t dim) const;
+
+    void operator()(std::span<double> a, std::span<double> b, std::span<const double> lo, std::span<const double> hi,
+                    Rng& rng) const;
+};
+
+class SbxCrossover::Prepared {
+public:
+    Prepared(double eta, double probability) : probability_(probability), power_(eta + 1.0), root_(1.0 / (eta + 1.0)) {}
+
     void operator()(std::span<double> a, std::span<double> b, std::span<const double> lo, std::span<const double> hi,
                     Rng& rng) const {
-        if (!rng.bernoulli(probability)) return;
-        const FixedPower spread(-(eta + 1.0));
-        const FixedPower root(1.0 / (eta + 1.0));
+        if (!rng.bernoulli(probability_)) return;
         // Coordinates go in blocks of 64: one 64-bit draw gives the block's "cross this
         // coordinate?" coins, a second its "swap the children?" coins; the roots of a block are
-        // then taken in one tight loop, where the processor overlaps them.
+        // then taken in one pass (see FixedPower::apply).
         double y1[64], y2[64], arg[128];  // arg[k]: first child's, arg[64 + k]: second child's
         std::size_t index[64];
         for (std::size_t start = 0; start < a.size(); start += 64) {
@@ -48,19 +58,18 @@ public:
             std::size_t m = 0;
             for (std::size_t i = start; i < end; ++i, cross >>= 1) {
                 if (!(cross & 1u) || std::abs(a[i] - b[i]) <= 1e-14) continue;
-                const double lower = std::min(a[i], b[i]), upper = std::max(a[i], b[i]), gap = upper - lower;
+                const double lower = std::min(a[i], b[i]), upper = std::max(a[i], b[i]);
+                const double inv_gap = 1.0 / (upper - lower);
                 const double u = rng.uniform();
-                const double alpha1 = 2.0 - spread(1.0 + 2.0 * (lower - lo[i]) / gap);
-                const double alpha2 = 2.0 - spread(1.0 + 2.0 * (hi[i] - upper) / gap);
-                arg[m] = u <= 1.0 / alpha1 ? u * alpha1 : 1.0 / (2.0 - u * alpha1);
-                arg[64 + m] = u <= 1.0 / alpha2 ? u * alpha2 : 1.0 / (2.0 - u * alpha2);
+                arg[m] = root_argument(u, 1.0 + 2.0 * (lower - lo[i]) * inv_gap);
+                arg[64 + m] = root_argument(u, 1.0 + 2.0 * (hi[i] - upper) * inv_gap);
                 y1[m] = lower;
                 y2[m] = upper;
                 index[m++] = i;
             }
             if (m == 0) continue;
             if (m < 64) std::copy_n(arg + 64, m, arg + m);  // both children's arguments side by side
-            root.apply({arg, 2 * m});           // betaq of each child
+            root_.apply({arg, 2 * m});                      // betaq of each child
             for (std::size_t k = 0; k < m; ++k, swap >>= 1) {
                 const std::size_t i = index[k];
                 double c1 = std::clamp(0.5 * ((y1[k] + y2[k]) - arg[k] * (y2[k] - y1[k])), lo[i], hi[i]);
@@ -71,6 +80,28 @@ public:
             }
         }
     }
+
+private:
+    /// What betaq is the (eta+1)-th root of, for spread factor beta, with one division instead of
+    /// three: with B = beta^(eta+1), alpha = 2 - 1/B and t = u (2B - 1) = u alpha B,
+    ///   u <= 1/alpha  <=>  t <= B,   u alpha = t / B,   1 / (2 - u alpha) = B / (2B - t).
+    double root_argument(double u, double beta) const noexcept {
+        const double big = power_(beta);
+        if (!(big < 1e300)) return u <= 0.5 ? 2.0 * u : 1.0 / (2.0 - 2.0 * u);  // beta^-(eta+1) = 0: alpha = 2
+        const double t = u * (2.0 * big - 1.0);
+        return t <= big ? t / big : big / (2.0 * big - t);
+    }
+
+    double probability_;
+    FixedPower power_;
+    FixedPower root_;
 };
+
+inline SbxCrossover::Prepared SbxCrossover::prepare(std::size_t) const { return Prepared(eta, probability); }
+
+inline void SbxCrossover::operator()(std::span<double> a, std::span<double> b, std::span<const double> lo,
+                                     std::span<const double> hi, Rng& rng) const {
+    prepare(a.size())(a, b, lo, hi, rng);
+}
 
 }  // namespace pride

@@ -30,37 +30,52 @@ public:
                 "pm must be in [0, 1] (or negative for 1/D), got " + std::to_string(probability));
     }
 
-    void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
-        const std::size_t n = x.size();
-        const double pm = probability < 0.0 ? 1.0 / static_cast<double>(n) : probability;
-        if (pm <= 0.0) return;
-        const FixedPower power(eta + 1.0);
-        const FixedPower root(1.0 / (eta + 1.0));
-        const double log_keep = std::log1p(-pm);  // -inf when pm = 1: every coordinate mutates
-        std::size_t i = next_skip(rng, log_keep);
-        for (; i < n; i += 1 + next_skip(rng, log_keep)) {
-            const double width = hi[i] - lo[i];
-            if (!(width > 0.0)) continue;
-            const double y = x[i];
-            const double u = rng.uniform();
-            double dq;
-            if (u <= 0.5) {
-                const double val = 2.0 * u + (1.0 - 2.0 * u) * power(1.0 - (y - lo[i]) / width);
-                dq = root(val) - 1.0;
-            } else {
-                const double val = 2.0 * (1.0 - u) + 2.0 * (u - 0.5) * power(1.0 - (hi[i] - y) / width);
-                dq = 1.0 - root(val);
+    /// The operator with its constants (pm, the powers, log(1 - pm)) worked out once per run.
+    class Prepared {
+    public:
+        Prepared(double eta, double pm)
+            : pm_(pm), log_keep_(std::log1p(-pm)), power_(eta + 1.0), root_(1.0 / (eta + 1.0)) {}
+
+        void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
+            if (pm_ <= 0.0) return;
+            for (std::size_t i = next_skip(rng); i < x.size(); i += 1 + next_skip(rng)) {
+                const double width = hi[i] - lo[i];
+                if (!(width > 0.0)) continue;
+                const double y = x[i];
+                const double u = rng.uniform();
+                double dq;
+                if (u <= 0.5) {
+                    const double val = 2.0 * u + (1.0 - 2.0 * u) * power_(1.0 - (y - lo[i]) / width);
+                    dq = root_(val) - 1.0;
+                } else {
+                    const double val = 2.0 * (1.0 - u) + 2.0 * (u - 0.5) * power_(1.0 - (hi[i] - y) / width);
+                    dq = 1.0 - root_(val);
+                }
+                x[i] = std::clamp(y + dq * width, lo[i], hi[i]);
             }
-            x[i] = std::clamp(y + dq * width, lo[i], hi[i]);
         }
+
+    private:
+        /// Coordinates skipped before the next mutation: Geometric(pm) on {0, 1, ...}; log(1 - pm)
+        /// is -inf when pm = 1, and then every coordinate mutates.
+        std::size_t next_skip(Rng& rng) const noexcept {
+            if (std::isinf(log_keep_)) return 0;
+            const double skips = std::floor(std::log1p(-rng.uniform()) / log_keep_);
+            return skips < 1e15 ? static_cast<std::size_t>(skips) : static_cast<std::size_t>(1e15);
+        }
+
+        double pm_;
+        double log_keep_;
+        FixedPower power_;
+        FixedPower root_;
+    };
+
+    Prepared prepare(std::size_t dim) const {
+        return Prepared(eta, probability < 0.0 ? 1.0 / static_cast<double>(dim) : probability);
     }
 
-private:
-    /// Coordinates skipped before the next mutation: Geometric(pm) on {0, 1, ...}.
-    static std::size_t next_skip(Rng& rng, double log_keep) noexcept {
-        if (std::isinf(log_keep)) return 0;
-        const double skips = std::floor(std::log1p(-rng.uniform()) / log_keep);
-        return skips < 1e15 ? static_cast<std::size_t>(skips) : static_cast<std::size_t>(1e15);
+    void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
+        prepare(x.size())(x, lo, hi, rng);
     }
 };
 
