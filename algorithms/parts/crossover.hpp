@@ -1,6 +1,7 @@
 #pragma once
 // Crossover for real-coded GAs.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -54,10 +55,15 @@ public:
         std::size_t index[64];
         for (std::size_t start = 0; start < a.size(); start += 64) {
             const std::size_t end = std::min(a.size(), start + 64);
+            const std::size_t width = end - start;
             std::uint64_t cross = rng(), swap = rng();
+            if (width < 64) cross &= (std::uint64_t{1} << width) - 1;
             std::size_t m = 0;
-            for (std::size_t i = start; i < end; ++i, cross >>= 1) {
-                if (!(cross & 1u) || std::abs(a[i] - b[i]) <= 1e-14) continue;
+            // Visiting only the set bits avoids a coin-flip branch per coordinate (half of them
+            // would be mispredicted); the coordinates are still taken in increasing order.
+            for (; cross != 0; cross &= cross - 1) {
+                const std::size_t i = start + static_cast<std::size_t>(std::countr_zero(cross));
+                if (std::abs(a[i] - b[i]) <= 1e-14) continue;
                 const double lower = std::min(a[i], b[i]), upper = std::max(a[i], b[i]);
                 const double inv_gap = 1.0 / (upper - lower);
                 const double u = rng.uniform();
@@ -72,11 +78,11 @@ public:
             root_.apply({arg, 2 * m});                      // betaq of each child
             for (std::size_t k = 0; k < m; ++k, swap >>= 1) {
                 const std::size_t i = index[k];
-                double c1 = std::clamp(0.5 * ((y1[k] + y2[k]) - arg[k] * (y2[k] - y1[k])), lo[i], hi[i]);
-                double c2 = std::clamp(0.5 * ((y1[k] + y2[k]) + arg[m + k] * (y2[k] - y1[k])), lo[i], hi[i]);
-                if (swap & 1u) std::swap(c1, c2);
-                a[i] = c1;
-                b[i] = c2;
+                const double c1 = std::clamp(0.5 * ((y1[k] + y2[k]) - arg[k] * (y2[k] - y1[k])), lo[i], hi[i]);
+                const double c2 = std::clamp(0.5 * ((y1[k] + y2[k]) + arg[m + k] * (y2[k] - y1[k])), lo[i], hi[i]);
+                const bool swapped = (swap & 1u) != 0;  // selects, not a branch: a coin flip mispredicts
+                a[i] = swapped ? c2 : c1;
+                b[i] = swapped ? c1 : c2;
             }
         }
     }
@@ -89,7 +95,8 @@ private:
         const double big = power_(beta);
         if (!(big < 1e300)) return u <= 0.5 ? 2.0 * u : 1.0 / (2.0 - 2.0 * u);  // beta^-(eta+1) = 0: alpha = 2
         const double t = u * (2.0 * big - 1.0);
-        return t <= big ? t / big : big / (2.0 * big - t);
+        const bool near = t <= big;  // selects, then one division: the test is a coin flip
+        return (near ? t : big) / (near ? big : 2.0 * big - t);
     }
 
     double probability_;

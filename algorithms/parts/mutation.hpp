@@ -2,6 +2,7 @@
 // Mutation for real-coded GAs.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -17,8 +18,8 @@ namespace pride {
 ///   u <= 1/2: dq = (2u + (1 - 2u)(1 - d1)^(eta+1))^(1/(eta+1)) - 1
 ///   u >  1/2: dq = 1 - (2(1 - u) + 2(u - 1/2)(1 - d2)^(eta+1))^(1/(eta+1))
 ///   y <- clamp(y + dq (high - low)).  Spec: eta = 20.
-/// The coordinates to mutate are found by geometric skips (one draw per mutated coordinate instead
-/// of one per coordinate); each coordinate still mutates independently with probability pm.
+/// Whether a coordinate mutates is decided by 32 bits of a generator step (two coordinates per
+/// step): it mutates when those bits, read as an integer, are below pm 2^32.
 class PolynomialMutation {
 public:
     double eta = 20.0;
@@ -30,15 +31,18 @@ public:
                 "pm must be in [0, 1] (or negative for 1/D), got " + std::to_string(probability));
     }
 
-    /// The operator with its constants (pm, the powers, log(1 - pm)) worked out once per run.
+    /// The operator with its constants (the threshold for pm, the powers) worked out once per run.
     class Prepared {
     public:
         Prepared(double eta, double pm)
-            : pm_(pm), log_keep_(std::log1p(-pm)), power_(eta + 1.0), root_(1.0 / (eta + 1.0)) {}
+            : threshold_(static_cast<std::uint64_t>(std::ldexp(pm, 32))), power_(eta + 1.0), root_(1.0 / (eta + 1.0)) {}
 
         void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
-            if (pm_ <= 0.0) return;
-            for (std::size_t i = next_skip(rng); i < x.size(); i += 1 + next_skip(rng)) {
+            if (threshold_ == 0) return;
+            std::uint64_t bits = 0;
+            for (std::size_t i = 0; i < x.size(); ++i) {
+                bits = i % 2 == 0 ? rng() : bits >> 32;
+                if ((bits & 0xFFFFFFFFu) >= threshold_) continue;
                 const double width = hi[i] - lo[i];
                 if (!(width > 0.0)) continue;
                 const double y = x[i];
@@ -56,16 +60,7 @@ public:
         }
 
     private:
-        /// Coordinates skipped before the next mutation: Geometric(pm) on {0, 1, ...}; log(1 - pm)
-        /// is -inf when pm = 1, and then every coordinate mutates.
-        std::size_t next_skip(Rng& rng) const noexcept {
-            if (std::isinf(log_keep_)) return 0;
-            const double skips = std::floor(std::log1p(-rng.uniform()) / log_keep_);
-            return skips < 1e15 ? static_cast<std::size_t>(skips) : static_cast<std::size_t>(1e15);
-        }
-
-        double pm_;
-        double log_keep_;
+        std::uint64_t threshold_;  // pm 2^32; 2^32 when pm = 1
         FixedPower power_;
         FixedPower root_;
     };
