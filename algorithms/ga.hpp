@@ -7,15 +7,18 @@
 //     design. Computer Science and Informatics 26(4), 30-45 (polynomial mutation).
 //
 // One generation:
-//   (1) the `elitism` best members of the population pass on unchanged (and are not re-evaluated);
-//   (2) until the new population is full: two parents by the Selection policy, two children by the
-//       Crossover policy, each child through the Mutation policy and the Bounds policy;
-//   (3) children are evaluated in order; the new population replaces the old.
+//   (1) as many children as the Replacement policy asks for (N - elitism for the spec's elitist
+//       replacement): two parents by the Selection policy, two children by the Crossover policy,
+//       each child through the Mutation policy and the Bounds policy;
+//   (2) the children are evaluated in order;
+//   (3) the Replacement policy forms the next population from parents and children (elitist: the
+//       `elitism` best parents, unchanged and not re-evaluated, then the children; plus: the best N
+//       of parents and children, as pagmo2's sga).
 // Spec defaults (shared/spec/algorithms.md): tournament of 2, SBX eta 15 with probability 0.9,
-// polynomial mutation eta 20 with probability 1/D per gene, elitism 1.
-// Decided by this project where the spec is silent: when an odd number of places is left the
-// second child of the last pair is dropped; when the budget ends inside a generation the children
-// not evaluated are discarded (their fitness shown as +inf) and the run stops.
+// polynomial mutation eta 20 with probability 1/D per gene, elitist replacement with elitism 1.
+// Decided by this project where the spec is silent: when an odd number of children is asked for,
+// the second child of the last pair is dropped; when the budget ends inside a generation the
+// children not evaluated get fitness +inf, the generation is recorded, and the run stops.
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -25,6 +28,7 @@
 
 #include "algorithms/parts/crossover.hpp"
 #include "algorithms/parts/mutation.hpp"
+#include "algorithms/parts/replacement.hpp"
 #include "algorithms/parts/selection.hpp"
 #include "framework/bounds.hpp"
 #include "framework/initializer.hpp"
@@ -38,23 +42,23 @@
 namespace pride {
 
 template <class Selection = TournamentSelection, class Crossover = SbxCrossover, class Mutation = PolynomialMutation,
-          class Bounds = Clamp, class Init = UniformInit>
+          class Bounds = Clamp, class Init = UniformInit, class Replacement = ElitistReplacement>
 class Ga {
 public:
+    std::string id = "ga";  // the name in messages and results ("ga-plus" for that variant)
     std::int64_t population = 50;
-    std::int64_t elitism = 1;
+    Replacement replacement{};
     Selection selection{};
     Crossover crossover{};
     Mutation mutation{};
     Bounds bounds{};
     Init init{};
 
-    std::string name() const { return "ga"; }
+    std::string name() const { return id; }
 
     void validate() const {
         require(population >= 2, name(), "population must be >= 2, got " + std::to_string(population));
-        require(elitism >= 0 && elitism < population, name(),
-                "elitism must be in [0, population), got " + std::to_string(elitism));
+        replacement.validate(name(), population);
         selection.validate(name());
         crossover.validate(name());
         mutation.validate(name());
@@ -65,16 +69,17 @@ public:
         validate();
         termination.validate(name());
         const auto n = static_cast<Eigen::Index>(population);
-        const auto elites = static_cast<Eigen::Index>(elitism);
+        const Eigen::Index kids = replacement.offspring(n);
         const std::size_t dim = problem.dimension();
         const auto lo = problem.lower();
         const auto hi = problem.upper();
 
         Rng rng(seed);
         RunState state(termination, dim);
-        Matrix x(static_cast<Eigen::Index>(dim), n), y(x.rows(), n), spare(x.rows(), 1);
-        std::vector<double> fx(static_cast<std::size_t>(n)), fy(fx.size());
-        std::vector<std::size_t> order(fx.size());
+        const auto rows = static_cast<Eigen::Index>(dim);
+        Matrix x(rows, n), next(rows, n), y(rows, kids), spare(rows, 1);
+        std::vector<double> fx(static_cast<std::size_t>(n)), fnext(fx.size()), fy(static_cast<std::size_t>(kids));
+        std::vector<std::size_t> order;
 
         const auto& cross = prepared(crossover, dim);
         const auto& mutate = prepared(mutation, dim);
@@ -85,21 +90,11 @@ public:
         state.end_iteration(observer, x, fx);
 
         while (!state.done()) {
-            // (1) elites: a stable partial sort keeps the earlier member on ties.
-            std::iota(order.begin(), order.end(), std::size_t{0});
-            std::partial_sort(order.begin(), order.begin() + elites, order.end(),
-                              [&](std::size_t a, std::size_t b) { return fx[a] < fx[b] || (fx[a] == fx[b] && a < b); });
-            for (Eigen::Index e = 0; e < elites; ++e) {
-                y.col(e) = x.col(static_cast<Eigen::Index>(order[static_cast<std::size_t>(e)]));
-                fy[static_cast<std::size_t>(e)] = fx[order[static_cast<std::size_t>(e)]];
-            }
-            // (2) offspring
-            for (Eigen::Index k = elites; k < n; k += 2) {
+            for (Eigen::Index k = 0; k < kids; k += 2) {  // (1)
                 const auto a = static_cast<Eigen::Index>(selection(fx, rng));
                 const auto b = static_cast<Eigen::Index>(selection(fx, rng));
-                const Eigen::Index second = k + 1 < n ? k + 1 : -1;
                 y.col(k) = x.col(a);
-                auto child2 = second >= 0 ? column(y, second) : column(spare, 0);
+                auto child2 = k + 1 < kids ? column(y, k + 1) : column(spare, 0);
                 std::copy_n(x.col(b).data(), dim, child2.data());
                 cross(column(y, k), child2, lo, hi, rng);
                 mutate(column(y, k), lo, hi, rng);
@@ -107,15 +102,10 @@ public:
                 bounds(column(y, k), lo, hi);
                 bounds(child2, lo, hi);
             }
-            // (3) evaluation and replacement
-            const Eigen::Index evaluated = elites + evaluate_offspring(problem, state, y, elites, fy);
-            if (evaluated < n) {  // budget spent inside the generation: record it and stop
-                std::fill(fy.begin() + evaluated, fy.end(), kInf);
-                state.end_iteration(observer, y, fy);
-                break;
-            }
-            std::swap(x, y);
-            std::swap(fx, fy);
+            state.evaluate_columns(problem, y, fy);  // (2); +inf past the budget
+            replacement(x, fx, y, fy, next, fnext, order);  // (3)
+            std::swap(x, next);
+            std::swap(fx, fnext);
             state.end_iteration(observer, x, fx);
         }
         return state.finish();
@@ -130,15 +120,6 @@ private:
             return op.prepare(dim);
         else
             return (op);
-    }
-
-    template <class P>
-    static Eigen::Index evaluate_offspring(P& problem, RunState& state, const Matrix& y, Eigen::Index first,
-                                           std::vector<double>& fy) {
-        Eigen::Index done = 0;
-        for (Eigen::Index k = first; k < y.cols() && !state.exhausted(); ++k, ++done)
-            fy[static_cast<std::size_t>(k)] = state.evaluate(problem, column(y, k));
-        return done;
     }
 };
 

@@ -51,7 +51,7 @@ struct Settings {
     std::int64_t pop = 50;
     std::int64_t evals = 100000;
     std::int64_t seeds = 10;
-    std::vector<std::string> algos{"pso", "pso-constriction", "ga", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"};
+    std::vector<std::string> algos{"pso", "pso-constriction", "ga", "ga-plus", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"};
     bool pagmo = true;
 };
 
@@ -123,6 +123,11 @@ Result run_algorithm(const std::string& algo, const F& f, const Settings& s, std
     }
     if (algo == "ga") {
         Ga<> a;
+        a.population = s.pop;
+        return a.run(f, budget, seed);
+    }
+    if (algo == "ga-plus") {
+        Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, UniformInit, PlusReplacement> a;
         a.population = s.pop;
         return a.run(f, budget, seed);
     }
@@ -234,7 +239,7 @@ int main(int argc, char** argv) {
     CLI::App app{"continuous benchmark: CSV of runs on stdout, summary on stderr"};
     app.add_option("--seeds", s.seeds, "seeds 1..N (default 10)")->check(CLI::Range(1, 1000));
     app.add_option("--evals", s.evals, "evaluations per run (default 100000)")->check(CLI::Range(100, 100000000));
-    app.add_option("--algos", s.algos, "algorithms (default: pso pso-constriction ga nlopt:LN_SBPLX nlopt:GN_CRS2_LM)")
+    app.add_option("--algos", s.algos, "algorithms (default: pso pso-constriction ga ga-plus nlopt:LN_SBPLX nlopt:GN_CRS2_LM)")
         ->delimiter(',');
     app.add_flag("!--no-pagmo", s.pagmo, "skip pagmo2 even when it was found at build time");
     CLI11_PARSE(app, argc, argv);

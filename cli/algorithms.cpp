@@ -40,15 +40,27 @@ ContinuousRunner make_pso_constriction(const ParamMap& params) {
     return wrap(a, params);
 }
 
-ContinuousRunner make_ga(const ParamMap& params) {
-    Ga<> a;
-    a.population = params.get_int("pop", a.population, "ga");
-    a.elitism = params.get_int("elitism", a.elitism, "ga");
-    a.selection.size = params.get_int("tournament", a.selection.size, "ga");
+template <class G>
+void set_ga_operators(G& a, const ParamMap& params) {
+    a.population = params.get_int("pop", a.population, a.id);
+    a.selection.size = params.get_int("tournament", a.selection.size, a.id);
     a.crossover.eta = params.get("eta_c", a.crossover.eta);
     a.crossover.probability = params.get("pc", a.crossover.probability);
     a.mutation.eta = params.get("eta_m", a.mutation.eta);
     a.mutation.probability = params.get("pm", a.mutation.probability);
+}
+
+ContinuousRunner make_ga(const ParamMap& params) {
+    Ga<> a;
+    set_ga_operators(a, params);
+    a.replacement.elitism = params.get_int("elitism", a.replacement.elitism, a.id);
+    return wrap(a, params);
+}
+
+ContinuousRunner make_ga_plus(const ParamMap& params) {
+    Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, UniformInit, PlusReplacement> a;
+    a.id = "ga-plus";
+    set_ga_operators(a, params);
     return wrap(a, params);
 }
 
@@ -65,6 +77,8 @@ const Registry<Builtin>& builtins() {
                 {&make_pso_constriction});
         reg.add("ga", "real-coded GA: tournament 2, SBX 15 / 0.9, polynomial mutation 20 / (1/D), elitism 1 (params: pop elitism tournament eta_c pc eta_m pm)",
                 {&make_ga});
+        reg.add("ga-plus", "the same GA with (mu + lambda) reinsertion: best N of parents and children, as pagmo2's sga (params: pop tournament eta_c pc eta_m pm)",
+                {&make_ga_plus});
         return reg;
     }();
     return r;

@@ -179,12 +179,21 @@ pride::Pso<pride::ConstrictionVelocity> pso_constriction(std::int64_t population
 pride::Ga<> ga(std::int64_t population = 50, std::int64_t elitism = 1) {
     pride::Ga<> a;
     a.population = population;
-    a.elitism = elitism;
+    a.replacement.elitism = elitism;
     return a;
 }
 using PsoReflect = pride::Pso<pride::InertiaVelocity<pride::LinearInertia>, pride::RangeVelocityClamp, pride::Reflect>;
 using PsoReflectFree = pride::Pso<pride::InertiaVelocity<pride::LinearInertia>, pride::NoVelocityClamp, pride::Reflect>;
 using GaReflect = pride::Ga<pride::TournamentSelection, pride::SbxCrossover, pride::PolynomialMutation, pride::Reflect>;
+
+using GaPlus = pride::Ga<pride::TournamentSelection, pride::SbxCrossover, pride::PolynomialMutation, pride::Clamp,
+                         pride::UniformInit, pride::PlusReplacement>;
+GaPlus ga_plus(std::int64_t population = 50) {
+    GaPlus a;
+    a.id = "ga-plus";
+    a.population = population;
+    return a;
+}
 
 /// Calls `f(label, algorithm)` for every algorithm of the suite, with the given population.
 template <class F>
@@ -192,6 +201,7 @@ void for_each_algorithm(std::int64_t population, F&& f) {
     f("pso", pso(population));
     f("pso-constriction", pso_constriction(population));
     f("ga", ga(population));
+    f("ga-plus", ga_plus(population));
     f("nlopt:LN_SBPLX", pride::Nlopt("LN_SBPLX", population));
     f("nlopt:GN_CRS2_LM", pride::Nlopt("GN_CRS2_LM", population));
 }
@@ -348,7 +358,7 @@ TEST_CASE("GA keeps every evaluated point in the box under clamping and reflecti
     check_bounds_kept("ga clamp", ga(20, 2));
     GaReflect reflect;
     reflect.population = 20;
-    reflect.elitism = 2;
+    reflect.replacement.elitism = 2;
     check_bounds_kept("ga reflect", reflect);
 }
 
