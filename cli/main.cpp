@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/grid_commands.hpp"
 #include "framework/error.hpp"
 
 int main(int argc, char** argv) {
@@ -35,6 +36,36 @@ int main(int argc, char** argv) {
     eval_cmd->add_option("--x", eval.x, "V1,V2,... or - to read one point per line from stdin")->required();
     eval_cmd->add_option("--dim", eval.dim, "check that every point has this many coordinates");
 
+    PathOptions path;
+    auto* path_cmd = app.add_subcommand("path", "one run on a grid map (A*, the exact optimum, or a box algorithm through an encoding)");
+    path_cmd->add_option("--map", path.map, "Moving AI .map or 0/1 matrix file")->required();
+    path_cmd->add_option("--start", path.start, "start cell X,Y (x: column from the left, y: row from the top)")->required();
+    path_cmd->add_option("--goal", path.goal, "goal cell X,Y")->required();
+    path_cmd->add_option("--algo", path.algo, "astar, exact, pso, pso-constriction, ga, ga-plus or nlopt:NAME")->required();
+    path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
+    path_cmd->add_option("--encoding", path.encoding, "line (default), free or chain");
+    path_cmd->add_option("--connector", path.connector, "repair (default) or penalty");
+    path_cmd->add_option("--pop", path.pop, "population size (default 20)");
+    auto* path_iters = path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)");
+    path_cmd->add_option("--evals", path.evals, "evaluation limit")->excludes(path_iters);
+    path_cmd->add_option("--seed", path.seed, "random seed (default 1)");
+    path_cmd->add_option("--inflate", path.inflate, "obstacle inflation radius in cells (default 0)");
+    path_cmd->add_option("--waypoints", path.waypoints, "waypoints of the free encoding (default 3)");
+    path_cmd->add_option("--weights", path.weights, "L,T,A weights of the weighted objective (default 1,1,0.1)");
+    path_cmd->add_option("--lambda", path.lambda, "turn weight of the hswoa objective (default 1)");
+    path_cmd->add_flag("--corner-cutting", path.corner_cutting, "allow diagonal steps past a blocked corner");
+    path_cmd->add_flag("--oracle", path.oracle, "add the exact optimum and the gap to it");
+    path_cmd->add_flag("--json", path.json, "print one JSON object");
+    path_cmd->add_option("--svg", path.svg, "draw the map and the path(s) to this SVG file");
+    path_cmd->add_option("--png", path.png, "draw the map and the path(s) to this PNG file");
+    path_cmd->add_option("--param", path.params, "algorithm parameter NAME=VALUE (repeatable)");
+
+    ScenOptions scen;
+    auto* scen_cmd = app.add_subcommand("scen", "solve every line of a Moving AI scenario file with A* and compare");
+    scen_cmd->add_option("file", scen.file, "the .scen file")->required();
+    scen_cmd->add_option("--map-dir", scen.map_dir, "where the maps are (default: the scenario's folder)");
+    scen_cmd->add_flag("--json", scen.json, "print one JSON object");
+
     bool list_json = false;
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
     list_cmd->add_flag("--json", list_json, "print one JSON object");
@@ -44,11 +75,13 @@ int main(int argc, char** argv) {
         const bool known = argc > 1 && std::any_of(subcommands.begin(), subcommands.end(),
                                                    [&](const CLI::App* s) { return s->get_name() == argv[1]; });
         if (argc > 1 && argv[1][0] != '-' && !known)
-            throw pride::InputError(std::string("unknown subcommand '") + argv[1] + "' (expected run, eval or list)");
+            throw pride::InputError(std::string("unknown subcommand '") + argv[1] + "' (expected run, eval, list, path or scen)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
         if (*list_cmd) return list_command(list_json, std::cout);
+        if (*path_cmd) return path_command(path, std::cout);
+        if (*scen_cmd) return scen_command(scen, std::cout);
         return 2;
     } catch (const CLI::Success& e) {
         return app.exit(e);

@@ -1,0 +1,128 @@
+// The grid benchmark of issue 3; prints numbers, asserts nothing.
+//   1. A*: expansions per second and time per query on the larger Moving AI scenario maps
+//      (every line of each scenario file given on the command line).
+//   2. Decoding and evaluating one `line` genotype (repair connector, objective cells) on a 20x20
+//      map (the bundled file002-20x20.map) and on a 100x100 map with 20 % random obstacles.
+//   3. PSO (20 particles, 50 iterations, line + repair, objective cells) on the bundled 10x10 map.
+// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR]
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "algorithms/pso.hpp"
+#include "framework/encoding.hpp"
+#include "problems/grid/astar.hpp"
+#include "problems/grid/encodings.hpp"
+#include "problems/grid/map_io.hpp"
+#include "problems/grid/objectives.hpp"
+
+namespace {
+
+using namespace pride;
+using namespace pride::grid;
+
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+void bench_astar(const std::string& scen) {
+    const auto entries = read_scenario(scen);
+    const auto dir = std::filesystem::path(scen).parent_path();
+    std::map<std::string, GridMap> maps;
+    for (const auto& e : entries)
+        if (!maps.count(e.map)) maps.emplace(e.map, read_map((dir / e.map).string()));
+    AStar astar;
+    double worst = 0.0;
+    const auto start = Clock::now();
+    for (const auto& e : entries) worst = std::max(worst, std::abs(astar.search(maps.at(e.map), e.start, e.goal) - e.optimal));
+    const double ms = ms_since(start);
+    fmt::print("astar,{},{},{},{:.4g},{:.4g},{:.2g}\n", std::filesystem::path(scen).filename().string(), entries.size(),
+               astar.expansions(), astar.expansions() / (ms / 1000.0), ms / static_cast<double>(entries.size()), worst);
+}
+
+/// A w x h map with `share` of its cells blocked at random, corner to corner connected (the first
+/// seed from `seed` on that gives one).
+GridMap random_map(int w, int h, double share, std::uint64_t seed) {
+    for (;; ++seed) {
+        Rng rng(seed);
+        std::vector<std::uint8_t> blocked(static_cast<std::size_t>(w) * h);
+        for (auto& b : blocked) b = rng.bernoulli(share) ? 1 : 0;
+        blocked.front() = blocked.back() = 0;
+        GridMap map(w, h, std::move(blocked), fmt::format("random-{}x{}", w, h));
+        if (reachable_from(map, {0, 0})[map.size() - 1]) return map;
+    }
+}
+
+/// A bundled map and the start and goal of its one-line scenario file.
+struct Bundled {
+    std::shared_ptr<const GridMap> map;
+    Cell start, goal;
+};
+Bundled bundled(const std::string& maps, const std::string& name) {
+    const auto scen = read_scenario(maps + "/" + name + ".map.scen");
+    return {std::make_shared<const GridMap>(read_map(maps + "/" + name + ".map")), scen.at(0).start, scen.at(0).goal};
+}
+
+void bench_decode(const std::string& label, std::shared_ptr<const GridMap> map, Cell s, Cell g) {
+    const GridProblem<CellsObjective> problem(std::move(map), s, g);
+    Encoded<GridProblem<CellsObjective>, LineEncoding<RepairConnector>> encoded(problem, LineEncoding<RepairConnector>(problem));
+    Rng rng(7);
+    std::vector<std::vector<double>> genotypes(64, std::vector<double>(encoded.dimension()));
+    for (auto& x : genotypes)
+        for (std::size_t i = 0; i < x.size(); ++i) x[i] = rng.uniform(encoded.lower()[i], encoded.upper()[i]);
+    double sink = 0.0;
+    for (const auto& x : genotypes) sink += encoded.evaluate(x);  // warm the detour memory, as a run does
+    const int rounds = 2000;
+    const auto start = Clock::now();
+    for (int r = 0; r < rounds; ++r)
+        for (const auto& x : genotypes) sink += encoded.evaluate(x);
+    const double ns = ms_since(start) * 1e6 / (rounds * static_cast<double>(genotypes.size()));
+    fmt::print("decode,{},{},{:.1f}\n", label, encoded.dimension(), ns);
+    if (sink == 42.0) fmt::print(stderr, " ");
+}
+
+void bench_pso(const std::string& maps) {
+    const Bundled b = bundled(maps, "file000-10x10");
+    const GridProblem<CellsObjective> problem(b.map, b.start, b.goal);
+    const Encoded<GridProblem<CellsObjective>, LineEncoding<RepairConnector>> encoded(problem,
+                                                                                    LineEncoding<RepairConnector>(problem));
+    Pso<> pso;
+    pso.population = 20;
+    std::vector<double> wall;
+    double best = 0.0;
+    for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+        const Result r = pso.run(encoded, max_iterations(50), seed);
+        wall.push_back(r.wall_ms);
+        best += r.best_f / 200.0;
+    }
+    std::sort(wall.begin(), wall.end());
+    fmt::print("pso,file000-10x10,200 runs,median_ms {:.4f},mean_best_cells {:.3f}\n", wall[wall.size() / 2], best);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> scens;
+    std::string maps = "examples/maps";
+    CLI::App app{"grid benchmark: A*, decoding, PSO on the 10x10 map"};
+    app.add_option("--scen", scens, "Moving AI scenario files for the A* part");
+    app.add_option("--maps", maps, "folder of the bundled maps (default examples/maps)");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        fmt::print("part,what,queries,expansions,expansions_per_s,ms_per_query,max_diff\n");
+        for (const auto& s : scens) bench_astar(s);
+        fmt::print("part,map,genes,ns_per_decode_and_evaluate\n");
+        const Bundled m20 = bundled(maps, "file002-20x20");
+        bench_decode("file002-20x20", m20.map, m20.start, m20.goal);
+        bench_decode("random-100x100-20%", std::make_shared<const GridMap>(random_map(100, 100, 0.2, 3)), {0, 0}, {99, 99});
+        bench_pso(maps);
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "grid_bench: {}\n", e.what());
+        return 2;
+    }
+    return 0;
+}

@@ -1,0 +1,78 @@
+#pragma once
+// Names and named parameters to configured algorithm objects, for the command line. The result
+// is handed to a callback as its concrete type, so the caller instantiates the run for its own
+// problem type (continuous or grid): type erasure happens once per run, never per evaluation.
+#include <string>
+#include <string_view>
+
+#include "algorithms/ga.hpp"
+#include "algorithms/nlopt.hpp"
+#include "algorithms/pso.hpp"
+#include "framework/error.hpp"
+#include "framework/params.hpp"
+
+namespace pride::cli {
+
+namespace detail {
+template <class G>
+void set_ga_operators(G& a, const ParamMap& params) {
+    a.population = params.get_int("pop", a.population, a.id);
+    a.selection.size = params.get_int("tournament", a.selection.size, a.id);
+    a.crossover.eta = params.get("eta_c", a.crossover.eta);
+    a.crossover.probability = params.get("pc", a.crossover.probability);
+    a.mutation.eta = params.get("eta_m", a.mutation.eta);
+    a.mutation.probability = params.get("pm", a.mutation.probability);
+}
+
+template <class A, class F>
+decltype(auto) finish(A& a, const ParamMap& params, F&& f) {
+    params.check_all_used(a.name());
+    a.validate();
+    return f(a);
+}
+}  // namespace detail
+
+/// The box algorithms by name, each with the parameters it reads (see list_algorithms()).
+template <class F>
+decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&& f) {
+    if (name.rfind("nlopt:", 0) == 0) {
+        Nlopt a{std::string(name)};
+        a.record_every = params.get_int("pop", a.record_every, a.name());
+        a.restart = params.get_int("restart", 1, a.name()) != 0;
+        return detail::finish(a, params, f);
+    }
+    if (name == "pso") {
+        Pso<> a;
+        a.population = params.get_int("pop", a.population, a.id);
+        a.velocity.inertia.start = params.get("w_start", a.velocity.inertia.start);
+        a.velocity.inertia.end = params.get("w_end", a.velocity.inertia.end);
+        a.velocity.c1 = params.get("c1", a.velocity.c1);
+        a.velocity.c2 = params.get("c2", a.velocity.c2);
+        a.velocity_clamp.fraction = params.get("vmax", a.velocity_clamp.fraction);
+        return detail::finish(a, params, f);
+    }
+    if (name == "pso-constriction") {
+        Pso<ConstrictionVelocity> a;
+        a.id = "pso-constriction";
+        a.population = params.get_int("pop", a.population, a.id);
+        a.velocity.chi = params.get("chi", a.velocity.chi);
+        a.velocity.c = params.get("c", a.velocity.c);
+        a.velocity_clamp.fraction = params.get("vmax", a.velocity_clamp.fraction);
+        return detail::finish(a, params, f);
+    }
+    if (name == "ga") {
+        Ga<> a;
+        detail::set_ga_operators(a, params);
+        a.replacement.elitism = params.get_int("elitism", a.replacement.elitism, a.id);
+        return detail::finish(a, params, f);
+    }
+    if (name == "ga-plus") {
+        Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, UniformInit, PlusReplacement> a;
+        a.id = "ga-plus";
+        detail::set_ga_operators(a, params);
+        return detail::finish(a, params, f);
+    }
+    throw InputError("--algo: unknown algorithm '" + std::string(name) + "' (see 'pride list')");
+}
+
+}  // namespace pride::cli

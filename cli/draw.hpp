@@ -1,0 +1,18 @@
+#pragma once
+// Pictures of a grid run: the map, start, goal, the path found and (optionally) the optimal path,
+// as SVG or PNG, drawn once with cairo (Debian's libcairo2) for both formats.
+#include <string>
+
+#include "problems/grid/map.hpp"
+#include "problems/grid/path.hpp"
+
+namespace pride::cli {
+
+enum class PictureFormat { svg, png };
+
+/// Writes the picture to `file` through a temporary file renamed into place, so a failure never
+/// leaves a half-written picture. `path` and `optimal` may be null.
+void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
+               const grid::Path* optimal, const std::string& file, PictureFormat format);
+
+}  // namespace pride::cli

@@ -1,0 +1,44 @@
+#pragma once
+// `pride path` (one run on a grid) and `pride scen` (A* against Moving AI scenario files), as in
+// shared/spec/cli.md.
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pride::cli {
+
+struct PathOptions {
+    std::string map;
+    std::string start;  // "X,Y"
+    std::string goal;
+    std::string algo;
+    std::string objective = "cells";
+    std::string encoding = "line";
+    std::string connector = "repair";
+    std::optional<std::int64_t> pop;
+    std::optional<std::int64_t> iters;
+    std::optional<std::int64_t> evals;
+    std::int64_t seed = 1;
+    std::int64_t inflate = 0;
+    std::int64_t waypoints = 3;
+    std::optional<std::string> weights;  // "L,T,A" for the weighted objective
+    std::optional<double> lambda;        // for the hswoa objective
+    bool corner_cutting = false;
+    bool oracle = false;
+    bool json = false;
+    std::string svg;
+    std::string png;
+    std::vector<std::string> params;
+};
+int path_command(const PathOptions& o, std::ostream& out);
+
+struct ScenOptions {
+    std::string file;
+    std::string map_dir;  // default: the scenario file's folder
+    bool json = false;
+};
+int scen_command(const ScenOptions& o, std::ostream& out);
+
+}  // namespace pride::cli

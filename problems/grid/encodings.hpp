@@ -1,0 +1,227 @@
+#pragma once
+// The `line` and `free` encodings of shared/spec/grid.md: a point in a box becomes a chain of
+// cells through waypoints joined by a Connector policy. Both fit the framework's EncodingFor
+// concept unchanged, so Encoded<GridProblem<O>, LineEncoding<C>> is a BoxProblem and every box
+// algorithm (PSO, GA, NLopt) plans on grids without a line of grid code of its own.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "framework/error.hpp"
+#include "framework/problem.hpp"
+#include "framework/random.hpp"
+#include "problems/grid/connectors.hpp"
+#include "problems/grid/grid_problem.hpp"
+#include "problems/grid/walk.hpp"
+
+namespace pride::grid {
+
+namespace detail {
+/// Rounds a gene to a coordinate in [0, extent - 1] (NaN to 0).
+inline int to_coordinate(double v, int extent) {
+    if (!(v >= 0.0)) return 0;
+    if (v >= extent - 1) return extent - 1;
+    return static_cast<int>(v + 0.5);  // round half up (v >= 0)
+}
+}  // namespace detail
+
+/// `line`: one gene per row (or column) strictly between start and goal along the axis on which
+/// they are farther apart (ties: rows); the gene is the cross coordinate of that line's waypoint.
+/// Decoding rounds it, snaps a blocked (or unreachable) waypoint to the nearest reachable cell of
+/// the same line (ties: nearer the straight start-goal line, then the lower coordinate), joins
+/// start, waypoints and goal with the Connector, and cuts loops. The "serial-number" encoding of
+/// file 000.
+template <class Connector = RepairConnector>
+class LineEncoding {
+public:
+    template <class Objective>
+    explicit LineEncoding(const GridProblem<Objective>& p) {
+        const Cell s = p.start(), g = p.goal();
+        rows_ = std::abs(g.y - s.y) >= std::abs(g.x - s.x);
+        const int from = rows_ ? s.y : s.x, to = rows_ ? g.y : g.x;
+        step_ = to >= from ? 1 : -1;
+        first_ = from + step_;
+        count_ = std::abs(to - from) - 1;
+        require(count_ >= 1, "--encoding line",
+                "start and goal must be at least two rows or columns apart; use --encoding free");
+        extent_ = rows_ ? p.map().width() : p.map().height();
+        auto snap = std::make_shared<std::vector<int>>(static_cast<std::size_t>(count_) * extent_);
+        for (int k = 0; k < count_; ++k) {
+            const int line = first_ + k * step_;
+            // Where the straight start-goal segment crosses this line (for tie-breaking).
+            const double t = static_cast<double>(line - from) / (to - from);
+            const double ideal = rows_ ? s.x + t * (g.x - s.x) : s.y + t * (g.y - s.y);
+            for (int c = 0; c < extent_; ++c) {
+                int best = -1;
+                double best_key = std::numeric_limits<double>::infinity(), best_tie = best_key;
+                for (int o = 0; o < extent_; ++o) {
+                    if (!p.reachable(at(line, o))) continue;
+                    const double key = std::abs(o - c), tie = std::abs(o - ideal);
+                    if (key < best_key || (key == best_key && tie < best_tie)) {
+                        best = o;
+                        best_key = key;
+                        best_tie = tie;
+                    }
+                }
+                // Every line between start and goal holds a reachable cell: a path must cross it.
+                (*snap)[static_cast<std::size_t>(k) * extent_ + c] = best;
+            }
+        }
+        snap_ = std::move(snap);
+        lower_.assign(static_cast<std::size_t>(count_), 0.0);
+        upper_.assign(static_cast<std::size_t>(count_), static_cast<double>(extent_ - 1));
+    }
+
+    template <class P>
+    std::size_t dimension(const P&) const { return static_cast<std::size_t>(count_); }
+    template <class P>
+    std::span<const double> lower(const P&) const { return lower_; }
+    template <class P>
+    std::span<const double> upper(const P&) const { return upper_; }
+
+    /// The waypoint a genotype puts on line k.
+    Cell waypoint(std::span<const double> genotype, int k) const {
+        const int c = detail::to_coordinate(genotype[static_cast<std::size_t>(k)], extent_);
+        return at(first_ + k * step_, (*snap_)[static_cast<std::size_t>(k) * extent_ + c]);
+    }
+
+    template <class Objective>
+    const DecodedPath& decode(const GridProblem<Objective>& p, std::span<const double> genotype) {
+        out_.path.clear();
+        out_.violations = 0;
+        out_.path.push_back(p.start());
+        Cell previous = p.start();
+        for (int k = 0; k < count_; ++k) {
+            const Cell w = waypoint(genotype, k);
+            connector_.join(p.map(), previous, w, out_.path, out_.violations, p.corner_cutting());
+            previous = w;
+        }
+        connector_.join(p.map(), previous, p.goal(), out_.path, out_.violations, p.corner_cutting());
+        cut_loops(out_.path, p.map(), seen_);
+        return out_;
+    }
+
+    /// Genotypes read off feasible random walks: each line's gene is where the walk first meets
+    /// that line (the problem's suggestions for initialisers that accept them).
+    template <class Objective>
+    void starting_points(const GridProblem<Objective>& p, Rng& rng, Matrix& out) const {
+        RandomWalker walker;
+        Path walk;
+        for (Eigen::Index j = 0; j < out.cols(); ++j) {
+            walker.walk(p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting());
+            for (int k = 0; k < count_; ++k) {
+                const int line = first_ + k * step_;
+                for (const Cell c : walk)
+                    if ((rows_ ? c.y : c.x) == line) {
+                        out(k, j) = rows_ ? c.x : c.y;
+                        break;
+                    }
+            }
+        }
+    }
+
+private:
+    Cell at(int line, int cross) const { return rows_ ? Cell{cross, line} : Cell{line, cross}; }
+
+    bool rows_ = true;
+    int first_ = 0, step_ = 1, count_ = 0, extent_ = 0;
+    std::shared_ptr<const std::vector<int>> snap_;  // [line k][coordinate] -> snapped coordinate
+    std::vector<double> lower_, upper_;
+    Connector connector_{};
+    DecodedPath out_;                  // scratch: the decoded chain, valid until the next decode
+    std::vector<std::int32_t> seen_;   // scratch for cut_loops
+};
+
+/// `free`: 2K genes, K waypoints (x, y) anywhere on the map. Decoding rounds each, snaps it to the
+/// nearest cell reachable from the start (breadth-first over the 8 neighbours, ties to the cell
+/// found first in row-major order), joins start, waypoints and goal with the Connector, and cuts
+/// loops. Works where paths must go backwards (mazes).
+template <class Connector = RepairConnector>
+class FreeEncoding {
+public:
+    template <class Objective>
+    FreeEncoding(const GridProblem<Objective>& p, int waypoints) : k_(waypoints) {
+        require(waypoints >= 1 && waypoints <= 1000, "--waypoints", "must be in [1, 1000], got " + std::to_string(waypoints));
+        const GridMap& m = p.map();
+        auto nearest = std::make_shared<std::vector<std::uint32_t>>(m.size(), std::numeric_limits<std::uint32_t>::max());
+        std::vector<std::size_t> queue;
+        for (std::size_t i = 0; i < m.size(); ++i)
+            if (p.reachable(m.cell(i))) {
+                (*nearest)[i] = static_cast<std::uint32_t>(i);
+                queue.push_back(i);
+            }
+        for (std::size_t head = 0; head < queue.size(); ++head) {
+            const Cell c = m.cell(queue[head]);
+            for (int d = 0; d < 8; ++d) {
+                const Cell n{c.x + kDx[d], c.y + kDy[d]};
+                if (!m.inside(n) || (*nearest)[m.index(n)] != std::numeric_limits<std::uint32_t>::max()) continue;
+                (*nearest)[m.index(n)] = (*nearest)[queue[head]];
+                queue.push_back(m.index(n));
+            }
+        }
+        nearest_ = std::move(nearest);
+        for (int k = 0; k < k_; ++k) {
+            lower_.insert(lower_.end(), {0.0, 0.0});
+            upper_.insert(upper_.end(), {m.width() - 1.0, m.height() - 1.0});
+        }
+    }
+
+    template <class P>
+    std::size_t dimension(const P&) const { return static_cast<std::size_t>(2 * k_); }
+    template <class P>
+    std::span<const double> lower(const P&) const { return lower_; }
+    template <class P>
+    std::span<const double> upper(const P&) const { return upper_; }
+
+    template <class Objective>
+    Cell waypoint(const GridProblem<Objective>& p, std::span<const double> genotype, int k) const {
+        const GridMap& m = p.map();
+        const Cell raw{detail::to_coordinate(genotype[2 * static_cast<std::size_t>(k)], m.width()),
+                       detail::to_coordinate(genotype[2 * static_cast<std::size_t>(k) + 1], m.height())};
+        return m.cell((*nearest_)[m.index(raw)]);
+    }
+
+    template <class Objective>
+    const DecodedPath& decode(const GridProblem<Objective>& p, std::span<const double> genotype) {
+        out_.path.clear();
+        out_.violations = 0;
+        out_.path.push_back(p.start());
+        Cell previous = p.start();
+        for (int k = 0; k < k_; ++k) {
+            const Cell w = waypoint(p, genotype, k);
+            connector_.join(p.map(), previous, w, out_.path, out_.violations, p.corner_cutting());
+            previous = w;
+        }
+        connector_.join(p.map(), previous, p.goal(), out_.path, out_.violations, p.corner_cutting());
+        cut_loops(out_.path, p.map(), seen_);
+        return out_;
+    }
+
+    /// Genotypes read off feasible random walks: K cells sampled evenly along each walk.
+    template <class Objective>
+    void starting_points(const GridProblem<Objective>& p, Rng& rng, Matrix& out) const {
+        RandomWalker walker;
+        Path walk;
+        for (Eigen::Index j = 0; j < out.cols(); ++j) {
+            walker.walk(p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting());
+            for (int k = 0; k < k_; ++k) {
+                const std::size_t at = (static_cast<std::size_t>(k) + 1) * (walk.size() - 1) / (static_cast<std::size_t>(k_) + 1);
+                out(2 * k, j) = walk[at].x;
+                out(2 * k + 1, j) = walk[at].y;
+            }
+        }
+    }
+
+private:
+    int k_;
+    std::shared_ptr<const std::vector<std::uint32_t>> nearest_;  // cell -> nearest reachable cell
+    std::vector<double> lower_, upper_;
+    Connector connector_{};
+    DecodedPath out_;
+    std::vector<std::int32_t> seen_;
+};
+
+}  // namespace pride::grid

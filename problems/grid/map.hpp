@@ -1,0 +1,128 @@
+#pragma once
+// The grid map of shared/spec/grid.md: H rows by W columns of free or blocked cells; a cell is
+// (x, y), x the column from the left, y the row from the first line of the file downwards (the
+// Moving AI convention). The papers' bottom-left numbering is only a conversion (paper_number,
+// from_paper_number), never a second convention inside the code.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "framework/error.hpp"
+
+namespace pride::grid {
+
+struct Cell {
+    int x = 0;
+    int y = 0;
+    friend bool operator==(const Cell&, const Cell&) = default;
+};
+
+/// The 8 moves, clockwise on the screen (y grows downwards), starting east; direction d and
+/// (d + 4) % 8 are opposite, and the angle between d and e is 45 * min(|d - e|, 8 - |d - e|).
+inline constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+inline constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+inline constexpr bool is_diagonal(int d) { return (d & 1) != 0; }
+/// The direction of a one-cell step from a to b, or -1 when b is not one of a's 8 neighbours.
+inline int direction(Cell a, Cell b) {
+    const int dx = b.x - a.x, dy = b.y - a.y;
+    for (int d = 0; d < 8; ++d)
+        if (kDx[d] == dx && kDy[d] == dy) return d;
+    return -1;
+}
+/// The turn between two directions in multiples of 45 degrees (0..4).
+inline constexpr int turn_steps(int d, int e) {
+    const int k = d > e ? d - e : e - d;
+    return k < 8 - k ? k : 8 - k;
+}
+
+class GridMap {
+public:
+    GridMap() = default;
+    /// `blocked` row by row, top row first; `name` says where the map came from (for messages).
+    GridMap(int width, int height, std::vector<std::uint8_t> blocked, std::string name = "map")
+        : width_(width), height_(height), blocked_(std::move(blocked)), name_(std::move(name)) {
+        require(width >= 1 && height >= 1, name_, "a map needs at least one row and one column");
+        require(blocked_.size() == static_cast<std::size_t>(width) * static_cast<std::size_t>(height), name_,
+                "cell count does not match width x height");
+        moves_.resize(blocked_.size());
+        moves_cutting_.resize(blocked_.size());
+        for (std::size_t i = 0; i < blocked_.size(); ++i) {
+            std::uint8_t strict = 0, cutting = 0;
+            for (int d = 0; d < 8; ++d) {
+                if (legal_step(cell(i), d, false)) strict |= static_cast<std::uint8_t>(1u << d);
+                if (legal_step(cell(i), d, true)) cutting |= static_cast<std::uint8_t>(1u << d);
+            }
+            moves_[i] = strict;
+            moves_cutting_[i] = cutting;
+        }
+    }
+
+    int width() const noexcept { return width_; }
+    int height() const noexcept { return height_; }
+    std::size_t size() const noexcept { return blocked_.size(); }
+    const std::string& name() const noexcept { return name_; }
+
+    bool inside(Cell c) const noexcept { return c.x >= 0 && c.y >= 0 && c.x < width_ && c.y < height_; }
+    std::size_t index(Cell c) const noexcept {
+        return static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c.x);
+    }
+    Cell cell(std::size_t index) const noexcept {
+        return {static_cast<int>(index % static_cast<std::size_t>(width_)),
+                static_cast<int>(index / static_cast<std::size_t>(width_))};
+    }
+    /// Inside and not blocked.
+    bool free(Cell c) const noexcept { return inside(c) && blocked_[index(c)] == 0; }
+    bool free_index(std::size_t i) const noexcept { return blocked_[i] == 0; }
+
+    /// A one-cell step from a in direction d is legal when the target is free and, for a diagonal,
+    /// both orthogonally adjacent cells are free too (no corner cutting), unless `corner_cutting`.
+    bool legal_step(Cell a, int d, bool corner_cutting = false) const noexcept {
+        const Cell b{a.x + kDx[d], a.y + kDy[d]};
+        if (!free(b)) return false;
+        if (!is_diagonal(d) || corner_cutting) return true;
+        return free(Cell{a.x + kDx[d], a.y}) && free(Cell{a.x, a.y + kDy[d]});
+    }
+
+    /// The legal steps from cell `index` as a bit mask (bit d: direction d), worked out once per map
+    /// so that searches test one byte instead of up to three cells.
+    std::uint8_t moves(std::size_t index, bool corner_cutting = false) const noexcept {
+        return corner_cutting ? moves_cutting_[index] : moves_[index];
+    }
+    /// The index offset of a step in direction d.
+    std::ptrdiff_t offset(int d) const noexcept { return static_cast<std::ptrdiff_t>(kDy[d]) * width_ + kDx[d]; }
+
+    /// Obstacle inflation (file 003, section 3.1): every cell within Chebyshev distance r of a
+    /// blocked cell becomes blocked.
+    GridMap inflated(int r) const {
+        require(r >= 0, "--inflate", "radius must be >= 0, got " + std::to_string(r));
+        if (r == 0) return *this;
+        std::vector<std::uint8_t> out(blocked_);
+        for (int y = 0; y < height_; ++y)
+            for (int x = 0; x < width_; ++x) {
+                if (!blocked_[index({x, y})]) continue;
+                for (int yy = std::max(0, y - r); yy <= std::min(height_ - 1, y + r); ++yy)
+                    for (int xx = std::max(0, x - r); xx <= std::min(width_ - 1, x + r); ++xx) out[index({xx, yy})] = 1;
+            }
+        return GridMap(width_, height_, std::move(out), name_ + " inflated by " + std::to_string(r));
+    }
+
+    /// File 002 eq. 2 numbers cells from 0, left to right and bottom to top.
+    long paper_number(Cell c) const noexcept {
+        return static_cast<long>(height_ - 1 - c.y) * width_ + c.x;
+    }
+    Cell from_paper_number(long g) const {
+        require(g >= 0 && g < static_cast<long>(size()), name_, "paper cell number out of range: " + std::to_string(g));
+        return {static_cast<int>(g % width_), height_ - 1 - static_cast<int>(g / width_)};
+    }
+
+private:
+    int width_ = 0;
+    int height_ = 0;
+    std::vector<std::uint8_t> blocked_;  // 1 = blocked, row by row from the top
+    std::vector<std::uint8_t> moves_, moves_cutting_;  // legal steps per cell, bit d = direction d
+    std::string name_;
+};
+
+}  // namespace pride::grid

@@ -1,0 +1,53 @@
+#pragma once
+// Reading maps and scenarios (shared/spec/grid.md, "Maps"). Two map formats, told apart by their
+// content, never by the file name:
+//   - Moving AI `.map`: `type octile`, `height H`, `width W`, `map` (in this order), then H lines of
+//     W characters; `.` `G` `S` are free, `@` `O` `T` `W` blocked.
+//   - plain matrix: H lines of W tokens `0` (free) / `1` (blocked), separated by blanks ("0 1 0")
+//     or not ("010"); a line with blanks is read token by token, so "0 10" is an error, not 3 cells.
+// Both accept CRLF line ends, trailing blanks on any line, a missing final newline, blank lines
+// before the first line and after the last one, and a UTF-8 byte-order mark.
+//
+// Every malformed input throws pride::InputError with one line `FILE:LINE:COL: what is wrong`
+// (LINE and COL 1-based, COL counted in characters; COL is left out when no column makes sense,
+// e.g. "too few rows"). Binary input (a NUL byte, bytes that are not UTF-8) is an error too, never
+// a crash. A file that cannot be read is `FILE: cannot open ...`.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "problems/grid/map.hpp"
+
+namespace pride::grid {
+
+/// Parses a map held in `text`; `name` stands for the file in messages and becomes the map's name.
+GridMap parse_map(std::string_view text, const std::string& name);
+/// Reads and parses the map file at `path` (the map's name is the path).
+GridMap read_map(const std::string& path);
+
+/// One line of a Moving AI scenario file (`.map.scen`, and the MAPF `-even-N.scen` files, which
+/// share the format): `bucket map width height start_x start_y goal_x goal_y optimal_length`.
+/// Cells are in the (x, y) convention of map.hpp; `line` is the 1-based line in the file.
+struct ScenarioEntry {
+    int bucket = 0;
+    std::string map;
+    int width = 0;
+    int height = 0;
+    Cell start;
+    Cell goal;
+    double optimal = 0.0;
+    int line = 0;
+};
+
+/// Parses a scenario held in `text`: a `version 1` (or `version 1.0`) line, then one entry per
+/// line, fields separated by tabs or spaces; blank lines are skipped. Start and goal must lie inside
+/// width x height and the optimal length must be finite and >= 0; any malformed line throws
+/// InputError `FILE:LINE: ...`. Whether start and goal are free is for the caller to check on the map.
+std::vector<ScenarioEntry> parse_scenario(std::string_view text, const std::string& name);
+/// Reads and parses the scenario file at `path`.
+std::vector<ScenarioEntry> read_scenario(const std::string& path);
+
+/// The map in Moving AI format (`.` free, `@` blocked), "\n" line ends; parse_map reads it back.
+std::string to_movingai(const GridMap& map);
+
+}  // namespace pride::grid

@@ -1,0 +1,71 @@
+#pragma once
+// Feasible random paths: a randomised walk with a taboo list and backtracking from dead ends
+// (file 003 section 3.2, file 002 step 2), biased towards the goal. A depth-first search whose
+// next cell is drawn by roulette: every visited cell stays taboo, so the walk ends at the goal
+// whenever the goal can be reached, and reports when it cannot, after at most one visit per cell.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "framework/random.hpp"
+#include "problems/grid/astar.hpp"
+#include "problems/grid/map.hpp"
+#include "problems/grid/path.hpp"
+
+namespace pride::grid {
+
+class RandomWalker {
+public:
+    /// Goal bias: a neighbour's weight is exp(-bias * (how much the step changes the octile
+    /// distance to the goal)); 0 walks blindly.
+    double bias = 2.0;
+
+    /// A legal path from s to g in `out` (no cell twice), or false when g cannot be reached.
+    bool walk(const GridMap& map, Cell s, Cell g, Rng& rng, Path& out, bool corner_cutting = false) {
+        out.clear();
+        if (!map.free(s) || !map.free(g)) return false;
+        if (visited_.size() != map.size()) {
+            visited_.assign(map.size(), 0);
+            stamp_ = 0;
+        }
+        if (++stamp_ == 0) {
+            std::fill(visited_.begin(), visited_.end(), 0);
+            stamp_ = 1;
+        }
+        out.push_back(s);
+        visited_[map.index(s)] = stamp_;
+        while (!out.empty()) {
+            const Cell c = out.back();
+            if (c == g) return true;
+            const double here = octile(c, g);
+            int count = 0;
+            double total = 0.0;
+            for (int d = 0; d < 8; ++d) {
+                const Cell n{c.x + kDx[d], c.y + kDy[d]};
+                if (!map.legal_step(c, d, corner_cutting) || visited_[map.index(n)] == stamp_) continue;
+                const double w = std::exp(-bias * (octile(n, g) - here));
+                candidates_[count] = n;
+                weights_[count++] = w;
+                total += w;
+            }
+            if (count == 0) {  // dead end: back up one cell; it stays taboo
+                out.pop_back();
+                continue;
+            }
+            double r = rng.uniform() * total;
+            int pick = 0;
+            while (pick + 1 < count && r >= weights_[pick]) r -= weights_[pick++];
+            visited_[map.index(candidates_[pick])] = stamp_;
+            out.push_back(candidates_[pick]);
+        }
+        return false;
+    }
+
+private:
+    std::vector<std::uint32_t> visited_;  // generation stamps: no clearing between walks
+    std::uint32_t stamp_ = 0;
+    Cell candidates_[8];
+    double weights_[8];
+};
+
+}  // namespace pride::grid
