@@ -6,8 +6,11 @@
 
 namespace pride {
 
-struct Result {
-    std::vector<double> best_x;  // the genotype; an Encoded problem's decode() gives the solution
+/// `Solution` is what the algorithm searched: a point of the box (the default) or, for algorithms
+/// on chains, a chain.
+template <class Solution = std::vector<double>>
+struct BasicResult {
+    Solution best_x;             // a point: the genotype, which an Encoded problem's decode() turns into the solution
     double best_f = 0.0;         // +inf when no evaluation gave a finite value
     std::int64_t evaluations = 0;
     std::int64_t iterations = 0;  // completed iterations after the initial population
@@ -18,5 +21,7 @@ struct Result {
     std::vector<std::int64_t> history_evaluations;
     double wall_ms = 0.0;  // from population set-up to the end of the run
 };
+
+using Result = BasicResult<>;
 
 }  // namespace pride

@@ -8,6 +8,7 @@
 #include <limits>
 #include <span>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "framework/observer.hpp"
@@ -22,25 +23,32 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 /// NaN and +-inf become +inf: worse than every finite value, so never the best.
 inline double sanitize(double f) noexcept { return std::isfinite(f) ? f : kInf; }
 
-class RunState {
+/// `Solution` is what is searched: a point of a box (std::vector<double>, the default, kept as
+/// the span evaluated) or a chain for algorithms on chains.
+template <class Solution = std::vector<double>>
+class BasicRunState {
 public:
-    RunState(const Termination& termination, std::size_t dimension)
+    /// `dimension`: the length of a point, for box problems (the best point is allocated once).
+    explicit BasicRunState(const Termination& termination, std::size_t dimension = 0)
         : termination_(termination),
-          limit_(termination.max_evaluations.value_or(std::numeric_limits<std::int64_t>::max())),
-          best_x_(dimension, std::numeric_limits<double>::quiet_NaN()) {
+          limit_(termination.max_evaluations.value_or(std::numeric_limits<std::int64_t>::max())) {
+        if constexpr (is_point) best_x_.assign(dimension, std::numeric_limits<double>::quiet_NaN());
         progress_.start = Clock::now();
     }
 
-    /// One counted evaluation. Precondition: !exhausted(); breaking it is a bug in the algorithm,
-    /// and throws rather than overspend the budget.
-    template <BoxProblem P>
-    double evaluate(P& problem, std::span<const double> x) {
+    /// One counted evaluation of a point (box problems) or a chain. Precondition: !exhausted();
+    /// breaking it is a bug in the algorithm, and throws rather than overspend the budget.
+    template <class P, class X>
+    double evaluate(P& problem, const X& x) {
         if (progress_.evaluations >= limit_) throw std::logic_error("evaluation budget overspent");
         const double f = sanitize(problem.evaluate(x));
         ++progress_.evaluations;
         if (f < progress_.best) {
             progress_.best = f;
-            std::copy(x.begin(), x.end(), best_x_.begin());
+            if constexpr (is_point)
+                std::copy(x.begin(), x.end(), best_x_.begin());
+            else
+                best_x_ = x;
         }
         return f;
     }
@@ -48,7 +56,9 @@ public:
     /// Evaluates the first min(points.cols(), remaining()) columns into `values` and returns how
     /// many; columns past the budget get +inf. Uses the problem's batch evaluation when it has one.
     template <BoxProblem P>
-    Eigen::Index evaluate_columns(P& problem, const Matrix& points, std::span<double> values) {
+    Eigen::Index evaluate_columns(P& problem, const Matrix& points, std::span<double> values)
+        requires is_point
+    {
         const Eigen::Index n = std::min<Eigen::Index>(points.cols(), static_cast<Eigen::Index>(remaining()));
         if constexpr (BatchBoxProblem<P>) {
             problem.evaluate_batch(points.leftCols(n), values.first(static_cast<std::size_t>(n)));
@@ -63,7 +73,8 @@ public:
                 }
             }
         } else {
-            for (Eigen::Index j = 0; j < n; ++j) values[static_cast<std::size_t>(j)] = evaluate(problem, column(points, j));
+            for (Eigen::Index j = 0; j < n; ++j)
+                values[static_cast<std::size_t>(j)] = evaluate(problem, column(points, j));
         }
         for (auto j = static_cast<std::size_t>(n); j < static_cast<std::size_t>(points.cols()); ++j) values[j] = kInf;
         return n;
@@ -76,24 +87,28 @@ public:
 
     /// Closes an iteration: the first call closes the initial population (iteration 0), each later
     /// one the next iteration. Records the history and shows the population to the observer.
-    template <Observer O>
-    void end_iteration(O& observer, const Matrix& population, std::span<const double> fitness) {
+    template <class O, class Population>
+    void end_iteration(O& observer, const Population& population, std::span<const double> fitness) {
         if (started_) ++progress_.iterations;
         started_ = true;
         history_.push_back(progress_.best);
         history_evaluations_.push_back(progress_.evaluations);
-        observer(IterationView{progress_.iterations, progress_.evaluations, progress_.best, best_x_,
-                               population, fitness});
+        if constexpr (is_point)
+            observer(IterationView{progress_.iterations, progress_.evaluations, progress_.best, best_x_, population,
+                                   fitness});
+        else
+            observer(BasicIterationView<const Solution&, Population>{
+                progress_.iterations, progress_.evaluations, progress_.best, best_x_, population, fitness});
     }
 
     const Progress& progress() const noexcept { return progress_; }
     std::int64_t iteration() const noexcept { return progress_.iterations; }
     double best() const noexcept { return progress_.best; }
-    std::span<const double> best_x() const noexcept { return best_x_; }
+    const Solution& best_x() const noexcept { return best_x_; }
     const Termination& termination() const noexcept { return termination_; }
 
-    Result finish() {
-        Result r;
+    BasicResult<Solution> finish() {
+        BasicResult<Solution> r;
         r.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - progress_.start).count();
         r.best_x = std::move(best_x_);
         r.best_f = progress_.best;
@@ -105,13 +120,17 @@ public:
     }
 
 private:
+    static constexpr bool is_point = std::is_same_v<Solution, std::vector<double>>;
+
     Termination termination_;
     std::int64_t limit_;
     Progress progress_;
-    std::vector<double> best_x_;
+    Solution best_x_;
     std::vector<double> history_;
     std::vector<std::int64_t> history_evaluations_;
     bool started_ = false;
 };
+
+using RunState = BasicRunState<>;
 
 }  // namespace pride

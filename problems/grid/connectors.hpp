@@ -18,17 +18,9 @@ namespace pride::grid {
 struct PenaltyConnector {
     static constexpr const char* name = "penalty";
     void join(const GridMap& map, Cell a, Cell b, Path& path, int& violations, bool corner_cutting) {
-        const std::size_t first = path.size();
+        const std::size_t first = path.size();  // path.back() is a
         append_line(a, b, path);
-        Cell previous = a;
-        for (std::size_t i = first; i < path.size(); ++i) {
-            const Cell c = path[i];
-            if (!map.free(c))
-                ++violations;
-            else if (!map.legal_step(previous, direction(previous, c), corner_cutting))
-                ++violations;
-            previous = c;
-        }
+        violations += count_violations(map, path, first, corner_cutting);
     }
 };
 

@@ -101,6 +101,8 @@ public:
         }
         connector_.join(p.map(), previous, p.goal(), out_.path, out_.violations, p.corner_cutting());
         cut_loops(out_.path, p.map(), seen_);
+        // A cut loop may have held violations: count what is left (cutting only removes steps).
+        if (out_.violations > 0) out_.violations = count_violations(p.map(), out_.path, 1, p.corner_cutting());
         return out_;
     }
 
@@ -197,6 +199,8 @@ public:
         }
         connector_.join(p.map(), previous, p.goal(), out_.path, out_.violations, p.corner_cutting());
         cut_loops(out_.path, p.map(), seen_);
+        // A cut loop may have held violations: count what is left (cutting only removes steps).
+        if (out_.violations > 0) out_.violations = count_violations(p.map(), out_.path, 1, p.corner_cutting());
         return out_;
     }
 

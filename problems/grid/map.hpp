@@ -98,13 +98,21 @@ public:
     GridMap inflated(int r) const {
         require(r >= 0, "--inflate", "radius must be >= 0, got " + std::to_string(r));
         if (r == 0) return *this;
-        std::vector<std::uint8_t> out(blocked_);
-        for (int y = 0; y < height_; ++y)
-            for (int x = 0; x < width_; ++x) {
-                if (!blocked_[index({x, y})]) continue;
-                for (int yy = std::max(0, y - r); yy <= std::min(height_ - 1, y + r); ++yy)
-                    for (int xx = std::max(0, x - r); xx <= std::min(width_ - 1, x + r); ++xx) out[index({xx, yy})] = 1;
-            }
+        r = std::min(r, std::max(width_, height_));  // a larger radius blocks no more
+        // Chebyshev dilation = a sliding-window maximum along rows, then along columns (prefix
+        // counts make each pass linear in the map size, whatever r is).
+        std::vector<std::uint8_t> rows(blocked_.size()), out(blocked_.size());
+        std::vector<int> prefix(static_cast<std::size_t>(std::max(width_, height_)) + 1);
+        for (int y = 0; y < height_; ++y) {
+            for (int x = 0; x < width_; ++x) prefix[x + 1] = prefix[x] + blocked_[index({x, y})];
+            for (int x = 0; x < width_; ++x)
+                rows[index({x, y})] = prefix[std::min(width_, x + r + 1)] - prefix[std::max(0, x - r)] > 0;
+        }
+        for (int x = 0; x < width_; ++x) {
+            for (int y = 0; y < height_; ++y) prefix[y + 1] = prefix[y] + rows[index({x, y})];
+            for (int y = 0; y < height_; ++y)
+                out[index({x, y})] = prefix[std::min(height_, y + r + 1)] - prefix[std::max(0, y - r)] > 0;
+        }
         return GridMap(width_, height_, std::move(out), name_ + " inflated by " + std::to_string(r));
     }
 

@@ -272,7 +272,8 @@ int keyword_index(std::string_view word) {
     return -1;
 }
 
-GridMap parse_movingai(const std::vector<Line>& lines, std::size_t first, const std::string& name) {
+GridMap parse_movingai(const std::vector<Line>& lines, std::size_t first, std::size_t text_size,
+                       const std::string& name) {
     long long dims[2] = {0, 0};  // height, width
     std::size_t dim_line[2] = {0, 0};
     std::size_t i = first;
@@ -349,8 +350,8 @@ GridMap parse_movingai(const std::vector<Line>& lines, std::size_t first, const 
     const auto width = static_cast<int>(dims[1]);
     const std::size_t map_line = lines[i - 1].number;
     std::vector<std::uint8_t> blocked;
-    blocked.reserve(std::min<std::size_t>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
-                                          lines.size() * static_cast<std::size_t>(width)));
+    // A valid file holds one byte per cell, so the text bounds what to reserve whatever the header says.
+    blocked.reserve(std::min(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), text_size));
     for (int r = 0; r < height; ++r, ++i) {
         if (i >= lines.size() || (lines[i].text.empty() && rest_blank(lines, i)))
             fail(name, map_line + static_cast<std::size_t>(r) + 1, 0,
@@ -478,7 +479,7 @@ GridMap parse_map(std::string_view text, const std::string& name) {
 
     const Line& ln = lines[first];
     const auto tok = tokens(ln.text);
-    if (keyword_index(tok[0].text) >= 0) return parse_movingai(lines, first, name);
+    if (keyword_index(tok[0].text) >= 0) return parse_movingai(lines, first, text.size(), name);
     const auto c = static_cast<unsigned char>(tok[0].text[0]);
     if (c >= '0' && c <= '9') return parse_matrix(lines, first, name);
     if (looks_like_map_row(ln.text))

@@ -2,6 +2,7 @@
 // Paths on a grid (shared/spec/grid.md): the chain of cells from start to goal, consecutive cells
 // one legal step apart; their five metrics; loop cutting; and the straight 8-connected cell line
 // that joins two distant cells.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -68,6 +69,19 @@ inline std::string path_violation(const GridMap& map, const Path& path, Cell sta
             return "step " + std::to_string(i) + " cuts a corner";
     }
     return {};
+}
+
+/// The violations in steps `first`.. of a chain (step i goes from cell i - 1 to cell i): each step
+/// onto a blocked or outside cell, and each step that cuts a corner, counts once.
+inline int count_violations(const GridMap& map, const Path& path, std::size_t first = 1, bool corner_cutting = false) {
+    int violations = 0;
+    for (std::size_t i = std::max<std::size_t>(first, 1); i < path.size(); ++i) {
+        if (!map.free(path[i]))
+            ++violations;
+        else if (!map.legal_step(path[i - 1], direction(path[i - 1], path[i]), corner_cutting))
+            ++violations;
+    }
+    return violations;
 }
 
 /// Cuts every loop: when a cell comes back, the cells between its two visits go. `seen` is
