@@ -26,11 +26,13 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/parts/chain_operators.hpp"
 #include "algorithms/parts/crossover.hpp"
 #include "algorithms/parts/mutation.hpp"
 #include "algorithms/parts/replacement.hpp"
 #include "algorithms/parts/selection.hpp"
 #include "framework/bounds.hpp"
+#include "framework/chain.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
 #include "framework/problem.hpp"
@@ -69,7 +71,7 @@ public:
         validate();
         termination.validate(name());
         const auto n = static_cast<Eigen::Index>(population);
-        const Eigen::Index kids = replacement.offspring(n);
+        const auto kids = static_cast<Eigen::Index>(replacement.offspring(population));
         const std::size_t dim = problem.dimension();
         const auto lo = problem.lower();
         const auto hi = problem.upper();
@@ -79,7 +81,8 @@ public:
         const auto rows = static_cast<Eigen::Index>(dim);
         Matrix x(rows, n), next(rows, n), y(rows, kids), spare(rows, 1);
         std::vector<double> fx(static_cast<std::size_t>(n)), fnext(fx.size()), fy(static_cast<std::size_t>(kids));
-        std::vector<std::size_t> order;
+        std::vector<std::size_t> chosen(static_cast<std::size_t>(n));
+        ReplacementScratch scratch;
 
         const auto& cross = prepared(crossover, dim);
         const auto& mutate = prepared(mutation, dim);
@@ -103,7 +106,66 @@ public:
                 bounds(child2, lo, hi);
             }
             state.evaluate_columns(problem, y, fy);  // (2); +inf past the budget
-            replacement(x, fx, y, fy, next, fnext, order);  // (3)
+            replacement(fx, fy, chosen, scratch);     // (3)
+            for (Eigen::Index k = 0; k < n; ++k) {
+                const auto from = static_cast<Eigen::Index>(chosen[static_cast<std::size_t>(k)]);
+                next.col(k) = from < n ? x.col(from) : y.col(from - n);
+                fnext[static_cast<std::size_t>(k)] = from < n ? fx[static_cast<std::size_t>(from)]
+                                                              : fy[static_cast<std::size_t>(from - n)];
+            }
+            std::swap(x, next);
+            std::swap(fx, fnext);
+            state.end_iteration(observer, x, fx);
+        }
+        return state.finish();
+    }
+
+    /// The same generation on chains (framework/chain.hpp), with chain operator policies
+    /// (ChainCrossover, ChainMutation): (1) selection, then the problem's crossover and mutation;
+    /// (2) evaluation; (3) replacement. The initial population is the problem's random chains;
+    /// Bounds and Init do not apply.
+    template <ChainProblem P, class O = NoObserver>
+    BasicResult<typename P::chain_type> run(P problem, const Termination& termination, std::uint64_t seed,
+                                            O&& observer = O{}) const
+        requires requires(const Crossover& c, const Mutation& m, P& p, typename P::chain_type& a, Rng& r) {
+            c(p, a, a, r);
+            m(p, a, r);
+        }
+    {
+        using Chain = typename P::chain_type;
+        validate();
+        termination.validate(name());
+        const auto n = static_cast<std::size_t>(population);
+        const auto kids = static_cast<std::size_t>(replacement.offspring(population));
+        Rng rng(seed);
+        BasicRunState<Chain> state(termination);
+        std::vector<Chain> x(n), next(n), y(kids);
+        Chain spare;
+        std::vector<double> fx(n, kInf), fnext(n), fy(kids);
+        std::vector<std::size_t> chosen(n);
+        ReplacementScratch scratch;
+
+        for (auto& c : x) problem.random_chain(rng, c);
+        for (std::size_t i = 0; i < n && !state.exhausted(); ++i) fx[i] = state.evaluate(problem, x[i]);
+        state.end_iteration(observer, x, fx);
+
+        while (!state.done()) {
+            for (std::size_t k = 0; k < kids; k += 2) {  // (1)
+                const std::size_t a = selection(fx, rng), b = selection(fx, rng);
+                Chain& child2 = k + 1 < kids ? y[k + 1] : spare;
+                y[k] = x[a];
+                child2 = x[b];
+                crossover(problem, y[k], child2, rng);
+                mutation(problem, y[k], rng);
+                mutation(problem, child2, rng);
+            }
+            for (std::size_t k = 0; k < kids; ++k)  // (2); +inf past the budget
+                fy[k] = state.exhausted() ? kInf : state.evaluate(problem, y[k]);
+            replacement(fx, fy, chosen, scratch);  // (3)
+            for (std::size_t k = 0; k < n; ++k) {
+                next[k] = chosen[k] < n ? x[chosen[k]] : y[chosen[k] - n];
+                fnext[k] = chosen[k] < n ? fx[chosen[k]] : fy[chosen[k] - n];
+            }
             std::swap(x, next);
             std::swap(fx, fnext);
             state.end_iteration(observer, x, fx);
@@ -122,5 +184,8 @@ private:
             return (op);
     }
 };
+
+/// The GA on chains (grid paths, ...): the same skeleton with the chain operator policies.
+using ChainGa = Ga<TournamentSelection, ChainCrossover, ChainMutation>;
 
 }  // namespace pride

@@ -75,4 +75,28 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
     throw InputError("--algo: unknown algorithm '" + std::string(name) + "' (see 'pride list')");
 }
 
+/// The algorithms on chains (`--encoding chain`) by name: the GA with the chain operators.
+template <class F>
+decltype(auto) with_chain_algorithm(std::string_view name, const ParamMap& params, F&& f) {
+    auto set = [&](auto& a) {
+        a.population = params.get_int("pop", a.population, a.id);
+        a.selection.size = params.get_int("tournament", a.selection.size, a.id);
+        a.crossover.probability = params.get("pc", a.crossover.probability);
+        a.mutation.probability = params.get("pm", a.mutation.probability);
+    };
+    if (name == "ga") {
+        ChainGa a;
+        set(a);
+        a.replacement.elitism = params.get_int("elitism", a.replacement.elitism, a.id);
+        return detail::finish(a, params, f);
+    }
+    if (name == "ga-plus") {
+        Ga<TournamentSelection, ChainCrossover, ChainMutation, Clamp, UniformInit, PlusReplacement> a;
+        a.id = "ga-plus";
+        set(a);
+        return detail::finish(a, params, f);
+    }
+    throw InputError("--algo: " + std::string(name) + " does not work on chains; --encoding chain takes ga or ga-plus");
+}
+
 }  // namespace pride::cli

@@ -15,6 +15,7 @@
 #include "framework/error.hpp"
 #include "framework/params.hpp"
 #include "problems/grid/astar.hpp"
+#include "problems/grid/chain.hpp"
 #include "problems/grid/encodings.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/map_io.hpp"
@@ -139,7 +140,23 @@ PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map
         run_with_connector<Objective, FreeEncoding>(o, problem, run,
                                                     [&]<class E>() { return E(problem, static_cast<int>(o.waypoints)); });
     } else if (o.encoding == "chain") {
-        throw InputError("--encoding chain: no algorithm of this build works on chains yet; use line or free");
+        run.encoding = "chain";
+        require(o.connector == "repair", "--connector", "chains need no connector: every operator keeps them legal");
+        ParamMap params;
+        for (const auto& p : o.params) params.set_from_string(p);
+        params.set("pop", static_cast<double>(o.pop.value_or(20)));
+        const auto r = with_chain_algorithm(o.algo, params, [&](const auto& algorithm) {
+            return algorithm.run(ChainSpace<Objective>(problem), grid_termination(o), static_cast<std::uint64_t>(o.seed));
+        });
+        run.feasible = path_violation(problem.map(), r.best_x, problem.start(), problem.goal(), problem.corner_cutting()).empty();
+        if (run.feasible) {
+            run.path = r.best_x;
+            run.value = problem.evaluate(run.path);
+        }
+        run.evaluations = r.evaluations;
+        run.iterations = r.iterations;
+        run.wall_ms = r.wall_ms;
+        run.history = r.history;
     } else {
         throw InputError("--encoding: unknown encoding '" + o.encoding + "' (line, free or chain)");
     }

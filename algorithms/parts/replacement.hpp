@@ -1,5 +1,7 @@
 #pragma once
-// Replacement (reinsertion) for the GA: how parents and children form the next population.
+// Replacement (reinsertion) for the GA: which parents and children form the next population. A
+// policy only chooses, by index into the pool "parents 0..n-1, then children n..": the GA copies,
+// whatever its individuals are (points or chains).
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -8,9 +10,14 @@
 #include <vector>
 
 #include "framework/error.hpp"
-#include "framework/problem.hpp"
 
 namespace pride {
+
+/// Scratch a replacement policy may use, owned by the run (policies stay stateless and shareable).
+struct ReplacementScratch {
+    std::vector<std::size_t> order;
+    std::vector<double> pool;
+};
 
 namespace detail {
 /// The indices of the k best of `f` in `order`'s first k places, best first; ties go to the lower
@@ -29,23 +36,19 @@ struct ElitistReplacement {
     std::int64_t elitism = 1;
 
     static constexpr const char* name = "elitist";
-    Eigen::Index offspring(Eigen::Index population) const { return population - elitism; }
+    std::int64_t offspring(std::int64_t population) const { return population - elitism; }
     void validate(const std::string& where, std::int64_t population) const {
         require(elitism >= 0 && elitism < population, where,
                 "elitism must be in [0, population), got " + std::to_string(elitism));
     }
 
-    void operator()(const Matrix& parents, std::span<const double> fp, const Matrix& children,
-                    std::span<const double> fc, Matrix& next, std::span<double> fnext,
-                    std::vector<std::size_t>& order) const {
+    void operator()(std::span<const double> fp, std::span<const double> fc, std::span<std::size_t> chosen,
+                    ReplacementScratch& scratch) const {
         const auto e = static_cast<std::size_t>(elitism);
-        detail::best_first(fp, e, order);
-        for (std::size_t k = 0; k < e; ++k) {
-            next.col(static_cast<Eigen::Index>(k)) = parents.col(static_cast<Eigen::Index>(order[k]));
-            fnext[k] = fp[order[k]];
-        }
-        next.rightCols(children.cols()) = children;
-        std::copy(fc.begin(), fc.end(), fnext.begin() + static_cast<std::ptrdiff_t>(e));
+        detail::best_first(fp, e, scratch.order);
+        std::copy_n(scratch.order.begin(), e, chosen.begin());
+        std::iota(chosen.begin() + static_cast<std::ptrdiff_t>(e), chosen.end(), fp.size());
+        (void)fc;
     }
 };
 
@@ -53,26 +56,16 @@ struct ElitistReplacement {
 /// children together form the next population (ties: parents first, then earlier members).
 struct PlusReplacement {
     static constexpr const char* name = "plus";
-    Eigen::Index offspring(Eigen::Index population) const { return population; }
+    std::int64_t offspring(std::int64_t population) const { return population; }
     void validate(const std::string&, std::int64_t) const {}
 
-    void operator()(const Matrix& parents, std::span<const double> fp, const Matrix& children,
-                    std::span<const double> fc, Matrix& next, std::span<double> fnext,
-                    std::vector<std::size_t>& order) const {
-        const std::size_t n = fp.size();
-        pool_.assign(fp.begin(), fp.end());
-        pool_.insert(pool_.end(), fc.begin(), fc.end());
-        detail::best_first(pool_, n, order);
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::size_t from = order[k];
-            next.col(static_cast<Eigen::Index>(k)) = from < n ? parents.col(static_cast<Eigen::Index>(from))
-                                                              : children.col(static_cast<Eigen::Index>(from - n));
-            fnext[k] = pool_[from];
-        }
+    void operator()(std::span<const double> fp, std::span<const double> fc, std::span<std::size_t> chosen,
+                    ReplacementScratch& scratch) const {
+        scratch.pool.assign(fp.begin(), fp.end());
+        scratch.pool.insert(scratch.pool.end(), fc.begin(), fc.end());
+        detail::best_first(scratch.pool, chosen.size(), scratch.order);
+        std::copy_n(scratch.order.begin(), chosen.size(), chosen.begin());
     }
-
-private:
-    mutable std::vector<double> pool_;  // scratch, reused: no allocation after the first generation
 };
 
 }  // namespace pride
