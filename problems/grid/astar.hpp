@@ -1,7 +1,7 @@
 #pragma once
 // A* with the octile heuristic on a GridMap: 8-connected, step costs 1 and sqrt(2), no corner
 // cutting by default (the rule behind the Moving AI optimal lengths). Flat arrays indexed by cell,
-// a binary heap with lazy deletion, and generation stamps, so one AStar serves many queries on one
+// a radix heap with lazy deletion, and generation stamps, so one AStar serves many queries on one
 // map (or on several, resizing once) without clearing or allocating per node.
 #include <algorithm>
 #include <bit>
@@ -40,28 +40,47 @@ public:
         if (!w.contains(s) || !w.contains(g)) return -1.0;
         const auto start = static_cast<std::uint32_t>(map.index(s));
         const auto goal = static_cast<std::uint32_t>(map.index(g));
-        open(start, 0.0, octile(s, g), start);
-        while (!heap_.empty()) {
-            std::pop_heap(heap_.begin(), heap_.end(), Later{});
-            const Node node = heap_.back();
-            heap_.pop_back();
-            if (closed_[node.index] == generation_) continue;  // a stale entry
-            closed_[node.index] = generation_;
-            ++expansions_;
-            if (node.index == goal) {
-                if (out) trace(map, start, goal, *out);
-                return node.g;
+        open(start, 0.0, key(octile(s, g), 0.0), start);
+        while (!heap_.empty() || !level_.empty()) {
+            std::uint32_t index;
+            std::uint64_t current;
+            if (!level_.empty()) {  // nodes with the smallest f, found while expanding one: no heap work
+                index = level_.back().index;
+                current = level_.back().key;
+                level_.pop_back();
+            } else {
+                const Node node = heap_.pop();
+                index = node.index;
+                current = node.key;
             }
-            const Cell c = map.cell(node.index);
-            for (unsigned m = map.moves(node.index, corner_cutting); m != 0; m &= m - 1) {
+            if (closed_[index] == generation_) continue;  // a stale entry
+            closed_[index] = generation_;
+            ++expansions_;
+            const double gi = g_[index];
+            if (index == goal) {
+                if (out) trace(map, start, goal, *out);
+                return gi;
+            }
+            const Cell c = map.cell(index);
+            for (unsigned m = map.moves(index, corner_cutting); m != 0; m &= m - 1) {
                 const int d = std::countr_zero(m);
                 const Cell n{c.x + kDx[d], c.y + kDy[d]};
                 if (window && !w.contains(n)) continue;
-                const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(node.index) + map.offset(d));
+                const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + map.offset(d));
                 if (closed_[ni] == generation_) continue;
-                const double ng = node.g + (is_diagonal(d) ? kSqrt2 : 1.0);
+                const double ng = gi + (is_diagonal(d) ? kSqrt2 : 1.0);
                 if (seen_[ni] == generation_ && g_[ni] <= ng) continue;
-                open(ni, ng, ng + octile(n, g), node.index);
+                const std::uint64_t k = key(ng + octile(n, g), ng);
+                // Same f as the node expanded (or, by rounding, a hair below it: a consistent
+                // heuristic never truly lowers f): expanded next, without heap work.
+                if ((k >> kTieBits) <= (current >> kTieBits)) {
+                    seen_[ni] = generation_;
+                    g_[ni] = ng;
+                    parent_[ni] = index;
+                    level_.push_back({k, ni});
+                } else {
+                    open(ni, ng, k, index);
+                }
             }
         }
         return -1.0;
@@ -71,15 +90,69 @@ public:
     std::int64_t expansions() const noexcept { return expansions_; }
 
 private:
+    /// The priority as one integer: f in units of 2^-20 above kTieBits bits that put the larger g
+    /// first among equal f (deeper nodes first expand fewer nodes on open ground). Distinct octile
+    /// lengths a + b sqrt(2) on maps below a few thousand cells a side differ by far more than
+    /// 2^-20, so the order by f is exact; f must stay below 2^25.
+    static constexpr int kTieBits = 19;
+    static std::uint64_t key(double f, double g) noexcept {
+        const auto fq = static_cast<std::uint64_t>(std::llround(f * 1048576.0));
+        const auto gq = std::min<std::uint64_t>(static_cast<std::uint64_t>(std::llround(g)), (1u << kTieBits) - 1);
+        return (fq << kTieBits) | ((1u << kTieBits) - 1 - gq);
+    }
     struct Node {
-        double f;
-        double g;
+        std::uint64_t key;
         std::uint32_t index;
     };
-    /// Heap order: smallest f first; among equal f the larger g (deeper node) first, which
-    /// expands fewer nodes on open ground.
-    struct Later {
-        bool operator()(const Node& a, const Node& b) const noexcept { return a.f > b.f || (a.f == b.f && a.g < b.g); }
+
+    /// A radix heap (Ahuja, Mehlhorn, Orlin and Tarjan 1990): for monotone integer keys, which A*
+    /// with a consistent heuristic pops here (equal-f nodes bypass it through level_), pushes are
+    /// O(1) and each node moves down at most 64 buckets.
+    class RadixHeap {
+    public:
+        bool empty() const noexcept { return size_ == 0; }
+        void clear() noexcept {
+            buckets_[0].clear();
+            for (std::uint64_t m = used_; m != 0; m &= m - 1) buckets_[1 + std::countr_zero(m)].clear();
+            used_ = 0;
+            last_ = 0;
+            size_ = 0;
+        }
+        void push(Node n) {
+            const std::size_t b = bucket(n.key);
+            buckets_[b].push_back(n);
+            if (b > 0) used_ |= std::uint64_t{1} << (b - 1);
+            ++size_;
+        }
+        Node pop() {
+            if (buckets_[0].empty()) {  // refill bucket 0 from the first non-empty bucket
+                const std::size_t i = 1 + static_cast<std::size_t>(std::countr_zero(used_));
+                std::uint64_t least = buckets_[i].front().key;
+                for (const Node& n : buckets_[i]) least = std::min(least, n.key);
+                last_ = least;
+                used_ &= ~(std::uint64_t{1} << (i - 1));
+                for (const Node& n : buckets_[i]) push_moved(n);
+                buckets_[i].clear();
+            }
+            const Node n = buckets_[0].back();
+            buckets_[0].pop_back();
+            --size_;
+            return n;
+        }
+
+    private:
+        std::size_t bucket(std::uint64_t key) const noexcept {
+            return key == last_ ? 0 : 64 - static_cast<std::size_t>(std::countl_zero(key ^ last_));
+        }
+        void push_moved(Node n) {
+            const std::size_t b = bucket(n.key);
+            buckets_[b].push_back(n);
+            if (b > 0) used_ |= std::uint64_t{1} << (b - 1);
+        }
+        std::vector<Node> buckets_[65];
+        std::uint64_t used_ = 0;  // bit b - 1: bucket b (1..64) holds nodes
+        std::uint64_t last_ = 0;
+        std::size_t size_ = 0;
     };
 
     void prepare(std::size_t cells) {
@@ -96,14 +169,14 @@ private:
             generation_ = 1;
         }
         heap_.clear();
+        level_.clear();
     }
 
-    void open(std::uint32_t index, double g, double f, std::uint32_t parent) {
+    void open(std::uint32_t index, double g, std::uint64_t key, std::uint32_t parent) {
         seen_[index] = generation_;
         g_[index] = g;
         parent_[index] = parent;
-        heap_.push_back({f, g, index});
-        std::push_heap(heap_.begin(), heap_.end(), Later{});
+        heap_.push({key, index});
     }
 
     void trace(const GridMap& map, std::uint32_t start, std::uint32_t goal, Path& out) const {
@@ -119,7 +192,8 @@ private:
     std::vector<std::uint32_t> parent_;
     std::vector<std::uint32_t> seen_, closed_;  // generation stamps
     std::uint32_t generation_ = 0;
-    std::vector<Node> heap_;
+    RadixHeap heap_;
+    std::vector<Node> level_;  // nodes with the f of the node being expanded, taken before the heap
     std::int64_t expansions_ = 0;
 };
 
