@@ -1,0 +1,95 @@
+// The grid half of the README's main job: on each bundled map of the papers (examples/maps), the
+// exact optimum of the objective `cells` beside PSO and the GA through the `line` encoding with the
+// `repair` connector, and the GA on `chain` paths, with the papers' settings N = 20, T = 50 and
+// seeds 1..10: mean value, mean gap to the optimum, share of runs that reached it, time per run.
+// Usage: plan_paths [MAPS_DIR]   (default: examples/maps)
+#include <fmt/format.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "algorithms/ga.hpp"
+#include "algorithms/pso.hpp"
+#include "framework/encoding.hpp"
+#include "problems/grid/chain.hpp"
+#include "problems/grid/encodings.hpp"
+#include "problems/grid/map_io.hpp"
+#include "problems/grid/objectives.hpp"
+#include "problems/grid/oracle.hpp"
+
+namespace {
+
+using namespace pride;
+using namespace pride::grid;
+using Problem = GridProblem<CellsObjective>;
+
+constexpr std::uint64_t kSeeds = 10;
+
+struct Row {
+    std::string algorithm;
+    double mean = 0.0, gap = 0.0, success = 0.0, ms = 0.0;
+};
+
+template <class Run>
+Row summarise(const std::string& name, double optimum, Run run) {
+    Row row{name};
+    for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
+        const auto [value, ms] = run(seed);
+        row.mean += value / kSeeds;
+        row.gap += (value - optimum) / optimum / kSeeds;
+        row.success += (value == optimum ? 1.0 : 0.0) / kSeeds;
+        row.ms += ms / kSeeds;
+    }
+    return row;
+}
+
+void compare(const std::string& dir, const std::string& name) {
+    const auto scen = read_scenario(dir + "/" + name + ".map.scen").at(0);
+    const auto map = std::make_shared<const GridMap>(read_map(dir + "/" + name + ".map"));
+    const Problem problem(map, scen.start, scen.goal);
+    const double optimum = Oracle{}.solve(*map, scen.start, scen.goal, CellsObjective{});
+    const Termination t50 = max_iterations(50);
+
+    std::vector<Row> rows;
+    const Encoded<Problem, LineEncoding<RepairConnector>> line(problem, LineEncoding<RepairConnector>(problem));
+    Pso<> pso;
+    pso.population = 20;
+    rows.push_back(summarise("pso, line + repair", optimum, [&](std::uint64_t seed) {
+        const Result r = pso.run(line, t50, seed);
+        return std::pair{r.best_f, r.wall_ms};
+    }));
+    Ga<> ga;
+    ga.population = 20;
+    rows.push_back(summarise("ga, line + repair", optimum, [&](std::uint64_t seed) {
+        const Result r = ga.run(line, t50, seed);
+        return std::pair{r.best_f, r.wall_ms};
+    }));
+    ChainGa chain_ga;
+    chain_ga.population = 20;
+    rows.push_back(summarise("ga, chain", optimum, [&](std::uint64_t seed) {
+        const auto r = chain_ga.run(ChainSpace<CellsObjective>(problem), t50, seed);
+        return std::pair{r.best_f, r.wall_ms};
+    }));
+
+    fmt::print("{} ({}x{}), start ({},{}), goal ({},{}): optimum {} cells\n", name, map->width(), map->height(),
+               scen.start.x, scen.start.y, scen.goal.x, scen.goal.y, optimum);
+    for (const auto& r : rows)
+        fmt::print("  {:<20} mean {:7.3f}  gap {:6.2f} %  optimal in {:3.0f} %  {:7.3f} ms/run\n", r.algorithm, r.mean,
+                   100.0 * r.gap, 100.0 * r.success, r.ms);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::string dir = argc > 1 ? argv[1] : "examples/maps";
+    try {
+        fmt::print("objective cells, N = 20, T = 50, seeds 1..{}\n\n", kSeeds);
+        for (const char* name : {"file000-10x10", "file000-13x13", "file002-20x20", "file002-40x40", "file003-50x50"})
+            compare(dir, name);
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "plan_paths: {}\n", e.what());
+        return 2;
+    }
+    return 0;
+}
