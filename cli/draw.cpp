@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 
 #include "framework/error.hpp"
 
@@ -75,9 +74,8 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
     // About 800 pixels on the longer side, cells between 2 and 40 pixels.
     const double cell = std::clamp(800.0 / std::max(map.width(), map.height()), 2.0, 40.0);
     const double w = map.width() * cell, h = map.height() * cell;
-    const std::string temporary = file + ".part";
     cairo_surface_t* surface = format == PictureFormat::svg
-                                   ? cairo_svg_surface_create(temporary.c_str(), w, h)
+                                   ? cairo_svg_surface_create(file.c_str(), w, h)
                                    : cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(w),
                                                                 static_cast<int>(h));
     cairo_t* cr = cairo_create(surface);
@@ -85,21 +83,11 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
     cairo_destroy(cr);
     cairo_status_t status = cairo_surface_status(surface);
     if (format == PictureFormat::png && status == CAIRO_STATUS_SUCCESS)
-        status = cairo_surface_write_to_png(surface, temporary.c_str());
+        status = cairo_surface_write_to_png(surface, file.c_str());
     cairo_surface_finish(surface);  // flushes the SVG
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
     cairo_surface_destroy(surface);
-    std::error_code ec;
-    if (status != CAIRO_STATUS_SUCCESS) {
-        std::filesystem::remove(temporary, ec);
-        throw InputError(file + ": cannot write the picture: " + cairo_status_to_string(status));
-    }
-    std::filesystem::rename(temporary, file, ec);
-    if (ec) {
-        const std::string why = ec.message();
-        std::filesystem::remove(temporary, ec);
-        throw InputError(file + ": cannot write the picture: " + why);
-    }
+    if (status != CAIRO_STATUS_SUCCESS) throw InputError(file + ": cannot write the picture: " + cairo_status_to_string(status));
 }
 
 }  // namespace pride::cli

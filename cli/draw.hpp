@@ -10,8 +10,8 @@ namespace pride::cli {
 
 enum class PictureFormat { svg, png };
 
-/// Writes the picture to `file` through a temporary file renamed into place, so a failure never
-/// leaves a half-written picture. `path` and `optimal` may be null.
+/// Writes the picture to `file` (callers that must not leave half-written files write to a
+/// temporary name and rename it). `path` and `optimal` may be null. InputError when it cannot.
 void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
                const grid::Path* optimal, const std::string& file, PictureFormat format);
 

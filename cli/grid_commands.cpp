@@ -205,15 +205,30 @@ int path_command(const PathOptions& o, std::ostream& out) {
     const PathMetrics m = metrics(run.path);
 
     std::optional<double> gap;
-    if (run.optimum && run.feasible)
-        gap = *run.optimum == 0.0 ? 0.0 : (run.value - *run.optimum) / *run.optimum;
-    // The pictures first: they are the only output that can fail now, and then nothing is printed.
-    if (!o.svg.empty())
-        draw_grid(*map, start, goal, run.feasible ? &run.path : nullptr, o.oracle ? &run.optimal_path : nullptr, o.svg,
-                  PictureFormat::svg);
-    if (!o.png.empty())
-        draw_grid(*map, start, goal, run.feasible ? &run.path : nullptr, o.oracle ? &run.optimal_path : nullptr, o.png,
-                  PictureFormat::png);
+    if (run.optimum && run.feasible) {
+        // The oracle sums step and turn costs in another order than the metrics do: values that
+        // agree to 1e-9 (relative) are the same optimum, and the gap is exactly 0.
+        const double scale = std::max(1.0, std::abs(*run.optimum));
+        gap = std::abs(run.value - *run.optimum) <= 1e-9 * scale ? 0.0 : (run.value - *run.optimum) / *run.optimum;
+    }
+    // The pictures first: they are the only output that can fail now. Both are drawn to temporary
+    // files and renamed only when both succeeded, so a failure leaves no picture and prints nothing.
+    std::vector<std::pair<std::string, PictureFormat>> pictures;
+    if (!o.svg.empty()) pictures.emplace_back(o.svg, PictureFormat::svg);
+    if (!o.png.empty()) pictures.emplace_back(o.png, PictureFormat::png);
+    std::error_code ec;
+    try {
+        for (const auto& [file, format] : pictures)
+            draw_grid(*map, start, goal, run.feasible ? &run.path : nullptr, o.oracle ? &run.optimal_path : nullptr,
+                      file + ".part", format);
+        for (const auto& [file, format] : pictures) {
+            std::filesystem::rename(file + ".part", file, ec);
+            if (ec) throw InputError(file + ": cannot write the picture: " + ec.message());
+        }
+    } catch (...) {
+        for (const auto& [file, format] : pictures) std::filesystem::remove(file + ".part", ec);
+        throw;
+    }
 
     if (o.json) {
         std::string text = fmt::format(
@@ -253,10 +268,16 @@ int scen_command(const ScenOptions& o, std::ostream& out) {
     std::size_t differ = 0;
     double max_diff = 0.0, seconds = 0.0;
     for (const auto& e : entries) {
-        auto it = maps.find(e.map);
-        if (it == maps.end()) it = maps.emplace(e.map, read_map((dir / e.map).string())).first;
-        const GridMap& map = it->second;
         const std::string where = o.file + ":" + std::to_string(e.line);
+        auto it = maps.find(e.map);
+        if (it == maps.end()) {
+            try {
+                it = maps.emplace(e.map, read_map((dir / e.map).string())).first;
+            } catch (const InputError& error) {
+                throw InputError(where + ": " + error.what());
+            }
+        }
+        const GridMap& map = it->second;
         require(map.width() == e.width && map.height() == e.height, where,
                 fmt::format("the scenario says {}x{}, but {} is {}x{}", e.width, e.height, e.map, map.width(), map.height()));
         require(map.free(e.start), where, "the start " + to_string(e.start) + " is blocked on " + e.map);
