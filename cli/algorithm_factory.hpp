@@ -41,8 +41,12 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
         a.restart = params.get_int("restart", 1, a.name()) != 0;
         return detail::finish(a, params, f);
     }
+    // The command line's box algorithms take their initialiser at run time: uniform in the box, or
+    // (`walk_init=1`, pride path --init walk) genotypes read off random feasible walks.
+    const bool walk_init = name.rfind("nlopt:", 0) != 0 && params.get_int("walk_init", 0, std::string(name)) != 0;
     if (name == "pso") {
-        Pso<> a;
+        Pso<InertiaVelocity<LinearInertia>, RangeVelocityClamp, Clamp, SelectableInit> a;
+        a.init.suggestions = walk_init;
         a.population = params.get_int("pop", a.population, a.id);
         a.velocity.inertia.start = params.get("w_start", a.velocity.inertia.start);
         a.velocity.inertia.end = params.get("w_end", a.velocity.inertia.end);
@@ -52,8 +56,9 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
         return detail::finish(a, params, f);
     }
     if (name == "pso-constriction") {
-        Pso<ConstrictionVelocity> a;
+        Pso<ConstrictionVelocity, RangeVelocityClamp, Clamp, SelectableInit> a;
         a.id = "pso-constriction";
+        a.init.suggestions = walk_init;
         a.population = params.get_int("pop", a.population, a.id);
         a.velocity.chi = params.get("chi", a.velocity.chi);
         a.velocity.c = params.get("c", a.velocity.c);
@@ -61,14 +66,16 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
         return detail::finish(a, params, f);
     }
     if (name == "ga") {
-        Ga<> a;
+        Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, SelectableInit> a;
+        a.init.suggestions = walk_init;
         detail::set_ga_operators(a, params);
         a.replacement.elitism = params.get_int("elitism", a.replacement.elitism, a.id);
         return detail::finish(a, params, f);
     }
     if (name == "ga-plus") {
-        Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, UniformInit, PlusReplacement> a;
+        Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, SelectableInit, PlusReplacement> a;
         a.id = "ga-plus";
+        a.init.suggestions = walk_init;
         detail::set_ga_operators(a, params);
         return detail::finish(a, params, f);
     }

@@ -106,7 +106,7 @@ int list_command(bool json, std::ostream& out) {
                          {"chain", "grids: the cell chain itself, with crossover at a common cell and segment-regenerating mutation (ga, ga-plus)"}}});
     sections.push_back({"connectors",
                         {{"repair", "grids (line, free): a blocked join becomes the shortest legal detour (A* in a growing window)"},
-                         {"penalty", "grids (line, free): the straight cell line; each violation costs M = 10 W H"}}});
+                         {"penalty", "grids (line, free): the straight cell line; each violation costs M >= 10 W H"}}});
     sections.push_back({"objectives",
                         {{"value", "continuous problems: the function value itself, minimised"},
                          {"cells", "grids: number of cells, start and goal included (file 000 eq. 13)"},

@@ -70,7 +70,7 @@ void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell g
 }  // namespace
 
 void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
-               const grid::Path* optimal, const std::string& file, PictureFormat format) {
+               const grid::Path* optimal, const std::string& file, const std::string& shown_as, PictureFormat format) {
     // About 800 pixels on the longer side, cells between 2 and 40 pixels.
     const double cell = std::clamp(800.0 / std::max(map.width(), map.height()), 2.0, 40.0);
     const double w = map.width() * cell, h = map.height() * cell;
@@ -87,7 +87,7 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
     cairo_surface_finish(surface);  // flushes the SVG
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
     cairo_surface_destroy(surface);
-    if (status != CAIRO_STATUS_SUCCESS) throw InputError(file + ": cannot write the picture: " + cairo_status_to_string(status));
+    if (status != CAIRO_STATUS_SUCCESS) throw InputError(shown_as + ": cannot write the picture: " + cairo_status_to_string(status));
 }
 
 }  // namespace pride::cli

@@ -11,8 +11,9 @@ namespace pride::cli {
 enum class PictureFormat { svg, png };
 
 /// Writes the picture to `file` (callers that must not leave half-written files write to a
-/// temporary name and rename it). `path` and `optimal` may be null. InputError when it cannot.
+/// temporary name and rename it; errors name `shown_as`). `path` and `optimal` may be null.
+/// InputError when it cannot.
 void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
-               const grid::Path* optimal, const std::string& file, PictureFormat format);
+               const grid::Path* optimal, const std::string& file, const std::string& shown_as, PictureFormat format);
 
 }  // namespace pride::cli

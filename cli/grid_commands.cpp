@@ -76,7 +76,11 @@ template <class Objective, class Encoding>
 void run_encoded(const PathOptions& o, const GridProblem<Objective>& problem, Encoding encoding, PathRun& run) {
     ParamMap params;
     for (const auto& p : o.params) params.set_from_string(p);
-    params.set("pop", static_cast<double>(o.pop.value_or(20)));  // the papers' N = 20
+    if (o.pop || !params.contains("pop")) params.set("pop", static_cast<double>(o.pop.value_or(20)));  // the papers' N = 20
+    if (o.init == "walk") {
+        require(o.algo.rfind("nlopt:", 0) != 0, "--init walk", "NLopt algorithms start from one uniform point");
+        params.set("walk_init", 1.0);
+    }
     const Termination termination = grid_termination(o);
     Encoded<GridProblem<Objective>, Encoding> encoded(problem, std::move(encoding));
     const Result r = with_algorithm(o.algo, params, [&](const auto& algorithm) {
@@ -110,6 +114,7 @@ PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map
     const GridProblem<Objective> problem(map, parse_cell(o.start, "--start"), parse_cell(o.goal, "--goal"), objective,
                                         o.corner_cutting);
     PathRun run;
+    const auto start = Clock::now();  // for astar and exact, whose wall time is their own
     if (o.oracle || o.algo == "exact") {
         if constexpr (Objective::additive) {
             Oracle oracle;
@@ -120,7 +125,6 @@ PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map
                              std::string(Objective::name) + " objective is not a sum of step and turn costs, so it has no exact oracle");
         }
     }
-    const auto start = Clock::now();
     if (o.algo == "exact") {
         run.path = run.optimal_path;
         run.feasible = true;
@@ -144,7 +148,7 @@ PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map
         require(o.connector == "repair", "--connector", "chains need no connector: every operator keeps them legal");
         ParamMap params;
         for (const auto& p : o.params) params.set_from_string(p);
-        params.set("pop", static_cast<double>(o.pop.value_or(20)));
+        if (o.pop || !params.contains("pop")) params.set("pop", static_cast<double>(o.pop.value_or(20)));
         const auto r = with_chain_algorithm(o.algo, params, [&](const auto& algorithm) {
             return algorithm.run(ChainSpace<Objective>(problem), grid_termination(o), static_cast<std::uint64_t>(o.seed));
         });
@@ -193,6 +197,9 @@ PathRun dispatch_objective(const PathOptions& o, const std::shared_ptr<const Gri
 }  // namespace
 
 int path_command(const PathOptions& o, std::ostream& out) {
+    require(o.init == "uniform" || o.init == "walk", "--init", "expected uniform or walk, got '" + o.init + "'");
+    require(o.init == "uniform" || o.encoding == "line" || o.encoding == "free", "--init walk",
+            "only for the line and free encodings (chains always start from walks)");
     require(!o.weights || o.objective == "weighted", "--weights", "only for --objective weighted");
     require(!o.lambda || o.objective == "hswoa", "--lambda", "only for --objective hswoa");
     require(o.seed >= 0, "--seed", "must be >= 0, got " + std::to_string(o.seed));
@@ -220,7 +227,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
     try {
         for (const auto& [file, format] : pictures)
             draw_grid(*map, start, goal, run.feasible ? &run.path : nullptr, o.oracle ? &run.optimal_path : nullptr,
-                      file + ".part", format);
+                      file + ".part", file, format);
         for (const auto& [file, format] : pictures) {
             std::filesystem::rename(file + ".part", file, ec);
             if (ec) throw InputError(file + ": cannot write the picture: " + ec.message());

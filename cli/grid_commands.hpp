@@ -17,6 +17,7 @@ struct PathOptions {
     std::string objective = "cells";
     std::string encoding = "line";
     std::string connector = "repair";
+    std::string init = "uniform";  // or "walk": line/free populations seeded from random walks
     std::optional<std::int64_t> pop;
     std::optional<std::int64_t> iters;
     std::optional<std::int64_t> evals;

@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
     path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
     path_cmd->add_option("--encoding", path.encoding, "line (default), free or chain");
     path_cmd->add_option("--connector", path.connector, "repair (default) or penalty");
+    path_cmd->add_option("--init", path.init, "uniform (default) or walk: line/free populations read off random feasible walks");
     path_cmd->add_option("--pop", path.pop, "population size (default 20)");
     auto* path_iters = path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)");
     path_cmd->add_option("--evals", path.evals, "evaluation limit")->excludes(path_iters);

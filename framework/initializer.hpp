@@ -32,4 +32,20 @@ struct SuggestedInit {
     }
 };
 
+/// Uniform, or the problem's suggestions when `suggestions` is set and the problem offers them:
+/// the same choice as SuggestedInit, but made at run time (the command line's --init walk).
+struct SelectableInit {
+    bool suggestions = false;
+    template <BoxProblem P>
+    void operator()(const P& p, Rng& rng, Matrix& pop) const {
+        if constexpr (SuggestsStartingPoints<P>) {
+            if (suggestions) {
+                p.starting_points(rng, pop);
+                return;
+            }
+        }
+        UniformInit{}(p, rng, pop);
+    }
+};
+
 }  // namespace pride
