@@ -46,7 +46,7 @@ namespace pride {
 template <class Selection = TournamentSelection, class Crossover = SbxCrossover, class Mutation = PolynomialMutation,
           class Bounds = Clamp, class Init = UniformInit, class Replacement = ElitistReplacement>
 class Ga {
-public:
+  public:
     std::string id = "ga";  // the name in messages and results ("ga-plus" for that variant)
     std::int64_t population = 50;
     Replacement replacement{};
@@ -106,12 +106,12 @@ public:
                 bounds(child2, lo, hi);
             }
             state.evaluate_columns(problem, y, fy);  // (2); +inf past the budget
-            replacement(fx, fy, chosen, scratch);     // (3)
+            replacement(fx, fy, chosen, scratch);    // (3)
             for (Eigen::Index k = 0; k < n; ++k) {
                 const auto from = static_cast<Eigen::Index>(chosen[static_cast<std::size_t>(k)]);
                 next.col(k) = from < n ? x.col(from) : y.col(from - n);
-                fnext[static_cast<std::size_t>(k)] = from < n ? fx[static_cast<std::size_t>(from)]
-                                                              : fy[static_cast<std::size_t>(from - n)];
+                fnext[static_cast<std::size_t>(k)] =
+                    from < n ? fx[static_cast<std::size_t>(from)] : fy[static_cast<std::size_t>(from - n)];
             }
             std::swap(x, next);
             std::swap(fx, fnext);
@@ -126,11 +126,11 @@ public:
     /// Bounds and Init do not apply.
     template <ChainProblem P, class O = NoObserver>
     BasicResult<typename P::chain_type> run(P problem, const Termination& termination, std::uint64_t seed,
-                                            O&& observer = O{}) const
-        requires requires(const Crossover& c, const Mutation& m, P& p, typename P::chain_type& a, Rng& r) {
-            c(p, a, a, r);
-            m(p, a, r);
-        }
+                                            O&& observer = O{}) const requires
+        requires(const Crossover& c, const Mutation& m, P& p, typename P::chain_type& a, Rng& r) {
+        c(p, a, a, r);
+        m(p, a, r);
+    }
     {
         using Chain = typename P::chain_type;
         validate();
@@ -173,7 +173,7 @@ public:
         return state.finish();
     }
 
-private:
+  private:
     /// An operator policy may offer prepare(dim), its constants worked out once per run; the
     /// result lives as long as the run (lifetime extension of the temporary bound to a const&).
     template <class Op>

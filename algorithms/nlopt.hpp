@@ -52,7 +52,7 @@ inline std::vector<std::string> nlopt_derivative_free_names() {
 }
 
 class Nlopt {
-public:
+  public:
     /// `algorithm`: NLopt's name, with or without the "nlopt:" prefix.
     explicit Nlopt(std::string algorithm, std::int64_t record_every = 50) : record_every(record_every) {
         if (algorithm.rfind("nlopt:", 0) == 0) algorithm.erase(0, 6);
@@ -67,8 +67,7 @@ public:
 
     void validate() const {
         const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm_.c_str());
-        require(static_cast<int>(a) >= 0, "--algo",
-                "unknown NLopt algorithm '" + algorithm_ + "' (see 'pride list')");
+        require(static_cast<int>(a) >= 0, "--algo", "unknown NLopt algorithm '" + algorithm_ + "' (see 'pride list')");
         require(std::string(nlopt_algorithm_name(a)).find("NOT COMPILED") == std::string::npos, name(),
                 "is not compiled into this NLopt build");
         require(!nlopt_needs_gradient(algorithm_), name(),
@@ -148,8 +147,8 @@ public:
             } catch (const std::invalid_argument& e) {
                 throw InputError(name() + ": NLopt refused the problem: " + e.what());
             }
-            const bool limit_reached = stopped_by_us || state.progress().evaluations >= limit ||
-                                       termination.done(state.progress());
+            const bool limit_reached =
+                stopped_by_us || state.progress().evaluations >= limit || termination.done(state.progress());
             if (limit_reached || !restart || state.progress().evaluations == 0) break;
             for (std::size_t d = 0; d < dim; ++d) x0[d] = rng.uniform(lo[d], hi[d]);
         }
@@ -157,7 +156,7 @@ public:
         return state.finish();
     }
 
-private:
+  private:
     nlopt::opt make_optimiser(std::size_t dim) const {
         nlopt::opt opt(algorithm_.c_str(), static_cast<unsigned>(dim));
         if (algorithm_.find("MLSL") != std::string::npos || algorithm_.find("AUGLAG") != std::string::npos) {

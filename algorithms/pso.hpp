@@ -43,7 +43,7 @@ namespace pride {
 template <class Velocity = InertiaVelocity<LinearInertia>, class VelocityClamp = RangeVelocityClamp,
           class Bounds = Clamp, class Init = UniformInit>
 class Pso {
-public:
+  public:
     std::string id = "pso";  // the name in messages and results ("pso-constriction" for that variant)
     std::int64_t population = 50;
     Velocity velocity{};

@@ -9,16 +9,16 @@
 // cos() and sin() depends on the argument, so points drawn elsewhere in the box would misstate the
 // function's share. Framework cost per evaluation = (wall_ms - bare wall_ms) / fevals.
 // stderr: a summary of that cost per algorithm (median over problems and seeds).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <tuple>
 #include <cstdio>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "algorithms/ga.hpp"
@@ -190,7 +190,8 @@ void bench_pagmo(const Settings& s) {
                 pagmo::population pop{std::move(prob), static_cast<pagmo::population::size_type>(s.pop), useed};
                 pop = alg.evolve(pop);
                 const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-                return std::make_tuple(ms, static_cast<std::int64_t>(pop.get_problem().get_fevals()), pop.champion_f()[0]);
+                return std::make_tuple(ms, static_cast<std::int64_t>(pop.get_problem().get_fevals()),
+                                       pop.champion_f()[0]);
             };
             const auto [ms, fevals, best] = run(pagmo::problem{PagmoProblem{static_cast<unsigned>(s.dim)}});
             emit({algo, name, seed, fevals, best, ms});
@@ -221,7 +222,8 @@ void summarise() {
         bare_ns[run.problem].push_back(bare.wall_ms / evals * 1e6);
         best[run.algo][run.problem].push_back(run.best_f);
     }
-    fmt::print(stderr, "\nframework cost per evaluation (median over problems and seeds; bare function time removed)\n");
+    fmt::print(stderr,
+               "\nframework cost per evaluation (median over problems and seeds; bare function time removed)\n");
     fmt::print(stderr, "{:<18} {:>12}   median best_f per problem\n", "algo", "ns/eval");
     for (const auto& [algo, costs] : cost_ns) {
         std::string medians;
@@ -239,7 +241,8 @@ int main(int argc, char** argv) {
     CLI::App app{"continuous benchmark: CSV of runs on stdout, summary on stderr"};
     app.add_option("--seeds", s.seeds, "seeds 1..N (default 10)")->check(CLI::Range(1, 1000));
     app.add_option("--evals", s.evals, "evaluations per run (default 100000)")->check(CLI::Range(100, 100000000));
-    app.add_option("--algos", s.algos, "algorithms (default: pso pso-constriction ga ga-plus nlopt:LN_SBPLX nlopt:GN_CRS2_LM)")
+    app.add_option("--algos", s.algos,
+                   "algorithms (default: pso pso-constriction ga ga-plus nlopt:LN_SBPLX nlopt:GN_CRS2_LM)")
         ->delimiter(',');
     app.add_flag("!--no-pagmo", s.pagmo, "skip pagmo2 even when it was found at build time");
     CLI11_PARSE(app, argc, argv);

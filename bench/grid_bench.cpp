@@ -5,8 +5,8 @@
 //      map (the bundled file002-20x20.map) and on a 100x100 map with 20 % random obstacles.
 //   3. PSO (20 particles, 50 iterations, line + repair, objective cells) on the bundled 10x10 map.
 // Usage: grid_bench [--scen FILE.scen ...] [--maps DIR]
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -27,7 +27,9 @@ namespace {
 using namespace pride;
 using namespace pride::grid;
 
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+double ms_since(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 void bench_astar(const std::string& scen) {
     const auto entries = read_scenario(scen);
@@ -38,7 +40,8 @@ void bench_astar(const std::string& scen) {
     AStar astar;
     double worst = 0.0;
     const auto start = Clock::now();
-    for (const auto& e : entries) worst = std::max(worst, std::abs(astar.search(maps.at(e.map), e.start, e.goal) - e.optimal));
+    for (const auto& e : entries)
+        worst = std::max(worst, std::abs(astar.search(maps.at(e.map), e.start, e.goal) - e.optimal));
     const double ms = ms_since(start);
     fmt::print("astar,{},{},{},{:.4g},{:.4g},{:.2g}\n", std::filesystem::path(scen).filename().string(), entries.size(),
                astar.expansions(), astar.expansions() / (ms / 1000.0), ms / static_cast<double>(entries.size()), worst);
@@ -69,7 +72,8 @@ Bundled bundled(const std::string& maps, const std::string& name) {
 
 void bench_decode(const std::string& label, std::shared_ptr<const GridMap> map, Cell s, Cell g) {
     const GridProblem<CellsObjective> problem(std::move(map), s, g);
-    Encoded<GridProblem<CellsObjective>, LineEncoding<RepairConnector>> encoded(problem, LineEncoding<RepairConnector>(problem));
+    Encoded<GridProblem<CellsObjective>, LineEncoding<RepairConnector>> encoded(problem,
+                                                                                LineEncoding<RepairConnector>(problem));
     Rng rng(7);
     std::vector<std::vector<double>> genotypes(64, std::vector<double>(encoded.dimension()));
     for (auto& x : genotypes)
@@ -88,8 +92,8 @@ void bench_decode(const std::string& label, std::shared_ptr<const GridMap> map, 
 void bench_pso(const std::string& maps) {
     const Bundled b = bundled(maps, "file000-10x10");
     const GridProblem<CellsObjective> problem(b.map, b.start, b.goal);
-    const Encoded<GridProblem<CellsObjective>, LineEncoding<RepairConnector>> encoded(problem,
-                                                                                    LineEncoding<RepairConnector>(problem));
+    const Encoded<GridProblem<CellsObjective>, LineEncoding<RepairConnector>> encoded(
+        problem, LineEncoding<RepairConnector>(problem));
     Pso<> pso;
     pso.population = 20;
     std::vector<double> wall;
@@ -118,7 +122,8 @@ int main(int argc, char** argv) {
         fmt::print("part,map,genes,ns_per_decode_and_evaluate\n");
         const Bundled m20 = bundled(maps, "file002-20x20");
         bench_decode("file002-20x20", m20.map, m20.start, m20.goal);
-        bench_decode("random-100x100-20%", std::make_shared<const GridMap>(random_map(100, 100, 0.2, 3)), {0, 0}, {99, 99});
+        bench_decode("random-100x100-20%", std::make_shared<const GridMap>(random_map(100, 100, 0.2, 3)), {0, 0},
+                     {99, 99});
         bench_pso(maps);
     } catch (const std::exception& e) {
         fmt::print(stderr, "grid_bench: {}\n", e.what());

@@ -8,10 +8,17 @@ namespace pride::cli {
 
 std::vector<AlgorithmInfo> list_algorithms() {
     std::vector<AlgorithmInfo> out{
-        {"pso", "global-best particle swarm, inertia 0.9 -> 0.4, c1 = c2 = 2, vmax 0.2 (params: pop w_start w_end c1 c2 vmax)"},
-        {"pso-constriction", "particle swarm with Clerc-Kennedy constriction chi 0.7298, c 2.05 (params: pop chi c vmax)"},
-        {"ga", "real-coded GA: tournament 2, SBX 15 / 0.9, polynomial mutation 20 / (1/D), elitism 1 (params: pop elitism tournament eta_c pc eta_m pm)"},
-        {"ga-plus", "the same GA with (mu + lambda) reinsertion: best N of parents and children, as pagmo2's sga (params: pop tournament eta_c pc eta_m pm)"},
+        {"pso",
+         "global-best particle swarm, inertia 0.9 -> 0.4, c1 = c2 = 2, vmax 0.2 (params: pop w_start w_end c1 c2 "
+         "vmax)"},
+        {"pso-constriction",
+         "particle swarm with Clerc-Kennedy constriction chi 0.7298, c 2.05 (params: pop chi c vmax)"},
+        {"ga",
+         "real-coded GA: tournament 2, SBX 15 / 0.9, polynomial mutation 20 / (1/D), elitism 1 (params: pop elitism "
+         "tournament eta_c pc eta_m pm)"},
+        {"ga-plus",
+         "the same GA with (mu + lambda) reinsertion: best N of parents and children, as pagmo2's sga (params: pop "
+         "tournament eta_c pc eta_m pm)"},
         {"astar", "grids only (pride path): A* with the octile heuristic, the shortest path by length"},
         {"exact", "grids only (pride path): the exact optimum of an additive objective, over (cell, last direction)"},
     };

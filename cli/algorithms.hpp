@@ -15,8 +15,7 @@
 
 namespace pride::cli {
 
-using ContinuousRunner =
-    std::function<Result(const continuous::AnyProblem&, const Termination&, std::uint64_t seed)>;
+using ContinuousRunner = std::function<Result(const continuous::AnyProblem&, const Termination&, std::uint64_t seed)>;
 
 struct AlgorithmInfo {
     std::string name;

@@ -41,7 +41,8 @@ int run_command(const RunOptions& o, std::ostream& out) {
         // A limit beyond what the clock can count (about 292 years) is no limit.
         const double longest = std::chrono::duration<double, std::milli>(Clock::duration::max()).count();
         if (*o.wall_ms < longest)
-            t = t | wall_time(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(*o.wall_ms)));
+            t = t | wall_time(std::chrono::duration_cast<Clock::duration>(
+                        std::chrono::duration<double, std::milli>(*o.wall_ms)));
     }
 
     require(o.seed >= 0, "--seed", "must be >= 0, got " + std::to_string(o.seed));
@@ -53,10 +54,10 @@ int run_command(const RunOptions& o, std::ostream& out) {
             json_string(o.algo), json_string(o.problem), o.dim, o.seed, json_number(r.best_f), json_array(r.best_x),
             r.evaluations, json_number(r.wall_ms), json_array(r.history));
     } else {
-        out << fmt::format("algo         {}\nproblem      {} (D = {})\nseed         {}\nbest_f       {:.17g}\n"
-                           "evaluations  {}\niterations   {}\nwall_ms      {:.3f}\nbest_x       {}\n",
-                           o.algo, o.problem, o.dim, o.seed, r.best_f, r.evaluations, r.iterations, r.wall_ms,
-                           json_array(r.best_x));
+        out << fmt::format(
+            "algo         {}\nproblem      {} (D = {})\nseed         {}\nbest_f       {:.17g}\n"
+            "evaluations  {}\niterations   {}\nwall_ms      {:.3f}\nbest_x       {}\n",
+            o.algo, o.problem, o.dim, o.seed, r.best_f, r.evaluations, r.iterations, r.wall_ms, json_array(r.best_x));
     }
     return 0;
 }
@@ -99,21 +100,26 @@ int list_command(bool json, std::ostream& out) {
     for (const auto& item : continuous::catalog().items())
         problems.items.push_back({item.name, item.summary + " (dim >= " + std::to_string(item.entry.min_dim) + ")"});
     sections.push_back(problems);
-    sections.push_back({"encodings",
-                        {{"identity", "the genotype is the solution (every continuous problem)"},
-                         {"line", "grids: one gene per row (or column) between start and goal, the waypoint's cross coordinate"},
-                         {"free", "grids: 2K genes, K waypoints (x, y) anywhere on the map (--waypoints K, default 3)"},
-                         {"chain", "grids: the cell chain itself, with crossover at a common cell and segment-regenerating mutation (ga, ga-plus)"}}});
-    sections.push_back({"connectors",
-                        {{"repair", "grids (line, free): a blocked join becomes the shortest legal detour (A* in a growing window)"},
-                         {"penalty", "grids (line, free): the straight cell line; each violation costs M >= 10 W H"}}});
-    sections.push_back({"objectives",
-                        {{"value", "continuous problems: the function value itself, minimised"},
-                         {"cells", "grids: number of cells, start and goal included (file 000 eq. 13)"},
-                         {"length", "grids: sum of step lengths, 1 or sqrt(2) (file 002 eq. 8)"},
-                         {"weighted", "grids: w_len length + w_turn turns + w_angle angle_penalty (--weights, default 1,1,0.1)"},
-                         {"iqga", "grids: -(1/length + 1/angle_penalty + 1/turns) (file 002 eq. 12)"},
-                         {"hswoa", "grids: length + lambda turns (file 003; --lambda, default 1)"}}});
+    sections.push_back(
+        {"encodings",
+         {{"identity", "the genotype is the solution (every continuous problem)"},
+          {"line", "grids: one gene per row (or column) between start and goal, the waypoint's cross coordinate"},
+          {"free", "grids: 2K genes, K waypoints (x, y) anywhere on the map (--waypoints K, default 3)"},
+          {"chain",
+           "grids: the cell chain itself, with crossover at a common cell and segment-regenerating mutation (ga, "
+           "ga-plus)"}}});
+    sections.push_back(
+        {"connectors",
+         {{"repair", "grids (line, free): a blocked join becomes the shortest legal detour (A* in a growing window)"},
+          {"penalty", "grids (line, free): the straight cell line; each violation costs M >= 10 W H"}}});
+    sections.push_back(
+        {"objectives",
+         {{"value", "continuous problems: the function value itself, minimised"},
+          {"cells", "grids: number of cells, start and goal included (file 000 eq. 13)"},
+          {"length", "grids: sum of step lengths, 1 or sqrt(2) (file 002 eq. 8)"},
+          {"weighted", "grids: w_len length + w_turn turns + w_angle angle_penalty (--weights, default 1,1,0.1)"},
+          {"iqga", "grids: -(1/length + 1/angle_penalty + 1/turns) (file 002 eq. 12)"},
+          {"hswoa", "grids: length + lambda turns (file 003; --lambda, default 1)"}}});
 
     std::string text;
     if (json) {

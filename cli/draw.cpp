@@ -74,10 +74,10 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
     // About 800 pixels on the longer side, cells between 2 and 40 pixels.
     const double cell = std::clamp(800.0 / std::max(map.width(), map.height()), 2.0, 40.0);
     const double w = map.width() * cell, h = map.height() * cell;
-    cairo_surface_t* surface = format == PictureFormat::svg
-                                   ? cairo_svg_surface_create(file.c_str(), w, h)
-                                   : cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(w),
-                                                                static_cast<int>(h));
+    cairo_surface_t* surface =
+        format == PictureFormat::svg
+            ? cairo_svg_surface_create(file.c_str(), w, h)
+            : cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(w), static_cast<int>(h));
     cairo_t* cr = cairo_create(surface);
     paint(cr, map, start, goal, path, optimal, cell);
     cairo_destroy(cr);
@@ -87,7 +87,8 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
     cairo_surface_finish(surface);  // flushes the SVG
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
     cairo_surface_destroy(surface);
-    if (status != CAIRO_STATUS_SUCCESS) throw InputError(shown_as + ": cannot write the picture: " + cairo_status_to_string(status));
+    if (status != CAIRO_STATUS_SUCCESS)
+        throw InputError(shown_as + ": cannot write the picture: " + cairo_status_to_string(status));
 }
 
 }  // namespace pride::cli

@@ -76,7 +76,8 @@ template <class Objective, class Encoding>
 void run_encoded(const PathOptions& o, const GridProblem<Objective>& problem, Encoding encoding, PathRun& run) {
     ParamMap params;
     for (const auto& p : o.params) params.set_from_string(p);
-    if (o.pop || !params.contains("pop")) params.set("pop", static_cast<double>(o.pop.value_or(20)));  // the papers' N = 20
+    if (o.pop || !params.contains("pop"))
+        params.set("pop", static_cast<double>(o.pop.value_or(20)));  // the papers' N = 20
     if (o.init == "walk") {
         require(o.algo.rfind("nlopt:", 0) != 0, "--init walk", "NLopt algorithms start from one uniform point");
         params.set("walk_init", 1.0);
@@ -87,8 +88,9 @@ void run_encoded(const PathOptions& o, const GridProblem<Objective>& problem, En
         return algorithm.run(encoded, termination, static_cast<std::uint64_t>(o.seed));
     });
     const DecodedPath& best = encoded.decode(r.best_x);
-    run.feasible = best.violations == 0 &&
-                   path_violation(problem.map(), best.path, problem.start(), problem.goal(), problem.corner_cutting()).empty();
+    run.feasible =
+        best.violations == 0 &&
+        path_violation(problem.map(), best.path, problem.start(), problem.goal(), problem.corner_cutting()).empty();
     if (run.feasible) {  // an infeasible candidate is never returned as a result (grid.md)
         run.path = best.path;
         run.value = problem.evaluate(best.path);
@@ -112,7 +114,7 @@ void run_with_connector(const PathOptions& o, const GridProblem<Objective>& prob
 template <class Objective>
 PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map, Objective objective) {
     const GridProblem<Objective> problem(map, parse_cell(o.start, "--start"), parse_cell(o.goal, "--goal"), objective,
-                                        o.corner_cutting);
+                                         o.corner_cutting);
     PathRun run;
     const auto start = Clock::now();  // for astar and exact, whose wall time is their own
     if (o.oracle || o.algo == "exact") {
@@ -122,7 +124,8 @@ PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map
                                        o.corner_cutting);
         } else {
             throw InputError(std::string(o.algo == "exact" ? "--algo exact" : "--oracle") + ": the " +
-                             std::string(Objective::name) + " objective is not a sum of step and turn costs, so it has no exact oracle");
+                             std::string(Objective::name) +
+                             " objective is not a sum of step and turn costs, so it has no exact oracle");
         }
     }
     if (o.algo == "exact") {
@@ -141,8 +144,8 @@ PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map
     } else if (o.encoding == "free") {
         run.encoding = "free";
         require(o.waypoints >= 1 && o.waypoints <= 1000, "--waypoints", "must be in [1, 1000]");
-        run_with_connector<Objective, FreeEncoding>(o, problem, run,
-                                                    [&]<class E>() { return E(problem, static_cast<int>(o.waypoints)); });
+        run_with_connector<Objective, FreeEncoding>(
+            o, problem, run, [&]<class E>() { return E(problem, static_cast<int>(o.waypoints)); });
     } else if (o.encoding == "chain") {
         run.encoding = "chain";
         require(o.connector == "repair", "--connector", "chains need no connector: every operator keeps them legal");
@@ -150,9 +153,11 @@ PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map
         for (const auto& p : o.params) params.set_from_string(p);
         if (o.pop || !params.contains("pop")) params.set("pop", static_cast<double>(o.pop.value_or(20)));
         const auto r = with_chain_algorithm(o.algo, params, [&](const auto& algorithm) {
-            return algorithm.run(ChainSpace<Objective>(problem), grid_termination(o), static_cast<std::uint64_t>(o.seed));
+            return algorithm.run(ChainSpace<Objective>(problem), grid_termination(o),
+                                 static_cast<std::uint64_t>(o.seed));
         });
-        run.feasible = path_violation(problem.map(), r.best_x, problem.start(), problem.goal(), problem.corner_cutting()).empty();
+        run.feasible =
+            path_violation(problem.map(), r.best_x, problem.start(), problem.goal(), problem.corner_cutting()).empty();
         if (run.feasible) {
             run.path = r.best_x;
             run.value = problem.evaluate(run.path);
@@ -240,36 +245,41 @@ int path_command(const PathOptions& o, std::ostream& out) {
     if (o.json) {
         std::string text = fmt::format(
             "{{\"algo\": {}, \"objective\": {}, \"encoding\": {}, \"seed\": {}, \"feasible\": {}, \"path\": {}, "
-            "\"metrics\": {{\"cells\": {}, \"length\": {}, \"turns\": {}, \"turn_angle_deg\": {}, \"angle_penalty\": {}}}, "
+            "\"metrics\": {{\"cells\": {}, \"length\": {}, \"turns\": {}, \"turn_angle_deg\": {}, \"angle_penalty\": "
+            "{}}}, "
             "\"objective_value\": {}, \"evaluations\": {}, \"iterations\": {}, \"wall_ms\": {}, \"history\": {}",
-            json_string(o.algo), json_string(o.objective), json_string(run.encoding), o.seed, run.feasible ? "true" : "false",
-            json_path(run.path), m.cells, json_number(m.length), m.turns, m.turn_angle_deg, m.angle_penalty,
-            run.feasible ? json_number(run.value) : "null", run.evaluations, run.iterations, json_number(run.wall_ms),
-            json_array(run.history));
+            json_string(o.algo), json_string(o.objective), json_string(run.encoding), o.seed,
+            run.feasible ? "true" : "false", json_path(run.path), m.cells, json_number(m.length), m.turns,
+            m.turn_angle_deg, m.angle_penalty, run.feasible ? json_number(run.value) : "null", run.evaluations,
+            run.iterations, json_number(run.wall_ms), json_array(run.history));
         if (o.oracle)
             text += fmt::format(", \"optimum\": {{\"objective_value\": {}, \"gap\": {}}}",
                                 run.optimum ? json_number(*run.optimum) : "null", gap ? json_number(*gap) : "null");
         out << text << "}\n";
         return 0;
     }
-    std::string text = fmt::format("algo            {}\nobjective       {}\nencoding        {}\nseed            {}\n"
-                                   "feasible        {}\n",
-                                   o.algo, o.objective, run.encoding, o.seed, run.feasible ? "yes" : "no");
+    std::string text = fmt::format(
+        "algo            {}\nobjective       {}\nencoding        {}\nseed            {}\n"
+        "feasible        {}\n",
+        o.algo, o.objective, run.encoding, o.seed, run.feasible ? "yes" : "no");
     if (run.feasible)
-        text += fmt::format("objective_value {:.10g}\ncells           {}\nlength          {:.10g}\nturns           {}\n"
-                            "turn_angle_deg  {}\nangle_penalty   {}\n",
-                            run.value, m.cells, m.length, m.turns, m.turn_angle_deg, m.angle_penalty);
-    if (o.oracle) text += fmt::format("optimum         {:.10g}\ngap             {}\n", *run.optimum, gap ? fmt::format("{:.6g}", *gap) : "-");
-    text += fmt::format("evaluations     {}\niterations      {}\nwall_ms         {:.3f}\npath            {}\n", run.evaluations,
-                        run.iterations, run.wall_ms, json_path(run.path));
+        text += fmt::format(
+            "objective_value {:.10g}\ncells           {}\nlength          {:.10g}\nturns           {}\n"
+            "turn_angle_deg  {}\nangle_penalty   {}\n",
+            run.value, m.cells, m.length, m.turns, m.turn_angle_deg, m.angle_penalty);
+    if (o.oracle)
+        text += fmt::format("optimum         {:.10g}\ngap             {}\n", *run.optimum,
+                            gap ? fmt::format("{:.6g}", *gap) : "-");
+    text += fmt::format("evaluations     {}\niterations      {}\nwall_ms         {:.3f}\npath            {}\n",
+                        run.evaluations, run.iterations, run.wall_ms, json_path(run.path));
     out << text;
     return 0;
 }
 
 int scen_command(const ScenOptions& o, std::ostream& out) {
     const auto entries = read_scenario(o.file);
-    const std::filesystem::path dir = o.map_dir.empty() ? std::filesystem::path(o.file).parent_path()
-                                                        : std::filesystem::path(o.map_dir);
+    const std::filesystem::path dir =
+        o.map_dir.empty() ? std::filesystem::path(o.file).parent_path() : std::filesystem::path(o.map_dir);
     std::map<std::string, GridMap> maps;
     AStar astar;
     std::size_t differ = 0;
@@ -286,7 +296,8 @@ int scen_command(const ScenOptions& o, std::ostream& out) {
         }
         const GridMap& map = it->second;
         require(map.width() == e.width && map.height() == e.height, where,
-                fmt::format("the scenario says {}x{}, but {} is {}x{}", e.width, e.height, e.map, map.width(), map.height()));
+                fmt::format("the scenario says {}x{}, but {} is {}x{}", e.width, e.height, e.map, map.width(),
+                            map.height()));
         require(map.free(e.start), where, "the start " + to_string(e.start) + " is blocked on " + e.map);
         require(map.free(e.goal), where, "the goal " + to_string(e.goal) + " is blocked on " + e.map);
         const auto t0 = Clock::now();
@@ -298,12 +309,13 @@ int scen_command(const ScenOptions& o, std::ostream& out) {
     }
     const double rate = seconds > 0 ? static_cast<double>(astar.expansions()) / seconds : 0.0;
     if (o.json)
-        out << fmt::format("{{\"checked\": {}, \"differ\": {}, \"max_diff\": {}, \"expansions_per_s\": {}}}\n", entries.size(),
-                           differ, json_number(max_diff), json_number(rate));
+        out << fmt::format("{{\"checked\": {}, \"differ\": {}, \"max_diff\": {}, \"expansions_per_s\": {}}}\n",
+                           entries.size(), differ, json_number(max_diff), json_number(rate));
     else
-        out << fmt::format("checked           {}\ndiffer            {} (by more than 1e-6)\nmax_diff          {:.3g}\n"
-                           "expansions_per_s  {:.4g}\n",
-                           entries.size(), differ, max_diff, rate);
+        out << fmt::format(
+            "checked           {}\ndiffer            {} (by more than 1e-6)\nmax_diff          {:.3g}\n"
+            "expansions_per_s  {:.4g}\n",
+            entries.size(), differ, max_diff, rate);
     return 0;
 }
 

@@ -1,7 +1,7 @@
 // pride: the command line of the framework (shared/spec/cli.md). Exit status 0 on success, 2 on
 // bad input (one line on stderr naming what and where), 1 on an internal failure.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -37,17 +37,22 @@ int main(int argc, char** argv) {
     eval_cmd->add_option("--dim", eval.dim, "check that every point has this many coordinates");
 
     PathOptions path;
-    auto* path_cmd = app.add_subcommand("path", "one run on a grid map (A*, the exact optimum, or a box algorithm through an encoding)");
+    auto* path_cmd = app.add_subcommand(
+        "path", "one run on a grid map (A*, the exact optimum, or a box algorithm through an encoding)");
     path_cmd->add_option("--map", path.map, "Moving AI .map or 0/1 matrix file")->required();
-    path_cmd->add_option("--start", path.start, "start cell X,Y (x: column from the left, y: row from the top)")->required();
+    path_cmd->add_option("--start", path.start, "start cell X,Y (x: column from the left, y: row from the top)")
+        ->required();
     path_cmd->add_option("--goal", path.goal, "goal cell X,Y")->required();
-    path_cmd->add_option("--algo", path.algo, "astar, exact, pso, pso-constriction, ga, ga-plus or nlopt:NAME")->required();
+    path_cmd->add_option("--algo", path.algo, "astar, exact, pso, pso-constriction, ga, ga-plus or nlopt:NAME")
+        ->required();
     path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
     path_cmd->add_option("--encoding", path.encoding, "line (default), free or chain");
     path_cmd->add_option("--connector", path.connector, "repair (default) or penalty");
-    path_cmd->add_option("--init", path.init, "uniform (default) or walk: line/free populations read off random feasible walks");
+    path_cmd->add_option("--init", path.init,
+                         "uniform (default) or walk: line/free populations read off random feasible walks");
     path_cmd->add_option("--pop", path.pop, "population size (default 20)");
-    auto* path_iters = path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)");
+    auto* path_iters =
+        path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)");
     path_cmd->add_option("--evals", path.evals, "evaluation limit")->excludes(path_iters);
     path_cmd->add_option("--seed", path.seed, "random seed (default 1)");
     path_cmd->add_option("--inflate", path.inflate, "obstacle inflation radius in cells (default 0)");
@@ -76,7 +81,8 @@ int main(int argc, char** argv) {
         const bool known = argc > 1 && std::any_of(subcommands.begin(), subcommands.end(),
                                                    [&](const CLI::App* s) { return s->get_name() == argv[1]; });
         if (argc > 1 && argv[1][0] != '-' && !known)
-            throw pride::InputError(std::string("unknown subcommand '") + argv[1] + "' (expected run, eval, list, path or scen)");
+            throw pride::InputError(std::string("unknown subcommand '") + argv[1] +
+                                    "' (expected run, eval, list, path or scen)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);

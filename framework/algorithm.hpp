@@ -13,8 +13,8 @@
 namespace pride {
 
 template <class A, class P>
-concept AlgorithmFor = BoxProblem<P> && requires(const A& a, P p, const Termination& t, std::uint64_t seed,
-                                                 NoObserver& observer) {
+concept AlgorithmFor = BoxProblem<P> &&
+    requires(const A& a, P p, const Termination& t, std::uint64_t seed, NoObserver& observer) {
     { a.name() } -> std::convertible_to<std::string>;
     { a.run(p, t, seed, observer) } -> std::same_as<Result>;
 };

@@ -15,8 +15,8 @@
 namespace pride {
 
 template <class P>
-concept ChainProblem = std::copy_constructible<P> && requires(P& p, const P& cp, Rng& rng, typename P::chain_type& a,
-                                                              typename P::chain_type& b) {
+concept ChainProblem = std::copy_constructible<P> &&
+    requires(P& p, const P& cp, Rng& rng, typename P::chain_type& a, typename P::chain_type& b) {
     typename P::chain_type;
     { p.random_chain(rng, a) } -> std::same_as<void>;
     { p.crossover(a, b, rng) } -> std::same_as<bool>;

@@ -16,31 +16,38 @@
 namespace pride {
 
 template <class E, class P>
-concept EncodingFor = std::copy_constructible<E> &&
-    requires(E& e, const E& ce, P& p, std::span<const double> g) {
-        { ce.dimension(p) } -> std::convertible_to<std::size_t>;
-        { ce.lower(p) } -> std::convertible_to<std::span<const double>>;
-        { ce.upper(p) } -> std::convertible_to<std::span<const double>>;
-        { p.evaluate(e.decode(p, g)) } -> std::convertible_to<double>;
-    };
+concept EncodingFor = std::copy_constructible<E> && requires(E& e, const E& ce, P& p, std::span<const double> g) {
+    { ce.dimension(p) } -> std::convertible_to<std::size_t>;
+    { ce.lower(p) } -> std::convertible_to<std::span<const double>>;
+    { ce.upper(p) } -> std::convertible_to<std::span<const double>>;
+    { p.evaluate(e.decode(p, g)) } -> std::convertible_to<double>;
+};
 
 /// The identity encoding of a box problem: the genotype is the solution.
 struct IdentityEncoding {
     template <class P>
-    std::size_t dimension(const P& p) const { return p.dimension(); }
+    std::size_t dimension(const P& p) const {
+        return p.dimension();
+    }
     template <class P>
-    std::span<const double> lower(const P& p) const { return p.lower(); }
+    std::span<const double> lower(const P& p) const {
+        return p.lower();
+    }
     template <class P>
-    std::span<const double> upper(const P& p) const { return p.upper(); }
+    std::span<const double> upper(const P& p) const {
+        return p.upper();
+    }
     template <class P>
-    std::span<const double> decode(const P&, std::span<const double> g) const { return g; }
+    std::span<const double> decode(const P&, std::span<const double> g) const {
+        return g;
+    }
 };
 
 /// A problem seen through an encoding; itself a BoxProblem.
 template <class P, class E>
-    requires EncodingFor<E, P>
+requires EncodingFor<E, P>
 class Encoded {
-public:
+  public:
     Encoded(P problem, E encoding) : problem_(std::move(problem)), encoding_(std::move(encoding)) {}
 
     std::size_t dimension() const { return encoding_.dimension(problem_); }
@@ -55,13 +62,12 @@ public:
     const E& encoding() const { return encoding_; }
 
     /// Forwards the problem's own suggestions when the encoding can turn them into genotypes.
-    void starting_points(Rng& rng, Matrix& out) const
-        requires requires(const E& e, const P& p, Rng& r, Matrix& m) { e.starting_points(p, r, m); }
-    {
-        encoding_.starting_points(problem_, rng, out);
+    void starting_points(Rng& rng, Matrix& out) const requires requires(const E& e, const P& p, Rng& r, Matrix& m) {
+        e.starting_points(p, r, m);
     }
+    { encoding_.starting_points(problem_, rng, out); }
 
-private:
+  private:
     P problem_;
     E encoding_;
 };

@@ -8,7 +8,7 @@ namespace pride {
 
 /// Input that cannot be used: a bad parameter, an unknown name, a malformed file or number.
 class InputError : public std::runtime_error {
-public:
+  public:
     explicit InputError(const std::string& what) : std::runtime_error(what) {}
 };
 

@@ -14,7 +14,7 @@
 namespace pride {
 
 class ParamMap {
-public:
+  public:
     ParamMap() = default;
 
     /// Sets `name` to `value`; a later set of the same name wins.
@@ -50,7 +50,8 @@ public:
     /// An integer parameter; a fractional value is an error naming `where`.
     std::int64_t get_int(const std::string& name, std::int64_t fallback, const std::string& where) const {
         const double v = get(name, static_cast<double>(fallback));
-        require(v == std::floor(v) && std::abs(v) < 9.0e15, where, name + " must be an integer, got " + std::to_string(v));
+        require(v == std::floor(v) && std::abs(v) < 9.0e15, where,
+                name + " must be an integer, got " + std::to_string(v));
         return static_cast<std::int64_t>(v);
     }
 
@@ -60,7 +61,7 @@ public:
             require(used_.count(name) != 0, where, "unknown parameter '" + name + "'");
     }
 
-private:
+  private:
     std::map<std::string, double> values_;
     mutable std::set<std::string> used_;
 };

@@ -23,7 +23,7 @@ constexpr std::uint64_t splitmix64(std::uint64_t& state) noexcept {
 __extension__ typedef unsigned __int128 uint128;  // GCC/Clang built-in, for Lemire's method
 
 class Rng {
-public:
+  public:
     using result_type = std::uint64_t;
 
     /// One generator for one (master seed, stream) pair. Different pairs give streams whose
@@ -108,7 +108,7 @@ public:
         s_[3] = s3;
     }
 
-private:
+  private:
     // Through int64: the value fits, and a signed conversion is one instruction.
     static double to_unit(std::uint64_t bits) noexcept {
         return static_cast<double>(static_cast<std::int64_t>(bits >> 11)) * 0x1.0p-53;

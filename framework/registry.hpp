@@ -9,7 +9,7 @@ namespace pride {
 
 template <class Entry>
 class Registry {
-public:
+  public:
     struct Item {
         std::string name;
         std::string summary;
@@ -29,7 +29,7 @@ public:
 
     const std::vector<Item>& items() const { return items_; }
 
-private:
+  private:
     std::vector<Item> items_;
 };
 

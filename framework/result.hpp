@@ -10,8 +10,8 @@ namespace pride {
 /// on chains, a chain.
 template <class Solution = std::vector<double>>
 struct BasicResult {
-    Solution best_x;             // a point: the genotype, which an Encoded problem's decode() turns into the solution
-    double best_f = 0.0;         // +inf when no evaluation gave a finite value
+    Solution best_x;      // a point: the genotype, which an Encoded problem's decode() turns into the solution
+    double best_f = 0.0;  // +inf when no evaluation gave a finite value
     std::int64_t evaluations = 0;
     std::int64_t iterations = 0;  // completed iterations after the initial population
     /// history[k]: best value after iteration k (k = 0 is the initial population), and

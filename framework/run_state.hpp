@@ -21,13 +21,15 @@ namespace pride {
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// NaN and +-inf become +inf: worse than every finite value, so never the best.
-inline double sanitize(double f) noexcept { return std::isfinite(f) ? f : kInf; }
+inline double sanitize(double f) noexcept {
+    return std::isfinite(f) ? f : kInf;
+}
 
 /// `Solution` is what is searched: a point of a box (std::vector<double>, the default, kept as
 /// the span evaluated) or a chain for algorithms on chains.
 template <class Solution = std::vector<double>>
 class BasicRunState {
-public:
+  public:
     /// `dimension`: the length of a point, for box problems (the best point is allocated once).
     explicit BasicRunState(const Termination& termination, std::size_t dimension = 0)
         : termination_(termination),
@@ -56,9 +58,7 @@ public:
     /// Evaluates the first min(points.cols(), remaining()) columns into `values` and returns how
     /// many; columns past the budget get +inf. Uses the problem's batch evaluation when it has one.
     template <BoxProblem P>
-    Eigen::Index evaluate_columns(P& problem, const Matrix& points, std::span<double> values)
-        requires is_point
-    {
+    Eigen::Index evaluate_columns(P& problem, const Matrix& points, std::span<double> values) requires is_point {
         const Eigen::Index n = std::min<Eigen::Index>(points.cols(), static_cast<Eigen::Index>(remaining()));
         if constexpr (BatchBoxProblem<P>) {
             problem.evaluate_batch(points.leftCols(n), values.first(static_cast<std::size_t>(n)));
@@ -97,8 +97,8 @@ public:
             observer(IterationView{progress_.iterations, progress_.evaluations, progress_.best, best_x_, population,
                                    fitness});
         else
-            observer(BasicIterationView<const Solution&, Population>{
-                progress_.iterations, progress_.evaluations, progress_.best, best_x_, population, fitness});
+            observer(BasicIterationView<const Solution&, Population>{progress_.iterations, progress_.evaluations,
+                                                                     progress_.best, best_x_, population, fitness});
     }
 
     const Progress& progress() const noexcept { return progress_; }
@@ -119,7 +119,7 @@ public:
         return r;
     }
 
-private:
+  private:
     static constexpr bool is_point = std::is_same_v<Solution, std::vector<double>>;
 
     Termination termination_;

@@ -24,7 +24,7 @@ struct Progress {
 };
 
 class Termination {
-public:
+  public:
     std::optional<std::int64_t> max_evaluations;
     std::optional<std::int64_t> max_iterations;
     std::optional<double> target;  // stop once best <= target
@@ -56,8 +56,7 @@ public:
         std::optional<std::int64_t> t = max_iterations;
         if (max_evaluations && evaluations_per_iteration > 0) {
             const std::int64_t left = std::max<std::int64_t>(0, *max_evaluations - initial_evaluations);
-            const std::int64_t by_evals =
-                (left + evaluations_per_iteration - 1) / evaluations_per_iteration;
+            const std::int64_t by_evals = (left + evaluations_per_iteration - 1) / evaluations_per_iteration;
             t = t ? std::min(*t, by_evals) : by_evals;
         }
         return t;
@@ -77,9 +76,25 @@ public:
     }
 };
 
-inline Termination max_evaluations(std::int64_t n) { Termination t; t.max_evaluations = n; return t; }
-inline Termination max_iterations(std::int64_t n) { Termination t; t.max_iterations = n; return t; }
-inline Termination target_value(double f) { Termination t; t.target = f; return t; }
-inline Termination wall_time(Clock::duration d) { Termination t; t.wall_time = d; return t; }
+inline Termination max_evaluations(std::int64_t n) {
+    Termination t;
+    t.max_evaluations = n;
+    return t;
+}
+inline Termination max_iterations(std::int64_t n) {
+    Termination t;
+    t.max_iterations = n;
+    return t;
+}
+inline Termination target_value(double f) {
+    Termination t;
+    t.target = f;
+    return t;
+}
+inline Termination wall_time(Clock::duration d) {
+    Termination t;
+    t.wall_time = d;
+    return t;
+}
 
 }  // namespace pride

@@ -3,12 +3,12 @@
 // tests: exit status, stdout and stderr, with optional text on stdin.
 #include <sys/wait.h>
 
+#include <unistd.h>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <unistd.h>
 
 namespace pride::test {
 
@@ -24,10 +24,9 @@ inline CliOutput run_pride(const std::string& args, const std::string& stdin_tex
     const char* dir = mkdtemp(dir_template);
     if (!dir) throw std::runtime_error("mkdtemp failed");
     const std::string base(dir);
-    {
-        std::ofstream(base + "/in") << stdin_text;
-    }
-    const std::string cmd = std::string("'") + PRIDE_EXE + "' " + args + " <" + base + "/in >" + base + "/out 2>" + base + "/err";
+    { std::ofstream(base + "/in") << stdin_text; }
+    const std::string cmd =
+        std::string("'") + PRIDE_EXE + "' " + args + " <" + base + "/in >" + base + "/out 2>" + base + "/err";
     const int raw = std::system(cmd.c_str());
     auto slurp = [](const std::string& path) {
         std::ifstream f(path);

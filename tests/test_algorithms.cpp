@@ -113,7 +113,9 @@ bool bits_equal(const std::vector<double>& a, const std::vector<double>& b) {
     return true;
 }
 
-bool bits_equal(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+bool bits_equal(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
 
 std::uint64_t fnv1a(std::uint64_t h, const double* data, std::size_t n) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -851,10 +853,22 @@ TEST_CASE("FixedPower agrees with std::pow", "[operators]") {
         double e;
         double tolerance;
     };
-    const Case cases[] = {{16.0, 19 * u},          {-16.0, 19 * u},           {1.0 / 16, 4 * u}, {21.0, 24 * u},
-                          {1.0 / 21, 0.0},         {2.5, 0.0},                {1.0, 0.0},        {0.0, 0.0},
-                          {-1.0, 3 * u},           {1.0 / 2, 4 * u},          {1.0 / 64, 4 * u}, {64.0, 67 * u},
-                          {-(15.0 + 1.0), 19 * u}, {1.0 / (20.0 + 1.0), 0.0}, {65.0, 0.0},       {0.3, 0.0}};
+    const Case cases[] = {{16.0, 19 * u},
+                          {-16.0, 19 * u},
+                          {1.0 / 16, 4 * u},
+                          {21.0, 24 * u},
+                          {1.0 / 21, 0.0},
+                          {2.5, 0.0},
+                          {1.0, 0.0},
+                          {0.0, 0.0},
+                          {-1.0, 3 * u},
+                          {1.0 / 2, 4 * u},
+                          {1.0 / 64, 4 * u},
+                          {64.0, 67 * u},
+                          {-(15.0 + 1.0), 19 * u},
+                          {1.0 / (20.0 + 1.0), 0.0},
+                          {65.0, 0.0},
+                          {0.3, 0.0}};
     pride::Rng rng(7);
     for (const auto& c : cases) {
         const pride::FixedPower power(c.e);
@@ -906,7 +920,8 @@ void check_distribution(const std::vector<double>& samples, const std::vector<do
         const double expected = cdf(b);
         const auto below = std::count_if(samples.begin(), samples.end(), [&](double v) { return v <= b; });
         INFO("P(X <= " << b << "): expected " << expected << ", got " << static_cast<double>(below) / n);
-        CHECK(static_cast<double>(below) == Approx(expected * n).margin(5.0 * std::sqrt(expected * (1 - expected) * n) + 1));
+        CHECK(static_cast<double>(below) ==
+              Approx(expected * n).margin(5.0 * std::sqrt(expected * (1 - expected) * n) + 1));
     }
 }
 
@@ -997,7 +1012,8 @@ TEST_CASE("SBX crossover on hand-worked cases", "[operators][sbx]") {
             }
             // P(pair changed) = 0.9 * (1 - 1/4) = 0.675; P(coordinate crossed) = 0.45.
             CHECK(pairs_changed == Approx(0.675 * pairs).margin(5 * std::sqrt(0.675 * 0.325 * pairs)));
-            CHECK(static_cast<double>(betaq.size()) == Approx(0.45 * 2 * pairs).margin(5 * std::sqrt(0.45 * 0.55 * 2 * pairs)));
+            CHECK(static_cast<double>(betaq.size()) ==
+                  Approx(0.45 * 2 * pairs).margin(5 * std::sqrt(0.45 * 0.55 * 2 * pairs)));
             // Which child gets the upper value is a fair coin.
             const double crossed = static_cast<double>(betaq.size());
             CHECK(first_child_above == Approx(0.5 * crossed).margin(5 * std::sqrt(0.25 * crossed)));
@@ -1030,7 +1046,8 @@ TEST_CASE("SBX crossover on hand-worked cases", "[operators][sbx]") {
         }
         CHECK(lower_betaq.size() > 15000u);
         CHECK(on_face < 10);
-        check_distribution(lower_betaq, {0.7, 0.8, 0.9, 0.95, 0.98, 0.99}, [&](double b) { return std::pow(b, eta + 1); });
+        check_distribution(lower_betaq, {0.7, 0.8, 0.9, 0.95, 0.98, 0.99},
+                           [&](double b) { return std::pow(b, eta + 1); });
     }
     SECTION("a larger eta keeps children closer to their parents") {
         // Parents -1 and 1 in a huge box: the children are -betaq and betaq, so |c - parent| is

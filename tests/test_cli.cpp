@@ -47,7 +47,7 @@ struct Json {
 };
 
 class JsonReader {
-public:
+  public:
     explicit JsonReader(const std::string& s) : s_(s) {}
 
     Json document() {
@@ -57,7 +57,7 @@ public:
         return v;
     }
 
-private:
+  private:
     [[noreturn]] void fail(const std::string& what) const {
         throw std::runtime_error("JSON: " + what + " at offset " + std::to_string(i_));
     }
@@ -98,23 +98,42 @@ private:
             if (i_ >= s_.size()) fail("bad escape");
             const char e = s_[i_++];
             switch (e) {
-                case '"': out += '"'; break;
-                case '\\': out += '\\'; break;
-                case '/': out += '/'; break;
-                case 'b': out += '\b'; break;
-                case 'f': out += '\f'; break;
-                case 'n': out += '\n'; break;
-                case 'r': out += '\r'; break;
-                case 't': out += '\t'; break;
+                case '"':
+                    out += '"';
+                    break;
+                case '\\':
+                    out += '\\';
+                    break;
+                case '/':
+                    out += '/';
+                    break;
+                case 'b':
+                    out += '\b';
+                    break;
+                case 'f':
+                    out += '\f';
+                    break;
+                case 'n':
+                    out += '\n';
+                    break;
+                case 'r':
+                    out += '\r';
+                    break;
+                case 't':
+                    out += '\t';
+                    break;
                 case 'u': {
                     if (i_ + 4 > s_.size()) fail("bad \\u escape");
                     const unsigned code = static_cast<unsigned>(std::stoul(s_.substr(i_, 4), nullptr, 16));
                     i_ += 4;
-                    if (code < 0x80) out += static_cast<char>(code);
-                    else out += '?';
+                    if (code < 0x80)
+                        out += static_cast<char>(code);
+                    else
+                        out += '?';
                     break;
                 }
-                default: fail("bad escape");
+                default:
+                    fail("bad escape");
             }
         }
     }
@@ -160,8 +179,10 @@ private:
                 return i_ - d;
             };
             if (i_ < s_.size() && s_[i_] == '-') ++i_;
-            if (i_ < s_.size() && s_[i_] == '0') ++i_;
-            else if (digits() == 0) fail("bad value");
+            if (i_ < s_.size() && s_[i_] == '0')
+                ++i_;
+            else if (digits() == 0)
+                fail("bad value");
             if (i_ < s_.size() && s_[i_] == '.') {
                 ++i_;
                 if (digits() == 0) fail("bad fraction");
@@ -182,7 +203,9 @@ private:
     std::size_t i_ = 0;
 };
 
-Json parse_json(const std::string& s) { return JsonReader(s).document(); }
+Json parse_json(const std::string& s) {
+    return JsonReader(s).document();
+}
 
 std::vector<double> numbers(const Json& array) {
     REQUIRE(array.type == Json::Type::array);
@@ -287,7 +310,7 @@ TEST_CASE("cli: malformed stdin points name the line", "[cli][errors]") {
     expect_input_error("eval --problem sphere --x -", {"line 3"}, "1,2\n3,4\n1,x\n5,6\n");
     expect_input_error("eval --problem sphere --x -", {"line 2"}, "1,2\n3,,4\n");
     expect_input_error("eval --problem sphere --x -", {"line 3"}, "1,2\n3,4\n1,2,3\n");  // not like the first
-    expect_input_error("eval --problem sphere --x -", {}, "");                          // no point at all
+    expect_input_error("eval --problem sphere --x -", {}, "");                           // no point at all
     expect_input_error("eval --problem sphere --dim 3 --x -", {"3"}, "1,2\n3,4\n");
 }
 
@@ -326,8 +349,7 @@ TEST_CASE("cli: bad algorithm parameters are input errors", "[cli][errors]") {
     expect_input_error("run --problem sphere --dim 3 --algo ga --evals 100 --param elitism=50", {"elitism"});
     // a parameter of another algorithm
     expect_input_error("run --problem sphere --dim 3 --algo ga --evals 100 --param w_start=0.5", {"w_start"});
-    expect_input_error("run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 100 --param elitism=1",
-                       {"elitism"});
+    expect_input_error("run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 100 --param elitism=1", {"elitism"});
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -358,8 +380,8 @@ TEST_CASE("cli: run --json prints one object with the documented keys", "[cli][r
     auto keys = j.keys();
     const std::set<std::string> unique(keys.begin(), keys.end());
     CHECK(unique.size() == keys.size());  // no key twice
-    const std::set<std::string> expected = {"algo", "problem", "dim", "seed", "best_f", "best_x",
-                                            "evaluations", "wall_ms", "history"};
+    const std::set<std::string> expected = {"algo",   "problem",     "dim",     "seed",   "best_f",
+                                            "best_x", "evaluations", "wall_ms", "history"};
     CHECK(unique == expected);
 
     CHECK(j.at("algo").type == Json::Type::string);
@@ -422,7 +444,8 @@ TEST_CASE("cli: run --json for every algorithm family and limit", "[cli][run]") 
         INFO(c.args);
         const Json j = parse_json(expect_success("run " + c.args + " --json"));
         const auto evaluations = static_cast<std::int64_t>(j.at("evaluations").number);
-        if (c.evaluations >= 0) CHECK(evaluations == c.evaluations);
+        if (c.evaluations >= 0)
+            CHECK(evaluations == c.evaluations);
         else {
             CHECK(evaluations < 100000);
             CHECK(j.at("best_f").number <= 1e-3);
@@ -437,8 +460,8 @@ TEST_CASE("cli: a wall-time limit far in the future does not end the run", "[cli
     // 1e13 ms (about 317 years) overflows a nanosecond duration; it must still mean "no limit yet".
     for (const char* wall : {"1e6", "1e13", "1e300"}) {
         INFO("--wall-ms " << wall);
-        const Json j = parse_json(
-            expect_success(std::string("run --problem sphere --dim 3 --algo pso --evals 1000 --json --wall-ms ") + wall));
+        const Json j = parse_json(expect_success(
+            std::string("run --problem sphere --dim 3 --algo pso --evals 1000 --json --wall-ms ") + wall));
         CHECK(j.at("evaluations").number == 1000);
     }
 }
@@ -528,7 +551,8 @@ TEST_CASE("cli: list names every algorithm and problem", "[cli][list]") {
     REQUIRE(j.has("problems"));
     for (const auto& a : j.at("algorithms").items) algorithms.insert(a.at("name").text);
     for (const auto& p : j.at("problems").items) problems.insert(p.at("name").text);
-    for (const char* a : {"pso", "ga", "pso-constriction", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"}) CHECK(algorithms.count(a) == 1);
+    for (const char* a : {"pso", "ga", "pso-constriction", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"})
+        CHECK(algorithms.count(a) == 1);
     for (const auto& item : pride::continuous::catalog().items()) CHECK(problems.count(item.name) == 1);
     // Every listed problem can be evaluated, every listed algorithm run.
     for (const auto& name : problems) {
@@ -541,7 +565,8 @@ TEST_CASE("cli: list names every algorithm and problem", "[cli][list]") {
                           "nlopt:GN_DIRECT_L", "nlopt:GN_ISRES"}) {
         INFO(a);
         REQUIRE(algorithms.count(a) == 1);
-        const Json r = parse_json(expect_success(std::string("run --problem sphere --dim 2 --evals 120 --json --algo ") + a));
+        const Json r =
+            parse_json(expect_success(std::string("run --problem sphere --dim 2 --evals 120 --json --algo ") + a));
         CHECK(r.at("evaluations").number == 120);
     }
 }
@@ -577,12 +602,12 @@ TEST_CASE("cli: NLopt subplex on the sphere", "[cli][nlopt]") {
     CHECK(numbers(j.at("best_x")).size() == 3);
 
     // restart=0 runs NLopt once: it converges and stops before the budget.
-    const Json once = parse_json(expect_success(
-        "run --problem sphere --dim 2 --algo nlopt:LN_SBPLX --evals 100000 --param restart=0 --json"));
+    const Json once = parse_json(
+        expect_success("run --problem sphere --dim 2 --algo nlopt:LN_SBPLX --evals 100000 --param restart=0 --json"));
     CHECK(once.at("evaluations").number < 100000);
     CHECK(once.at("best_f").number < 1e-12);
     // pop sets the evaluations per recorded iteration: 2000 / 100 = 20 entries.
-    const Json blocks = parse_json(expect_success(
-        "run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 2000 --pop 100 --json"));
+    const Json blocks =
+        parse_json(expect_success("run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 2000 --pop 100 --json"));
     CHECK(numbers(blocks.at("history")).size() == 20);
 }

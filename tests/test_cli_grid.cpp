@@ -3,8 +3,8 @@
 // parsed and every path and metric re-checked here, independently of the library (own map reader,
 // own legality rules, own metrics, own breadth-first search); Moving AI scenario files; every input
 // error (exit 2, one line on stderr, nothing on stdout); and the SVG/PNG pictures.
-#include <catch2/catch.hpp>
 #include <unistd.h>
+#include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +58,7 @@ struct JsonValue {
 };
 
 class JsonParser {
-public:
+  public:
     explicit JsonParser(const std::string& s) : s_(s) {}
     JsonValue parse() {
         JsonValue v = value();
@@ -67,7 +67,7 @@ public:
         return v;
     }
 
-private:
+  private:
     [[noreturn]] void fail(const std::string& what) const {
         throw std::runtime_error("JSON: " + what + " at offset " + std::to_string(i_));
     }
@@ -105,18 +105,33 @@ private:
             if (i_ >= s_.size()) fail("bad escape");
             const char e = s_[i_++];
             switch (e) {
-                case '"': case '\\': case '/': out += e; break;
-                case 'b': out += '\b'; break;
-                case 'f': out += '\f'; break;
-                case 'n': out += '\n'; break;
-                case 'r': out += '\r'; break;
-                case 't': out += '\t'; break;
+                case '"':
+                case '\\':
+                case '/':
+                    out += e;
+                    break;
+                case 'b':
+                    out += '\b';
+                    break;
+                case 'f':
+                    out += '\f';
+                    break;
+                case 'n':
+                    out += '\n';
+                    break;
+                case 'r':
+                    out += '\r';
+                    break;
+                case 't':
+                    out += '\t';
+                    break;
                 case 'u':
                     if (i_ + 4 > s_.size()) fail("bad \\u escape");
                     i_ += 4;
                     out += '?';
                     break;
-                default: fail("bad escape");
+                default:
+                    fail("bad escape");
             }
         }
     }
@@ -185,17 +200,23 @@ private:
     std::size_t i_ = 0;
 };
 
-JsonValue parse_json(const std::string& s) { return JsonParser(s).parse(); }
+JsonValue parse_json(const std::string& s) {
+    return JsonParser(s).parse();
+}
 
 // ---------------------------------------------------------------------------------------------
 // Files
 
-fs::path bundled_dir() { return fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps"; }
-fs::path movingai_dir() { return fs::path(PRIDE_SHARED_DATA) / "movingai"; }
+fs::path bundled_dir() {
+    return fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps";
+}
+fs::path movingai_dir() {
+    return fs::path(PRIDE_SHARED_DATA) / "movingai";
+}
 
 /// A temporary folder, removed with everything in it at the end of the scope.
 class TempDir {
-public:
+  public:
     TempDir() {
         char tmpl[] = "/tmp/pride-cli-grid-XXXXXX";
         const char* d = mkdtemp(tmpl);
@@ -221,7 +242,7 @@ public:
         return out;
     }
 
-private:
+  private:
     fs::path path_;
 };
 
@@ -285,7 +306,8 @@ std::string illegal(const Grid& g, const std::vector<XY>& path, XY s, XY t, bool
     std::set<std::pair<int, int>> seen;
     for (std::size_t i = 0; i < path.size(); ++i) {
         const XY c = path[i];
-        const std::string at = "cell " + std::to_string(i) + " (" + std::to_string(c.x) + "," + std::to_string(c.y) + ")";
+        const std::string at =
+            "cell " + std::to_string(i) + " (" + std::to_string(c.x) + "," + std::to_string(c.y) + ")";
         if (!g.free(c.x, c.y)) return at + " is blocked or outside";
         if (!seen.insert({c.x, c.y}).second) return at + " appears twice";
         if (i == 0) continue;
@@ -317,7 +339,8 @@ Measured measure(const std::vector<XY>& path) {
         const double px = path[i - 1].x - path[i - 2].x, py = path[i - 1].y - path[i - 2].y;
         if (px == dx && py == dy) continue;
         const double cosine = (px * dx + py * dy) / std::sqrt((px * px + py * py) * (dx * dx + dy * dy));
-        const int angle = static_cast<int>(std::lround(std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi));
+        const int angle =
+            static_cast<int>(std::lround(std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi));
         ++m.turns;
         m.turn_angle_deg += angle;
         m.angle_penalty += angle < 90 ? 10 : (angle == 90 ? 20 : 50);
@@ -368,11 +391,21 @@ struct Objective {
     }
 };
 
-Objective cells_objective() { return {"cells", "--objective cells"}; }
-Objective length_objective() { return {"length", "--objective length"}; }
-Objective weighted_objective() { return {"weighted", "--objective weighted --weights 2,0.5,0.3", 2, 0.5, 0.3, 1}; }
-Objective hswoa_objective() { return {"hswoa", "--objective hswoa"}; }
-Objective hswoa_lambda_objective() { return {"hswoa", "--objective hswoa --lambda 2.5", 1, 1, 0.1, 2.5}; }
+Objective cells_objective() {
+    return {"cells", "--objective cells"};
+}
+Objective length_objective() {
+    return {"length", "--objective length"};
+}
+Objective weighted_objective() {
+    return {"weighted", "--objective weighted --weights 2,0.5,0.3", 2, 0.5, 0.3, 1};
+}
+Objective hswoa_objective() {
+    return {"hswoa", "--objective hswoa"};
+}
+Objective hswoa_lambda_objective() {
+    return {"hswoa", "--objective hswoa --lambda 2.5", 1, 1, 0.1, 2.5};
+}
 
 std::vector<Objective> additive_objectives() {
     return {cells_objective(), length_objective(), weighted_objective(), hswoa_objective(), hswoa_lambda_objective()};
@@ -404,8 +437,8 @@ const std::vector<Bundled>& bundled() {
             Bundled b;
             std::string bucket, map_name;
             int w = 0, h = 0;
-            std::istringstream(line) >> bucket >> map_name >> w >> h >> b.start.x >> b.start.y >> b.goal.x >> b.goal.y >>
-                b.optimal_length;
+            std::istringstream(line) >> bucket >> map_name >> w >> h >> b.start.x >> b.start.y >> b.goal.x >>
+                b.goal.y >> b.optimal_length;
             b.name = map_name;
             b.map = (bundled_dir() / map_name).string();
             b.grid = read_grid(b.map);
@@ -476,7 +509,9 @@ std::vector<double> numbers_of(const JsonValue& v) {
     return out;
 }
 
-bool nearly(double a, double b, double rel = 1e-9) { return std::abs(a - b) <= rel * std::max({1.0, std::abs(a), std::abs(b)}); }
+bool nearly(double a, double b, double rel = 1e-9) {
+    return std::abs(a - b) <= rel * std::max({1.0, std::abs(a), std::abs(b)});
+}
 
 /// The JSON of `pride path`: the keys of cli.md (optimum exactly when `oracle`), a legal path whose
 /// metrics and objective value agree with the ones computed here; returns the document.
@@ -485,9 +520,9 @@ JsonValue check_path_json(const std::string& text, const Grid& grid, XY start, X
     INFO("output: " << text.substr(0, 600));
     const JsonValue j = parse_json(text);
     REQUIRE(j.kind == JsonValue::Kind::object);
-    std::vector<std::string> expected = {"algo",        "objective",   "encoding",   "seed",      "feasible",
-                                         "path",        "metrics",     "objective_value", "evaluations", "iterations",
-                                         "wall_ms",     "history"};
+    std::vector<std::string> expected = {"algo",        "objective",  "encoding", "seed",
+                                         "feasible",    "path",       "metrics",  "objective_value",
+                                         "evaluations", "iterations", "wall_ms",  "history"};
     if (oracle) expected.push_back("optimum");
     auto keys = j.keys(), sorted_expected = expected;
     std::sort(keys.begin(), keys.end());
@@ -592,7 +627,7 @@ JsonValue check_heuristic(const Bundled& b, const Heuristic& h, const Objective&
     INFO("pride " << args);
     const JsonValue j = check_path_json(success(args), b.grid, b.start, b.goal, objective, h.algo, true);
     CHECK(j.at("encoding").text == h.encoding);
-    CHECK(j.at("feasible").boolean);  // repair connector and chains: always a legal path
+    CHECK(j.at("feasible").boolean);         // repair connector and chains: always a legal path
     CHECK(j.at("iterations").number == 50);  // the default iteration limit
     const auto history = numbers_of(j.at("history"));
     CHECK(history.size() == 51);
@@ -612,13 +647,13 @@ TEST_CASE("cli grid: the independent checker itself, on hand-made paths", "[cli]
     g.height = 3;
     g.rows = {"..@.", "....", "@..."};
     CHECK(illegal(g, {{0, 0}, {1, 1}, {2, 1}, {3, 2}}, {0, 0}, {3, 2}).empty());
-    CHECK_FALSE(illegal(g, {{1, 0}, {2, 1}}, {1, 0}, {2, 1}).empty());        // cuts the corner (2,0)
-    CHECK(illegal(g, {{1, 0}, {2, 1}}, {1, 0}, {2, 1}, true).empty());        // allowed with corner cutting
-    CHECK_FALSE(illegal(g, {{0, 0}, {1, 0}, {2, 0}}, {0, 0}, {2, 0}).empty()); // blocked cell
-    CHECK_FALSE(illegal(g, {{0, 0}, {2, 1}}, {0, 0}, {2, 1}).empty());        // not a neighbour
+    CHECK_FALSE(illegal(g, {{1, 0}, {2, 1}}, {1, 0}, {2, 1}).empty());                  // cuts the corner (2,0)
+    CHECK(illegal(g, {{1, 0}, {2, 1}}, {1, 0}, {2, 1}, true).empty());                  // allowed with corner cutting
+    CHECK_FALSE(illegal(g, {{0, 0}, {1, 0}, {2, 0}}, {0, 0}, {2, 0}).empty());          // blocked cell
+    CHECK_FALSE(illegal(g, {{0, 0}, {2, 1}}, {0, 0}, {2, 1}).empty());                  // not a neighbour
     CHECK_FALSE(illegal(g, {{0, 0}, {1, 0}, {0, 0}, {0, 1}}, {0, 0}, {0, 1}).empty());  // a cell twice
-    CHECK_FALSE(illegal(g, {{0, 1}, {0, 0}}, {0, 0}, {0, 1}).empty());        // wrong ends
-    CHECK_FALSE(illegal(g, {{3, 0}, {4, 0}}, {3, 0}, {4, 0}).empty());        // outside
+    CHECK_FALSE(illegal(g, {{0, 1}, {0, 0}}, {0, 0}, {0, 1}).empty());                  // wrong ends
+    CHECK_FALSE(illegal(g, {{3, 0}, {4, 0}}, {3, 0}, {4, 0}).empty());                  // outside
     // steps east, south-east (45), south-west (90), north (135), north: turns 3
     const Measured m = measure({{0, 0}, {1, 0}, {2, 1}, {1, 2}, {1, 1}, {1, 0}});
     CHECK(m.cells == 6);
@@ -679,7 +714,8 @@ TEST_CASE("cli grid: astar and exact on every bundled map", "[cli][grid][path]")
 TEST_CASE("cli grid: pso and ga with the line encoding on every bundled map", "[cli][grid][path]") {
     for (const auto& b : bundled())
         for (const Heuristic& h : {heuristics()[0], heuristics()[1]})
-            for (const Objective& objective : {cells_objective(), length_objective(), weighted_objective(), hswoa_objective()}) {
+            for (const Objective& objective :
+                 {cells_objective(), length_objective(), weighted_objective(), hswoa_objective()}) {
                 INFO(b.name << " " << h.args << " " << objective.args);
                 check_heuristic(b, h, objective);
             }
@@ -688,7 +724,8 @@ TEST_CASE("cli grid: pso and ga with the line encoding on every bundled map", "[
 TEST_CASE("cli grid: ga with the free and chain encodings on every bundled map", "[cli][grid][path]") {
     for (const auto& b : bundled())
         for (const Heuristic& h : {heuristics()[2], heuristics()[3]})
-            for (const Objective& objective : {cells_objective(), length_objective(), weighted_objective(), hswoa_objective()}) {
+            for (const Objective& objective :
+                 {cells_objective(), length_objective(), weighted_objective(), hswoa_objective()}) {
                 INFO(b.name << " " << h.args << " " << objective.args);
                 check_heuristic(b, h, objective);
             }
@@ -696,7 +733,8 @@ TEST_CASE("cli grid: ga with the free and chain encodings on every bundled map",
 
 TEST_CASE("cli grid: nlopt LN_SBPLX with the line encoding on every bundled map", "[cli][grid][path]") {
     for (const auto& b : bundled())
-        for (const Objective& objective : {cells_objective(), length_objective(), weighted_objective(), hswoa_objective()}) {
+        for (const Objective& objective :
+             {cells_objective(), length_objective(), weighted_objective(), hswoa_objective()}) {
             INFO(b.name << " " << objective.args);
             check_heuristic(b, heuristics()[4], objective);
         }
@@ -736,12 +774,14 @@ TEST_CASE("cli grid: --seed, --pop, --iters and --evals are obeyed", "[cli][grid
         INFO(h.args);
         {
             const std::string args = "path " + b.endpoints() + " " + h.args + " --evals 333 --seed 5 --json";
-            const JsonValue j = check_path_json(success(args), b.grid, b.start, b.goal, cells_objective(), h.algo, false, 5);
+            const JsonValue j =
+                check_path_json(success(args), b.grid, b.start, b.goal, cells_objective(), h.algo, false, 5);
             CHECK(j.at("evaluations").number == 333);
         }
         {
             const std::string args = "path " + b.endpoints() + " " + h.args + " --iters 7 --pop 12 --json";
-            const JsonValue j = check_path_json(success(args), b.grid, b.start, b.goal, cells_objective(), h.algo, false);
+            const JsonValue j =
+                check_path_json(success(args), b.grid, b.start, b.goal, cells_objective(), h.algo, false);
             CHECK(j.at("iterations").number == 7);
             CHECK(j.at("history").items.size() == 8);
         }
@@ -762,8 +802,8 @@ TEST_CASE("cli grid: iqga has no oracle; without --oracle it is scored by its fo
         CHECK(j.at("objective_value").number < 0);
     }
     // astar ignores the objective but scores its path by it
-    const JsonValue j = check_path_json(success("path " + b.endpoints() + " --algo astar --objective iqga --json"), b.grid,
-                                        b.start, b.goal, iqga, "astar", false);
+    const JsonValue j = check_path_json(success("path " + b.endpoints() + " --algo astar --objective iqga --json"),
+                                        b.grid, b.start, b.goal, iqga, "astar", false);
     CHECK(std::abs(j.at("metrics").at("length").number - b.optimal_length) <= 1e-6);
 }
 
@@ -772,14 +812,15 @@ TEST_CASE("cli grid: start equal to goal is a one-cell path", "[cli][grid][path]
     const std::string where = "--map " + q(b.map) + " --start 3,3 --goal 3,3";
     REQUIRE(b.grid.free(3, 3));
     for (const std::string& algo : {std::string("astar"), std::string("exact")}) {
-        const JsonValue j = check_path_json(success("path " + where + " --algo " + algo + " --objective length --json --oracle"),
-                                            b.grid, {3, 3}, {3, 3}, length_objective(), algo, true);
+        const JsonValue j =
+            check_path_json(success("path " + where + " --algo " + algo + " --objective length --json --oracle"),
+                            b.grid, {3, 3}, {3, 3}, length_objective(), algo, true);
         CHECK(j.at("path").items.size() == 1);
         CHECK(j.at("objective_value").number == 0);
         CHECK(j.at("optimum").at("gap").number == 0);
     }
-    const JsonValue j = check_path_json(success("path " + where + " --algo ga --encoding chain --json --oracle"), b.grid,
-                                        {3, 3}, {3, 3}, cells_objective(), "ga", true);
+    const JsonValue j = check_path_json(success("path " + where + " --algo ga --encoding chain --json --oracle"),
+                                        b.grid, {3, 3}, {3, 3}, cells_objective(), "ga", true);
     CHECK(j.at("path").items.size() == 1);
 }
 
@@ -788,7 +829,8 @@ TEST_CASE("cli grid: corner cutting and obstacle inflation", "[cli][grid][path]"
     // (0,0) to (1,1) past the blocked corner (1,0): two steps, or one diagonal with --corner-cutting.
     const std::string corner = dir.write("corner.map", "type octile\nheight 2\nwidth 2\nmap\n.@\n..\n");
     const Grid corner_grid = read_grid(corner);
-    const std::string base = "path --map " + q(corner) + " --start 0,0 --goal 1,1 --algo astar --objective length --json";
+    const std::string base =
+        "path --map " + q(corner) + " --start 0,0 --goal 1,1 --algo astar --objective length --json";
     JsonValue j = check_path_json(success(base), corner_grid, {0, 0}, {1, 1}, length_objective(), "astar", false);
     CHECK(j.at("metrics").at("length").number == 2);
     j = check_path_json(success(base + " --corner-cutting"), corner_grid, {0, 0}, {1, 1}, length_objective(), "astar",
@@ -805,7 +847,8 @@ TEST_CASE("cli grid: corner cutting and obstacle inflation", "[cli][grid][path]"
     const Grid grid = read_grid(inflate_map);
     for (const std::string& algo : {std::string("--algo astar"), std::string("--algo exact --objective length"),
                                     std::string("--algo ga --encoding chain --objective length")}) {
-        const std::string args = "path --map " + q(inflate_map) + " --start 0,0 --goal 14,14 " + algo + " --inflate 1 --json";
+        const std::string args =
+            "path --map " + q(inflate_map) + " --start 0,0 --goal 14,14 " + algo + " --inflate 1 --json";
         INFO(args);
         const auto out = success(args);
         const auto path = path_of(parse_json(out).at("path"));
@@ -816,9 +859,11 @@ TEST_CASE("cli grid: corner cutting and obstacle inflation", "[cli][grid][path]"
     const auto plain = path_of(parse_json(success("path --map " + q(inflate_map) +
                                                   " --start 0,0 --goal 14,14 --algo astar --objective length --json"))
                                    .at("path"));
-    CHECK(std::any_of(plain.begin(), plain.end(), [](const XY& c) { return std::max(std::abs(c.x - 7), std::abs(c.y - 7)) == 2; }));
+    CHECK(std::any_of(plain.begin(), plain.end(),
+                      [](const XY& c) { return std::max(std::abs(c.x - 7), std::abs(c.y - 7)) == 2; }));
     // start or goal blocked by inflation: an input error
-    expect_input_error("path --map " + q(inflate_map) + " --start 5,5 --goal 14,14 --algo astar --inflate 1", {"--start"});
+    expect_input_error("path --map " + q(inflate_map) + " --start 5,5 --goal 14,14 --algo astar --inflate 1",
+                       {"--start"});
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -859,8 +904,7 @@ TEST_CASE("cli grid: scen agrees with Moving AI scenario files", "[cli][grid][sc
         check_scen_json(success("scen " + q(file.string()) + " --json"), scenario_lines(file), 0);
     }
     // the bundled one-line scenarios too
-    for (const auto& b : bundled())
-        check_scen_json(success("scen " + q(b.map + ".scen") + " --json"), 1, 0);
+    for (const auto& b : bundled()) check_scen_json(success("scen " + q(b.map + ".scen") + " --json"), 1, 0);
     // text output
     const auto r = run_pride("scen " + q((movingai_dir() / "empty-8-8-even-10.scen").string()));
     CHECK(r.status == 0);
@@ -951,7 +995,8 @@ TEST_CASE("cli grid: malformed maps are input errors naming file and line", "[cl
 TEST_CASE("cli grid: CRLF maps and 0/1 matrices are read like Moving AI maps", "[cli][grid][path]") {
     TempDir dir;
     const std::string lf = dir.write("lf.map", "type octile\nheight 3\nwidth 4\nmap\n....\n.@@.\n....\n");
-    const std::string crlf = dir.write("crlf.map", "type octile\r\nheight 3\r\nwidth 4\r\nmap\r\n....\r\n.@@.\r\n....\r\n");
+    const std::string crlf =
+        dir.write("crlf.map", "type octile\r\nheight 3\r\nwidth 4\r\nmap\r\n....\r\n.@@.\r\n....\r\n");
     const std::string matrix = dir.write("matrix.txt", "0 0 0 0\n0 1 1 0\n0 0 0 0\n");
     const std::string tail = " --start 0,1 --goal 3,1 --algo exact --objective hswoa --json --oracle";
     const std::string out = success("path --map " + q(lf) + tail);
@@ -1014,7 +1059,8 @@ TEST_CASE("cli grid: unknown or conflicting options are input errors naming the 
                            {"--encoding line"});
     // one line apart along one axis is enough when the other has room
     REQUIRE(b.grid.free(1, 5));
-    CHECK(run_pride("path --map " + q(b.map) + " --start 0,0 --goal 1,5 --algo pso --encoding line --json").status == 0);
+    CHECK(run_pride("path --map " + q(b.map) + " --start 0,0 --goal 1,5 --algo pso --encoding line --json").status ==
+          0);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1024,8 +1070,8 @@ TEST_CASE("cli grid: --svg and --png write pictures", "[cli][grid][draw]") {
     TempDir dir;
     const Bundled& b = bundled()[2];
     const std::string svg = dir.file("path.svg"), png = dir.file("path.png");
-    const std::string out = success("path " + b.endpoints() + " --algo ga --encoding chain --oracle --json --svg " + q(svg) +
-                                    " --png " + q(png));
+    const std::string out = success("path " + b.endpoints() + " --algo ga --encoding chain --oracle --json --svg " +
+                                    q(svg) + " --png " + q(png));
     check_path_json(out, b.grid, b.start, b.goal, cells_objective(), "ga", true);
     const std::string svg_text = slurp(svg), png_bytes = slurp(png);
     CHECK(svg_text.find("<svg") != std::string::npos);

@@ -167,9 +167,9 @@ TEST_CASE("framework: Rng uniform() is in 0 to 1 (1 excluded) with the right mom
     }
     const double mean = sum / n;
     const double var = sum2 / n - mean * mean;
-    CHECK(std::abs(mean - 0.5) < 0.002);            // sd of the mean is 2.9e-4
-    CHECK(std::abs(var - 1.0 / 12.0) < 0.002);      // sd about 7.5e-5
-    CHECK(std::abs(below_half - n / 2) < 5000);     // sd 500
+    CHECK(std::abs(mean - 0.5) < 0.002);         // sd of the mean is 2.9e-4
+    CHECK(std::abs(var - 1.0 / 12.0) < 0.002);   // sd about 7.5e-5
+    CHECK(std::abs(below_half - n / 2) < 5000);  // sd 500
     CHECK(lo < 1e-4);
     CHECK(hi > 1.0 - 1e-4);
 
@@ -211,7 +211,7 @@ TEST_CASE("framework: Rng below(n) is in range and roughly uniform", "[framework
         high_third += v >= 2 * (big / 3);
         multiple_of_3 += v % 3 == 0;
     }
-    CHECK(std::abs(low_third - 30000) < 1000);    // sd 141
+    CHECK(std::abs(low_third - 30000) < 1000);  // sd 141
     CHECK(std::abs(high_third - 30000) < 1000);
     CHECK(std::abs(multiple_of_3 - 30000) < 1000);
 }
@@ -232,10 +232,10 @@ TEST_CASE("framework: Rng normal() has mean 0 and variance 1", "[framework][rng]
     }
     const double mean = s1 / n;
     const double var = s2 / n - mean * mean;
-    CHECK(std::abs(mean) < 0.005);           // sd 0.001
-    CHECK(std::abs(var - 1.0) < 0.01);       // sd 0.0014
-    CHECK(std::abs(s3 / n) < 0.02);          // skewness, sd 0.0024
-    CHECK(std::abs(s4 / n - 3.0) < 0.05);    // kurtosis, sd 0.005
+    CHECK(std::abs(mean) < 0.005);         // sd 0.001
+    CHECK(std::abs(var - 1.0) < 0.01);     // sd 0.0014
+    CHECK(std::abs(s3 / n) < 0.02);        // skewness, sd 0.0024
+    CHECK(std::abs(s4 / n - 3.0) < 0.05);  // kurtosis, sd 0.005
     CHECK(std::abs(within_one / double(n) - 0.6826894921370859) < 0.003);
 }
 
@@ -343,8 +343,7 @@ TEST_CASE("framework: Termination validate", "[framework][termination]") {
     CHECK_NOTHROW(pride::max_iterations(0).validate("x"));
     CHECK_NOTHROW(pride::wall_time(std::chrono::seconds(1)).validate("x"));
     CHECK_NOTHROW((pride::target_value(0.0) | pride::max_iterations(10)).validate("x"));
-    CHECK_THAT(input_error_message([] { pride::max_evaluations(0).validate("--max-evals"); }),
-               Contains("--max-evals"));
+    CHECK_THAT(input_error_message([] { pride::max_evaluations(0).validate("--max-evals"); }), Contains("--max-evals"));
     CHECK_THAT(input_error_message([] { pride::max_evaluations(-5).validate("w"); }), Contains("evaluation limit"));
     CHECK_THAT(input_error_message([] { pride::max_iterations(-1).validate("w"); }), Contains("iteration limit"));
 }
@@ -373,8 +372,9 @@ TEST_CASE("framework: Termination horizon", "[framework][termination]") {
 TEST_CASE("framework: Clamp and Reflect always land inside the box", "[framework][bounds]") {
     pride::Rng rng(8);
     constexpr std::size_t n = 12;
-    const std::vector<double> specials{inf,   -inf, nan_, 1e300, -1e300, std::numeric_limits<double>::max(),
-                                       -std::numeric_limits<double>::max(), 0.0, -0.0, 1e-320};
+    const std::vector<double> specials{
+        inf, -inf, nan_,  1e300, -1e300, std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+        0.0, -0.0, 1e-320};
     for (int trial = 0; trial < 300; ++trial) {
         std::vector<double> lo(n), hi(n), x(n);
         for (std::size_t i = 0; i < n; ++i) {
@@ -382,11 +382,21 @@ TEST_CASE("framework: Clamp and Reflect always land inside the box", "[framework
             lo[i] = std::min(a, b);
             hi[i] = std::max(a, b);
             switch (rng.below(5)) {
-                case 0: x[i] = rng.uniform(-1e6, 1e6); break;
-                case 1: x[i] = specials[rng.below(specials.size())]; break;
-                case 2: x[i] = rng.bernoulli(0.5) ? lo[i] : hi[i]; break;
-                case 3: x[i] = rng.uniform(lo[i], hi[i]); break;
-                default: x[i] = rng.uniform(-1e15, 1e15); break;
+                case 0:
+                    x[i] = rng.uniform(-1e6, 1e6);
+                    break;
+                case 1:
+                    x[i] = specials[rng.below(specials.size())];
+                    break;
+                case 2:
+                    x[i] = rng.bernoulli(0.5) ? lo[i] : hi[i];
+                    break;
+                case 3:
+                    x[i] = rng.uniform(lo[i], hi[i]);
+                    break;
+                default:
+                    x[i] = rng.uniform(-1e15, 1e15);
+                    break;
             }
         }
         auto c = x, r = x;
@@ -427,8 +437,8 @@ TEST_CASE("framework: Clamp and Reflect on hand-worked examples", "[framework][b
     // Box [0, 10].
     CHECK(reflect1(12.0, 0.0, 10.0) == 8.0);
     CHECK(reflect1(-3.0, 0.0, 10.0) == 3.0);
-    CHECK(reflect1(25.0, 0.0, 10.0) == 5.0);   // 25 -> -5 (at 10) -> 5 (at 0)
-    CHECK(reflect1(31.0, 0.0, 10.0) == 9.0);   // 31 -> -11 -> 11 -> 9
+    CHECK(reflect1(25.0, 0.0, 10.0) == 5.0);  // 25 -> -5 (at 10) -> 5 (at 0)
+    CHECK(reflect1(31.0, 0.0, 10.0) == 9.0);  // 31 -> -11 -> 11 -> 9
     CHECK(reflect1(20.0, 0.0, 10.0) == 0.0);
     CHECK(reflect1(-10.0, 0.0, 10.0) == 10.0);
     CHECK(reflect1(-13.0, 0.0, 10.0) == 7.0);  // -13 -> 13 -> 7
@@ -440,8 +450,8 @@ TEST_CASE("framework: Clamp and Reflect on hand-worked examples", "[framework][b
     // An offset box [2, 5].
     CHECK(reflect1(6.0, 2.0, 5.0) == 4.0);
     CHECK(reflect1(1.0, 2.0, 5.0) == 3.0);
-    CHECK(reflect1(9.0, 2.0, 5.0) == 3.0);     // 9 -> 1 -> 3
-    CHECK(reflect1(-2.5, 2.0, 5.0) == 3.5);    // -2.5 -> 6.5 -> 3.5
+    CHECK(reflect1(9.0, 2.0, 5.0) == 3.0);   // 9 -> 1 -> 3
+    CHECK(reflect1(-2.5, 2.0, 5.0) == 3.5);  // -2.5 -> 6.5 -> 3.5
     // A negative box [-5, -1].
     CHECK(reflect1(0.0, -5.0, -1.0) == -2.0);
     CHECK(reflect1(-7.0, -5.0, -1.0) == -3.0);
@@ -574,8 +584,8 @@ TEMPLATE_TEST_CASE("framework: RunState evaluate_columns stops exactly at the bu
     TestType p;
     pride::RunState rs(pride::max_evaluations(5), 2);
     // Columns: 0.25, NaN, 0.05, -inf, 0.02, | past the budget: 0.0, 0.01, 0.5
-    const auto pts = points_matrix({{0.3, 0.4}, {0.9, 0.0}, {0.1, -0.2}, {-0.9, -0.5}, {0.1, 0.1},
-                                    {0.0, 0.0}, {0.1, 0.0}, {0.5, 0.5}});
+    const auto pts = points_matrix(
+        {{0.3, 0.4}, {0.9, 0.0}, {0.1, -0.2}, {-0.9, -0.5}, {0.1, 0.1}, {0.0, 0.0}, {0.1, 0.0}, {0.5, 0.5}});
     std::vector<double> values(8, -123.0);
     CHECK(rs.evaluate_columns(p, pts, values) == 5);
     CHECK(values[0] == 0.25);
@@ -631,8 +641,12 @@ TEST_CASE("framework: RunState end_iteration records history and calls the obser
     };
     std::vector<Seen> seen;
     auto observer = [&](const pride::IterationView& v) {
-        seen.push_back({v.iteration, v.evaluations, v.best_f, {v.best_x.begin(), v.best_x.end()},
-                        v.population.cols(), v.fitness.size()});
+        seen.push_back({v.iteration,
+                        v.evaluations,
+                        v.best_f,
+                        {v.best_x.begin(), v.best_x.end()},
+                        v.population.cols(),
+                        v.fitness.size()});
     };
 
     // Iteration 0: the initial population.
@@ -870,7 +884,7 @@ TEST_CASE("framework: Registry add, find and order", "[framework][registry]") {
     CHECK(a == &r.items()[1]);
     REQUIRE(r.find("mu") != nullptr);
     CHECK(r.find("mu")->entry == 12);
-    CHECK(r.find("Mu") == nullptr);   // case-sensitive
+    CHECK(r.find("Mu") == nullptr);    // case-sensitive
     CHECK(r.find("alph") == nullptr);  // whole names only
     CHECK(r.find("") == nullptr);
 }

@@ -45,7 +45,9 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // ---------------------------------------------------------------------------------------------
 // Random instances
 
-int below(Rng& rng, int n) { return static_cast<int>(rng.below(static_cast<std::uint64_t>(n))); }
+int below(Rng& rng, int n) {
+    return static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));
+}
 
 GridMap random_map(Rng& rng, int w, int h, double density) {
     std::vector<std::uint8_t> blocked(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
@@ -94,8 +96,8 @@ std::vector<Instance> random_instances(std::uint64_t seed, int maps, int pairs) 
 
 std::string describe(const Instance& in) {
     return std::to_string(in.map->width()) + "x" + std::to_string(in.map->height()) + " start (" +
-           std::to_string(in.start.x) + "," + std::to_string(in.start.y) + ") goal (" + std::to_string(in.goal.x) + "," +
-           std::to_string(in.goal.y) + ")" + (in.corner_cutting ? " corner cutting" : "");
+           std::to_string(in.start.x) + "," + std::to_string(in.start.y) + ") goal (" + std::to_string(in.goal.x) +
+           "," + std::to_string(in.goal.y) + ")" + (in.corner_cutting ? " corner cutting" : "");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -184,7 +186,9 @@ static_assert(pride::ChainProblem<ChainSpace<CellsObjective>>);
 using ChainGaPlus = pride::Ga<pride::TournamentSelection, pride::ChainCrossover, pride::ChainMutation, pride::Clamp,
                               pride::UniformInit, pride::PlusReplacement>;
 
-fs::path bundled_maps() { return fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps"; }
+fs::path bundled_maps() {
+    return fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps";
+}
 
 /// A bundled map (examples/maps/NAME.map) with its scenario's start and goal, for `Objective`.
 template <class Objective>
@@ -233,7 +237,8 @@ TEST_CASE("chain space: random chains are legal simple paths on random maps", "[
     Rng rng(5);
     Path c;
     for (const auto& in : instances) {
-        ChainSpace<LengthObjective> space(GridProblem<LengthObjective>(in.map, in.start, in.goal, {}, in.corner_cutting));
+        ChainSpace<LengthObjective> space(
+            GridProblem<LengthObjective>(in.map, in.start, in.goal, {}, in.corner_cutting));
         for (int k = 0; k < 5; ++k) {
             space.random_chain(rng, c);
             INFO(describe(in));
@@ -314,7 +319,8 @@ TEST_CASE("chain space: operators applied in long random sequences never break a
     const auto instances = random_instances(404, 60, 2);
     Rng rng(8);
     for (const auto& in : instances) {
-        ChainSpace<WeightedObjective> space(GridProblem<WeightedObjective>(in.map, in.start, in.goal, {}, in.corner_cutting));
+        ChainSpace<WeightedObjective> space(
+            GridProblem<WeightedObjective>(in.map, in.start, in.goal, {}, in.corner_cutting));
         std::vector<Path> pop(6);
         for (auto& c : pop) space.random_chain(rng, c);
         for (int step = 0; step < 60; ++step) {
@@ -484,7 +490,8 @@ TEST_CASE("chain GA: an observer sees iterations 0..T and a population of legal 
         const std::vector<Path>& pop = view.population;
         if (pop.size() != 9 || view.fitness.size() != 9) ++bad;
         for (std::size_t i = 0; i < pop.size(); ++i) {
-            if (path_violation(problem.map(), pop[i], problem.start(), problem.goal()) != "" || !is_simple(pop[i])) ++bad;
+            if (path_violation(problem.map(), pop[i], problem.start(), problem.goal()) != "" || !is_simple(pop[i]))
+                ++bad;
             if (view.fitness[i] != problem.evaluate(pop[i])) ++bad;
             if (view.fitness[i] < view.best_f) ++bad;
         }

@@ -3,8 +3,8 @@
 // FILE:LINE:COL, the Moving AI files of shared/data/movingai (sizes, free endpoints and, on a sample,
 // the recorded optimal lengths), the bundled maps of examples/maps, random-input robustness, the
 // papers' cell numbering (file 002 eq. 2) and obstacle inflation (file 003 section 3.1).
-#include <catch2/catch.hpp>
 #include <unistd.h>
+#include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -120,8 +120,8 @@ TEST_CASE("grid io: Moving AI map, characters and the (x, y) convention", "[grid
     CHECK(m.name() == "m.map");
     // x is the column from the left, y the row from the first map line downwards.
     CHECK(m.free({0, 0}));
-    CHECK(m.free({1, 0}));  // G
-    CHECK(m.free({2, 0}));  // S
+    CHECK(m.free({1, 0}));        // G
+    CHECK(m.free({2, 0}));        // S
     CHECK_FALSE(m.free({3, 0}));  // @
     CHECK_FALSE(m.free({0, 1}));  // O
     CHECK_FALSE(m.free({1, 1}));  // T
@@ -354,9 +354,14 @@ TEST_CASE("grid io: matrix errors", "[grid][io][errors]") {
 
 TEST_CASE("grid io: every message is one line", "[grid][io][errors]") {
     const std::vector<std::string> bad = {
-        "", kHeader + "...\n.\n.\n", "type octile\nheight 2\r\rx\n", "\x01\x02\n\x03",
-        "version 1\n", "type octile\nheight " + std::string(300, '9') + "\n",
-        "type " + std::string(500, 'q') + "\n", kHeader + "...\n.\xE2\x80\xAE.\n",
+        "",
+        kHeader + "...\n.\n.\n",
+        "type octile\nheight 2\r\rx\n",
+        "\x01\x02\n\x03",
+        "version 1\n",
+        "type octile\nheight " + std::string(300, '9') + "\n",
+        "type " + std::string(500, 'q') + "\n",
+        kHeader + "...\n.\xE2\x80\xAE.\n",
     };
     for (const auto& text : bad) {
         const auto e = map_error(text);
@@ -526,10 +531,10 @@ TEST_CASE("grid io: the bundled maps of examples/maps", "[grid][io][bundled]") {
         long paper_start, paper_goal;  // file 002 eq. 2 numbers
     };
     const Expected expected[] = {
-        {"file000-10x10.map", 10, {0, 0}, {9, 9}, 90, 9},              // top-left to bottom-right
+        {"file000-10x10.map", 10, {0, 0}, {9, 9}, 90, 9},  // top-left to bottom-right
         {"file000-13x13.map", 13, {0, 0}, {12, 12}, 156, 12},
-        {"file002-20x20.map", 20, {0, 19}, {19, 0}, 0, 399},           // paper (1,1) to (20,20)
-        {"file002-40x40.map", 40, {1, 38}, {38, 1}, 41, 1558},         // paper (2,2) to (39,39)
+        {"file002-20x20.map", 20, {0, 19}, {19, 0}, 0, 399},    // paper (1,1) to (20,20)
+        {"file002-40x40.map", 40, {1, 38}, {38, 1}, 41, 1558},  // paper (2,2) to (39,39)
         {"file003-50x50.map", 50, {0, 49}, {49, 0}, 0, 2499},
     };
     for (const auto& x : expected) {
@@ -611,10 +616,18 @@ TEST_CASE("grid io: random input never crashes or hangs", "[grid][io][fuzz]") {
             const std::size_t at = std::uniform_int_distribution<std::size_t>(0, text.size() - 1)(rng);
             const auto byte = static_cast<char>(std::uniform_int_distribution<int>(0, 255)(rng));
             switch (std::uniform_int_distribution<int>(0, 3)(rng)) {
-                case 0: text[at] = byte; break;
-                case 1: text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), byte); break;
-                case 2: text.erase(at, 1); break;
-                default: text[at] = alphabet[static_cast<unsigned char>(byte) % alphabet.size()]; break;
+                case 0:
+                    text[at] = byte;
+                    break;
+                case 1:
+                    text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), byte);
+                    break;
+                case 2:
+                    text.erase(at, 1);
+                    break;
+                default:
+                    text[at] = alphabet[static_cast<unsigned char>(byte) % alphabet.size()];
+                    break;
             }
         }
         attempt(text);

@@ -52,7 +52,9 @@ GridMap random_map(pride::Rng& rng, int w, int h, double density) {
     return GridMap(w, h, std::move(blocked), "random");
 }
 
-int below(pride::Rng& rng, int n) { return static_cast<int>(rng.below(static_cast<std::uint64_t>(n))); }
+int below(pride::Rng& rng, int n) {
+    return static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));
+}
 
 /// A uniformly drawn free cell (the map must have one).
 Cell random_free_cell(pride::Rng& rng, const GridMap& map) {
@@ -150,7 +152,12 @@ struct BruteForce {
 /// The best value of `objective` over simple paths from s to g, or -1 when there is none.
 template <class Objective>
 double brute_force(const GridMap& map, Cell s, Cell g, const Objective& objective, bool corner_cutting) {
-    BruteForce<Objective> bf{map, g, objective, corner_cutting, std::numeric_limits<double>::infinity(), {s},
+    BruteForce<Objective> bf{map,
+                             g,
+                             objective,
+                             corner_cutting,
+                             std::numeric_limits<double>::infinity(),
+                             {s},
                              std::vector<std::uint8_t>(map.size(), 0)};
     bf.on_chain[map.index(s)] = 1;
     bf.extend();
@@ -202,7 +209,9 @@ int bfs_cells(const GridMap& map, Cell s, Cell g, bool corner_cutting = false) {
 }
 
 template <class Oracle_, class Objective>
-concept OracleAccepts = requires(Oracle_& o, const GridMap& m, Cell c, const Objective& obj) { o.solve(m, c, c, obj); };
+concept OracleAccepts = requires(Oracle_& o, const GridMap& m, Cell c, const Objective& obj) {
+    o.solve(m, c, c, obj);
+};
 
 }  // namespace
 
@@ -247,7 +256,8 @@ TEST_CASE("A* returns the optimal lengths recorded in the Moving AI scenario fil
             CHECK(path_violation(map, path, e.start, e.goal).empty());
             CHECK_THAT(metrics(path).length, WithinAbs(length, 1e-9));
             // The oracle's `length` is A*'s (grid.md).
-            if (small || i % 10 == 0) CHECK_THAT(oracle.solve(map, e.start, e.goal, LengthObjective{}), WithinAbs(e.optimal, 1e-6));
+            if (small || i % 10 == 0)
+                CHECK_THAT(oracle.solve(map, e.start, e.goal, LengthObjective{}), WithinAbs(e.optimal, 1e-6));
             ++checked;
         }
     }
@@ -521,10 +531,14 @@ TEST_CASE("metrics of a 135-degree turn", "[grid][metrics]") {
 TEST_CASE("the oracle's step and turn costs add up to each objective on hand-made paths", "[grid][metrics][oracle]") {
     // start_cost + step costs + turn costs of a chain = the objective of its metrics.
     const std::vector<Path> paths{
-        {{0, 0}, {1, 0}, {2, 0}, {3, 0}},         {{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}},
-        {{0, 0}, {1, 0}, {2, 0}, {1, 0}},         {{0, 0}, {1, 0}, {2, 1}},
-        {{0, 0}, {1, 0}, {1, 1}},                 {{0, 0}, {1, 0}, {0, 1}},
-        {{2, 2}, {3, 3}, {3, 4}, {2, 4}, {1, 3}}, {{4, 4}},
+        {{0, 0}, {1, 0}, {2, 0}, {3, 0}},
+        {{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}},
+        {{0, 0}, {1, 0}, {2, 0}, {1, 0}},
+        {{0, 0}, {1, 0}, {2, 1}},
+        {{0, 0}, {1, 0}, {1, 1}},
+        {{0, 0}, {1, 0}, {0, 1}},
+        {{2, 2}, {3, 3}, {3, 4}, {2, 4}, {1, 3}},
+        {{4, 4}},
     };
     const auto additive = [](const Path& p, const auto& o) {
         double v = o.start_cost();
@@ -543,7 +557,8 @@ TEST_CASE("the oracle's step and turn costs add up to each objective on hand-mad
         CHECK_THAT(additive(p, CellsObjective{}), WithinAbs(CellsObjective{}(m), 1e-12));
         CHECK_THAT(additive(p, LengthObjective{}), WithinAbs(LengthObjective{}(m), 1e-12));
         CHECK_THAT(additive(p, WeightedObjective{}), WithinAbs(WeightedObjective{}(m), 1e-12));
-        CHECK_THAT(additive(p, WeightedObjective{0.5, 2.0, 0.3}), WithinAbs(WeightedObjective{0.5, 2.0, 0.3}(m), 1e-12));
+        CHECK_THAT(additive(p, WeightedObjective{0.5, 2.0, 0.3}),
+                   WithinAbs(WeightedObjective{0.5, 2.0, 0.3}(m), 1e-12));
         CHECK_THAT(additive(p, HswoaObjective{2.5}), WithinAbs(HswoaObjective{2.5}(m), 1e-12));
     }
 }
@@ -675,8 +690,7 @@ TEST_CASE("line_is_free agrees with the legality of the line append_line draws",
 // ---------------------------------------------------------------------------------------------
 // The random walker
 
-TEST_CASE("RandomWalker returns a legal simple path, or false exactly when the goal is unreachable",
-          "[grid][walk]") {
+TEST_CASE("RandomWalker returns a legal simple path, or false exactly when the goal is unreachable", "[grid][walk]") {
     pride::Rng rng(4242);
     pride::Rng walk_rng(17);
     RandomWalker walker;
@@ -752,11 +766,20 @@ std::vector<std::vector<double>> random_genotypes(pride::Rng& rng, std::span<con
             g[i] = rng.uniform(lower[i], upper[i]);
             if (j % 4 == 3) {  // every fourth genotype: some wild genes
                 switch (below(rng, 6)) {
-                    case 0: g[i] = nan; break;
-                    case 1: g[i] = lower[i] - 1 - 10 * rng.uniform(); break;
-                    case 2: g[i] = upper[i] + 1 + 10 * rng.uniform(); break;
-                    case 3: g[i] = rng.uniform() < 0.5 ? inf : -inf; break;
-                    default: break;
+                    case 0:
+                        g[i] = nan;
+                        break;
+                    case 1:
+                        g[i] = lower[i] - 1 - 10 * rng.uniform();
+                        break;
+                    case 2:
+                        g[i] = upper[i] + 1 + 10 * rng.uniform();
+                        break;
+                    case 3:
+                        g[i] = rng.uniform() < 0.5 ? inf : -inf;
+                        break;
+                    default:
+                        break;
                 }
             }
         }
@@ -767,7 +790,8 @@ std::vector<std::vector<double>> random_genotypes(pride::Rng& rng, std::span<con
 
 /// Repair: a legal path from start to goal, no cell twice, no violation.
 template <class Objective, class Encoding>
-void check_repair(const GridProblem<Objective>& problem, Encoding& encoding, const std::vector<std::vector<double>>& genotypes) {
+void check_repair(const GridProblem<Objective>& problem, Encoding& encoding,
+                  const std::vector<std::vector<double>>& genotypes) {
     for (const auto& g : genotypes) {
         const DecodedPath& d = encoding.decode(problem, g);
         INFO("start (" << problem.start().x << "," << problem.start().y << ") goal (" << problem.goal().x << ","
@@ -780,8 +804,8 @@ void check_repair(const GridProblem<Objective>& problem, Encoding& encoding, con
 
 /// Penalty: a chain from start to goal, scored >= M exactly when it is illegal, else its objective.
 template <class Objective, class Encoding>
-void check_penalty(const GridProblem<Objective>& problem, Encoding& encoding, const std::vector<std::vector<double>>& genotypes,
-                   int& illegal) {
+void check_penalty(const GridProblem<Objective>& problem, Encoding& encoding,
+                   const std::vector<std::vector<double>>& genotypes, int& illegal) {
     for (const auto& g : genotypes) {
         const DecodedPath& d = encoding.decode(problem, g);
         const double value = problem.evaluate(d);
@@ -868,8 +892,8 @@ TEST_CASE("Encoded grid problems are box problems whose starting points fill the
         const auto lower = encoded.lower(), upper = encoded.upper();
         REQUIRE(lower.size() == dim);
         REQUIRE(upper.size() == dim);
-        pride::Matrix points = pride::Matrix::Constant(static_cast<Eigen::Index>(dim), 12,
-                                                       std::numeric_limits<double>::quiet_NaN());
+        pride::Matrix points =
+            pride::Matrix::Constant(static_cast<Eigen::Index>(dim), 12, std::numeric_limits<double>::quiet_NaN());
         encoded.starting_points(rng, points);
         for (Eigen::Index j = 0; j < points.cols(); ++j) {
             for (std::size_t i = 0; i < dim; ++i) {
@@ -895,8 +919,7 @@ TEST_CASE("Encoded grid problems are box problems whose starting points fill the
 // ---------------------------------------------------------------------------------------------
 // Input errors
 
-TEST_CASE("GridProblem rejects start and goal outside, blocked or unreachable, naming the option",
-          "[grid][errors]") {
+TEST_CASE("GridProblem rejects start and goal outside, blocked or unreachable, naming the option", "[grid][errors]") {
     auto map = std::make_shared<const GridMap>(map_of({
         "..@..",
         "..@..",

@@ -159,10 +159,14 @@ TEST_CASE("problems: computed reference table (reference_values.md section 3)", 
         double sphere, rastrigin, rosenbrock, ackley, griewank, schwefel;
     };
     const std::vector<Row> rows{
-        {{-23.45, 12.34, 111.12}, 13049.8325, 13087.411646838527, 29067448.879860986, 21.941495638130885,
-         4.241511427781268, 1338.0260195323838},
-        {{0.1, 0.2, 0.3, 0.4, 0.5}, 0.55, 60.55, 33.84, 3.1831579464839312, 0.07282383074072141,
-         2094.0793544288076},
+        {{-23.45, 12.34, 111.12},
+         13049.8325,
+         13087.411646838527,
+         29067448.879860986,
+         21.941495638130885,
+         4.241511427781268,
+         1338.0260195323838},
+        {{0.1, 0.2, 0.3, 0.4, 0.5}, 0.55, 60.55, 33.84, 3.1831579464839312, 0.07282383074072141, 2094.0793544288076},
         {{1.0, 1.0, 1.0, 1.0, 1.0}, 5.0, 5.0, 0.0, 3.6253849384403627, 0.728906414277732, 2090.7070814381295},
     };
     for (const auto& r : rows) {
@@ -191,8 +195,8 @@ TEST_CASE("problems: computed reference table (reference_values.md section 3)", 
 // ---------------------------------------------------------------------------------------------
 // Known optima.
 
-TEMPLATE_TEST_CASE("problems: value at the known optimum", "[problems][optimum]", Sphere, Rastrigin, Rosenbrock,
-                   Ackley, Griewank, Schwefel) {
+TEMPLATE_TEST_CASE("problems: value at the known optimum", "[problems][optimum]", Sphere, Rastrigin, Rosenbrock, Ackley,
+                   Griewank, Schwefel) {
     for (std::size_t dim : {2, 3, 5, 10, 30, 100}) {
         TestType f(dim);
         INFO(f.name() << " in dimension " << dim);
@@ -220,8 +224,8 @@ TEMPLATE_TEST_CASE("problems: value at the known optimum", "[problems][optimum]"
     }
 }
 
-TEMPLATE_TEST_CASE("problems: random points in the box are no better than the optimum", "[problems][optimum]",
-                   Sphere, Rastrigin, Rosenbrock, Ackley, Griewank, Schwefel) {
+TEMPLATE_TEST_CASE("problems: random points in the box are no better than the optimum", "[problems][optimum]", Sphere,
+                   Rastrigin, Rosenbrock, Ackley, Griewank, Schwefel) {
     pride::Rng rng(2024, 7);
     for (std::size_t dim : {2, 5, 20}) {
         TestType f(dim);
@@ -345,10 +349,9 @@ TEST_CASE("problems: boxes match the reference table", "[problems][bounds]") {
 // The catalog.
 
 TEST_CASE("problems: catalog names, construction and dimension", "[problems][catalog]") {
-    const std::set<std::string> expected{"sphere",          "shifted-sphere",   "rastrigin",
-                                         "shifted-rastrigin", "rosenbrock",     "shifted-rosenbrock",
-                                         "ackley",          "shifted-ackley",   "griewank",
-                                         "shifted-griewank", "schwefel"};
+    const std::set<std::string> expected{"sphere",     "shifted-sphere",     "rastrigin", "shifted-rastrigin",
+                                         "rosenbrock", "shifted-rosenbrock", "ackley",    "shifted-ackley",
+                                         "griewank",   "shifted-griewank",   "schwefel"};
     std::set<std::string> names;
     for (const auto& item : catalog().items()) {
         CHECK(names.insert(item.name).second);  // no duplicates

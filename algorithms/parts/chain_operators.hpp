@@ -14,7 +14,8 @@ namespace pride {
 struct ChainCrossover {
     double probability = 0.9;
     void validate(const std::string& where) const {
-        require(probability >= 0.0 && probability <= 1.0, where, "pc must be in [0, 1], got " + std::to_string(probability));
+        require(probability >= 0.0 && probability <= 1.0, where,
+                "pc must be in [0, 1], got " + std::to_string(probability));
     }
     template <ChainProblem P>
     void operator()(P& problem, typename P::chain_type& a, typename P::chain_type& b, Rng& rng) const {
@@ -28,7 +29,8 @@ struct ChainCrossover {
 struct ChainMutation {
     double probability = 0.1;
     void validate(const std::string& where) const {
-        require(probability >= 0.0 && probability <= 1.0, where, "pm must be in [0, 1], got " + std::to_string(probability));
+        require(probability >= 0.0 && probability <= 1.0, where,
+                "pm must be in [0, 1], got " + std::to_string(probability));
     }
     template <ChainProblem P>
     void operator()(P& problem, typename P::chain_type& c, Rng& rng) const {

@@ -23,7 +23,7 @@ namespace pride {
 ///   c1 = ((y1 + y2) - betaq (y2 - y1)) / 2, and c2 likewise with beta = 1 + 2 (high - y2)/(y2 - y1),
 /// the children's coordinates swapped with probability 1/2. Spec: eta = 15, probability 0.9.
 class SbxCrossover {
-public:
+  public:
     double eta = 15.0;
     double probability = 0.9;
 
@@ -42,7 +42,7 @@ public:
 };
 
 class SbxCrossover::Prepared {
-public:
+  public:
     Prepared(double eta, double probability) : probability_(probability), power_(eta + 1.0), root_(1.0 / (eta + 1.0)) {}
 
     void operator()(std::span<double> a, std::span<double> b, std::span<const double> lo, std::span<const double> hi,
@@ -87,7 +87,7 @@ public:
         }
     }
 
-private:
+  private:
     /// What betaq is the (eta+1)-th root of, for spread factor beta, with one division instead of
     /// three: with B = beta^(eta+1), alpha = 2 - 1/B and t = u (2B - 1) = u alpha B,
     ///   u <= 1/alpha  <=>  t <= B,   u alpha = t / B,   1 / (2 - u alpha) = B / (2B - t).
@@ -104,7 +104,9 @@ private:
     FixedPower root_;
 };
 
-inline SbxCrossover::Prepared SbxCrossover::prepare(std::size_t) const { return Prepared(eta, probability); }
+inline SbxCrossover::Prepared SbxCrossover::prepare(std::size_t) const {
+    return Prepared(eta, probability);
+}
 
 inline void SbxCrossover::operator()(std::span<double> a, std::span<double> b, std::span<const double> lo,
                                      std::span<const double> hi, Rng& rng) const {

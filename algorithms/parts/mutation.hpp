@@ -21,7 +21,7 @@ namespace pride {
 /// Whether a coordinate mutates is decided by 32 bits of a generator step (two coordinates per
 /// step): it mutates when those bits, read as an integer, are below pm 2^32.
 class PolynomialMutation {
-public:
+  public:
     double eta = 20.0;
     double probability = -1.0;
 
@@ -33,7 +33,7 @@ public:
 
     /// The operator with its constants (the threshold for pm, the powers) worked out once per run.
     class Prepared {
-    public:
+      public:
         Prepared(double eta, double pm)
             : threshold_(static_cast<std::uint64_t>(std::ldexp(pm, 32))), power_(eta + 1.0), root_(1.0 / (eta + 1.0)) {}
 
@@ -59,7 +59,7 @@ public:
             }
         }
 
-    private:
+      private:
         std::uint64_t threshold_;  // pm 2^32; 2^32 when pm = 1
         FixedPower power_;
         FixedPower root_;

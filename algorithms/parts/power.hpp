@@ -11,7 +11,7 @@
 namespace pride {
 
 class FixedPower {
-public:
+  public:
     explicit FixedPower(double exponent) : e_(exponent) {
         if (exponent == std::floor(exponent) && std::abs(exponent) <= 64.0) {
             kind_ = Kind::integer;
@@ -57,7 +57,7 @@ public:
         }
     }
 
-private:
+  private:
     enum class Kind { integer, roots, general };
     double e_;
     Kind kind_ = Kind::general;

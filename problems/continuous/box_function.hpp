@@ -14,15 +14,15 @@ namespace pride::continuous {
 struct FunctionInfo {
     std::string_view name;
     std::string_view summary;
-    double lower;            // box, every coordinate
+    double lower;  // box, every coordinate
     double upper;
-    std::size_t min_dim;     // smallest dimension the formula is defined for
+    std::size_t min_dim;        // smallest dimension the formula is defined for
     double optimum_coordinate;  // x* = (c, ..., c)
     double optimum_value;       // f(x*)
 };
 
 class BoxFunction {
-public:
+  public:
     BoxFunction(std::size_t dim, const FunctionInfo& info)
         : info_(&info), lower_(dim, info.lower), upper_(dim, info.upper) {
         require(dim >= info.min_dim, std::string(info.name),
@@ -36,7 +36,7 @@ public:
     std::vector<double> optimum_point() const { return std::vector<double>(dimension(), info_->optimum_coordinate); }
     double optimum_value() const noexcept { return info_->optimum_value; }
 
-private:
+  private:
     const FunctionInfo* info_;  // points at a function's static constexpr table, never owned
     std::vector<double> lower_;
     std::vector<double> upper_;

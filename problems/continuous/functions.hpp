@@ -23,8 +23,8 @@ struct Sphere : BoxFunction {
 
 /// f = 10 n + sum (x_i^2 - 10 cos(2 pi x_i)).
 struct Rastrigin : BoxFunction {
-    static constexpr FunctionInfo info{"rastrigin", "10n + sum(x^2 - 10cos(2 pi x)); highly multimodal", -5.12,
-                                       5.12, 1, 0.0, 0.0};
+    static constexpr FunctionInfo info{
+        "rastrigin", "10n + sum(x^2 - 10cos(2 pi x)); highly multimodal", -5.12, 5.12, 1, 0.0, 0.0};
     explicit Rastrigin(std::size_t dim) : BoxFunction(dim, info) {}
     double evaluate(std::span<const double> x) const noexcept {
         constexpr double omega = 2.0 * std::numbers::pi;
@@ -36,8 +36,8 @@ struct Rastrigin : BoxFunction {
 
 /// f = sum_{i<n} 100 (x_i^2 - x_{i+1})^2 + (x_i - 1)^2.
 struct Rosenbrock : BoxFunction {
-    static constexpr FunctionInfo info{"rosenbrock", "curved narrow valley; minimum at (1,...,1)", -5.0, 10.0, 2,
-                                       1.0, 0.0};
+    static constexpr FunctionInfo info{"rosenbrock", "curved narrow valley; minimum at (1,...,1)", -5.0, 10.0, 2, 1.0,
+                                       0.0};
     explicit Rosenbrock(std::size_t dim) : BoxFunction(dim, info) {}
     double evaluate(std::span<const double> x) const noexcept {
         double f = 0.0;
@@ -52,8 +52,8 @@ struct Rosenbrock : BoxFunction {
 
 /// f = -20 exp(-0.2 sqrt(sum x_i^2 / n)) - exp(sum cos(2 pi x_i) / n) + 20 + e.
 struct Ackley : BoxFunction {
-    static constexpr FunctionInfo info{"ackley", "nearly flat outer region, deep central hole", -15.0, 30.0, 1,
-                                       0.0, 0.0};
+    static constexpr FunctionInfo info{"ackley", "nearly flat outer region, deep central hole", -15.0, 30.0, 1, 0.0,
+                                       0.0};
     explicit Ackley(std::size_t dim) : BoxFunction(dim, info) {}
     double evaluate(std::span<const double> x) const noexcept {
         constexpr double omega = 2.0 * std::numbers::pi;
@@ -69,8 +69,8 @@ struct Ackley : BoxFunction {
 
 /// f = sum x_i^2 / 4000 - prod cos(x_i / sqrt(i)) + 1, i = 1..n.
 struct Griewank : BoxFunction {
-    static constexpr FunctionInfo info{"griewank", "sum x^2/4000 - prod cos(x_i/sqrt(i)) + 1", -600.0, 600.0, 1,
-                                       0.0, 0.0};
+    static constexpr FunctionInfo info{"griewank", "sum x^2/4000 - prod cos(x_i/sqrt(i)) + 1", -600.0, 600.0, 1, 0.0,
+                                       0.0};
     explicit Griewank(std::size_t dim) : BoxFunction(dim, info) {}
     double evaluate(std::span<const double> x) const noexcept {
         double sum = 0.0, prod = 1.0;
@@ -84,8 +84,8 @@ struct Griewank : BoxFunction {
 struct Schwefel : BoxFunction {
     // The optimum coordinate is the root of the derivative to double precision; f there is about
     // 6e-14 per coordinate rather than 0, because 418.9828872724338 is itself rounded.
-    static constexpr FunctionInfo info{"schwefel", "deceptive: the second-best region is far from the best", -500.0,
-                                       500.0, 1, 420.968746359982, 0.0};
+    static constexpr FunctionInfo info{
+        "schwefel", "deceptive: the second-best region is far from the best", -500.0, 500.0, 1, 420.968746359982, 0.0};
     explicit Schwefel(std::size_t dim) : BoxFunction(dim, info) {}
     double evaluate(std::span<const double> x) const noexcept {
         double s = 0.0;

@@ -31,7 +31,7 @@ inline std::vector<double> shift_optimum(std::size_t dim, double lower, double u
 /// not leak through unshifted.
 template <class F>
 class Shifted {
-public:
+  public:
     static inline const std::string shifted_name = "shifted-" + std::string(F::info.name);
 
     explicit Shifted(std::size_t dim)
@@ -50,7 +50,7 @@ public:
         return base_.evaluate(std::span<const double>(moved_.data(), x.size()));
     }
 
-private:
+  private:
     F base_;
     std::vector<double> optimum_;
     std::vector<double> moved_;  // scratch: no allocation per evaluation

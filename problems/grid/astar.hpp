@@ -28,7 +28,7 @@ struct Window {
 };
 
 class AStar {
-public:
+  public:
     /// The optimal length from s to g, or -1 when g cannot be reached (inside `window` when given).
     /// With `out`, the path itself (s first, g last) replaces its contents.
     double search(const GridMap& map, Cell s, Cell g, Path* out = nullptr, const Window* window = nullptr,
@@ -89,7 +89,7 @@ public:
     /// Nodes expanded (taken off the open list) since construction.
     std::int64_t expansions() const noexcept { return expansions_; }
 
-private:
+  private:
     /// The priority as one integer: f in units of 2^-20 above kTieBits bits that put the larger g
     /// first among equal f (deeper nodes first expand fewer nodes on open ground). Distinct octile
     /// lengths a + b sqrt(2) on maps below a few thousand cells a side differ by far more than
@@ -109,7 +109,7 @@ private:
     /// with a consistent heuristic pops here (equal-f nodes bypass it through level_), pushes are
     /// O(1) and each node moves down at most 64 buckets.
     class RadixHeap {
-    public:
+      public:
         bool empty() const noexcept { return size_ == 0; }
         void clear() noexcept {
             buckets_[0].clear();
@@ -140,7 +140,7 @@ private:
             return n;
         }
 
-    private:
+      private:
         std::size_t bucket(std::uint64_t key) const noexcept {
             return key == last_ ? 0 : 64 - static_cast<std::size_t>(std::countl_zero(key ^ last_));
         }

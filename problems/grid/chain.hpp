@@ -23,7 +23,7 @@ namespace pride::grid {
 
 template <class Objective>
 class ChainSpace {
-public:
+  public:
     using chain_type = Path;
 
     explicit ChainSpace(GridProblem<Objective> problem) : problem_(std::move(problem)) {}
@@ -73,7 +73,7 @@ public:
         cut_loops(c, problem_.map(), seen_);
     }
 
-private:
+  private:
     GridProblem<Objective> problem_;
     RandomWalker walker_;  // scratch below, reused: no allocation once the run has warmed up
     std::vector<std::int32_t> position_, seen_;

@@ -31,7 +31,7 @@ struct PenaltyConnector {
 /// only on its two ends, so each is searched once per run and then remembered: a swarm that
 /// converges asks for the same joins again and again.
 class RepairConnector {
-public:
+  public:
     static constexpr const char* name = "repair";
     int initial_margin = 2;
 
@@ -54,7 +54,7 @@ public:
         detours_.insert(detours_.end(), path.begin() + static_cast<std::ptrdiff_t>(first), path.end());
     }
 
-private:
+  private:
     void search(const GridMap& map, Cell a, Cell b, Path& path, int& violations, bool corner_cutting) {
         for (int margin = initial_margin;; margin *= 2) {
             const Window w{std::max(0, std::min(a.x, b.x) - margin), std::max(0, std::min(a.y, b.y) - margin),

@@ -36,7 +36,7 @@ inline int to_coordinate(double v, int extent) {
 /// file 000.
 template <class Connector = RepairConnector>
 class LineEncoding {
-public:
+  public:
     template <class Objective>
     explicit LineEncoding(const GridProblem<Objective>& p) {
         const Cell s = p.start(), g = p.goal();
@@ -76,11 +76,17 @@ public:
     }
 
     template <class P>
-    std::size_t dimension(const P&) const { return static_cast<std::size_t>(count_); }
+    std::size_t dimension(const P&) const {
+        return static_cast<std::size_t>(count_);
+    }
     template <class P>
-    std::span<const double> lower(const P&) const { return lower_; }
+    std::span<const double> lower(const P&) const {
+        return lower_;
+    }
     template <class P>
-    std::span<const double> upper(const P&) const { return upper_; }
+    std::span<const double> upper(const P&) const {
+        return upper_;
+    }
 
     /// The waypoint a genotype puts on line k.
     Cell waypoint(std::span<const double> genotype, int k) const {
@@ -125,7 +131,7 @@ public:
         }
     }
 
-private:
+  private:
     Cell at(int line, int cross) const { return rows_ ? Cell{cross, line} : Cell{line, cross}; }
 
     bool rows_ = true;
@@ -133,8 +139,8 @@ private:
     std::shared_ptr<const std::vector<int>> snap_;  // [line k][coordinate] -> snapped coordinate
     std::vector<double> lower_, upper_;
     Connector connector_{};
-    DecodedPath out_;                  // scratch: the decoded chain, valid until the next decode
-    std::vector<std::int32_t> seen_;   // scratch for cut_loops
+    DecodedPath out_;                 // scratch: the decoded chain, valid until the next decode
+    std::vector<std::int32_t> seen_;  // scratch for cut_loops
 };
 
 /// `free`: 2K genes, K waypoints (x, y) anywhere on the map. Decoding rounds each, snaps it to the
@@ -143,12 +149,14 @@ private:
 /// loops. Works where paths must go backwards (mazes).
 template <class Connector = RepairConnector>
 class FreeEncoding {
-public:
+  public:
     template <class Objective>
     FreeEncoding(const GridProblem<Objective>& p, int waypoints) : k_(waypoints) {
-        require(waypoints >= 1 && waypoints <= 1000, "--waypoints", "must be in [1, 1000], got " + std::to_string(waypoints));
+        require(waypoints >= 1 && waypoints <= 1000, "--waypoints",
+                "must be in [1, 1000], got " + std::to_string(waypoints));
         const GridMap& m = p.map();
-        auto nearest = std::make_shared<std::vector<std::uint32_t>>(m.size(), std::numeric_limits<std::uint32_t>::max());
+        auto nearest =
+            std::make_shared<std::vector<std::uint32_t>>(m.size(), std::numeric_limits<std::uint32_t>::max());
         std::vector<std::size_t> queue;
         for (std::size_t i = 0; i < m.size(); ++i)
             if (p.reachable(m.cell(i))) {
@@ -172,11 +180,17 @@ public:
     }
 
     template <class P>
-    std::size_t dimension(const P&) const { return static_cast<std::size_t>(2 * k_); }
+    std::size_t dimension(const P&) const {
+        return static_cast<std::size_t>(2 * k_);
+    }
     template <class P>
-    std::span<const double> lower(const P&) const { return lower_; }
+    std::span<const double> lower(const P&) const {
+        return lower_;
+    }
     template <class P>
-    std::span<const double> upper(const P&) const { return upper_; }
+    std::span<const double> upper(const P&) const {
+        return upper_;
+    }
 
     template <class Objective>
     Cell waypoint(const GridProblem<Objective>& p, std::span<const double> genotype, int k) const {
@@ -212,14 +226,15 @@ public:
         for (Eigen::Index j = 0; j < out.cols(); ++j) {
             walker.walk(p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting());
             for (int k = 0; k < k_; ++k) {
-                const std::size_t at = (static_cast<std::size_t>(k) + 1) * (walk.size() - 1) / (static_cast<std::size_t>(k_) + 1);
+                const std::size_t at =
+                    (static_cast<std::size_t>(k) + 1) * (walk.size() - 1) / (static_cast<std::size_t>(k_) + 1);
                 out(2 * k, j) = walk[at].x;
                 out(2 * k + 1, j) = walk[at].y;
             }
         }
     }
 
-private:
+  private:
     int k_;
     std::shared_ptr<const std::vector<std::uint32_t>> nearest_;  // cell -> nearest reachable cell
     std::vector<double> lower_, upper_;

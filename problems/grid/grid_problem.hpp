@@ -19,7 +19,9 @@ struct DecodedPath {
     int violations = 0;
 };
 
-inline std::string to_string(Cell c) { return "(" + std::to_string(c.x) + "," + std::to_string(c.y) + ")"; }
+inline std::string to_string(Cell c) {
+    return "(" + std::to_string(c.x) + "," + std::to_string(c.y) + ")";
+}
 
 /// The cells reachable from `start` by legal steps (1) and the rest (0), by breadth-first search.
 inline std::vector<std::uint8_t> reachable_from(const GridMap& map, Cell start, bool corner_cutting = false) {
@@ -43,7 +45,7 @@ inline std::vector<std::uint8_t> reachable_from(const GridMap& map, Cell start, 
 
 template <class Objective>
 class GridProblem {
-public:
+  public:
     /// Checks start and goal: inside, free, and the goal reachable (a clear error, never a hang).
     GridProblem(std::shared_ptr<const GridMap> map, Cell start, Cell goal, Objective objective = {},
                 bool corner_cutting = false)
@@ -83,7 +85,7 @@ public:
     /// A decoded chain: its objective plus M per violation (so any violation marks it infeasible).
     double evaluate(const DecodedPath& d) const { return evaluate(d.path) + penalty() * d.violations; }
 
-private:
+  private:
     std::shared_ptr<const GridMap> map_;  // shared: problems are copied per run
     Cell start_, goal_;
     Objective objective_;

@@ -23,7 +23,9 @@ struct Cell {
 /// (d + 4) % 8 are opposite, and the angle between d and e is 45 * min(|d - e|, 8 - |d - e|).
 inline constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
 inline constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-inline constexpr bool is_diagonal(int d) { return (d & 1) != 0; }
+inline constexpr bool is_diagonal(int d) {
+    return (d & 1) != 0;
+}
 /// The direction of a one-cell step from a to b, or -1 when b is not one of a's 8 neighbours.
 inline int direction(Cell a, Cell b) {
     const int dx = b.x - a.x, dy = b.y - a.y;
@@ -38,7 +40,7 @@ inline constexpr int turn_steps(int d, int e) {
 }
 
 class GridMap {
-public:
+  public:
     GridMap() = default;
     /// `blocked` row by row, top row first; `name` says where the map came from (for messages).
     GridMap(int width, int height, std::vector<std::uint8_t> blocked, std::string name = "map")
@@ -117,18 +119,16 @@ public:
     }
 
     /// File 002 eq. 2 numbers cells from 0, left to right and bottom to top.
-    long paper_number(Cell c) const noexcept {
-        return static_cast<long>(height_ - 1 - c.y) * width_ + c.x;
-    }
+    long paper_number(Cell c) const noexcept { return static_cast<long>(height_ - 1 - c.y) * width_ + c.x; }
     Cell from_paper_number(long g) const {
         require(g >= 0 && g < static_cast<long>(size()), name_, "paper cell number out of range: " + std::to_string(g));
         return {static_cast<int>(g % width_), height_ - 1 - static_cast<int>(g / width_)};
     }
 
-private:
+  private:
     int width_ = 0;
     int height_ = 0;
-    std::vector<std::uint8_t> blocked_;  // 1 = blocked, row by row from the top
+    std::vector<std::uint8_t> blocked_;                // 1 = blocked, row by row from the top
     std::vector<std::uint8_t> moves_, moves_cutting_;  // legal steps per cell, bit d = direction d
     std::string name_;
 };

@@ -149,7 +149,9 @@ std::size_t column(std::string_view line, std::size_t pos) {
 // ---------------------------------------------------------------------------------------------
 // Text and lines
 
-bool is_blank(char c) { return c == ' ' || c == '\t'; }
+bool is_blank(char c) {
+    return c == ' ' || c == '\t';
+}
 
 /// Drops a UTF-8 byte-order mark, then rejects binary content: the first NUL byte or byte that is
 /// not UTF-8 is an error at its line and column.
@@ -192,8 +194,7 @@ std::vector<Line> split_lines(std::string_view text, const std::string& name) {
         std::string_view s = text.substr(start, end - start);
         while (!s.empty() && (s.back() == '\r' || is_blank(s.back()))) s.remove_suffix(1);
         if (const std::size_t cr = s.find('\r'); cr != std::string_view::npos)
-            fail(name, number, column(s, cr),
-                 "carriage return (\\r) inside a line: line ends must be LF or CRLF");
+            fail(name, number, column(s, cr), "carriage return (\\r) inside a line: line ends must be LF or CRLF");
         lines.push_back({s, number});
         ++number;
         if (last) break;
@@ -249,9 +250,17 @@ bool rest_blank(const std::vector<Line>& lines, std::size_t from) {
 // 0 = free, 1 = blocked, -1 = not a map character.
 int map_char(char c) {
     switch (c) {
-        case '.': case 'G': case 'S': return 0;
-        case '@': case 'O': case 'T': case 'W': return 1;
-        default: return -1;
+        case '.':
+        case 'G':
+        case 'S':
+            return 0;
+        case '@':
+        case 'O':
+        case 'T':
+        case 'W':
+            return 1;
+        default:
+            return -1;
     }
 }
 
@@ -328,7 +337,8 @@ GridMap parse_movingai(const std::vector<Line>& lines, std::size_t first, std::s
             fail(name, ln.number, column(ln.text, ln.text.size()), "`" + key + "` needs a value: " + expected);
         if (tok.size() > 2)
             fail(name, ln.number, column(ln.text, tok[2].pos),
-                 "unexpected " + quote(tok[2].text) + " after " + quote(ln.text.substr(0, tok[1].pos + tok[1].text.size())));
+                 "unexpected " + quote(tok[2].text) + " after " +
+                     quote(ln.text.substr(0, tok[1].pos + tok[1].text.size())));
         const Token& value = tok[1];
         const std::size_t vcol = column(ln.text, value.pos);
         if (k == 0) {
@@ -487,11 +497,12 @@ GridMap parse_map(std::string_view text, const std::string& name) {
              "missing Moving AI header: a .map file starts with " + std::string(kHeaderAll) +
                  ", but this line is already a map row");
     fail(name, ln.number, column(ln.text, tok[0].pos),
-         "not a map: expected a Moving AI header (`type octile`) or a row of 0/1 matrix cells, got " +
-             quote(ln.text));
+         "not a map: expected a Moving AI header (`type octile`) or a row of 0/1 matrix cells, got " + quote(ln.text));
 }
 
-GridMap read_map(const std::string& path) { return parse_map(read_file(path), path); }
+GridMap read_map(const std::string& path) {
+    return parse_map(read_file(path), path);
+}
 
 std::vector<ScenarioEntry> parse_scenario(std::string_view text, const std::string& name) {
     if (text.empty()) fail(name, 1, 0, "empty file: no scenario (expected `version 1` and scenario lines)");
@@ -569,11 +580,13 @@ std::vector<ScenarioEntry> parse_scenario(std::string_view text, const std::stri
     return out;
 }
 
-std::vector<ScenarioEntry> read_scenario(const std::string& path) { return parse_scenario(read_file(path), path); }
+std::vector<ScenarioEntry> read_scenario(const std::string& path) {
+    return parse_scenario(read_file(path), path);
+}
 
 std::string to_movingai(const GridMap& map) {
-    std::string out = "type octile\nheight " + std::to_string(map.height()) + "\nwidth " +
-                      std::to_string(map.width()) + "\nmap\n";
+    std::string out =
+        "type octile\nheight " + std::to_string(map.height()) + "\nwidth " + std::to_string(map.width()) + "\nmap\n";
     out.reserve(out.size() + map.size() + static_cast<std::size_t>(map.height()));
     for (int y = 0; y < map.height(); ++y) {
         for (int x = 0; x < map.width(); ++x) out += map.free(Cell{x, y}) ? '.' : '@';

@@ -30,7 +30,7 @@
 namespace pride::grid {
 
 class Oracle {
-public:
+  public:
     /// Guide the search towards the goal with a consistent lower bound (A*); false: plain Dijkstra.
     bool use_heuristic = true;
 
@@ -43,9 +43,8 @@ public:
     /// parent that reached it with its final cost (only a strictly smaller cost replaces it). The
     /// path returned is therefore a deterministic function of the map, s, g and the objective.
     template <class Objective>
-        requires(Objective::additive)
-    double solve(const GridMap& map, Cell s, Cell g, const Objective& objective, Path* out = nullptr,
-                 bool corner_cutting = false) {
+    requires(Objective::additive) double solve(const GridMap& map, Cell s, Cell g, const Objective& objective,
+                                               Path* out = nullptr, bool corner_cutting = false) {
         if (!map.free(s) || !map.free(g)) return -1.0;
         prepare(map.size());
         double step[8];
@@ -99,7 +98,7 @@ public:
     /// States expanded (taken off the open list) since construction.
     std::int64_t expansions() const noexcept { return expansions_; }
 
-private:
+  private:
     static constexpr std::uint32_t kDirs = 9;  // 8 directions and "no step yet"
     static constexpr int kNone = 8;
 

@@ -18,15 +18,17 @@ inline constexpr double kSqrt2 = 1.4142135623730951;
 
 /// The five metrics of grid.md, for every path.
 struct PathMetrics {
-    int cells = 0;              // start and goal included (file 000 eq. 13)
-    double length = 0.0;        // sum of step lengths, 1 or sqrt(2) (file 002 eq. 8)
-    int turns = 0;              // interior cells where the direction changes (file 002 eq. 11)
-    int turn_angle_deg = 0;     // sum of the direction changes, multiples of 45
-    int angle_penalty = 0;      // sum of W(theta): 10 below 90, 20 at 90, 50 above (file 002 eq. 10)
+    int cells = 0;           // start and goal included (file 000 eq. 13)
+    double length = 0.0;     // sum of step lengths, 1 or sqrt(2) (file 002 eq. 8)
+    int turns = 0;           // interior cells where the direction changes (file 002 eq. 11)
+    int turn_angle_deg = 0;  // sum of the direction changes, multiples of 45
+    int angle_penalty = 0;   // sum of W(theta): 10 below 90, 20 at 90, 50 above (file 002 eq. 10)
 };
 
 /// W(theta) of file 002 eq. 10 for a turn of k * 45 degrees.
-inline constexpr int angle_penalty_of_turn(int k) { return k == 0 ? 0 : (k == 1 ? 10 : (k == 2 ? 20 : 50)); }
+inline constexpr int angle_penalty_of_turn(int k) {
+    return k == 0 ? 0 : (k == 1 ? 10 : (k == 2 ? 20 : 50));
+}
 
 /// Metrics of a chain whose consecutive cells are neighbours (legal or not: the penalty decoder
 /// scores illegal chains too). A pair of equal consecutive cells counts as no step.
@@ -65,8 +67,7 @@ inline std::string path_violation(const GridMap& map, const Path& path, Cell sta
         if (i == 0) continue;
         const int d = direction(path[i - 1], c);
         if (d < 0) return "cells " + std::to_string(i - 1) + " and " + std::to_string(i) + " are not neighbours";
-        if (!map.legal_step(path[i - 1], d, corner_cutting))
-            return "step " + std::to_string(i) + " cuts a corner";
+        if (!map.legal_step(path[i - 1], d, corner_cutting)) return "step " + std::to_string(i) + " cuts a corner";
     }
     return {};
 }

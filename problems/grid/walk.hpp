@@ -15,7 +15,7 @@
 namespace pride::grid {
 
 class RandomWalker {
-public:
+  public:
     /// Goal bias: a neighbour's weight is exp(-bias * (how much the step changes the octile
     /// distance to the goal)); 0 walks blindly.
     double bias = 2.0;
@@ -61,7 +61,7 @@ public:
         return false;
     }
 
-private:
+  private:
     std::vector<std::uint32_t> visited_;  // generation stamps: no clearing between walks
     std::uint32_t stamp_ = 0;
     Cell candidates_[8];
