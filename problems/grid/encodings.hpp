@@ -20,6 +20,25 @@
 namespace pride::grid {
 
 namespace detail {
+/// Joins start, the waypoints waypoint(0..count-1) and goal with the connector into `out`, cuts
+/// loops, and recounts violations that a cut loop may have held (cutting only removes steps).
+template <class Objective, class Connector, class Waypoint>
+void join_waypoints(const GridProblem<Objective>& p, int count, Waypoint&& waypoint, Connector& connector,
+                    DecodedPath& out, std::vector<std::int32_t>& seen) {
+    out.path.clear();
+    out.violations = 0;
+    out.path.push_back(p.start());
+    Cell previous = p.start();
+    for (int k = 0; k < count; ++k) {
+        const Cell w = waypoint(k);
+        connector.join(p.map(), previous, w, out.path, out.violations, p.corner_cutting());
+        previous = w;
+    }
+    connector.join(p.map(), previous, p.goal(), out.path, out.violations, p.corner_cutting());
+    cut_loops(out.path, p.map(), seen);
+    if (out.violations > 0) out.violations = count_violations(p.map(), out.path, 1, p.corner_cutting());
+}
+
 /// Rounds a gene to a coordinate in [0, extent - 1] (NaN to 0).
 inline int to_coordinate(double v, int extent) {
     if (!(v >= 0.0)) return 0;
@@ -96,19 +115,8 @@ class LineEncoding {
 
     template <class Objective>
     const DecodedPath& decode(const GridProblem<Objective>& p, std::span<const double> genotype) {
-        out_.path.clear();
-        out_.violations = 0;
-        out_.path.push_back(p.start());
-        Cell previous = p.start();
-        for (int k = 0; k < count_; ++k) {
-            const Cell w = waypoint(genotype, k);
-            connector_.join(p.map(), previous, w, out_.path, out_.violations, p.corner_cutting());
-            previous = w;
-        }
-        connector_.join(p.map(), previous, p.goal(), out_.path, out_.violations, p.corner_cutting());
-        cut_loops(out_.path, p.map(), seen_);
-        // A cut loop may have held violations: count what is left (cutting only removes steps).
-        if (out_.violations > 0) out_.violations = count_violations(p.map(), out_.path, 1, p.corner_cutting());
+        detail::join_waypoints(
+            p, count_, [&](int k) { return waypoint(genotype, k); }, connector_, out_, seen_);
         return out_;
     }
 
@@ -202,19 +210,8 @@ class FreeEncoding {
 
     template <class Objective>
     const DecodedPath& decode(const GridProblem<Objective>& p, std::span<const double> genotype) {
-        out_.path.clear();
-        out_.violations = 0;
-        out_.path.push_back(p.start());
-        Cell previous = p.start();
-        for (int k = 0; k < k_; ++k) {
-            const Cell w = waypoint(p, genotype, k);
-            connector_.join(p.map(), previous, w, out_.path, out_.violations, p.corner_cutting());
-            previous = w;
-        }
-        connector_.join(p.map(), previous, p.goal(), out_.path, out_.violations, p.corner_cutting());
-        cut_loops(out_.path, p.map(), seen_);
-        // A cut loop may have held violations: count what is left (cutting only removes steps).
-        if (out_.violations > 0) out_.violations = count_violations(p.map(), out_.path, 1, p.corner_cutting());
+        detail::join_waypoints(
+            p, k_, [&](int k) { return waypoint(p, genotype, k); }, connector_, out_, seen_);
         return out_;
     }
 

@@ -105,31 +105,10 @@ inline void cut_loops(Path& path, const GridMap& map, std::vector<std::int32_t>&
     path.resize(out);
 }
 
-/// Appends the straight 8-connected cell line from a to b (Bresenham), b included and a not.
-inline void append_line(Cell a, Cell b, Path& out) {
-    const int dx = std::abs(b.x - a.x), dy = -std::abs(b.y - a.y);
-    const int sx = a.x < b.x ? 1 : -1, sy = a.y < b.y ? 1 : -1;
-    int err = dx + dy;
-    Cell c = a;
-    while (!(c == b)) {
-        const int e2 = 2 * err;
-        if (e2 >= dy) {
-            err += dy;
-            c.x += sx;
-        }
-        if (e2 <= dx) {
-            err += dx;
-            c.y += sy;
-        }
-        out.push_back(c);
-    }
-}
-
-/// True when the straight line from a to b is a legal join: every cell free, every diagonal step
-/// legal (grid.md: "the join is legal only if every cell of that line is free and every diagonal
-/// step in it is legal").
-inline bool line_is_free(const GridMap& map, Cell a, Cell b, bool corner_cutting = false) {
-    if (!map.free(a)) return false;
+/// Walks the straight 8-connected cell line from a to b (Bresenham), calling step(from, to) for
+/// each step until it returns false or b is reached; true when b was reached.
+template <class Step>
+bool walk_line(Cell a, Cell b, Step&& step) {
     const int dx = std::abs(b.x - a.x), dy = -std::abs(b.y - a.y);
     const int sx = a.x < b.x ? 1 : -1, sy = a.y < b.y ? 1 : -1;
     int err = dx + dy;
@@ -145,10 +124,27 @@ inline bool line_is_free(const GridMap& map, Cell a, Cell b, bool corner_cutting
             err += dx;
             next.y += sy;
         }
-        if (!((map.moves(map.index(c), corner_cutting) >> direction(c, next)) & 1u)) return false;
+        if (!step(c, next)) return false;
         c = next;
     }
     return true;
+}
+
+/// Appends the straight 8-connected cell line from a to b, b included and a not.
+inline void append_line(Cell a, Cell b, Path& out) {
+    walk_line(a, b, [&](Cell, Cell next) {
+        out.push_back(next);
+        return true;
+    });
+}
+
+/// True when the straight line from a to b is a legal join: every cell free, every diagonal step
+/// legal (grid.md: "the join is legal only if every cell of that line is free and every diagonal
+/// step in it is legal").
+inline bool line_is_free(const GridMap& map, Cell a, Cell b, bool corner_cutting = false) {
+    return map.free(a) && walk_line(a, b, [&](Cell c, Cell next) {
+               return ((map.moves(map.index(c), corner_cutting) >> direction(c, next)) & 1u) != 0;
+           });
 }
 
 }  // namespace pride::grid
