@@ -105,46 +105,54 @@ inline void cut_loops(Path& path, const GridMap& map, std::vector<std::int32_t>&
     path.resize(out);
 }
 
-/// Walks the straight 8-connected cell line from a to b (Bresenham), calling step(from, to) for
-/// each step until it returns false or b is reached; true when b was reached.
-template <class Step>
-bool walk_line(Cell a, Cell b, Step&& step) {
-    const int dx = std::abs(b.x - a.x), dy = -std::abs(b.y - a.y);
-    const int sx = a.x < b.x ? 1 : -1, sy = a.y < b.y ? 1 : -1;
-    int err = dx + dy;
-    Cell c = a;
-    while (!(c == b)) {
-        const int e2 = 2 * err;
-        Cell next = c;
-        if (e2 >= dy) {
-            err += dy;
-            next.x += sx;
+/// The cells of the straight 8-connected line from a to b (Bresenham), one step at a time:
+/// `for (LineSteps line(a, b); !line.done();) { Cell next = line.next(); ... }` visits the cells
+/// after a, b included.
+class LineSteps {
+  public:
+    LineSteps(Cell a, Cell b) noexcept
+        : c_(a),
+          b_(b),
+          dx_(std::abs(b.x - a.x)),
+          dy_(-std::abs(b.y - a.y)),
+          sx_(a.x < b.x ? 1 : -1),
+          sy_(a.y < b.y ? 1 : -1),
+          err_(dx_ + dy_) {}
+    bool done() const noexcept { return c_ == b_; }
+    Cell current() const noexcept { return c_; }
+    Cell next() noexcept {
+        const int e2 = 2 * err_;
+        if (e2 >= dy_) {
+            err_ += dy_;
+            c_.x += sx_;
         }
-        if (e2 <= dx) {
-            err += dx;
-            next.y += sy;
+        if (e2 <= dx_) {
+            err_ += dx_;
+            c_.y += sy_;
         }
-        if (!step(c, next)) return false;
-        c = next;
+        return c_;
     }
-    return true;
-}
+
+  private:
+    Cell c_, b_;
+    int dx_, dy_, sx_, sy_, err_;
+};
 
 /// Appends the straight 8-connected cell line from a to b, b included and a not.
 inline void append_line(Cell a, Cell b, Path& out) {
-    walk_line(a, b, [&](Cell, Cell next) {
-        out.push_back(next);
-        return true;
-    });
+    for (LineSteps line(a, b); !line.done();) out.push_back(line.next());
 }
 
 /// True when the straight line from a to b is a legal join: every cell free, every diagonal step
 /// legal (grid.md: "the join is legal only if every cell of that line is free and every diagonal
 /// step in it is legal").
 inline bool line_is_free(const GridMap& map, Cell a, Cell b, bool corner_cutting = false) {
-    return map.free(a) && walk_line(a, b, [&](Cell c, Cell next) {
-               return ((map.moves(map.index(c), corner_cutting) >> direction(c, next)) & 1u) != 0;
-           });
+    if (!map.free(a)) return false;
+    for (LineSteps line(a, b); !line.done();) {
+        const Cell c = line.current();
+        if (!((map.moves(map.index(c), corner_cutting) >> direction(c, line.next())) & 1u)) return false;
+    }
+    return true;
 }
 
 }  // namespace pride::grid
