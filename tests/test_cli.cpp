@@ -13,205 +13,20 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "json_reader.hpp"
 #include "problems/continuous/catalog.hpp"
 
 namespace {
 
+using pride::test::JsonValue;
+using pride::test::parse_json;
 using pride::test::run_pride;
 
-// ---------------------------------------------------------------------------------------------
-// A small strict JSON reader (no JSON library is available): enough to check the documents pride
-// prints. Object members are kept in order, duplicates included, so duplicates can be detected.
-
-struct Json {
-    enum class Type { null, boolean, number, string, array, object } type = Type::null;
-    bool boolean = false;
-    double number = 0.0;
-    std::string text;  // a string's value, or a number's literal text
-    std::vector<Json> items;
-    std::vector<std::pair<std::string, Json>> members;
-
-    const Json& at(const std::string& key) const {
-        for (const auto& [k, v] : members)
-            if (k == key) return v;
-        throw std::runtime_error("no member '" + key + "'");
-    }
-    bool has(const std::string& key) const {
-        return std::any_of(members.begin(), members.end(), [&](const auto& m) { return m.first == key; });
-    }
-    std::vector<std::string> keys() const {
-        std::vector<std::string> k;
-        for (const auto& m : members) k.push_back(m.first);
-        return k;
-    }
-};
-
-class JsonReader {
-  public:
-    explicit JsonReader(const std::string& s) : s_(s) {}
-
-    Json document() {
-        Json v = value();
-        space();
-        if (i_ != s_.size()) fail("trailing characters");
-        return v;
-    }
-
-  private:
-    [[noreturn]] void fail(const std::string& what) const {
-        throw std::runtime_error("JSON: " + what + " at offset " + std::to_string(i_));
-    }
-    void space() {
-        while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\n' || s_[i_] == '\t' || s_[i_] == '\r')) ++i_;
-    }
-    bool eat(char c) {
-        space();
-        if (i_ < s_.size() && s_[i_] == c) {
-            ++i_;
-            return true;
-        }
-        return false;
-    }
-    void expect(char c) {
-        if (!eat(c)) fail(std::string("expected '") + c + "'");
-    }
-    bool word(const char* w) {
-        const std::string ws(w);
-        if (s_.compare(i_, ws.size(), ws) == 0) {
-            i_ += ws.size();
-            return true;
-        }
-        return false;
-    }
-    std::string string_literal() {
-        expect('"');
-        std::string out;
-        while (true) {
-            if (i_ >= s_.size()) fail("unterminated string");
-            const char c = s_[i_++];
-            if (c == '"') return out;
-            if (static_cast<unsigned char>(c) < 0x20) fail("control character in string");
-            if (c != '\\') {
-                out += c;
-                continue;
-            }
-            if (i_ >= s_.size()) fail("bad escape");
-            const char e = s_[i_++];
-            switch (e) {
-                case '"':
-                    out += '"';
-                    break;
-                case '\\':
-                    out += '\\';
-                    break;
-                case '/':
-                    out += '/';
-                    break;
-                case 'b':
-                    out += '\b';
-                    break;
-                case 'f':
-                    out += '\f';
-                    break;
-                case 'n':
-                    out += '\n';
-                    break;
-                case 'r':
-                    out += '\r';
-                    break;
-                case 't':
-                    out += '\t';
-                    break;
-                case 'u': {
-                    if (i_ + 4 > s_.size()) fail("bad \\u escape");
-                    const unsigned code = static_cast<unsigned>(std::stoul(s_.substr(i_, 4), nullptr, 16));
-                    i_ += 4;
-                    if (code < 0x80)
-                        out += static_cast<char>(code);
-                    else
-                        out += '?';
-                    break;
-                }
-                default:
-                    fail("bad escape");
-            }
-        }
-    }
-    Json value() {
-        space();
-        if (i_ >= s_.size()) fail("unexpected end");
-        Json v;
-        const char c = s_[i_];
-        if (c == '{') {
-            ++i_;
-            v.type = Json::Type::object;
-            if (eat('}')) return v;
-            do {
-                space();
-                std::string key = string_literal();
-                expect(':');
-                v.members.emplace_back(std::move(key), value());
-            } while (eat(','));
-            expect('}');
-        } else if (c == '[') {
-            ++i_;
-            v.type = Json::Type::array;
-            if (eat(']')) return v;
-            do v.items.push_back(value());
-            while (eat(','));
-            expect(']');
-        } else if (c == '"') {
-            v.type = Json::Type::string;
-            v.text = string_literal();
-        } else if (word("true")) {
-            v.type = Json::Type::boolean;
-            v.boolean = true;
-        } else if (word("false")) {
-            v.type = Json::Type::boolean;
-        } else if (word("null")) {
-            v.type = Json::Type::null;
-        } else {
-            // number: -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?
-            const std::size_t start = i_;
-            auto digits = [&] {
-                const std::size_t d = i_;
-                while (i_ < s_.size() && s_[i_] >= '0' && s_[i_] <= '9') ++i_;
-                return i_ - d;
-            };
-            if (i_ < s_.size() && s_[i_] == '-') ++i_;
-            if (i_ < s_.size() && s_[i_] == '0')
-                ++i_;
-            else if (digits() == 0)
-                fail("bad value");
-            if (i_ < s_.size() && s_[i_] == '.') {
-                ++i_;
-                if (digits() == 0) fail("bad fraction");
-            }
-            if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
-                ++i_;
-                if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) ++i_;
-                if (digits() == 0) fail("bad exponent");
-            }
-            v.type = Json::Type::number;
-            v.text = s_.substr(start, i_ - start);
-            v.number = std::strtod(v.text.c_str(), nullptr);
-        }
-        return v;
-    }
-
-    const std::string& s_;
-    std::size_t i_ = 0;
-};
-
-Json parse_json(const std::string& s) {
-    return JsonReader(s).document();
-}
-
-std::vector<double> numbers(const Json& array) {
-    REQUIRE(array.type == Json::Type::array);
+std::vector<double> numbers(const JsonValue& array) {
+    REQUIRE(array.kind == JsonValue::Kind::array);
     std::vector<double> out;
     for (const auto& item : array.items) {
-        REQUIRE(item.type == Json::Type::number);
+        REQUIRE(item.kind == JsonValue::Kind::number);
         out.push_back(item.number);
     }
     return out;
@@ -374,8 +189,8 @@ TEST_CASE("cli: run --json prints one object with the documented keys", "[cli][r
     REQUIRE(!out.empty());
     CHECK(out.back() == '\n');
     CHECK(std::count(out.begin(), out.end(), '\n') == 1);
-    const Json j = parse_json(out);
-    REQUIRE(j.type == Json::Type::object);
+    const JsonValue j = parse_json(out);
+    REQUIRE(j.kind == JsonValue::Kind::object);
 
     auto keys = j.keys();
     const std::set<std::string> unique(keys.begin(), keys.end());
@@ -384,16 +199,16 @@ TEST_CASE("cli: run --json prints one object with the documented keys", "[cli][r
                                             "best_x", "evaluations", "wall_ms", "history"};
     CHECK(unique == expected);
 
-    CHECK(j.at("algo").type == Json::Type::string);
+    CHECK(j.at("algo").kind == JsonValue::Kind::string);
     CHECK(j.at("algo").text == "pso");
     CHECK(j.at("problem").text == "rastrigin");
-    CHECK(j.at("dim").type == Json::Type::number);
+    CHECK(j.at("dim").kind == JsonValue::Kind::number);
     CHECK(j.at("dim").text == "5");
     CHECK(j.at("seed").text == "3");
     CHECK(j.at("evaluations").text == "1000");
-    REQUIRE(j.at("wall_ms").type == Json::Type::number);
+    REQUIRE(j.at("wall_ms").kind == JsonValue::Kind::number);
     CHECK(j.at("wall_ms").number >= 0.0);
-    REQUIRE(j.at("best_f").type == Json::Type::number);
+    REQUIRE(j.at("best_f").kind == JsonValue::Kind::number);
     const double best_f = j.at("best_f").number;
     CHECK(std::isfinite(best_f));
     CHECK(best_f >= 0.0);
@@ -421,7 +236,7 @@ TEST_CASE("cli: run --json prints one object with the documented keys", "[cli][r
     CHECK(without_wall_ms(again) == without_wall_ms(out));
     CHECK(without_wall_ms(out) != out);  // the blanking did find the field
     const std::string other = expect_success("run --problem rastrigin --dim 5 --algo pso --evals 1000 --seed 4 --json");
-    const Json o = parse_json(other);
+    const JsonValue o = parse_json(other);
     CHECK(o.at("seed").text == "4");
     CHECK(numbers(o.at("history")) != history);
 }
@@ -442,7 +257,7 @@ TEST_CASE("cli: run --json for every algorithm family and limit", "[cli][run]") 
     };
     for (const auto& c : cases) {
         INFO(c.args);
-        const Json j = parse_json(expect_success("run " + c.args + " --json"));
+        const JsonValue j = parse_json(expect_success("run " + c.args + " --json"));
         const auto evaluations = static_cast<std::int64_t>(j.at("evaluations").number);
         if (c.evaluations >= 0)
             CHECK(evaluations == c.evaluations);
@@ -460,7 +275,7 @@ TEST_CASE("cli: a wall-time limit far in the future does not end the run", "[cli
     // 1e13 ms (about 317 years) overflows a nanosecond duration; it must still mean "no limit yet".
     for (const char* wall : {"1e6", "1e13", "1e300"}) {
         INFO("--wall-ms " << wall);
-        const Json j = parse_json(expect_success(
+        const JsonValue j = parse_json(expect_success(
             std::string("run --problem sphere --dim 3 --algo pso --evals 1000 --json --wall-ms ") + wall));
         CHECK(j.at("evaluations").number == 1000);
     }
@@ -544,8 +359,8 @@ TEST_CASE("cli: list names every algorithm and problem", "[cli][list]") {
     }
     CHECK(out.find("nlopt:LD_") == std::string::npos);  // gradient algorithms cannot run here
 
-    const Json j = parse_json(expect_success("list --json"));
-    REQUIRE(j.type == Json::Type::object);
+    const JsonValue j = parse_json(expect_success("list --json"));
+    REQUIRE(j.kind == JsonValue::Kind::object);
     std::set<std::string> algorithms, problems;
     REQUIRE(j.has("algorithms"));
     REQUIRE(j.has("problems"));
@@ -565,7 +380,7 @@ TEST_CASE("cli: list names every algorithm and problem", "[cli][list]") {
                           "nlopt:GN_DIRECT_L", "nlopt:GN_ISRES"}) {
         INFO(a);
         REQUIRE(algorithms.count(a) == 1);
-        const Json r =
+        const JsonValue r =
             parse_json(expect_success(std::string("run --problem sphere --dim 2 --evals 120 --json --algo ") + a));
         CHECK(r.at("evaluations").number == 120);
     }
@@ -595,19 +410,20 @@ TEST_CASE("cli: help", "[cli][help]") {
 // 5. NLopt through the command line
 
 TEST_CASE("cli: NLopt subplex on the sphere", "[cli][nlopt]") {
-    const Json j = parse_json(expect_success("run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 2000 --json"));
+    const JsonValue j =
+        parse_json(expect_success("run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 2000 --json"));
     CHECK(j.at("algo").text == "nlopt:LN_SBPLX");
     CHECK(j.at("evaluations").number == 2000);
     CHECK(j.at("best_f").number < 1e-10);
     CHECK(numbers(j.at("best_x")).size() == 3);
 
     // restart=0 runs NLopt once: it converges and stops before the budget.
-    const Json once = parse_json(
+    const JsonValue once = parse_json(
         expect_success("run --problem sphere --dim 2 --algo nlopt:LN_SBPLX --evals 100000 --param restart=0 --json"));
     CHECK(once.at("evaluations").number < 100000);
     CHECK(once.at("best_f").number < 1e-12);
     // pop sets the evaluations per recorded iteration: 2000 / 100 = 20 entries.
-    const Json blocks =
+    const JsonValue blocks =
         parse_json(expect_success("run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 2000 --pop 100 --json"));
     CHECK(numbers(blocks.at("history")).size() == 20);
 }
