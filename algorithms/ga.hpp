@@ -1,5 +1,5 @@
 #pragma once
-// Real-coded genetic algorithm, generational with elitism.
+// Genetic algorithm: real-coded on boxes, and on chains (grid paths) through the same skeleton.
 //
 //   Deb, K. and Agrawal, R. B. (1995). Simulated binary crossover for continuous search space.
 //     Complex Systems 9, 115-148.
