@@ -1,0 +1,71 @@
+// The statistics of framework/statistics.hpp against scipy 1.10.1 (Debian's python3-scipy) on
+// fixed data; scripts/statistics_reference.py prints the values hard-coded here.
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "framework/error.hpp"
+#include "framework/statistics.hpp"
+
+namespace {
+const std::vector<double> x{0.31, 1.2, 0.05, 2.4, 0.77, 1.9, 0.42, 3.3, 0.9, 1.1};
+const std::vector<double> y{1.5, 2.2, 0.95, 3.1, 2.8, 1.7, 4.0, 2.5, 1.35, 2.9};
+const std::vector<double> t1{12, 12, 13, 12, 14, 12, 13, 12, 12, 15};
+const std::vector<double> t2{12, 13, 13, 14, 14, 13, 15, 12, 16, 14, 13, 13};
+}  // namespace
+
+TEST_CASE("statistics: average ranks share tied ranks", "[statistics]") {
+    const std::vector<double> v{3.0, 1.0, 3.0, 2.0, 3.0};
+    const auto r = pride::stats::average_ranks(v);
+    CHECK(r == std::vector<double>{4.0, 1.0, 4.0, 2.0, 4.0});
+}
+
+TEST_CASE("statistics: rank-sum test equals scipy's mannwhitneyu (asymptotic)", "[statistics]") {
+    const auto a = pride::stats::rank_sum_test(x, y);
+    CHECK(a.u == 20.0);
+    CHECK(a.p_value == Approx(0.025748080821108063).epsilon(1e-12));
+    const auto b = pride::stats::rank_sum_test(y, x);  // symmetric p, complementary U
+    CHECK(b.u == 80.0);
+    CHECK(b.p_value == Approx(0.025748080821108063).epsilon(1e-12));
+    const auto tied = pride::stats::rank_sum_test(t1, t2);  // many ties: the tie correction matters
+    CHECK(tied.u == 34.0);
+    CHECK(tied.p_value == Approx(0.07874119697697302).epsilon(1e-12));
+}
+
+TEST_CASE("statistics: rank-sum test edge cases", "[statistics]") {
+    const std::vector<double> same{5, 5, 5};
+    CHECK(pride::stats::rank_sum_test(same, same).p_value == 1.0);  // all tied: no evidence
+    const std::vector<double> empty;
+    CHECK_THROWS_AS(pride::stats::rank_sum_test(empty, same), pride::InputError);
+    const std::vector<double> nan{1.0, std::nan("")};
+    CHECK_THROWS_AS(pride::stats::rank_sum_test(nan, same), pride::InputError);
+}
+
+TEST_CASE("statistics: Holm's adjustment worked by hand", "[statistics]") {
+    // sorted 0.01, 0.02, 0.03, 0.5 times 4, 3, 2, 1 = 0.04, 0.06, 0.06, 0.5 (made non-decreasing)
+    const std::vector<double> p{0.03, 0.5, 0.01, 0.02};
+    const auto h = pride::stats::holm(p);
+    CHECK(h[2] == Approx(0.04));
+    CHECK(h[3] == Approx(0.06));
+    CHECK(h[0] == Approx(0.06));
+    CHECK(h[1] == Approx(0.5));
+    const std::vector<double> big{0.4, 0.6};
+    CHECK(pride::stats::holm(big) == std::vector<double>{0.8, 0.8});  // capped, monotone
+}
+
+TEST_CASE("statistics: Friedman test equals scipy's friedmanchisquare", "[statistics]") {
+    const std::vector<std::vector<double>> blocks{
+        {3.2, 1.1, 2.5, 4.0}, {0.5, 0.7, 0.6, 0.9}, {10.0, 8.0, 8.0, 12.0},
+        {1.0, 2.0, 3.0, 4.0}, {7.5, 7.5, 7.5, 6.0}, {0.01, 0.02, 0.005, 0.03},
+    };
+    const auto f = pride::stats::friedman(blocks);
+    CHECK(f.statistic == Approx(5.290909090909101).epsilon(1e-12));
+    CHECK(f.p_value == Approx(0.15169337530933427).epsilon(1e-12));
+    REQUIRE(f.average_ranks.size() == 4);
+    CHECK(f.average_ranks[0] == Approx(2.1666666666666665));
+    CHECK(f.average_ranks[1] == Approx(2.25));
+    CHECK(f.average_ranks[2] == Approx(2.0833333333333335));
+    CHECK(f.average_ranks[3] == Approx(3.5));
+    const std::vector<std::vector<double>> ragged{{1, 2}, {1}};
+    CHECK_THROWS_AS(pride::stats::friedman(ragged), pride::InputError);
+}
