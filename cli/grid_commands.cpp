@@ -43,20 +43,6 @@ std::string json_path(const Path& path) {
     return s + "]";
 }
 
-/// What one run on a grid produced, whatever made it.
-struct PathRun {
-    std::string encoding = "none";
-    bool feasible = false;
-    Path path;
-    double value = 0.0;
-    std::int64_t evaluations = 0;
-    std::int64_t iterations = 0;
-    double wall_ms = 0.0;
-    std::vector<double> history;
-    std::optional<double> optimum;
-    Path optimal_path;
-};
-
 Termination grid_termination(const PathOptions& o) {
     Termination t;
     if (o.iters) {
@@ -201,7 +187,8 @@ PathRun dispatch_objective(const PathOptions& o, const std::shared_ptr<const Gri
 
 }  // namespace
 
-int path_command(const PathOptions& o, std::ostream& out) {
+namespace {
+std::shared_ptr<const GridMap> load_for(const PathOptions& o) {
     require(o.init == "uniform" || o.init == "walk", "--init", "expected uniform or walk, got '" + o.init + "'");
     require(o.init == "uniform" || o.encoding == "line" || o.encoding == "free", "--init walk",
             "only for the line and free encodings (chains always start from walks)");
@@ -211,7 +198,16 @@ int path_command(const PathOptions& o, std::ostream& out) {
     require(o.inflate >= 0 && o.inflate <= 1000, "--inflate", "must be in [0, 1000], got " + std::to_string(o.inflate));
     GridMap loaded = read_map(o.map);
     if (o.inflate > 0) loaded = loaded.inflated(static_cast<int>(o.inflate));
-    const auto map = std::make_shared<const GridMap>(std::move(loaded));
+    return std::make_shared<const GridMap>(std::move(loaded));
+}
+}  // namespace
+
+PathRun plan_path(const PathOptions& o) {
+    return dispatch_objective(o, load_for(o));
+}
+
+int path_command(const PathOptions& o, std::ostream& out) {
+    const auto map = load_for(o);
     const PathRun run = dispatch_objective(o, map);
     const Cell start = parse_cell(o.start, "--start"), goal = parse_cell(o.goal, "--goal");
     const PathMetrics m = metrics(run.path);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "problems/grid/path.hpp"
+
 namespace pride::cli {
 
 struct PathOptions {
@@ -34,6 +36,23 @@ struct PathOptions {
     std::vector<std::string> params;
 };
 int path_command(const PathOptions& o, std::ostream& out);
+
+/// What one run on a grid produced, whatever made it (pride path, campaigns).
+struct PathRun {
+    std::string encoding = "none";
+    bool feasible = false;
+    grid::Path path;     // start first
+    double value = 0.0;  // the objective of the path (when feasible)
+    std::int64_t evaluations = 0;
+    std::int64_t iterations = 0;
+    double wall_ms = 0.0;
+    std::vector<double> history;
+    std::optional<double> optimum;  // with o.oracle (or algo exact)
+    grid::Path optimal_path;
+};
+
+/// Loads the map and runs `o.algo` on it as `pride path` does (no printing, no pictures).
+PathRun plan_path(const PathOptions& o);
 
 struct ScenOptions {
     std::string file;

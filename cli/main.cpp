@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cli/campaign.hpp"
 #include "cli/commands.hpp"
 #include "cli/grid_commands.hpp"
 #include "framework/error.hpp"
@@ -72,6 +73,12 @@ int main(int argc, char** argv) {
     scen_cmd->add_option("--map-dir", scen.map_dir, "where the maps are (default: the scenario's folder)");
     scen_cmd->add_flag("--json", scen.json, "print one JSON object");
 
+    BenchOptions bench;
+    auto* bench_cmd = app.add_subcommand("bench", "run a campaign file: every (problem, algorithm, seed), resumable");
+    bench_cmd->add_option("config", bench.config, "the campaign file (TOML)")->required();
+    bench_cmd->add_option("--jobs", bench.jobs, "parallel runs (default: the number of cores)");
+    bench_cmd->add_option("--out", bench.out, "the SQLite store (default: CONFIG with .sqlite)");
+
     bool list_json = false;
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
     list_cmd->add_flag("--json", list_json, "print one JSON object");
@@ -82,13 +89,14 @@ int main(int argc, char** argv) {
                                                    [&](const CLI::App* s) { return s->get_name() == argv[1]; });
         if (argc > 1 && argv[1][0] != '-' && !known)
             throw pride::InputError(std::string("unknown subcommand '") + argv[1] +
-                                    "' (expected run, eval, list, path or scen)");
+                                    "' (expected run, eval, list, path, scen or bench)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
         if (*list_cmd) return list_command(list_json, std::cout);
         if (*path_cmd) return path_command(path, std::cout);
         if (*scen_cmd) return scen_command(scen, std::cout);
+        if (*bench_cmd) return bench_command(bench, std::cout);
         return 2;
     } catch (const CLI::Success& e) {
         return app.exit(e);
