@@ -10,6 +10,7 @@
 #include "cli/campaign.hpp"
 #include "cli/commands.hpp"
 #include "cli/grid_commands.hpp"
+#include "cli/report.hpp"
 #include "framework/error.hpp"
 
 int main(int argc, char** argv) {
@@ -79,6 +80,11 @@ int main(int argc, char** argv) {
     bench_cmd->add_option("--jobs", bench.jobs, "parallel runs (default: the number of cores)");
     bench_cmd->add_option("--out", bench.out, "the SQLite store (default: CONFIG with .sqlite)");
 
+    ReportOptions report;
+    auto* report_cmd = app.add_subcommand("report", "comparison tables and statistics from a campaign store");
+    report_cmd->add_option("store", report.store, "the SQLite store written by pride bench")->required();
+    report_cmd->add_option("--format", report.format, "md (default), csv or latex");
+
     bool list_json = false;
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
     list_cmd->add_flag("--json", list_json, "print one JSON object");
@@ -89,7 +95,7 @@ int main(int argc, char** argv) {
                                                    [&](const CLI::App* s) { return s->get_name() == argv[1]; });
         if (argc > 1 && argv[1][0] != '-' && !known)
             throw pride::InputError(std::string("unknown subcommand '") + argv[1] +
-                                    "' (expected run, eval, list, path, scen or bench)");
+                                    "' (expected run, eval, list, path, scen, bench or report)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
@@ -97,6 +103,7 @@ int main(int argc, char** argv) {
         if (*path_cmd) return path_command(path, std::cout);
         if (*scen_cmd) return scen_command(scen, std::cout);
         if (*bench_cmd) return bench_command(bench, std::cout);
+        if (*report_cmd) return report_command(report, std::cout);
         return 2;
     } catch (const CLI::Success& e) {
         return app.exit(e);
