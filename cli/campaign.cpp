@@ -336,6 +336,9 @@ class Store {
             "feasible INTEGER NOT NULL, best REAL, evaluations INTEGER NOT NULL, iterations INTEGER NOT NULL, "
             "wall_ms REAL NOT NULL, optimum REAL, solution TEXT NOT NULL, history TEXT NOT NULL, "
             "history_evaluations TEXT NOT NULL, UNIQUE (problem, algorithm, seed))");
+        exec(
+            "CREATE TABLE IF NOT EXISTS problems (id TEXT PRIMARY KEY, type TEXT NOT NULL, map TEXT, start TEXT, "
+            "goal TEXT)");
     }
     ~Store() { sqlite3_close(db_); }
     Store(const Store&) = delete;
@@ -355,10 +358,23 @@ class Store {
             return;
         }
         sqlite3_finalize(s);
+        exec("BEGIN");
         s = prepare("INSERT INTO campaign (id, name, text) VALUES (1, ?, ?)");
         sqlite3_bind_text(s, 1, c.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, c.text.c_str(), -1, SQLITE_TRANSIENT);
         step_done(s);
+        // The problems as resolved here (map paths made absolute), for reports and plots.
+        for (const auto& p : c.problems) {
+            s = prepare("INSERT INTO problems (id, type, map, start, goal) VALUES (?, ?, ?, ?, ?)");
+            const std::string map = p.map.empty() ? "" : std::filesystem::absolute(p.map).string();
+            sqlite3_bind_text(s, 1, p.id.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 2, p.type.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 3, map.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 4, p.start.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 5, p.goal.c_str(), -1, SQLITE_TRANSIENT);
+            step_done(s);
+        }
+        exec("COMMIT");
     }
 
     std::set<std::tuple<std::string, std::string, std::int64_t>> done() {

@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
     auto* report_cmd = app.add_subcommand("report", "comparison tables and statistics from a campaign store");
     report_cmd->add_option("store", report.store, "the SQLite store written by pride bench")->required();
     report_cmd->add_option("--format", report.format, "md (default), csv or latex");
+    report_cmd->add_option("--plots", report.plots, "write convergence, final-value and path figures (PNG, SVG) here");
 
     bool list_json = false;
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");

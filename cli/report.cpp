@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -106,6 +107,23 @@ std::string latex(const std::string& s) {
     return out;
 }
 
+}  // namespace
+
+namespace {
+/// Runs scripts/plot_campaign.py with Debian's python3 (the one python3-matplotlib serves).
+void plot(const std::string& store, const std::string& folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    require(!ec && std::filesystem::is_directory(folder), "--plots", folder + ": cannot create the folder");
+    const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    const std::string script = std::string(PRIDE_SCRIPTS_DIR) + "/plot_campaign.py";
+    require(std::filesystem::exists(script), "--plots", script + " is missing");
+    const std::string check = "'" + python + "' -c 'import matplotlib' >/dev/null 2>&1";
+    require(std::system(check.c_str()) == 0, "--plots",
+            "needs python3 with matplotlib (apt-get install python3-matplotlib)");
+    const std::string command = "'" + python + "' '" + script + "' '" + store + "' '" + folder + "'";
+    require(std::system(command.c_str()) == 0, "--plots", "the plotting script failed (see above)");
+}
 }  // namespace
 
 int report_command(const ReportOptions& o, std::ostream& out) {
@@ -232,6 +250,7 @@ int report_command(const ReportOptions& o, std::ostream& out) {
             text += fmt::format("; chi-squared {:.4g}, p = {:.3g}\n", friedman->statistic, friedman->p_value);
         }
     }
+    if (!o.plots.empty()) plot(o.store, o.plots);
     out << text;
     return 0;
 }

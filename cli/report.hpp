@@ -8,6 +8,7 @@ namespace pride::cli {
 struct ReportOptions {
     std::string store;
     std::string format = "md";  // md, csv or latex
+    std::string plots;          // a folder for the figures (python3-matplotlib), or empty
 };
 int report_command(const ReportOptions& o, std::ostream& out);
 

@@ -1,0 +1,114 @@
+#!/usr/bin/python3
+"""Plots of a campaign store written by `pride bench` (called by `pride report --plots DIR`).
+
+For every problem: the convergence of each algorithm (median and interquartile band over the
+seeds of the best value after each iteration, against evaluations when recorded), boxplots of
+the final values, and for grid problems the best path of each algorithm on the map. Each figure
+is written as PNG and SVG.
+
+Usage: plot_campaign.py STORE DIR
+"""
+import json
+import os
+import re
+import sqlite3
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read_map(path):
+    """Moving AI .map or 0/1 matrix, as a boolean array (True = blocked); pride has checked it."""
+    with open(path, encoding="utf-8-sig") as f:
+        lines = [line.rstrip("\r\n").rstrip() for line in f]
+    lines = [line for line in lines if line.strip()]
+    if lines[0].startswith("type"):
+        rows = lines[4:]
+        return np.array([[c in "@OTW" for c in row] for row in rows])
+    rows = [row.split() if " " in row or "\t" in row else list(row) for row in lines]
+    return np.array([[c == "1" for c in row] for row in rows])
+
+
+def safe(name):
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name)
+
+
+def save(fig, folder, stem):
+    for ext in ("png", "svg"):
+        fig.savefig(os.path.join(folder, f"{stem}.{ext}"), dpi=120, bbox_inches="tight")
+    plt.close(fig)
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: plot_campaign.py STORE DIR")
+    store, folder = sys.argv[1], sys.argv[2]
+    db = sqlite3.connect(f"file:{store}?mode=ro", uri=True)
+    problems = {row[0]: row[1:] for row in db.execute("SELECT id, type, map, start, goal FROM problems")}
+    runs = db.execute(
+        "SELECT problem, algorithm, seed, best, solution, history, history_evaluations FROM runs "
+        "ORDER BY problem, algorithm, seed").fetchall()
+    by_problem = {}
+    for problem, algorithm, seed, best, solution, history, history_evaluations in runs:
+        by_problem.setdefault(problem, {}).setdefault(algorithm, []).append(
+            (seed, best, json.loads(solution), json.loads(history), json.loads(history_evaluations)))
+    for problem, algorithms in by_problem.items():
+        stem = safe(problem)
+        # Convergence: median and interquartile band of the best value after each iteration.
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        positive, smallest, largest = True, np.inf, 0.0
+        for algorithm, rs in sorted(algorithms.items()):
+            length = min(len(r[3]) for r in rs)
+            values = np.array([[np.inf if v is None else v for v in r[3][:length]] for r in rs], dtype=float)
+            x = np.array(rs[0][4][:length], dtype=float) if rs[0][4] else np.arange(length)
+            median = np.median(values, axis=0)
+            low, high = np.percentile(values, 25, axis=0), np.percentile(values, 75, axis=0)
+            finite = values[np.isfinite(values)]
+            positive = positive and bool(np.all(finite > 0))
+            if finite.size:
+                smallest, largest = min(smallest, finite.min()), max(largest, finite.max())
+            ax.plot(x, median, label=algorithm)
+            ax.fill_between(x, low, high, alpha=0.25)
+        ax.set_xlabel("evaluations" if all(rs[0][4] for rs in algorithms.values()) else "iteration")
+        ax.set_ylabel("best value (median, IQR band)")
+        if positive and largest > 10 * smallest:  # a log scale only where values span decades
+            ax.set_yscale("log")
+        ax.set_title(problem)
+        ax.legend()
+        save(fig, folder, f"{stem}-convergence")
+        # Final values.
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        names = sorted(algorithms)
+        ax.boxplot([[r[1] for r in algorithms[a] if r[1] is not None] or [np.nan] for a in names], labels=names)
+        ax.set_ylabel("final best value")
+        ax.set_title(problem)
+        save(fig, folder, f"{stem}-final")
+        # Grid problems: each algorithm's best path on the map.
+        info = problems.get(problem)
+        if info and info[0] == "grid" and info[1] and os.path.exists(info[1]):
+            blocked = read_map(info[1])
+            fig, ax = plt.subplots(figsize=(6.4, 6.4 * blocked.shape[0] / blocked.shape[1]))
+            ax.imshow(blocked, cmap="Greys", vmin=0, vmax=1.4, origin="upper",
+                      extent=(-0.5, blocked.shape[1] - 0.5, blocked.shape[0] - 0.5, -0.5))
+            for algorithm in names:
+                feasible = [r for r in algorithms[algorithm] if r[1] is not None and r[2]]
+                if not feasible:
+                    continue
+                best = min(feasible, key=lambda r: r[1])
+                path = np.array(best[2])
+                ax.plot(path[:, 0], path[:, 1], linewidth=2, label=f"{algorithm} ({best[1]:.4g}, seed {best[0]})")
+            sx, sy = map(int, info[2].split(","))
+            gx, gy = map(int, info[3].split(","))
+            ax.plot([sx], [sy], "o", color="green", markersize=8)
+            ax.plot([gx], [gy], "o", color="red", markersize=8)
+            ax.set_title(f"{problem}: best path of each algorithm")
+            ax.legend(fontsize="small", loc="best")
+            save(fig, folder, f"{stem}-paths")
+
+
+if __name__ == "__main__":
+    main()
