@@ -293,7 +293,7 @@ RunRecord run_one(const Campaign& c, const ProblemSpec& p, const AlgorithmSpec& 
         r.optimum = run.optimum;
         r.solution = json_cells(run.path);
         r.history = json_array(run.history);
-        r.history_evaluations = "[]";
+        r.history_evaluations = json_integers(run.history_evaluations);
         return r;
     }
     const auto problem = continuous::make_problem(p.type, p.dim);
@@ -337,8 +337,8 @@ class Store {
             "wall_ms REAL NOT NULL, optimum REAL, solution TEXT NOT NULL, history TEXT NOT NULL, "
             "history_evaluations TEXT NOT NULL, UNIQUE (problem, algorithm, seed))");
         exec(
-            "CREATE TABLE IF NOT EXISTS problems (id TEXT PRIMARY KEY, type TEXT NOT NULL, map TEXT, start TEXT, "
-            "goal TEXT)");
+            "CREATE TABLE IF NOT EXISTS problems (id TEXT PRIMARY KEY, type TEXT NOT NULL, dim INTEGER NOT NULL, "
+            "map TEXT, start TEXT, goal TEXT)");
     }
     ~Store() { sqlite3_close(db_); }
     Store(const Store&) = delete;
@@ -365,13 +365,14 @@ class Store {
         step_done(s);
         // The problems as resolved here (map paths made absolute), for reports and plots.
         for (const auto& p : c.problems) {
-            s = prepare("INSERT INTO problems (id, type, map, start, goal) VALUES (?, ?, ?, ?, ?)");
+            s = prepare("INSERT INTO problems (id, type, dim, map, start, goal) VALUES (?, ?, ?, ?, ?, ?)");
             const std::string map = p.map.empty() ? "" : std::filesystem::absolute(p.map).string();
             sqlite3_bind_text(s, 1, p.id.c_str(), -1, SQLITE_TRANSIENT);
             sqlite3_bind_text(s, 2, p.type.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_text(s, 3, map.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_text(s, 4, p.start.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_text(s, 5, p.goal.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_int64(s, 3, p.type == "grid" ? 2 : p.dim);  // grids: the plane
+            sqlite3_bind_text(s, 4, map.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 5, p.start.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 6, p.goal.c_str(), -1, SQLITE_TRANSIENT);
             step_done(s);
         }
         exec("COMMIT");

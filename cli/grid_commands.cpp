@@ -85,6 +85,7 @@ void run_encoded(const PathOptions& o, const GridProblem<Objective>& problem, En
     run.iterations = r.iterations;
     run.wall_ms = r.wall_ms;
     run.history = r.history;
+    run.history_evaluations = r.history_evaluations;
 }
 
 template <class Objective, template <class> class Encoding>
@@ -152,6 +153,7 @@ PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map
         run.iterations = r.iterations;
         run.wall_ms = r.wall_ms;
         run.history = r.history;
+        run.history_evaluations = r.history_evaluations;
     } else {
         throw InputError("--encoding: unknown encoding '" + o.encoding + "' (line, free or chain)");
     }

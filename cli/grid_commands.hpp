@@ -47,6 +47,7 @@ struct PathRun {
     std::int64_t iterations = 0;
     double wall_ms = 0.0;
     std::vector<double> history;
+    std::vector<std::int64_t> history_evaluations;
     std::optional<double> optimum;  // with o.oracle (or algo exact)
     grid::Path optimal_path;
 };

@@ -9,6 +9,7 @@
 
 #include "cli/campaign.hpp"
 #include "cli/commands.hpp"
+#include "cli/export.hpp"
 #include "cli/grid_commands.hpp"
 #include "cli/report.hpp"
 #include "framework/error.hpp"
@@ -86,6 +87,11 @@ int main(int argc, char** argv) {
     report_cmd->add_option("--format", report.format, "md (default), csv or latex");
     report_cmd->add_option("--plots", report.plots, "write convergence, final-value and path figures (PNG, SVG) here");
 
+    ExportOptions exporting;
+    auto* export_cmd = app.add_subcommand("export", "a campaign store as IOHprofiler files (IOHanalyzer)");
+    export_cmd->add_option("store", exporting.store, "the SQLite store written by pride bench")->required();
+    export_cmd->add_option("--ioh", exporting.ioh, "the folder to write")->required();
+
     bool list_json = false;
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
     list_cmd->add_flag("--json", list_json, "print one JSON object");
@@ -96,7 +102,7 @@ int main(int argc, char** argv) {
                                                    [&](const CLI::App* s) { return s->get_name() == argv[1]; });
         if (argc > 1 && argv[1][0] != '-' && !known)
             throw pride::InputError(std::string("unknown subcommand '") + argv[1] +
-                                    "' (expected run, eval, list, path, scen, bench or report)");
+                                    "' (expected run, eval, list, path, scen, bench, report or export)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
@@ -105,6 +111,7 @@ int main(int argc, char** argv) {
         if (*scen_cmd) return scen_command(scen, std::cout);
         if (*bench_cmd) return bench_command(bench, std::cout);
         if (*report_cmd) return report_command(report, std::cout);
+        if (*export_cmd) return export_command(exporting, std::cout);
         return 2;
     } catch (const CLI::Success& e) {
         return app.exit(e);

@@ -1,0 +1,80 @@
+// `pride export STORE --ioh DIR`: IOHprofiler .info/.dat files from a real campaign store.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "tests/cli_runner.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string slurp(const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+}  // namespace
+
+TEST_CASE("export: IOHprofiler files, one folder per algorithm, one block per run", "[export]") {
+    const fs::path dir = fs::temp_directory_path() / ("pride-ioh-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        std::ofstream f(dir / "c.toml");
+        f << "name = \"ioh\"\nseeds = 3\n[budget]\nevaluations = 200\n"
+             "[[problem]]\nid = \"sphere5\"\ntype = \"sphere\"\ndim = 5\n"
+             "[[problem]]\nid = \"ackley3\"\ntype = \"ackley\"\ndim = 3\n"
+             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 20\n"
+             "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 20\n";
+    }
+    REQUIRE(pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --jobs 2").status == 0);
+    const auto r =
+        pride::test::run_pride("export '" + (dir / "c.sqlite").string() + "' --ioh '" + (dir / "ioh").string() + "'");
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("8 IOHprofiler files") != std::string::npos);
+    for (const char* algorithm : {"pso", "ga"}) {
+        const fs::path a = dir / "ioh" / algorithm;
+        const std::string info = slurp(a / "IOHprofiler_f1_sphere5.info");
+        CHECK(info.find("funcId = 1, funcName = 'sphere5', DIM = 5, maximization = 'F', algId = '" +
+                        std::string(algorithm) + "'") != std::string::npos);
+        CHECK(info.find("data_f1_sphere5/IOHprofiler_f1_DIM5.dat, 1:200|") != std::string::npos);
+        CHECK(info.find(", 3:200|") != std::string::npos);
+        const std::string dat = slurp(a / "data_f1_sphere5" / "IOHprofiler_f1_DIM5.dat");
+        std::size_t headers = 0;
+        for (std::size_t at = dat.find("\"function evaluation\""); at != std::string::npos;
+             at = dat.find("\"function evaluation\"", at + 1))
+            ++headers;
+        CHECK(headers == 3);  // one block per seed
+        // Evaluation counts increase within a block and the best-so-far never rises.
+        std::istringstream in(dat);
+        std::string line;
+        long last_evals = 0;
+        double last_best = 1e300;
+        while (std::getline(in, line)) {
+            if (line.rfind("\"function", 0) == 0) {
+                last_evals = 0;
+                last_best = 1e300;
+                continue;
+            }
+            std::istringstream fields(line);
+            long evals = 0;
+            double current = 0, best = 0;
+            fields >> evals >> current >> best;
+            CHECK(evals > last_evals);
+            CHECK(best <= last_best);
+            last_evals = evals;
+            last_best = best;
+        }
+        CHECK(fs::exists(a / "IOHprofiler_f2_ackley3.info"));
+        CHECK(fs::exists(a / "data_f2_ackley3" / "IOHprofiler_f2_DIM3.dat"));
+    }
+    const auto missing =
+        pride::test::run_pride("export '" + (dir / "none.sqlite").string() + "' --ioh '" + (dir / "x").string() + "'");
+    CHECK(missing.status == 2);
+    fs::remove_all(dir);
+}
