@@ -93,6 +93,21 @@ std::string num(double v) {
     return std::isfinite(v) ? fmt::format("{:.6g}", v) : "inf";
 }
 
+/// A CSV field, quoted as RFC 4180 says when it holds a comma, a quote or a line break.
+std::string csv(const std::string& s) {
+    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+    std::string out = "\"";
+    for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+/// Text for a markdown table cell: a | would start a new column.
+std::string markdown(const std::string& s) {
+    std::string out;
+    for (const char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
+    return out;
+}
+
 /// Text for a LaTeX table cell: the characters LaTeX treats specially are escaped.
 std::string latex(const std::string& s) {
     std::string out;
@@ -166,7 +181,11 @@ int report_command(const ReportOptions& o, std::ostream& out) {
                 double gap = 0, success = 0;
                 for (double v : c.best) {
                     const bool at = std::abs(v - *c.optimum) <= 1e-9 * std::max(1.0, std::abs(*c.optimum));
-                    gap += at ? 0.0 : (*c.optimum != 0 ? (v - *c.optimum) / std::abs(*c.optimum) : v);
+                    // gap = (value - optimum) / optimum, as pride path reports it: infinite when the
+                    // optimum is 0 and the value is not.
+                    gap += at ? 0.0
+                              : (*c.optimum != 0 ? (v - *c.optimum) / std::abs(*c.optimum)
+                                                 : std::numeric_limits<double>::infinity());
                     success += at ? 1.0 : 0.0;
                 }
                 r.gap = gap / static_cast<double>(r.runs);
@@ -206,8 +225,8 @@ int report_command(const ReportOptions& o, std::ostream& out) {
             "problem,algorithm,runs,min,mean,std,median,max,mean_wall_ms,mean_evaluations,optimum,mean_gap,success,"
             "p_holm_vs_best,best\n";
         for (const auto& r : rows)
-            text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.problem, r.algorithm, r.runs,
-                                num(r.min), num(r.mean), num(r.std), num(r.median), num(r.max), num(r.wall),
+            text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", csv(r.problem), csv(r.algorithm),
+                                r.runs, num(r.min), num(r.mean), num(r.std), num(r.median), num(r.max), num(r.wall),
                                 num(r.evaluations), r.optimum ? num(*r.optimum) : "", r.gap ? num(*r.gap) : "",
                                 r.success ? num(*r.success) : "", r.p_holm ? num(*r.p_holm) : "", r.best ? 1 : 0);
     } else {
@@ -215,7 +234,8 @@ int report_command(const ReportOptions& o, std::ostream& out) {
         const std::string sep = md ? " | " : " & ", end = md ? " |\n" : " \\\\\n", begin = md ? "| " : "";
         auto line = [&](const std::vector<std::string>& cols) {
             std::string s = begin;
-            for (std::size_t i = 0; i < cols.size(); ++i) s += (i ? sep : "") + (md ? cols[i] : latex(cols[i]));
+            for (std::size_t i = 0; i < cols.size(); ++i)
+                s += (i ? sep : "") + (md ? markdown(cols[i]) : latex(cols[i]));
             return s + end;
         };
         const std::vector<std::string> head{"problem", "algorithm", "runs",    "min", "mean",    "std",

@@ -206,11 +206,17 @@ void check_one_line_error(const Outcome& r, const std::vector<std::string>& word
 // ---------------------------------------------------------------------------------------------
 // Reading the stores (read-only)
 
+/// A connection that never writes. `live`: read-only, for a store that pride may be writing or was
+/// killed writing (it leaves the journal as it finds it; note that a read-only connection creates
+/// the -wal and -shm files when they are missing, and leaves them). Otherwise opened read-write
+/// (never created) on a store that pride has closed: closing removes the empty journal again, so the
+/// folder's listing stays what pride left.
 class Db {
   public:
-    /// Opens read-only; ok() is false when the file is not there or cannot be opened.
-    explicit Db(const std::string& path) {
-        if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+    /// ok() is false when the file is not there or cannot be opened.
+    explicit Db(const std::string& path, bool live = false) {
+        const int flags = live ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE;
+        if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
             sqlite3_close(db_);
             db_ = nullptr;
             return;
@@ -267,7 +273,7 @@ class Db {
 /// The number of stored runs, or -1 while the store or its table does not exist yet.
 long long count_runs(const std::string& store) {
     if (!fs::exists(store)) return -1;
-    Db db(store);
+    Db db(store, true);
     const auto rows = db.query("SELECT count(*) FROM runs");
     if (!rows || rows->size() != 1) return -1;
     return std::stoll((*rows)[0][0].substr(2));
@@ -296,8 +302,8 @@ void check_same_runs(const std::vector<std::vector<std::string>>& a, const std::
 }
 
 /// The distinct (problem, algorithm, seed) keys stored, to be compared with the row count.
-std::size_t distinct_keys(const std::string& store) {
-    Db db(store);
+std::size_t distinct_keys(const std::string& store, bool live = false) {
+    Db db(store, live);
     const auto rows = db.query("SELECT DISTINCT problem, algorithm, seed FROM runs");
     REQUIRE(rows);
     return rows->size();
@@ -592,7 +598,7 @@ long long bench_and_kill(const std::string& config, const std::string& store, lo
     INFO("killed after " << seen << " runs were seen; the store holds " << left);
     CHECK(left >= at_least);
     REQUIRE(left < kResumeRuns);  // killed half-way: the rest is for the resumed run
-    CHECK(static_cast<long long>(distinct_keys(store)) == left);
+    CHECK(static_cast<long long>(distinct_keys(store, true)) == left);
     return left;
 }
 
@@ -709,13 +715,17 @@ TEST_CASE("bench: algorithms on problems they cannot solve are refused up front"
     expect_campaign_error(replace(line_then_chain, "type = \"ga\"", "type = \"pso\""), {"FILE:18:", "pso", "chain"});
 }
 
-TEST_CASE("bench: --jobs 0 is refused before anything is written", "[cli][bench][errors]") {
+TEST_CASE("bench: --jobs 0 and an impossible store are refused before anything is written", "[cli][bench][errors]") {
     expect_campaign_error(kContinuous, {"--jobs"}, {"--jobs", "0"});
     expect_campaign_error(kContinuous, {"--jobs"}, {"--jobs", "-2"});
     const TempDir dir;
     const std::string file = dir.write("c.toml", kContinuous);
     const Outcome r = run({"bench", file, "--jobs", "0", "--out", dir.file("s.sqlite")});
     check_one_line_error(r, {"--jobs"});
+    CHECK(dir.entries() == std::vector<std::string>{"c.toml"});
+    // a store that cannot be created is named too
+    const std::string nowhere = dir.file("no-such-folder/s.sqlite");
+    check_one_line_error(run({"bench", file, "--jobs", "1", "--out", nowhere}), {nowhere});
     CHECK(dir.entries() == std::vector<std::string>{"c.toml"});
 }
 
@@ -833,6 +843,10 @@ TEST_CASE("bench: --jobs 1 and --jobs 2 store the same grid runs, with legal pat
         CHECK(best >= optimum - 1e-9);
         if (text_of(row[1]) == "exact") CHECK(std::abs(best - optimum) <= 1e-9);
         const auto history = numbers(parse_json(text_of(row[9])));
+        if (text_of(row[1]) == "exact") {
+            CHECK(integer_of(row[6]) == 0);  // no iterations: the history may be empty
+            if (history.empty()) continue;
+        }
         REQUIRE(!history.empty());
         CHECK(history.back() == best);
         for (std::size_t i = 1; i < history.size(); ++i) CHECK(history[i] <= history[i - 1]);
@@ -860,7 +874,8 @@ TEST_CASE("bench: a campaign killed with SIGKILL resumes with no run lost or run
     const auto reference = runs_of(reference_store);
     REQUIRE(static_cast<long long>(reference.size()) == kResumeRuns);
 
-    SECTION("killed early, resumed to the end") {
+    {
+        INFO("killed early, resumed to the end");
         const std::string store = dir.file("early.sqlite");
         const long long left = bench_and_kill(config, store, 3, dir);
         check_summary(bench_ok({"bench", config, "--jobs", "2", "--out", store}), kResumeRuns - left, left,
@@ -869,7 +884,8 @@ TEST_CASE("bench: a campaign killed with SIGKILL resumes with no run lost or run
         CHECK(count_runs(store) == kResumeRuns);
         CHECK(static_cast<long long>(distinct_keys(store)) == kResumeRuns);
     }
-    SECTION("killed half-way, killed again while resuming, resumed to the end") {
+    {
+        INFO("killed half-way, killed again while resuming, resumed to the end");
         const std::string store = dir.file("late.sqlite");
         const long long first = bench_and_kill(config, store, kResumeRuns / 2, dir);
         const long long second = bench_and_kill(config, store, std::max(first + 5, kResumeRuns * 3 / 4), dir);
