@@ -263,10 +263,22 @@ Campaign read_campaign(const std::string& path) {
                 if (a.type == "astar" || a.type == "exact") {
                     require(grid, "algorithm '" + a.id + "'",
                             a.type + " works on grid problems only (problem '" + p.id + "')");
+                    require(a.params.empty(), "algorithm '" + a.id + "'",
+                            a.type + " takes no parameters, got '" +
+                                (a.params.empty() ? "" : a.params.front().substr(0, a.params.front().find('='))) + "'");
                 } else if (grid && p.encoding == "chain") {
                     with_chain_algorithm(a.type, params, [](const auto&) { return 0; });
                 } else {
                     with_algorithm(a.type, params, [](const auto&) { return 0; });
+                }
+                if (grid) {  // what only a run of this pair would otherwise find out
+                    PathOptions o = grid_options(c, p, a, 1);
+                    o.oracle = o.objective != "iqga";
+                    try {
+                        check_path_options(o);
+                    } catch (const InputError& e) {
+                        throw InputError("problem '" + p.id + "': " + e.what());
+                    }
                 }
             }
         } catch (const InputError& e) {
@@ -326,6 +338,24 @@ class Store {
             throw InputError(path + ": cannot open the store: " + why);
         }
         sqlite3_busy_timeout(db_, 10000);
+        // Never take over another application's database: a store has a campaign table or no table.
+        bool foreign = false;
+        try {
+            sqlite3_stmt* s = prepare(
+                "SELECT (SELECT COUNT(*) FROM sqlite_master WHERE type = 'table'), "
+                "(SELECT COUNT(*) FROM sqlite_master WHERE type = 'table' AND name = 'campaign')");
+            if (sqlite3_step(s) == SQLITE_ROW) foreign = sqlite3_column_int(s, 0) > 0 && sqlite3_column_int(s, 1) == 0;
+            sqlite3_finalize(s);
+        } catch (...) {  // not a database at all
+            sqlite3_close(db_);
+            db_ = nullptr;
+            throw;
+        }
+        if (foreign) {
+            sqlite3_close(db_);
+            db_ = nullptr;
+            throw InputError(path + ": is not a pride store (an SQLite database with other tables); use another --out");
+        }
         exec("PRAGMA journal_mode=WAL");
         exec("PRAGMA synchronous=NORMAL");
         exec(

@@ -189,15 +189,36 @@ PathRun dispatch_objective(const PathOptions& o, const std::shared_ptr<const Gri
 
 }  // namespace
 
-namespace {
-std::shared_ptr<const GridMap> load_for(const PathOptions& o) {
+void check_path_options(const PathOptions& o) {
+    const bool box_algorithm = o.algo != "astar" && o.algo != "exact";
+    const bool additive = o.objective != "iqga";
+    require(o.objective == "cells" || o.objective == "length" || o.objective == "weighted" || o.objective == "iqga" ||
+                o.objective == "hswoa",
+            "--objective", "unknown objective '" + o.objective + "' (cells, length, weighted, iqga or hswoa)");
+    require(o.encoding == "line" || o.encoding == "free" || o.encoding == "chain", "--encoding",
+            "unknown encoding '" + o.encoding + "' (line, free or chain)");
+    require(o.connector == "repair" || o.connector == "penalty", "--connector",
+            "unknown connector '" + o.connector + "' (penalty or repair)");
+    require(o.encoding != "chain" || o.connector == "repair", "--connector",
+            "chains need no connector: every operator keeps them legal");
+    require(o.waypoints >= 1 && o.waypoints <= 1000, "--waypoints", "must be in [1, 1000]");
     require(o.init == "uniform" || o.init == "walk", "--init", "expected uniform or walk, got '" + o.init + "'");
     require(o.init == "uniform" || o.encoding == "line" || o.encoding == "free", "--init walk",
             "only for the line and free encodings (chains always start from walks)");
+    require(o.init == "uniform" || o.algo.rfind("nlopt:", 0) != 0, "--init walk",
+            "NLopt algorithms start from one uniform point");
+    require(additive || (o.algo != "exact" && !o.oracle), o.algo == "exact" ? "--algo exact" : "--oracle",
+            "the iqga objective is not a sum of step and turn costs, so it has no exact oracle");
+    require(box_algorithm || o.params.empty(), "--param", o.algo + " takes no parameters");
     require(!o.weights || o.objective == "weighted", "--weights", "only for --objective weighted");
     require(!o.lambda || o.objective == "hswoa", "--lambda", "only for --objective hswoa");
     require(o.seed >= 0, "--seed", "must be >= 0, got " + std::to_string(o.seed));
     require(o.inflate >= 0 && o.inflate <= 1000, "--inflate", "must be in [0, 1000], got " + std::to_string(o.inflate));
+}
+
+namespace {
+std::shared_ptr<const GridMap> load_for(const PathOptions& o) {
+    check_path_options(o);
     GridMap loaded = read_map(o.map);
     if (o.inflate > 0) loaded = loaded.inflated(static_cast<int>(o.inflate));
     return std::make_shared<const GridMap>(std::move(loaded));

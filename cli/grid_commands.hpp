@@ -52,6 +52,9 @@ struct PathRun {
     grid::Path optimal_path;
 };
 
+/// Checks the options that need no map (names, combinations, ranges): InputError naming the option.
+void check_path_options(const PathOptions& o);
+
 /// Loads the map and runs `o.algo` on it as `pride path` does (no printing, no pictures).
 PathRun plan_path(const PathOptions& o);
 

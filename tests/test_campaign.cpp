@@ -17,7 +17,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -414,32 +413,40 @@ std::vector<Cell> path_of(const std::string& json) {
 
 // Line numbers matter: the error tests name them.
 const std::string kContinuous =
-    "name = \"e\"\n"          // 1
-    "seeds = 2\n"             // 2
-    "[budget]\n"              // 3
-    "evaluations = 100\n"     // 4
-    "[[problem]]\n"           // 5
-    "id = \"s\"\n"            // 6
-    "type = \"sphere\"\n"     // 7
-    "dim = 2\n"               // 8
-    "[[algorithm]]\n"         // 9
-    "id = \"p\"\n"            // 10
-    "type = \"pso\"\n";       // 11
+    "name = \"e\"\n"       // 1
+    "seeds = 2\n"          // 2
+    "[budget]\n"           // 3
+    "evaluations = 100\n"  // 4
+    "[[problem]]\n"        // 5
+    "id = \"s\"\n"         // 6
+    "type = \"sphere\"\n"  // 7
+    "dim = 2\n"            // 8
+    "[[algorithm]]\n"      // 9
+    "id = \"p\"\n"         // 10
+    "type = \"pso\"\n";    // 11
+
+/// `text` with every @MAP@ replaced by the bundled map's path.
+std::string with_map(std::string text) {
+    const std::string map = bundled_map().string();
+    for (std::size_t at; (at = text.find("@MAP@")) != std::string::npos;) text.replace(at, 5, map);
+    return text;
+}
 
 std::string grid_base() {
-    return "name = \"g\"\n"                                    // 1
-           "seeds = 1\n"                                       // 2
-           "[budget]\n"                                        // 3
-           "iterations = 5\n"                                  // 4
-           "[[problem]]\n"                                     // 5
-           "id = \"g1\"\n"                                     // 6
-           "type = \"grid\"\n"                                 // 7
-           "map = '" + bundled_map().string() + "'\n"          // 8
-           "start = [0, 0]\n"                                  // 9
-           "goal = [9, 9]\n"                                   // 10
-           "[[algorithm]]\n"                                   // 11
-           "id = \"a\"\n"                                      // 12
-           "type = \"ga\"\n";                                  // 13
+    return with_map(
+        "name = \"g\"\n"     // 1
+        "seeds = 1\n"        // 2
+        "[budget]\n"         // 3
+        "iterations = 5\n"   // 4
+        "[[problem]]\n"      // 5
+        "id = \"g1\"\n"      // 6
+        "type = \"grid\"\n"  // 7
+        "map = '@MAP@'\n"    // 8
+        "start = [0, 0]\n"   // 9
+        "goal = [9, 9]\n"    // 10
+        "[[algorithm]]\n"    // 11
+        "id = \"a\"\n"       // 12
+        "type = \"ga\"\n");  // 13
 }
 
 /// `pride bench FILE [extra]` on `text` fails with one line naming each of `words` (FILE stands for
@@ -493,38 +500,38 @@ constexpr std::size_t kSmallContinuousRuns = 2 * 4 * 3;
 // A grid campaign on the bundled 10x10 map: the line encoding under `cells`, the chain encoding
 // under `length`; two GAs and the exact optimum; 3 seeds.
 std::string small_grid() {
-    const std::string map = bundled_map().string();
-    return "name = \"small grid\"\n"
-           "seeds = 3\n"
-           "[budget]\n"
-           "iterations = 15\n"
-           "[[problem]]\n"
-           "id = \"line-cells\"\n"
-           "type = \"grid\"\n"
-           "map = '" + map + "'\n"
-           "start = [0, 0]\n"
-           "goal = [9, 9]\n"
-           "objective = \"cells\"\n"
-           "encoding = \"line\"\n"
-           "[[problem]]\n"
-           "id = \"chain-length\"\n"
-           "type = \"grid\"\n"
-           "map = '" + map + "'\n"
-           "start = [0, 9]\n"
-           "goal = [9, 0]\n"
-           "objective = \"length\"\n"
-           "encoding = \"chain\"\n"
-           "[[algorithm]]\n"
-           "id = \"ga\"\n"
-           "type = \"ga\"\n"
-           "pop = 10\n"
-           "[[algorithm]]\n"
-           "id = \"ga-plus\"\n"
-           "type = \"ga-plus\"\n"
-           "pop = 10\n"
-           "[[algorithm]]\n"
-           "id = \"exact\"\n"
-           "type = \"exact\"\n";
+    return with_map(
+        "name = \"small grid\"\n"
+        "seeds = 3\n"
+        "[budget]\n"
+        "iterations = 15\n"
+        "[[problem]]\n"
+        "id = \"line-cells\"\n"
+        "type = \"grid\"\n"
+        "map = '@MAP@'\n"
+        "start = [0, 0]\n"
+        "goal = [9, 9]\n"
+        "objective = \"cells\"\n"
+        "encoding = \"line\"\n"
+        "[[problem]]\n"
+        "id = \"chain-length\"\n"
+        "type = \"grid\"\n"
+        "map = '@MAP@'\n"
+        "start = [0, 9]\n"
+        "goal = [9, 0]\n"
+        "objective = \"length\"\n"
+        "encoding = \"chain\"\n"
+        "[[algorithm]]\n"
+        "id = \"ga\"\n"
+        "type = \"ga\"\n"
+        "pop = 10\n"
+        "[[algorithm]]\n"
+        "id = \"ga-plus\"\n"
+        "type = \"ga-plus\"\n"
+        "pop = 10\n"
+        "[[algorithm]]\n"
+        "id = \"exact\"\n"
+        "type = \"exact\"\n");
 }
 constexpr std::size_t kSmallGridRuns = 2 * 3 * 3;
 
@@ -578,16 +585,15 @@ void check_summary(const std::string& out, long long stored, long long there, lo
 /// Starts `pride bench` into `store`, waits until at least `at_least` runs are stored, kills it with
 /// SIGKILL; returns the number of runs the killed store holds. The child must still be running
 /// when the threshold is reached (the campaign is sized for that), and everything is bounded.
-long long bench_and_kill(const std::string& config, const std::string& store, long long at_least,
-                         const TempDir& io) {
+long long bench_and_kill(const std::string& config, const std::string& store, long long at_least, const TempDir& io) {
     Child child({"bench", config, "--jobs", "2", "--out", store}, io.file("kill-out"), io.file("kill-err"));
     const auto deadline = Clock::now() + 120s;
     long long seen = -1;
     while ((seen = count_runs(store)) < at_least) {
         if (!child.running()) {
             INFO("stderr: " << slurp(io.file("kill-err")));
-            FAIL("pride bench ended (status " << child.exit_status() << ") before " << at_least
-                                              << " runs were stored; " << seen << " were");
+            FAIL("pride bench ended (status " << child.exit_status() << ") before " << at_least << " runs were stored; "
+                                              << seen << " were");
         }
         if (Clock::now() > deadline) FAIL("no " << at_least << " runs stored within 120 s; " << seen << " were");
         std::this_thread::sleep_for(1ms);
@@ -657,8 +663,7 @@ TEST_CASE("bench: missing keys are named", "[cli][bench][errors]") {
 TEST_CASE("bench: out-of-range and mistyped values name the file, line and key", "[cli][bench][errors]") {
     expect_campaign_error(replace(kContinuous, "seeds = 2", "seeds = 0"), {"FILE:2:", "'seeds'"});
     expect_campaign_error(replace(kContinuous, "seeds = 2", "seeds = -3"), {"FILE:2:", "'seeds'"});
-    expect_campaign_error(replace(kContinuous, "evaluations = 100", "evaluations = 0"),
-                          {"FILE:4:", "'evaluations'"});
+    expect_campaign_error(replace(kContinuous, "evaluations = 100", "evaluations = 0"), {"FILE:4:", "'evaluations'"});
     expect_campaign_error(replace(kContinuous, "dim = 2", "dim = 0"), {"FILE:5:", "'s'", "dim"});
     // a string, or a fraction, where a number (an integer) is needed
     expect_campaign_error(replace(kContinuous, "seeds = 2", "seeds = \"2\""), {"FILE:2:", "'seeds'"});
@@ -676,13 +681,11 @@ TEST_CASE("bench: out-of-range and mistyped values name the file, line and key",
 TEST_CASE("bench: duplicate ids name the second one's line", "[cli][bench][errors]") {
     expect_campaign_error(kContinuous + "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 3\n",
                           {"FILE:12:", "'s'", "problem"});
-    expect_campaign_error(kContinuous + "[[algorithm]]\nid = \"p\"\ntype = \"ga\"\n",
-                          {"FILE:12:", "'p'", "algorithm"});
+    expect_campaign_error(kContinuous + "[[algorithm]]\nid = \"p\"\ntype = \"ga\"\n", {"FILE:12:", "'p'", "algorithm"});
 }
 
 TEST_CASE("bench: unknown problems, algorithms and parameters are named", "[cli][bench][errors]") {
-    expect_campaign_error(replace(kContinuous, "\"sphere\"", "\"nosuchproblem\""),
-                          {"FILE:5:", "'s'", "nosuchproblem"});
+    expect_campaign_error(replace(kContinuous, "\"sphere\"", "\"nosuchproblem\""), {"FILE:5:", "'s'", "nosuchproblem"});
     expect_campaign_error(replace(kContinuous, "\"pso\"", "\"nosuchalgo\""), {"FILE:9:", "nosuchalgo"});
     expect_campaign_error(replace(kContinuous, "\"pso\"", "\"nlopt:LN_NOSUCH\""), {"FILE:9:", "LN_NOSUCH"});
     expect_campaign_error(kContinuous + "wibble = 3\n", {"FILE:9:", "'wibble'"});
@@ -878,8 +881,8 @@ TEST_CASE("bench: a campaign killed with SIGKILL resumes with no run lost or run
         INFO("killed early, resumed to the end");
         const std::string store = dir.file("early.sqlite");
         const long long left = bench_and_kill(config, store, 3, dir);
-        check_summary(bench_ok({"bench", config, "--jobs", "2", "--out", store}), kResumeRuns - left, left,
-                      kResumeRuns, store);
+        check_summary(bench_ok({"bench", config, "--jobs", "2", "--out", store}), kResumeRuns - left, left, kResumeRuns,
+                      store);
         check_same_runs(runs_of(store), reference);
         CHECK(count_runs(store) == kResumeRuns);
         CHECK(static_cast<long long>(distinct_keys(store)) == kResumeRuns);
@@ -950,4 +953,35 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
 
     // The campaign itself still finds its store intact: nothing to do.
     check_summary(bench_ok({"bench", config, "--jobs", "1"}), 0, kSmallContinuousRuns, kSmallContinuousRuns, store);
+}
+
+TEST_CASE("bench: grid options that only a run would reject are refused up front", "[cli][bench][errors]") {
+    const std::string g = grid_base();
+    auto with = [&](const std::string& lines) { return replace(g, "goal = [9, 9]\n", "goal = [9, 9]\n" + lines); };
+    expect_campaign_error(with("encoding = \"nosuch\"\n"), {"FILE:5:", "'g1'", "nosuch"});
+    expect_campaign_error(with("encoding = \"chain\"\nconnector = \"penalty\"\n"), {"FILE:5:", "'g1'", "connector"});
+    expect_campaign_error(with("encoding = \"free\"\nwaypoints = 0\n"), {"FILE:5:", "'g1'", "waypoints"});
+    expect_campaign_error(replace(with("init = \"walk\"\n"), "type = \"ga\"", "type = \"nlopt:LN_SBPLX\""),
+                          {"FILE:", "walk"});
+    expect_campaign_error(replace(with("objective = \"iqga\"\n"), "type = \"ga\"", "type = \"exact\""),
+                          {"FILE:", "exact", "iqga"});
+    expect_campaign_error(replace(g + "wibble = 3\n", "type = \"ga\"", "type = \"exact\""), {"FILE:11:", "'wibble'"});
+    expect_campaign_error(g + "[[algorithm]]\nid = \"b\"\ntype = \"astar\"\npop = 20\n", {"FILE:14:", "pop"});
+}
+
+TEST_CASE("bench: an SQLite database that is not a pride store is refused and left untouched", "[cli][bench][errors]") {
+    const TempDir dir;
+    const std::string config = dir.write("c.toml", kContinuous);
+    const std::string foreign = dir.file("notes.db");
+    {
+        sqlite3* db = nullptr;
+        REQUIRE(sqlite3_open(foreign.c_str(), &db) == SQLITE_OK);
+        REQUIRE(sqlite3_exec(db, "CREATE TABLE notes (t TEXT); INSERT INTO notes VALUES ('hello')", nullptr, nullptr,
+                             nullptr) == SQLITE_OK);
+        sqlite3_close(db);
+    }
+    const std::string bytes = slurp(foreign);
+    check_one_line_error(run({"bench", config, "--jobs", "1", "--out", foreign}), {foreign});
+    CHECK(slurp(foreign) == bytes);
+    CHECK(dir.entries() == std::vector<std::string>{"c.toml", "notes.db"});
 }
