@@ -28,6 +28,10 @@
 #include "framework/params.hpp"
 #include "problems/continuous/catalog.hpp"
 
+#ifdef PRIDE_HAVE_MPI
+#include <mpi.h>
+#endif
+
 namespace pride::cli {
 namespace {
 
@@ -477,22 +481,157 @@ struct Task {
 
 }  // namespace
 
+namespace {
+
+/// Every (problem, algorithm, seed) of the campaign, in a fixed order that every process shares.
+std::vector<Task> all_tasks(const Campaign& c) {
+    std::vector<Task> tasks;
+    for (const auto& p : c.problems)
+        for (const auto& a : c.algorithms)
+            for (std::int64_t seed = 1; seed <= c.seeds; ++seed) tasks.push_back({&p, &a, seed});
+    return tasks;
+}
+
+std::string default_store(const BenchOptions& o) {
+    return o.out.empty() ? std::filesystem::path(o.config).replace_extension(".sqlite").string() : o.out;
+}
+
+#ifdef PRIDE_HAVE_MPI
+// Runs spread over MPI ranks: rank 0 owns the store and hands out task numbers; the other ranks
+// run them and send the records back. Values equal those of a threaded run: a run depends only
+// on its task.
+constexpr int kTagResult = 1, kTagTask = 2;
+constexpr char kSep = '\x1f';
+
+std::string serialise(const RunRecord& r) {
+    return fmt::format("{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}", kSep,
+                       r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations,
+                       r.wall_ms, r.optimum ? fmt::format("{:.17g}", *r.optimum) : "", r.solution, r.history,
+                       r.history_evaluations);
+}
+
+RunRecord deserialise(const std::string& text) {
+    std::vector<std::string> f;
+    for (std::size_t start = 0;;) {
+        const std::size_t end = text.find(kSep, start);
+        f.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
+        if (end == std::string::npos) break;
+        start = end + 1;
+    }
+    if (f.size() != 12) throw std::runtime_error("MPI: a malformed run record");
+    RunRecord r;
+    r.problem = f[0];
+    r.algorithm = f[1];
+    r.seed = std::stoll(f[2]);
+    r.feasible = f[3] == "1";
+    r.best = std::stod(f[4]);
+    r.evaluations = std::stoll(f[5]);
+    r.iterations = std::stoll(f[6]);
+    r.wall_ms = std::stod(f[7]);
+    if (!f[8].empty()) r.optimum = std::stod(f[8]);
+    r.solution = f[9];
+    r.history = f[10];
+    r.history_evaluations = f[11];
+    return r;
+}
+
+int bench_mpi(const BenchOptions& o, std::ostream& out, const Campaign& c, int rank, int size) {
+    const std::vector<Task> tasks = all_tasks(c);
+    if (rank != 0) {
+        std::string payload;  // empty: "ready"; "!..." a failure; else a record
+        for (;;) {
+            MPI_Send(payload.data(), static_cast<int>(payload.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+            long long index = -1;
+            MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            if (index < 0) return 0;
+            try {
+                const Task& t = tasks[static_cast<std::size_t>(index)];
+                payload = serialise(run_one(c, *t.problem, *t.algorithm, t.seed));
+            } catch (const std::exception& e) {
+                payload = std::string("!") + e.what();
+            }
+        }
+    }
+    std::exception_ptr failure;
+    std::vector<long long> pending;
+    std::size_t already = 0, stored = 0;
+    std::optional<Store> store;
+    const std::string store_path = default_store(o);
+    try {
+        store.emplace(store_path);
+        store->claim(c);
+        const auto done = store->done();
+        already = done.size();
+        for (std::size_t i = tasks.size(); i-- > 0;)
+            if (!done.count({tasks[i].problem->id, tasks[i].algorithm->id, tasks[i].seed}))
+                pending.push_back(static_cast<long long>(i));  // taken from the back: in task order
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    for (int active = size - 1; active > 0;) {
+        MPI_Status status;
+        MPI_Probe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &status);
+        int length = 0;
+        MPI_Get_count(&status, MPI_CHAR, &length);
+        std::string payload(static_cast<std::size_t>(length), '\0');
+        MPI_Recv(payload.data(), length, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (!payload.empty() && !failure) {
+            try {
+                if (payload.front() == '!') throw InputError(payload.substr(1));
+                store->insert(deserialise(payload));
+                ++stored;
+            } catch (...) {
+                failure = std::current_exception();
+            }
+        }
+        long long next = -1;
+        if (!failure && !pending.empty()) {
+            next = pending.back();
+            pending.pop_back();
+        }
+        MPI_Send(&next, 1, MPI_LONG_LONG, status.MPI_SOURCE, kTagTask, MPI_COMM_WORLD);
+        if (next < 0) --active;
+    }
+    if (failure) std::rethrow_exception(failure);
+    out << fmt::format("{}: {} runs stored in {} ({} were there already, {} in all; {} MPI ranks)\n", c.name, stored,
+                       store_path, already, tasks.size(), size);
+    return 0;
+}
+#endif
+
+}  // namespace
+
 int bench_command(const BenchOptions& o, std::ostream& out) {
+#ifdef PRIDE_HAVE_MPI
+    int initialised = 0;
+    MPI_Initialized(&initialised);
+    if (!initialised) MPI_Init(nullptr, nullptr);
+    struct Finalise {
+        ~Finalise() {
+            int finalised = 0;
+            MPI_Finalized(&finalised);
+            if (!finalised) MPI_Finalize();
+        }
+    } finalise;
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    if (size > 1) {
+        const Campaign c = read_campaign(o.config);  // every rank reads and checks it: the same verdict
+        return bench_mpi(o, out, c, rank, size);
+    }
+#endif
     const Campaign c = read_campaign(o.config);
-    const std::string store_path =
-        o.out.empty() ? std::filesystem::path(o.config).replace_extension(".sqlite").string() : o.out;
+    const std::string store_path = default_store(o);
     const std::int64_t jobs = o.jobs.value_or(std::max(1u, std::thread::hardware_concurrency()));
     require(jobs >= 1 && jobs <= 1024, "--jobs", "must be in [1, 1024], got " + std::to_string(jobs));
     Store store(store_path);
     store.claim(c);
     const auto done = store.done();
 
-    std::vector<Task> tasks;
-    std::size_t total = 0;
-    for (const auto& p : c.problems)
-        for (const auto& a : c.algorithms)
-            for (std::int64_t seed = 1; seed <= c.seeds; ++seed, ++total)
-                if (!done.count({p.id, a.id, seed})) tasks.push_back({&p, &a, seed});
+    std::vector<Task> tasks = all_tasks(c);
+    const std::size_t total = tasks.size();
+    std::erase_if(tasks, [&](const Task& t) { return done.count({t.problem->id, t.algorithm->id, t.seed}) != 0; });
 
     std::mutex mutex;
     std::condition_variable ready;

@@ -1,0 +1,62 @@
+// pride bench under mpirun (built with -DPRIDE_MPI=ON): two local ranks store the same values as
+// a threaded run. Compiled only into MPI builds.
+#ifdef PRIDE_HAVE_MPI
+#include <sqlite3.h>
+#include <unistd.h>
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tests/cli_runner.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+std::vector<std::string> rows(const fs::path& store) {
+    sqlite3* db = nullptr;
+    REQUIRE(sqlite3_open_v2(store.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
+    sqlite3_stmt* s = nullptr;
+    REQUIRE(sqlite3_prepare_v2(db,
+                               "SELECT problem || '|' || algorithm || '|' || seed || '|' || feasible || '|' || "
+                               "quote(best) || '|' || evaluations || '|' || iterations || '|' || quote(optimum) || '|' "
+                               "|| solution || '|' || history FROM runs ORDER BY problem, algorithm, seed",
+                               -1, &s, nullptr) == SQLITE_OK);
+    std::vector<std::string> out;
+    while (sqlite3_step(s) == SQLITE_ROW) out.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)));
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+    return out;
+}
+}  // namespace
+
+TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[bench][mpi]") {
+    const fs::path dir = fs::temp_directory_path() / ("pride-mpi-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path maps = fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps";
+    {
+        std::ofstream f(dir / "c.toml");
+        f << "name = \"mpi\"\nseeds = 3\n[budget]\niterations = 20\n"
+             "[[problem]]\nid = \"rastrigin\"\ntype = \"shifted-rastrigin\"\ndim = 6\n"
+             "[[problem]]\nid = \"map\"\ntype = \"grid\"\nmap = \""
+          << (maps / "file000-10x10.map").string()
+          << "\"\nstart = [0, 0]\ngoal = [9, 9]\n"
+             "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n"
+             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";
+    }
+    const std::string config = (dir / "c.toml").string();
+    REQUIRE(pride::test::run_pride("bench '" + config + "' --jobs 2 --out '" + (dir / "threads.sqlite").string() + "'")
+                .status == 0);
+    const std::string mpi = std::string("'") + PRIDE_MPIEXEC + "' --allow-run-as-root --oversubscribe -np 2 '" +
+                            PRIDE_EXE + "' bench '" + config + "' --out '" + (dir / "mpi.sqlite").string() + "' > '" +
+                            (dir / "out").string() + "' 2>&1";
+    REQUIRE(std::system(mpi.c_str()) == 0);
+    const auto a = rows(dir / "threads.sqlite"), b = rows(dir / "mpi.sqlite");
+    CHECK(a.size() == 12);
+    CHECK(a == b);
+    fs::remove_all(dir);
+}
+#endif
