@@ -215,8 +215,10 @@ Campaign read_campaign(const std::string& path) {
                 } else if (kk == "iterations") {
                     c.iterations = need_integer(path, bv, kk);
                     if (*c.iterations < 0) fail(at(path, bv), "'iterations' must be >= 0");
+                } else if (kk == "target") {
+                    c.target = need_number(path, bv, kk);
                 } else {
-                    fail(at(path, bv), "unknown key '" + kk + "' in [budget] (evaluations, iterations)");
+                    fail(at(path, bv), "unknown key '" + kk + "' in [budget] (evaluations, iterations, target)");
                 }
             }
         } else if (k == "problem" || k == "algorithm") {
@@ -364,7 +366,7 @@ class Store {
         exec("PRAGMA synchronous=NORMAL");
         exec(
             "CREATE TABLE IF NOT EXISTS campaign (id INTEGER PRIMARY KEY CHECK (id = 1), name TEXT NOT NULL, "
-            "text TEXT NOT NULL)");
+            "text TEXT NOT NULL, target REAL)");
         exec(
             "CREATE TABLE IF NOT EXISTS runs (problem TEXT NOT NULL, algorithm TEXT NOT NULL, seed INTEGER NOT NULL, "
             "feasible INTEGER NOT NULL, best REAL, evaluations INTEGER NOT NULL, iterations INTEGER NOT NULL, "
@@ -393,9 +395,13 @@ class Store {
         }
         sqlite3_finalize(s);
         exec("BEGIN");
-        s = prepare("INSERT INTO campaign (id, name, text) VALUES (1, ?, ?)");
+        s = prepare("INSERT INTO campaign (id, name, text, target) VALUES (1, ?, ?, ?)");
         sqlite3_bind_text(s, 1, c.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, c.text.c_str(), -1, SQLITE_TRANSIENT);
+        if (c.target)
+            sqlite3_bind_double(s, 3, *c.target);
+        else
+            sqlite3_bind_null(s, 3);
         step_done(s);
         // The problems as resolved here (map paths made absolute), for reports and plots.
         for (const auto& p : c.problems) {

@@ -35,6 +35,7 @@ struct Campaign {
     std::string name;
     std::int64_t seeds = 0;
     std::optional<std::int64_t> evaluations, iterations;
+    std::optional<double> target;  // a threshold for reports (evaluations to reach it); runs do not stop there
     std::vector<ProblemSpec> problems;
     std::vector<AlgorithmSpec> algorithms;
 };

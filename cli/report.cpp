@@ -12,6 +12,7 @@
 #include <numeric>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <vector>
 
 #include "framework/error.hpp"
@@ -24,14 +25,34 @@ struct Cell {                  // one (problem, algorithm): its runs
     std::vector<double> best;  // +inf for a run without a feasible value
     std::vector<double> wall_ms, evaluations;
     std::optional<double> optimum;
+    std::vector<std::optional<double>> to_target;  // evaluations when the best first reached the target
 };
+
+/// The evaluations at which a run's best value first reached `target` (from its history).
+std::optional<double> evaluations_to(double target, const std::string& history, const std::string& evaluations) {
+    auto numbers = [](std::string text) {
+        for (char& c : text)
+            if (c == '[' || c == ']' || c == ',') c = ' ';
+        std::vector<double> out;
+        std::istringstream in(text);
+        for (std::string t; in >> t;)
+            out.push_back(t == "null" ? std::numeric_limits<double>::infinity() : std::stod(t));
+        return out;
+    };
+    const auto h = numbers(history), e = numbers(evaluations);
+    for (std::size_t k = 0; k < h.size() && k < e.size(); ++k)
+        if (h[k] <= target) return e[k];
+    return std::nullopt;
+}
 
 struct Row {
     std::string problem, algorithm;
     std::size_t runs = 0;
     double min = 0, mean = 0, std = 0, median = 0, max = 0, wall = 0, evaluations = 0;
     std::optional<double> optimum, gap, success;
-    std::optional<double> p_holm;  // against the best algorithm of the problem; empty for the best itself
+    std::optional<double> p_holm;     // against the best algorithm of the problem; empty for the best itself
+    std::size_t reached = 0;          // runs that reached the target
+    std::optional<double> to_target;  // their mean evaluations to reach it
     bool best = false;
 };
 
@@ -54,7 +75,8 @@ double std_of(const std::vector<double>& v) {
     return std::sqrt(s / static_cast<double>(v.size() - 1));
 }
 
-std::map<std::string, std::map<std::string, Cell>> load(const std::string& path, std::string& name) {
+std::map<std::string, std::map<std::string, Cell>> load(const std::string& path, std::string& name,
+                                                        std::optional<double>& target) {
     require(std::filesystem::is_regular_file(path), path, "no such store");
     sqlite3* db = nullptr;
     if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
@@ -72,18 +94,30 @@ std::map<std::string, std::map<std::string, Cell>> load(const std::string& path,
         while (sqlite3_step(s) == SQLITE_ROW) row(s);
         sqlite3_finalize(s);
     };
-    query("SELECT name FROM campaign WHERE id = 1",
-          [&](sqlite3_stmt* s) { name = reinterpret_cast<const char*>(sqlite3_column_text(s, 0)); });
-    query("SELECT problem, algorithm, best, wall_ms, evaluations, optimum FROM runs ORDER BY problem, algorithm, seed",
-          [&](sqlite3_stmt* s) {
-              Cell& c = cells[reinterpret_cast<const char*>(sqlite3_column_text(s, 0))]
-                             [reinterpret_cast<const char*>(sqlite3_column_text(s, 1))];
-              c.best.push_back(sqlite3_column_type(s, 2) == SQLITE_NULL ? std::numeric_limits<double>::infinity()
-                                                                        : sqlite3_column_double(s, 2));
-              c.wall_ms.push_back(sqlite3_column_double(s, 3));
-              c.evaluations.push_back(static_cast<double>(sqlite3_column_int64(s, 4)));
-              if (sqlite3_column_type(s, 5) != SQLITE_NULL) c.optimum = sqlite3_column_double(s, 5);
-          });
+    bool has_target = false;  // stores written before targets existed have no such column
+    query("SELECT COUNT(*) FROM pragma_table_info('campaign') WHERE name = 'target'",
+          [&](sqlite3_stmt* s) { has_target = sqlite3_column_int(s, 0) > 0; });
+    query(
+        has_target ? "SELECT name, target FROM campaign WHERE id = 1" : "SELECT name, NULL FROM campaign WHERE id = 1",
+        [&](sqlite3_stmt* s) {
+            name = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
+            if (sqlite3_column_type(s, 1) != SQLITE_NULL) target = sqlite3_column_double(s, 1);
+        });
+    query(
+        "SELECT problem, algorithm, best, wall_ms, evaluations, optimum, history, history_evaluations FROM runs "
+        "ORDER BY problem, algorithm, seed",
+        [&](sqlite3_stmt* s) {
+            Cell& c = cells[reinterpret_cast<const char*>(sqlite3_column_text(s, 0))]
+                           [reinterpret_cast<const char*>(sqlite3_column_text(s, 1))];
+            c.best.push_back(sqlite3_column_type(s, 2) == SQLITE_NULL ? std::numeric_limits<double>::infinity()
+                                                                      : sqlite3_column_double(s, 2));
+            c.wall_ms.push_back(sqlite3_column_double(s, 3));
+            c.evaluations.push_back(static_cast<double>(sqlite3_column_int64(s, 4)));
+            if (sqlite3_column_type(s, 5) != SQLITE_NULL) c.optimum = sqlite3_column_double(s, 5);
+            if (target)
+                c.to_target.push_back(evaluations_to(*target, reinterpret_cast<const char*>(sqlite3_column_text(s, 6)),
+                                                     reinterpret_cast<const char*>(sqlite3_column_text(s, 7))));
+        });
     sqlite3_close(db);
     require(!cells.empty(), path, "holds no runs yet (run pride bench first)");
     return cells;
@@ -145,7 +179,8 @@ int report_command(const ReportOptions& o, std::ostream& out) {
     require(o.format == "md" || o.format == "csv" || o.format == "latex", "--format",
             "expected md, csv or latex, got '" + o.format + "'");
     std::string name;
-    const auto cells = load(o.store, name);
+    std::optional<double> target;
+    const auto cells = load(o.store, name, target);
 
     std::vector<Row> rows;
     std::vector<std::string> algorithms;  // present on every problem, for Friedman
@@ -176,6 +211,15 @@ int report_command(const ReportOptions& o, std::ostream& out) {
             r.wall = mean_of(c.wall_ms);
             r.evaluations = mean_of(c.evaluations);
             r.best = algorithm == best;
+            if (target) {
+                double sum = 0.0;
+                for (const auto& e : c.to_target)
+                    if (e) {
+                        ++r.reached;
+                        sum += *e;
+                    }
+                if (r.reached) r.to_target = sum / static_cast<double>(r.reached);
+            }
             if (c.optimum) {
                 r.optimum = c.optimum;
                 double gap = 0, success = 0;
@@ -223,12 +267,17 @@ int report_command(const ReportOptions& o, std::ostream& out) {
     if (o.format == "csv") {
         text =
             "problem,algorithm,runs,min,mean,std,median,max,mean_wall_ms,mean_evaluations,optimum,mean_gap,success,"
-            "p_holm_vs_best,best\n";
-        for (const auto& r : rows)
-            text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", csv(r.problem), csv(r.algorithm),
+            "p_holm_vs_best,best";
+        // Only campaigns with a target have its columns.
+        text += target ? ",target,reached_target,mean_evaluations_to_target\n" : "\n";
+        for (const auto& r : rows) {
+            text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm),
                                 r.runs, num(r.min), num(r.mean), num(r.std), num(r.median), num(r.max), num(r.wall),
                                 num(r.evaluations), r.optimum ? num(*r.optimum) : "", r.gap ? num(*r.gap) : "",
                                 r.success ? num(*r.success) : "", r.p_holm ? num(*r.p_holm) : "", r.best ? 1 : 0);
+            text += target ? fmt::format(",{},{},{}\n", num(*target), r.reached, r.to_target ? num(*r.to_target) : "")
+                           : "\n";
+        }
     } else {
         const bool md = o.format == "md";
         const std::string sep = md ? " | " : " & ", end = md ? " |\n" : " \\\\\n", begin = md ? "| " : "";
@@ -238,8 +287,9 @@ int report_command(const ReportOptions& o, std::ostream& out) {
                 s += (i ? sep : "") + (md ? markdown(cols[i]) : latex(cols[i]));
             return s + end;
         };
-        const std::vector<std::string> head{"problem", "algorithm", "runs",    "min", "mean",    "std",
-                                            "median",  "max",       "mean ms", "gap", "optimal", "p (Holm)"};
+        std::vector<std::string> head{"problem", "algorithm", "runs",    "min", "mean",    "std",
+                                      "median",  "max",       "mean ms", "gap", "optimal", "p (Holm)"};
+        if (target) head.push_back("evals to target");
         if (md) {
             text += fmt::format(
                 "Campaign `{}`. Per problem, `best` marks the algorithm with the lowest median; "
@@ -250,15 +300,28 @@ int report_command(const ReportOptions& o, std::ostream& out) {
             for (std::size_t i = 0; i < head.size(); ++i) text += i < 2 ? "---|" : "---:|";
             text += "\n";
         } else {
-            text += "\\begin{tabular}{llrrrrrrrrrr}\n\\hline\n" + line(head) + "\\hline\n";
+            text +=
+                "\\begin{tabular}{ll" + std::string(head.size() - 2, 'r') + "}\n\\hline\n" + line(head) + "\\hline\n";
         }
         for (const auto& r : rows) {
             const std::string p =
                 r.best ? "best" : (r.p_holm ? fmt::format("{:.3g}{}", *r.p_holm, *r.p_holm < 0.05 ? "*" : "") : "");
-            text += line({r.problem, r.algorithm, std::to_string(r.runs), num(r.min), num(r.mean), num(r.std),
-                          num(r.median), num(r.max), fmt::format("{:.3f}", r.wall),
-                          r.gap ? fmt::format("{:.2f} %", 100 * *r.gap) : "-",
-                          r.success ? fmt::format("{:.0f} %", 100 * *r.success) : "-", p});
+            std::vector<std::string> cols{r.problem,
+                                          r.algorithm,
+                                          std::to_string(r.runs),
+                                          num(r.min),
+                                          num(r.mean),
+                                          num(r.std),
+                                          num(r.median),
+                                          num(r.max),
+                                          fmt::format("{:.3f}", r.wall),
+                                          r.gap ? fmt::format("{:.2f} %", 100 * *r.gap) : "-",
+                                          r.success ? fmt::format("{:.0f} %", 100 * *r.success) : "-",
+                                          p};
+            if (target)  // mean over the runs that reached it, and how many did
+                cols.push_back(r.to_target ? fmt::format("{} ({}/{})", num(*r.to_target), r.reached, r.runs)
+                                           : fmt::format("- (0/{})", r.runs));
+            text += line(cols);
         }
         if (!md) text += "\\hline\n\\end{tabular}\n";
         if (friedman) {
