@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstdlib>
 #include <deque>
 #include <exception>
 #include <filesystem>
@@ -607,25 +608,38 @@ int bench_mpi(const BenchOptions& o, std::ostream& out, const Campaign& c, int r
 
 }  // namespace
 
+/// The number of processes mpirun (Open MPI, or a PMI launcher) started, or 1 outside mpirun.
+int launched_ranks() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
+        if (const char* v = std::getenv(name)) return std::max(1, std::atoi(v));
+    return 1;
+}
+
 int bench_command(const BenchOptions& o, std::ostream& out) {
 #ifdef PRIDE_HAVE_MPI
-    int initialised = 0;
-    MPI_Initialized(&initialised);
-    if (!initialised) MPI_Init(nullptr, nullptr);
-    struct Finalise {
-        ~Finalise() {
-            int finalised = 0;
-            MPI_Finalized(&finalised);
-            if (!finalised) MPI_Finalize();
+    if (launched_ranks() > 1) {  // MPI only under mpirun: a plain run needs no MPI runtime
+        int initialised = 0;
+        MPI_Initialized(&initialised);
+        if (!initialised) MPI_Init(nullptr, nullptr);
+        struct Finalise {
+            ~Finalise() {
+                int finalised = 0;
+                MPI_Finalized(&finalised);
+                if (!finalised) MPI_Finalize();
+            }
+        } finalise;
+        int rank = 0, size = 1;
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        MPI_Comm_size(MPI_COMM_WORLD, &size);
+        if (size > 1) {
+            const Campaign c = read_campaign(o.config);  // every rank reads and checks it: the same verdict
+            return bench_mpi(o, out, c, rank, size);
         }
-    } finalise;
-    int rank = 0, size = 1;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    if (size > 1) {
-        const Campaign c = read_campaign(o.config);  // every rank reads and checks it: the same verdict
-        return bench_mpi(o, out, c, rank, size);
     }
+#else
+    require(launched_ranks() == 1, "pride bench",
+            "this pride was built without MPI (configure with -DPRIDE_MPI=ON); under mpirun every rank would "
+            "run the whole campaign");
 #endif
     const Campaign c = read_campaign(o.config);
     const std::string store_path = default_store(o);
