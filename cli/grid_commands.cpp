@@ -57,13 +57,38 @@ Termination grid_termination(const PathOptions& o) {
     return t;
 }
 
+/// What a run of an algorithm (box or chain) found: the candidate path is the result only when it
+/// is legal (grid.md: an infeasible candidate is never returned as a result).
+template <class Objective, class R>
+void record(PathRun& run, const GridProblem<Objective>& problem, const Path& candidate, bool no_violations,
+            const R& r) {
+    run.feasible =
+        no_violations &&
+        path_violation(problem.map(), candidate, problem.start(), problem.goal(), problem.corner_cutting()).empty();
+    if (run.feasible) {
+        run.path = candidate;
+        run.value = problem.evaluate(candidate);
+    }
+    run.evaluations = r.evaluations;
+    run.iterations = r.iterations;
+    run.wall_ms = r.wall_ms;
+    run.history = r.history;
+    run.history_evaluations = r.history_evaluations;
+}
+
+/// The algorithm's parameters: --param, with the population of --pop (else --param pop, else the
+/// papers' N = 20).
+ParamMap grid_params(const PathOptions& o) {
+    ParamMap params;
+    for (const auto& p : o.params) params.set_from_string(p);
+    if (o.pop || !params.contains("pop")) params.set("pop", static_cast<double>(o.pop.value_or(20)));
+    return params;
+}
+
 /// A box algorithm through an encoding with a connector.
 template <class Objective, class Encoding>
 void run_encoded(const PathOptions& o, const GridProblem<Objective>& problem, Encoding encoding, PathRun& run) {
-    ParamMap params;
-    for (const auto& p : o.params) params.set_from_string(p);
-    if (o.pop || !params.contains("pop"))
-        params.set("pop", static_cast<double>(o.pop.value_or(20)));  // the papers' N = 20
+    ParamMap params = grid_params(o);
     if (o.init == "walk") {
         require(o.algo.rfind("nlopt:", 0) != 0, "--init walk", "NLopt algorithms start from one uniform point");
         params.set("walk_init", 1.0);
@@ -74,18 +99,7 @@ void run_encoded(const PathOptions& o, const GridProblem<Objective>& problem, En
         return algorithm.run(encoded, termination, static_cast<std::uint64_t>(o.seed));
     });
     const DecodedPath& best = encoded.decode(r.best_x);
-    run.feasible =
-        best.violations == 0 &&
-        path_violation(problem.map(), best.path, problem.start(), problem.goal(), problem.corner_cutting()).empty();
-    if (run.feasible) {  // an infeasible candidate is never returned as a result (grid.md)
-        run.path = best.path;
-        run.value = problem.evaluate(best.path);
-    }
-    run.evaluations = r.evaluations;
-    run.iterations = r.iterations;
-    run.wall_ms = r.wall_ms;
-    run.history = r.history;
-    run.history_evaluations = r.history_evaluations;
+    record(run, problem, best.path, best.violations == 0, r);
 }
 
 template <class Objective, template <class> class Encoding>
@@ -136,24 +150,11 @@ PathRun run_path(const PathOptions& o, const std::shared_ptr<const GridMap>& map
     } else if (o.encoding == "chain") {
         run.encoding = "chain";
         require(o.connector == "repair", "--connector", "chains need no connector: every operator keeps them legal");
-        ParamMap params;
-        for (const auto& p : o.params) params.set_from_string(p);
-        if (o.pop || !params.contains("pop")) params.set("pop", static_cast<double>(o.pop.value_or(20)));
-        const auto r = with_chain_algorithm(o.algo, params, [&](const auto& algorithm) {
+        const auto r = with_chain_algorithm(o.algo, grid_params(o), [&](const auto& algorithm) {
             return algorithm.run(ChainSpace<Objective>(problem), grid_termination(o),
                                  static_cast<std::uint64_t>(o.seed));
         });
-        run.feasible =
-            path_violation(problem.map(), r.best_x, problem.start(), problem.goal(), problem.corner_cutting()).empty();
-        if (run.feasible) {
-            run.path = r.best_x;
-            run.value = problem.evaluate(run.path);
-        }
-        run.evaluations = r.evaluations;
-        run.iterations = r.iterations;
-        run.wall_ms = r.wall_ms;
-        run.history = r.history;
-        run.history_evaluations = r.history_evaluations;
+        record(run, problem, r.best_x, true, r);
     } else {
         throw InputError("--encoding: unknown encoding '" + o.encoding + "' (line, free or chain)");
     }
