@@ -39,6 +39,17 @@ void join_waypoints(const GridProblem<Objective>& p, int count, Waypoint&& waypo
     if (out.violations > 0) out.violations = count_violations(p.map(), out.path, 1, p.corner_cutting());
 }
 
+/// One feasible random walk from start to goal per column of `out`, handed to read(walk, column).
+template <class Objective, class Read>
+void read_walks(const GridProblem<Objective>& p, Rng& rng, Matrix& out, Read&& read) {
+    RandomWalker walker;
+    Path walk;
+    for (Eigen::Index j = 0; j < out.cols(); ++j) {
+        walker.walk(p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting());
+        read(walk, j);
+    }
+}
+
 /// Rounds a gene to a coordinate in [0, extent - 1] (NaN to 0).
 inline int to_coordinate(double v, int extent) {
     if (!(v >= 0.0)) return 0;
@@ -124,10 +135,7 @@ class LineEncoding {
     /// that line (the problem's suggestions for initialisers that accept them).
     template <class Objective>
     void starting_points(const GridProblem<Objective>& p, Rng& rng, Matrix& out) const {
-        RandomWalker walker;
-        Path walk;
-        for (Eigen::Index j = 0; j < out.cols(); ++j) {
-            walker.walk(p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting());
+        detail::read_walks(p, rng, out, [&](const Path& walk, Eigen::Index j) {
             for (int k = 0; k < count_; ++k) {
                 const int line = first_ + k * step_;
                 for (const Cell c : walk)
@@ -136,7 +144,7 @@ class LineEncoding {
                         break;
                     }
             }
-        }
+        });
     }
 
   private:
@@ -218,17 +226,14 @@ class FreeEncoding {
     /// Genotypes read off feasible random walks: K cells sampled evenly along each walk.
     template <class Objective>
     void starting_points(const GridProblem<Objective>& p, Rng& rng, Matrix& out) const {
-        RandomWalker walker;
-        Path walk;
-        for (Eigen::Index j = 0; j < out.cols(); ++j) {
-            walker.walk(p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting());
+        detail::read_walks(p, rng, out, [&](const Path& walk, Eigen::Index j) {
             for (int k = 0; k < k_; ++k) {
                 const std::size_t at =
                     (static_cast<std::size_t>(k) + 1) * (walk.size() - 1) / (static_cast<std::size_t>(k_) + 1);
                 out(2 * k, j) = walk[at].x;
                 out(2 * k + 1, j) = walk[at].y;
             }
-        }
+        });
     }
 
   private:
