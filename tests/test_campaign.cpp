@@ -29,12 +29,16 @@
 #include <vector>
 
 #include "json_reader.hpp"
+#include "tests/test_support.hpp"
 
 extern char** environ;
 
 namespace {
 
 namespace fs = std::filesystem;
+using pride::test::json_numbers;
+using pride::test::slurp;
+using pride::test::TempDir;
 using namespace std::chrono_literals;
 using pride::test::JsonValue;
 using pride::test::parse_json;
@@ -48,45 +52,6 @@ fs::path bundled_map() {
 }
 fs::path bundled_campaigns() {
     return fs::path(__FILE__).parent_path().parent_path() / "examples" / "campaigns";
-}
-
-/// A temporary folder, removed with everything in it at the end of the scope.
-class TempDir {
-  public:
-    TempDir() {
-        char tmpl[] = "/tmp/pride-campaign-XXXXXX";
-        const char* d = mkdtemp(tmpl);
-        if (!d) throw std::runtime_error("mkdtemp failed");
-        path_ = d;
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-    std::string write(const std::string& name, const std::string& content) const {
-        std::ofstream(path_ / name, std::ios::binary) << content;
-        return file(name);
-    }
-    std::vector<std::string> entries() const {
-        std::vector<std::string> out;
-        for (const auto& e : fs::directory_iterator(path_)) out.push_back(e.path().filename().string());
-        std::sort(out.begin(), out.end());
-        return out;
-    }
-
-  private:
-    fs::path path_;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
 }
 
 /// `pride ARGS...` started with posix_spawn (no shell), stdin from /dev/null, stdout and stderr to
@@ -321,16 +286,6 @@ long long integer_of(const std::string& tagged) {
     return std::stoll(tagged.substr(2));
 }
 
-std::vector<double> numbers(const JsonValue& array) {
-    REQUIRE(array.kind == JsonValue::Kind::array);
-    std::vector<double> out;
-    for (const auto& item : array.items) {
-        REQUIRE(item.kind == JsonValue::Kind::number);
-        out.push_back(item.number);
-    }
-    return out;
-}
-
 // ---------------------------------------------------------------------------------------------
 // The grid, read and solved here independently of the library (shared/spec/grid.md)
 
@@ -401,7 +356,7 @@ std::vector<Cell> path_of(const std::string& json) {
     REQUIRE(v.kind == JsonValue::Kind::array);
     std::vector<Cell> path;
     for (const auto& item : v.items) {
-        const auto xy = numbers(item);
+        const auto xy = json_numbers(item);
         REQUIRE(xy.size() == 2);
         path.push_back({static_cast<int>(xy[0]), static_cast<int>(xy[1])});
     }
@@ -775,15 +730,15 @@ TEST_CASE("bench: --jobs 1 and --jobs 2 store the same continuous runs", "[cli][
         CHECK(evaluations >= 1);
         CHECK(evaluations <= 2000);
         CHECK(row[7] == "null");  // no optimum for continuous problems
-        const auto x = numbers(parse_json(text_of(row[8])));
+        const auto x = json_numbers(parse_json(text_of(row[8])));
         CHECK(x.size() == (problem == "sphere-4" ? 4u : 3u));
         if (problem == "sphere-4") {
             double f = 0.0;
             for (const double v : x) f += v * v;
             CHECK(std::abs(f - best) <= 1e-12 * std::max(1.0, std::abs(best)));
         }
-        const auto history = numbers(parse_json(text_of(row[9])));
-        const auto history_evaluations = numbers(parse_json(text_of(row[10])));
+        const auto history = json_numbers(parse_json(text_of(row[9])));
+        const auto history_evaluations = json_numbers(parse_json(text_of(row[10])));
         CHECK(history.size() == static_cast<std::size_t>(iterations) + 1);
         REQUIRE(history_evaluations.size() == history.size());
         REQUIRE(!history.empty());
@@ -845,7 +800,7 @@ TEST_CASE("bench: --jobs 1 and --jobs 2 store the same grid runs, with legal pat
         CHECK(std::abs(best - (cells ? static_cast<double>(path.size()) : length)) <= 1e-9);
         CHECK(best >= optimum - 1e-9);
         if (text_of(row[1]) == "exact") CHECK(std::abs(best - optimum) <= 1e-9);
-        const auto history = numbers(parse_json(text_of(row[9])));
+        const auto history = json_numbers(parse_json(text_of(row[9])));
         if (text_of(row[1]) == "exact") {
             CHECK(integer_of(row[6]) == 0);  // no iterations: the history may be empty
             if (history.empty()) continue;
@@ -854,7 +809,7 @@ TEST_CASE("bench: --jobs 1 and --jobs 2 store the same grid runs, with legal pat
         CHECK(history.back() == best);
         for (std::size_t i = 1; i < history.size(); ++i) CHECK(history[i] <= history[i - 1]);
         // Either not recorded ("[]"), or one count per history entry, the last being the total.
-        const auto history_evaluations = numbers(parse_json(text_of(row[10])));
+        const auto history_evaluations = json_numbers(parse_json(text_of(row[10])));
         if (!history_evaluations.empty()) {
             REQUIRE(history_evaluations.size() == history.size());
             CHECK(history_evaluations.back() == static_cast<double>(integer_of(row[5])));

@@ -15,37 +15,16 @@
 #include "cli_runner.hpp"
 #include "json_reader.hpp"
 #include "problems/continuous/catalog.hpp"
+#include "tests/test_support.hpp"
+
+using pride::test::json_numbers;
+using pride::test::lines_of;
 
 namespace {
 
 using pride::test::JsonValue;
 using pride::test::parse_json;
 using pride::test::run_pride;
-
-std::vector<double> numbers(const JsonValue& array) {
-    REQUIRE(array.kind == JsonValue::Kind::array);
-    std::vector<double> out;
-    for (const auto& item : array.items) {
-        REQUIRE(item.kind == JsonValue::Kind::number);
-        out.push_back(item.number);
-    }
-    return out;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const auto nl = text.find('\n', start);
-        if (nl == std::string::npos) {
-            lines.push_back(text.substr(start));
-            break;
-        }
-        lines.push_back(text.substr(start, nl - start));
-        start = nl + 1;
-    }
-    return lines;
-}
 
 std::string format17(double v) {
     char buffer[64];
@@ -213,13 +192,13 @@ TEST_CASE("cli: run --json prints one object with the documented keys", "[cli][r
     CHECK(std::isfinite(best_f));
     CHECK(best_f >= 0.0);
 
-    const auto best_x = numbers(j.at("best_x"));
+    const auto best_x = json_numbers(j.at("best_x"));
     REQUIRE(best_x.size() == 5);
     for (double v : best_x) {
         CHECK(v >= -5.12);
         CHECK(v <= 5.12);
     }
-    const auto history = numbers(j.at("history"));
+    const auto history = json_numbers(j.at("history"));
     REQUIRE(!history.empty());
     CHECK(history.size() == 20);  // default population 50: 1 + 19 iterations in 1000 evaluations
     for (std::size_t k = 1; k < history.size(); ++k) CHECK(history[k] <= history[k - 1]);
@@ -238,7 +217,7 @@ TEST_CASE("cli: run --json prints one object with the documented keys", "[cli][r
     const std::string other = expect_success("run --problem rastrigin --dim 5 --algo pso --evals 1000 --seed 4 --json");
     const JsonValue o = parse_json(other);
     CHECK(o.at("seed").text == "4");
-    CHECK(numbers(o.at("history")) != history);
+    CHECK(json_numbers(o.at("history")) != history);
 }
 
 TEST_CASE("cli: run --json for every algorithm family and limit", "[cli][run]") {
@@ -265,7 +244,7 @@ TEST_CASE("cli: run --json for every algorithm family and limit", "[cli][run]") 
             CHECK(evaluations < 100000);
             CHECK(j.at("best_f").number <= 1e-3);
         }
-        const auto history = numbers(j.at("history"));
+        const auto history = json_numbers(j.at("history"));
         REQUIRE(!history.empty());
         CHECK(history.back() == j.at("best_f").number);
     }
@@ -415,7 +394,7 @@ TEST_CASE("cli: NLopt subplex on the sphere", "[cli][nlopt]") {
     CHECK(j.at("algo").text == "nlopt:LN_SBPLX");
     CHECK(j.at("evaluations").number == 2000);
     CHECK(j.at("best_f").number < 1e-10);
-    CHECK(numbers(j.at("best_x")).size() == 3);
+    CHECK(json_numbers(j.at("best_x")).size() == 3);
 
     // restart=0 runs NLopt once: it converges and stops before the budget.
     const JsonValue once = parse_json(
@@ -425,5 +404,5 @@ TEST_CASE("cli: NLopt subplex on the sphere", "[cli][nlopt]") {
     // pop sets the evaluations per recorded iteration: 2000 / 100 = 20 entries.
     const JsonValue blocks =
         parse_json(expect_success("run --problem sphere --dim 3 --algo nlopt:LN_SBPLX --evals 2000 --pop 100 --json"));
-    CHECK(numbers(blocks.at("history")).size() == 20);
+    CHECK(json_numbers(blocks.at("history")).size() == 20);
 }

@@ -23,13 +23,17 @@
 
 #include "cli_runner.hpp"
 #include "json_reader.hpp"
+#include "tests/test_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using pride::test::json_numbers;
 using pride::test::JsonValue;
 using pride::test::parse_json;
 using pride::test::run_pride;
+using pride::test::slurp;
+using pride::test::TempDir;
 
 // ---------------------------------------------------------------------------------------------
 // Files
@@ -39,45 +43,6 @@ fs::path bundled_dir() {
 }
 fs::path movingai_dir() {
     return fs::path(PRIDE_SHARED_DATA) / "movingai";
-}
-
-/// A temporary folder, removed with everything in it at the end of the scope.
-class TempDir {
-  public:
-    TempDir() {
-        char tmpl[] = "/tmp/pride-cli-grid-XXXXXX";
-        const char* d = mkdtemp(tmpl);
-        if (!d) throw std::runtime_error("mkdtemp failed");
-        path_ = d;
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-    std::string write(const std::string& name, const std::string& content) const {
-        std::ofstream(path_ / name, std::ios::binary) << content;
-        return file(name);
-    }
-    std::vector<std::string> entries() const {
-        std::vector<std::string> out;
-        for (const auto& e : fs::directory_iterator(path_)) out.push_back(e.path().filename().string());
-        std::sort(out.begin(), out.end());
-        return out;
-    }
-
-  private:
-    fs::path path_;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
 }
 
 /// Shell quoting for run_pride's command line.
@@ -326,16 +291,6 @@ std::vector<XY> path_of(const JsonValue& v) {
     return out;
 }
 
-std::vector<double> numbers_of(const JsonValue& v) {
-    REQUIRE(v.kind == JsonValue::Kind::array);
-    std::vector<double> out;
-    for (const auto& x : v.items) {
-        REQUIRE(x.is_number());
-        out.push_back(x.number);
-    }
-    return out;
-}
-
 bool nearly(double a, double b, double rel = 1e-9) {
     return std::abs(a - b) <= rel * std::max({1.0, std::abs(a), std::abs(b)});
 }
@@ -368,7 +323,7 @@ JsonValue check_path_json(const std::string& text, const Grid& grid, XY start, X
     CHECK(j.at("iterations").number >= 0);
     CHECK(j.at("wall_ms").is_number());
     CHECK(j.at("wall_ms").number >= 0);
-    const auto history = numbers_of(j.at("history"));
+    const auto history = json_numbers(j.at("history"));
     for (std::size_t k = 1; k < history.size(); ++k) CHECK(history[k] <= history[k - 1]);
 
     const JsonValue& metrics = j.at("metrics");
@@ -456,7 +411,7 @@ JsonValue check_heuristic(const Bundled& b, const Heuristic& h, const Objective&
     CHECK(j.at("encoding").text == h.encoding);
     CHECK(j.at("feasible").boolean);         // repair connector and chains: always a legal path
     CHECK(j.at("iterations").number == 50);  // the default iteration limit
-    const auto history = numbers_of(j.at("history"));
+    const auto history = json_numbers(j.at("history"));
     CHECK(history.size() == 51);
     if (!history.empty() && j.at("objective_value").is_number())
         CHECK(nearly(history.back(), j.at("objective_value").number));

@@ -8,17 +8,10 @@
 #include <string>
 
 #include "tests/cli_runner.hpp"
+#include "tests/test_support.hpp"
 
 namespace fs = std::filesystem;
-
-namespace {
-std::string slurp(const fs::path& p) {
-    std::ifstream f(p);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
-}  // namespace
+using pride::test::slurp;
 
 TEST_CASE("export: IOHprofiler files, one folder per algorithm, one block per run", "[export]") {
     const fs::path dir = fs::temp_directory_path() / ("pride-ioh-" + std::to_string(::getpid()));

@@ -2,8 +2,8 @@
 // written here with sqlite3 (the schema of cli/campaign.cpp) and hand-chosen values, every CSV
 // column checked against values computed independently below; the markdown and LaTeX tables; the
 // errors; and `pride bench` followed by `pride report` end to end.
-#include <catch2/catch.hpp>
 #include <sqlite3.h>
+#include <catch2/catch.hpp>
 
 #include <stdlib.h>
 #include <algorithm>
@@ -22,6 +22,9 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "tests/test_support.hpp"
+
+using pride::test::lines_of;
 
 namespace {
 
@@ -45,21 +48,8 @@ struct TempDir {
     std::string operator/(const std::string& file) const { return path + "/" + file; }
 };
 
-std::string shell_quote(const std::string& s) { return "'" + s + "'"; }
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const auto nl = text.find('\n', start);
-        if (nl == std::string::npos) {
-            lines.push_back(text.substr(start));
-            break;
-        }
-        lines.push_back(text.substr(start, nl - start));
-        start = nl + 1;
-    }
-    return lines;
+std::string shell_quote(const std::string& s) {
+    return "'" + s + "'";
 }
 
 std::vector<std::string> split(const std::string& s, const std::string& sep) {
@@ -107,8 +97,7 @@ void exec(sqlite3* db, const std::string& sql) {
 void write_store(const std::string& path, const std::vector<StoredRun>& runs) {
     sqlite3* db = nullptr;
     REQUIRE(sqlite3_open(path.c_str(), &db) == SQLITE_OK);
-    exec(db,
-         "CREATE TABLE campaign (id INTEGER PRIMARY KEY CHECK (id = 1), name TEXT NOT NULL, text TEXT NOT NULL)");
+    exec(db, "CREATE TABLE campaign (id INTEGER PRIMARY KEY CHECK (id = 1), name TEXT NOT NULL, text TEXT NOT NULL)");
     exec(db,
          "CREATE TABLE runs (problem TEXT NOT NULL, algorithm TEXT NOT NULL, seed INTEGER NOT NULL, "
          "feasible INTEGER NOT NULL, best REAL, evaluations INTEGER NOT NULL, iterations INTEGER NOT NULL, "
@@ -366,8 +355,8 @@ std::string report(const std::string& store, const std::string& format) {
 }
 
 const std::vector<std::string> kCsvHeader = {
-    "problem", "algorithm",  "runs",    "min",     "mean",    "std",           "median", "max",
-    "mean_wall_ms", "mean_evaluations", "optimum", "mean_gap", "success", "p_holm_vs_best", "best"};
+    "problem",          "algorithm", "runs",     "min",     "mean",           "std", "median", "max", "mean_wall_ms",
+    "mean_evaluations", "optimum",   "mean_gap", "success", "p_holm_vs_best", "best"};
 
 /// The CSV as rows of cells (the header checked and dropped).
 std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
@@ -397,7 +386,7 @@ std::vector<std::vector<std::string>> table_rows(const std::vector<std::string>&
     return rows;
 }
 
-const std::vector<std::string> kTableHeader = {"problem", "algorithm", "runs", "min",     "mean",   "std",
+const std::vector<std::string> kTableHeader = {"problem", "algorithm", "runs",    "min", "mean",    "std",
                                                "median",  "max",       "mean ms", "gap", "optimal", "p (Holm)"};
 
 /// The command fails as bad input: exit 2, nothing on stdout, one line on stderr naming `word`.
@@ -488,8 +477,8 @@ TEST_CASE("report: csv columns equal values computed independently", "[report][c
     };
     // grid10 ga {12,12,14,13,12}, optimum 12: mean 12.6, std sqrt(3.2/4), gaps 0,0,2/12,1/12,0 -> 0.05; 3 of 5 at it.
     auto r = row("grid10", "ga");
-    CHECK(r == std::vector<std::string>{"grid10", "ga", "5", "12", "12.6", g("%.6g", std::sqrt(0.8)), "12", "14",
-                                        "1", "440", "12", "0.05", "0.6", g("%.6g", 0.17971249487899985), "0"});
+    CHECK(r == std::vector<std::string>{"grid10", "ga", "5", "12", "12.6", g("%.6g", std::sqrt(0.8)), "12", "14", "1",
+                                        "440", "12", "0.05", "0.6", g("%.6g", 0.17971249487899985), "0"});
     // grid10 pso {15,12,18,12(1+1e-11),13.5}: median 13.5, mean 14.1; gaps 3/12, 0, 6/12, 0, 1.5/12 -> 0.175; 2 of 5.
     // U1 = 22.5 against nlopt_sbplx's five 12s: p = 0.025370, Holm x2 = 0.050740 (and ga's 0.1797 stays).
     r = row("grid10", "pso");
@@ -574,9 +563,9 @@ TEST_CASE("report: md table with best and star markers and the Friedman ranks", 
     CHECK(p_of("sphere", "nlopt_sbplx") == "best");
     CHECK(p_of("sphere", "ga") == "0.015*");
     CHECK(p_of("sphere", "pso") == "0.015*");
-    CHECK(rows[1][9] == "5.00 %");   // grid10 ga
+    CHECK(rows[1][9] == "5.00 %");  // grid10 ga
     CHECK(rows[1][10] == "60 %");
-    CHECK(rows[4][9] == "-");        // rastrigin ga
+    CHECK(rows[4][9] == "-");  // rastrigin ga
 
     // Friedman on the medians (rows: problems; columns: ga, nlopt_sbplx, pso):
     //   grid10     12 (1.5)   12 (1.5)   13.5 (3)
@@ -667,7 +656,7 @@ TEST_CASE("report: bad stores and formats exit 2 with one line", "[report][error
     expect_input_error("report " + shell_quote(good) + " --format ''", "--format");
     expect_input_error("report " + shell_quote(good) + " --format CSV", "--format");
     expect_input_error("report " + shell_quote(good) + " --format", "format");  // no value
-    expect_input_error("report", "store");                                 // no store
+    expect_input_error("report", "store");                                      // no store
     // And the good store is fine with the default format.
     const auto r = run_pride("report " + shell_quote(good));
     CHECK(r.status == 0);
@@ -730,8 +719,9 @@ TEST_CASE("report: pride bench then pride report on a tiny campaign", "[report][
     sqlite3* db = nullptr;
     REQUIRE(sqlite3_open_v2(store.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
     sqlite3_stmt* s = nullptr;
-    REQUIRE(sqlite3_prepare_v2(db, "SELECT problem, algorithm, COUNT(*), MIN(best), AVG(evaluations) FROM runs "
-                                   "GROUP BY problem, algorithm ORDER BY problem, algorithm",
+    REQUIRE(sqlite3_prepare_v2(db,
+                               "SELECT problem, algorithm, COUNT(*), MIN(best), AVG(evaluations) FROM runs "
+                               "GROUP BY problem, algorithm ORDER BY problem, algorithm",
                                -1, &s, nullptr) == SQLITE_OK);
     std::size_t i = 0;
     while (sqlite3_step(s) == SQLITE_ROW && i < rows.size()) {

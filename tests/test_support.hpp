@@ -1,0 +1,86 @@
+#pragma once
+// Small helpers shared by the tests: a temporary folder, whole-file reads, lines of a text, and the
+// numbers of a JSON array.
+#include <stdlib.h>
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "tests/json_reader.hpp"
+
+namespace pride::test {
+
+/// A temporary folder under /tmp, removed with everything in it at the end of the scope.
+class TempDir {
+  public:
+    explicit TempDir(const std::string& prefix = "pride-test") {
+        std::string pattern = "/tmp/" + prefix + "-XXXXXX";
+        if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+        path_ = pattern;
+    }
+    ~TempDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+    std::string write(const std::string& name, const std::string& content) const {
+        std::ofstream(path_ / name, std::ios::binary) << content;
+        return file(name);
+    }
+    /// The names in the folder, sorted.
+    std::vector<std::string> entries() const {
+        std::vector<std::string> out;
+        for (const auto& e : std::filesystem::directory_iterator(path_)) out.push_back(e.path().filename().string());
+        std::sort(out.begin(), out.end());
+        return out;
+    }
+
+  private:
+    std::filesystem::path path_;
+};
+
+/// The whole file, bytes as they are.
+inline std::string slurp(const std::filesystem::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+/// The lines of `text`, without their '\n'; a last line without one counts.
+inline std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const auto nl = text.find('\n', start);
+        if (nl == std::string::npos) {
+            lines.push_back(text.substr(start));
+            break;
+        }
+        lines.push_back(text.substr(start, nl - start));
+        start = nl + 1;
+    }
+    return lines;
+}
+
+/// The numbers of a JSON array of numbers.
+inline std::vector<double> json_numbers(const JsonValue& array) {
+    REQUIRE(array.kind == JsonValue::Kind::array);
+    std::vector<double> out;
+    for (const auto& item : array.items) {
+        REQUIRE(item.kind == JsonValue::Kind::number);
+        out.push_back(item.number);
+    }
+    return out;
+}
+
+}  // namespace pride::test
