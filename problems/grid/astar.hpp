@@ -12,6 +12,7 @@
 
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/search_arrays.hpp"
 
 namespace pride::grid {
 
@@ -53,10 +54,10 @@ class AStar {
                 index = node.index;
                 current = node.key;
             }
-            if (closed_[index] == generation_) continue;  // a stale entry
-            closed_[index] = generation_;
+            if (arrays_.closed[index] == arrays_.generation) continue;  // a stale entry
+            arrays_.closed[index] = arrays_.generation;
             ++expansions_;
-            const double gi = g_[index];
+            const double gi = arrays_.g[index];
             if (index == goal) {
                 if (out) trace(map, start, goal, *out);
                 return gi;
@@ -67,16 +68,16 @@ class AStar {
                 const Cell n{c.x + kDx[d], c.y + kDy[d]};
                 if (window && !w.contains(n)) continue;
                 const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + map.offset(d));
-                if (closed_[ni] == generation_) continue;
+                if (arrays_.closed[ni] == arrays_.generation) continue;
                 const double ng = gi + (is_diagonal(d) ? kSqrt2 : 1.0);
-                if (seen_[ni] == generation_ && g_[ni] <= ng) continue;
+                if (arrays_.seen[ni] == arrays_.generation && arrays_.g[ni] <= ng) continue;
                 const std::uint64_t k = key(ng + octile(n, g), ng);
                 // Same f as the node expanded (or, by rounding, a hair below it: a consistent
                 // heuristic never truly lowers f): expanded next, without heap work.
                 if ((k >> kTieBits) <= (current >> kTieBits)) {
-                    seen_[ni] = generation_;
-                    g_[ni] = ng;
-                    parent_[ni] = index;
+                    arrays_.seen[ni] = arrays_.generation;
+                    arrays_.g[ni] = ng;
+                    arrays_.parent[ni] = index;
                     level_.push_back({k, ni});
                 } else {
                     open(ni, ng, k, index);
@@ -156,42 +157,28 @@ class AStar {
     };
 
     void prepare(std::size_t cells) {
-        if (g_.size() != cells) {
-            g_.assign(cells, 0.0);
-            parent_.assign(cells, 0);
-            seen_.assign(cells, 0);
-            closed_.assign(cells, 0);
-            generation_ = 0;
-        }
-        if (++generation_ == 0) {  // wrapped: clear the stamps once every 2^32 queries
-            std::fill(seen_.begin(), seen_.end(), 0);
-            std::fill(closed_.begin(), closed_.end(), 0);
-            generation_ = 1;
-        }
+        arrays_.prepare(cells);
         heap_.clear();
         level_.clear();
     }
 
     void open(std::uint32_t index, double g, std::uint64_t key, std::uint32_t parent) {
-        seen_[index] = generation_;
-        g_[index] = g;
-        parent_[index] = parent;
+        arrays_.seen[index] = arrays_.generation;
+        arrays_.g[index] = g;
+        arrays_.parent[index] = parent;
         heap_.push({key, index});
     }
 
     void trace(const GridMap& map, std::uint32_t start, std::uint32_t goal, Path& out) const {
         out.clear();
-        for (std::uint32_t i = goal;; i = parent_[i]) {
+        for (std::uint32_t i = goal;; i = arrays_.parent[i]) {
             out.push_back(map.cell(i));
             if (i == start) break;
         }
         std::reverse(out.begin(), out.end());
     }
 
-    std::vector<double> g_;
-    std::vector<std::uint32_t> parent_;
-    std::vector<std::uint32_t> seen_, closed_;  // generation stamps
-    std::uint32_t generation_ = 0;
+    SearchArrays arrays_;
     RadixHeap heap_;
     std::vector<Node> level_;  // nodes with the f of the node being expanded, taken before the heap
     std::int64_t expansions_ = 0;

@@ -26,6 +26,7 @@
 
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/search_arrays.hpp"
 
 namespace pride::grid {
 
@@ -70,12 +71,12 @@ class Oracle {
             std::pop_heap(heap_.begin(), heap_.end(), Later{});
             const Node node = heap_.back();
             heap_.pop_back();
-            if (closed_[node.state] == generation_) continue;  // a stale entry
-            closed_[node.state] = generation_;
+            if (arrays_.closed[node.state] == arrays_.generation) continue;  // a stale entry
+            arrays_.closed[node.state] = arrays_.generation;
             ++expansions_;
             const std::uint32_t index = node.state / kDirs;
             const int last = static_cast<int>(node.state % kDirs);
-            const double cost = g_[node.state];
+            const double cost = arrays_.g[node.state];
             if (index == goal) {
                 if (out) trace(map, start, node.state, *out);
                 return cost;
@@ -85,10 +86,10 @@ class Oracle {
                 const int d = std::countr_zero(m);
                 const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + map.offset(d));
                 const std::uint32_t next = ni * kDirs + static_cast<std::uint32_t>(d);
-                if (closed_[next] == generation_) continue;
+                if (arrays_.closed[next] == arrays_.generation) continue;
                 double ng = cost + step[d];
                 if (last != kNone && last != d) ng += turn[turn_steps(last, d)];
-                if (seen_[next] == generation_ && g_[next] <= ng) continue;
+                if (arrays_.seen[next] == arrays_.generation && arrays_.g[next] <= ng) continue;
                 open(next, ng, ng + h(Cell{c.x + kDx[d], c.y + kDy[d]}), node.state);
             }
         }
@@ -114,43 +115,28 @@ class Oracle {
     };
 
     void prepare(std::size_t cells) {
-        const std::size_t states = cells * kDirs;
-        if (g_.size() != states) {
-            g_.assign(states, 0.0);
-            parent_.assign(states, 0);
-            seen_.assign(states, 0);
-            closed_.assign(states, 0);
-            generation_ = 0;
-        }
-        if (++generation_ == 0) {  // wrapped: clear the stamps once every 2^32 queries
-            std::fill(seen_.begin(), seen_.end(), 0);
-            std::fill(closed_.begin(), closed_.end(), 0);
-            generation_ = 1;
-        }
+        arrays_.prepare(cells * kDirs);
         heap_.clear();
     }
 
     void open(std::uint32_t state, double g, double f, std::uint32_t parent) {
-        seen_[state] = generation_;
-        g_[state] = g;
-        parent_[state] = parent;
+        arrays_.seen[state] = arrays_.generation;
+        arrays_.g[state] = g;
+        arrays_.parent[state] = parent;
         heap_.push_back({f, state});
         std::push_heap(heap_.begin(), heap_.end(), Later{});
     }
 
     void trace(const GridMap& map, std::uint32_t start, std::uint32_t state, Path& out) const {
         out.clear();
-        for (std::uint32_t i = state;; i = parent_[i]) {
+        for (std::uint32_t i = state;; i = arrays_.parent[i]) {
             out.push_back(map.cell(i / kDirs));
             if (i == start) break;
         }
         std::reverse(out.begin(), out.end());
     }
 
-    std::vector<double> g_;
-    std::vector<std::uint32_t> parent_;
-    std::vector<std::uint32_t> seen_, closed_;  // generation stamps
-    std::uint32_t generation_ = 0;
+    SearchArrays arrays_;
     std::vector<Node> heap_;
     std::int64_t expansions_ = 0;
 };
