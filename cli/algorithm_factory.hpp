@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "algorithms/ga.hpp"
+#include "algorithms/lso.hpp"
 #include "algorithms/nlopt.hpp"
 #include "algorithms/pso.hpp"
 #include "framework/error.hpp"
@@ -43,7 +44,7 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
     }
     // The command line's box algorithms take their initialiser at run time: uniform in the box, or
     // (`walk_init=1`, pride path --init walk) genotypes read off random feasible walks.
-    const bool walk_init = name.rfind("nlopt:", 0) != 0 && params.get_int("walk_init", 0, std::string(name)) != 0;
+    const bool walk_init = name != "lso" && name != "ilso" && params.get_int("walk_init", 0, std::string(name)) != 0;
     if (name == "pso") {
         Pso<InertiaVelocity<LinearInertia>, RangeVelocityClamp, Clamp, SelectableInit> a;
         a.init.suggestions = walk_init;
@@ -77,6 +78,28 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
         a.id = "ga-plus";
         a.init.suggestions = walk_init;
         detail::set_ga_operators(a, params);
+        return detail::finish(a, params, f);
+    }
+    if (name == "lso" || name == "ilso") {
+        auto set_lion = [&](auto& a) {
+            a.init.suggestions = params.get_int("walk_init", a.init.suggestions ? 1 : 0, a.id) != 0;
+            a.population = params.get_int("pop", a.population, a.id);
+            a.beta = params.get("beta", a.beta);
+            if (params.contains("step")) a.step_factor = params.get("step", 0.0);
+            a.cubs.first = params.get("cub_first", a.cubs.first);
+            a.cubs.second = params.get("cub_second", a.cubs.second);
+        };
+        if (name == "lso") {
+            Lso<UnitWeight, LsoCubs, Clamp, SelectableInit> a;
+            set_lion(a);
+            return detail::finish(a, params, f);
+        }
+        // ILSO takes the problem's starting points unless told otherwise (pride path --init uniform).
+        auto a = make_ilso<Clamp, SelectableInit>();
+        a.init.suggestions = true;
+        set_lion(a);
+        a.weight.start = params.get("w_max", a.weight.start);
+        a.weight.end = params.get("w_min", a.weight.end);
         return detail::finish(a, params, f);
     }
     throw InputError("--algo: unknown algorithm '" + std::string(name) + "' (see 'pride list')");

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "algorithms/ga.hpp"
+#include "algorithms/lso.hpp"
 #include "algorithms/nlopt.hpp"
 #include "algorithms/parts/crossover.hpp"
 #include "algorithms/parts/inertia.hpp"
@@ -204,6 +205,12 @@ void for_each_algorithm(std::int64_t population, F&& f) {
     f("pso-constriction", pso_constriction(population));
     f("ga", ga(population));
     f("ga-plus", ga_plus(population));
+    pride::LsoAlgorithm lso;
+    lso.population = population;
+    f("lso", lso);
+    auto ilso = pride::make_ilso();
+    ilso.population = population;
+    f("ilso", ilso);
     f("nlopt:LN_SBPLX", pride::Nlopt("LN_SBPLX", population));
     f("nlopt:GN_CRS2_LM", pride::Nlopt("GN_CRS2_LM", population));
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Inertia-weight schedules w(t), t = 0..T-1 the iteration being computed, T the horizon. Usable by
-// any algorithm with a velocity or a multiplicative weight (PSO here, ILSO's eq. 10 later).
+// any algorithm with a velocity or a multiplicative weight (PSO's velocity, ILSO's eqs. 11-12).
 #include <cstdint>
 #include <string>
 
@@ -30,6 +30,29 @@ struct ConstantInertia {
     void validate(const std::string& where) const {
         require(w >= 0.0 && w <= 1.5, where, "w must be in [0, 1.5], got " + std::to_string(w));
     }
+};
+
+/// File 000 eq. (10): w = w_max - (w_max - w_min) t^2 / T^2, with the paper's t = 1..T counting
+/// the iterations that move (t = our 0-based index + 1): it starts just below w_max, falls slowly
+/// early and fast late, and reaches w_min on the last iteration. Defaults 0.99 and 0.35 (file 000).
+struct QuadraticInertia {
+    double start = 0.99;
+    double end = 0.35;
+    double operator()(std::int64_t t, std::int64_t horizon) const noexcept {
+        if (horizon <= 0) return start;
+        const double ratio = static_cast<double>(t + 1) / static_cast<double>(horizon);
+        return start - (start - end) * ratio * ratio;
+    }
+    void validate(const std::string& where) const {
+        require(start >= 0.0 && start <= 1.5, where, "w_max must be in [0, 1.5], got " + std::to_string(start));
+        require(end >= 0.0 && end <= 1.5, where, "w_min must be in [0, 1.5], got " + std::to_string(end));
+    }
+};
+
+/// No weight: w = 1 exactly, so a multiplication by it changes no bit (LSO, which has none).
+struct UnitWeight {
+    double operator()(std::int64_t, std::int64_t) const noexcept { return 1.0; }
+    void validate(const std::string&) const {}
 };
 
 }  // namespace pride

@@ -1,0 +1,293 @@
+// LSO and ILSO (file 000): each equation on hand-computed values with fixed draws, the inertia
+// schedule's end points, one whole iteration replayed draw by draw, bounds, parameters, and the
+// behaviour on continuous problems that the shift experiment relies on.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "algorithms/lso.hpp"
+#include "algorithms/parts/inertia.hpp"
+#include "algorithms/parts/lion_moves.hpp"
+#include "framework/error.hpp"
+#include "framework/termination.hpp"
+#include "problems/continuous/functions.hpp"
+#include "problems/continuous/shifted.hpp"
+
+namespace {
+
+using Vec = std::vector<double>;
+
+struct PopulationLog {
+    std::vector<pride::Matrix> populations;
+    std::vector<Vec> fitness;
+    void operator()(const pride::IterationView& v) {
+        populations.push_back(v.population);
+        fitness.emplace_back(v.fitness.begin(), v.fitness.end());
+    }
+};
+
+double sphere(std::span<const double> x) {
+    double s = 0.0;
+    for (double v : x) s += v * v;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("eqs. 1-2: the number of adult lions", "[lso][equations]") {
+    CHECK(pride::lion::leaders(20, 0.2) == 4);   // ceil(4)
+    CHECK(pride::lion::leaders(20, 0.21) == 5);  // ceil(4.2)
+    CHECK(pride::lion::leaders(20, 0.01) == 2);  // at least 2
+    CHECK(pride::lion::leaders(20, 0.9) == 10);  // at most N/2
+    CHECK(pride::lion::leaders(5, 0.2) == 2);
+    CHECK(pride::lion::leaders(4, 0.99) == 2);
+}
+
+TEST_CASE("eq. 5: the step from the means of the bounds", "[lso][equations]") {
+    const Vec lo{-5.0, -5.0}, hi{5.0, 15.0};
+    CHECK(pride::lion::step(0.5, lo, hi) == 7.5);  // 0.5 * (10 - (-5))
+    CHECK(pride::lion::step(0.1, Vec{0.0}, Vec{9.0}) == Approx(0.9).epsilon(1e-15));
+}
+
+TEST_CASE("eqs. 6-7: the disturbance factors of lionesses and cubs", "[lso][equations]") {
+    const double step = 2.0;
+    // eq. 6 read as exp(-30 (t/T)^10): nearly the whole step for most of the run, then a collapse.
+    CHECK(pride::lion::alpha_f(step, 0, 50) == 2.0);
+    CHECK(pride::lion::alpha_f(step, 25, 50) == Approx(2.0 * std::exp(-30.0 / 1024.0)).epsilon(1e-15));
+    CHECK(pride::lion::alpha_f(step, 25, 50) > 1.94);
+    CHECK(pride::lion::alpha_f(step, 50, 50) == Approx(2.0 * std::exp(-30.0)).epsilon(1e-15));
+    // eq. 7: linear from the step to zero.
+    CHECK(pride::lion::alpha_c(step, 0, 50) == 2.0);
+    CHECK(pride::lion::alpha_c(step, 10, 50) == Approx(1.6).epsilon(1e-15));
+    CHECK(pride::lion::alpha_c(step, 50, 50) == 0.0);
+}
+
+TEST_CASE("eq. 3: the king's move", "[lso][equations]") {
+    const Vec g{1.0, 2.0}, p{4.0, 6.0};  // ||p - g|| = 5
+    Vec out(2);
+    pride::lion::king(g, p, 0.5, out);  // g (1 + 0.5 * 5) = 3.5 g
+    CHECK(out == Vec{3.5, 7.0});
+    pride::lion::king(g, p, -0.2, out);  // g (1 - 1) = 0
+    CHECK(out == Vec{0.0, 0.0});
+    pride::lion::king(g, g, 1.7, out);  // the king's own p is g: it stays on g
+    CHECK(out == g);
+}
+
+TEST_CASE("eqs. 4 and 11: a lioness with her partner, without and with the inertia weight", "[lso][equations]") {
+    const Vec p{2.0, 4.0}, c{4.0, 0.0};  // midpoint (3, 2)
+    Vec out(2);
+    pride::lion::midpoint_move(p, c, 0.2, -1.5, 1.0, out);  // (3, 2) * (1 + 0.2 * -1.5) = (2.1, 1.4)
+    CHECK(out[0] == Approx(2.1).epsilon(1e-15));
+    CHECK(out[1] == Approx(1.4).epsilon(1e-15));
+    pride::lion::midpoint_move(p, c, 0.2, -1.5, 0.5, out);  // eq. 11 with w = 0.5
+    CHECK(out[0] == Approx(1.05).epsilon(1e-15));
+    CHECK(out[1] == Approx(0.7).epsilon(1e-15));
+}
+
+TEST_CASE("eqs. 8, 9 and 12: a cub in each branch", "[lso][equations]") {
+    const Vec lo{-5.0, -5.0}, hi{5.0, 10.0};
+    const Vec g{1.0, 2.0}, p{3.0, 0.0}, lioness{-1.0, 4.0};
+    Vec g_bar(2), out(2);
+    pride::lion::opposite(lo, hi, g, g_bar);  // eq. 8: lo + hi - g
+    CHECK(g_bar == Vec{-1.0, 3.0});
+
+    const pride::LsoCubs lso;
+    const pride::IlsoCubs ilso;
+    using pride::lion::CubTarget;
+    // q = 0.2: the king under both rules; q = 0.31: the king for LSO (1/3), a lioness for ILSO (3/10).
+    CHECK(pride::lion::cub_target(0.2, lso.first, lso.second) == CubTarget::king);
+    CHECK(pride::lion::cub_target(0.31, lso.first, lso.second) == CubTarget::king);
+    CHECK(pride::lion::cub_target(0.31, ilso.first, ilso.second) == CubTarget::lioness);
+    CHECK(pride::lion::cub_target(0.5, lso.first, lso.second) == CubTarget::lioness);
+    CHECK(pride::lion::cub_target(2.0 / 3.0, lso.first, lso.second) == CubTarget::opposite);
+    CHECK(pride::lion::cub_target(0.9, ilso.first, ilso.second) == CubTarget::opposite);
+
+    // alpha_c = 0.5, gamma = 1 -> factor 1.5; w = 0.8 for ILSO.
+    pride::lion::midpoint_move(g, p, 0.5, 1.0, 1.0, out);  // (g + p)/2 * 1.5 = (2, 1) * 1.5
+    CHECK(out == Vec{3.0, 1.5});
+    pride::lion::midpoint_move(lioness, p, 0.5, 1.0, 1.0, out);  // (1, 2) * 1.5
+    CHECK(out == Vec{1.5, 3.0});
+    pride::lion::midpoint_move(g_bar, p, 0.5, 1.0, 1.0, out);  // (1, 1.5) * 1.5
+    CHECK(out == Vec{1.5, 2.25});
+    pride::lion::midpoint_move(g_bar, p, 0.5, 1.0, 0.8, out);  // eq. 12: times w
+    CHECK(out[0] == Approx(1.2).epsilon(1e-15));
+    CHECK(out[1] == Approx(1.8).epsilon(1e-15));
+}
+
+TEST_CASE("eq. 10: the inertia weight's end points and shape", "[lso][inertia]") {
+    const pride::QuadraticInertia w;  // 0.99 -> 0.35
+    CHECK(w.start == 0.99);
+    CHECK(w.end == 0.35);
+    const std::int64_t T = 50;
+    CHECK(w(-1, T) == 0.99);                             // paper's t = 0
+    CHECK(w(T - 1, T) == Approx(0.35).epsilon(1e-15));   // the last iteration, t = T
+    CHECK(w(T / 2 - 1, T) == Approx(0.83).epsilon(1e-15));  // t = T/2: 0.99 - 0.64/4
+    CHECK(w(0, T) == Approx(0.99 - 0.64 / 2500.0).epsilon(1e-15));
+    // Slow early, fast late: the first half loses a quarter of the range, the second three quarters.
+    double previous = w(-1, T);
+    for (std::int64_t t = 0; t < T; ++t) {
+        CHECK(w(t, T) < previous);
+        previous = w(t, T);
+    }
+    CHECK(w(0, T) - w(1, T) < w(T - 2, T) - w(T - 1, T));
+    // Usable on its own, like any schedule: PSO's velocity takes it as its inertia.
+    CHECK(pride::UnitWeight{}(7, 50) == 1.0);
+}
+
+TEST_CASE("one LSO iteration replayed draw by draw", "[lso][equations]") {
+    // N = 6, beta 0.2 -> nLeader 2: a king, one lioness (her partner is then the king), four cubs.
+    // The replay makes the same draws in the same order as lso.hpp documents and must land every
+    // lion on the same position, bit for bit.
+    pride::continuous::Sphere problem(3);
+    pride::LsoAlgorithm lso;
+    lso.population = 6;
+    PopulationLog log;
+    const std::uint64_t seed = 2024;
+    const auto r = lso.run(problem, pride::max_iterations(1), seed, log);
+    REQUIRE(log.populations.size() == 2);
+    REQUIRE(r.evaluations == 12);
+
+    const auto lo = problem.lower();
+    const auto hi = problem.upper();
+    pride::Rng rng(seed);
+    pride::Matrix x0(3, 6);
+    pride::UniformInit{}(problem, rng, x0);
+    CHECK(x0 == log.populations[0]);
+    std::vector<double> f0(6);
+    for (Eigen::Index i = 0; i < 6; ++i) f0[static_cast<std::size_t>(i)] = sphere(pride::column(std::as_const(x0), i));
+    const double step = pride::lion::step(rng.uniform(), lo, hi);
+    std::vector<Eigen::Index> order(6);
+    std::iota(order.begin(), order.end(), Eigen::Index{0});
+    std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) {
+        return f0[static_cast<std::size_t>(a)] < f0[static_cast<std::size_t>(b)];
+    });
+    const auto g = pride::column(std::as_const(x0), order[0]);
+    Vec g_bar(3);
+    pride::lion::opposite(lo, hi, g, g_bar);
+    const double af = pride::lion::alpha_f(step, 1, 1), ac = pride::lion::alpha_c(step, 1, 1);
+    CHECK(ac == 0.0);  // T = 1: the only iteration is the last
+
+    pride::Matrix expected(3, 6);
+    for (std::size_t k = 0; k < 6; ++k) {
+        const Eigen::Index i = order[k];
+        const auto pi = pride::column(std::as_const(x0), i);
+        auto xi = pride::column(expected, i);
+        if (k == 0) {
+            pride::lion::king(g, pi, rng.normal(), xi);
+        } else if (k == 1) {
+            pride::lion::midpoint_move(pi, g, af, rng.normal(), 1.0, xi);  // the only lioness hunts with the king
+        } else {
+            const double q = rng.uniform();
+            std::span<const double> target = g_bar;
+            if (q < 1.0 / 3.0)
+                target = g;
+            else if (q < 2.0 / 3.0)
+                target = pride::column(std::as_const(x0), order[1 + rng.below(1)]);
+            pride::lion::midpoint_move(target, pi, ac, rng.normal(), 1.0, xi);
+        }
+        pride::Clamp{}(xi, lo, hi);
+    }
+    CHECK(expected == log.populations[1]);
+    // The king's p is g, so eq. 3 puts it back on g exactly.
+    CHECK(std::equal(g.begin(), g.end(), pride::column(std::as_const(expected), order[0]).begin()));
+    // Greedy personal bests: the best value is the best of both generations.
+    double best = *std::min_element(f0.begin(), f0.end());
+    for (double v : log.fitness[1]) best = std::min(best, v);
+    CHECK(r.best_f == best);
+}
+
+TEST_CASE("ILSO differs from LSO only by its policies", "[lso][ilso]") {
+    // With w = 1 and LSO's thresholds, the ILSO type is LSO: the same run bit for bit.
+    pride::Lso<pride::QuadraticInertia, pride::IlsoCubs, pride::Clamp, pride::UniformInit> same;
+    same.weight.start = same.weight.end = 1.0;
+    same.cubs.first = 1.0 / 3.0;
+    const pride::LsoAlgorithm lso;
+    const auto problem = pride::continuous::Shifted<pride::continuous::Rastrigin>(5);
+    const auto a = same.run(problem, pride::max_evaluations(2000), 3);
+    const auto b = lso.run(problem, pride::max_evaluations(2000), 3);
+    CHECK(a.history == b.history);
+    CHECK(a.best_x == b.best_x);
+    // The real ILSO moves differently.
+    const auto c = pride::make_ilso().run(problem, pride::max_evaluations(2000), 3);
+    CHECK(c.history != b.history);
+}
+
+TEST_CASE("LSO and ILSO keep every position in the box and spend budgets exactly", "[lso][bounds]") {
+    struct Check {
+        std::span<const double> lo, hi;
+        bool inside = true;
+        void operator()(const pride::IterationView& v) {
+            for (Eigen::Index j = 0; j < v.population.cols(); ++j)
+                for (Eigen::Index i = 0; i < v.population.rows(); ++i) {
+                    const double x = v.population(i, j);
+                    const auto d = static_cast<std::size_t>(i);
+                    inside = inside && x >= lo[d] && x <= hi[d];
+                }
+        }
+    };
+    const pride::continuous::Schwefel problem(4);
+    auto ilso = pride::make_ilso();
+    for (const std::int64_t budget : {20, 21, 39, 1000, 1013}) {
+        Check c1{problem.lower(), problem.upper()}, c2{problem.lower(), problem.upper()};
+        const auto a = pride::LsoAlgorithm{}.run(problem, pride::max_evaluations(budget), 7, c1);
+        const auto b = ilso.run(problem, pride::max_evaluations(budget), 7, c2);
+        CHECK(c1.inside);
+        CHECK(c2.inside);
+        CHECK(a.evaluations == budget);
+        CHECK(b.evaluations == budget);
+    }
+}
+
+TEST_CASE("invalid LSO parameters are refused with a message naming them", "[lso][params]") {
+    const pride::continuous::Sphere problem(2);
+    auto fails = [&](auto a, const std::string& fragment) {
+        INFO(fragment);
+        CHECK_THROWS_WITH(a.run(problem, pride::max_iterations(5), 1), Catch::Contains(fragment));
+    };
+    pride::LsoAlgorithm a;
+    a.population = 3;
+    fails(a, "lso: population must be >= 4");
+    a = {};
+    a.beta = 1.0;
+    fails(a, "lso: beta must be in (0, 1)");
+    a = {};
+    a.step_factor = 0.0;
+    fails(a, "lso: step must be in (0, 1]");
+    a = {};
+    a.cubs.first = 0.8;
+    fails(a, "lso: cub thresholds");
+    auto i = pride::make_ilso();
+    i.weight.end = -0.1;
+    fails(i, "ilso: w_min must be in [0, 1.5]");
+    i = pride::make_ilso();
+    CHECK_THROWS_WITH(i.run(problem, pride::Termination{}, 1), Catch::Contains("ilso: needs an iteration"));
+}
+
+TEST_CASE("LSO converges on the sphere; ILSO's weight helps at the origin and hurts off it", "[lso][convergence]") {
+    // The property the continuous experiment shows: multiplying by w < 1 pulls lions towards 0.
+    const std::int64_t budget = 20000;
+    std::vector<double> lso_plain, ilso_plain, ilso_shifted;
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+        lso_plain.push_back(pride::LsoAlgorithm{}.run(pride::continuous::Sphere(10), pride::max_evaluations(budget), seed).best_f);
+        ilso_plain.push_back(pride::make_ilso().run(pride::continuous::Sphere(10), pride::max_evaluations(budget), seed).best_f);
+        ilso_shifted.push_back(pride::make_ilso()
+                                   .run(pride::continuous::Shifted<pride::continuous::Sphere>(10),
+                                        pride::max_evaluations(budget), seed)
+                                   .best_f);
+    }
+    auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    INFO("LSO sphere " << median(lso_plain) << ", ILSO sphere " << median(ilso_plain) << ", ILSO shifted sphere "
+                       << median(ilso_shifted));
+    CHECK(median(lso_plain) < 1e-3);
+    CHECK(median(ilso_plain) < median(lso_plain));
+    CHECK(median(ilso_shifted) > 100.0 * median(ilso_plain));
+}
