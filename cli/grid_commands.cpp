@@ -21,6 +21,7 @@
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/oracle.hpp"
+#include "problems/grid/rough_rules.hpp"
 
 namespace pride::cli {
 namespace {
@@ -89,12 +90,17 @@ ParamMap grid_params(const PathOptions& o) {
 template <class Objective, class Encoding>
 void run_encoded(const PathOptions& o, const GridProblem<Objective>& problem, Encoding encoding, PathRun& run) {
     ParamMap params = grid_params(o);
-    if (o.init == "walk") {
-        require(o.algo.rfind("nlopt:", 0) != 0, "--init walk", "NLopt algorithms start from one uniform point");
-        params.set("walk_init", 1.0);
+    GridProblem<Objective> suggesting = problem;
+    if (!o.init.empty()) {
+        require(o.init == "uniform" || o.algo.rfind("nlopt:", 0) != 0, "--init " + o.init,
+                "NLopt algorithms start from one uniform point");
+        if (o.algo.rfind("nlopt:", 0) != 0) params.set("walk_init", o.init == "uniform" ? 0.0 : 1.0);
     }
+    suggesting.set_walks(o.init == "walk" ? Walks::random : Walks::rules);
+    // The rule book is built once per process at its first use: not inside a run's wall time.
+    if (o.init == "rules" || (o.init.empty() && o.algo == "ilso")) (void)grid_rule_book();
     const Termination termination = grid_termination(o);
-    Encoded<GridProblem<Objective>, Encoding> encoded(problem, std::move(encoding));
+    Encoded<GridProblem<Objective>, Encoding> encoded(std::move(suggesting), std::move(encoding));
     const Result r = with_algorithm(o.algo, params, [&](const auto& algorithm) {
         return algorithm.run(encoded, termination, static_cast<std::uint64_t>(o.seed));
     });
@@ -203,10 +209,12 @@ void check_path_options(const PathOptions& o) {
     require(o.encoding != "chain" || o.connector == "repair", "--connector",
             "chains need no connector: every operator keeps them legal");
     require(o.waypoints >= 1 && o.waypoints <= 1000, "--waypoints", "must be in [1, 1000]");
-    require(o.init == "uniform" || o.init == "walk", "--init", "expected uniform or walk, got '" + o.init + "'");
-    require(o.init == "uniform" || o.encoding == "line" || o.encoding == "free", "--init walk",
+    const bool walks = o.init == "walk" || o.init == "rules";
+    require(o.init.empty() || o.init == "uniform" || walks, "--init",
+            "expected uniform, walk or rules, got '" + o.init + "'");
+    require(!walks || o.encoding == "line" || o.encoding == "free", "--init " + o.init,
             "only for the line and free encodings (chains always start from walks)");
-    require(o.init == "uniform" || o.algo.rfind("nlopt:", 0) != 0, "--init walk",
+    require(!walks || o.algo.rfind("nlopt:", 0) != 0, "--init " + o.init,
             "NLopt algorithms start from one uniform point");
     require(additive || (o.algo != "exact" && !o.oracle), o.algo == "exact" ? "--algo exact" : "--oracle",
             "the iqga objective is not a sum of step and turn costs, so it has no exact oracle");

@@ -19,7 +19,9 @@ struct PathOptions {
     std::string objective = "cells";
     std::string encoding = "line";
     std::string connector = "repair";
-    std::string init = "uniform";  // or "walk": line/free populations seeded from random walks
+    // uniform, walk (random feasible walks) or rules (file 000's rough-set rule walks); empty: the
+    // algorithm's own choice (rules for ilso, uniform for the others)
+    std::string init;
     std::optional<std::int64_t> pop;
     std::optional<std::int64_t> iters;
     std::optional<std::int64_t> evals;

@@ -46,13 +46,14 @@ int main(int argc, char** argv) {
     path_cmd->add_option("--start", path.start, "start cell X,Y (x: column from the left, y: row from the top)")
         ->required();
     path_cmd->add_option("--goal", path.goal, "goal cell X,Y")->required();
-    path_cmd->add_option("--algo", path.algo, "astar, exact, pso, pso-constriction, ga, ga-plus or nlopt:NAME")
+    path_cmd->add_option("--algo", path.algo, "astar, exact, pso, pso-constriction, ga, ga-plus, lso, ilso or nlopt:NAME")
         ->required();
     path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
     path_cmd->add_option("--encoding", path.encoding, "line (default), free or chain");
     path_cmd->add_option("--connector", path.connector, "repair (default) or penalty");
     path_cmd->add_option("--init", path.init,
-                         "uniform (default) or walk: line/free populations read off random feasible walks");
+                         "uniform, walk (random feasible walks) or rules (file 000's rough-set rule walks); default: "
+                         "rules for ilso, uniform for the others");
     path_cmd->add_option("--pop", path.pop, "population size (default 20)");
     auto* path_iters =
         path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)");

@@ -399,6 +399,10 @@ const std::vector<Heuristic>& heuristics() {
         {"ga", "--algo ga --encoding free", "free"},
         {"ga", "--algo ga --encoding chain", "chain"},
         {"nlopt:LN_SBPLX", "--algo nlopt:LN_SBPLX --encoding line", "line"},
+        {"lso", "--algo lso", "line"},
+        {"ilso", "--algo ilso", "line"},
+        {"ilso", "--algo ilso --encoding free", "free"},
+        {"lso", "--algo lso --encoding free --init rules", "free"},
     };
     return h;
 }
@@ -520,6 +524,44 @@ TEST_CASE("cli grid: nlopt LN_SBPLX with the line encoding on every bundled map"
             INFO(b.name << " " << objective.args);
             check_heuristic(b, heuristics()[4], objective);
         }
+}
+
+TEST_CASE("cli grid: lso and ilso with the line and free encodings on every bundled map", "[cli][grid][path][lso]") {
+    for (const auto& b : bundled())
+        for (std::size_t k = 5; k < 9; ++k)
+            for (const Objective& objective :
+                 {cells_objective(), length_objective(), weighted_objective(), hswoa_objective()}) {
+                const Heuristic& h = heuristics()[k];
+                INFO(b.name << " " << h.args << " " << objective.args);
+                const JsonValue j = check_heuristic(b, h, objective);
+                // Rule walks are feasible paths: ILSO's initial population already holds one.
+                if (h.algo == "ilso" || h.args.find("--init rules") != std::string::npos) {
+                    const auto history = json_numbers(j.at("history"));
+                    REQUIRE_FALSE(history.empty());
+                    CHECK(history.front() < 10.0 * b.grid.width * b.grid.height);
+                }
+            }
+}
+
+TEST_CASE("cli grid: --init chooses uniform, random walks or rule walks", "[cli][grid][path][lso]") {
+    const Bundled& b = bundled()[2];  // 20x20: rule walks and random walks differ here
+    const std::string m = "path " + b.endpoints() + " --json --seed 4";
+    auto history = [&](const std::string& args) { return json_numbers(parse_json(success(m + args)).at("history")); };
+    // ILSO's default is the rule walks; --init rules says the same.
+    CHECK(history(" --algo ilso") == history(" --algo ilso --init rules"));
+    CHECK(history(" --algo ilso") != history(" --algo ilso --init uniform"));
+    CHECK(history(" --algo ilso --init walk") != history(" --algo ilso --init rules"));
+    // The others start uniformly unless told.
+    CHECK(history(" --algo pso") == history(" --algo pso --init uniform"));
+    CHECK(history(" --algo pso") != history(" --algo pso --init rules"));
+    CHECK(history(" --algo lso --init rules") != history(" --algo lso"));
+    expect_input_error(m + " --algo ilso --init nosuch", {"--init", "nosuch"});
+    expect_input_error(m + " --algo nlopt:LN_SBPLX --init rules", {"--init rules", "NLopt"});
+    expect_input_error(m + " --algo ga --encoding chain --init rules", {"--init rules", "chain"});
+    expect_input_error(m + " --algo lso --pop 3", {"lso", "population"});
+    expect_input_error(m + " --algo ilso --param beta=1", {"ilso", "beta"});
+    expect_input_error(m + " --algo ilso --param w_min=2", {"ilso", "w_min"});
+    expect_input_error(m + " --algo lso --param w_min=0.3", {"w_min"});  // LSO has no inertia weight
 }
 
 TEST_CASE("cli grid: the penalty connector never returns an infeasible path as a result", "[cli][grid][path]") {

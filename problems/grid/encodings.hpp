@@ -15,6 +15,7 @@
 #include "framework/random.hpp"
 #include "problems/grid/connectors.hpp"
 #include "problems/grid/grid_problem.hpp"
+#include "problems/grid/rule_walk.hpp"
 #include "problems/grid/walk.hpp"
 
 namespace pride::grid {
@@ -39,15 +40,21 @@ void join_waypoints(const GridProblem<Objective>& p, int count, Waypoint&& waypo
     if (out.violations > 0) out.violations = count_violations(p.map(), out.path, 1, p.corner_cutting());
 }
 
-/// One feasible random walk from start to goal per column of `out`, handed to read(walk, column).
+/// One feasible walk from start to goal per column of `out` (rule walks or random walks, as the
+/// problem says), handed to read(walk, column).
 template <class Objective, class Read>
 void read_walks(const GridProblem<Objective>& p, Rng& rng, Matrix& out, Read&& read) {
-    RandomWalker walker;
     Path walk;
-    for (Eigen::Index j = 0; j < out.cols(); ++j) {
-        walker.walk(p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting());
-        read(walk, j);
-    }
+    auto fill = [&](auto walker) {
+        for (Eigen::Index j = 0; j < out.cols(); ++j) {
+            walker.walk(p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting());
+            read(walk, j);
+        }
+    };
+    if (p.walks() == Walks::rules)
+        fill(RuleWalker{});
+    else
+        fill(RandomWalker{});
 }
 
 /// Rounds a gene to a coordinate in [0, extent - 1] (NaN to 0).
@@ -131,8 +138,9 @@ class LineEncoding {
         return out_;
     }
 
-    /// Genotypes read off feasible random walks: each line's gene is where the walk first meets
-    /// that line (the problem's suggestions for initialisers that accept them).
+    /// Genotypes read off feasible walks (the problem's rule or random walks): each line's gene is
+    /// where the walk first meets that line (the problem's suggestions for initialisers that
+    /// accept them).
     template <class Objective>
     void starting_points(const GridProblem<Objective>& p, Rng& rng, Matrix& out) const {
         detail::read_walks(p, rng, out, [&](const Path& walk, Eigen::Index j) {
@@ -223,7 +231,8 @@ class FreeEncoding {
         return out_;
     }
 
-    /// Genotypes read off feasible random walks: K cells sampled evenly along each walk.
+    /// Genotypes read off feasible walks (the problem's rule or random walks): K cells sampled
+    /// evenly along each walk.
     template <class Objective>
     void starting_points(const GridProblem<Objective>& p, Rng& rng, Matrix& out) const {
         detail::read_walks(p, rng, out, [&](const Path& walk, Eigen::Index j) {

@@ -43,6 +43,11 @@ inline std::vector<std::uint8_t> reachable_from(const GridMap& map, Cell start, 
     return seen;
 }
 
+/// Which walks the problem's suggested starting points are read off: file 000's rough-set rule
+/// walks (the default: what ILSO's initialiser asks the problem for) or the goal-biased random
+/// walk with taboo list (files 002 and 003).
+enum class Walks { rules, random };
+
 template <class Objective>
 class GridProblem {
   public:
@@ -71,6 +76,9 @@ class GridProblem {
     /// Free and connected to the start by legal steps.
     bool reachable(Cell c) const noexcept { return map_->inside(c) && (*reachable_)[map_->index(c)] != 0; }
 
+    Walks walks() const noexcept { return walks_; }
+    void set_walks(Walks w) noexcept { walks_ = w; }
+
     /// M of grid.md: W * H * 10, or more when the objective's weights allow larger feasible values.
     double penalty() const noexcept {
         const double cells = static_cast<double>(map_->width()) * map_->height();
@@ -90,6 +98,7 @@ class GridProblem {
     Cell start_, goal_;
     Objective objective_;
     bool corner_cutting_;
+    Walks walks_ = Walks::rules;
     std::shared_ptr<const std::vector<std::uint8_t>> reachable_;
 };
 
