@@ -71,6 +71,9 @@ class Lso {
     std::int64_t population = 20;
     double beta = 0.2;                  // share of adult lions, eqs. (1)-(2)
     std::optional<double> step_factor;  // eq. (5): r fixed instead of drawn (0.1: original LSO)
+    // One gamma per coordinate instead of one per lion: not file 000's reading (every move then
+    // scales a whole vector along one ray); an option to measure what that reading costs.
+    bool gamma_per_coordinate = false;
     Weight weight{};
     Cubs cubs{};
     Bounds bounds{};
@@ -110,6 +113,16 @@ class Lso {
         Matrix x(rows, n), p(rows, n);
         std::vector<double> fx(static_cast<std::size_t>(n)), fp(fx.size()), g(dim), g_bar(dim);
         std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
+        std::vector<double> gammas(gamma_per_coordinate ? dim : 0);
+        // gamma of eqs. 3, 4 and 9: one N(0,1) draw per lion, or one per coordinate (option).
+        auto move = [&](auto&& scalar_move, auto&& vector_move) {
+            if (gamma_per_coordinate) {
+                for (double& v : gammas) v = rng.normal();
+                vector_move(std::span<const double>(gammas));
+            } else {
+                scalar_move(rng.normal());
+            }
+        };
 
         init(problem, rng, x);
         for (Eigen::Index i = 0; i < n; ++i) bounds(column(x, i), lo, hi);
@@ -139,7 +152,8 @@ class Lso {
                 const auto pi = column(std::as_const(p), i);
                 const auto xi = column(x, i);
                 if (r == 0) {
-                    lion::king(g, pi, rng.normal(), xi);  // (3)
+                    move([&](double gamma) { lion::king(g, pi, gamma, xi); },
+                         [&](std::span<const double> gamma) { lion::king(g, pi, gamma, xi); });  // (3)
                 } else if (static_cast<std::int64_t>(r) < leaders) {
                     const auto self = static_cast<std::int64_t>(r) - 1;
                     std::span<const double> partner = g;  // a single lioness hunts with the king
@@ -147,7 +161,8 @@ class Lso {
                         auto c = static_cast<std::int64_t>(rng.below(static_cast<std::uint64_t>(lionesses - 1)));
                         partner = lioness(c >= self ? c + 1 : c);  // another lioness
                     }
-                    lion::midpoint_move(pi, partner, af, rng.normal(), w, xi);  // (4), (11)
+                    move([&](double gamma) { lion::midpoint_move(pi, partner, af, gamma, w, xi); },
+                         [&](std::span<const double> gamma) { lion::midpoint_move(pi, partner, af, gamma, w, xi); });  // (4), (11)
                 } else {
                     std::span<const double> target = g_bar;
                     switch (lion::cub_target(rng.uniform(), cubs.first, cubs.second)) {  // (9), (12)
@@ -157,7 +172,8 @@ class Lso {
                             break;
                         case lion::CubTarget::opposite: break;
                     }
-                    lion::midpoint_move(target, pi, ac, rng.normal(), w, xi);
+                    move([&](double gamma) { lion::midpoint_move(target, pi, ac, gamma, w, xi); },
+                         [&](std::span<const double> gamma) { lion::midpoint_move(target, pi, ac, gamma, w, xi); });
                 }
                 bounds(xi, lo, hi);
             }

@@ -88,6 +88,7 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
             if (params.contains("step")) a.step_factor = params.get("step", 0.0);
             a.cubs.first = params.get("cub_first", a.cubs.first);
             a.cubs.second = params.get("cub_second", a.cubs.second);
+            a.gamma_per_coordinate = params.get_int("gamma_per_coordinate", 0, a.id) != 0;
         };
         if (name == "lso") {
             Lso<UnitWeight, LsoCubs, Clamp, SelectableInit> a;

@@ -92,6 +92,26 @@ TEST_CASE("eqs. 4 and 11: a lioness with her partner, without and with the inert
     CHECK(out[1] == Approx(0.7).epsilon(1e-15));
 }
 
+TEST_CASE("the moves with one gamma per coordinate (an option, not file 000's reading)", "[lso][equations]") {
+    const Vec g{1.0, 2.0}, p{4.0, 6.0}, gamma{0.5, -0.2};  // ||p - g|| = 5
+    Vec out(2);
+    pride::lion::king(g, p, gamma, out);  // (1 * 3.5, 2 * 0)
+    CHECK(out == Vec{3.5, 0.0});
+    pride::lion::midpoint_move(p, g, 0.2, gamma, 0.5, out);  // 0.5 * (2.5 * 1.1, 4 * 0.96)
+    CHECK(out[0] == Approx(1.375).epsilon(1e-15));
+    CHECK(out[1] == Approx(1.92).epsilon(1e-15));
+    // In a run: reproducible, different from the per-lion reading, and inside the box.
+    pride::LsoAlgorithm a;
+    a.gamma_per_coordinate = true;
+    const auto problem = pride::continuous::Shifted<pride::continuous::Rastrigin>(4);
+    const auto r1 = a.run(problem, pride::max_evaluations(999), 5);
+    const auto r2 = a.run(problem, pride::max_evaluations(999), 5);
+    const auto r3 = pride::LsoAlgorithm{}.run(problem, pride::max_evaluations(999), 5);
+    CHECK(r1.history == r2.history);
+    CHECK(r1.history != r3.history);
+    CHECK(r1.evaluations == 999);
+}
+
 TEST_CASE("eqs. 8, 9 and 12: a cub in each branch", "[lso][equations]") {
     const Vec lo{-5.0, -5.0}, hi{5.0, 10.0};
     const Vec g{1.0, 2.0}, p{3.0, 0.0}, lioness{-1.0, 4.0};

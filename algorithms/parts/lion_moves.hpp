@@ -58,6 +58,20 @@ inline void midpoint_move(std::span<const double> a, std::span<const double> b, 
     for (std::size_t d = 0; d < a.size(); ++d) out[d] = (a[d] + b[d]) * factor;
 }
 
+/// The same moves with one gamma per coordinate (Lso::gamma_per_coordinate, not file 000's reading):
+/// x_d = g_d (1 + gamma_d ||p_i - g||) and x_d = w (a_d + b_d)/2 (1 + alpha gamma_d).
+inline void king(std::span<const double> g, std::span<const double> p_i, std::span<const double> gamma,
+                 std::span<double> out) {
+    double squared = 0.0;
+    for (std::size_t d = 0; d < g.size(); ++d) squared += (p_i[d] - g[d]) * (p_i[d] - g[d]);
+    const double distance = std::sqrt(squared);
+    for (std::size_t d = 0; d < g.size(); ++d) out[d] = g[d] * (1.0 + gamma[d] * distance);
+}
+inline void midpoint_move(std::span<const double> a, std::span<const double> b, double alpha,
+                          std::span<const double> gamma, double w, std::span<double> out) {
+    for (std::size_t d = 0; d < a.size(); ++d) out[d] = (a[d] + b[d]) * (w * 0.5 * (1.0 + alpha * gamma[d]));
+}
+
 /// Eq. (8): the point opposite the king, g_bar = low + high - g (per coordinate).
 inline void opposite(std::span<const double> low, std::span<const double> high, std::span<const double> g,
                      std::span<double> out) {
