@@ -750,18 +750,22 @@ bool matches(const DecisionTable& t, const Rule& rule, std::size_t row) {
 
 namespace {
 
-// Per merged row, the masks (over positions of B) of its value reducts, and for each the S-class
-// (as merged rows) that the rule matches. Subsets are visited by increasing size, so a subset
-// that contains a reduct already found for a row is not minimal for it and is skipped.
+// Per merged row, the masks (over positions of B) of its value reducts; with `want_groups`, also
+// the candidate rules: one per (mask, class of merged rows that the rule matches), shared by the
+// rows of that class. Subsets are visited by increasing size, so a subset that contains a reduct
+// already found for a row is not minimal for it and is skipped.
 struct ValueReducts {
-    std::vector<std::vector<std::uint64_t>> masks;                 // per merged row
-    std::vector<std::vector<std::vector<std::uint32_t>>> matched;  // per merged row, per mask: merged rows
+    std::vector<std::vector<std::uint64_t>> masks;  // per merged row
+    struct Group {
+        std::uint64_t mask;
+        std::vector<std::uint32_t> matched;  // merged rows, ascending
+    };
+    std::vector<Group> groups;
 };
 
-ValueReducts search_value_reducts(Collapsed& rows, std::size_t m, bool want_matched) {
+ValueReducts search_value_reducts(Collapsed& rows, std::size_t m, bool want_groups) {
     ValueReducts out;
     out.masks.resize(rows.rows);
-    if (want_matched) out.matched.resize(rows.rows);
     const std::uint64_t full = (std::uint64_t{1} << m) - 1;
     std::vector<std::uint64_t> order;
     for (std::uint64_t s = 0; s <= full; ++s) order.push_back(s);
@@ -770,7 +774,7 @@ ValueReducts search_value_reducts(Collapsed& rows, std::size_t m, bool want_matc
     std::vector<std::uint32_t> open;  // merged rows in POS
     for (std::size_t c = 0; c < rows.rows; ++c)
         if (rows.gd[c] != rows.conflict) open.push_back(static_cast<std::uint32_t>(c));
-    std::vector<std::uint32_t> need;
+    std::vector<std::uint32_t> need, group_of;
     for (auto s : order) {
         need.clear();
         for (auto c : open) {
@@ -788,16 +792,21 @@ ValueReducts search_value_reducts(Collapsed& rows, std::size_t m, bool want_matc
             else if (v != rows.gd[c])
                 v = rows.conflict;
         }
-        Classes members;
-        if (want_matched) members = classes_of(p);
+        if (want_groups) group_of.assign(p.count, none);
+        bool any = false;
         for (auto c : need) {
             if (g[p.id[c]] == rows.conflict) continue;
             out.masks[c].push_back(s);
-            if (want_matched) {
-                const auto& cls = members[p.id[c]];
-                out.matched[c].emplace_back(cls.begin(), cls.end());
+            if (want_groups && group_of[p.id[c]] == none) {
+                group_of[p.id[c]] = static_cast<std::uint32_t>(out.groups.size());
+                out.groups.push_back({s, {}});
+                any = true;
             }
         }
+        if (any)
+            for (std::size_t c = 0; c < rows.rows; ++c)
+                if (group_of[p.id[c]] != none)
+                    out.groups[group_of[p.id[c]]].matched.push_back(static_cast<std::uint32_t>(c));
     }
     return out;
 }
@@ -855,28 +864,20 @@ std::vector<Rule> minimal_rules(const DecisionTable& t, const Attributes& B0, co
     Collapsed rows(t, B, D);
     const ValueReducts vr = search_value_reducts(rows, B.size(), true);
 
-    // The candidates, each once (two merged rows with the same values on a value reduct give the
-    // same rule), with the merged rows they match.
+    // The candidates: one per (value reduct, class it matches); distinct groups have distinct
+    // conditions, since equal values on the same attributes would be the same class.
     struct Candidate {
         Rule rule;
         std::vector<std::uint32_t> matched;
     };
     std::vector<Candidate> cand;
-    {
-        std::vector<std::pair<std::vector<Condition>, std::size_t>> seen;  // sorted index
-        for (std::size_t c = 0; c < rows.rows; ++c) {
-            const std::size_t x = rows.first[c];
-            for (std::size_t i = 0; i < vr.masks[c].size(); ++i) {
-                Rule r;
-                for (auto k : positions_of(vr.masks[c][i])) r.conditions.push_back({B[k], t.value(x, B[k])});
-                auto it = std::lower_bound(seen.begin(), seen.end(), r.conditions,
-                                           [](const auto& e, const auto& v) { return e.first < v; });
-                if (it != seen.end() && it->first == r.conditions) continue;
-                seen.insert(it, {r.conditions, cand.size()});
-                for (auto a : D) r.decision.push_back(t.value(x, a));
-                cand.push_back({std::move(r), vr.matched[c][i]});
-            }
-        }
+    cand.reserve(vr.groups.size());
+    for (const auto& grp : vr.groups) {
+        const std::size_t x = rows.first[grp.matched.front()];
+        Rule r;
+        for (auto k : positions_of(grp.mask)) r.conditions.push_back({B[k], t.value(x, B[k])});
+        for (auto a : D) r.decision.push_back(t.value(x, a));
+        cand.push_back({std::move(r), grp.matched});
     }
 
     // Greedy cover of the positive region, counted in objects (merged rows weigh their objects).
@@ -896,19 +897,30 @@ std::vector<Rule> minimal_rules(const DecisionTable& t, const Attributes& B0, co
             return a.rule.conditions.size() < b.rule.conditions.size();
         return a.rule.conditions < b.rule.conditions;
     };
+    // Lazy greedy: gains only fall as objects get covered, so a candidate whose recomputed gain is
+    // still its stored one is the best of the heap (ties are ordered the same way in the heap).
+    using Entry = std::pair<std::size_t, std::size_t>;  // (stored gain, candidate)
+    auto worse = [&](const Entry& a, const Entry& b) {
+        return better(b.first, cand[b.second], a.first, cand[a.second]);
+    };
+    std::vector<Entry> heap;
+    for (std::size_t i = 0; i < cand.size(); ++i) heap.push_back({gain(cand[i]), i});
+    std::make_heap(heap.begin(), heap.end(), worse);
     std::vector<std::size_t> picked;
-    while (uncovered > 0) {
-        std::size_t best = cand.size(), best_gain = 0;
-        for (std::size_t i = 0; i < cand.size(); ++i) {
-            const std::size_t g = gain(cand[i]);
-            if (g > 0 && (best == cand.size() || better(g, cand[i], best_gain, cand[best]))) {
-                best = i;
-                best_gain = g;
-            }
+    while (uncovered > 0 && !heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end(), worse);
+        Entry top = heap.back();
+        heap.pop_back();
+        const std::size_t g = gain(cand[top.second]);
+        if (g == 0) continue;
+        if (g < top.first) {
+            heap.push_back({g, top.second});
+            std::push_heap(heap.begin(), heap.end(), worse);
+            continue;
         }
-        picked.push_back(best);
-        for (auto c : cand[best].matched) ++cover[c];
-        uncovered -= best_gain;
+        picked.push_back(top.second);
+        for (auto c : cand[top.second].matched) ++cover[c];
+        uncovered -= g;
     }
     // A rule whose every object another chosen rule also covers is redundant: drop, last picked first.
     std::vector<char> keep(picked.size(), 1);
