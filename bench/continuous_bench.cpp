@@ -23,6 +23,7 @@
 
 #include "algorithms/ga.hpp"
 #include "algorithms/nlopt.hpp"
+#include "algorithms/lso.hpp"
 #include "algorithms/pso.hpp"
 #include "problems/continuous/functions.hpp"
 
@@ -51,7 +52,7 @@ struct Settings {
     std::int64_t pop = 50;
     std::int64_t evals = 100000;
     std::int64_t seeds = 10;
-    std::vector<std::string> algos{"pso", "pso-constriction", "ga", "ga-plus", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"};
+    std::vector<std::string> algos{"pso", "pso-constriction", "ga", "ga-plus", "lso", "ilso", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"};
     bool pagmo = true;
 };
 
@@ -128,6 +129,16 @@ Result run_algorithm(const std::string& algo, const F& f, const Settings& s, std
     }
     if (algo == "ga-plus") {
         Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, UniformInit, PlusReplacement> a;
+        a.population = s.pop;
+        return a.run(f, budget, seed);
+    }
+    if (algo == "lso") {
+        LsoAlgorithm a;
+        a.population = s.pop;
+        return a.run(f, budget, seed);
+    }
+    if (algo == "ilso") {
+        auto a = make_ilso();
         a.population = s.pop;
         return a.run(f, budget, seed);
     }
@@ -242,7 +253,7 @@ int main(int argc, char** argv) {
     app.add_option("--seeds", s.seeds, "seeds 1..N (default 10)")->check(CLI::Range(1, 1000));
     app.add_option("--evals", s.evals, "evaluations per run (default 100000)")->check(CLI::Range(100, 100000000));
     app.add_option("--algos", s.algos,
-                   "algorithms (default: pso pso-constriction ga ga-plus nlopt:LN_SBPLX nlopt:GN_CRS2_LM)")
+                   "algorithms (default: pso pso-constriction ga ga-plus lso ilso nlopt:LN_SBPLX nlopt:GN_CRS2_LM)")
         ->delimiter(',');
     app.add_flag("!--no-pagmo", s.pagmo, "skip pagmo2 even when it was found at build time");
     CLI11_PARSE(app, argc, argv);
