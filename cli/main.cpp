@@ -12,6 +12,7 @@
 #include "cli/export.hpp"
 #include "cli/grid_commands.hpp"
 #include "cli/report.hpp"
+#include "cli/roughset.hpp"
 #include "framework/error.hpp"
 
 int main(int argc, char** argv) {
@@ -96,6 +97,18 @@ int main(int argc, char** argv) {
     bool list_json = false;
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
     list_cmd->add_flag("--json", list_json, "print one JSON object");
+
+    // pride roughset (cli/roughset.hpp): runs from its own callback, which ends the parse with
+    // CLI::Success (exit status 0) once the command has printed its output.
+    RoughsetOptions roughset;
+    auto* roughset_cmd = app.add_subcommand("roughset", "reduce a decision table: core, reducts and minimal rules");
+    roughset_cmd->add_option("table", roughset.table, "CSV file: a header of names, the last column the decision");
+    roughset_cmd->add_flag("--grid", roughset.grid, "file 000's grid decision table instead of a file");
+    roughset_cmd->add_flag("--json", roughset.json, "print one JSON object");
+    roughset_cmd->callback([&] {
+        roughset_command(roughset, std::cout);
+        throw CLI::Success();
+    });
 
     try {
         const auto subcommands = app.get_subcommands([](const CLI::App*) { return true; });

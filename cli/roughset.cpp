@@ -1,0 +1,214 @@
+// pride roughset: the rough-set analysis of a decision table, for people (names and labels as in
+// the file) and as one JSON object.
+#include "cli/roughset.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cli/numbers.hpp"
+#include "framework/error.hpp"
+#include "framework/roughset/roughset.hpp"
+#include "problems/grid/rough_rules.hpp"
+
+namespace pride::cli {
+namespace {
+
+using roughset::Attributes;
+using roughset::DecisionTable;
+using roughset::Rule;
+
+// Minimal rules cost about 2^|B| partitions of the distinct rows; beyond this many row-subset
+// steps they are not attempted (minutes of work, thousands of rules).
+constexpr double rule_budget = 1 << 28;
+
+struct Analysis {
+    Attributes C, D;
+    std::size_t rows = 0;
+    bool consistent = false;
+    std::size_t positive = 0;
+    double gamma = 1.0;
+    Attributes core;
+    bool exhaustive = false;
+    std::vector<Attributes> reducts;  // all of them when exhaustive, else {quick}
+    Attributes quick;
+    Attributes used;  // the attributes the rules are computed on
+    std::string why;  // why those
+    std::optional<std::vector<Rule>> rules;
+    std::string no_rules;  // why there are none, when rules is empty
+};
+
+Analysis analyse(const DecisionTable& t, std::optional<std::pair<Attributes, std::vector<Rule>>> given = {}) {
+    Analysis a;
+    a.C = t.conditions();
+    a.D = t.decision();
+    a.rows = t.rows();
+    a.positive = roughset::positive_region(t, a.C, a.D).size();
+    a.consistent = a.positive == a.rows;
+    a.gamma = roughset::dependency(t, a.C, a.D);
+    a.core = roughset::core(t, a.C, a.D);
+    a.quick = roughset::quick_reduct(t, a.C, a.D);
+    a.exhaustive = a.C.size() <= roughset::max_exhaustive_attributes;
+    if (a.exhaustive) {
+        a.reducts = roughset::reducts(t, a.C, a.D);
+        a.used = a.reducts.front();
+        a.why = a.reducts.size() == 1 ? "the only reduct" : "the first of the smallest reducts";
+    } else {
+        a.reducts = {a.quick};
+        a.used = a.quick;
+        a.why = "the QuickReduct result";
+    }
+    if (given) {
+        a.used = given->first;
+        a.why = "the grid rule book's reduct";
+        a.rules = std::move(given->second);
+        return a;
+    }
+    const std::size_t distinct = roughset::indiscernibility(t, a.used).size();
+    if (a.used.size() > roughset::max_exhaustive_attributes)
+        a.no_rules = fmt::format("not computed: the reduct has {} attributes, the limit is {}", a.used.size(),
+                                 roughset::max_exhaustive_attributes);
+    else if (static_cast<double>(std::uint64_t{1} << a.used.size()) * static_cast<double>(distinct) > rule_budget)
+        a.no_rules = fmt::format("not computed: 2^{} value subsets x {} distinct rows is over the limit of 2^28",
+                                 a.used.size(), distinct);
+    else
+        a.rules = roughset::minimal_rules(t, a.used, a.D);
+    return a;
+}
+
+std::string names_of(const DecisionTable& t, const Attributes& A) {
+    std::string s = "{";
+    for (std::size_t i = 0; i < A.size(); ++i) s += (i ? ", " : "") + t.name(A[i]);
+    return s + "}";
+}
+
+std::string json_names(const DecisionTable& t, const Attributes& A) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < A.size(); ++i) s += (i ? ", " : "") + json_string(t.name(A[i]));
+    return s + "]";
+}
+
+std::string rule_text(const DecisionTable& t, const Rule& r, const Attributes& D) {
+    std::string s;
+    for (std::size_t i = 0; i < r.conditions.size(); ++i) {
+        const auto& c = r.conditions[i];
+        s += fmt::format("{}{}={}", i ? " and " : "", t.name(c.attribute), t.label(c.attribute, c.value));
+    }
+    if (r.conditions.empty()) s = "always";
+    s += " ->";
+    for (std::size_t i = 0; i < D.size(); ++i) s += fmt::format(" {}={}", t.name(D[i]), t.label(D[i], r.decision[i]));
+    return s;
+}
+
+std::string support_text(const Rule& r) {
+    if (r.support.size() > 10) return fmt::format("[{} objects]", r.support.size());
+    std::string s = r.support.size() == 1 ? "[object " : "[objects ";
+    for (std::size_t i = 0; i < r.support.size(); ++i) s += fmt::format("{}{}", i ? ", " : "", r.support[i] + 1);
+    return s + "]";
+}
+
+void print_human(const DecisionTable& t, const Analysis& a, std::string& s) {
+    s += fmt::format("consistent: {}\n", a.consistent ? "yes" : "no");
+    s += fmt::format("positive region: {} of {} objects (dependency {})\n", a.positive, a.rows, json_number(a.gamma));
+    s += fmt::format("core: {}\n", names_of(t, a.core));
+    if (a.exhaustive) {
+        s += fmt::format("reducts: {} (exhaustive over {} condition attributes)\n", a.reducts.size(), a.C.size());
+        for (const auto& r : a.reducts) s += fmt::format("  {}\n", names_of(t, r));
+    } else {
+        s += fmt::format("reducts: not searched exhaustively ({} condition attributes, the limit is {})\n", a.C.size(),
+                         roughset::max_exhaustive_attributes);
+        s +=
+            fmt::format("  {} (QuickReduct, greedy: a reduct, not necessarily a smallest one)\n", names_of(t, a.quick));
+    }
+    if (!a.rules) {
+        s += fmt::format("rules on {} ({}): {}\n", names_of(t, a.used), a.why, a.no_rules);
+        return;
+    }
+    s += fmt::format("rules on {} ({}): {} minimal certain rules\n", names_of(t, a.used), a.why, a.rules->size());
+    std::vector<std::string> texts;
+    std::size_t width = 0;
+    for (const auto& r : *a.rules) {
+        texts.push_back(rule_text(t, r, a.D));
+        width = std::max(width, texts.back().size());
+    }
+    for (std::size_t i = 0; i < texts.size(); ++i)
+        s += fmt::format("  {:<{}}  {}\n", texts[i], width, support_text((*a.rules)[i]));
+}
+
+std::string json_body(const DecisionTable& t, const Analysis& a) {
+    std::string s;
+    s += fmt::format("\"rows\": {}, \"conditions\": {}, \"decision\": {}, ", a.rows, json_names(t, a.C),
+                     json_string(t.name(a.D.front())));
+    s += fmt::format("\"consistent\": {}, \"positive_region\": {}, \"dependency\": {}, ",
+                     a.consistent ? "true" : "false", a.positive, json_number(a.gamma));
+    s += fmt::format("\"core\": {}, \"exhaustive\": {}, \"reducts\": [", json_names(t, a.core),
+                     a.exhaustive ? "true" : "false");
+    for (std::size_t i = 0; i < a.reducts.size(); ++i) s += (i ? ", " : "") + json_names(t, a.reducts[i]);
+    s += fmt::format("], \"quick_reduct\": {}, \"reduct_used\": {}, ", json_names(t, a.quick), json_names(t, a.used));
+    if (!a.rules) return s + fmt::format("\"rules\": null, \"rules_note\": {}", json_string(a.no_rules));
+    s += "\"rules\": [";
+    for (std::size_t i = 0; i < a.rules->size(); ++i) {
+        const Rule& r = (*a.rules)[i];
+        s += i ? ", {\"if\": {" : "{\"if\": {";
+        for (std::size_t k = 0; k < r.conditions.size(); ++k) {
+            const auto& c = r.conditions[k];
+            s += fmt::format("{}{}: {}", k ? ", " : "", json_string(t.name(c.attribute)),
+                             json_string(t.label(c.attribute, c.value)));
+        }
+        s += fmt::format("}}, \"then\": {}, \"support\": {}}}", json_string(t.label(a.D.front(), r.decision.front())),
+                         r.support.size());
+    }
+    return s + "]";
+}
+
+}  // namespace
+
+int roughset_command(const RoughsetOptions& o, std::ostream& out) {
+    if (o.grid && !o.table.empty()) throw InputError("roughset: give either TABLE.csv or --grid, not both");
+    if (!o.grid && o.table.empty()) throw InputError("roughset: give a decision table TABLE.csv, or --grid");
+    std::string s;
+    if (!o.grid) {
+        const DecisionTable t = roughset::read_csv(o.table);
+        const Analysis a = analyse(t);
+        if (o.json) {
+            s = fmt::format("{{\"table\": {}, {}}}\n", json_string(o.table), json_body(t, a));
+        } else {
+            std::vector<std::string> conds;
+            for (auto c : a.C) conds.push_back(t.name(c));
+            s = fmt::format("table: {} ({} objects; conditions {}; decision {})\n", o.table, a.rows,
+                            fmt::join(conds, ", "), t.name(a.D.front()));
+            print_human(t, a, s);
+        }
+        out << s;
+        return 0;
+    }
+    const auto& book = grid::grid_rule_book();
+    const DecisionTable& t = book.table;
+    const Analysis a = analyse(t, std::pair{book.reduct, book.rules});
+    // File 000 reports its own table's sizes (4374 rows -> 5 attributes, 162 rows -> 80 rules).
+    if (o.json) {
+        s = fmt::format(
+            "{{\"table\": \"grid\", {}, \"sizes\": {{\"rows\": {}, \"attributes\": {}, \"reduced_rows\": {}, "
+            "\"rules\": {}}}, \"paper\": {{\"rows\": 4374, \"attributes\": 5, \"reduced_rows\": 162, \"rules\": "
+            "80}}}}\n",
+            json_body(t, a), t.rows(), book.reduct.size(), book.reduced_rows, book.rules.size());
+    } else {
+        s = "table: the grid decision table of file 000 section 2.2 (X1..X8: the neighbours clockwise from the goal\n"
+            "direction, 1 = blocked, 2 = visited, 3 = free; Y: the neighbour to move to, 9 = back)\n";
+        s += fmt::format("{:<30}{:>8}{:>10}\n", "sizes", "pride", "file 000");
+        s += fmt::format("  {:<28}{:>8}{:>10}\n", "rows of the full table", t.rows(), 4374);
+        s += fmt::format("  {:<28}{:>8}{:>10}   {}\n", "attributes kept", book.reduct.size(), 5,
+                         names_of(t, book.reduct));
+        s += fmt::format("  {:<28}{:>8}{:>10}\n", "rows on the reduct", book.reduced_rows, 162);
+        s += fmt::format("  {:<28}{:>8}{:>10}\n", "minimal rules", book.rules.size(), 80);
+        print_human(t, a, s);
+    }
+    out << s;
+    return 0;
+}
+
+}  // namespace pride::cli

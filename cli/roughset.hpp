@@ -1,0 +1,18 @@
+#pragma once
+// pride roughset: reduce a decision table (a CSV file, or file 000's grid table) and print its
+// consistency, positive region, core, reducts and minimal rules (shared/spec/cli.md).
+#include <iosfwd>
+#include <string>
+
+namespace pride::cli {
+
+struct RoughsetOptions {
+    std::string table;  // CSV path; empty with `grid`
+    bool grid = false;  // file 000's grid decision table (problems/grid/rough_rules.hpp)
+    bool json = false;
+};
+
+/// Exit status 0; InputError for a missing or bad table, or neither/both of TABLE and --grid.
+int roughset_command(const RoughsetOptions& o, std::ostream& out);
+
+}  // namespace pride::cli
