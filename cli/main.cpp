@@ -98,17 +98,11 @@ int main(int argc, char** argv) {
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
     list_cmd->add_flag("--json", list_json, "print one JSON object");
 
-    // pride roughset (cli/roughset.hpp): runs from its own callback, which ends the parse with
-    // CLI::Success (exit status 0) once the command has printed its output.
     RoughsetOptions roughset;
     auto* roughset_cmd = app.add_subcommand("roughset", "reduce a decision table: core, reducts and minimal rules");
     roughset_cmd->add_option("table", roughset.table, "CSV file: a header of names, the last column the decision");
     roughset_cmd->add_flag("--grid", roughset.grid, "file 000's grid decision table instead of a file");
     roughset_cmd->add_flag("--json", roughset.json, "print one JSON object");
-    roughset_cmd->callback([&] {
-        roughset_command(roughset, std::cout);
-        throw CLI::Success();
-    });
 
     try {
         const auto subcommands = app.get_subcommands([](const CLI::App*) { return true; });
@@ -116,13 +110,14 @@ int main(int argc, char** argv) {
                                                    [&](const CLI::App* s) { return s->get_name() == argv[1]; });
         if (argc > 1 && argv[1][0] != '-' && !known)
             throw pride::InputError(std::string("unknown subcommand '") + argv[1] +
-                                    "' (expected run, eval, list, path, scen, bench, report or export)");
+                                    "' (expected run, eval, list, path, scen, roughset, bench, report or export)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
         if (*list_cmd) return list_command(list_json, std::cout);
         if (*path_cmd) return path_command(path, std::cout);
         if (*scen_cmd) return scen_command(scen, std::cout);
+        if (*roughset_cmd) return roughset_command(roughset, std::cout);
         if (*bench_cmd) return bench_command(bench, std::cout);
         if (*report_cmd) return report_command(report, std::cout);
         if (*export_cmd) return export_command(exporting, std::cout);
