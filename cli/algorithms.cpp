@@ -21,11 +21,11 @@ std::vector<AlgorithmInfo> list_algorithms() {
          "tournament eta_c pc eta_m pm)"},
         {"lso",
          "lion swarm (file 000 eqs. 1-9): king, lionesses, cubs; N 20, beta 0.2, step r*(mean high - mean low) with r "
-         "~ U(0,1) per run (params: pop beta step cub_first cub_second)"},
+         "~ U(0,1) per run (params: pop beta step cub_first cub_second gamma_per_coordinate)"},
         {"ilso",
          "improved lion swarm (file 000 eqs. 10-12): LSO with inertia 0.99 -> 0.35 (quadratic), cub threshold 3/10, "
          "starting from the problem's suggestions (rough-set rule walks on grids) (params: pop beta step w_max w_min "
-         "cub_first cub_second)"},
+         "cub_first cub_second gamma_per_coordinate)"},
         {"astar", "grids only (pride path): A* with the octile heuristic, the shortest path by length"},
         {"exact", "grids only (pride path): the exact optimum of an additive objective, over (cell, last direction)"},
     };
