@@ -28,10 +28,12 @@
 // fixed factor instead, 0.1 in the original LSO); gamma is one N(0,1) draw per lion per iteration,
 // for every role; t counts the iterations that move, 1..T, so w reaches w_min and alpha_c reaches 0
 // on the last one; moves are synchronous (all from the p of the previous iteration); with a single
-// lioness (nLeader = 2) her partner is the king; T is the iteration limit or the iterations the
+// lioness (nLeader = 2) her partner is the king; g_bar of eq. (8) is low + high - g per coordinate
+// (the spec; the paper's overlined low and high, means over the coordinates as in eq. 5, give the
+// same point on a cubic box and differ on others); T is the iteration limit or the iterations the
 // evaluation budget allows, and when the budget ends inside an iteration the lions left over are
-// not evaluated and keep their personal bests. As stated, the king's p_i is g, so eq. (3) puts the king back on g (it re-evaluates g):
-// kept as written.
+// not evaluated and keep their personal bests. As stated, the king's p_i is g, so eq. (3) puts the
+// king back on g, and g is evaluated again (1/N of the budget): kept as written.
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -104,7 +106,7 @@ class Lso {
         const std::size_t dim = problem.dimension();
         const auto lo = problem.lower();
         const auto hi = problem.upper();
-        const std::int64_t leaders = lion::leaders(population, beta);
+        const std::int64_t leaders = lion::leaders(population, beta);  // (1), (2)
         const auto lionesses = leaders - 1;
 
         Rng rng(seed);

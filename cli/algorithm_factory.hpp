@@ -43,7 +43,8 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
         return detail::finish(a, params, f);
     }
     // The command line's box algorithms take their initialiser at run time: uniform in the box, or
-    // (`walk_init=1`, pride path --init walk) genotypes read off random feasible walks.
+    // (`walk_init=1`, pride path --init walk|rules) the problem's suggested starting points: on
+    // grids, genotypes read off the walks the problem offers (rule walks unless told random).
     const bool walk_init = name != "lso" && name != "ilso" && params.get_int("walk_init", 0, std::string(name)) != 0;
     if (name == "pso") {
         Pso<InertiaVelocity<LinearInertia>, RangeVelocityClamp, Clamp, SelectableInit> a;

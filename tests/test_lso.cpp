@@ -224,6 +224,132 @@ TEST_CASE("one LSO iteration replayed draw by draw", "[lso][equations]") {
     CHECK(r.best_f == best);
 }
 
+namespace {
+
+/// LSO/ILSO replayed from docs/algorithms.md, independently of lso.hpp's loop: the same draws in
+/// the documented order, every position of every iteration. `w(t)` gets the paper's t = 1..T.
+template <class Weight>
+std::vector<pride::Matrix> replay(std::int64_t n, std::int64_t T, double first, Weight w, std::uint64_t seed) {
+    const pride::continuous::Sphere problem(3);
+    const auto lo = problem.lower();
+    const auto hi = problem.upper();
+    pride::Rng rng(seed);
+    pride::Matrix x(3, n);
+    pride::UniformInit{}(problem, rng, x);
+    pride::Matrix p = x;
+    std::vector<double> fp(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) fp[static_cast<std::size_t>(i)] = sphere(pride::column(std::as_const(x), i));
+    std::vector<pride::Matrix> out{x};
+    const double mean_high = (hi[0] + hi[1] + hi[2]) / 3.0, mean_low = (lo[0] + lo[1] + lo[2]) / 3.0;
+    const double step = rng.uniform() * (mean_high - mean_low);  // eq. 5
+    const std::int64_t leaders = std::max<std::int64_t>(2, std::min<std::int64_t>(n / 2, (n + 4) / 5));  // ceil(0.2 N)
+    for (std::int64_t t = 1; t <= T; ++t) {
+        std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
+        std::iota(order.begin(), order.end(), Eigen::Index{0});
+        std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) {
+            return fp[static_cast<std::size_t>(a)] < fp[static_cast<std::size_t>(b)];
+        });
+        const Vec g(p.col(order[0]).data(), p.col(order[0]).data() + 3);
+        Vec g_bar(3);
+        for (std::size_t d = 0; d < 3; ++d) g_bar[d] = lo[d] + hi[d] - g[d];
+        const double tt = static_cast<double>(t) / static_cast<double>(T);
+        const double af = step * std::exp(-30.0 * std::pow(tt, 10));          // eq. 6
+        const double ac = step * static_cast<double>(T - t) / static_cast<double>(T);  // eq. 7
+        const double wt = w(t, T);
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const Eigen::Index i = order[k];
+            const Vec pi(p.col(i).data(), p.col(i).data() + 3);
+            Vec target;
+            double factor = 0.0;
+            if (k == 0) {  // eq. 3
+                double sq = 0.0;
+                for (std::size_t d = 0; d < 3; ++d) sq += (pi[d] - g[d]) * (pi[d] - g[d]);
+                const double gamma = rng.normal();
+                for (std::size_t d = 0; d < 3; ++d) x(static_cast<Eigen::Index>(d), i) = g[d] * (1.0 + gamma * std::sqrt(sq));
+            } else {
+                if (static_cast<std::int64_t>(k) < leaders) {  // eqs. 4 / 11: another lioness
+                    const auto self = static_cast<std::int64_t>(k) - 1;
+                    auto c = static_cast<std::int64_t>(rng.below(static_cast<std::uint64_t>(leaders - 2)));
+                    if (c >= self) ++c;
+                    const auto pc = order[static_cast<std::size_t>(1 + c)];
+                    target.assign(p.col(pc).data(), p.col(pc).data() + 3);
+                    factor = af;
+                } else {  // eqs. 9 / 12
+                    const double q = rng.uniform();
+                    if (q < first) {
+                        target = g;
+                    } else if (q < 2.0 / 3.0) {
+                        const auto m = order[1 + rng.below(static_cast<std::uint64_t>(leaders - 1))];
+                        target.assign(p.col(m).data(), p.col(m).data() + 3);
+                    } else {
+                        target = g_bar;
+                    }
+                    factor = ac;
+                }
+                const double gamma = rng.normal();
+                for (std::size_t d = 0; d < 3; ++d)
+                    x(static_cast<Eigen::Index>(d), i) = (k < static_cast<std::size_t>(leaders) ? (pi[d] + target[d]) : (target[d] + pi[d])) *
+                                                         (wt * 0.5 * (1.0 + factor * gamma));
+            }
+            for (std::size_t d = 0; d < 3; ++d)
+                x(static_cast<Eigen::Index>(d), i) = std::max(lo[d], std::min(x(static_cast<Eigen::Index>(d), i), hi[d]));
+        }
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const double f = sphere(pride::column(std::as_const(x), i));
+            if (f < fp[static_cast<std::size_t>(i)]) {
+                fp[static_cast<std::size_t>(i)] = f;
+                p.col(i) = x.col(i);
+            }
+        }
+        out.push_back(x);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("whole LSO and ILSO runs replayed from the documented equations", "[lso][equations]") {
+    // N = 15, beta 0.2: a king, two lionesses (each hunts with the other), twelve cubs; T = 3, so
+    // alpha_f, alpha_c and ILSO's w take three distinct values.
+    for (const std::uint64_t seed : {7u, 8u, 9u}) {
+        INFO("seed " << seed);
+        pride::Lso<pride::UnitWeight, pride::LsoCubs> lso;
+        lso.population = 15;
+        PopulationLog a;
+        lso.run(pride::continuous::Sphere(3), pride::max_iterations(3), seed, a);
+        const auto expected_lso = replay(15, 3, 1.0 / 3.0, [](std::int64_t, std::int64_t) { return 1.0; }, seed);
+        REQUIRE(a.populations.size() == 4);
+        for (std::size_t k = 0; k < 4; ++k) CHECK(a.populations[k] == expected_lso[k]);
+
+        auto ilso = pride::make_ilso<pride::Clamp, pride::UniformInit>();
+        ilso.population = 15;
+        PopulationLog b;
+        ilso.run(pride::continuous::Sphere(3), pride::max_iterations(3), seed, b);
+        const auto expected_ilso = replay(
+            15, 3, 0.3,
+            [](std::int64_t t, std::int64_t T) {
+                const double r = static_cast<double>(t) / static_cast<double>(T);
+                return 0.99 - (0.99 - 0.35) * r * r;  // eq. 10
+            },
+            seed);
+        REQUIRE(b.populations.size() == 4);
+        for (std::size_t k = 0; k < 4; ++k) CHECK(b.populations[k] == expected_ilso[k]);
+    }
+}
+
+TEST_CASE("the quadratic inertia schedule is usable by PSO", "[lso][inertia]") {
+    // The policy on its own: PSO with eq. 10's schedule instead of the linear one.
+    pride::InertiaVelocity<pride::QuadraticInertia> velocity;
+    CHECK(velocity(0, 50).a == pride::QuadraticInertia{}(0, 50));
+    CHECK(velocity(49, 50).a == Approx(0.35).epsilon(1e-15));
+    CHECK(velocity(0, 50).b1 == velocity.c1);
+    pride::Pso<pride::InertiaVelocity<pride::QuadraticInertia>> pso;
+    pso.population = 20;
+    const auto r = pso.run(pride::continuous::Sphere(5), pride::max_iterations(50), 1);
+    CHECK(r.evaluations == 20 + 50 * 20);
+    CHECK(r.best_f < 1e-2 * r.history.front());  // it searches: two orders below the initial best
+}
+
 TEST_CASE("ILSO differs from LSO only by its policies", "[lso][ilso]") {
     // With w = 1 and LSO's thresholds, the ILSO type is LSO: the same run bit for bit.
     pride::Lso<pride::QuadraticInertia, pride::IlsoCubs, pride::Clamp, pride::UniformInit> same;

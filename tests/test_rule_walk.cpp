@@ -6,8 +6,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <numbers>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -164,18 +167,39 @@ TEST_CASE("rule walk: hand-made situations", "[grid][roughset]") {
 
     SECTION("open map: every step is X1, the goal direction") {
         const GridMap map = open_map(12, 9);
+        const Cell s{1, 2}, g{10, 6};
         for (const bool cutting : {false, true}) {
+            // Without jitter X1 is the direction nearest the goal angle.
+            walker.jitter = false;
             pride::Rng rng(1);
-            const Cell s{1, 2}, g{10, 6};
             REQUIRE(walker.walk(map, s, g, rng, path, cutting));
             check_walk(map, path, s, g, cutting);
-            for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-                const int d = direction(path[i], path[i + 1]);
-                CHECK(d == goal_direction(path[i], g));
-            }
+            for (std::size_t i = 0; i + 1 < path.size(); ++i)
+                CHECK(direction(path[i], path[i + 1]) == goal_direction(path[i], g));
             CHECK(path.size() == 10);  // Chebyshev distance 9, plus the start
             CHECK(walker.cells_entered() == path.size());
+            // With jitter (the default) X1 is one of the two directions bracketing the goal angle,
+            // so every step still shortens the Chebyshev distance, and the walks differ.
+            walker.jitter = true;
+            std::set<std::vector<int>> distinct;
+            for (std::uint64_t seed = 0; seed < 50; ++seed) {
+                pride::Rng r(seed);
+                REQUIRE(walker.walk(map, s, g, r, path, cutting));
+                check_walk(map, path, s, g, cutting);
+                CHECK(path.size() == 10);
+                std::vector<int> steps;
+                for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+                    const int d = direction(path[i], path[i + 1]);
+                    const double angle = std::atan2(g.y - path[i].y, g.x - path[i].x) / (std::numbers::pi / 4);
+                    CHECK((d == (static_cast<int>(std::floor(angle)) + 8) % 8 ||
+                           d == (static_cast<int>(std::ceil(angle)) + 8) % 8));
+                    steps.push_back(d);
+                }
+                distinct.insert(steps);
+            }
+            CHECK(distinct.size() > 10);
         }
+        walker.jitter = true;
     }
 
     SECTION("X1 blocked: X2 or X8, both seen over many seeds") {
@@ -334,10 +358,12 @@ TEST_CASE("rule walk: the bundled maps, and walk lengths beside the random walk"
         AStar astar;
         const double optimum = astar.search(map, s, g);
         REQUIRE(optimum > 0.0);
-        RuleWalker rules;
+        RuleWalker rules, fixed;
+        fixed.jitter = false;
         RandomWalker random;
         Path path;
-        double rule_sum = 0.0, random_sum = 0.0;
+        double rule_sum = 0.0, fixed_sum = 0.0, random_sum = 0.0;
+        std::set<std::vector<std::size_t>> distinct, distinct_fixed;
         constexpr int kWalks = 200;
         for (int i = 0; i < kWalks; ++i) {
             pride::Rng rng(static_cast<std::uint64_t>(i));
@@ -346,12 +372,25 @@ TEST_CASE("rule walk: the bundled maps, and walk lengths beside the random walk"
             const double length = metrics(path).length;
             CHECK(length >= optimum - 1e-9);
             rule_sum += length;
+            std::vector<std::size_t> cells;
+            for (const Cell c : path) cells.push_back(map.index(c));
+            distinct.insert(cells);
+            REQUIRE(fixed.walk(map, s, g, rng, path));
+            check_walk(map, path, s, g, false);
+            fixed_sum += metrics(path).length;
+            cells.clear();
+            for (const Cell c : path) cells.push_back(map.index(c));
+            distinct_fixed.insert(cells);
             REQUIRE(random.walk(map, s, g, rng, path));
             random_sum += metrics(path).length;
         }
+        // The spec asks for walks that differ: with the goal direction drawn between the two
+        // directions that bracket the goal angle they do, on every bundled map.
+        CHECK(distinct.size() > 5);
         WARN(entry.path().filename().string()
-             << ": mean length over " << kWalks << " walks: rules " << rule_sum / kWalks << ", random walk "
-             << random_sum / kWalks << ", A* optimum " << optimum);
+             << ": over " << kWalks << " walks: rules mean length " << rule_sum / kWalks << ", " << distinct.size()
+             << " distinct; without jitter " << fixed_sum / kWalks << ", " << distinct_fixed.size()
+             << " distinct; random walk " << random_sum / kWalks << "; A* optimum " << optimum);
     }
     CHECK(maps == 5);
 }

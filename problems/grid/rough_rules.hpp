@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "framework/roughset/roughset.hpp"
+#include "framework/random.hpp"
 #include "problems/grid/map.hpp"
 
 namespace pride::grid {
@@ -34,6 +35,19 @@ inline int goal_direction(Cell c, Cell g) {
     const double angle = std::atan2(static_cast<double>(g.y - c.y), static_cast<double>(g.x - c.x));
     const auto d = static_cast<int>(std::lround(angle / (std::numbers::pi / 4)));
     return (d + 8) % 8;
+}
+
+/// d1 drawn between the two directions that bracket the goal angle, the nearer one with the larger
+/// probability (linear in the angle: at 10 degrees off a direction it is chosen 35 times in 45); a
+/// goal exactly on a direction keeps it. The rule walks' reading of "equally good neighbours".
+inline int goal_direction(Cell c, Cell g, Rng& rng) {
+    const double angle = std::atan2(static_cast<double>(g.y - c.y), static_cast<double>(g.x - c.x));
+    const double u = angle / (std::numbers::pi / 4);
+    const double lower = std::floor(u);
+    const double frac = u - lower;
+    auto d = static_cast<int>(lower);
+    if (frac > 0.0 && rng.uniform() < frac) ++d;
+    return ((d % 8) + 8) % 8;
 }
 
 /// The direction of neighbour X_k (k = 1..8): numbered clockwise from the goal direction d1.

@@ -17,6 +17,11 @@ namespace pride::grid {
 
 class RuleWalker {
   public:
+    /// Draw the goal direction X1 between the two directions that bracket the goal angle (see
+    /// goal_direction(c, g, rng)); false: always the nearest one, and walks differ only where two
+    /// neighbours are equally far off it.
+    bool jitter = true;
+
     /// A legal path from s to g in `out` (no cell twice), or false when g cannot be reached.
     bool walk(const GridMap& map, Cell s, Cell g, Rng& rng, Path& out, bool corner_cutting = false) {
         const GridRuleBook& book = grid_rule_book();
@@ -38,7 +43,7 @@ class RuleWalker {
         while (!out.empty()) {
             const Cell c = out.back();
             if (c == g) return true;
-            const int d1 = goal_direction(c, g);
+            const int d1 = jitter ? goal_direction(c, g, rng) : goal_direction(c, g);
             for (int k = 1; k <= 8; ++k) {
                 const int d = neighbour_direction(d1, k);
                 const Cell n{c.x + kDx[d], c.y + kDy[d]};
