@@ -61,7 +61,9 @@ def main():
         # Convergence: median and interquartile band of the best value after each iteration.
         fig, ax = plt.subplots(figsize=(6.4, 4.2))
         positive, smallest, largest = True, np.inf, 0.0
-        for algorithm, rs in sorted(algorithms.items()):
+        # Line styles cycle as well as colours, so that algorithms with equal curves stay visible.
+        styles = ["-", "--", ":", "-."]
+        for index, (algorithm, rs) in enumerate(sorted(algorithms.items())):
             length = min(len(r[3]) for r in rs)
             values = np.array([[np.inf if v is None else v for v in r[3][:length]] for r in rs], dtype=float)
             x = np.array(rs[0][4][:length], dtype=float) if rs[0][4] else np.arange(length)
@@ -71,7 +73,7 @@ def main():
             positive = positive and bool(np.all(finite > 0))
             if finite.size:
                 smallest, largest = min(smallest, finite.min()), max(largest, finite.max())
-            ax.plot(x, median, label=algorithm)
+            ax.plot(x, median, label=algorithm, linestyle=styles[index % len(styles)], linewidth=1.8)
             ax.fill_between(x, low, high, alpha=0.25)
         ax.set_xlabel("evaluations" if all(rs[0][4] for rs in algorithms.values()) else "iteration")
         ax.set_ylabel("best value (median, IQR band)")
@@ -94,13 +96,14 @@ def main():
             fig, ax = plt.subplots(figsize=(6.4, 6.4 * blocked.shape[0] / blocked.shape[1]))
             ax.imshow(blocked, cmap="Greys", vmin=0, vmax=1.4, origin="upper",
                       extent=(-0.5, blocked.shape[1] - 0.5, blocked.shape[0] - 0.5, -0.5))
-            for algorithm in names:
+            for index, algorithm in enumerate(names):
                 feasible = [r for r in algorithms[algorithm] if r[1] is not None and r[2]]
                 if not feasible:
                     continue
                 best = min(feasible, key=lambda r: r[1])
                 path = np.array(best[2])
-                ax.plot(path[:, 0], path[:, 1], linewidth=2, label=f"{algorithm} ({best[1]:.4g}, seed {best[0]})")
+                ax.plot(path[:, 0], path[:, 1], linewidth=2, linestyle=styles[index % len(styles)],
+                        label=f"{algorithm} ({best[1]:.4g}, seed {best[0]})")
             sx, sy = map(int, info[2].split(","))
             gx, gy = map(int, info[3].split(","))
             ax.plot([sx], [sy], "o", color="green", markersize=8)
