@@ -39,7 +39,7 @@ struct Analysis {
     Attributes used;  // the attributes the rules are computed on
     std::string why;  // why those
     std::optional<std::vector<Rule>> rules;
-    std::string no_rules;  // why there are none, when rules is empty
+    std::string no_rules;  // why they were not computed, when rules is empty (nullopt)
 };
 
 Analysis analyse(const DecisionTable& t, std::optional<std::pair<Attributes, std::vector<Rule>>> given = {}) {
@@ -116,7 +116,8 @@ void print_human(const DecisionTable& t, const Analysis& a, std::string& s) {
     s += fmt::format("positive region: {} of {} objects (dependency {})\n", a.positive, a.rows, json_number(a.gamma));
     s += fmt::format("core: {}\n", names_of(t, a.core));
     if (a.exhaustive) {
-        s += fmt::format("reducts: {} (exhaustive over {} condition attributes)\n", a.reducts.size(), a.C.size());
+        s += fmt::format("reducts: {} (exhaustive over {} condition attribute{})\n", a.reducts.size(), a.C.size(),
+                         a.C.size() == 1 ? "" : "s");
         for (const auto& r : a.reducts) s += fmt::format("  {}\n", names_of(t, r));
     } else {
         s += fmt::format("reducts: not searched exhaustively ({} condition attributes, the limit is {})\n", a.C.size(),
@@ -128,7 +129,18 @@ void print_human(const DecisionTable& t, const Analysis& a, std::string& s) {
         s += fmt::format("rules on {} ({}): {}\n", names_of(t, a.used), a.why, a.no_rules);
         return;
     }
-    s += fmt::format("rules on {} ({}): {} minimal certain rules\n", names_of(t, a.used), a.why, a.rules->size());
+    // Certain rules only: objects outside the positive region have none.
+    const std::size_t outside = a.rows - a.positive;
+    if (a.positive == 0) {
+        s += fmt::format("rules on {} ({}): none (the positive region is empty: no object has a certain rule)\n",
+                         names_of(t, a.used), a.why);
+        return;
+    }
+    s += fmt::format("rules on {} ({}): {} minimal certain rule{}", names_of(t, a.used), a.why, a.rules->size(),
+                     a.rules->size() == 1 ? "" : "s");
+    if (outside > 0)
+        s += fmt::format(" (none for the {} object{} outside the positive region)", outside, outside == 1 ? "" : "s");
+    s += "\n";
     std::vector<std::string> texts;
     std::size_t width = 0;
     for (const auto& r : *a.rules) {

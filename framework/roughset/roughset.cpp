@@ -159,6 +159,9 @@ class CsvReader {
         quoted_ = false;
         for (;;) {
             Field f;
+            // Where the field starts, blanks included: the place an empty (blank-only) field is
+            // reported at. A field with text is reported at its first non-blank character.
+            const std::size_t start_line = line_, start_col = col_;
             while (blank(peek())) advance();
             f.line = line_;
             f.col = col_;
@@ -184,6 +187,10 @@ class CsvReader {
                     advance();
                 }
                 while (!f.text.empty() && blank(f.text.back())) f.text.pop_back();
+                if (f.text.empty()) {
+                    f.line = start_line;
+                    f.col = start_col;
+                }
             }
             r.fields.push_back(std::move(f));
             if (peek() == ',') {
@@ -394,8 +401,15 @@ class Collapsed {
             key.assign(rows, 0);
             unsigned offset = 0;
             for (std::size_t k = 0; k < B.size(); ++k) {
+                // A constant attribute (one value, code 0) takes no bits and is never shifted: once
+                // the fields before it fill all 64 bits, its offset is 64, a shift by the full width.
+                // Otherwise w <= 32 and offset + w <= 64, so offset < 64.
                 const auto w = static_cast<unsigned>(std::bit_width(std::max<std::uint32_t>(cols[k].card, 1) - 1));
-                field.push_back(w == 0 ? 0 : (w == 64 ? ~std::uint64_t{0} : ((std::uint64_t{1} << w) - 1)) << offset);
+                if (w == 0) {
+                    field.push_back(0);
+                    continue;
+                }
+                field.push_back(((std::uint64_t{1} << w) - 1) << offset);
                 for (std::size_t c = 0; c < rows; ++c) key[c] |= std::uint64_t{cols[k].code[c]} << offset;
                 offset += w;
             }
