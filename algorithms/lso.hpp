@@ -84,8 +84,8 @@ class Lso {
     std::string name() const { return id; }
 
     void validate() const {
-        require(population >= 4, name(), "population must be >= 4 (a king, a lioness, a cub), got " +
-                                             std::to_string(population));
+        require(population >= 4, name(),
+                "population must be >= 4 (a king, a lioness, a cub), got " + std::to_string(population));
         require(beta > 0.0 && beta < 1.0, name(), "beta must be in (0, 1), got " + std::to_string(beta));
         if (step_factor)
             require(*step_factor > 0.0 && *step_factor <= 1.0, name(),
@@ -143,8 +143,8 @@ class Lso {
             });
             const Eigen::Index king = order[0];
             std::copy_n(p.col(king).data(), dim, g.begin());
-            lion::opposite(lo, hi, g, g_bar);  // (8)
-            const double w = weight(t - 1, *horizon);  // (10)
+            lion::opposite(lo, hi, g, g_bar);                    // (8)
+            const double w = weight(t - 1, *horizon);            // (10)
             const double af = lion::alpha_f(step, t, *horizon);  // (6)
             const double ac = lion::alpha_c(step, t, *horizon);  // (7)
             auto lioness = [&](std::int64_t k) { return column(p, order[static_cast<std::size_t>(1 + k)]); };
@@ -164,15 +164,21 @@ class Lso {
                         partner = lioness(c >= self ? c + 1 : c);  // another lioness
                     }
                     move([&](double gamma) { lion::midpoint_move(pi, partner, af, gamma, w, xi); },
-                         [&](std::span<const double> gamma) { lion::midpoint_move(pi, partner, af, gamma, w, xi); });  // (4), (11)
+                         [&](std::span<const double> gamma) {
+                             lion::midpoint_move(pi, partner, af, gamma, w, xi);
+                         });  // (4), (11)
                 } else {
                     std::span<const double> target = g_bar;
                     switch (lion::cub_target(rng.uniform(), cubs.first, cubs.second)) {  // (9), (12)
-                        case lion::CubTarget::king: target = g; break;
-                        case lion::CubTarget::lioness:
-                            target = lioness(static_cast<std::int64_t>(rng.below(static_cast<std::uint64_t>(lionesses))));
+                        case lion::CubTarget::king:
+                            target = g;
                             break;
-                        case lion::CubTarget::opposite: break;
+                        case lion::CubTarget::lioness:
+                            target =
+                                lioness(static_cast<std::int64_t>(rng.below(static_cast<std::uint64_t>(lionesses))));
+                            break;
+                        case lion::CubTarget::opposite:
+                            break;
                     }
                     move([&](double gamma) { lion::midpoint_move(target, pi, ac, gamma, w, xi); },
                          [&](std::span<const double> gamma) { lion::midpoint_move(target, pi, ac, gamma, w, xi); });

@@ -22,8 +22,8 @@
 #include <vector>
 
 #include "algorithms/ga.hpp"
-#include "algorithms/nlopt.hpp"
 #include "algorithms/lso.hpp"
+#include "algorithms/nlopt.hpp"
 #include "algorithms/pso.hpp"
 #include "problems/continuous/functions.hpp"
 
@@ -52,7 +52,8 @@ struct Settings {
     std::int64_t pop = 50;
     std::int64_t evals = 100000;
     std::int64_t seeds = 10;
-    std::vector<std::string> algos{"pso", "pso-constriction", "ga", "ga-plus", "lso", "ilso", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"};
+    std::vector<std::string> algos{
+        "pso", "pso-constriction", "ga", "ga-plus", "lso", "ilso", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"};
     bool pagmo = true;
 };
 

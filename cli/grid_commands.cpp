@@ -98,7 +98,8 @@ void run_encoded(const PathOptions& o, const GridProblem<Objective>& problem, En
     }
     suggesting.set_walks(o.init == "walk" ? Walks::random : Walks::rules);
     // The rule book is built once per process at its first use: not inside a run's wall time.
-    const bool may_use_rules = o.init == "rules" || (o.init.empty() && (o.algo == "ilso" || params.contains("walk_init")));
+    const bool may_use_rules =
+        o.init == "rules" || (o.init.empty() && (o.algo == "ilso" || params.contains("walk_init")));
     if (may_use_rules) (void)grid_rule_book();
     const Termination termination = grid_termination(o);
     Encoded<GridProblem<Objective>, Encoding> encoded(std::move(suggesting), std::move(encoding));

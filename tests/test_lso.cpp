@@ -147,8 +147,8 @@ TEST_CASE("eq. 10: the inertia weight's end points and shape", "[lso][inertia]")
     CHECK(w.start == 0.99);
     CHECK(w.end == 0.35);
     const std::int64_t T = 50;
-    CHECK(w(-1, T) == 0.99);                             // paper's t = 0
-    CHECK(w(T - 1, T) == Approx(0.35).epsilon(1e-15));   // the last iteration, t = T
+    CHECK(w(-1, T) == 0.99);                                // paper's t = 0
+    CHECK(w(T - 1, T) == Approx(0.35).epsilon(1e-15));      // the last iteration, t = T
     CHECK(w(T / 2 - 1, T) == Approx(0.83).epsilon(1e-15));  // t = T/2: 0.99 - 0.64/4
     CHECK(w(0, T) == Approx(0.99 - 0.64 / 2500.0).epsilon(1e-15));
     // Slow early, fast late: the first half loses a quarter of the range, the second three quarters.
@@ -186,9 +186,8 @@ TEST_CASE("one LSO iteration replayed draw by draw", "[lso][equations]") {
     const double step = pride::lion::step(rng.uniform(), lo, hi);
     std::vector<Eigen::Index> order(6);
     std::iota(order.begin(), order.end(), Eigen::Index{0});
-    std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) {
-        return f0[static_cast<std::size_t>(a)] < f0[static_cast<std::size_t>(b)];
-    });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](auto a, auto b) { return f0[static_cast<std::size_t>(a)] < f0[static_cast<std::size_t>(b)]; });
     const auto g = pride::column(std::as_const(x0), order[0]);
     Vec g_bar(3);
     pride::lion::opposite(lo, hi, g, g_bar);
@@ -241,7 +240,7 @@ std::vector<pride::Matrix> replay(std::int64_t n, std::int64_t T, double first, 
     for (Eigen::Index i = 0; i < n; ++i) fp[static_cast<std::size_t>(i)] = sphere(pride::column(std::as_const(x), i));
     std::vector<pride::Matrix> out{x};
     const double mean_high = (hi[0] + hi[1] + hi[2]) / 3.0, mean_low = (lo[0] + lo[1] + lo[2]) / 3.0;
-    const double step = rng.uniform() * (mean_high - mean_low);  // eq. 5
+    const double step = rng.uniform() * (mean_high - mean_low);                                          // eq. 5
     const std::int64_t leaders = std::max<std::int64_t>(2, std::min<std::int64_t>(n / 2, (n + 4) / 5));  // ceil(0.2 N)
     for (std::int64_t t = 1; t <= T; ++t) {
         std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
@@ -253,7 +252,7 @@ std::vector<pride::Matrix> replay(std::int64_t n, std::int64_t T, double first, 
         Vec g_bar(3);
         for (std::size_t d = 0; d < 3; ++d) g_bar[d] = lo[d] + hi[d] - g[d];
         const double tt = static_cast<double>(t) / static_cast<double>(T);
-        const double af = step * std::exp(-30.0 * std::pow(tt, 10));          // eq. 6
+        const double af = step * std::exp(-30.0 * std::pow(tt, 10));                   // eq. 6
         const double ac = step * static_cast<double>(T - t) / static_cast<double>(T);  // eq. 7
         const double wt = w(t, T);
         for (std::size_t k = 0; k < order.size(); ++k) {
@@ -265,7 +264,8 @@ std::vector<pride::Matrix> replay(std::int64_t n, std::int64_t T, double first, 
                 double sq = 0.0;
                 for (std::size_t d = 0; d < 3; ++d) sq += (pi[d] - g[d]) * (pi[d] - g[d]);
                 const double gamma = rng.normal();
-                for (std::size_t d = 0; d < 3; ++d) x(static_cast<Eigen::Index>(d), i) = g[d] * (1.0 + gamma * std::sqrt(sq));
+                for (std::size_t d = 0; d < 3; ++d)
+                    x(static_cast<Eigen::Index>(d), i) = g[d] * (1.0 + gamma * std::sqrt(sq));
             } else {
                 if (static_cast<std::int64_t>(k) < leaders) {  // eqs. 4 / 11: another lioness
                     const auto self = static_cast<std::int64_t>(k) - 1;
@@ -288,11 +288,13 @@ std::vector<pride::Matrix> replay(std::int64_t n, std::int64_t T, double first, 
                 }
                 const double gamma = rng.normal();
                 for (std::size_t d = 0; d < 3; ++d)
-                    x(static_cast<Eigen::Index>(d), i) = (k < static_cast<std::size_t>(leaders) ? (pi[d] + target[d]) : (target[d] + pi[d])) *
-                                                         (wt * 0.5 * (1.0 + factor * gamma));
+                    x(static_cast<Eigen::Index>(d), i) =
+                        (k < static_cast<std::size_t>(leaders) ? (pi[d] + target[d]) : (target[d] + pi[d])) *
+                        (wt * 0.5 * (1.0 + factor * gamma));
             }
             for (std::size_t d = 0; d < 3; ++d)
-                x(static_cast<Eigen::Index>(d), i) = std::max(lo[d], std::min(x(static_cast<Eigen::Index>(d), i), hi[d]));
+                x(static_cast<Eigen::Index>(d), i) =
+                    std::max(lo[d], std::min(x(static_cast<Eigen::Index>(d), i), hi[d]));
         }
         for (Eigen::Index i = 0; i < n; ++i) {
             const double f = sphere(pride::column(std::as_const(x), i));
@@ -317,7 +319,8 @@ TEST_CASE("whole LSO and ILSO runs replayed from the documented equations", "[ls
         lso.population = 15;
         PopulationLog a;
         lso.run(pride::continuous::Sphere(3), pride::max_iterations(3), seed, a);
-        const auto expected_lso = replay(15, 3, 1.0 / 3.0, [](std::int64_t, std::int64_t) { return 1.0; }, seed);
+        const auto expected_lso = replay(
+            15, 3, 1.0 / 3.0, [](std::int64_t, std::int64_t) { return 1.0; }, seed);
         REQUIRE(a.populations.size() == 4);
         for (std::size_t k = 0; k < 4; ++k) CHECK(a.populations[k] == expected_lso[k]);
 
@@ -439,9 +442,11 @@ TEST_CASE("LSO and ILSO solve origin-centred functions but not their shifted for
     const auto ilso = pride::make_ilso();
     const double lso_plain = medians(lso, Sphere(10)), lso_shifted = medians(lso, Shifted<Sphere>(10));
     const double ilso_plain = medians(ilso, Sphere(10)), ilso_shifted = medians(ilso, Shifted<Sphere>(10));
-    const double lso_rastrigin = medians(lso, Rastrigin(10)), lso_rastrigin_shifted = medians(lso, Shifted<Rastrigin>(10));
+    const double lso_rastrigin = medians(lso, Rastrigin(10)),
+                 lso_rastrigin_shifted = medians(lso, Shifted<Rastrigin>(10));
     INFO("sphere: LSO " << lso_plain << " / shifted " << lso_shifted << "; ILSO " << ilso_plain << " / shifted "
-                        << ilso_shifted << "; rastrigin: LSO " << lso_rastrigin << " / shifted " << lso_rastrigin_shifted);
+                        << ilso_shifted << "; rastrigin: LSO " << lso_rastrigin << " / shifted "
+                        << lso_rastrigin_shifted);
     CHECK(lso_plain < 1e-6);
     CHECK(ilso_plain < 1e-6);
     CHECK(lso_rastrigin < 1e-6);

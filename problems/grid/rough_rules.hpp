@@ -11,8 +11,8 @@
 #include <span>
 #include <vector>
 
-#include "framework/roughset/roughset.hpp"
 #include "framework/random.hpp"
+#include "framework/roughset/roughset.hpp"
 #include "problems/grid/map.hpp"
 
 namespace pride::grid {

@@ -12,6 +12,7 @@
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 #include "problems/grid/rough_rules.hpp"
+#include "problems/grid/search_arrays.hpp"
 
 namespace pride::grid {
 
@@ -28,16 +29,9 @@ class RuleWalker {
         out.clear();
         entered_ = 0;
         if (!map.free(s) || !map.free(g)) return false;
-        if (visited_.size() != map.size()) {
-            visited_.assign(map.size(), 0);
-            stamp_ = 0;
-        }
-        if (++stamp_ == 0) {
-            std::fill(visited_.begin(), visited_.end(), 0);
-            stamp_ = 1;
-        }
+        visited_.begin(map.size());
         out.push_back(s);
-        visited_[map.index(s)] = stamp_;
+        visited_.visit(map.index(s));
         entered_ = 1;
         std::array<int, 8> values{};
         while (!out.empty()) {
@@ -48,7 +42,7 @@ class RuleWalker {
                 const int d = neighbour_direction(d1, k);
                 const Cell n{c.x + kDx[d], c.y + kDy[d]};
                 values[k - 1] = !map.legal_step(c, d, corner_cutting) ? kBlocked
-                                : visited_[map.index(n)] == stamp_    ? kVisited
+                                : visited_.visited(map.index(n))      ? kVisited
                                                                       : kOpen;
             }
             int k = book.decide(values);
@@ -68,7 +62,7 @@ class RuleWalker {
             }
             const int d = neighbour_direction(d1, k);
             const Cell n{c.x + kDx[d], c.y + kDy[d]};
-            visited_[map.index(n)] = stamp_;
+            visited_.visit(map.index(n));
             out.push_back(n);
             ++entered_;
         }
@@ -88,8 +82,7 @@ class RuleWalker {
         return values[4] == kOpen ? 5 : 0;
     }
 
-    std::vector<std::uint32_t> visited_;  // generation stamps: no clearing between walks
-    std::uint32_t stamp_ = 0;
+    VisitMarks visited_;  // generation stamps: no clearing between walks
     std::size_t entered_ = 0;
 };
 

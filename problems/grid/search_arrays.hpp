@@ -1,5 +1,5 @@
 #pragma once
-// The per-node arrays of a best-first search (A*, the oracle's Dijkstra), reused across queries:
+// The per-node arrays of a search (A*, the oracle's Dijkstra, the walks), reused across queries:
 // g values, parents, and "seen" and "closed" marks kept as generation stamps, so that a new query
 // clears nothing but bumps one counter.
 #include <algorithm>
@@ -30,6 +30,28 @@ struct SearchArrays {
             generation = 1;
         }
     }
+};
+
+/// One set of visit marks as generation stamps: the taboo list of a walk (RandomWalker, RuleWalker).
+class VisitMarks {
+  public:
+    /// A new walk over `cells` cells: nothing cleared unless the size changes or the stamp wraps.
+    void begin(std::size_t cells) {
+        if (marks_.size() != cells) {
+            marks_.assign(cells, 0);
+            stamp_ = 0;
+        }
+        if (++stamp_ == 0) {
+            std::fill(marks_.begin(), marks_.end(), 0);
+            stamp_ = 1;
+        }
+    }
+    bool visited(std::size_t cell) const noexcept { return marks_[cell] == stamp_; }
+    void visit(std::size_t cell) noexcept { marks_[cell] = stamp_; }
+
+  private:
+    std::vector<std::uint32_t> marks_;
+    std::uint32_t stamp_ = 0;
 };
 
 }  // namespace pride::grid

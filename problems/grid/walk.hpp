@@ -11,6 +11,7 @@
 #include "problems/grid/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/search_arrays.hpp"
 
 namespace pride::grid {
 
@@ -24,16 +25,9 @@ class RandomWalker {
     bool walk(const GridMap& map, Cell s, Cell g, Rng& rng, Path& out, bool corner_cutting = false) {
         out.clear();
         if (!map.free(s) || !map.free(g)) return false;
-        if (visited_.size() != map.size()) {
-            visited_.assign(map.size(), 0);
-            stamp_ = 0;
-        }
-        if (++stamp_ == 0) {
-            std::fill(visited_.begin(), visited_.end(), 0);
-            stamp_ = 1;
-        }
+        visited_.begin(map.size());
         out.push_back(s);
-        visited_[map.index(s)] = stamp_;
+        visited_.visit(map.index(s));
         while (!out.empty()) {
             const Cell c = out.back();
             if (c == g) return true;
@@ -42,7 +36,7 @@ class RandomWalker {
             double total = 0.0;
             for (int d = 0; d < 8; ++d) {
                 const Cell n{c.x + kDx[d], c.y + kDy[d]};
-                if (!map.legal_step(c, d, corner_cutting) || visited_[map.index(n)] == stamp_) continue;
+                if (!map.legal_step(c, d, corner_cutting) || visited_.visited(map.index(n))) continue;
                 const double w = std::exp(-bias * (octile(n, g) - here));
                 candidates_[count] = n;
                 weights_[count++] = w;
@@ -55,15 +49,14 @@ class RandomWalker {
             double r = rng.uniform() * total;
             int pick = 0;
             while (pick + 1 < count && r >= weights_[pick]) r -= weights_[pick++];
-            visited_[map.index(candidates_[pick])] = stamp_;
+            visited_.visit(map.index(candidates_[pick]));
             out.push_back(candidates_[pick]);
         }
         return false;
     }
 
   private:
-    std::vector<std::uint32_t> visited_;  // generation stamps: no clearing between walks
-    std::uint32_t stamp_ = 0;
+    VisitMarks visited_;  // generation stamps: no clearing between walks
     Cell candidates_[8];
     double weights_[8];
 };
