@@ -16,7 +16,8 @@ struct ProblemSpec {
     int line = 0;      // where it stands in the campaign file
     std::int64_t dim = 0;
     // grid only
-    std::string map, start, goal, objective = "cells", encoding = "line", connector = "repair", init;  // init: empty = the algorithm's own
+    std::string map, start, goal, objective = "cells", encoding = "line", connector = "repair";
+    std::string init;  // uniform, walk or rules; empty: each algorithm's own choice
     std::int64_t waypoints = 3, inflate = 0;
     std::optional<std::string> weights;
     std::optional<double> lambda;

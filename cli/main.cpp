@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
     path_cmd->add_option("--start", path.start, "start cell X,Y (x: column from the left, y: row from the top)")
         ->required();
     path_cmd->add_option("--goal", path.goal, "goal cell X,Y")->required();
-    path_cmd->add_option("--algo", path.algo, "astar, exact, pso, pso-constriction, ga, ga-plus, lso, ilso or nlopt:NAME")
+    path_cmd
+        ->add_option("--algo", path.algo, "astar, exact, pso, pso-constriction, ga, ga-plus, lso, ilso or nlopt:NAME")
         ->required();
     path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
     path_cmd->add_option("--encoding", path.encoding, "line (default), free or chain");
