@@ -9,6 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "tests/test_support.hpp"
 
 namespace pride::test {
 
@@ -43,6 +46,13 @@ inline CliOutput run_pride(const std::string& args, const std::string& stdin_tex
     std::remove((base + "/err").c_str());
     rmdir(base.c_str());
     return r;
+}
+
+/// Runs `pride ARGS` and checks that it fails as bad input (check_input_error), naming `words`.
+inline void expect_input_error(const std::string& args, const std::vector<std::string>& words = {},
+                               const std::string& stdin_text = "") {
+    INFO("pride " << args);
+    check_input_error(run_pride(args, stdin_text), words);
 }
 
 }  // namespace pride::test

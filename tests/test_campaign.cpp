@@ -36,6 +36,7 @@ extern char** environ;
 namespace {
 
 namespace fs = std::filesystem;
+using pride::test::check_input_error;
 using pride::test::json_numbers;
 using pride::test::slurp;
 using pride::test::TempDir;
@@ -149,22 +150,6 @@ std::string join(const std::vector<std::string>& args) {
     std::string s = "pride";
     for (const auto& a : args) s += " " + a;
     return s;
-}
-
-/// Exit status 2, nothing on stdout, exactly one non-empty line on stderr containing every word.
-void check_one_line_error(const Outcome& r, const std::vector<std::string>& words) {
-    INFO("stdout: " << r.out);
-    INFO("stderr: " << r.err);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    REQUIRE(r.err.size() >= 2);
-    CHECK(r.err.back() == '\n');
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(r.err[r.err.size() - 2] != '\n');
-    for (const auto& w : words) {
-        INFO("the message should name '" << w << "'");
-        CHECK(r.err.find(w) != std::string::npos);
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -417,7 +402,7 @@ void expect_campaign_error(const std::string& text, std::vector<std::string> wor
     INFO(join(args));
     INFO("campaign file:\n" << text);
     const Outcome r = run(args);
-    check_one_line_error(r, words);
+    check_input_error(r, words);
     CHECK(dir.entries() == std::vector<std::string>{"c.toml"});
 }
 
@@ -679,11 +664,11 @@ TEST_CASE("bench: --jobs 0 and an impossible store are refused before anything i
     const TempDir dir;
     const std::string file = dir.write("c.toml", kContinuous);
     const Outcome r = run({"bench", file, "--jobs", "0", "--out", dir.file("s.sqlite")});
-    check_one_line_error(r, {"--jobs"});
+    check_input_error(r, {"--jobs"});
     CHECK(dir.entries() == std::vector<std::string>{"c.toml"});
     // a store that cannot be created is named too
     const std::string nowhere = dir.file("no-such-folder/s.sqlite");
-    check_one_line_error(run({"bench", file, "--jobs", "1", "--out", nowhere}), {nowhere});
+    check_input_error(run({"bench", file, "--jobs", "1", "--out", nowhere}), {nowhere});
     CHECK(dir.entries() == std::vector<std::string>{"c.toml"});
 }
 
@@ -694,7 +679,7 @@ TEST_CASE("bench: the bundled example campaigns are valid", "[cli][bench]") {
         const std::string file = (bundled_campaigns() / name).string();
         INFO(file);
         const Outcome r = run({"bench", file, "--jobs", "0", "--out", dir.file("s.sqlite")});
-        check_one_line_error(r, {"--jobs"});
+        check_input_error(r, {"--jobs"});
         CHECK(r.err.find(name) == std::string::npos);
     }
     CHECK(dir.entries().empty());
@@ -895,7 +880,7 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
         const std::string other = dir.write("other.toml", text);
         const auto entries = dir.entries();
         const Outcome r = run({"bench", other, "--jobs", "2", "--out", store});
-        check_one_line_error(r, {store});
+        check_input_error(r, {store});
         CHECK(slurp(store) == bytes);
         CHECK(dir.entries() == entries);  // no journal left behind either
         check_same_runs(runs_of(store, true), before);
@@ -903,7 +888,7 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
 
     // A file that is not a store at all is refused too, and kept as it was.
     const std::string not_a_store = dir.write("notes.sqlite", "these are my notes, not a database\n");
-    check_one_line_error(run({"bench", config, "--jobs", "1", "--out", not_a_store}), {not_a_store});
+    check_input_error(run({"bench", config, "--jobs", "1", "--out", not_a_store}), {not_a_store});
     CHECK(slurp(not_a_store) == "these are my notes, not a database\n");
 
     // The campaign itself still finds its store intact: nothing to do.
@@ -936,7 +921,7 @@ TEST_CASE("bench: an SQLite database that is not a pride store is refused and le
         sqlite3_close(db);
     }
     const std::string bytes = slurp(foreign);
-    check_one_line_error(run({"bench", config, "--jobs", "1", "--out", foreign}), {foreign});
+    check_input_error(run({"bench", config, "--jobs", "1", "--out", foreign}), {foreign});
     CHECK(slurp(foreign) == bytes);
     CHECK(dir.entries() == std::vector<std::string>{"c.toml", "notes.db"});
 }

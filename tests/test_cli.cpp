@@ -22,6 +22,7 @@ using pride::test::lines_of;
 
 namespace {
 
+using pride::test::expect_input_error;
 using pride::test::JsonValue;
 using pride::test::parse_json;
 using pride::test::run_pride;
@@ -30,27 +31,6 @@ std::string format17(double v) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.17g", v);
     return buffer;
-}
-
-/// The command fails as bad input: exit status 2, nothing on stdout, exactly one non-empty line
-/// on stderr (ending in a single '\n') that contains each of `words`.
-void expect_input_error(const std::string& args, const std::vector<std::string>& words = {},
-                        const std::string& stdin_text = "") {
-    INFO("pride " << args);
-    const auto r = run_pride(args, stdin_text);
-    INFO("stdout: " << r.out);
-    INFO("stderr: " << r.err);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    REQUIRE(r.err.size() >= 2);
-    CHECK(r.err.back() == '\n');
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(r.err.find_first_not_of(" \t\n") != std::string::npos);
-    CHECK(r.err[r.err.size() - 2] != '\n');
-    for (const auto& w : words) {
-        INFO("the message should name '" << w << "'");
-        CHECK(r.err.find(w) != std::string::npos);
-    }
 }
 
 /// Runs a command that must succeed, returning its stdout.

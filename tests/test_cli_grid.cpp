@@ -28,6 +28,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using pride::test::expect_input_error;
 using pride::test::json_numbers;
 using pride::test::JsonValue;
 using pride::test::parse_json;
@@ -245,25 +246,6 @@ const std::vector<Bundled>& bundled() {
 
 // ---------------------------------------------------------------------------------------------
 // Running pride
-
-/// The command fails as bad input: exit 2, nothing on stdout, one non-empty line on stderr that
-/// contains each of `words`.
-void expect_input_error(const std::string& args, const std::vector<std::string>& words = {}) {
-    INFO("pride " << args);
-    const auto r = run_pride(args);
-    INFO("stdout: " << r.out);
-    INFO("stderr: " << r.err);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    REQUIRE(r.err.size() >= 2);
-    CHECK(r.err.back() == '\n');
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(r.err.find_first_not_of(" \t\n") != std::string::npos);
-    for (const auto& w : words) {
-        INFO("the message should name '" << w << "'");
-        CHECK(r.err.find(w) != std::string::npos);
-    }
-}
 
 /// Runs a command that must succeed and print one JSON document; returns its text.
 std::string success(const std::string& args) {

@@ -13,6 +13,7 @@
 
 namespace {
 
+using pride::test::expect_input_error;
 using pride::test::JsonValue;
 using pride::test::lines_of;
 using pride::test::parse_json;
@@ -28,16 +29,6 @@ std::vector<std::string> strings(const JsonValue& array) {
         out.push_back(item.text);
     }
     return out;
-}
-
-void expect_input_error(const std::string& args, const std::string& fragment) {
-    INFO("pride " << args);
-    const auto r = run_pride(args);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    const auto lines = lines_of(r.err);
-    REQUIRE(lines.size() == 1);
-    CHECK(lines[0].find(fragment) != std::string::npos);
 }
 
 }  // namespace
@@ -97,13 +88,13 @@ TEST_CASE("cli roughset: labels and names are JSON-escaped and printed as read",
 
 TEST_CASE("cli roughset: bad input exits with status 2 and one line", "[cli][roughset]") {
     pride::test::TempDir dir;
-    expect_input_error("roughset", "give a decision table TABLE.csv, or --grid");
-    expect_input_error("roughset " + p72 + " --grid", "not both");
-    expect_input_error("roughset /nonexistent/t.csv", "/nonexistent/t.csv: cannot open");
+    expect_input_error("roughset", {"give a decision table TABLE.csv, or --grid"});
+    expect_input_error("roughset " + p72 + " --grid", {"not both"});
+    expect_input_error("roughset /nonexistent/t.csv", {"/nonexistent/t.csv: cannot open"});
     const auto bad = dir.write("bad.csv", "a,b,c\n1,2,3\n1,2\n");
-    expect_input_error("roughset '" + bad + "'", "bad.csv:3:4: row has 2 fields, expected 3");
+    expect_input_error("roughset '" + bad + "'", {"bad.csv:3:4: row has 2 fields, expected 3"});
     const auto unterminated = dir.write("q.csv", "a,b\n\"1,2\n");
-    expect_input_error("roughset '" + unterminated + "' --json", "q.csv:2:1: unterminated quote");
+    expect_input_error("roughset '" + unterminated + "' --json", {"q.csv:2:1: unterminated quote"});
 }
 
 TEST_CASE("cli roughset: --grid --json gives the sizes beside file 000's", "[cli][roughset]") {

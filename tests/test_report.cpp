@@ -28,6 +28,7 @@ using pride::test::lines_of;
 
 namespace {
 
+using pride::test::expect_input_error;
 using pride::test::run_pride;
 constexpr double inf = std::numeric_limits<double>::infinity();
 
@@ -389,21 +390,6 @@ std::vector<std::vector<std::string>> table_rows(const std::vector<std::string>&
 const std::vector<std::string> kTableHeader = {"problem", "algorithm", "runs",    "min", "mean",    "std",
                                                "median",  "max",       "mean ms", "gap", "optimal", "p (Holm)"};
 
-/// The command fails as bad input: exit 2, nothing on stdout, one line on stderr naming `word`.
-void expect_input_error(const std::string& args, const std::string& word) {
-    INFO("pride " << args);
-    const auto r = run_pride(args);
-    INFO("stdout: " << r.out);
-    INFO("stderr: " << r.err);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    REQUIRE(r.err.size() >= 2);
-    CHECK(r.err.back() == '\n');
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(r.err.rfind("pride: ", 0) == 0);
-    CHECK(r.err.find(word) != std::string::npos);
-}
-
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -628,35 +614,35 @@ TEST_CASE("report: latex tabular with escaped percent and underscore", "[report]
 
 TEST_CASE("report: bad stores and formats exit 2 with one line", "[report][errors]") {
     TempDir dir;
-    expect_input_error("report " + shell_quote(dir / "missing.sqlite"), "missing.sqlite");
-    expect_input_error("report " + shell_quote(dir / "missing.sqlite") + " --format csv", "missing.sqlite");
-    expect_input_error("report " + shell_quote(dir.path), dir.path);  // a folder
+    expect_input_error("report " + shell_quote(dir / "missing.sqlite"), {"missing.sqlite"});
+    expect_input_error("report " + shell_quote(dir / "missing.sqlite") + " --format csv", {"missing.sqlite"});
+    expect_input_error("report " + shell_quote(dir.path), {dir.path});  // a folder
 
     const std::string text = dir / "notes.sqlite";
     {
         std::ofstream f(text);
         for (int i = 0; i < 40; ++i) f << "this is not an SQLite database, only text, line " << i << "\n";
     }
-    expect_input_error("report " + shell_quote(text), "notes.sqlite");
+    expect_input_error("report " + shell_quote(text), {"notes.sqlite"});
     const std::string small = dir / "small.sqlite";
     std::ofstream(small) << "hello\n";
-    expect_input_error("report " + shell_quote(small), "small.sqlite");
+    expect_input_error("report " + shell_quote(small), {"small.sqlite"});
     const std::string empty = dir / "empty.sqlite";
     { std::ofstream f(empty); }  // 0 bytes: an empty SQLite database without the tables
-    expect_input_error("report " + shell_quote(empty), "empty.sqlite");
+    expect_input_error("report " + shell_quote(empty), {"empty.sqlite"});
 
     const std::string no_runs = dir / "no-runs.sqlite";
     write_store(no_runs, {});
-    expect_input_error("report " + shell_quote(no_runs), "no-runs.sqlite");
-    expect_input_error("report " + shell_quote(no_runs) + " --format csv", "no runs");
+    expect_input_error("report " + shell_quote(no_runs), {"no-runs.sqlite"});
+    expect_input_error("report " + shell_quote(no_runs) + " --format csv", {"no runs"});
 
     const std::string good = dir / "good.sqlite";
     write_store(good, kRuns);
-    expect_input_error("report " + shell_quote(good) + " --format html", "--format");
-    expect_input_error("report " + shell_quote(good) + " --format ''", "--format");
-    expect_input_error("report " + shell_quote(good) + " --format CSV", "--format");
-    expect_input_error("report " + shell_quote(good) + " --format", "format");  // no value
-    expect_input_error("report", "store");                                      // no store
+    expect_input_error("report " + shell_quote(good) + " --format html", {"--format"});
+    expect_input_error("report " + shell_quote(good) + " --format ''", {"--format"});
+    expect_input_error("report " + shell_quote(good) + " --format CSV", {"--format"});
+    expect_input_error("report " + shell_quote(good) + " --format", {"format"});  // no value
+    expect_input_error("report", {"store"});                                      // no store
     // And the good store is fine with the default format.
     const auto r = run_pride("report " + shell_quote(good));
     CHECK(r.status == 0);

@@ -1,6 +1,6 @@
 #pragma once
-// Small helpers shared by the tests: a temporary folder, whole-file reads, lines of a text, and the
-// numbers of a JSON array.
+// Small helpers shared by the tests: a temporary folder, whole-file reads, lines of a text, the
+// numbers of a JSON array, and the check of the command line's bad-input contract.
 #include <stdlib.h>
 #include <catch2/catch.hpp>
 
@@ -81,6 +81,27 @@ inline std::vector<double> json_numbers(const JsonValue& array) {
         out.push_back(item.number);
     }
     return out;
+}
+
+/// The bad-input contract of every subcommand (shared/spec/cli.md): exit status 2, nothing on
+/// stdout, exactly one non-empty line on stderr, "pride: " first and '\n' last, naming each of
+/// `words`. `R` is any outcome with `status`, `out` and `err`.
+template <class R>
+void check_input_error(const R& r, const std::vector<std::string>& words) {
+    INFO("stdout: " << r.out);
+    INFO("stderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    REQUIRE(r.err.size() >= 2);
+    CHECK(r.err.back() == '\n');
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err[r.err.size() - 2] != '\n');
+    CHECK(r.err.find_first_not_of(" \t\n") != std::string::npos);
+    CHECK(r.err.rfind("pride: ", 0) == 0);
+    for (const auto& w : words) {
+        INFO("the message should name '" << w << "'");
+        CHECK(r.err.find(w) != std::string::npos);
+    }
 }
 
 }  // namespace pride::test
