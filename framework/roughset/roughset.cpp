@@ -583,24 +583,27 @@ Classes indiscernibility(const DecisionTable& t, const Attributes& B) {
     return classes_of(partition_of(t, checked(t, B, "B")));
 }
 
-Objects lower_approximation(const DecisionTable& t, const Attributes& B, const Objects& X) {
+namespace {
+/// The union of the B-classes that lie inside X (`inside`: the lower approximation) or meet X
+/// (the upper one).
+Objects approximation(const DecisionTable& t, const Attributes& B, const Objects& X, bool inside) {
     const auto in = membership(t, X);
+    const auto member = [&](std::size_t x) { return in[x] != 0; };
     Objects out;
     for (const auto& cls : indiscernibility(t, B))
-        if (std::all_of(cls.begin(), cls.end(), [&](std::size_t x) { return in[x] != 0; }))
+        if (inside ? std::all_of(cls.begin(), cls.end(), member) : std::any_of(cls.begin(), cls.end(), member))
             out.insert(out.end(), cls.begin(), cls.end());
     std::sort(out.begin(), out.end());
     return out;
 }
+}  // namespace
+
+Objects lower_approximation(const DecisionTable& t, const Attributes& B, const Objects& X) {
+    return approximation(t, B, X, true);
+}
 
 Objects upper_approximation(const DecisionTable& t, const Attributes& B, const Objects& X) {
-    const auto in = membership(t, X);
-    Objects out;
-    for (const auto& cls : indiscernibility(t, B))
-        if (std::any_of(cls.begin(), cls.end(), [&](std::size_t x) { return in[x] != 0; }))
-            out.insert(out.end(), cls.begin(), cls.end());
-    std::sort(out.begin(), out.end());
-    return out;
+    return approximation(t, B, X, false);
 }
 
 Objects boundary(const DecisionTable& t, const Attributes& B, const Objects& X) {
