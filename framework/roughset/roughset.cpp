@@ -449,10 +449,7 @@ class Collapsed {
     // single generalised decision. Stops at the first conflict.
     bool keeps(std::uint64_t mask) {
         if (!packed) {
-            std::vector<std::size_t> pos;
-            for (std::size_t k = 0; k < cols.size(); ++k)
-                if (mask >> k & 1) pos.push_back(k);
-            const Partition p = partition(pos);
+            const Partition p = partition_mask(mask);
             std::vector<std::uint32_t> g(p.count, none);
             for (std::size_t c = 0; c < rows; ++c) {
                 auto& v = g[p.id[c]];
