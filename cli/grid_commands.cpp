@@ -21,7 +21,6 @@
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/oracle.hpp"
-#include "problems/grid/rough_rules.hpp"
 
 namespace pride::cli {
 namespace {
@@ -97,10 +96,6 @@ void run_encoded(const PathOptions& o, const GridProblem<Objective>& problem, En
         if (o.algo.rfind("nlopt:", 0) != 0) params.set("walk_init", o.init == "uniform" ? 0.0 : 1.0);
     }
     suggesting.set_walks(o.init == "walk" ? Walks::random : Walks::rules);
-    // The rule book is built once per process at its first use: not inside a run's wall time.
-    const bool may_use_rules =
-        o.init == "rules" || (o.init.empty() && (o.algo == "ilso" || params.contains("walk_init")));
-    if (may_use_rules) (void)grid_rule_book();
     const Termination termination = grid_termination(o);
     Encoded<GridProblem<Objective>, Encoding> encoded(std::move(suggesting), std::move(encoding));
     const Result r = with_algorithm(o.algo, params, [&](const auto& algorithm) {

