@@ -44,8 +44,9 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
     }
     // The command line's box algorithms take their initialiser at run time: uniform in the box, or
     // (`walk_init=1`, pride path --init walk|rules) the problem's suggested starting points: on
-    // grids, genotypes read off the walks the problem offers (rule walks unless told random).
-    const bool walk_init = name != "lso" && name != "ilso" && params.get_int("walk_init", 0, std::string(name)) != 0;
+    // grids, genotypes read off the walks the problem offers (rule walks unless told random). ILSO
+    // takes them unless told otherwise (pride path --init uniform); the others do not.
+    const bool walk_init = params.get_int("walk_init", name == "ilso" ? 1 : 0, std::string(name)) != 0;
     if (name == "pso") {
         Pso<InertiaVelocity<LinearInertia>, RangeVelocityClamp, Clamp, SelectableInit> a;
         a.init.suggestions = walk_init;
@@ -83,7 +84,7 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
     }
     if (name == "lso" || name == "ilso") {
         auto set_lion = [&](auto& a) {
-            a.init.suggestions = params.get_int("walk_init", a.init.suggestions ? 1 : 0, a.id) != 0;
+            a.init.suggestions = walk_init;
             a.population = params.get_int("pop", a.population, a.id);
             a.beta = params.get("beta", a.beta);
             if (params.contains("step")) a.step_factor = params.get("step", 0.0);
@@ -96,9 +97,7 @@ decltype(auto) with_algorithm(std::string_view name, const ParamMap& params, F&&
             set_lion(a);
             return detail::finish(a, params, f);
         }
-        // ILSO takes the problem's starting points unless told otherwise (pride path --init uniform).
         auto a = make_ilso<Clamp, SelectableInit>();
-        a.init.suggestions = true;
         set_lion(a);
         a.weight.start = params.get("w_max", a.weight.start);
         a.weight.end = params.get("w_min", a.weight.end);
