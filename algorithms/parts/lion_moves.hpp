@@ -41,11 +41,16 @@ inline double alpha_c(double step, std::int64_t t, std::int64_t horizon) {
     return step * static_cast<double>(horizon - t) / static_cast<double>(horizon);
 }
 
+/// ||p - g||, the king's range in eq. (3).
+inline double distance(std::span<const double> p, std::span<const double> g) {
+    double squared = 0.0;
+    for (std::size_t d = 0; d < g.size(); ++d) squared += (p[d] - g[d]) * (p[d] - g[d]);
+    return std::sqrt(squared);
+}
+
 /// Eq. (3), the king: x = g (1 + gamma ||p_i - g||).
 inline void king(std::span<const double> g, std::span<const double> p_i, double gamma, std::span<double> out) {
-    double squared = 0.0;
-    for (std::size_t d = 0; d < g.size(); ++d) squared += (p_i[d] - g[d]) * (p_i[d] - g[d]);
-    const double factor = 1.0 + gamma * std::sqrt(squared);
+    const double factor = 1.0 + gamma * distance(p_i, g);
     for (std::size_t d = 0; d < g.size(); ++d) out[d] = g[d] * factor;
 }
 
@@ -62,10 +67,8 @@ inline void midpoint_move(std::span<const double> a, std::span<const double> b, 
 /// x_d = g_d (1 + gamma_d ||p_i - g||) and x_d = w (a_d + b_d)/2 (1 + alpha gamma_d).
 inline void king(std::span<const double> g, std::span<const double> p_i, std::span<const double> gamma,
                  std::span<double> out) {
-    double squared = 0.0;
-    for (std::size_t d = 0; d < g.size(); ++d) squared += (p_i[d] - g[d]) * (p_i[d] - g[d]);
-    const double distance = std::sqrt(squared);
-    for (std::size_t d = 0; d < g.size(); ++d) out[d] = g[d] * (1.0 + gamma[d] * distance);
+    const double range = distance(p_i, g);
+    for (std::size_t d = 0; d < g.size(); ++d) out[d] = g[d] * (1.0 + gamma[d] * range);
 }
 inline void midpoint_move(std::span<const double> a, std::span<const double> b, double alpha,
                           std::span<const double> gamma, double w, std::span<double> out) {
