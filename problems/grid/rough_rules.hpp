@@ -28,12 +28,16 @@ inline constexpr int kBack = 9;
 /// 3^8 neighbourhood states.
 inline constexpr std::size_t kGridStates = 6561;
 
+/// The angle of g - c in units of 45 degrees, in (-4, 4]: direction d lies at d (mod 8).
+inline double goal_angle(Cell c, Cell g) {
+    return std::atan2(static_cast<double>(g.y - c.y), static_cast<double>(g.x - c.x)) / (std::numbers::pi / 4);
+}
+
 /// d1: the direction nearest in angle to g - c (c != g). No tie is possible: an integer vector lies
 /// half-way between two directions only if tan(22.5 deg), an irrational number, were a ratio of
 /// integers.
 inline int goal_direction(Cell c, Cell g) {
-    const double angle = std::atan2(static_cast<double>(g.y - c.y), static_cast<double>(g.x - c.x));
-    const auto d = static_cast<int>(std::lround(angle / (std::numbers::pi / 4)));
+    const auto d = static_cast<int>(std::lround(goal_angle(c, g)));
     return (d + 8) % 8;
 }
 
@@ -41,8 +45,7 @@ inline int goal_direction(Cell c, Cell g) {
 /// probability (linear in the angle: at 10 degrees off a direction it is chosen 35 times in 45); a
 /// goal exactly on a direction keeps it. The rule walks' reading of "equally good neighbours".
 inline int goal_direction(Cell c, Cell g, Rng& rng) {
-    const double angle = std::atan2(static_cast<double>(g.y - c.y), static_cast<double>(g.x - c.x));
-    const double u = angle / (std::numbers::pi / 4);
+    const double u = goal_angle(c, g);
     const double lower = std::floor(u);
     const double frac = u - lower;
     auto d = static_cast<int>(lower);
