@@ -27,24 +27,16 @@
 #include "framework/termination.hpp"
 #include "problems/continuous/functions.hpp"
 #include "problems/continuous/shifted.hpp"
+#include "tests/test_support.hpp"
 
 using Catch::Matchers::Contains;
 using Catch::Matchers::WithinAbs;
+using pride::test::input_error_message;
 
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double nan_ = std::numeric_limits<double>::quiet_NaN();
-
-template <class Fn>
-std::string input_error_message(Fn&& f) {
-    try {
-        f();
-    } catch (const pride::InputError& e) {
-        return e.what();
-    }
-    return "<no InputError thrown>";
-}
 
 /// A 2-D box problem in [-1, 1]^2 whose objective is not always finite: x0 > 0.5 gives NaN,
 /// x0 < -0.5 gives +inf when x1 > 0 and -inf otherwise; elsewhere the sum of squares. Counts its

@@ -30,30 +30,23 @@
 #include "problems/grid/oracle.hpp"
 #include "problems/grid/path.hpp"
 #include "problems/grid/walk.hpp"
+#include "tests/grid_support.hpp"
+#include "tests/test_support.hpp"
 
 using namespace pride::grid;
 using Catch::Matchers::Contains;
 using Catch::Matchers::WithinAbs;
+using pride::test::below;
+using pride::test::input_error_message;
+using pride::test::map_of;
 
 namespace {
-
-/// A map from rows of '.' (free) and '@' (blocked), top row first.
-GridMap map_of(const std::vector<std::string>& rows) {
-    std::vector<std::uint8_t> blocked;
-    for (const auto& r : rows)
-        for (const char ch : r) blocked.push_back(ch == '@' ? 1 : 0);
-    return GridMap(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), std::move(blocked), "hand");
-}
 
 /// A w x h map whose cells are blocked independently with probability `density`.
 GridMap random_map(pride::Rng& rng, int w, int h, double density) {
     std::vector<std::uint8_t> blocked(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
     for (auto& b : blocked) b = rng.uniform() < density ? 1 : 0;
     return GridMap(w, h, std::move(blocked), "random");
-}
-
-int below(pride::Rng& rng, int n) {
-    return static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));
 }
 
 /// A uniformly drawn free cell (the map must have one).
@@ -84,17 +77,6 @@ bool is_chain(const Path& path, Cell start, Cell goal) {
     for (std::size_t i = 1; i < path.size(); ++i)
         if (direction(path[i - 1], path[i]) < 0) return false;
     return true;
-}
-
-/// The message of the InputError `f` throws; a marker when it throws nothing.
-template <class F>
-std::string input_error(F&& f) {
-    try {
-        f();
-    } catch (const pride::InputError& e) {
-        return e.what();
-    }
-    return "<no InputError thrown>";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -926,15 +908,15 @@ TEST_CASE("GridProblem rejects start and goal outside, blocked or unreachable, n
         "..@.@",
     }));
     const auto make = [&](Cell s, Cell g) { return [=] { GridProblem<LengthObjective> p(map, s, g); }; };
-    CHECK_THAT(input_error(make({-1, 0}, {1, 1})), Contains("--start") && Contains("outside"));
-    CHECK_THAT(input_error(make({0, 3}, {1, 1})), Contains("--start") && Contains("outside"));
-    CHECK_THAT(input_error(make({0, 0}, {5, 0})), Contains("--goal") && Contains("outside"));
-    CHECK_THAT(input_error(make({0, 0}, {1, -2})), Contains("--goal") && Contains("outside"));
-    CHECK_THAT(input_error(make({2, 0}, {1, 1})), Contains("--start") && Contains("blocked"));
-    CHECK_THAT(input_error(make({0, 0}, {4, 2})), Contains("--goal") && Contains("blocked"));
-    CHECK_THAT(input_error(make({0, 0}, {4, 0})), Contains("--goal") && Contains("cannot be reached"));
-    CHECK(input_error(make({0, 0}, {1, 2})) == "<no InputError thrown>");
+    CHECK_THAT(input_error_message(make({-1, 0}, {1, 1})), Contains("--start") && Contains("outside"));
+    CHECK_THAT(input_error_message(make({0, 3}, {1, 1})), Contains("--start") && Contains("outside"));
+    CHECK_THAT(input_error_message(make({0, 0}, {5, 0})), Contains("--goal") && Contains("outside"));
+    CHECK_THAT(input_error_message(make({0, 0}, {1, -2})), Contains("--goal") && Contains("outside"));
+    CHECK_THAT(input_error_message(make({2, 0}, {1, 1})), Contains("--start") && Contains("blocked"));
+    CHECK_THAT(input_error_message(make({0, 0}, {4, 2})), Contains("--goal") && Contains("blocked"));
+    CHECK_THAT(input_error_message(make({0, 0}, {4, 0})), Contains("--goal") && Contains("cannot be reached"));
+    CHECK(input_error_message(make({0, 0}, {1, 2})) == "<no InputError thrown>");
     // Column 2 is a full wall: no pair across it is connected, even with corner cutting.
     const auto cutting = [&](Cell s, Cell g) { return [=] { GridProblem<LengthObjective> p(map, s, g, {}, true); }; };
-    CHECK_THAT(input_error(cutting({1, 2}, {3, 2})), Contains("--goal") && Contains("cannot be reached"));
+    CHECK_THAT(input_error_message(cutting({1, 2}, {3, 2})), Contains("--goal") && Contains("cannot be reached"));
 }

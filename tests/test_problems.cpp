@@ -25,11 +25,13 @@
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/functions.hpp"
 #include "problems/continuous/shifted.hpp"
+#include "tests/test_support.hpp"
 
 using namespace pride::continuous;
 using Catch::Matchers::Contains;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
+using pride::test::input_error_message;
 
 namespace {
 
@@ -44,18 +46,6 @@ double eval(const std::vector<double>& x) {
 /// `expected`: |value - expected| <= half a unit in the last kept decimal.
 bool rounds_to(double value, double expected, int digits) {
     return std::abs(value - expected) <= 0.5 * std::pow(10.0, -digits) * (1.0 + 1e-12);
-}
-
-/// The message of the InputError `f` throws; a marker string when it throws nothing (any other
-/// exception propagates and fails the test).
-template <class Fn>
-std::string input_error_message(Fn&& f) {
-    try {
-        f();
-    } catch (const pride::InputError& e) {
-        return e.what();
-    }
-    return "<no InputError thrown>";
 }
 
 std::vector<double> random_point_in(std::span<const double> lo, std::span<const double> hi, pride::Rng& rng) {

@@ -23,26 +23,17 @@
 #include "problems/grid/rough_rules.hpp"
 #include "problems/grid/rule_walk.hpp"
 #include "problems/grid/walk.hpp"
+#include "tests/grid_support.hpp"
 
 using namespace pride::grid;
 namespace rs = pride::roughset;
+using pride::test::below;
+using pride::test::map_of;
 
 namespace {
 
-/// A map from rows of '.' (free) and '@' (blocked), top row first.
-GridMap hand_map(const std::vector<std::string>& rows) {
-    std::vector<std::uint8_t> blocked;
-    for (const auto& r : rows)
-        for (const char ch : r) blocked.push_back(ch == '@' ? 1 : 0);
-    return GridMap(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), std::move(blocked), "hand");
-}
-
 GridMap open_map(int w, int h) {
     return GridMap(w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0));
-}
-
-int below(pride::Rng& rng, int n) {
-    return static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));
 }
 
 /// The checks every successful walk must pass: legal, from s to g, no cell twice.
@@ -205,13 +196,13 @@ TEST_CASE("rule walk: hand-made situations", "[grid][roughset]") {
     SECTION("X1 blocked: X2 or X8, both seen over many seeds") {
         // Goal to the south-east, the south-east neighbour blocked: X2 = south and X8 = east are both
         // legal (orthogonal), free and unvisited.
-        const GridMap map = hand_map({".......",  //
-                                      ".......",  //
-                                      ".......",  //
-                                      "...@...",  //
-                                      ".......",  //
-                                      ".......",  //
-                                      "......."});
+        const GridMap map = map_of({".......",  //
+                                    ".......",  //
+                                    ".......",  //
+                                    "...@...",  //
+                                    ".......",  //
+                                    ".......",  //
+                                    "......."});
         const Cell s{2, 2}, g{6, 6};
         bool south = false, east = false;
         for (std::uint64_t seed = 0; seed < 200; ++seed) {
@@ -227,13 +218,13 @@ TEST_CASE("rule walk: hand-made situations", "[grid][roughset]") {
     }
 
     SECTION("X1 blocked orthogonally: without corner cutting X3 or X7, with it X2 or X8") {
-        const GridMap map = hand_map({".......",  //
-                                      ".......",  //
-                                      ".......",  //
-                                      "...@...",  //
-                                      ".......",  //
-                                      ".......",  //
-                                      "......."});
+        const GridMap map = map_of({".......",  //
+                                    ".......",  //
+                                    ".......",  //
+                                    "...@...",  //
+                                    ".......",  //
+                                    ".......",  //
+                                    "......."});
         const Cell s{2, 3}, g{6, 3};
         std::vector<Cell> first_strict, first_cutting;
         for (std::uint64_t seed = 0; seed < 200; ++seed) {
@@ -274,11 +265,11 @@ TEST_CASE("rule walk: hand-made situations", "[grid][roughset]") {
     SECTION("dead end: the walk backs out of a corridor aimed at the goal") {
         // The corridor on row 2 ends at the wall before the goal; the walk runs into it, backs up to
         // the start, leaves through the west opening (X5, the detour tier) and goes round.
-        const GridMap map = hand_map({".........",  //
-                                      ".@@@@@@@.",  //
-                                      "........@",  //
-                                      ".@@@@@@@.",  //
-                                      "........."});
+        const GridMap map = map_of({".........",  //
+                                    ".@@@@@@@.",  //
+                                    "........@",  //
+                                    ".@@@@@@@.",  //
+                                    "........."});
         const Cell s{1, 2}, g{8, 4};
         for (std::uint64_t seed = 0; seed < 20; ++seed) {
             pride::Rng rng(seed);
@@ -291,10 +282,10 @@ TEST_CASE("rule walk: hand-made situations", "[grid][roughset]") {
     }
 
     SECTION("unreachable goal, blocked start or goal: false") {
-        const GridMap map = hand_map({".....",  //
-                                      "...@@",  //
-                                      "...@.",  //
-                                      "...@@"});
+        const GridMap map = map_of({".....",  //
+                                    "...@@",  //
+                                    "...@.",  //
+                                    "...@@"});
         pride::Rng rng(3);
         CHECK_FALSE(walker.walk(map, {0, 0}, {4, 2}, rng, path));
         CHECK(path.empty());

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/error.hpp"
 #include "tests/json_reader.hpp"
 
 namespace pride::test {
@@ -81,6 +82,18 @@ inline std::vector<double> json_numbers(const JsonValue& array) {
         out.push_back(item.number);
     }
     return out;
+}
+
+/// The message of the InputError `f` throws; a marker string when it throws nothing (any other
+/// exception propagates and fails the test).
+template <class Fn>
+std::string input_error_message(Fn&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "<no InputError thrown>";
 }
 
 /// The bad-input contract of every subcommand (shared/spec/cli.md): exit status 2, nothing on
