@@ -21,15 +21,16 @@ struct CliOutput {
     std::string err;
 };
 
-/// `args` is appended to the path of pride and run by /bin/sh, so quote as in a shell.
-inline CliOutput run_pride(const std::string& args, const std::string& stdin_text = "") {
+/// `args` is appended to the path of pride and run by /bin/sh, so quote as in a shell; `cwd`, when
+/// not empty, is the folder it runs in.
+inline CliOutput run_pride_in(const std::string& cwd, const std::string& args, const std::string& stdin_text = "") {
     char dir_template[] = "/tmp/pride-test-XXXXXX";
     const char* dir = mkdtemp(dir_template);
     if (!dir) throw std::runtime_error("mkdtemp failed");
     const std::string base(dir);
     { std::ofstream(base + "/in") << stdin_text; }
-    const std::string cmd =
-        std::string("'") + PRIDE_EXE + "' " + args + " <" + base + "/in >" + base + "/out 2>" + base + "/err";
+    const std::string cmd = (cwd.empty() ? std::string() : "cd '" + cwd + "' && ") + std::string("'") + PRIDE_EXE +
+                            "' " + args + " <" + base + "/in >" + base + "/out 2>" + base + "/err";
     const int raw = std::system(cmd.c_str());
     auto slurp = [](const std::string& path) {
         std::ifstream f(path);
@@ -46,6 +47,10 @@ inline CliOutput run_pride(const std::string& args, const std::string& stdin_tex
     std::remove((base + "/err").c_str());
     rmdir(base.c_str());
     return r;
+}
+
+inline CliOutput run_pride(const std::string& args, const std::string& stdin_text = "") {
+    return run_pride_in("", args, stdin_text);
 }
 
 /// Runs `pride ARGS` and checks that it fails as bad input (check_input_error), naming `words`.

@@ -1,0 +1,53 @@
+// The golden-results gate: the JSON results (every field but wall_ms) of a fixed set of `pride run`
+// and `pride path` commands, recorded before the engine refactor (tests/data/golden/, written by
+// scripts/golden_commands.py and the commands' own output), must come out bit for bit the same.
+// A change of results is a documented fix: the golden file is updated in the same commit, with the
+// reason in its message.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "tests/cli_runner.hpp"
+
+namespace {
+
+std::vector<std::string> read_lines(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+std::string without_wall_time(const std::string& json) {
+    static const std::regex wall(R"("wall_ms": [^,}]*(, )?)");
+    std::string s = std::regex_replace(json, wall, "");
+    while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("golden results: every recorded run and path command gives the same bits", "[golden]") {
+    const std::string dir = std::string(PRIDE_SOURCE_DIR) + "/tests/data/golden/";
+    const auto commands = read_lines(dir + "commands.txt");
+    const auto expected = read_lines(dir + "expected.jsonl");
+    REQUIRE(commands.size() >= 400);
+    REQUIRE(commands.size() == expected.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+        // The commands name maps relative to the top of the checkout (and ../shared beside it).
+        const auto r = pride::test::run_pride_in(PRIDE_SOURCE_DIR, commands[i]);
+        const std::string got = without_wall_time(r.out);
+        if (r.status != 0 || got != expected[i]) {
+            ++differ;
+            INFO("line " << i + 1 << ": pride " << commands[i]);
+            INFO("stderr: " << r.err);
+            CHECK(r.status == 0);
+            CHECK(got == expected[i]);
+        }
+    }
+    CHECK(differ == 0);
+}
