@@ -5,6 +5,7 @@
 #include <string>
 
 #include "framework/error.hpp"
+#include "framework/one_of.hpp"
 
 namespace pride {
 
@@ -54,5 +55,12 @@ struct UnitWeight {
     double operator()(std::int64_t, std::int64_t) const noexcept { return 1.0; }
     void validate(const std::string&) const {}
 };
+
+}  // namespace pride
+
+namespace pride {
+
+/// LSO's unit weight or ILSO's eq. (10), chosen at run time (one choice per iteration).
+using SelectableWeight = OneOf<UnitWeight, QuadraticInertia>;
 
 }  // namespace pride

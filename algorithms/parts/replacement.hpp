@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "framework/error.hpp"
+#include "framework/one_of.hpp"
 
 namespace pride {
 
@@ -65,6 +66,19 @@ struct PlusReplacement {
         scratch.pool.insert(scratch.pool.end(), fc.begin(), fc.end());
         detail::best_first(scratch.pool, chosen.size(), scratch.order);
         std::copy_n(scratch.order.begin(), chosen.size(), chosen.begin());
+    }
+};
+
+}  // namespace pride
+
+namespace pride {
+
+/// The elitist or the (mu + lambda) replacement, chosen at run time (one choice per generation):
+/// `ga` and `ga-plus` are two configurations of one instantiation.
+struct SelectableReplacement : OneOf<ElitistReplacement, PlusReplacement> {
+    using OneOf::OneOf;
+    std::int64_t offspring(std::int64_t population) const {
+        return visit([&](const auto& r) { return r.offspring(population); });
     }
 };
 

@@ -7,6 +7,7 @@
 
 #include "algorithms/parts/inertia.hpp"
 #include "framework/error.hpp"
+#include "framework/one_of.hpp"
 
 namespace pride {
 
@@ -57,5 +58,13 @@ struct NoVelocityClamp {
     double limit(double low, double high) const noexcept { return high - low; }
     void validate(const std::string&) const {}
 };
+
+}  // namespace pride
+
+namespace pride {
+
+/// The inertia-weight or the constriction rule, chosen at run time (one choice per iteration):
+/// `pso` and `pso-constriction` are two configurations of one instantiation.
+using SelectableVelocity = OneOf<InertiaVelocity<LinearInertia>, ConstrictionVelocity>;
 
 }  // namespace pride
