@@ -67,7 +67,7 @@ class Nlopt {
 
     void validate() const {
         const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm_.c_str());
-        require(static_cast<int>(a) >= 0, "--algo", "unknown NLopt algorithm '" + algorithm_ + "' (see 'pride list')");
+        require(static_cast<int>(a) >= 0, "algo", "unknown NLopt algorithm '" + algorithm_ + "'");
         require(std::string(nlopt_algorithm_name(a)).find("NOT COMPILED") == std::string::npos, name(),
                 "is not compiled into this NLopt build");
         require(!nlopt_needs_gradient(algorithm_), name(),

@@ -2,51 +2,36 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <istream>
-#include <map>
 #include <ostream>
 #include <variant>
 
-#include "cli/algorithms.hpp"
 #include "cli/numbers.hpp"
+#include "engine/registry.hpp"
+#include "engine/run.hpp"
 #include "framework/error.hpp"
-#include "framework/params.hpp"
 #include "problems/continuous/catalog.hpp"
 
 namespace pride::cli {
 
+engine::ParamValues parse_params(const std::vector<std::string>& assignments, const std::optional<std::int64_t>& pop) {
+    engine::ParamValues params;
+    for (const auto& p : assignments) params.set_from_string(p);
+    if (pop) params.set("pop", static_cast<double>(*pop));
+    return params;
+}
+
 int run_command(const RunOptions& o, std::ostream& out) {
-    require(o.dim >= 1, "--dim", "dimension must be >= 1, got " + std::to_string(o.dim));
-    const auto problem = continuous::make_problem(o.problem, o.dim);
-    ParamMap params;
-    for (const auto& p : o.params) params.set_from_string(p);
-    if (o.pop) params.set("pop", static_cast<double>(*o.pop));
-    const auto runner = make_algorithm(o.algo, params);
-
-    Termination t;
-    if (o.iters) {
-        require(*o.iters >= 0, "--iters", "must be >= 0, got " + std::to_string(*o.iters));
-        t = t | max_iterations(*o.iters);
-    }
-    if (o.evals || !o.iters) {
-        // Without a limit the budget is 10,000 evaluations per dimension, the CEC convention.
-        const std::int64_t evals = o.evals.value_or(10000 * o.dim);
-        require(evals >= 1, "--evals", "must be >= 1, got " + std::to_string(evals));
-        t = t | max_evaluations(evals);
-    }
-    if (o.target) t = t | target_value(*o.target);
-    if (o.wall_ms) {
-        require(*o.wall_ms > 0, "--wall-ms", "must be > 0");
-        // A limit beyond what the clock can count (about 292 years) is no limit.
-        const double longest = std::chrono::duration<double, std::milli>(Clock::duration::max()).count();
-        if (*o.wall_ms < longest)
-            t = t | wall_time(std::chrono::duration_cast<Clock::duration>(
-                        std::chrono::duration<double, std::milli>(*o.wall_ms)));
-    }
-
-    require(o.seed >= 0, "--seed", "must be >= 0, got " + std::to_string(o.seed));
-    const Result r = runner(problem, t, static_cast<std::uint64_t>(o.seed));
+    const engine::Problem problem(engine::ContinuousSpec{o.problem, o.dim});
+    const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
+    engine::Budget budget;
+    budget.evaluations = o.evals;
+    budget.iterations = o.iters;
+    budget.target = o.target;
+    budget.wall_ms = o.wall_ms;
+    engine::check(algorithm, problem, budget);
+    require(o.seed >= 0, "seed", "must be >= 0, got " + std::to_string(o.seed));
+    const engine::RunResult r = engine::run(algorithm, problem, budget, static_cast<std::uint64_t>(o.seed));
     if (o.json) {
         out << fmt::format(
             "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"seed\": {}, \"best_f\": {}, \"best_x\": {}, "
@@ -89,50 +74,67 @@ int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out) {
     return 0;
 }
 
+namespace {
+
+std::string json_param(const engine::ParamSpec& p) {
+    return fmt::format(
+        "{{\"name\": {}, \"type\": {}, \"default\": {}, \"min\": {}, \"max\": {}, \"min_open\": {}, \"max_open\": {}, "
+        "\"range\": {}, \"doc\": {}}}",
+        json_string(p.name), json_string(engine::to_string(p.type)),
+        p.default_value ? json_number(*p.default_value) : "null", json_number(p.min), json_number(p.max),
+        p.min_open ? "true" : "false", p.max_open ? "true" : "false", json_string(p.range()), json_string(p.doc));
+}
+
+}  // namespace
+
 int list_command(bool json, std::ostream& out) {
     struct Section {
         std::string title;
-        std::vector<AlgorithmInfo> items;
+        std::vector<engine::NamedItem> items;
     };
     std::vector<Section> sections;
-    sections.push_back({"algorithms", list_algorithms()});
     Section problems{"problems", {}};
     for (const auto& item : continuous::catalog().items())
         problems.items.push_back({item.name, item.summary + " (dim >= " + std::to_string(item.entry.min_dim) + ")"});
     sections.push_back(problems);
-    sections.push_back(
-        {"encodings",
-         {{"identity", "the genotype is the solution (every continuous problem)"},
-          {"line", "grids: one gene per row (or column) between start and goal, the waypoint's cross coordinate"},
-          {"free", "grids: 2K genes, K waypoints (x, y) anywhere on the map (--waypoints K, default 3)"},
-          {"chain",
-           "grids: the cell chain itself, with crossover at a common cell and segment-regenerating mutation (ga, "
-           "ga-plus)"}}});
-    sections.push_back(
-        {"connectors",
-         {{"repair", "grids (line, free): a blocked join becomes the shortest legal detour (A* in a growing window)"},
-          {"penalty", "grids (line, free): the straight cell line; each violation costs M >= 10 W H"}}});
-    sections.push_back(
-        {"objectives",
-         {{"value", "continuous problems: the function value itself, minimised"},
-          {"cells", "grids: number of cells, start and goal included (file 000 eq. 13)"},
-          {"length", "grids: sum of step lengths, 1 or sqrt(2) (file 002 eq. 8)"},
-          {"weighted", "grids: w_len length + w_turn turns + w_angle angle_penalty (--weights, default 1,1,0.1)"},
-          {"iqga", "grids: -(1/length + 1/angle_penalty + 1/turns) (file 002 eq. 12)"},
-          {"hswoa", "grids: length + lambda turns (file 003; --lambda, default 1)"}}});
+    sections.push_back({"encodings", {{"identity", "the genotype is the solution (every continuous problem)"}}});
+    for (const auto& e : engine::grid_encodings()) sections.back().items.push_back(e);
+    sections.push_back({"connectors", engine::grid_connectors()});
+    sections.push_back({"objectives", {{"value", "continuous problems: the function value itself, minimised"}}});
+    for (const auto& e : engine::grid_objectives()) sections.back().items.push_back(e);
 
+    const auto& algorithms = engine::algorithms().entries();
     std::string text;
     if (json) {
-        text = "{";
-        for (std::size_t s = 0; s < sections.size(); ++s) {
-            text += (s ? ", " : "") + json_string(sections[s].title) + ": [";
-            for (std::size_t i = 0; i < sections[s].items.size(); ++i)
-                text += fmt::format("{}{{\"name\": {}, \"summary\": {}}}", i ? ", " : "",
-                                    json_string(sections[s].items[i].name), json_string(sections[s].items[i].summary));
+        text = "{\"algorithms\": [";
+        for (std::size_t i = 0; i < algorithms.size(); ++i) {
+            const auto& a = algorithms[i];
+            std::string spaces, params;
+            for (const auto& s : a.spaces()) spaces += (spaces.empty() ? "" : ", ") + json_string(s);
+            for (const auto& p : a.params) params += (params.empty() ? "" : ", ") + json_param(p);
+            text += fmt::format(
+                "{}{{\"name\": {}, \"family\": {}, \"summary\": {}, \"spaces\": [{}], \"params\": [{}]}}",
+                i ? ", " : "", json_string(a.name), json_string(a.family), json_string(a.summary), spaces, params);
+        }
+        text += "]";
+        for (const auto& s : sections) {
+            text += ", " + json_string(s.title) + ": [";
+            for (std::size_t i = 0; i < s.items.size(); ++i)
+                text += fmt::format("{}{{\"name\": {}, \"summary\": {}}}", i ? ", " : "", json_string(s.items[i].name),
+                                    json_string(s.items[i].summary));
             text += "]";
         }
         text += "}\n";
     } else {
+        text = "algorithms:\n";
+        for (const auto& a : algorithms) {
+            std::string params;
+            for (const auto& p : a.params) params += (params.empty() ? "" : " ") + p.name;
+            std::string spaces;
+            for (const auto& s : a.spaces()) spaces += (spaces.empty() ? "" : ", ") + s;
+            text += fmt::format("  {:<22} {} [{}]{}\n", a.name, a.summary, spaces,
+                                params.empty() ? "" : " (params: " + params + ")");
+        }
         for (const auto& s : sections) {
             text += s.title + ":\n";
             for (const auto& item : s.items) text += fmt::format("  {:<22} {}\n", item.name, item.summary);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/params.hpp"
+
 namespace pride::cli {
 
 struct RunOptions {
@@ -23,6 +25,9 @@ struct RunOptions {
     bool json = false;
 };
 int run_command(const RunOptions& o, std::ostream& out);
+
+/// "name=value" assignments (--param), with the population of --pop when given.
+engine::ParamValues parse_params(const std::vector<std::string>& assignments, const std::optional<std::int64_t>& pop);
 
 struct EvalOptions {
     std::string problem;

@@ -3,10 +3,12 @@
 // shared/spec/cli.md.
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 
 namespace pride::cli {
@@ -54,11 +56,9 @@ struct PathRun {
     grid::Path optimal_path;
 };
 
-/// Checks the options that need no map (names, combinations, ranges): InputError naming the option.
-void check_path_options(const PathOptions& o);
-
-/// Loads the map and runs `o.algo` on it as `pride path` does (no printing, no pictures).
-PathRun plan_path(const PathOptions& o);
+/// Loads the map and runs `o.algo` on it as `pride path` does (no printing, no pictures); the map
+/// as loaded (inflated) into `map` when given.
+PathRun plan_path(const PathOptions& o, std::shared_ptr<const grid::GridMap>* map = nullptr);
 
 struct ScenOptions {
     std::string file;

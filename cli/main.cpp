@@ -10,9 +10,11 @@
 #include "cli/campaign.hpp"
 #include "cli/commands.hpp"
 #include "cli/export.hpp"
+#include "cli/flags.hpp"
 #include "cli/grid_commands.hpp"
 #include "cli/report.hpp"
 #include "cli/roughset.hpp"
+#include "engine/registry.hpp"
 #include "framework/error.hpp"
 
 int main(int argc, char** argv) {
@@ -20,11 +22,18 @@ int main(int argc, char** argv) {
     CLI::App app{"pride: metaheuristic optimisation with pluggable problems"};
     app.require_subcommand(1);
 
+    // The algorithm names of the help texts, from the registry.
+    std::string box_names, all_names;
+    for (const auto& a : pride::engine::algorithms().entries()) {
+        if (a.name.find(':') != std::string::npos) continue;
+        all_names += (all_names.empty() ? "" : ", ") + a.name;
+        if (a.run_box) box_names += (box_names.empty() ? "" : ", ") + a.name;
+    }
     RunOptions run;
     auto* run_cmd = app.add_subcommand("run", "one run of an algorithm on a continuous problem");
     run_cmd->add_option("--problem", run.problem, "problem name (see 'pride list')")->required();
     run_cmd->add_option("--dim", run.dim, "dimension")->required();
-    run_cmd->add_option("--algo", run.algo, "algorithm name, e.g. pso, ga, nlopt:LN_SBPLX")->required();
+    run_cmd->add_option("--algo", run.algo, box_names + " or nlopt:NAME (see 'pride list')")->required();
     auto* evals = run_cmd->add_option("--evals", run.evals, "evaluation budget (default 10000 * dim)");
     run_cmd->add_option("--iters", run.iters, "iteration limit")->excludes(evals);
     run_cmd->add_option("--target", run.target, "stop once the best value is <= this");
@@ -47,9 +56,7 @@ int main(int argc, char** argv) {
     path_cmd->add_option("--start", path.start, "start cell X,Y (x: column from the left, y: row from the top)")
         ->required();
     path_cmd->add_option("--goal", path.goal, "goal cell X,Y")->required();
-    path_cmd
-        ->add_option("--algo", path.algo, "astar, exact, pso, pso-constriction, ga, ga-plus, lso, ilso or nlopt:NAME")
-        ->required();
+    path_cmd->add_option("--algo", path.algo, all_names + " or nlopt:NAME (see 'pride list')")->required();
     path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
     path_cmd->add_option("--encoding", path.encoding, "line (default), free or chain");
     path_cmd->add_option("--connector", path.connector, "repair (default) or penalty");
@@ -129,7 +136,7 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "pride: {}\n", e.what());
         return 2;
     } catch (const pride::InputError& e) {
-        fmt::print(stderr, "pride: {}\n", e.what());
+        fmt::print(stderr, "pride: {}\n", user_message(e));
         return 2;
     } catch (const std::exception& e) {
         fmt::print(stderr, "pride: internal error: {}\n", e.what());

@@ -1,8 +1,10 @@
 #pragma once
-// Reading numbers the user typed, strictly, and writing numbers as JSON.
+// Reading numbers the user typed, strictly; writing them as JSON is the engine's (engine/json.hpp).
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "engine/json.hpp"
 
 namespace pride::cli {
 
@@ -13,13 +15,10 @@ double parse_finite(std::string_view text, const std::string& where);
 /// list, an empty value or a value that is not a finite number.
 std::vector<double> parse_point(std::string_view text, const std::string& where);
 
-/// Shortest text that reads back as the same double; JSON has no inf or NaN, so those are null.
-std::string json_number(double v);
-
-/// [v1, v2, ...] with json_number each.
-std::string json_array(const std::vector<double>& values);
-
-/// A JSON string literal with the necessary escapes.
-std::string json_string(std::string_view s);
+using engine::json_array;
+using engine::json_cells;
+using engine::json_integers;
+using engine::json_number;
+using engine::json_string;
 
 }  // namespace pride::cli

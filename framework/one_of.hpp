@@ -14,8 +14,8 @@ class OneOf {
   public:
     OneOf() = default;  // the first alternative, default-constructed
     template <class P>
-    requires(std::is_same_v<std::decay_t<P>, Policies> || ...)
-    OneOf(P&& policy) : policy_(std::forward<P>(policy)) {}  // NOLINT: a policy converts implicitly
+    requires(std::is_same_v<std::decay_t<P>, Policies> || ...) OneOf(P&& policy)
+        : policy_(std::forward<P>(policy)) {}  // NOLINT: a policy converts implicitly
 
     template <class P>
     bool holds() const noexcept {

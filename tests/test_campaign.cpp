@@ -49,10 +49,10 @@ using Clock = std::chrono::steady_clock;
 // Files and processes
 
 fs::path bundled_map() {
-    return fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps" / "file000-10x10.map";
+    return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "file000-10x10.map";
 }
 fs::path bundled_campaigns() {
-    return fs::path(__FILE__).parent_path().parent_path() / "examples" / "campaigns";
+    return fs::path(PRIDE_SOURCE_DIR) / "examples" / "campaigns";
 }
 
 /// `pride ARGS...` started with posix_spawn (no shell), stdin from /dev/null, stdout and stderr to

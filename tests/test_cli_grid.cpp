@@ -40,7 +40,7 @@ using pride::test::TempDir;
 // Files
 
 fs::path bundled_dir() {
-    return fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps";
+    return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
 }
 fs::path movingai_dir() {
     return fs::path(PRIDE_SHARED_DATA) / "movingai";
@@ -538,7 +538,7 @@ TEST_CASE("cli grid: --init chooses uniform, random walks or rule walks", "[cli]
     CHECK(history(" --algo pso") != history(" --algo pso --init rules"));
     CHECK(history(" --algo lso --init rules") != history(" --algo lso"));
     expect_input_error(m + " --algo ilso --init nosuch", {"--init", "nosuch"});
-    expect_input_error(m + " --algo nlopt:LN_SBPLX --init rules", {"--init rules", "NLopt"});
+    expect_input_error(m + " --algo nlopt:LN_SBPLX --init rules", {"--init rules", "nlopt:LN_SBPLX", "uniform"});
     expect_input_error(m + " --algo ga --encoding chain --init rules", {"--init rules", "chain"});
     expect_input_error(m + " --algo lso --pop 3", {"lso", "population"});
     expect_input_error(m + " --algo ilso --param beta=1", {"ilso", "beta"});

@@ -18,7 +18,6 @@
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
-#include "framework/params.hpp"
 #include "framework/problem.hpp"
 #include "framework/random.hpp"
 #include "framework/registry.hpp"
@@ -795,65 +794,6 @@ TEST_CASE("framework: UniformInit and SuggestedInit", "[framework][init]") {
     CHECK((c.array() == 0.125).all());
 }
 
-// ---------------------------------------------------------------------------------------------
-// ParamMap
-
-TEST_CASE("framework: ParamMap parsing", "[framework][params]") {
-    pride::ParamMap m;
-    m.set_from_string("a=1.5");
-    CHECK(m.contains("a"));
-    CHECK(m.get("a", 0.0) == 1.5);
-    m.set_from_string("b=-2e-3");
-    CHECK(m.get("b", 0.0) == -2e-3);
-    m.set_from_string("a=7");  // a later set wins
-    CHECK(m.get("a", 0.0) == 7.0);
-    CHECK_FALSE(m.contains("c"));
-    CHECK(m.get("c", 4.25) == 4.25);
-
-    for (const char* bad : {"a", "=1", "a=x", "a=inf", "a=-inf", "a=nan", "a=", "a=1.5x", "a=1e999", ""}) {
-        INFO("'" << bad << "'");
-        pride::ParamMap q;
-        const auto msg = input_error_message([&] { q.set_from_string(bad); });
-        CHECK_THAT(msg, Contains("--param"));
-        CHECK_FALSE(q.contains("a"));
-    }
-    pride::ParamMap q;
-    CHECK_THAT(input_error_message([&] { q.set_from_string("w=x"); }), Contains("w") && Contains("'x'"));
-    CHECK_THAT(input_error_message([&] { q.set_from_string("nothing"); }), Contains("NAME=VALUE"));
-}
-
-TEST_CASE("framework: ParamMap get_int", "[framework][params]") {
-    pride::ParamMap m;
-    m.set("pop", 20.0);
-    m.set("half", 2.5);
-    m.set("neg", -3.0);
-    m.set("huge", 1e17);
-    CHECK(m.get_int("pop", 0, "pso") == 20);
-    CHECK(m.get_int("neg", 0, "pso") == -3);
-    CHECK(m.get_int("absent", 11, "pso") == 11);
-    CHECK_THAT(input_error_message([&] { (void)m.get_int("half", 0, "pso"); }),
-               Contains("pso") && Contains("half") && Contains("integer"));
-    CHECK_THAT(input_error_message([&] { (void)m.get_int("huge", 0, "pso"); }), Contains("huge"));
-}
-
-TEST_CASE("framework: ParamMap check_all_used", "[framework][params]") {
-    pride::ParamMap m;
-    m.set("pop", 20.0);
-    m.set("w_strat", 0.9);  // misspelt
-    CHECK(m.get("pop", 10.0) == 20.0);
-    (void)m.get("w_start", 0.5);  // what the algorithm reads
-    CHECK_THAT(input_error_message([&] { m.check_all_used("ilso"); }), Contains("ilso") && Contains("w_strat"));
-    const auto msg = input_error_message([&] { m.check_all_used("ilso"); });
-    CHECK_THAT(msg, !Contains("'pop'"));
-    (void)m.get("w_strat", 0.0);
-    CHECK_NOTHROW(m.check_all_used("ilso"));
-    // contains() does not count as a use.
-    pride::ParamMap n;
-    n.set("x", 1.0);
-    CHECK(n.contains("x"));
-    CHECK_THROWS_AS(n.check_all_used("z"), pride::InputError);
-    CHECK_NOTHROW(pride::ParamMap{}.check_all_used("empty"));
-}
 
 // ---------------------------------------------------------------------------------------------
 // Registry

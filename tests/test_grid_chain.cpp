@@ -187,7 +187,7 @@ using ChainGaPlus = pride::Ga<pride::TournamentSelection, pride::ChainCrossover,
                               pride::UniformInit, pride::PlusReplacement>;
 
 fs::path bundled_maps() {
-    return fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps";
+    return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
 }
 
 /// A bundled map (examples/maps/NAME.map) with its scenario's start and goal, for `Objective`.

@@ -522,7 +522,7 @@ TEST_CASE("grid io: every Moving AI map and scenario in shared/data parses and a
 }
 
 TEST_CASE("grid io: the bundled maps of examples/maps", "[grid][io][bundled]") {
-    const fs::path dir = fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps";
+    const fs::path dir = fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
     REQUIRE(fs::is_directory(dir));
     struct Expected {
         const char* name;

@@ -901,22 +901,22 @@ TEST_CASE("Encoded grid problems are box problems whose starting points fill the
 // ---------------------------------------------------------------------------------------------
 // Input errors
 
-TEST_CASE("GridProblem rejects start and goal outside, blocked or unreachable, naming the option", "[grid][errors]") {
+TEST_CASE("GridProblem rejects start and goal outside, blocked or unreachable, naming the field", "[grid][errors]") {
     auto map = std::make_shared<const GridMap>(map_of({
         "..@..",
         "..@..",
         "..@.@",
     }));
     const auto make = [&](Cell s, Cell g) { return [=] { GridProblem<LengthObjective> p(map, s, g); }; };
-    CHECK_THAT(input_error_message(make({-1, 0}, {1, 1})), Contains("--start") && Contains("outside"));
-    CHECK_THAT(input_error_message(make({0, 3}, {1, 1})), Contains("--start") && Contains("outside"));
-    CHECK_THAT(input_error_message(make({0, 0}, {5, 0})), Contains("--goal") && Contains("outside"));
-    CHECK_THAT(input_error_message(make({0, 0}, {1, -2})), Contains("--goal") && Contains("outside"));
-    CHECK_THAT(input_error_message(make({2, 0}, {1, 1})), Contains("--start") && Contains("blocked"));
-    CHECK_THAT(input_error_message(make({0, 0}, {4, 2})), Contains("--goal") && Contains("blocked"));
-    CHECK_THAT(input_error_message(make({0, 0}, {4, 0})), Contains("--goal") && Contains("cannot be reached"));
+    CHECK_THAT(input_error_message(make({-1, 0}, {1, 1})), Contains("start:") && Contains("outside"));
+    CHECK_THAT(input_error_message(make({0, 3}, {1, 1})), Contains("start:") && Contains("outside"));
+    CHECK_THAT(input_error_message(make({0, 0}, {5, 0})), Contains("goal:") && Contains("outside"));
+    CHECK_THAT(input_error_message(make({0, 0}, {1, -2})), Contains("goal:") && Contains("outside"));
+    CHECK_THAT(input_error_message(make({2, 0}, {1, 1})), Contains("start:") && Contains("blocked"));
+    CHECK_THAT(input_error_message(make({0, 0}, {4, 2})), Contains("goal:") && Contains("blocked"));
+    CHECK_THAT(input_error_message(make({0, 0}, {4, 0})), Contains("goal:") && Contains("cannot be reached"));
     CHECK(input_error_message(make({0, 0}, {1, 2})) == "<no InputError thrown>");
     // Column 2 is a full wall: no pair across it is connected, even with corner cutting.
     const auto cutting = [&](Cell s, Cell g) { return [=] { GridProblem<LengthObjective> p(map, s, g, {}, true); }; };
-    CHECK_THAT(input_error_message(cutting({1, 2}, {3, 2})), Contains("--goal") && Contains("cannot be reached"));
+    CHECK_THAT(input_error_message(cutting({1, 2}, {3, 2})), Contains("goal:") && Contains("cannot be reached"));
 }

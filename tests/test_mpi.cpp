@@ -36,7 +36,7 @@ TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[benc
     const fs::path dir = fs::temp_directory_path() / ("pride-mpi-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
-    const fs::path maps = fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps";
+    const fs::path maps = fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
     {
         std::ofstream f(dir / "c.toml");
         f << "name = \"mpi\"\nseeds = 3\n[budget]\niterations = 20\n"

@@ -381,22 +381,22 @@ TEST_CASE("problems: catalog names, construction and dimension", "[problems][cat
 
 TEST_CASE("problems: catalog rejects bad names and dimensions", "[problems][catalog]") {
     const auto unknown = input_error_message([] { (void)make_problem("spheer", 3); });
-    CHECK_THAT(unknown, Contains("--problem") && Contains("spheer"));
+    CHECK_THAT(unknown, Contains("problem:") && Contains("spheer"));
 
     const auto empty = input_error_message([] { (void)make_problem("", 3); });
-    CHECK_THAT(empty, Contains("--problem"));
+    CHECK_THAT(empty, Contains("problem:"));
 
     const auto zero = input_error_message([] { (void)make_problem("sphere", 0); });
-    CHECK_THAT(zero, Contains("--dim") && Contains("0"));
+    CHECK_THAT(zero, Contains("dim:") && Contains("0"));
 
     const auto negative = input_error_message([] { (void)make_problem("ackley", -3); });
-    CHECK_THAT(negative, Contains("--dim") && Contains("-3"));
+    CHECK_THAT(negative, Contains("dim:") && Contains("-3"));
 
     const auto rosen1 = input_error_message([] { (void)make_problem("rosenbrock", 1); });
-    CHECK_THAT(rosen1, Contains("--dim") && Contains("rosenbrock") && Contains("2"));
+    CHECK_THAT(rosen1, Contains("dim:") && Contains("rosenbrock") && Contains("2"));
 
     const auto srosen1 = input_error_message([] { (void)make_problem("shifted-rosenbrock", 1); });
-    CHECK_THAT(srosen1, Contains("--dim") && Contains("shifted-rosenbrock"));
+    CHECK_THAT(srosen1, Contains("dim:") && Contains("shifted-rosenbrock"));
 
     // Direct construction guards too, naming the function.
     const auto direct = input_error_message([] { Rosenbrock r(1); });

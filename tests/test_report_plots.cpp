@@ -22,7 +22,7 @@ TEST_CASE("report: --plots writes convergence, final-value and path figures", "[
     const fs::path dir = fs::temp_directory_path() / ("pride-plots-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
-    const fs::path maps = fs::path(__FILE__).parent_path().parent_path() / "examples" / "maps";
+    const fs::path maps = fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
     {
         std::ofstream f(dir / "c.toml");
         f << "name = \"plots\"\nseeds = 3\n[budget]\niterations = 10\n"

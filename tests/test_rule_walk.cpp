@@ -50,7 +50,7 @@ void check_walk(const GridMap& map, const Path& path, Cell s, Cell g, bool corne
 }
 
 std::filesystem::path bundled_maps() {
-    return std::filesystem::path(__FILE__).parent_path().parent_path() / "examples" / "maps";
+    return std::filesystem::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
 }
 
 }  // namespace

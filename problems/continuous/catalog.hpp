@@ -55,9 +55,9 @@ inline const Registry<CatalogEntry>& catalog() {
 
 /// The problem `name` in dimension `dim`; InputError for an unknown name or a bad dimension, the
 /// latter blamed on `dim_source` (the option or input the dimension came from).
-inline AnyProblem make_problem(std::string_view name, std::int64_t dim, const std::string& dim_source = "--dim") {
+inline AnyProblem make_problem(std::string_view name, std::int64_t dim, const std::string& dim_source = "dim") {
     const auto* item = catalog().find(name);
-    require(item != nullptr, "--problem", "unknown problem '" + std::string(name) + "' (see 'pride list')");
+    require(item != nullptr, "problem", "unknown problem '" + std::string(name) + "'");
     require(dim >= 1, dim_source, "dimension must be >= 1, got " + std::to_string(dim));
     require(static_cast<std::size_t>(dim) >= item->entry.min_dim, dim_source,
             std::string(name) + " needs dimension >= " + std::to_string(item->entry.min_dim) + ", got " +

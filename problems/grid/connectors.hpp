@@ -75,4 +75,28 @@ class RepairConnector {
     Path detours_;
 };
 
+/// The repair or the penalty connector, chosen at run time: a join costs a line walk or a search,
+/// so the one branch per join is not measurable, and one instantiation of each encoding carries
+/// both connectors.
+class SelectableConnector {
+  public:
+    enum class Kind { repair, penalty };
+    SelectableConnector() = default;
+    explicit SelectableConnector(Kind kind) : kind_(kind) {}
+
+    Kind kind() const noexcept { return kind_; }
+    const char* name() const noexcept { return kind_ == Kind::repair ? RepairConnector::name : PenaltyConnector::name; }
+
+    void join(const GridMap& map, Cell a, Cell b, Path& path, int& violations, bool corner_cutting) {
+        if (kind_ == Kind::repair)
+            repair_.join(map, a, b, path, violations, corner_cutting);
+        else
+            PenaltyConnector{}.join(map, a, b, path, violations, corner_cutting);
+    }
+
+  private:
+    Kind kind_ = Kind::repair;
+    RepairConnector repair_;
+};
+
 }  // namespace pride::grid

@@ -82,7 +82,8 @@ template <class Connector = RepairConnector>
 class LineEncoding {
   public:
     template <class Objective>
-    explicit LineEncoding(const GridProblem<Objective>& p) {
+    explicit LineEncoding(const GridProblem<Objective>& p, Connector connector = {})
+        : connector_(std::move(connector)) {
         detail::prepare_walks(p);
         const Cell s = p.start(), g = p.goal();
         rows_ = std::abs(g.y - s.y) >= std::abs(g.x - s.x);
@@ -90,7 +91,7 @@ class LineEncoding {
         step_ = to >= from ? 1 : -1;
         first_ = from + step_;
         count_ = std::abs(to - from) - 1;
-        require(count_ >= 1, "--encoding line",
+        require(count_ >= 1, "encoding line",
                 "start and goal must be at least two rows or columns apart; use --encoding free");
         extent_ = rows_ ? p.map().width() : p.map().height();
         auto snap = std::make_shared<std::vector<int>>(static_cast<std::size_t>(count_) * extent_);
@@ -183,9 +184,10 @@ template <class Connector = RepairConnector>
 class FreeEncoding {
   public:
     template <class Objective>
-    FreeEncoding(const GridProblem<Objective>& p, int waypoints) : k_(waypoints) {
+    FreeEncoding(const GridProblem<Objective>& p, int waypoints, Connector connector = {})
+        : k_(waypoints), connector_(std::move(connector)) {
         detail::prepare_walks(p);
-        require(waypoints >= 1 && waypoints <= 1000, "--waypoints",
+        require(waypoints >= 1 && waypoints <= 1000, "waypoints",
                 "must be in [1, 1000], got " + std::to_string(waypoints));
         const GridMap& m = p.map();
         auto nearest =

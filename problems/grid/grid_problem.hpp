@@ -57,12 +57,12 @@ class GridProblem {
         : map_(std::move(map)), start_(start), goal_(goal), objective_(objective), corner_cutting_(corner_cutting) {
         const GridMap& m = *map_;
         const std::string size = std::to_string(m.width()) + "x" + std::to_string(m.height());
-        require(m.inside(start), "--start", to_string(start) + " is outside the " + size + " map " + m.name());
-        require(m.inside(goal), "--goal", to_string(goal) + " is outside the " + size + " map " + m.name());
-        require(m.free(start), "--start", to_string(start) + " is a blocked cell of " + m.name());
-        require(m.free(goal), "--goal", to_string(goal) + " is a blocked cell of " + m.name());
+        require(m.inside(start), "start", to_string(start) + " is outside the " + size + " map " + m.name());
+        require(m.inside(goal), "goal", to_string(goal) + " is outside the " + size + " map " + m.name());
+        require(m.free(start), "start", to_string(start) + " is a blocked cell of " + m.name());
+        require(m.free(goal), "goal", to_string(goal) + " is a blocked cell of " + m.name());
         auto reach = std::make_shared<std::vector<std::uint8_t>>(reachable_from(m, start, corner_cutting));
-        require((*reach)[m.index(goal)] != 0, "--goal",
+        require((*reach)[m.index(goal)] != 0, "goal",
                 to_string(goal) + " cannot be reached from the start " + to_string(start) + " on " + m.name());
         reachable_ = std::move(reach);
     }

@@ -98,7 +98,7 @@ class GridMap {
     /// Obstacle inflation (file 003, section 3.1): every cell within Chebyshev distance r of a
     /// blocked cell becomes blocked.
     GridMap inflated(int r) const {
-        require(r >= 0, "--inflate", "radius must be >= 0, got " + std::to_string(r));
+        require(r >= 0, "inflate", "radius must be >= 0, got " + std::to_string(r));
         if (r == 0) return *this;
         r = std::min(r, std::max(width_, height_));  // a larger radius blocks no more
         // Chebyshev dilation = a sliding-window maximum along rows, then along columns (prefix

@@ -68,6 +68,33 @@ struct HswoaObjective {
     void validate() const { require(lambda >= 0, "hswoa", "lambda must be >= 0"); }
 };
 
+/// The objectives that are linear in a path's metrics as one type with weights:
+///     w_cells cells + w_len length + w_turn turns + w_angle angle_penalty.
+/// cells, length, weighted and hswoa are its configurations (below), so that one instantiation of
+/// every algorithm and encoding carries all four; each gives the same value, oracle costs and
+/// penalty bound, bit for bit, as its own type above (a zero weight adds an exact +0).
+struct LinearObjective {
+    static constexpr bool additive = true;
+    double w_cells = 0.0;
+    double w_len = 0.0;
+    double w_turn = 0.0;
+    double w_angle = 0.0;
+
+    static LinearObjective of(const CellsObjective&) noexcept { return {1.0, 0.0, 0.0, 0.0}; }
+    static LinearObjective of(const LengthObjective&) noexcept { return {0.0, 1.0, 0.0, 0.0}; }
+    static LinearObjective of(const WeightedObjective& w) noexcept { return {0.0, w.w_len, w.w_turn, w.w_angle}; }
+    static LinearObjective of(const HswoaObjective& h) noexcept { return {0.0, 1.0, h.lambda, 0.0}; }
+
+    double operator()(const PathMetrics& m) const noexcept {
+        return w_cells * m.cells + w_len * m.length + w_turn * m.turns + w_angle * m.angle_penalty;
+    }
+    double start_cost() const noexcept { return w_cells; }
+    double step_cost(int d) const noexcept { return w_cells + w_len * (is_diagonal(d) ? kSqrt2 : 1.0); }
+    double turn_cost(int k) const noexcept { return w_turn + w_angle * angle_penalty_of_turn(k); }
+    /// An upper bound of the value of a legal path on a map of `cells` cells.
+    double bound(double cells) const noexcept { return cells * (w_cells + w_len * kSqrt2 + w_turn + 50.0 * w_angle); }
+};
+
 /// iqga: -(1/f1 + 1/f2 + 1/f3), f1 = length, f2 = angle_penalty, f3 = turns (file 002 eq. 12,
 /// maximised there, so negated here). A zero term reads as twice the reciprocal of the smallest
 /// positive value the term can take (grid.md): 1/f1 = 2, 1/f2 = 0.2, 1/f3 = 2. Not additive: the

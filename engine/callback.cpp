@@ -1,0 +1,40 @@
+#include "engine/callback.hpp"
+
+#include <cmath>
+
+#include "framework/error.hpp"
+
+namespace pride::engine {
+
+CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
+                                 Batch batch) {
+    require(!lower.empty(), name, "the box has no coordinates (lower and upper are empty)");
+    require(lower.size() == upper.size(), name,
+            "lower has " + std::to_string(lower.size()) + " coordinates and upper " + std::to_string(upper.size()));
+    for (std::size_t i = 0; i < lower.size(); ++i)
+        require(std::isfinite(lower[i]) && std::isfinite(upper[i]) && lower[i] <= upper[i], name,
+                "bounds " + std::to_string(i) + " must be finite with lower <= upper");
+    require(static_cast<bool>(scalar) || static_cast<bool>(batch), name, "no function to evaluate");
+    shared_ = std::make_shared<const Shared>(
+        Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar), std::move(batch)});
+}
+
+double CallbackProblem::evaluate(std::span<const double> x) {
+    if (shared_->scalar) return shared_->scalar(x);
+    double f = 0.0;
+    const Eigen::Map<const Matrix> point(x.data(), static_cast<Eigen::Index>(x.size()), 1);
+    shared_->batch(point, std::span<double>(&f, 1));
+    return f;
+}
+
+void CallbackProblem::evaluate_batch(MatrixView points, std::span<double> values) {
+    if (shared_->batch) {
+        shared_->batch(points, values);
+        return;
+    }
+    for (Eigen::Index j = 0; j < points.cols(); ++j)
+        values[static_cast<std::size_t>(j)] =
+            shared_->scalar(std::span<const double>(points.col(j).data(), static_cast<std::size_t>(points.rows())));
+}
+
+}  // namespace pride::engine

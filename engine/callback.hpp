@@ -1,0 +1,44 @@
+#pragma once
+// A box problem over a user function (C++ callable, Python function): type erasure at the edge,
+// so every box algorithm can optimise code the engine was not compiled with. With a batch
+// function the evaluation guard hands it the whole population (or what is left of the budget) in
+// one call; registered problems keep their fully typed hot loop and never pass through here.
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "framework/problem.hpp"
+
+namespace pride::engine {
+
+class CallbackProblem {
+  public:
+    using Scalar = std::function<double(std::span<const double>)>;
+    using Batch = std::function<void(MatrixView, std::span<double>)>;
+
+    /// Throws InputError for an empty box, lower > upper, a non-finite bound, or no function.
+    CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
+                    Batch batch = {});
+
+    std::size_t dimension() const noexcept { return shared_->lower.size(); }
+    std::span<const double> lower() const noexcept { return shared_->lower; }
+    std::span<const double> upper() const noexcept { return shared_->upper; }
+    std::string_view name() const noexcept { return shared_->name; }
+
+    double evaluate(std::span<const double> x);
+    void evaluate_batch(MatrixView points, std::span<double> values);
+
+  private:
+    struct Shared {
+        std::string name;
+        std::vector<double> lower, upper;
+        Scalar scalar;
+        Batch batch;
+    };
+    std::shared_ptr<const Shared> shared_;  // copies per run share the function and the box
+};
+
+}  // namespace pride::engine

@@ -1,0 +1,87 @@
+#pragma once
+// Campaigns as data: problems, algorithms, seeds and a budget, built from structs (the TOML file
+// of `pride bench` is one front end: campaign_toml.hpp) and run on a thread pool or over MPI ranks
+// into an SQLite store (store.hpp) that commits each finished run at once, so an interrupted
+// campaign resumes with no run lost or run twice.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/run.hpp"
+#include "engine/specs.hpp"
+
+namespace pride::engine {
+
+struct CampaignProblem {
+    std::string id;
+    ProblemSpec spec;      // ContinuousSpec or GridSpec; a grid's map may be left empty...
+    std::string map_file;  // ... and named here (read once per (file, inflate) by prepare())
+    std::int64_t inflate = 0;
+    int line = 0;                            // where it stands in the campaign file (0: not from a file)
+    std::shared_ptr<const Problem> problem;  // built by prepare()
+};
+
+struct CampaignAlgorithm {
+    std::string id;
+    AlgorithmSpec spec;
+    int line = 0;
+};
+
+struct Campaign {
+    std::string file;  // for messages; empty when built in code
+    std::string text;  // stored with the results, so a store never mixes two campaigns; empty:
+                       // prepare() writes a canonical description
+    std::string name;
+    std::int64_t seeds = 0;        // seeds 1..seeds
+    Budget budget;                 // evaluations and/or iterations
+    std::optional<double> target;  // a threshold for reports (evaluations to reach it); runs do not stop there
+    std::vector<CampaignProblem> problems;
+    std::vector<CampaignAlgorithm> algorithms;
+};
+
+/// Checks the campaign and builds every problem once (each map read once): a missing or duplicate
+/// id, a bad problem, an unknown algorithm, a bad parameter, an algorithm that cannot run on a
+/// problem, or a run that would not fit in memory is an InputError naming the file and line (or
+/// the id), so a campaign that starts will not fail half-way on its input.
+void prepare(Campaign& campaign);
+
+/// One finished run, as stored.
+struct RunRecord {
+    std::string problem, algorithm;
+    std::int64_t seed = 0;
+    bool feasible = true;
+    double best = 0.0;
+    std::int64_t evaluations = 0, iterations = 0;
+    double wall_ms = 0.0;
+    std::optional<double> optimum;  // grid problems: the exact optimum (additive objectives)
+    std::string solution;           // JSON: the best point, or the path as [[x,y],...]
+    std::string history;            // JSON: best value after each iteration
+    std::string history_evaluations;
+};
+
+/// Runs one (problem, algorithm, seed) of a prepared campaign; the same inputs give the same
+/// record (bar wall_ms), whatever thread or rank runs it.
+RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Budget& budget, std::int64_t seed);
+
+struct BenchSummary {
+    std::size_t stored = 0;   // runs stored by this call
+    std::size_t already = 0;  // runs the store held before
+    std::size_t total = 0;    // runs of the campaign
+    int ranks = 1;            // MPI ranks (1: threads only)
+};
+
+/// Called from the storing thread after each stored run: (runs in the store, runs in all, seconds).
+using Progress = std::function<void(std::size_t done, std::size_t total, double seconds)>;
+
+/// Runs every (problem, algorithm, seed) not yet in `store` on `jobs` threads (or, under mpirun
+/// in an MPI build, over the ranks) and commits each at once. The campaign must be prepared.
+BenchSummary run_campaign(const Campaign& campaign, const std::string& store, std::int64_t jobs,
+                          const Progress& progress = {});
+
+/// The number of processes mpirun (Open MPI, or a PMI launcher) started, or 1 outside mpirun.
+int launched_ranks();
+
+}  // namespace pride::engine

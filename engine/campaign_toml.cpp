@@ -1,0 +1,177 @@
+#include "engine/campaign_toml.hpp"
+
+#include <fmt/format.h>
+
+#include <toml++/toml.h>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+#include "framework/error.hpp"
+
+namespace pride::engine {
+namespace {
+
+std::string at(const std::string& file, const toml::node& node) {
+    return fmt::format("{}:{}", file, node.source().begin.line);
+}
+
+[[noreturn]] void fail(const std::string& where, const std::string& what) {
+    throw InputError(where + ": " + what);
+}
+
+std::string need_string(const std::string& file, const toml::table& t, std::string_view key, const std::string& where) {
+    const toml::node* n = t.get(key);
+    if (!n) fail(where, "missing key '" + std::string(key) + "'");
+    if (!n->is_string()) fail(at(file, *n), "'" + std::string(key) + "' must be a string");
+    return std::string(**n->as_string());
+}
+
+std::int64_t need_integer(const std::string& file, const toml::node& n, std::string_view key) {
+    if (!n.is_integer()) fail(at(file, n), "'" + std::string(key) + "' must be an integer");
+    return **n.as_integer();
+}
+
+double need_number(const std::string& file, const toml::node& n, std::string_view key) {
+    if (n.is_integer()) return static_cast<double>(**n.as_integer());
+    if (!n.is_floating_point()) fail(at(file, n), "'" + std::string(key) + "' must be a number");
+    return **n.as_floating_point();
+}
+
+/// [x, y] with two integers.
+grid::Cell need_cell(const std::string& file, const toml::node& n, std::string_view key) {
+    const toml::array* a = n.as_array();
+    if (!a || a->size() != 2 || !(*a)[0].is_integer() || !(*a)[1].is_integer())
+        fail(at(file, n), "'" + std::string(key) + "' must be [x, y] with two integers");
+    const std::int64_t x = **(*a)[0].as_integer(), y = **(*a)[1].as_integer();
+    if (std::abs(x) >= 1'000'000'000 || std::abs(y) >= 1'000'000'000)
+        fail(at(file, n), "'" + std::string(key) + "' is far outside any map");
+    return {static_cast<int>(x), static_cast<int>(y)};
+}
+
+CampaignProblem read_problem(const std::string& file, const toml::table& t, const std::filesystem::path& folder) {
+    CampaignProblem p;
+    p.line = static_cast<int>(t.source().begin.line);
+    const std::string where = fmt::format("{}:{}", file, p.line);
+    p.id = need_string(file, t, "id", where);
+    const std::string type = need_string(file, t, "type", where);
+    const bool grid = type == "grid";
+    GridSpec g;
+    ContinuousSpec f{type, 0};
+    static const std::set<std::string> continuous_keys{"id", "type", "dim"};
+    static const std::set<std::string> grid_keys{"id",        "type",     "map",       "start", "goal",
+                                                 "objective", "encoding", "connector", "init",  "waypoints",
+                                                 "inflate",   "weights",  "lambda"};
+    for (auto&& [key, value] : t) {
+        const std::string k(key.str());
+        if (!(grid ? grid_keys : continuous_keys).count(k))
+            fail(at(file, value), "unknown key '" + k + "' in a " + (grid ? "grid" : "continuous") + " [[problem]]");
+        if (k == "dim") f.dim = need_integer(file, value, k);
+        if (k == "map") {
+            if (!value.is_string()) fail(at(file, value), "'map' must be a string");
+            // Relative to the campaign file's folder when the file is there, else to the working folder.
+            const std::filesystem::path m(std::string(**value.as_string()));
+            p.map_file = (m.is_relative() && std::filesystem::exists(folder / m)) ? (folder / m).string() : m.string();
+        }
+        if (k == "start") g.start = need_cell(file, value, k);
+        if (k == "goal") g.goal = need_cell(file, value, k);
+        if (k == "objective") g.objective = need_string(file, t, k, where);
+        if (k == "encoding") g.encoding = need_string(file, t, k, where);
+        if (k == "connector") g.connector = need_string(file, t, k, where);
+        if (k == "init") g.init = need_string(file, t, k, where);
+        if (k == "waypoints") g.waypoints = need_integer(file, value, k);
+        if (k == "inflate") p.inflate = need_integer(file, value, k);
+        if (k == "lambda") g.lambda = need_number(file, value, k);
+        if (k == "weights") {
+            const toml::array* a = value.as_array();
+            if (!a || a->size() != 3) fail(at(file, value), "'weights' must be [w_len, w_turn, w_angle]");
+            g.weights = {need_number(file, (*a)[0], k), need_number(file, (*a)[1], k), need_number(file, (*a)[2], k)};
+        }
+    }
+    if (grid) {
+        if (p.map_file.empty()) fail(where, "a grid [[problem]] needs 'map'");
+        if (!t.get("start") || !t.get("goal")) fail(where, "a grid [[problem]] needs 'start' and 'goal'");
+        p.spec = g;
+    } else {
+        if (!t.get("dim")) fail(where, "missing key 'dim'");
+        p.spec = f;
+    }
+    return p;
+}
+
+CampaignAlgorithm read_algorithm(const std::string& file, const toml::table& t) {
+    CampaignAlgorithm a;
+    a.line = static_cast<int>(t.source().begin.line);
+    const std::string where = fmt::format("{}:{}", file, a.line);
+    a.id = need_string(file, t, "id", where);
+    a.spec.name = need_string(file, t, "type", where);
+    for (auto&& [key, value] : t) {
+        const std::string k(key.str());
+        if (k == "id" || k == "type") continue;
+        a.spec.params.set(k, need_number(file, value, k));
+    }
+    return a;
+}
+
+}  // namespace
+
+Campaign read_campaign(const std::string& path) {
+    Campaign c;
+    c.file = path;
+    toml::table root;
+    try {
+        root = toml::parse_file(path);
+    } catch (const toml::parse_error& e) {
+        throw InputError(
+            fmt::format("{}:{}:{}: {}", path, e.source().begin.line, e.source().begin.column, e.description()));
+    }
+    {
+        std::ifstream in(path, std::ios::binary);
+        c.text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const auto folder = std::filesystem::path(path).parent_path();
+    for (auto&& [key, value] : root) {
+        const std::string k(key.str());
+        if (k == "name") {
+            if (!value.is_string()) fail(at(path, value), "'name' must be a string");
+            c.name = std::string(**value.as_string());
+        } else if (k == "seeds") {
+            c.seeds = need_integer(path, value, k);
+            if (c.seeds < 1) fail(at(path, value), "'seeds' must be >= 1");
+        } else if (k == "budget") {
+            const toml::table* b = value.as_table();
+            if (!b) fail(at(path, value), "'budget' must be a table");
+            for (auto&& [bk, bv] : *b) {
+                const std::string kk(bk.str());
+                if (kk == "evaluations") {
+                    c.budget.evaluations = need_integer(path, bv, kk);
+                    if (*c.budget.evaluations < 1) fail(at(path, bv), "'evaluations' must be >= 1");
+                } else if (kk == "iterations") {
+                    c.budget.iterations = need_integer(path, bv, kk);
+                    if (*c.budget.iterations < 0) fail(at(path, bv), "'iterations' must be >= 0");
+                } else if (kk == "target") {
+                    c.target = need_number(path, bv, kk);
+                } else {
+                    fail(at(path, bv), "unknown key '" + kk + "' in [budget] (evaluations, iterations, target)");
+                }
+            }
+        } else if (k == "problem" || k == "algorithm") {
+            const toml::array* a = value.as_array();
+            if (!a || !a->is_array_of_tables()) fail(at(path, value), "'" + k + "' must be [[" + k + "]] tables");
+            for (const toml::node& n : *a) {
+                if (k == "problem")
+                    c.problems.push_back(read_problem(path, *n.as_table(), folder));
+                else
+                    c.algorithms.push_back(read_algorithm(path, *n.as_table()));
+            }
+        } else {
+            fail(at(path, value), "unknown key '" + k + "' (name, seeds, budget, problem, algorithm)");
+        }
+    }
+    prepare(c);
+    return c;
+}
+
+}  // namespace pride::engine

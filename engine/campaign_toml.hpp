@@ -1,0 +1,14 @@
+#pragma once
+// Campaign files (TOML): one front end of campaigns as data (campaign.hpp), for `pride bench`.
+// Unknown keys, wrong types, duplicate ids, unknown problems or algorithms and bad parameters are
+// InputErrors naming the file, line and key. docs/campaigns.md describes the format.
+#include <string>
+
+#include "engine/campaign.hpp"
+
+namespace pride::engine {
+
+/// Reads, checks and prepares (campaign.hpp: prepare) the campaign file at `path`.
+Campaign read_campaign(const std::string& path);
+
+}  // namespace pride::engine

@@ -1,0 +1,24 @@
+#pragma once
+// Numbers and names as JSON text, for results, stores and front ends: every double in its
+// shortest form that reads back as the same double.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "problems/grid/path.hpp"
+
+namespace pride::engine {
+
+/// Shortest text that reads back as the same double; JSON has no inf or NaN, so those are null.
+std::string json_number(double v);
+/// [v1, v2, ...] with json_number each.
+std::string json_array(const std::vector<double>& values);
+/// [n1, n2, ...].
+std::string json_integers(const std::vector<std::int64_t>& values);
+/// A path as [[x,y],...].
+std::string json_cells(const grid::Path& path);
+/// A JSON string literal with the necessary escapes.
+std::string json_string(std::string_view s);
+
+}  // namespace pride::engine

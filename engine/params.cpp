@@ -1,0 +1,129 @@
+#include "engine/params.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "framework/error.hpp"
+
+namespace pride::engine {
+
+std::string_view to_string(ParamType t) {
+    switch (t) {
+        case ParamType::integer:
+            return "integer";
+        case ParamType::real:
+            return "real";
+        case ParamType::flag:
+            return "flag";
+    }
+    return "real";
+}
+
+namespace {
+std::string number(double v) {
+    return fmt::format("{}", v);
+}
+}  // namespace
+
+std::string ParamSpec::range() const {
+    if (type == ParamType::flag) return "0 or 1";
+    return fmt::format("{}{}, {}{}", min_open ? "(" : "[", number(min), number(max), max_open ? ")" : "]");
+}
+
+void ParamSpec::check(double v, const std::string& where) const {
+    const bool integral = v == std::floor(v) && std::abs(v) < 9.0e15;
+    if (type != ParamType::real)
+        require(
+            integral, where,
+            fmt::format("{} must be {}, got {}", name, type == ParamType::flag ? "0 or 1" : "an integer", number(v)));
+    const bool above = min_open ? v > min : v >= min;
+    const bool below = max_open ? v < max : v <= max;
+    require(std::isfinite(v) && above && below, where,
+            fmt::format("{} must be in {} ({}), got {}", name, range(), doc, number(v)));
+}
+
+ParamSpec integer(std::string name, std::int64_t default_value, std::int64_t min, std::int64_t max, std::string doc) {
+    return {std::move(name),          ParamType::integer,       static_cast<double>(default_value),
+            static_cast<double>(min), static_cast<double>(max), std::move(doc)};
+}
+
+ParamSpec real(std::string name, double default_value, double min, double max, std::string doc) {
+    return {std::move(name), ParamType::real, default_value, min, max, std::move(doc)};
+}
+
+ParamSpec flag(std::string name, bool default_value, std::string doc) {
+    return {std::move(name), ParamType::flag, default_value ? 1.0 : 0.0, 0.0, 1.0, std::move(doc)};
+}
+
+void ParamValues::set_from_string(std::string_view assignment) {
+    const auto eq = assignment.find('=');
+    require(eq != std::string_view::npos && eq > 0, "parameter '" + std::string(assignment) + "'",
+            "expected NAME=VALUE");
+    const std::string name(assignment.substr(0, eq));
+    const std::string text(assignment.substr(eq + 1));
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    require(used == text.size() && !text.empty() && std::isfinite(value), "parameter " + name,
+            "'" + text + "' is not a finite number");
+    set(name, value);
+}
+
+std::optional<double> ParamValues::find(const std::string& name) const {
+    const auto it = values_.find(name);
+    if (it == values_.end()) return std::nullopt;
+    return it->second;
+}
+
+Params::Params(const std::string& algorithm, const std::vector<ParamSpec>& specs, const ParamValues& given)
+    : algorithm_(algorithm) {
+    for (const auto& [name, value] : given.values()) {
+        const ParamSpec* spec = nullptr;
+        for (const auto& s : specs)
+            if (s.name == name) spec = &s;
+        if (!spec) {
+            std::string known;
+            for (const auto& s : specs) known += (known.empty() ? "" : ", ") + s.name;
+            throw InputError(algorithm + ": unknown parameter '" + name + "' (" +
+                             (known.empty() ? std::string("it takes none") : "parameters: " + known) + ")");
+        }
+        spec->check(value, algorithm);
+        given_[name] = value;
+    }
+    for (const auto& s : specs) {
+        const auto it = given_.find(s.name);
+        values_[s.name] = it != given_.end() ? std::optional<double>(it->second) : s.default_value;
+    }
+}
+
+const std::optional<double>& Params::at(const std::string& name) const {
+    const auto it = values_.find(name);
+    if (it == values_.end()) throw std::logic_error(algorithm_ + ": asks for undeclared parameter '" + name + "'");
+    return it->second;
+}
+
+double Params::real(const std::string& name) const {
+    const auto& v = at(name);
+    if (!v) throw std::logic_error(algorithm_ + ": parameter '" + name + "' has no value");
+    return *v;
+}
+
+std::int64_t Params::integer(const std::string& name) const {
+    return static_cast<std::int64_t>(real(name));
+}
+
+bool Params::flag(const std::string& name) const {
+    return real(name) != 0.0;
+}
+
+std::optional<double> Params::optional(const std::string& name) const {
+    return at(name);
+}
+
+}  // namespace pride::engine

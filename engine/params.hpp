@@ -1,0 +1,91 @@
+#pragma once
+// Parameters declared once: each algorithm in the registry lists its parameters (name, type,
+// default, allowed range, one line of doc), and every front end (command line, campaign files,
+// Python) checks what a user gives against that list before anything is built or allocated.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pride::engine {
+
+enum class ParamType { integer, real, flag };
+
+std::string_view to_string(ParamType t);
+
+struct ParamSpec {
+    std::string name;
+    ParamType type = ParamType::real;
+    std::optional<double> default_value;  // empty: the algorithm's own rule (doc says which)
+    double min = 0.0;                     // allowed range, both ends included unless open
+    double max = 0.0;
+    std::string doc;
+    bool min_open = false;
+    bool max_open = false;
+
+    ParamSpec& open_below() {
+        min_open = true;
+        return *this;
+    }
+    ParamSpec& open_above() {
+        max_open = true;
+        return *this;
+    }
+    /// No default: the algorithm's own rule applies unless the user sets a value (doc says which).
+    ParamSpec& no_default() {
+        default_value.reset();
+        return *this;
+    }
+
+    /// "[2, 10000000]", "(0, 1]", "0 or 1".
+    std::string range() const;
+    /// Throws InputError("<where>: ...") unless `v` has the type and lies in the range.
+    void check(double v, const std::string& where) const;
+};
+
+ParamSpec integer(std::string name, std::int64_t default_value, std::int64_t min, std::int64_t max, std::string doc);
+ParamSpec real(std::string name, double default_value, double min, double max, std::string doc);
+ParamSpec flag(std::string name, bool default_value, std::string doc);
+
+/// What a user set, by name: "pop=20" on the command line, `pop = 20` in a campaign file, pop=20 in
+/// Python. Values are numbers (flags 0 or 1); a later set of the same name wins.
+class ParamValues {
+  public:
+    void set(const std::string& name, double value) { values_[name] = value; }
+    /// Parses "name=value"; InputError naming the assignment when it is not NAME=finite number.
+    void set_from_string(std::string_view assignment);
+    bool contains(const std::string& name) const { return values_.count(name) != 0; }
+    std::optional<double> find(const std::string& name) const;
+    bool empty() const { return values_.empty(); }
+    const std::map<std::string, double>& values() const { return values_; }
+
+  private:
+    std::map<std::string, double> values_;
+};
+
+/// The parameters of one algorithm after checking: every declared name with the user's value or
+/// its default. Asking for an undeclared name is a bug in the algorithm's registration.
+class Params {
+  public:
+    Params() = default;
+    /// Checks `given` against `specs`: an unknown name, a wrong type or a value out of range is an
+    /// InputError naming `algorithm`, the parameter and its range.
+    Params(const std::string& algorithm, const std::vector<ParamSpec>& specs, const ParamValues& given);
+
+    double real(const std::string& name) const;
+    std::int64_t integer(const std::string& name) const;
+    bool flag(const std::string& name) const;
+    /// Empty when the parameter has no default and the user did not set it.
+    std::optional<double> optional(const std::string& name) const;
+    bool given(const std::string& name) const { return given_.count(name) != 0; }
+
+  private:
+    const std::optional<double>& at(const std::string& name) const;
+    std::string algorithm_;
+    std::map<std::string, std::optional<double>> values_;
+    std::map<std::string, double> given_;
+};
+
+}  // namespace pride::engine

@@ -1,0 +1,84 @@
+#pragma once
+// The algorithm registry: every algorithm by name, with a one-line summary, the spaces it runs on
+// and its parameters declared once. Each family registers itself in its own file under
+// engine/algorithms/ (see docs/adding-an-algorithm.md); the list of those files is made by CMake,
+// so adding an algorithm is adding one file. `pride list`, the help texts, parameter checking in
+// every front end and the parameter tables of docs/cli.md all come from here.
+//
+// Type erasure happens here, once per run: a runner receives a target (a variant of the concrete
+// problem types, engine/targets.hpp) and visits it, so the run itself is fully typed.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/params.hpp"
+#include "framework/result.hpp"
+#include "framework/termination.hpp"
+#include "problems/grid/path.hpp"
+
+namespace pride::engine {
+
+struct BoxTarget;    // engine/targets.hpp
+struct ChainTarget;  // engine/targets.hpp
+struct GridTarget;   // engine/targets.hpp
+
+using ChainResult = BasicResult<grid::Path>;
+
+/// What a whole-map algorithm (A*, the exact optimum) returns: a legal path, its value under the
+/// problem's objective, and the work it took (A*: node expansions).
+struct GridSolution {
+    grid::Path path;
+    std::int64_t work = 0;
+};
+
+struct AlgorithmEntry {
+    std::string name;     // pso, ga-plus, nlopt:LN_SBPLX, ...
+    std::string family;   // the skeleton it configures: pso, ga, lso, nlopt, astar, exact
+    std::string summary;  // one line
+    std::vector<ParamSpec> params;
+
+    /// Runs on a box (continuous problems, grids through the line and free encodings, callbacks).
+    std::function<Result(const Params&, const BoxTarget&, const Termination&, std::uint64_t seed)> run_box;
+    /// Runs on cell chains (grids with the chain encoding).
+    std::function<ChainResult(const Params&, const ChainTarget&, const Termination&, std::uint64_t seed)> run_chain;
+    /// Solves a grid as a whole (baselines): no budget, no seed.
+    std::function<GridSolution(const GridTarget&)> solve_grid;
+    /// Whole-map algorithms that need an additive objective (the exact optimum) say so.
+    bool needs_additive_objective = false;
+    /// Bytes a run needs besides the problem, for a population algorithm in `dimension`; checked
+    /// against the machine's memory before anything is allocated.
+    std::function<double(const Params&, std::size_t dimension)> memory;
+
+    /// "box", "chain", "grid": the spaces it runs on.
+    std::vector<std::string> spaces() const;
+    const ParamSpec* param(std::string_view name) const;
+};
+
+class AlgorithmRegistry {
+  public:
+    /// Adds an entry; a name already registered is an error naming it (std::logic_error: a bug in
+    /// a registration, not bad input).
+    void add(AlgorithmEntry entry);
+    /// The entry, or InputError("algo: unknown algorithm 'x' ...").
+    const AlgorithmEntry& at(std::string_view name) const;
+    const AlgorithmEntry* find(std::string_view name) const;
+    const std::vector<AlgorithmEntry>& entries() const { return entries_; }
+
+  private:
+    std::vector<AlgorithmEntry> entries_;
+};
+
+/// The process's registry, with every built-in family registered at first use.
+AlgorithmRegistry& algorithms();
+
+/// Registers an algorithm from a translation unit linked into the program (a user's or a test's):
+/// `static const pride::engine::Registration r{entry};` at namespace scope.
+struct Registration {
+    explicit Registration(AlgorithmEntry entry);
+};
+
+}  // namespace pride::engine

@@ -1,0 +1,449 @@
+#include "engine/run.hpp"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "engine/registry.hpp"
+#include "engine/targets.hpp"
+#include "framework/error.hpp"
+#include "problems/grid/map_io.hpp"
+#include "problems/grid/oracle.hpp"
+
+namespace pride::engine {
+
+struct Prepared {
+    ProblemSpec spec;
+    std::string name;
+    std::size_t dimension = 0;
+    std::optional<BoxTarget> box;
+    std::optional<ChainTarget> chain;
+    std::optional<GridTarget> grid;
+    // Why the grid's encoding could not be built: only runs through it fail; A* and the exact
+    // optimum need no encoding.
+    std::optional<InputError> encoding_error;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Names
+
+const std::vector<NamedItem>& grid_objectives() {
+    static const std::vector<NamedItem> items{
+        {"cells", "grids: number of cells, start and goal included (file 000 eq. 13)"},
+        {"length", "grids: sum of step lengths, 1 or sqrt(2) (file 002 eq. 8)"},
+        {"weighted", "grids: w_len length + w_turn turns + w_angle angle_penalty (--weights, default 1,1,0.1)"},
+        {"iqga", "grids: -(1/length + 1/angle_penalty + 1/turns) (file 002 eq. 12)"},
+        {"hswoa", "grids: length + lambda turns (file 003; --lambda, default 1)"}};
+    return items;
+}
+
+const std::vector<NamedItem>& grid_encodings() {
+    static const std::vector<NamedItem> items{
+        {"line", "grids: one gene per row (or column) between start and goal, the waypoint's cross coordinate"},
+        {"free", "grids: 2K genes, K waypoints (x, y) anywhere on the map (--waypoints K, default 3)"},
+        {"chain",
+         "grids: the cell chain itself, with crossover at a common cell and segment-regenerating mutation (ga, "
+         "ga-plus)"}};
+    return items;
+}
+
+const std::vector<NamedItem>& grid_connectors() {
+    static const std::vector<NamedItem> items{
+        {"repair", "grids (line, free): a blocked join becomes the shortest legal detour (A* in a growing window)"},
+        {"penalty", "grids (line, free): the straight cell line; each violation costs M >= 10 W H"}};
+    return items;
+}
+
+const std::vector<NamedItem>& grid_inits() {
+    static const std::vector<NamedItem> items{{"uniform", "uniform genotypes in the box"},
+                                              {"walk", "genotypes read off goal-biased random walks with taboo list"},
+                                              {"rules", "genotypes read off file 000's rough-set rule walks"}};
+    return items;
+}
+
+namespace {
+
+bool known(const std::vector<NamedItem>& items, const std::string& name) {
+    for (const auto& i : items)
+        if (i.name == name) return true;
+    return false;
+}
+
+std::string choices(const std::vector<NamedItem>& items) {
+    std::string s;
+    for (std::size_t i = 0; i < items.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + items[i].name;
+    return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Memory
+
+void require_memory(double bytes, const std::string& where, const std::string& what) {
+    const double have = available_memory();
+    require(bytes <= have, where,
+            fmt::format("{} needs about {} of memory, more than the {} this machine has", what, format_bytes(bytes),
+                        format_bytes(have)));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Preparing problems
+
+}  // namespace
+
+void check_grid_names(const GridSpec& g) {
+    require(known(grid_objectives(), g.objective), "objective",
+            "unknown objective '" + g.objective + "' (" + choices(grid_objectives()) + ")");
+    require(known(grid_encodings(), g.encoding), "encoding",
+            "unknown encoding '" + g.encoding + "' (" + choices(grid_encodings()) + ")");
+    require(known(grid_connectors(), g.connector), "connector",
+            "unknown connector '" + g.connector + "' (" + choices(grid_connectors()) + ")");
+    require(g.encoding != "chain" || g.connector == "repair", "connector",
+            "chains need no connector: every operator keeps them legal");
+    require(g.waypoints >= 1 && g.waypoints <= 1000, "waypoints",
+            "must be in [1, 1000], got " + std::to_string(g.waypoints));
+    const bool walks = g.init == "walk" || g.init == "rules";
+    require(g.init.empty() || known(grid_inits(), g.init), "init",
+            "expected uniform, walk or rules, got '" + g.init + "'");
+    require(!walks || g.encoding == "line" || g.encoding == "free", "init " + g.init,
+            "only for the line and free encodings (chains always start from walks)");
+    require(g.weights.empty() || g.objective == "weighted", "weights", "only for the weighted objective");
+    require(!g.lambda || g.objective == "hswoa", "lambda", "only for the hswoa objective");
+    require(!g.oracle || g.objective != "iqga", "oracle",
+            "the iqga objective is not a sum of step and turn costs, so it has no exact oracle");
+}
+
+namespace {
+
+void check_grid_spec(const GridSpec& g) {
+    check_grid_names(g);
+    require(g.map != nullptr, "map", "no map given");
+}
+
+grid::LinearObjective linear_objective(const GridSpec& g) {
+    if (g.objective == "cells") return grid::LinearObjective::of(grid::CellsObjective{});
+    if (g.objective == "length") return grid::LinearObjective::of(grid::LengthObjective{});
+    if (g.objective == "weighted") {
+        grid::WeightedObjective w;
+        if (!g.weights.empty()) {
+            require(g.weights.size() == 3, "weights",
+                    "expected L,T,A (three weights), got " + std::to_string(g.weights.size()));
+            w.w_len = g.weights[0];
+            w.w_turn = g.weights[1];
+            w.w_angle = g.weights[2];
+        }
+        w.validate();
+        return grid::LinearObjective::of(w);
+    }
+    grid::HswoaObjective h;
+    h.lambda = g.lambda.value_or(h.lambda);
+    h.validate();
+    return grid::LinearObjective::of(h);
+}
+
+template <class Objective>
+void prepare_grid(Prepared& out, const GridSpec& g, Objective objective) {
+    const grid::GridProblem<Objective> problem(g.map, g.start, g.goal, objective, g.corner_cutting);
+    out.grid = GridTarget{problem};
+    try {
+        if (g.encoding == "chain") {
+            out.chain = ChainTarget{grid::ChainSpace<Objective>(problem)};
+            return;
+        }
+        const grid::SelectableConnector connector(g.connector == "repair" ? grid::SelectableConnector::Kind::repair
+                                                                          : grid::SelectableConnector::Kind::penalty);
+        // The problem's suggestions come from rule walks unless random walks are asked for.
+        grid::GridProblem<Objective> suggesting = problem;
+        suggesting.set_walks(g.init == "walk" ? grid::Walks::random : grid::Walks::rules);
+        if (g.encoding == "line") {
+            grid::LineEncoding<grid::SelectableConnector> e(problem, connector);
+            out.dimension = e.dimension(problem);
+            out.box = BoxTarget{GridLine<Objective>(std::move(suggesting), std::move(e))};
+        } else {
+            grid::FreeEncoding<grid::SelectableConnector> e(problem, static_cast<int>(g.waypoints), connector);
+            out.dimension = e.dimension(problem);
+            out.box = BoxTarget{GridFree<Objective>(std::move(suggesting), std::move(e))};
+        }
+    } catch (const InputError& e) {
+        out.encoding_error = e;
+    }
+}
+
+std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
+    auto out = std::make_shared<Prepared>();
+    out->spec = spec;
+    if (const auto* c = std::get_if<ContinuousSpec>(&spec)) {
+        const auto* item = continuous::catalog().find(c->function);
+        require(item != nullptr, "problem", "unknown problem '" + c->function + "'");
+        require(c->dim >= 1, "dim", "dimension must be >= 1, got " + std::to_string(c->dim));
+        // Bounds, an optimum and a scratch vector per coordinate, before any is allocated.
+        require_memory(4.0 * 8.0 * static_cast<double>(c->dim), "dim",
+                       fmt::format("{} in dimension {}", c->function, c->dim));
+        out->name = c->function;
+        out->dimension = static_cast<std::size_t>(c->dim);
+        out->box = BoxTarget{std::visit([](auto&& p) { return BoxVariant(std::move(p)); },
+                                        continuous::make_problem(c->function, c->dim))};
+    } else if (const auto* g = std::get_if<GridSpec>(&spec)) {
+        check_grid_spec(*g);
+        out->name = "grid";
+        if (g->objective == "iqga")
+            prepare_grid(*out, *g, grid::IqgaObjective{});
+        else
+            prepare_grid(*out, *g, linear_objective(*g));
+    } else {
+        const auto& cb = std::get<CallbackSpec>(spec);
+        out->name = cb.name;
+        out->dimension = cb.lower.size();
+        out->box = BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch)};
+    }
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Running
+
+/// The parameters as the run sees them: the user's, plus what the problem decides (on grids the
+/// papers' N = 20 unless a population is given; the grid spec's init sets walk_init).
+ParamValues effective_params(const AlgorithmEntry& entry, const Prepared& p, const ParamValues& given) {
+    ParamValues v = given;
+    const auto* g = std::get_if<GridSpec>(&p.spec);
+    if (!g) return v;
+    if (entry.param("pop") && !v.contains("pop")) v.set("pop", 20.0);
+    if (!g->init.empty() && g->encoding != "chain") {
+        if (entry.param("walk_init"))
+            v.set("walk_init", g->init == "uniform" ? 0.0 : 1.0);
+        else
+            require(g->init == "uniform", "init " + g->init, entry.name + " starts from one uniform point");
+    }
+    return v;
+}
+
+/// Checks that the algorithm runs on the problem's space; returns the checked parameters.
+Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSpec& a) {
+    const Params params(entry.name, entry.params, effective_params(entry, p, a.params));
+    const auto* g = std::get_if<GridSpec>(&p.spec);
+    if (!g) {
+        require(static_cast<bool>(entry.run_box), "algo", entry.name + " works on grid problems only");
+        return params;
+    }
+    if (entry.solve_grid) {
+        require(!entry.needs_additive_objective || p.grid->additive(), "objective",
+                "the " + g->objective + " objective is not a sum of step and turn costs, so " + entry.name +
+                    " has no optimum to find");
+        return params;
+    }
+    if (p.encoding_error) throw *p.encoding_error;
+    if (g->encoding == "chain") {
+        if (!entry.run_chain) {
+            std::string on_chains;
+            for (const auto& e : algorithms().entries())
+                if (e.run_chain) on_chains += (on_chains.empty() ? "" : ", ") + e.name;
+            throw InputError("encoding chain",
+                             entry.name + " does not run on chains; the chain encoding takes " + on_chains);
+        }
+    } else {
+        require(static_cast<bool>(entry.run_box), "algo", entry.name + " does not run on a box");
+    }
+    return params;
+}
+
+void check_run_memory(const AlgorithmEntry& entry, const Params& params, const Prepared& p,
+                      const Termination& termination) {
+    double bytes = 0.0;
+    if (entry.memory) bytes += entry.memory(params, p.dimension);
+    // The history: one value and one count per iteration, for as many iterations as the budget allows.
+    const auto pop = entry.param("pop") ? params.integer("pop") : 1;
+    if (const auto t = termination.horizon(pop, pop)) bytes += 16.0 * static_cast<double>(*t + 1);
+    const std::string what =
+        entry.param("pop") ? fmt::format("a run with population {} in dimension {}", params.integer("pop"), p.dimension)
+                           : fmt::format("a run in dimension {}", p.dimension);
+    require_memory(bytes, entry.name, what);
+}
+
+template <class R>
+void copy_run(RunResult& out, R&& r) {
+    out.best_f = r.best_f;
+    out.evaluations = r.evaluations;
+    out.iterations = r.iterations;
+    out.wall_ms = r.wall_ms;
+    out.history = std::move(r.history);
+    out.history_evaluations = std::move(r.history_evaluations);
+}
+
+double grid_value(const GridTarget& target, const grid::Path& path) {
+    return std::visit([&](const auto& g) { return g.evaluate(path); }, target.problem);
+}
+
+/// The candidate is the result only when it is legal (grid.md: an infeasible candidate is never
+/// returned as a result).
+void record_path(GridOutcome& o, const GridTarget& target, const grid::Path& candidate, bool no_violations) {
+    std::visit(
+        [&](const auto& g) {
+            o.feasible = no_violations &&
+                         grid::path_violation(g.map(), candidate, g.start(), g.goal(), g.corner_cutting()).empty();
+        },
+        target.problem);
+    if (o.feasible) {
+        o.path = candidate;
+        o.value = grid_value(target, candidate);
+    }
+}
+
+}  // namespace
+
+Problem::Problem(const ProblemSpec& spec) : prepared_(prepare(spec)) {}
+
+bool Problem::is_grid() const {
+    return prepared_->grid.has_value();
+}
+bool Problem::additive() const {
+    return prepared_->grid && prepared_->grid->additive();
+}
+std::size_t Problem::dimension() const {
+    return prepared_->dimension;
+}
+const ProblemSpec& Problem::spec() const {
+    return prepared_->spec;
+}
+std::string Problem::name() const {
+    return prepared_->name;
+}
+
+Termination Budget::termination(std::size_t dimension, bool grid) const {
+    Termination t;
+    if (iterations) {
+        require(*iterations >= 0, "iterations", "must be >= 0, got " + std::to_string(*iterations));
+        t = t | max_iterations(*iterations);
+    }
+    if (evaluations) {
+        require(*evaluations >= 1, "evaluations", "must be >= 1, got " + std::to_string(*evaluations));
+        t = t | max_evaluations(*evaluations);
+    }
+    if (!evaluations && !iterations) {
+        if (grid)
+            t = max_iterations(50);  // the papers' T = 50
+        else
+            t = max_evaluations(static_cast<std::int64_t>(10000 * std::max<std::size_t>(dimension, 1)));
+    }
+    if (target) t = t | target_value(*target);
+    if (wall_ms) {
+        require(*wall_ms > 0, "wall_ms", "must be > 0");
+        // A limit beyond what the clock can count (about 292 years) is no limit.
+        const double longest = std::chrono::duration<double, std::milli>(Clock::duration::max()).count();
+        if (*wall_ms < longest)
+            t = t | wall_time(std::chrono::duration_cast<Clock::duration>(
+                        std::chrono::duration<double, std::milli>(*wall_ms)));
+    }
+    return t;
+}
+
+void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget) {
+    const AlgorithmEntry& entry = algorithms().at(algorithm.name);
+    const Prepared& p = problem.prepared();
+    const Params params = checked(entry, p, algorithm);
+    const Termination t = budget.termination(p.dimension, p.grid.has_value());
+    if (!entry.solve_grid) check_run_memory(entry, params, p, t);
+}
+
+RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed) {
+    const AlgorithmEntry& entry = algorithms().at(algorithm.name);
+    const Prepared& p = problem.prepared();
+    const Params params = checked(entry, p, algorithm);
+    const Termination termination = budget.termination(p.dimension, p.grid.has_value());
+    if (!entry.solve_grid) check_run_memory(entry, params, p, termination);
+
+    RunResult out;
+    out.algorithm = entry.name;
+    if (!p.grid) {
+        Result r = entry.run_box(params, *p.box, termination, seed);
+        copy_run(out, r);
+        out.best_x = std::move(r.best_x);
+        return out;
+    }
+
+    const auto& g = std::get<GridSpec>(p.spec);
+    GridOutcome o;
+    const auto start = Clock::now();  // whole-map algorithms: their wall time includes the oracle
+    if (g.oracle || entry.needs_additive_objective) {
+        std::visit(
+            [&](const auto& gp) {
+                if constexpr (std::decay_t<decltype(gp.objective())>::additive) {
+                    grid::Oracle oracle;
+                    o.optimum = oracle.solve(gp.map(), gp.start(), gp.goal(), gp.objective(), &o.optimal_path,
+                                             gp.corner_cutting());
+                }
+            },
+            p.grid->problem);
+    }
+    if (entry.solve_grid) {
+        GridSolution s = entry.solve_grid(*p.grid);
+        o.feasible = true;
+        o.path = std::move(s.path);
+        o.value = grid_value(*p.grid, o.path);
+        out.best_f = o.value;
+        out.evaluations = s.work;
+        out.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    } else if (p.chain) {
+        o.encoding = "chain";
+        ChainResult r = entry.run_chain(params, *p.chain, termination, seed);
+        record_path(o, *p.grid, r.best_x, true);
+        copy_run(out, r);
+    } else {
+        o.encoding = g.encoding;
+        Result r = entry.run_box(params, *p.box, termination, seed);
+        std::visit(
+            [&](const auto& target) {
+                using Target = std::decay_t<decltype(target)>;
+                if constexpr (requires(Target & t) { t.decode(std::span<const double>{}).violations; }) {
+                    auto fresh = target;  // decoding uses scratch; the prepared problem stays untouched
+                    const grid::DecodedPath& best = fresh.decode(r.best_x);
+                    record_path(o, *p.grid, best.path, best.violations == 0);
+                }
+            },
+            p.box->problem);
+        copy_run(out, r);
+        out.best_x = std::move(r.best_x);
+    }
+    out.grid = std::move(o);
+    return out;
+}
+
+std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate) {
+    require(inflate >= 0 && inflate <= 1000, "inflate", "must be in [0, 1000], got " + std::to_string(inflate));
+    grid::GridMap loaded = grid::read_map(file);
+    if (inflate > 0) loaded = loaded.inflated(static_cast<int>(inflate));
+    return std::make_shared<const grid::GridMap>(std::move(loaded));
+}
+
+double available_memory() {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    double bytes = pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 1e18;
+    // What the kernel says it can give without swapping, when it says (Linux's MemAvailable).
+    if (std::FILE* f = std::fopen("/proc/meminfo", "r")) {
+        char line[256];
+        while (std::fgets(line, sizeof line, f))
+            if (unsigned long long kb = 0; std::sscanf(line, "MemAvailable: %llu kB", &kb) == 1) {
+                bytes = std::min(bytes, 1024.0 * static_cast<double>(kb));
+                break;
+            }
+        std::fclose(f);
+    }
+    rlimit limit{};
+    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+        bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
+    return bytes;
+}
+
+std::string format_bytes(double bytes) {
+    if (bytes >= 1e12) return fmt::format("{:.3g} TB", bytes / 1e12);
+    if (bytes >= 1e9) return fmt::format("{:.3g} GB", bytes / 1e9);
+    if (bytes >= 1e6) return fmt::format("{:.3g} MB", bytes / 1e6);
+    return fmt::format("{:.3g} kB", bytes / 1e3);
+}
+
+}  // namespace pride::engine

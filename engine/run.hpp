@@ -1,0 +1,90 @@
+#pragma once
+// The one function that runs: (algorithm spec, problem, budget, seed) -> result. A Problem is
+// built once from its spec (a campaign builds each once: maps parsed once, reachability and
+// encodings' tables computed once) and copied into every run, so runs never share state.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/specs.hpp"
+#include "problems/grid/path.hpp"
+
+namespace pride::engine {
+
+struct Prepared;  // engine/run.cpp
+
+/// A problem ready to run: every check of its spec done, every table built.
+class Problem {
+  public:
+    /// Throws InputError naming the field of the spec that is wrong.
+    explicit Problem(const ProblemSpec& spec);
+
+    bool is_grid() const;
+    /// A grid problem whose objective is a sum of step and turn costs (so it has an exact optimum).
+    bool additive() const;
+    /// The dimension of the box an algorithm searches (grids: of the encoding's genotype; chains: 0).
+    std::size_t dimension() const;
+    const ProblemSpec& spec() const;
+    /// The problem's display name: the function, "grid" or the callback's name.
+    std::string name() const;
+
+    const Prepared& prepared() const { return *prepared_; }
+
+  private:
+    std::shared_ptr<const Prepared> prepared_;
+};
+
+/// What a grid run found, beside the search's own result.
+struct GridOutcome {
+    std::string encoding = "none";  // line, free, chain; none for whole-map algorithms
+    bool feasible = false;          // an infeasible candidate is never returned as a path
+    grid::Path path;                // start first; empty when infeasible
+    double value = 0.0;             // the objective of the path (when feasible)
+    std::optional<double> optimum;  // with GridSpec::oracle, or for the exact algorithm
+    grid::Path optimal_path;
+};
+
+struct RunResult {
+    std::string algorithm;
+    double best_f = 0.0;           // the minimised value (+inf when nothing finite was found)
+    std::vector<double> best_x;    // the best point (grids: the genotype; chains: empty)
+    std::int64_t evaluations = 0;  // A*: node expansions
+    std::int64_t iterations = 0;
+    double wall_ms = 0.0;
+    std::vector<double> history;  // best value after each iteration (0: the initial population)
+    std::vector<std::int64_t> history_evaluations;
+    std::optional<GridOutcome> grid;
+};
+
+/// The checks of a grid spec that need no map (names and their combinations): front ends call it
+/// before reading a map, so a misspelt name is reported before a missing file.
+void check_grid_names(const GridSpec& spec);
+
+/// Every check a run of `algorithm` on `problem` under `budget` would make, without running:
+/// the name, the parameters against their declared ranges, whether the algorithm runs on the
+/// problem's space, the budget, and the memory the run needs. InputError naming what is wrong.
+void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget);
+
+/// Runs once. The same inputs give the same result, bit for bit (bar wall_ms), on any thread.
+RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed);
+
+/// Bytes of memory this machine has for one process (physical memory, or a lower address-space
+/// limit); sizes are checked against it before anything is allocated.
+double available_memory();
+
+/// "12.5 GB", "300 MB": for messages.
+std::string format_bytes(double bytes);
+
+/// The names the grid spec takes, with a few words each (for listings and error messages).
+struct NamedItem {
+    std::string name;
+    std::string summary;
+};
+const std::vector<NamedItem>& grid_objectives();
+const std::vector<NamedItem>& grid_encodings();
+const std::vector<NamedItem>& grid_connectors();
+const std::vector<NamedItem>& grid_inits();
+
+}  // namespace pride::engine

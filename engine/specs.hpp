@@ -1,0 +1,84 @@
+#pragma once
+// Problems, algorithms and budgets as plain structs: what every front end (command line, campaign
+// files, Python) fills in, and what the engine runs. Names are checked by the engine, with errors
+// naming the field ("start", "encoding", "dim"), never a front end's flag.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "engine/params.hpp"
+#include "framework/problem.hpp"
+#include "framework/termination.hpp"
+#include "problems/grid/map.hpp"
+
+namespace pride::engine {
+
+/// A registered continuous function in a dimension.
+struct ContinuousSpec {
+    std::string function;
+    std::int64_t dim = 0;
+};
+
+/// One planning problem on a grid. The map is shared and already parsed (and inflated), so that
+/// a campaign reads each map once.
+struct GridSpec {
+    std::shared_ptr<const grid::GridMap> map;
+    grid::Cell start{};
+    grid::Cell goal{};
+    std::string objective = "cells";   // cells, length, weighted, iqga, hswoa (see objectives())
+    std::vector<double> weights;       // weighted: {w_len, w_turn, w_angle}; empty: the defaults
+    std::optional<double> lambda;      // hswoa: the turn weight; empty: the default
+    std::string encoding = "line";     // line, free, chain (see encodings())
+    std::string connector = "repair";  // repair, penalty (line and free)
+    std::int64_t waypoints = 3;        // free
+    // uniform, walk (random feasible walks) or rules (file 000's rough-set rule walks); empty: the
+    // algorithm's own choice (its walk_init parameter)
+    std::string init;
+    bool corner_cutting = false;
+    bool oracle = false;  // also compute the exact optimum (additive objectives)
+};
+
+/// A user function on a box: type erasure at this edge only. `batch`, when set, evaluates every
+/// column of a matrix (one point per column) in one call, and is used instead of `scalar`.
+struct CallbackSpec {
+    std::string name = "callback";
+    std::vector<double> lower, upper;
+    std::function<double(std::span<const double>)> scalar;
+    std::function<void(MatrixView, std::span<double>)> batch;
+};
+
+using ProblemSpec = std::variant<ContinuousSpec, GridSpec, CallbackSpec>;
+
+struct AlgorithmSpec {
+    std::string name;  // a registered algorithm: pso, ga-plus, nlopt:LN_SBPLX, astar, ...
+    ParamValues params;
+};
+
+/// The stopping rules of a run. With neither evaluations nor iterations set, continuous and
+/// callback problems get 10,000 evaluations per dimension (the CEC convention) and grids 50
+/// iterations (the papers' T).
+struct Budget {
+    std::optional<std::int64_t> evaluations;
+    std::optional<std::int64_t> iterations;
+    std::optional<double> target;   // stop once the best value is <= this
+    std::optional<double> wall_ms;  // stop after this many milliseconds
+
+    /// The stopping rules for a problem of `dimension` (grid: whether it is a grid problem);
+    /// InputError naming the field for a limit out of range.
+    Termination termination(std::size_t dimension, bool grid) const;
+};
+
+}  // namespace pride::engine
+
+namespace pride::engine {
+
+/// Reads a map file (Moving AI or 0/1 matrix) and inflates its obstacles by `inflate` cells
+/// (0..1000): what a GridSpec's map is made from. InputError naming the file or "inflate".
+std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate = 0);
+
+}  // namespace pride::engine

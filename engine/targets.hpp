@@ -1,0 +1,54 @@
+#pragma once
+// The concrete problem types the engine runs, as variants: each algorithm family's file visits a
+// target once per run and then executes fully typed code (no virtual call per evaluation). Grid
+// objectives linear in a path's metrics share one type (LinearObjective), and the connector is a
+// run-time setting, so the grid contributes four box types and two chain types.
+#include <variant>
+
+#include "engine/callback.hpp"
+#include "framework/encoding.hpp"
+#include "problems/continuous/catalog.hpp"
+#include "problems/grid/chain.hpp"
+#include "problems/grid/encodings.hpp"
+#include "problems/grid/grid_problem.hpp"
+#include "problems/grid/objectives.hpp"
+
+namespace pride::engine {
+
+template <class Objective>
+using GridLine = Encoded<grid::GridProblem<Objective>, grid::LineEncoding<grid::SelectableConnector>>;
+template <class Objective>
+using GridFree = Encoded<grid::GridProblem<Objective>, grid::FreeEncoding<grid::SelectableConnector>>;
+
+namespace detail {
+template <class V, class... More>
+struct Append;
+template <class... A, class... More>
+struct Append<std::variant<A...>, More...> {
+    using type = std::variant<A..., More...>;
+};
+}  // namespace detail
+
+using BoxVariant =
+    detail::Append<continuous::AnyProblem, GridLine<grid::LinearObjective>, GridLine<grid::IqgaObjective>,
+                   GridFree<grid::LinearObjective>, GridFree<grid::IqgaObjective>, CallbackProblem>::type;
+using ChainVariant = std::variant<grid::ChainSpace<grid::LinearObjective>, grid::ChainSpace<grid::IqgaObjective>>;
+using GridVariant = std::variant<grid::GridProblem<grid::LinearObjective>, grid::GridProblem<grid::IqgaObjective>>;
+
+/// A problem an algorithm searches as a box of reals. Each run copies the alternative it holds.
+struct BoxTarget {
+    BoxVariant problem;
+};
+/// A problem whose solutions are cell chains, searched with the chain operators.
+struct ChainTarget {
+    ChainVariant problem;
+};
+/// A grid problem as whole-map algorithms (A*, the exact optimum) see it.
+struct GridTarget {
+    GridVariant problem;
+    bool additive() const {
+        return std::visit([](const auto& p) { return std::decay_t<decltype(p.objective())>::additive; }, problem);
+    }
+};
+
+}  // namespace pride::engine
