@@ -12,7 +12,7 @@
 
 #include "cli/numbers.hpp"
 #include "framework/error.hpp"
-#include "framework/roughset/roughset.hpp"
+#include "roughset/roughset.hpp"
 #include "problems/grid/rough_rules.hpp"
 
 namespace pride::cli {

@@ -1,4 +1,4 @@
-// Tests of the rough-set module (framework/roughset/): every result published for the reference
+// Tests of the rough-set module (roughset/): every result published for the reference
 // tables in shared/data/roughset/README.md, properties on random tables checked against brute
 // force, and the CSV reader's edge cases and error messages.
 #include <catch2/catch.hpp>
@@ -12,7 +12,7 @@
 
 #include "framework/error.hpp"
 #include "framework/random.hpp"
-#include "framework/roughset/roughset.hpp"
+#include "roughset/roughset.hpp"
 
 using namespace pride::roughset;
 

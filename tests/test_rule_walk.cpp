@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "framework/roughset/roughset.hpp"
+#include "roughset/roughset.hpp"
 #include "problems/grid/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"

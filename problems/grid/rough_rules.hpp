@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "framework/roughset/roughset.hpp"
+#include "roughset/roughset.hpp"
 #include "problems/grid/map.hpp"
 
 namespace pride::grid {

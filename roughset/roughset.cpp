@@ -13,7 +13,7 @@
 #include <unordered_map>
 
 #include "framework/error.hpp"
-#include "framework/roughset/roughset.hpp"
+#include "roughset/roughset.hpp"
 
 namespace pride::roughset {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Indiscernibility, approximations and the positive region (Pawlak 1991, chapters 2-4).
 // Partitions are computed by hashing the rows' codes on B: O(|U| |B|), never pairwise.
-#include "framework/roughset/decision_table.hpp"
+#include "roughset/decision_table.hpp"
 
 namespace pride::roughset {
 

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "framework/roughset/decision_table.hpp"
+#include "roughset/decision_table.hpp"
 
 namespace pride::roughset {
 

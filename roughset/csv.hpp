@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-#include "framework/roughset/decision_table.hpp"
+#include "roughset/decision_table.hpp"
 
 namespace pride::roughset {
 
