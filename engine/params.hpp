@@ -24,6 +24,7 @@ struct ParamSpec {
     std::string doc;
     bool min_open = false;
     bool max_open = false;
+    bool box_only = false;  // has no meaning on chains (SBX's index, say): refused there when set
 
     ParamSpec& open_below() {
         min_open = true;
@@ -31,6 +32,10 @@ struct ParamSpec {
     }
     ParamSpec& open_above() {
         max_open = true;
+        return *this;
+    }
+    ParamSpec& only_on_boxes() {
+        box_only = true;
         return *this;
     }
     /// No default: the algorithm's own rule applies unless the user sets a value (doc says which).

@@ -114,8 +114,6 @@ void check_grid_names(const GridSpec& g) {
             "only for the line and free encodings (chains always start from walks)");
     require(g.weights.empty() || g.objective == "weighted", "weights", "only for the weighted objective");
     require(!g.lambda || g.objective == "hswoa", "lambda", "only for the hswoa objective");
-    require(!g.oracle || g.objective != "iqga", "oracle",
-            "the iqga objective is not a sum of step and turn costs, so it has no exact oracle");
 }
 
 namespace {
@@ -150,6 +148,8 @@ template <class Objective>
 void prepare_grid(Prepared& out, const GridSpec& g, Objective objective) {
     const grid::GridProblem<Objective> problem(g.map, g.start, g.goal, objective, g.corner_cutting);
     out.grid = GridTarget{problem};
+    require(!g.oracle || out.grid->additive(), "oracle",
+            "the " + g.objective + " objective is not a sum of step and turn costs, so it has no exact oracle");
     try {
         if (g.encoding == "chain") {
             out.chain = ChainTarget{grid::ChainSpace<Objective>(problem)};
@@ -246,6 +246,9 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
             throw InputError("encoding chain",
                              entry.name + " does not run on chains; the chain encoding takes " + on_chains);
         }
+        for (const auto& spec : entry.params)
+            require(!spec.box_only || !params.given(spec.name), entry.name,
+                    spec.name + " has no meaning on chains (the chain encoding)");
     } else {
         require(static_cast<bool>(entry.run_box), "algo", entry.name + " does not run on a box");
     }

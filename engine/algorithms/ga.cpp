@@ -39,12 +39,6 @@ BoxFamily configure_box(const Params& p, bool plus) {
 }
 
 ChainFamily configure_chain(const Params& p, bool plus) {
-    require(!p.given("eta_c") && !p.given("eta_m") && !p.given("walk_init"),
-            p.given("eta_c")   ? "eta_c"
-            : p.given("eta_m") ? "eta_m"
-                               : "walk_init",
-            std::string(plus ? "ga-plus" : "ga") + " on chains has no such parameter (chains: pop, tournament, pc, pm" +
-                (plus ? "" : ", elitism") + ")");
     ChainFamily a;
     common(a, p, plus);
     if (const auto pm = p.optional("pm")) a.mutation.probability = *pm;  // else 0.1, IQGA's Pm
@@ -55,14 +49,14 @@ std::vector<ParamSpec> params(bool plus) {
     std::vector<ParamSpec> v{population_param(50, 2)};
     if (!plus) v.push_back(integer("elitism", 1, 0, 100'000'000, "best parents kept unchanged, fewer than pop"));
     v.push_back(integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"));
-    v.push_back(real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index (boxes)"));
+    v.push_back(real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index").only_on_boxes());
     v.push_back(real("pc", 0.9, 0.0, 1.0, "crossover probability per pair"));
-    v.push_back(real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index (boxes)"));
+    v.push_back(real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index").only_on_boxes());
     v.push_back(real("pm", 0.0, 0.0, 1.0,
                      "mutation probability: per gene on boxes (default 1/D), per child on chains "
                      "(default 0.1)")
                     .no_default());
-    v.push_back(walk_init_param(false));
+    v.push_back(walk_init_param(false).only_on_boxes());
     return v;
 }
 
