@@ -54,6 +54,11 @@ std::string num(double v) {
     return std::isfinite(v) ? fmt::format("{:.6g}", v) : "inf";
 }
 
+/// For reading back: the shortest form that parses to the same double.
+std::string exact(double v) {
+    return std::isfinite(v) ? fmt::format("{}", v) : "inf";
+}
+
 /// A CSV field, quoted as RFC 4180 says when it holds a comma, a quote or a line break.
 std::string csv(const std::string& s) {
     if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
@@ -255,13 +260,13 @@ std::string render_csv(const ReportData& report) {
         "p_holm_vs_best,best";
     // Only campaigns with a target have its columns.
     text += report.target ? ",target,reached_target,mean_evaluations_to_target\n" : "\n";
-    const auto optional = [](const std::optional<double>& v) { return v ? num(*v) : std::string(); };
+    const auto optional = [](const std::optional<double>& v) { return v ? exact(*v) : std::string(); };
     for (const auto& r : report.rows) {
         text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm), r.runs,
-                            num(r.min), num(r.mean), num(r.std), num(r.median), num(r.max), num(r.mean_wall_ms),
-                            num(r.mean_evaluations), optional(r.optimum), optional(r.mean_gap), optional(r.success),
-                            optional(r.p_holm), r.best ? 1 : 0);
-        text += report.target ? fmt::format(",{},{},{}\n", num(*report.target), r.reached_target,
+                            exact(r.min), exact(r.mean), exact(r.std), exact(r.median), exact(r.max),
+                            exact(r.mean_wall_ms), exact(r.mean_evaluations), optional(r.optimum), optional(r.mean_gap),
+                            optional(r.success), optional(r.p_holm), r.best ? 1 : 0);
+        text += report.target ? fmt::format(",{},{},{}\n", exact(*report.target), r.reached_target,
                                             optional(r.mean_evaluations_to_target))
                               : "\n";
     }

@@ -2,7 +2,7 @@
 // The comparison report of a campaign store (docs/campaigns.md, `pride report`): per problem and
 // algorithm the statistics of the final best values, the algorithm with the lowest median marked
 // best, Holm-corrected Wilcoxon rank-sum p-values against it, and Friedman's ranks over the
-// problems; as data, and rendered as markdown, CSV or LaTeX.
+// problems; as data, and rendered as markdown, CSV (every number as the double it is) or LaTeX.
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -49,7 +49,8 @@ ReportData make_report(const CampaignStore& store);
 ReportData load_report(const std::string& path);
 
 std::string render_markdown(const ReportData& report);
-/// A header line, then one line per row; fields quoted as RFC 4180 says.
+/// A header line, then one line per row; each number in the shortest form that reads back as
+/// the same double ("inf" when infinite), fields quoted as RFC 4180 says.
 std::string render_csv(const ReportData& report);
 /// A `tabular` with the markdown's columns, then Friedman's ranks as a comment.
 std::string render_latex(const ReportData& report);
