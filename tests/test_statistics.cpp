@@ -1,11 +1,11 @@
-// The statistics of framework/statistics.hpp against scipy 1.10.1 (Debian's python3-scipy) on
+// The statistics of engine/report/statistics.hpp against scipy 1.10.1 (Debian's python3-scipy) on
 // fixed data; scripts/statistics_reference.py prints the values hard-coded here.
 #include <catch2/catch.hpp>
 
 #include <vector>
 
+#include "engine/report/statistics.hpp"
 #include "framework/error.hpp"
-#include "framework/statistics.hpp"
 
 namespace {
 const std::vector<double> x{0.31, 1.2, 0.05, 2.4, 0.77, 1.9, 0.42, 3.3, 0.9, 1.1};

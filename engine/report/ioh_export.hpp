@@ -1,0 +1,20 @@
+#pragma once
+// A campaign store as IOHprofiler files (the COCO-style `.info` and `.dat` files IOHanalyzer
+// reads; docs/campaigns.md, `pride export`): one folder per algorithm, one `.info` file and one
+// `.dat` file per problem it ran on.
+#include <cstddef>
+#include <string>
+
+namespace pride::report {
+
+struct ExportSummary {
+    std::size_t files = 0;  // .info and .dat files written
+    std::size_t algorithms = 0;
+    std::string folder;
+};
+
+/// Writes the store at `store` under `folder` (created if need be). InputError when the store is
+/// missing, not a campaign store, damaged (DamagedStore) or empty, or when a file cannot be written.
+ExportSummary export_ioh(const std::string& store, const std::string& folder);
+
+}  // namespace pride::report

@@ -1,0 +1,276 @@
+#include "engine/report/report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+
+#include "framework/error.hpp"
+
+namespace pride::report {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+struct Cell {                  // one (problem, algorithm): its runs
+    std::vector<double> best;  // +inf for a run without a feasible value
+    std::vector<double> wall_ms, evaluations;
+    std::optional<double> optimum;
+    std::vector<std::optional<double>> to_target;  // evaluations when the best first reached the target
+};
+
+/// The evaluations at which a run's best value first reached `target` (from its history).
+std::optional<double> evaluations_to(double target, const StoredRun& run) {
+    for (std::size_t k = 0; k < run.history.size() && k < run.history_evaluations.size(); ++k)
+        if (run.history[k] <= target) return static_cast<double>(run.history_evaluations[k]);
+    return std::nullopt;
+}
+
+double median_of(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double mean_of(const std::vector<double>& v) {
+    return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+/// The sample standard deviation (n - 1); 0 for a single run, +inf when a value is infinite.
+double std_of(const std::vector<double>& v) {
+    if (v.size() < 2) return 0.0;
+    if (std::any_of(v.begin(), v.end(), [](double x) { return std::isinf(x); })) return inf;
+    const double m = mean_of(v);
+    double s = 0.0;
+    for (double x : v) s += (x - m) * (x - m);
+    return std::sqrt(s / static_cast<double>(v.size() - 1));
+}
+
+/// For reading: 6 significant digits.
+std::string num(double v) {
+    return std::isfinite(v) ? fmt::format("{:.6g}", v) : "inf";
+}
+
+/// For reading back: the shortest form that parses to the same double.
+std::string exact(double v) {
+    return std::isfinite(v) ? fmt::format("{}", v) : "inf";
+}
+
+/// A CSV field, quoted as RFC 4180 says when it holds a comma, a quote or a line break.
+std::string csv(const std::string& s) {
+    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+    std::string out = "\"";
+    for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+/// Text for a markdown table cell: a | would start a new column.
+std::string markdown(const std::string& s) {
+    std::string out;
+    for (const char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
+    return out;
+}
+
+/// Text for a LaTeX table cell: the characters LaTeX treats specially are escaped.
+std::string latex(const std::string& s) {
+    std::string out;
+    for (const char c : s) {
+        if (c == '%' || c == '&' || c == '_' || c == '#' || c == '$' || c == '{' || c == '}')
+            out += std::string("\\") + c;
+        else if (c == '~' || c == '^' || c == '\\')
+            out += c == '~' ? "\\textasciitilde{}" : (c == '^' ? "\\textasciicircum{}" : "\\textbackslash{}");
+        else
+            out += c;
+    }
+    return out;
+}
+
+/// Markdown and LaTeX share their columns; only the cell syntax differs.
+std::string render_table(const ReportData& report, bool md) {
+    const std::string sep = md ? " | " : " & ", end = md ? " |\n" : " \\\\\n", begin = md ? "| " : "";
+    auto line = [&](const std::vector<std::string>& cols) {
+        std::string s = begin;
+        for (std::size_t i = 0; i < cols.size(); ++i) s += (i ? sep : "") + (md ? markdown(cols[i]) : latex(cols[i]));
+        return s + end;
+    };
+    std::vector<std::string> head{"problem", "algorithm", "runs",    "min", "mean",    "std",
+                                  "median",  "max",       "mean ms", "gap", "optimal", "p (Holm)"};
+    if (report.target) head.push_back("evals to target");
+    std::string text;
+    if (md) {
+        text += fmt::format(
+            "Campaign `{}`. Per problem, `best` marks the algorithm with the lowest median; "
+            "p (Holm) is the Wilcoxon rank-sum test of each other algorithm against it, Holm-corrected "
+            "over the problem's algorithms, with `*` where p < 0.05.\n\n",
+            report.campaign);
+        text += line(head) + "|";
+        for (std::size_t i = 0; i < head.size(); ++i) text += i < 2 ? "---|" : "---:|";
+        text += "\n";
+    } else {
+        text += "\\begin{tabular}{ll" + std::string(head.size() - 2, 'r') + "}\n\\hline\n" + line(head) + "\\hline\n";
+    }
+    for (const auto& r : report.rows) {
+        const std::string p =
+            r.best ? "best" : (r.p_holm ? fmt::format("{:.3g}{}", *r.p_holm, *r.p_holm < 0.05 ? "*" : "") : "");
+        std::vector<std::string> cols{r.problem,
+                                      r.algorithm,
+                                      std::to_string(r.runs),
+                                      num(r.min),
+                                      num(r.mean),
+                                      num(r.std),
+                                      num(r.median),
+                                      num(r.max),
+                                      fmt::format("{:.3f}", r.mean_wall_ms),
+                                      r.mean_gap ? fmt::format("{:.2f} %", 100 * *r.mean_gap) : "-",
+                                      r.success ? fmt::format("{:.0f} %", 100 * *r.success) : "-",
+                                      p};
+        if (report.target)  // mean over the runs that reached it, and how many did
+            cols.push_back(r.mean_evaluations_to_target
+                               ? fmt::format("{} ({}/{})", num(*r.mean_evaluations_to_target), r.reached_target, r.runs)
+                               : fmt::format("- (0/{})", r.runs));
+        text += line(cols);
+    }
+    if (!md) text += "\\hline\n\\end{tabular}\n";
+    if (const auto& f = report.friedman) {
+        text += md ? "\nFriedman average ranks over " : "\n% Friedman average ranks over ";
+        text += fmt::format("{} problems (1 = best; median values):", f->problems);
+        for (std::size_t j = 0; j < f->algorithms.size(); ++j)
+            text += fmt::format(" {} {:.3g}{}", f->algorithms[j], f->test.average_ranks[j],
+                                j + 1 < f->algorithms.size() ? "," : "");
+        text += fmt::format("; chi-squared {:.4g}, p = {:.3g}\n", f->test.statistic, f->test.p_value);
+    }
+    return text;
+}
+
+}  // namespace
+
+ReportData make_report(const CampaignStore& store) {
+    ReportData report;
+    report.campaign = store.name;
+    report.target = store.target;
+    std::map<std::string, std::map<std::string, Cell>> cells;
+    for (const StoredRun& run : store.runs) {
+        Cell& c = cells[run.problem][run.algorithm];
+        c.best.push_back(run.best.value_or(inf));
+        c.wall_ms.push_back(run.wall_ms);
+        c.evaluations.push_back(static_cast<double>(run.evaluations));
+        if (run.optimum) c.optimum = run.optimum;
+        if (store.target) c.to_target.push_back(evaluations_to(*store.target, run));
+    }
+
+    auto& rows = report.rows;
+    for (const auto& [problem, by_algorithm] : cells) {
+        // The best algorithm of the problem: the lowest median best value (ties: lowest mean).
+        std::string best;
+        double best_median = 0, best_mean = 0;
+        for (const auto& [algorithm, c] : by_algorithm) {
+            const double md = median_of(c.best), mn = mean_of(c.best);
+            if (best.empty() || md < best_median || (md == best_median && mn < best_mean)) {
+                best = algorithm;
+                best_median = md;
+                best_mean = mn;
+            }
+        }
+        std::vector<double> p_values;
+        std::vector<std::size_t> tested;
+        for (const auto& [algorithm, c] : by_algorithm) {
+            ReportRow r;
+            r.problem = problem;
+            r.algorithm = algorithm;
+            r.runs = c.best.size();
+            r.min = *std::min_element(c.best.begin(), c.best.end());
+            r.max = *std::max_element(c.best.begin(), c.best.end());
+            r.mean = mean_of(c.best);
+            r.std = std_of(c.best);
+            r.median = median_of(c.best);
+            r.mean_wall_ms = mean_of(c.wall_ms);
+            r.mean_evaluations = mean_of(c.evaluations);
+            r.best = algorithm == best;
+            if (store.target) {
+                double sum = 0.0;
+                for (const auto& e : c.to_target)
+                    if (e) {
+                        ++r.reached_target;
+                        sum += *e;
+                    }
+                if (r.reached_target) r.mean_evaluations_to_target = sum / static_cast<double>(r.reached_target);
+            }
+            if (c.optimum) {
+                r.optimum = c.optimum;
+                double gap = 0, success = 0;
+                for (double v : c.best) {
+                    const bool at = std::abs(v - *c.optimum) <= 1e-9 * std::max(1.0, std::abs(*c.optimum));
+                    // gap = (value - optimum) / optimum, as pride path reports it: infinite when the
+                    // optimum is 0 and the value is not.
+                    gap += at ? 0.0 : (*c.optimum != 0 ? (v - *c.optimum) / std::abs(*c.optimum) : inf);
+                    success += at ? 1.0 : 0.0;
+                }
+                r.mean_gap = gap / static_cast<double>(r.runs);
+                r.success = success / static_cast<double>(r.runs);
+            }
+            if (!r.best) {
+                p_values.push_back(stats::rank_sum_test(c.best, by_algorithm.at(best).best).p_value);
+                tested.push_back(rows.size());
+            }
+            rows.push_back(r);
+        }
+        const auto adjusted = stats::holm(p_values);
+        for (std::size_t i = 0; i < tested.size(); ++i) rows[tested[i]].p_holm = adjusted[i];
+    }
+
+    // Friedman over the problems, on the median best value, for the algorithms run on all of them.
+    std::map<std::string, std::size_t> count;
+    for (const auto& [problem, by_algorithm] : cells)
+        for (const auto& [algorithm, c] : by_algorithm) ++count[algorithm];
+    std::vector<std::string> algorithms;
+    for (const auto& [algorithm, n] : count)
+        if (n == cells.size()) algorithms.push_back(algorithm);
+    if (algorithms.size() >= 2 && cells.size() >= 2) {
+        std::vector<std::vector<double>> blocks;
+        for (const auto& [problem, by_algorithm] : cells) {
+            std::vector<double> block;
+            for (const auto& a : algorithms) block.push_back(median_of(by_algorithm.at(a).best));
+            blocks.push_back(block);
+        }
+        report.friedman = FriedmanSummary{algorithms, cells.size(), stats::friedman(blocks)};
+    }
+    return report;
+}
+
+ReportData load_report(const std::string& path) {
+    const CampaignStore store = read_store(path);
+    require(!store.runs.empty(), path, "holds no runs yet (run pride bench first)");
+    return make_report(store);
+}
+
+std::string render_markdown(const ReportData& report) {
+    return render_table(report, true);
+}
+
+std::string render_latex(const ReportData& report) {
+    return render_table(report, false);
+}
+
+std::string render_csv(const ReportData& report) {
+    std::string text =
+        "problem,algorithm,runs,min,mean,std,median,max,mean_wall_ms,mean_evaluations,optimum,mean_gap,success,"
+        "p_holm_vs_best,best";
+    // Only campaigns with a target have its columns.
+    text += report.target ? ",target,reached_target,mean_evaluations_to_target\n" : "\n";
+    const auto optional = [](const std::optional<double>& v) { return v ? exact(*v) : std::string(); };
+    for (const auto& r : report.rows) {
+        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm), r.runs,
+                            exact(r.min), exact(r.mean), exact(r.std), exact(r.median), exact(r.max),
+                            exact(r.mean_wall_ms), exact(r.mean_evaluations), optional(r.optimum), optional(r.mean_gap),
+                            optional(r.success), optional(r.p_holm), r.best ? 1 : 0);
+        text += report.target ? fmt::format(",{},{},{}\n", exact(*report.target), r.reached_target,
+                                            optional(r.mean_evaluations_to_target))
+                              : "\n";
+    }
+    return text;
+}
+
+}  // namespace pride::report

@@ -1,0 +1,58 @@
+#pragma once
+// The comparison report of a campaign store (docs/campaigns.md, `pride report`): per problem and
+// algorithm the statistics of the final best values, the algorithm with the lowest median marked
+// best, Holm-corrected Wilcoxon rank-sum p-values against it, and Friedman's ranks over the
+// problems; as data, and rendered as markdown, CSV (every number as the double it is) or LaTeX.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/report/statistics.hpp"
+#include "engine/report/store.hpp"
+
+namespace pride::report {
+
+/// One (problem, algorithm): its runs' final best values (+inf for a run without a feasible one).
+struct ReportRow {
+    std::string problem, algorithm;
+    std::size_t runs = 0;
+    double min = 0, mean = 0, std = 0, median = 0, max = 0;  // std: sample (n - 1); +inf if a value is
+    double mean_wall_ms = 0, mean_evaluations = 0;
+    std::optional<double> optimum;   // grid problems: the exact optimum, and then
+    std::optional<double> mean_gap;  // the mean of (value - optimum) / |optimum| (0 at the optimum)
+    std::optional<double> success;   // the share of runs at the optimum
+    bool best = false;               // the lowest median of the problem (ties: the lowest mean)
+    std::optional<double> p_holm;    // against the best; empty for the best itself
+    // With a campaign target: the runs whose best reached it, and their mean evaluations to do so.
+    std::size_t reached_target = 0;
+    std::optional<double> mean_evaluations_to_target;
+};
+
+/// Friedman's test over the problems, on the median values of the algorithms run on all of them.
+struct FriedmanSummary {
+    std::vector<std::string> algorithms;
+    std::size_t problems = 0;
+    stats::FriedmanTest test;  // average_ranks in the order of `algorithms`
+};
+
+struct ReportData {
+    std::string campaign;
+    std::optional<double> target;
+    std::vector<ReportRow> rows;              // sorted by problem, then algorithm
+    std::optional<FriedmanSummary> friedman;  // with two algorithms on two problems or more
+};
+
+/// The report of the runs of `store` (no rows when it holds none).
+ReportData make_report(const CampaignStore& store);
+/// make_report(read_store(path)); InputError when the store holds no runs yet.
+ReportData load_report(const std::string& path);
+
+std::string render_markdown(const ReportData& report);
+/// A header line, then one line per row; each number in the shortest form that reads back as
+/// the same double ("inf" when infinite), fields quoted as RFC 4180 says.
+std::string render_csv(const ReportData& report);
+/// A `tabular` with the markdown's columns, then Friedman's ranks as a comment.
+std::string render_latex(const ReportData& report);
+
+}  // namespace pride::report

@@ -1,0 +1,284 @@
+#include "engine/report/store.hpp"
+
+#include <fmt/format.h>
+#include <sqlite3.h>
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <set>
+#include <string_view>
+#include <type_traits>
+
+namespace pride::report {
+namespace {
+
+/// Text for a message: `text` quoted, or an excerpt around character `at` when it is long (a
+/// history holds thousands of numbers).
+std::string excerpt(std::string_view text, std::size_t at) {
+    constexpr std::size_t half = 24;
+    if (text.size() <= 2 * half) return "'" + std::string(text) + "'";
+    const std::size_t from = at > half ? at - half : 0, to = std::min(text.size(), from + 2 * half);
+    return "'" + std::string(from > 0 ? "..." : "") + std::string(text.substr(from, to - from)) +
+           (to < text.size() ? "..." : "") + "'";
+}
+
+/// The numbers of a JSON list such as "[1, 2.5e-3, null]" as pride bench writes it; `null`
+/// (+inf: no feasible value yet) only when `T` is double. On failure, the character at fault.
+template <class T>
+bool parse_list(std::string_view text, std::vector<T>& out, std::size_t& at) {
+    std::size_t& i = at;
+    i = 0;
+    const auto skip = [&] {
+        while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\n' || text[i] == '\r')) ++i;
+    };
+    const auto at_end = [&] {
+        skip();
+        return i == text.size();
+    };
+    skip();
+    if (i == text.size() || text[i] != '[') return false;
+    ++i;
+    skip();
+    if (i < text.size() && text[i] == ']') {
+        ++i;
+        return at_end();
+    }
+    for (;;) {
+        skip();
+        if (std::is_floating_point_v<T> && text.substr(i, 4) == "null") {
+            out.push_back(std::numeric_limits<T>::infinity());
+            i += 4;
+        } else {
+            // from_chars alone would take "inf" and "nan": a JSON number starts with a digit.
+            const std::size_t start = i;
+            if (i < text.size() && text[i] == '-') ++i;
+            if (i == text.size() || text[i] < '0' || text[i] > '9') return false;
+            T v{};
+            const auto [end, ec] = std::from_chars(text.data() + start, text.data() + text.size(), v);
+            if (ec != std::errc()) return false;  // out of range included
+            out.push_back(v);
+            i = static_cast<std::size_t>(end - text.data());
+        }
+        skip();
+        if (i < text.size() && text[i] == ',') {
+            ++i;
+            continue;
+        }
+        if (i < text.size() && text[i] == ']') {
+            ++i;
+            return at_end();
+        }
+        return false;
+    }
+}
+
+/// The store's connection, read-only; closed at the end of the scope.
+class Connection {
+  public:
+    explicit Connection(const std::string& path) : path_(path) {
+        if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+            sqlite3_close(db_);
+            throw InputError(path + ": cannot open the store");
+        }
+    }
+    ~Connection() { sqlite3_close(db_); }
+    Connection(const Connection&) = delete;
+    Connection& operator=(const Connection&) = delete;
+
+    /// The failure of the last call as bad input: a file that is no database, one that is
+    /// corrupt, or one that cannot be read.
+    [[noreturn]] void fail() const {
+        const std::string why = sqlite3_errmsg(db_);
+        switch (sqlite3_errcode(db_) & 0xff) {
+            case SQLITE_NOTADB:
+                throw InputError(path_ + ": not a campaign store (" + why + ")");
+            case SQLITE_CORRUPT:
+                throw DamagedStore(path_, why);
+            default:
+                throw InputError(path_ + ": cannot read the store (" + why + ")");
+        }
+    }
+    sqlite3* get() const { return db_; }
+    const std::string& path() const { return path_; }
+
+  private:
+    std::string path_;
+    sqlite3* db_ = nullptr;
+};
+
+/// One query's rows, each value checked against the kind pride bench writes; `where` names the
+/// row in messages.
+class Query {
+  public:
+    Query(const Connection& db, const char* sql) : db_(db) {
+        if (sqlite3_prepare_v2(db.get(), sql, -1, &s_, nullptr) != SQLITE_OK) db.fail();
+    }
+    ~Query() { sqlite3_finalize(s_); }
+    Query(const Query&) = delete;
+    Query& operator=(const Query&) = delete;
+
+    void bind(int i, const std::string& text) { sqlite3_bind_text(s_, i, text.c_str(), -1, SQLITE_TRANSIENT); }
+    /// The next row; false at the end. A corrupt page found on the way is an error, not the end.
+    bool next() {
+        const int rc = sqlite3_step(s_);
+        if (rc == SQLITE_ROW) return true;
+        if (rc != SQLITE_DONE) db_.fail();
+        return false;
+    }
+
+    std::string where;
+
+    std::string text(int i, const char* column) const {
+        if (sqlite3_column_type(s_, i) != SQLITE_TEXT) fail(column, "expected text, got " + value(i));
+        return raw_text(i);
+    }
+    double number(int i, const char* column) const {
+        const int type = sqlite3_column_type(s_, i);
+        if (type == SQLITE_INTEGER) return static_cast<double>(sqlite3_column_int64(s_, i));
+        if (type != SQLITE_FLOAT) fail(column, "expected a number, got " + value(i));
+        const double v = sqlite3_column_double(s_, i);
+        // pride bench stores no infinity or NaN (NULL stands for "none").
+        if (!std::isfinite(v)) fail(column, "expected a finite number, got " + value(i));
+        return v;
+    }
+    std::optional<double> optional_number(int i, const char* column) const {
+        if (sqlite3_column_type(s_, i) == SQLITE_NULL) return std::nullopt;
+        return number(i, column);
+    }
+    std::int64_t integer(int i, const char* column, std::int64_t min) const {
+        if (sqlite3_column_type(s_, i) != SQLITE_INTEGER) fail(column, "expected an integer, got " + value(i));
+        const std::int64_t v = sqlite3_column_int64(s_, i);
+        if (v < min) fail(column, fmt::format("expected an integer of at least {}, got {}", min, v));
+        return v;
+    }
+    /// A JSON list of numbers (of counts when `T` is std::int64_t).
+    template <class T>
+    std::vector<T> list(int i, const char* column) const {
+        const char* expected = std::is_floating_point_v<T> ? "a JSON list of numbers" : "a JSON list of counts";
+        if (sqlite3_column_type(s_, i) != SQLITE_TEXT)
+            fail(column, fmt::format("expected {}, got {}", expected, value(i)));
+        const std::string json = raw_text(i);
+        std::vector<T> out;
+        std::size_t at = 0;
+        if (!parse_list(json, out, at))
+            fail(column,
+                 fmt::format("expected {}, got {} (wrong at character {})", expected, excerpt(json, at), at + 1));
+        if constexpr (std::is_integral_v<T>)
+            for (const T v : out)
+                if (v < 0) fail(column, fmt::format("expected {}, got the negative count {}", expected, v));
+        return out;
+    }
+    [[noreturn]] void fail(const char* column, const std::string& what) const {
+        throw DamagedStore(db_.path(), where + ", column " + column + ": " + what);
+    }
+
+  private:
+    std::string raw_text(int i) const {
+        const auto* p = reinterpret_cast<const char*>(sqlite3_column_text(s_, i));
+        return p ? std::string(p, static_cast<std::size_t>(sqlite3_column_bytes(s_, i))) : std::string();
+    }
+    /// A stored value as a message shows it.
+    std::string value(int i) const {
+        switch (sqlite3_column_type(s_, i)) {
+            case SQLITE_NULL:
+                return "NULL";
+            case SQLITE_INTEGER:
+                return std::to_string(sqlite3_column_int64(s_, i));
+            case SQLITE_FLOAT:
+                return fmt::format("{}", sqlite3_column_double(s_, i));
+            case SQLITE_TEXT:
+                return "the text " + excerpt(raw_text(i), 0);
+            default:
+                return "a blob";
+        }
+    }
+
+    const Connection& db_;
+    sqlite3_stmt* s_ = nullptr;
+};
+
+/// The first column of every row of `sql` (table or column names).
+std::set<std::string> names(const Connection& db, const char* sql, const std::string& bound = "") {
+    Query q(db, sql);
+    if (!bound.empty()) q.bind(1, bound);
+    q.where = bound.empty() ? "the schema" : "the schema of table " + bound;
+    std::set<std::string> out;
+    while (q.next()) out.insert(q.text(0, "name"));
+    return out;
+}
+
+}  // namespace
+
+CampaignStore read_store(const std::string& path) {
+    require(std::filesystem::is_regular_file(path), path, "no such store");
+    const Connection db(path);
+    const auto tables = names(db, "SELECT name FROM sqlite_master WHERE type = 'table'");
+    if (!tables.count("campaign") && !tables.count("runs"))
+        throw InputError(path + ": not a campaign store (it has no campaign and no runs table)");
+    for (const char* table : {"campaign", "runs"})
+        if (!tables.count(table)) throw DamagedStore(path, fmt::format("it has no table {}", table));
+    const auto columns = [&](const char* table, std::initializer_list<const char*> wanted) {
+        const auto have = names(db, "SELECT name FROM pragma_table_info(?)", table);
+        for (const char* c : wanted)
+            if (!have.count(c)) throw DamagedStore(path, fmt::format("table {} has no column {}", table, c));
+        return have;
+    };
+    const bool has_target = columns("campaign", {"id", "name"}).count("target") > 0;
+    columns("runs", {"problem", "algorithm", "seed", "best", "evaluations", "wall_ms", "optimum", "history",
+                     "history_evaluations"});
+    // Stores written before the problems table existed are still read: the report needs none of
+    // it; the IOH export asks for it.
+    const bool has_problems = tables.count("problems") > 0;
+    if (has_problems) columns("problems", {"id", "dim"});
+
+    CampaignStore store;
+    {
+        Query q(db, has_target ? "SELECT name, target FROM campaign WHERE id = 1"
+                               : "SELECT name, NULL FROM campaign WHERE id = 1");
+        q.where = "the campaign row";
+        if (!q.next()) throw DamagedStore(path, "table campaign has no row with id 1");
+        store.name = q.text(0, "name");
+        store.target = q.optional_number(1, "target");
+    }
+    if (has_problems) {
+        Query q(db, "SELECT rowid, id, dim FROM problems ORDER BY rowid");
+        store.problems.emplace();
+        while (q.next()) {
+            q.where = fmt::format("problems row with rowid {}",
+                                  q.integer(0, "rowid", std::numeric_limits<std::int64_t>::min()));
+            StoredProblem p;
+            p.id = q.text(1, "id");
+            q.where = fmt::format("problems row '{}'", p.id);
+            p.dim = q.integer(2, "dim", 1);
+            store.problems->push_back(std::move(p));
+        }
+    }
+    Query q(db,
+            "SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, history_evaluations "
+            "FROM runs ORDER BY problem, algorithm, seed");
+    while (q.next()) {
+        // Named by rowid until its key is read, then by the key.
+        constexpr auto any = std::numeric_limits<std::int64_t>::min();
+        q.where = fmt::format("runs row with rowid {}", q.integer(0, "rowid", any));
+        StoredRun r;
+        r.problem = q.text(1, "problem");
+        r.algorithm = q.text(2, "algorithm");
+        r.seed = q.integer(3, "seed", any);
+        q.where = fmt::format("runs row (problem '{}', algorithm '{}', seed {})", r.problem, r.algorithm, r.seed);
+        r.best = q.optional_number(4, "best");
+        r.evaluations = q.integer(5, "evaluations", 0);
+        r.wall_ms = q.number(6, "wall_ms");
+        r.optimum = q.optional_number(7, "optimum");
+        r.history = q.list<double>(8, "history");
+        r.history_evaluations = q.list<std::int64_t>(9, "history_evaluations");
+        if (!r.history_evaluations.empty() && r.history_evaluations.size() != r.history.size())
+            q.fail("history_evaluations", fmt::format("expected one count per value of history ({}), got {}",
+                                                      r.history.size(), r.history_evaluations.size()));
+        store.runs.push_back(std::move(r));
+    }
+    return store;
+}
+
+}  // namespace pride::report
