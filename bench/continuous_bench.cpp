@@ -21,10 +21,7 @@
 #include <tuple>
 #include <vector>
 
-#include "algorithms/ga.hpp"
-#include "algorithms/lso.hpp"
-#include "algorithms/nlopt.hpp"
-#include "algorithms/pso.hpp"
+#include "engine/run.hpp"
 #include "problems/continuous/functions.hpp"
 
 #ifdef PRIDE_HAVE_PAGMO
@@ -72,20 +69,6 @@ void emit(Row r) {
     rows.push_back(std::move(r));
 }
 
-/// A problem that records every point it evaluates (for the second, untimed run).
-template <class F>
-struct Recording {
-    F f;
-    std::vector<double>* points;
-    std::size_t dimension() const { return f.dimension(); }
-    std::span<const double> lower() const { return f.lower(); }
-    std::span<const double> upper() const { return f.upper(); }
-    double evaluate(std::span<const double> x) {
-        points->insert(points->end(), x.begin(), x.end());
-        return f.evaluate(x);
-    }
-};
-
 /// The time, in ms, of evaluating `points` (concatenated, `dim` each) bare, in chunks of `chunk`
 /// points: each chunk is read once untimed so that the timing sees it in cache, as the algorithm's
 /// own evaluations did.
@@ -110,55 +93,42 @@ double bare_ms(F f, const std::vector<double>& points, std::size_t dim, std::siz
     return total;
 }
 
-template <class F>
-Result run_algorithm(const std::string& algo, const F& f, const Settings& s, std::uint64_t seed) {
-    const Termination budget = max_evaluations(s.evals);
-    if (algo == "pso") {
-        Pso<> a;
-        a.population = s.pop;
-        return a.run(f, budget, seed);
-    }
-    if (algo == "pso-constriction") {
-        Pso<ConstrictionVelocity> a;
-        a.population = s.pop;
-        return a.run(f, budget, seed);
-    }
-    if (algo == "ga") {
-        Ga<> a;
-        a.population = s.pop;
-        return a.run(f, budget, seed);
-    }
-    if (algo == "ga-plus") {
-        Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, UniformInit, PlusReplacement> a;
-        a.population = s.pop;
-        return a.run(f, budget, seed);
-    }
-    if (algo == "lso") {
-        LsoAlgorithm a;
-        a.population = s.pop;
-        return a.run(f, budget, seed);
-    }
-    if (algo == "ilso") {
-        auto a = make_ilso();
-        a.population = s.pop;
-        return a.run(f, budget, seed);
-    }
-    return Nlopt(algo, s.pop).run(f, budget, seed);
+/// One run through the engine, as every front end runs: the registry's entry, the run function,
+/// and inside it the fully typed loop of the algorithm on the problem.
+engine::RunResult run_algorithm(const std::string& algo, const engine::Problem& problem, const Settings& s,
+                                std::uint64_t seed) {
+    engine::AlgorithmSpec a{algo, {}};
+    a.params.set("pop", static_cast<double>(s.pop));
+    engine::Budget budget;
+    budget.evaluations = s.evals;
+    return engine::run(a, problem, budget, seed);
 }
 
 template <class F>
 void bench_problem(const Settings& s) {
     const F f(static_cast<std::size_t>(s.dim));
     const std::string name(F::info.name);
+    const engine::Problem problem(engine::ContinuousSpec{name, s.dim});
     std::vector<double> points;
     points.reserve(static_cast<std::size_t>(s.evals * s.dim));
+    // The same function as a callback that records every point it evaluates (for the second,
+    // untimed run): the run takes the same decisions, so it evaluates the same points.
+    engine::CallbackSpec recording{name,
+                                   std::vector<double>(f.lower().begin(), f.lower().end()),
+                                   std::vector<double>(f.upper().begin(), f.upper().end()),
+                                   [&](std::span<const double> x) {
+                                       points.insert(points.end(), x.begin(), x.end());
+                                       return f.evaluate(x);
+                                   },
+                                   {}};
+    const engine::Problem recorded(recording);
     for (const auto& algo : s.algos) {
         for (std::int64_t seed = 1; seed <= s.seeds; ++seed) {
             const auto useed = static_cast<std::uint64_t>(seed);
-            const Result r = run_algorithm(algo, f, s, useed);
+            const auto r = run_algorithm(algo, problem, s, useed);
             emit({algo, name, seed, r.evaluations, r.best_f, r.wall_ms});
             points.clear();
-            run_algorithm(algo, Recording<F>{f, &points}, s, useed);
+            run_algorithm(algo, recorded, s, useed);
             emit({algo + "/bare", name, seed, r.evaluations, std::nan(""),
                   bare_ms(f, points, f.dimension(), static_cast<std::size_t>(s.pop))});
         }

@@ -22,7 +22,7 @@ inline ParamSpec population_param(std::int64_t default_value, std::int64_t min, 
 /// Start from the problem's suggested points (grids: feasible walks) instead of uniform ones.
 inline ParamSpec walk_init_param(bool default_value) {
     return flag("walk_init", default_value,
-                "start from the problem's suggestions (grids: feasible walks; pride path --init)");
+                "start from the problem's suggestions (grids: feasible walks, as the grid spec's init sets it)");
 }
 
 /// Memory of a population algorithm holding `matrices` population-sized matrices of points (and a

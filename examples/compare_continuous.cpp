@@ -1,9 +1,9 @@
 // The main job of the README: PSO, GA, LSO, ILSO and two NLopt algorithms compared on rastrigin,
 // shifted rastrigin and shifted rosenbrock (D = 30, 100,000 evaluations, seeds 1..5), as a table.
 // Rastrigin with and without the shift shows what docs/results/lso-continuous.md explains: the
-// lion swarm's moves scale positions, so its results depend on where the optimum lies. It uses the library
-// directly, as a researcher's own experiment program would: every run is a fully typed template
-// instantiation (algorithm x problem), so the figures are those of the real hot loop.
+// lion swarm's moves scale positions, so its results depend on where the optimum lies. It uses the
+// runtime library (engine/run.hpp) as a researcher's own experiment program would: problems and
+// algorithms by name, with their parameters; inside each run the loop is fully typed.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,19 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/ga.hpp"
-#include "algorithms/lso.hpp"
-#include "algorithms/nlopt.hpp"
-#include "algorithms/pso.hpp"
-#include "problems/continuous/functions.hpp"
-#include "problems/continuous/shifted.hpp"
+#include "engine/run.hpp"
 
 namespace {
 
-using namespace pride;
-using namespace pride::continuous;
+namespace engine = pride::engine;
 
-constexpr std::size_t kDim = 30;
+constexpr std::int64_t kDim = 30;
 constexpr std::int64_t kEvaluations = 100000;
 constexpr std::uint64_t kSeeds = 5;
 
@@ -34,11 +28,13 @@ struct Summary {
     std::int64_t evaluations = 0;
 };
 
-template <class Problem, class Algorithm>
-Summary compare(const Problem& problem, const Algorithm& algorithm) {
-    Summary s{std::string(problem.name()), algorithm.name(), {}, 0.0, 0};
+Summary compare(const std::string& problem_name, const std::string& algorithm) {
+    const engine::Problem problem(engine::ContinuousSpec{problem_name, kDim});
+    engine::Budget budget;
+    budget.evaluations = kEvaluations;
+    Summary s{problem_name, algorithm, {}, 0.0, 0};
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const Result r = algorithm.run(problem, max_evaluations(kEvaluations), seed);
+        const engine::RunResult r = engine::run({algorithm, {}}, problem, budget, seed);
         s.best.push_back(r.best_f);
         s.wall_ms += r.wall_ms / kSeeds;
         s.evaluations += r.evaluations / static_cast<std::int64_t>(kSeeds);
@@ -47,24 +43,13 @@ Summary compare(const Problem& problem, const Algorithm& algorithm) {
     return s;
 }
 
-template <class Problem>
-void compare_all(std::vector<Summary>& out) {
-    const Problem problem(kDim);
-    out.push_back(compare(problem, Pso<>{}));
-    out.push_back(compare(problem, Ga<>{}));
-    out.push_back(compare(problem, LsoAlgorithm{}));
-    out.push_back(compare(problem, make_ilso()));
-    out.push_back(compare(problem, Nlopt("LN_SBPLX")));
-    out.push_back(compare(problem, Nlopt("GN_CRS2_LM")));
-}
-
 }  // namespace
 
 int main() {
     std::vector<Summary> rows;
-    compare_all<Rastrigin>(rows);
-    compare_all<Shifted<Rastrigin>>(rows);
-    compare_all<Shifted<Rosenbrock>>(rows);
+    for (const char* problem : {"rastrigin", "shifted-rastrigin", "shifted-rosenbrock"})
+        for (const char* algorithm : {"pso", "ga", "lso", "ilso", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"})
+            rows.push_back(compare(problem, algorithm));
 
     fmt::print("D = {}, {} evaluations per run, seeds 1..{}, optimum value 0 everywhere\n\n", kDim, kEvaluations,
                kSeeds);

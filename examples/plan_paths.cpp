@@ -10,21 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/ga.hpp"
-#include "algorithms/lso.hpp"
-#include "algorithms/pso.hpp"
-#include "framework/encoding.hpp"
-#include "problems/grid/chain.hpp"
-#include "problems/grid/encodings.hpp"
+#include "engine/run.hpp"
 #include "problems/grid/map_io.hpp"
-#include "problems/grid/objectives.hpp"
-#include "problems/grid/oracle.hpp"
 
 namespace {
 
-using namespace pride;
 using namespace pride::grid;
-using Problem = GridProblem<CellsObjective>;
+namespace engine = pride::engine;
 
 constexpr std::uint64_t kSeeds = 10;
 
@@ -48,41 +40,30 @@ Row summarise(const std::string& name, double optimum, Run run) {
 
 void compare(const std::string& dir, const std::string& name) {
     const auto scen = read_scenario(dir + "/" + name + ".map.scen").at(0);
-    const auto map = std::make_shared<const GridMap>(read_map(dir + "/" + name + ".map"));
-    const Problem problem(map, scen.start, scen.goal);
-    const double optimum = Oracle{}.solve(*map, scen.start, scen.goal, CellsObjective{});
-    const Termination t50 = max_iterations(50);
+    engine::GridSpec spec;  // objective cells, line encoding, repair connector
+    spec.map = engine::load_map(dir + "/" + name + ".map");
+    spec.start = scen.start;
+    spec.goal = scen.goal;
+    const auto& map = spec.map;
+    const engine::Problem line(spec);
+    spec.encoding = "chain";
+    const engine::Problem chain(spec);
+    engine::Budget t50;  // on grids the population is the papers' N = 20 unless set
+    t50.iterations = 50;
+    const double optimum = engine::run({"exact", {}}, line, t50, 1).best_f;
 
     std::vector<Row> rows;
-    const Encoded<Problem, LineEncoding<RepairConnector>> line(problem, LineEncoding<RepairConnector>(problem));
-    Pso<> pso;
-    pso.population = 20;
-    rows.push_back(summarise("pso, line + repair", optimum, [&](std::uint64_t seed) {
-        const Result r = pso.run(line, t50, seed);
-        return std::pair{r.best_f, r.wall_ms};
-    }));
-    Ga<> ga;
-    ga.population = 20;
-    rows.push_back(summarise("ga, line + repair", optimum, [&](std::uint64_t seed) {
-        const Result r = ga.run(line, t50, seed);
-        return std::pair{r.best_f, r.wall_ms};
-    }));
-    const LsoAlgorithm lso;  // N = 20 by default
-    rows.push_back(summarise("lso, line + repair", optimum, [&](std::uint64_t seed) {
-        const Result r = lso.run(line, t50, seed);
-        return std::pair{r.best_f, r.wall_ms};
-    }));
-    const auto ilso = make_ilso();  // the problem's starting points: rough-set rule walks
-    rows.push_back(summarise("ilso, line + repair", optimum, [&](std::uint64_t seed) {
-        const Result r = ilso.run(line, t50, seed);
-        return std::pair{r.best_f, r.wall_ms};
-    }));
-    ChainGa chain_ga;
-    chain_ga.population = 20;
-    rows.push_back(summarise("ga, chain", optimum, [&](std::uint64_t seed) {
-        const auto r = chain_ga.run(ChainSpace<CellsObjective>(problem), t50, seed);
-        return std::pair{r.best_f, r.wall_ms};
-    }));
+    auto add = [&](const std::string& label, const std::string& algorithm, const engine::Problem& problem) {
+        rows.push_back(summarise(label, optimum, [&](std::uint64_t seed) {
+            const engine::RunResult r = engine::run({algorithm, {}}, problem, t50, seed);
+            return std::pair{r.best_f, r.wall_ms};
+        }));
+    };
+    add("pso, line + repair", "pso", line);
+    add("ga, line + repair", "ga", line);
+    add("lso, line + repair", "lso", line);
+    add("ilso, line + repair", "ilso", line);  // the problem's starting points: rough-set rule walks
+    add("ga, chain", "ga", chain);
 
     fmt::print("{} ({}x{}), start ({},{}), goal ({},{}): optimum {} cells\n", name, map->width(), map->height(),
                scen.start.x, scen.start.y, scen.goal.x, scen.goal.y, optimum);
