@@ -36,6 +36,8 @@ struct EvalOptions {
 };
 int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out);
 
-int list_command(bool json, std::ostream& out);
+/// `pride list`: text, one JSON object, or the markdown tables docs/cli.md includes.
+enum class ListFormat { text, json, markdown };
+int list_command(ListFormat format, std::ostream& out);
 
 }  // namespace pride::cli

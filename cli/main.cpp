@@ -102,9 +102,11 @@ int main(int argc, char** argv) {
     export_cmd->add_option("store", exporting.store, "the SQLite store written by pride bench")->required();
     export_cmd->add_option("--ioh", exporting.ioh, "the folder to write")->required();
 
-    bool list_json = false;
+    bool list_json = false, list_markdown = false;
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
-    list_cmd->add_flag("--json", list_json, "print one JSON object");
+    auto* list_json_flag = list_cmd->add_flag("--json", list_json, "print one JSON object");
+    list_cmd->add_flag("--markdown", list_markdown, "print markdown tables (the ones in docs/cli.md)")
+        ->excludes(list_json_flag);
 
     RoughsetOptions roughset;
     auto* roughset_cmd = app.add_subcommand("roughset", "reduce a decision table: core, reducts and minimal rules");
@@ -122,7 +124,11 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
-        if (*list_cmd) return list_command(list_json, std::cout);
+        if (*list_cmd)
+            return list_command(list_json       ? ListFormat::json
+                                : list_markdown ? ListFormat::markdown
+                                                : ListFormat::text,
+                                std::cout);
         if (*path_cmd) return path_command(path, std::cout);
         if (*scen_cmd) return scen_command(scen, std::cout);
         if (*roughset_cmd) return roughset_command(roughset, std::cout);
