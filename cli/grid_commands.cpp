@@ -12,6 +12,7 @@
 #include "cli/draw.hpp"
 #include "cli/numbers.hpp"
 #include "engine/run.hpp"
+#include "engine/scenarios.hpp"
 #include "framework/error.hpp"
 #include "problems/grid/astar.hpp"
 #include "problems/grid/grid_problem.hpp"
@@ -154,45 +155,15 @@ int path_command(const PathOptions& o, std::ostream& out) {
 }
 
 int scen_command(const ScenOptions& o, std::ostream& out) {
-    const auto entries = read_scenario(o.file);
-    const std::filesystem::path dir =
-        o.map_dir.empty() ? std::filesystem::path(o.file).parent_path() : std::filesystem::path(o.map_dir);
-    std::map<std::string, GridMap> maps;
-    AStar astar;
-    std::size_t differ = 0;
-    double max_diff = 0.0, seconds = 0.0;
-    for (const auto& e : entries) {
-        const std::string where = o.file + ":" + std::to_string(e.line);
-        auto it = maps.find(e.map);
-        if (it == maps.end()) {
-            try {
-                it = maps.emplace(e.map, read_map((dir / e.map).string())).first;
-            } catch (const InputError& error) {
-                throw InputError(where + ": " + error.what());
-            }
-        }
-        const GridMap& map = it->second;
-        require(map.width() == e.width && map.height() == e.height, where,
-                fmt::format("the scenario says {}x{}, but {} is {}x{}", e.width, e.height, e.map, map.width(),
-                            map.height()));
-        require(map.free(e.start), where, "the start " + to_string(e.start) + " is blocked on " + e.map);
-        require(map.free(e.goal), where, "the goal " + to_string(e.goal) + " is blocked on " + e.map);
-        const auto t0 = Clock::now();
-        const double length = astar.search(map, e.start, e.goal);
-        seconds += std::chrono::duration<double>(Clock::now() - t0).count();
-        const double diff = length < 0 ? std::numeric_limits<double>::infinity() : std::abs(length - e.optimal);
-        if (diff > 1e-6) ++differ;
-        max_diff = std::max(max_diff, diff);
-    }
-    const double rate = seconds > 0 ? static_cast<double>(astar.expansions()) / seconds : 0.0;
+    const engine::ScenarioCheck c = engine::check_scenarios(o.file, o.map_dir);
     if (o.json)
         out << fmt::format("{{\"checked\": {}, \"differ\": {}, \"max_diff\": {}, \"expansions_per_s\": {}}}\n",
-                           entries.size(), differ, json_number(max_diff), json_number(rate));
+                           c.checked, c.differ, json_number(c.max_diff), json_number(c.expansions_per_s));
     else
         out << fmt::format(
             "checked           {}\ndiffer            {} (by more than 1e-6)\nmax_diff          {:.3g}\n"
             "expansions_per_s  {:.4g}\n",
-            entries.size(), differ, max_diff, rate);
+            c.checked, c.differ, c.max_diff, c.expansions_per_s);
     return 0;
 }
 

@@ -134,7 +134,7 @@ pride::engine::RunResult run_example_by_name() {
 // Typed, without the registry: on any box problem type, with an observer called once per
 // iteration (here counting the iterations that improved the best value).
 pride::Result run_example_directly(std::int64_t& improvements) {
-    const example::OnePlusOneEs<> es;
+    static const example::OnePlusOneEs<> es;  // one configured value; run() never changes it
     double previous = pride::kInf;
     return es.run(pride::continuous::Sphere(5), pride::max_evaluations(1000), 1, [&](const pride::IterationView& v) {
         if (v.best_f < previous) ++improvements;
