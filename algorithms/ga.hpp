@@ -16,7 +16,12 @@
 //   (2) the children are evaluated in order;
 //   (3) the Replacement policy forms the next population from parents and children (elitist: the
 //       `elitism` best parents, unchanged and not re-evaluated, then the children; plus: the best N
-//       of parents and children, as pagmo2's sga), and the generation is recorded.
+//       of parents and children, as pagmo2's sga);
+//   then the GenerationContext (generation_context.hpp: iteration, horizon, best / mean / worst of
+//   the population, best so far, generations without improvement) is brought up to date, the Hook
+//   policy is called with it, the population and the Rng (generation_hook.hpp; by default it does
+//   nothing), and the generation is recorded. Selection, Crossover, Mutation and Replacement
+//   policies whose call accepts a trailing context get it; the others are called as they always were.
 // The initial population: for points, the Init policy then the Bounds policy (run_setup.hpp); for
 // chains, the problem's random chains. Both are evaluated in order and recorded as iteration 0.
 // Spec defaults (shared/spec/algorithms.md): tournament of 2, SBX eta 15 with probability 0.9,
@@ -25,7 +30,6 @@
 // the second child of the last pair is dropped; when the budget ends inside a generation the
 // children not evaluated get fitness +inf, the generation is recorded, and the run stops.
 #include <algorithm>
-#include <concepts>
 #include <cstdint>
 #include <numeric>
 #include <span>
@@ -36,6 +40,8 @@
 #include "algorithms/parts/chain_operators.hpp"
 #include "algorithms/parts/crossover.hpp"
 #include "algorithms/parts/ga_population.hpp"
+#include "algorithms/parts/generation_context.hpp"
+#include "algorithms/parts/generation_hook.hpp"
 #include "algorithms/parts/mutation.hpp"
 #include "algorithms/parts/replacement.hpp"
 #include "algorithms/parts/selection.hpp"
@@ -52,7 +58,8 @@
 namespace pride {
 
 template <class Selection = TournamentSelection, class Crossover = SbxCrossover, class Mutation = PolynomialMutation,
-          class Bounds = Clamp, class Init = UniformInit, class Replacement = ElitistReplacement>
+          class Bounds = Clamp, class Init = UniformInit, class Replacement = ElitistReplacement,
+          class Hook = NoGenerationHook>
 class Ga {
   public:
     std::string id = "ga";  // the name in messages and results ("ga-plus" for that variant)
@@ -63,6 +70,7 @@ class Ga {
     Mutation mutation{};
     Bounds bounds{};
     Init init{};
+    Hook hook{};
 
     std::string name() const { return id; }
 
@@ -72,6 +80,7 @@ class Ga {
         selection.validate(name());
         crossover.validate(name());
         mutation.validate(name());
+        if constexpr (requires { hook.validate(name()); }) hook.validate(name());
     }
 
     /// Real-coded, on the box of a BoxProblem.
@@ -84,9 +93,9 @@ class Ga {
     /// On chains (framework/chain.hpp), with chain operator policies (ChainCrossover, ChainMutation).
     template <ChainProblem P, class O = NoObserver>
     BasicResult<typename P::chain_type> run(P problem, const Termination& termination, std::uint64_t seed,
-                                            O&& observer = O{})
-        const requires std::invocable<const Crossover&, P&, typename P::chain_type&, typename P::chain_type&, Rng&> &&
-        std::invocable<const Mutation&, P&, typename P::chain_type&, Rng&> {
+                                            O&& observer = O{}) const requires
+        OperatorOn<Crossover, P&, typename P::chain_type&, typename P::chain_type&, Rng&> &&
+        OperatorOn<Mutation, P&, typename P::chain_type&, Rng&> {
         ChainPopulation<Ga, P> population(*this, problem, termination, seed, observer);
         return generations(population, observer);
     }
@@ -100,26 +109,34 @@ class Ga {
         const std::size_t n = pop.size(), kids = pop.offspring();
         std::vector<std::size_t> chosen(n);
         ReplacementScratch scratch;
+        GenerationContext context;
+        context.horizon = pop.horizon();
+        context.describe(0, pop.fitness(), state.best());
 
-        while (!state.done()) {
+        for (std::int64_t t = 0; !state.done(); ++t) {
             const std::span<const double> fx = pop.fitness();
             for (std::size_t k = 0; k < kids; k += 2) {  // (1)
-                const std::size_t a = selection(fx, rng);
-                const std::size_t b = selection(fx, rng);
+                const std::size_t a = with_context(selection, context, fx, rng);
+                const std::size_t b = with_context(selection, context, fx, rng);
                 auto&& first = pop.child(k);
                 auto&& second = k + 1 < kids ? pop.child(k + 1) : pop.spare();
                 pop.copy(a, first);
                 pop.copy(b, second);
-                pop.cross(first, second);
-                pop.mutate(first);
-                pop.mutate(second);
+                context.parents = {a, b};
+                pop.cross(first, second, context);
+                context.child = 0;
+                pop.mutate(first, context);
+                context.child = 1;
+                pop.mutate(second, context);
                 pop.repair(first);
                 pop.repair(second);
             }
-            pop.evaluate_children();                                   // (2); +inf past the budget
-            replacement(fx, pop.children_fitness(), chosen, scratch);  // (3)
+            pop.evaluate_children();  // (2); +inf past the budget
+            with_context(replacement, context, fx, pop.children_fitness(), chosen, scratch);  // (3)
             for (std::size_t k = 0; k < n; ++k) pop.take(k, chosen[k]);
             pop.advance();
+            context.describe(t + 1, pop.fitness(), state.best());
+            hook(std::as_const(context), pop, rng);
             pop.end_iteration(observer);
         }
         return pop.finish();

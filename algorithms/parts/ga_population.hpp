@@ -8,7 +8,7 @@
 //
 // Points are the columns of Eigen matrices, evaluated through RunState::evaluate_columns (batch
 // problems in one call); chains live in vectors of the problem's chain type and are evaluated one
-// by one.
+// by one. For hooks (generation_hook.hpp) both offer size(), fitness(), individual(i) and renew().
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/parts/generation_context.hpp"
 #include "algorithms/parts/run_setup.hpp"
 #include "framework/chain.hpp"
 #include "framework/problem.hpp"
@@ -65,7 +66,7 @@ class BoxPopulation {
     std::optional<std::int64_t> horizon() const noexcept { return run_.horizon; }
     std::size_t offspring() const noexcept { return kids_; }
 
-    // The current population.
+    // The current population, for the loop and for hooks.
     std::size_t size() const noexcept { return run_.fx.size(); }
     std::span<const double> fitness() const noexcept { return run_.fx; }
     std::span<const double> individual(std::size_t i) const { return column(run_.x, index(i)); }
@@ -76,8 +77,12 @@ class BoxPopulation {
     void copy(std::size_t parent, std::span<double> to) const {
         std::copy_n(run_.x.col(index(parent)).data(), run_.dim, to.data());
     }
-    void cross(std::span<double> a, std::span<double> b) { cross_(a, b, run_.lo, run_.hi, run_.rng); }
-    void mutate(std::span<double> c) { mutate_(c, run_.lo, run_.hi, run_.rng); }
+    void cross(std::span<double> a, std::span<double> b, const GenerationContext& context) {
+        with_context(cross_, context, a, b, run_.lo, run_.hi, run_.rng);
+    }
+    void mutate(std::span<double> c, const GenerationContext& context) {
+        with_context(mutate_, context, c, run_.lo, run_.hi, run_.rng);
+    }
     void repair(std::span<double> c) const { ga_.bounds(c, run_.lo, run_.hi); }
 
     /// The children in order; +inf past the budget.
@@ -100,6 +105,19 @@ class BoxPopulation {
         run_.state.end_iteration(observer, run_.x, run_.fx);
     }
     Result finish() { return run_.state.finish(); }
+
+    /// Replaces the members `which` by new points (the Init policy, then Bounds), evaluated in order.
+    void renew(std::span<const std::size_t> which, Rng& rng) {
+        Matrix fresh(run_.x.rows(), static_cast<Eigen::Index>(which.size()));
+        std::vector<double> f(which.size());
+        ga_.init(problem_, rng, fresh);
+        for (Eigen::Index j = 0; j < fresh.cols(); ++j) ga_.bounds(column(fresh, j), run_.lo, run_.hi);
+        run_.state.evaluate_columns(problem_, fresh, f);
+        for (std::size_t j = 0; j < which.size(); ++j) {
+            run_.x.col(index(which[j])) = fresh.col(index(j));
+            run_.fx[which[j]] = f[j];
+        }
+    }
 
   private:
     static Eigen::Index index(std::size_t i) noexcept { return static_cast<Eigen::Index>(i); }
@@ -152,8 +170,12 @@ class ChainPopulation {
     Chain& child(std::size_t k) { return y_[k]; }
     Chain& spare() { return spare_; }
     void copy(std::size_t parent, Chain& to) const { to = x_[parent]; }
-    void cross(Chain& a, Chain& b) { ga_.crossover(problem_, a, b, run_.rng); }
-    void mutate(Chain& c) { ga_.mutation(problem_, c, run_.rng); }
+    void cross(Chain& a, Chain& b, const GenerationContext& context) {
+        with_context(ga_.crossover, context, problem_, a, b, run_.rng);
+    }
+    void mutate(Chain& c, const GenerationContext& context) {
+        with_context(ga_.mutation, context, problem_, c, run_.rng);
+    }
     void repair(Chain&) const noexcept {}  // the chain operators keep every chain feasible
 
     void evaluate_children() {
@@ -176,6 +198,12 @@ class ChainPopulation {
         run_.state.end_iteration(observer, x_, fx_);
     }
     BasicResult<Chain> finish() { return run_.state.finish(); }
+
+    /// Replaces the members `which` by new random chains, made first, then evaluated in order.
+    void renew(std::span<const std::size_t> which, Rng& rng) {
+        for (const std::size_t i : which) problem_.random_chain(rng, x_[i]);
+        for (const std::size_t i : which) fx_[i] = run_.state.exhausted() ? kInf : run_.state.evaluate(problem_, x_[i]);
+    }
 
   private:
     const Algorithm& ga_;
