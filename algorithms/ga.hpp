@@ -20,7 +20,8 @@
 //   then the GenerationContext (generation_context.hpp: iteration, horizon, best / mean / worst of
 //   the population, best so far, generations without improvement) is brought up to date, the Hook
 //   policy is called with it, the population and the Rng (generation_hook.hpp; by default it does
-//   nothing), and the generation is recorded. Selection, Crossover, Mutation and Replacement
+//   nothing; after any other hook the population is described again, as the hook may have
+//   changed it), and the generation is recorded. Selection, Crossover, Mutation and Replacement
 //   policies whose call accepts a trailing context get it; the others are called as they always were.
 // The initial population: for points, the Init policy then the Bounds policy (run_setup.hpp); for
 // chains, the problem's random chains. Both are evaluated in order and recorded as iteration 0.
@@ -34,6 +35,7 @@
 #include <numeric>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -137,6 +139,8 @@ class Ga {
             pop.advance();
             context.describe(t + 1, pop.fitness(), state.best());
             hook(std::as_const(context), pop, rng);
+            // A hook may have renewed members: the next generation's operators see them as they are.
+            if constexpr (!std::is_same_v<Hook, NoGenerationHook>) context.describe(t + 1, pop.fitness(), state.best());
             pop.end_iteration(observer);
         }
         return pop.finish();

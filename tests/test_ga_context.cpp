@@ -7,7 +7,8 @@
 //     equal to the run's history, stagnation counted as the history says, the horizon as
 //     Termination::horizon says, unevaluated children as +inf;
 //   - a catastrophe hook (ICGA's kind) that renews all but the best through renew() keeps the
-//     budget exact and the fitness true, on points and on chains;
+//     budget exact and the fitness true, on points and on chains, and the next generation's
+//     context describes the renewed population (stagnation restarting on the hook's improvements);
 //   - OneOf alternatives are asked one by one; a hook's validate() is part of the GA's.
 #include <catch2/catch.hpp>
 
@@ -250,7 +251,13 @@ TEST_CASE("GA context: mean stays within [best, worst] when rounding would push 
     REQUIRE(c.stagnation == 1);
     c.describe(2, same, 0.1);
     REQUIRE(c.stagnation == 2);
-    c.describe(3, same, 0.05);
+    c.describe(2, same, 0.1);  // the same generation again (after a hook): no new generation
+    REQUIRE(c.stagnation == 2);
+    c.describe(2, same, 0.08);  // ... but one whose hook improved the best
+    REQUIRE(c.stagnation == 0);
+    c.describe(3, same, 0.08);
+    REQUIRE(c.stagnation == 1);
+    c.describe(4, same, 0.05);
     REQUIRE(c.stagnation == 0);
     c.describe(0, same, 0.05);
     REQUIRE(c.stagnation == 0);
@@ -326,8 +333,10 @@ std::filesystem::path bundled_map(const std::string& name) {
 TEST_CASE("GA hook: a catastrophe through renew() keeps the budget exact and the fitness true (points)",
           "[ga][context][hook]") {
     using Hook = Then<Catastrophe, TruthfulFitness<Rastrigin>>;
-    pride::Ga<pride::TournamentSelection, pride::SbxCrossover, pride::PolynomialMutation, pride::Clamp,
-              pride::UniformInit, pride::ElitistReplacement, Hook>
+    // The selection checks that each generation's context describes the population as the
+    // catastrophe left it.
+    pride::Ga<CheckingSelection, pride::SbxCrossover, pride::PolynomialMutation, pride::Clamp, pride::UniformInit,
+              pride::ElitistReplacement, Hook>
         ga;
     ga.population = 8;
     ga.hook.check = std::make_shared<TruthfulFitness<Rastrigin>>(TruthfulFitness<Rastrigin>{Rastrigin(5)});
@@ -341,9 +350,20 @@ TEST_CASE("GA hook: a catastrophe through renew() keeps the budget exact and the
         CHECK(r.history_evaluations.back() == budget);
         for (std::size_t k = 1; k < r.history.size(); ++k) CHECK(r.history[k] <= r.history[k - 1]);
         if (budget == 3000) CHECK(*ga.hook.hook.catastrophes > 0);
+        // Stagnation as the history says, catastrophes' improvements included.
+        const auto& contexts = ga.selection.seen->in_selection;
+        REQUIRE(contexts.size() == static_cast<std::size_t>(r.iterations));  // one per generation
+        std::int64_t expected = 0;
+        for (std::size_t t = 1; t < contexts.size(); ++t) {
+            expected = r.history[t] < r.history[t - 1] ? 0 : expected + 1;
+            REQUIRE(contexts[t].stagnation == expected);
+            REQUIRE(same_bits(contexts[t].best_so_far, r.history[t]));
+        }
+        ga.selection.seen->in_selection.clear();
         // Reproducible, catastrophes included.
         const auto again = ga.run(CountedRastrigin{}, pride::max_evaluations(budget), 5);
         require_same_run(r, again);
+        ga.selection.seen->in_selection.clear();
     }
     ga.hook.hook.k = 0;
     REQUIRE_THROWS_AS(ga.validate(), pride::InputError);

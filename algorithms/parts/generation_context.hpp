@@ -40,9 +40,14 @@ struct GenerationContext {
 
     /// Describes the population `f` after `completed` generations, `best_ever` the run's best:
     /// the stagnation count restarts when best_ever improved on the last description's, and grows
-    /// by one otherwise (0 for the initial population).
+    /// by one when a later generation did not improve it (0 for the initial population). The same
+    /// generation may be described again (after a hook changed the population): then it only
+    /// restarts, on an improvement.
     void describe(std::int64_t completed, std::span<const double> f, double best_ever) {
-        stagnation = completed == 0 || best_ever < best_so_far ? 0 : stagnation + 1;
+        if (completed == 0 || best_ever < best_so_far)
+            stagnation = 0;
+        else if (completed > iteration)
+            ++stagnation;
         iteration = completed;
         best_so_far = best_ever;
         fitness = f;
