@@ -6,7 +6,9 @@
 //   Wan, R. and Gao, Y. (2022). Robot path planning based on rough set reduction and lion swarm
 //     optimization. J. Zhengzhou Univ. (Nat. Sci.) 54(2), 32-38 (file 000: eqs. 1-12, ILSO).
 //
-// N lions; nLeader = ceil(N beta) within [2, N/2] (eqs. 1-2). Each iteration t = 1..T:
+// N lions; nLeader = ceil(N beta) within [2, N/2] (eqs. 1-2). The initial pride (run_setup.hpp,
+// shared with PSO and the GA): positions by the Init policy, then the Bounds policy, evaluated and
+// recorded as iteration 0; p = x; then r of eq. (5). Each iteration t = 1..T:
 //   (a) rank the lions by the fitness of their personal bests p: the best is the king, the next
 //       nLeader - 1 are lionesses, the rest cubs; g = the king's p;
 //   (b) king (eq. 3): x = g (1 + gamma ||p_i - g||);
@@ -44,6 +46,7 @@
 
 #include "algorithms/parts/inertia.hpp"
 #include "algorithms/parts/lion_moves.hpp"
+#include "algorithms/parts/run_setup.hpp"
 #include "framework/bounds.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
@@ -98,22 +101,21 @@ class Lso {
 
     template <BoxProblem P, Observer O = NoObserver>
     Result run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
-        validate();
-        termination.validate(name());
-        const auto n = static_cast<Eigen::Index>(population);
-        const auto horizon = termination.horizon(population, population);
-        require(horizon.has_value(), name(), "needs an iteration or evaluation limit (T of eqs. 6, 7 and 10)");
-        const std::size_t dim = problem.dimension();
-        const auto lo = problem.lower();
-        const auto hi = problem.upper();
+        // Checks, the initial pride (Init, then Bounds) evaluated and recorded as iteration 0.
+        auto run = start_box_run(*this, problem, termination, seed, observer, {population, "(T of eqs. 6, 7 and 10)"});
+        const std::int64_t horizon = *run.horizon;
+        const auto lo = run.lo, hi = run.hi;
+        const std::size_t dim = run.dim;
+        Rng& rng = run.rng;
+        RunState& state = run.state;
+        Matrix& x = run.x;
+        std::vector<double>& fx = run.fx;
+        const auto n = x.cols();
         const std::int64_t leaders = lion::leaders(population, beta);  // (1), (2)
         const auto lionesses = leaders - 1;
 
-        Rng rng(seed);
-        RunState state(termination, dim);
-        const auto rows = static_cast<Eigen::Index>(dim);
-        Matrix x(rows, n), p(rows, n);
-        std::vector<double> fx(static_cast<std::size_t>(n)), fp(fx.size()), g(dim), g_bar(dim);
+        Matrix p = x;
+        std::vector<double> fp = fx, g(dim), g_bar(dim);
         std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
         std::vector<double> gammas(gamma_per_coordinate ? dim : 0);
         // gamma of eqs. 3, 4 and 9: one N(0,1) draw per lion, or one per coordinate (option).
@@ -126,12 +128,6 @@ class Lso {
             }
         };
 
-        init(problem, rng, x);
-        for (Eigen::Index i = 0; i < n; ++i) bounds(column(x, i), lo, hi);
-        state.evaluate_columns(problem, x, fx);
-        p = x;
-        fp = fx;
-        state.end_iteration(observer, x, fx);
         const double step = lion::step(step_factor ? *step_factor : rng.uniform(), lo, hi);  // (5)
 
         for (std::int64_t t = 1; !state.done(); ++t) {
@@ -143,10 +139,10 @@ class Lso {
             });
             const Eigen::Index king = order[0];
             std::copy_n(p.col(king).data(), dim, g.begin());
-            lion::opposite(lo, hi, g, g_bar);                    // (8)
-            const double w = weight(t - 1, *horizon);            // (10)
-            const double af = lion::alpha_f(step, t, *horizon);  // (6)
-            const double ac = lion::alpha_c(step, t, *horizon);  // (7)
+            lion::opposite(lo, hi, g, g_bar);                   // (8)
+            const double w = weight(t - 1, horizon);            // (10)
+            const double af = lion::alpha_f(step, t, horizon);  // (6)
+            const double ac = lion::alpha_c(step, t, horizon);  // (7)
             auto lioness = [&](std::int64_t k) { return column(p, order[static_cast<std::size_t>(1 + k)]); };
 
             for (std::size_t r = 0; r < order.size(); ++r) {

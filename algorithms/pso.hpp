@@ -7,6 +7,9 @@
 //   Clerc, M. and Kennedy, J. (2002). The particle swarm - explosion, stability, and convergence in
 //     a multidimensional complex space. IEEE TEC 6(1), 58-73 (the constriction factor).
 //
+// The initial swarm (run_setup.hpp, shared with the GA and LSO): positions by the Init policy, put in
+// the box by the Bounds policy, evaluated and recorded as iteration 0; then the velocities, particle
+// by particle; p = x; g = the best p.
 // Per iteration t, for each particle i and coordinate d, with r1, r2 ~ U(0,1) drawn per coordinate
 // (both from one generator step, 32 bits each: see Rng::fill_uniform_pairs):
 //   (1) v_id <- a v_id + b1 r1 (p_id - x_id) + b2 r2 (g_d - x_id)   (a, b1, b2 from the Velocity policy:
@@ -28,6 +31,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/parts/run_setup.hpp"
 #include "algorithms/parts/velocity.hpp"
 #include "framework/bounds.hpp"
 #include "framework/initializer.hpp"
@@ -61,39 +65,30 @@ class Pso {
 
     template <BoxProblem P, Observer O = NoObserver>
     Result run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
-        validate();
-        termination.validate(name());
-        const auto n = static_cast<Eigen::Index>(population);
-        const std::size_t dim = problem.dimension();
-        const auto horizon = termination.horizon(population, population);
-        require(horizon.has_value(), name(), "needs an iteration or evaluation limit for its inertia schedule");
-        const auto lo = problem.lower();
-        const auto hi = problem.upper();
+        // Checks, the initial swarm (Init, then Bounds) evaluated and recorded as iteration 0.
+        auto run = start_box_run(*this, problem, termination, seed, observer, {population, "for its inertia schedule"});
+        const std::int64_t horizon = *run.horizon;
+        const auto lo = run.lo, hi = run.hi;
+        const std::size_t dim = run.dim;
+        Rng& rng = run.rng;
+        RunState& state = run.state;
+        Matrix& x = run.x;
+        std::vector<double>& fx = run.fx;
+        const auto n = x.cols();
 
-        Rng rng(seed);
-        RunState state(termination, dim);
-        const auto rows = static_cast<Eigen::Index>(dim);
-        Matrix x(rows, n), v(rows, n), p(rows, n);
-        std::vector<double> fx(static_cast<std::size_t>(n)), fp(fx.size()), vmax(dim), g(dim), r1(dim), r2(dim);
+        Matrix v(x.rows(), n), p = x;
+        std::vector<double> fp = fx, vmax(dim), g(dim), r1(dim), r2(dim);
         for (std::size_t d = 0; d < dim; ++d) vmax[d] = velocity_clamp.limit(lo[d], hi[d]);
-
-        init(problem, rng, x);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            bounds(column(x, i), lo, hi);
+        for (Eigen::Index i = 0; i < n; ++i)
             for (std::size_t d = 0; d < dim; ++d) v(static_cast<Eigen::Index>(d), i) = rng.uniform(-vmax[d], vmax[d]);
-        }
-        state.evaluate_columns(problem, x, fx);
-        p = x;
-        fp = fx;
         auto refresh_global_best = [&] {
             const auto best = column(p, std::min_element(fp.begin(), fp.end()) - fp.begin());
             std::copy(best.begin(), best.end(), g.begin());
         };
         refresh_global_best();
-        state.end_iteration(observer, x, fx);
 
         for (std::int64_t t = 0; !state.done(); ++t) {
-            const auto [a, b1, b2] = velocity(t, *horizon);
+            const auto [a, b1, b2] = velocity(t, horizon);
             for (Eigen::Index i = 0; i < n && !state.exhausted(); ++i) {
                 double* xi = x.col(i).data();
                 double* vi = v.col(i).data();
