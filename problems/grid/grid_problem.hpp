@@ -89,7 +89,12 @@ class GridProblem {
     }
 
     /// The objective of a legal path.
-    double evaluate(const Path& path) const { return objective_(metrics(path)); }
+    double evaluate(const Path& path) const {
+        if constexpr (requires { objective_.of_path(path); })
+            return objective_.of_path(path);
+        else
+            return objective_(metrics(path));
+    }
     /// A decoded chain: its objective plus M per violation (so any violation marks it infeasible).
     double evaluate(const DecodedPath& d) const { return evaluate(d.path) + penalty() * d.violations; }
 

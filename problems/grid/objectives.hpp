@@ -88,6 +88,13 @@ struct LinearObjective {
     double operator()(const PathMetrics& m) const noexcept {
         return w_cells * m.cells + w_len * m.length + w_turn * m.turns + w_angle * m.angle_penalty;
     }
+    /// The value of a path, measuring only what a non-zero weight needs: a fixed objective type
+    /// gets that for free (the compiler drops unused metrics), a weighted one must ask. A metric
+    /// left 0 has weight 0, so the value is the same to the bit.
+    double of_path(const Path& path) const noexcept {
+        if (w_len == 0.0 && w_turn == 0.0 && w_angle == 0.0) return w_cells * static_cast<int>(path.size());
+        return (*this)(metrics(path, w_turn != 0.0 || w_angle != 0.0));
+    }
     double start_cost() const noexcept { return w_cells; }
     double step_cost(int d) const noexcept { return w_cells + w_len * (is_diagonal(d) ? kSqrt2 : 1.0); }
     double turn_cost(int k) const noexcept { return w_turn + w_angle * angle_penalty_of_turn(k); }

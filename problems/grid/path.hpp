@@ -31,8 +31,9 @@ inline constexpr int angle_penalty_of_turn(int k) {
 }
 
 /// Metrics of a chain whose consecutive cells are neighbours (legal or not: the penalty decoder
-/// scores illegal chains too). A pair of equal consecutive cells counts as no step.
-inline PathMetrics metrics(const Path& path) {
+/// scores illegal chains too). A pair of equal consecutive cells counts as no step. With
+/// `with_turns` false, turns, turn_angle_deg and angle_penalty are left 0 (the same length, cheaper).
+inline PathMetrics metrics(const Path& path, bool with_turns = true) {
     PathMetrics m;
     m.cells = static_cast<int>(path.size());
     int previous = -1;
@@ -40,7 +41,7 @@ inline PathMetrics metrics(const Path& path) {
         const int d = direction(path[i - 1], path[i]);
         if (d < 0) continue;
         m.length += is_diagonal(d) ? kSqrt2 : 1.0;
-        if (previous >= 0 && d != previous) {
+        if (with_turns && previous >= 0 && d != previous) {
             const int k = turn_steps(previous, d);
             ++m.turns;
             m.turn_angle_deg += 45 * k;

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "roughset/roughset.hpp"
 #include "problems/grid/map.hpp"
+#include "roughset/roughset.hpp"
 
 namespace pride::grid {
 
