@@ -257,14 +257,20 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
 
 void check_run_memory(const AlgorithmEntry& entry, const Params& params, const Prepared& p,
                       const Termination& termination) {
+    // A chain holds no cell twice (every operator cuts loops), so the map's cells bound its length.
+    std::size_t dimension = p.dimension;
+    if (p.chain)
+        std::visit([&](const auto& g) { dimension = g.map().size() + 8; }, p.grid->problem);  // + a vector's own
     double bytes = 0.0;
-    if (entry.memory) bytes += entry.memory(params, p.dimension);
+    if (entry.memory) bytes += entry.memory(params, dimension);
     // The history: one value and one count per iteration, for as many iterations as the budget allows.
     const auto pop = entry.param("pop") ? params.integer("pop") : 1;
     if (const auto t = termination.horizon(pop, pop)) bytes += 16.0 * static_cast<double>(*t + 1);
-    const std::string what =
-        entry.param("pop") ? fmt::format("a run with population {} in dimension {}", params.integer("pop"), p.dimension)
-                           : fmt::format("a run in dimension {}", p.dimension);
+    const std::string where =
+        p.chain ? fmt::format("on chains of up to {} cells", dimension) : fmt::format("in dimension {}", dimension);
+    const std::string what = entry.param("pop")
+                                 ? fmt::format("a run with population {} {}", params.integer("pop"), where)
+                                 : fmt::format("a run {}", where);
     require_memory(bytes, entry.name, what);
 }
 

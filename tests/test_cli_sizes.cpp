@@ -17,6 +17,9 @@ TEST_CASE("cli: a run that cannot fit in memory is refused before it starts", "[
     const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
     check_input_error(run_pride("path --map '" + map + "' --start 0,0 --goal 9,9 --algo lso --pop 3000000000"),
                       {"lso", "memory"});
+    check_input_error(
+        run_pride("path --map '" + map + "' --start 0,0 --goal 9,9 --algo ga --encoding chain --pop 100000000"),
+        {"ga", "chains", "memory"});
 }
 
 TEST_CASE("cli: a campaign with a run that cannot fit in memory is refused before anything is stored",
