@@ -176,6 +176,14 @@ void prepare(Campaign& c) {
     require(c.budget.evaluations || c.budget.iterations, file, "missing [budget] with 'evaluations' or 'iterations'");
     require(!c.problems.empty(), file, "no [[problem]]");
     require(!c.algorithms.empty(), file, "no [[algorithm]]");
+    // The list of runs is made before any starts: a task and a stored key per run.
+    const double runs = static_cast<double>(c.problems.size()) * static_cast<double>(c.algorithms.size()) *
+                        static_cast<double>(c.seeds);
+    require(runs * 128.0 <= available_memory(), file,
+            fmt::format("{} runs ({} problems x {} algorithms x {} seeds) need about {} of memory to list, more "
+                        "than the {} this machine has",
+                        runs, c.problems.size(), c.algorithms.size(), c.seeds, format_bytes(runs * 128.0),
+                        format_bytes(available_memory())));
     std::set<std::string> ids;
     for (const auto& p : c.problems)
         if (!ids.insert(p.id).second)

@@ -32,4 +32,11 @@ TEST_CASE("cli: a campaign with a run that cannot fit in memory is refused befor
     check_input_error(run_pride("bench '" + config + "' --out '" + dir.file("s.sqlite") + "'"),
                       {config + ":9", "'p'", "'s'", "memory"});
     CHECK(dir.entries() == std::vector<std::string>{"huge.toml"});  // no store written
+    const std::string many = dir.write("many.toml",
+                                       "name = \"many\"\nseeds = 1000000000000\n[budget]\nevaluations = 100\n"
+                                       "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
+                                       "[[algorithm]]\nid = \"p\"\ntype = \"pso\"\n");
+    check_input_error(run_pride("bench '" + many + "' --out '" + dir.file("m.sqlite") + "'"),
+                      {many, "1000000000000 runs", "memory"});
+    CHECK(dir.entries() == std::vector<std::string>{"huge.toml", "many.toml"});
 }
