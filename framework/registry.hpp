@@ -1,6 +1,6 @@
 #pragma once
-// A registry: names to entries, with a few words each, in the order they were added. The command
-// line and campaign runner choose types at run time through registries; nothing else does.
+// A registry: names to entries, with a few words each, in the order they were added (the catalog
+// of continuous functions). Types are chosen at run time in engine/ and nowhere else.
 #include <string>
 #include <string_view>
 #include <vector>
