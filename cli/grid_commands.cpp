@@ -33,12 +33,6 @@ Cell parse_cell(const std::string& text, const std::string& where) {
     return {static_cast<int>(x), static_cast<int>(y)};
 }
 
-std::string json_path(const Path& path) {
-    std::string s = "[";
-    for (std::size_t i = 0; i < path.size(); ++i) s += fmt::format("{}[{},{}]", i ? "," : "", path[i].x, path[i].y);
-    return s + "]";
-}
-
 /// The spec of `pride path`'s options (names checked, the map not read yet).
 engine::GridSpec grid_spec(const PathOptions& o) {
     engine::GridSpec g;
@@ -56,10 +50,9 @@ engine::GridSpec grid_spec(const PathOptions& o) {
 
 }  // namespace
 
-PathRun plan_path(const PathOptions& o, std::shared_ptr<const GridMap>* map_out) {
+engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec_out) {
     engine::GridSpec spec = grid_spec(o);
     engine::check_grid_names(spec);
-    require(o.inflate >= 0 && o.inflate <= 1000, "--inflate", "must be in [0, 1000], got " + std::to_string(o.inflate));
     spec.map = engine::load_map(o.map, o.inflate);
     spec.start = parse_cell(o.start, "--start");
     spec.goal = parse_cell(o.goal, "--goal");
@@ -70,28 +63,14 @@ PathRun plan_path(const PathOptions& o, std::shared_ptr<const GridMap>* map_out)
     budget.evaluations = o.evals;
     engine::check(algorithm, problem, budget);
     require(o.seed >= 0, "--seed", "must be >= 0, got " + std::to_string(o.seed));
-    engine::RunResult r = engine::run(algorithm, problem, budget, static_cast<std::uint64_t>(o.seed));
-    if (map_out) *map_out = spec.map;
-    engine::GridOutcome& g = *r.grid;
-    PathRun run;
-    run.encoding = g.encoding;
-    run.feasible = g.feasible;
-    run.path = std::move(g.path);
-    run.value = g.value;
-    run.evaluations = r.evaluations;
-    run.iterations = r.iterations;
-    run.wall_ms = r.wall_ms;
-    run.history = std::move(r.history);
-    run.history_evaluations = std::move(r.history_evaluations);
-    run.optimum = g.optimum;
-    run.optimal_path = std::move(g.optimal_path);
-    return run;
+    if (spec_out) *spec_out = spec;
+    return engine::run(algorithm, problem, budget, static_cast<std::uint64_t>(o.seed));
 }
 
 int path_command(const PathOptions& o, std::ostream& out) {
-    std::shared_ptr<const GridMap> map;
-    const PathRun run = plan_path(o, &map);
-    const Cell start = parse_cell(o.start, "--start"), goal = parse_cell(o.goal, "--goal");
+    engine::GridSpec spec;
+    const engine::RunResult r = plan_path(o, &spec);
+    const engine::GridOutcome& run = *r.grid;
     const PathMetrics m = metrics(run.path);
 
     std::optional<double> gap;
@@ -109,8 +88,8 @@ int path_command(const PathOptions& o, std::ostream& out) {
     std::error_code ec;
     try {
         for (const auto& [file, format] : pictures)
-            draw_grid(*map, start, goal, run.feasible ? &run.path : nullptr, o.oracle ? &run.optimal_path : nullptr,
-                      file + ".part", file, format);
+            draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.path : nullptr,
+                      o.oracle ? &run.optimal_path : nullptr, file + ".part", file, format);
         for (const auto& [file, format] : pictures) {
             std::filesystem::rename(file + ".part", file, ec);
             if (ec) throw InputError(file + ": cannot write the picture: " + ec.message());
@@ -127,9 +106,9 @@ int path_command(const PathOptions& o, std::ostream& out) {
             "{}}}, "
             "\"objective_value\": {}, \"evaluations\": {}, \"iterations\": {}, \"wall_ms\": {}, \"history\": {}",
             json_string(o.algo), json_string(o.objective), json_string(run.encoding), o.seed,
-            run.feasible ? "true" : "false", json_path(run.path), m.cells, json_number(m.length), m.turns,
-            m.turn_angle_deg, m.angle_penalty, run.feasible ? json_number(run.value) : "null", run.evaluations,
-            run.iterations, json_number(run.wall_ms), json_array(run.history));
+            run.feasible ? "true" : "false", json_cells(run.path), m.cells, json_number(m.length), m.turns,
+            m.turn_angle_deg, m.angle_penalty, run.feasible ? json_number(run.value) : "null", r.evaluations,
+            r.iterations, json_number(r.wall_ms), json_array(r.history));
         if (o.oracle)
             text += fmt::format(", \"optimum\": {{\"objective_value\": {}, \"gap\": {}}}",
                                 run.optimum ? json_number(*run.optimum) : "null", gap ? json_number(*gap) : "null");
@@ -149,7 +128,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
         text += fmt::format("optimum         {:.10g}\ngap             {}\n", *run.optimum,
                             gap ? fmt::format("{:.6g}", *gap) : "-");
     text += fmt::format("evaluations     {}\niterations      {}\nwall_ms         {:.3f}\npath            {}\n",
-                        run.evaluations, run.iterations, run.wall_ms, json_path(run.path));
+                        r.evaluations, r.iterations, r.wall_ms, json_cells(run.path));
     out << text;
     return 0;
 }

@@ -3,13 +3,11 @@
 // shared/spec/cli.md.
 #include <cstdint>
 #include <iosfwd>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "problems/grid/map.hpp"
-#include "problems/grid/path.hpp"
+#include "engine/run.hpp"
 
 namespace pride::cli {
 
@@ -41,24 +39,9 @@ struct PathOptions {
 };
 int path_command(const PathOptions& o, std::ostream& out);
 
-/// What one run on a grid produced, whatever made it (pride path, campaigns).
-struct PathRun {
-    std::string encoding = "none";
-    bool feasible = false;
-    grid::Path path;     // start first
-    double value = 0.0;  // the objective of the path (when feasible)
-    std::int64_t evaluations = 0;
-    std::int64_t iterations = 0;
-    double wall_ms = 0.0;
-    std::vector<double> history;
-    std::vector<std::int64_t> history_evaluations;
-    std::optional<double> optimum;  // with o.oracle (or algo exact)
-    grid::Path optimal_path;
-};
-
-/// Loads the map and runs `o.algo` on it as `pride path` does (no printing, no pictures); the map
-/// as loaded (inflated) into `map` when given.
-PathRun plan_path(const PathOptions& o, std::shared_ptr<const grid::GridMap>* map = nullptr);
+/// Loads the map and runs `o.algo` on it as `pride path` does (no printing, no pictures); the spec
+/// it ran (the map as loaded and inflated, start, goal) into `spec` when given.
+engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec = nullptr);
 
 struct ScenOptions {
     std::string file;
