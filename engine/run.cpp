@@ -351,20 +351,30 @@ Termination Budget::termination(std::size_t dimension, bool grid) const {
     return t;
 }
 
-void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget) {
+namespace {
+/// What check() and run() both establish before a run: the entry, its checked parameters and the
+/// stopping rules, with the memory the run needs checked.
+struct CheckedRun {
+    const AlgorithmEntry& entry;
+    Params params;
+    Termination termination;
+};
+
+CheckedRun checked_run(const AlgorithmSpec& algorithm, const Prepared& p, const Budget& budget) {
     const AlgorithmEntry& entry = algorithms().at(algorithm.name);
-    const Prepared& p = problem.prepared();
-    const Params params = checked(entry, p, algorithm);
-    const Termination t = budget.termination(p.dimension, p.grid.has_value());
-    if (!entry.solve_grid) check_run_memory(entry, params, p, t);
+    CheckedRun c{entry, checked(entry, p, algorithm), budget.termination(p.dimension, p.grid.has_value())};
+    if (!entry.solve_grid) check_run_memory(entry, c.params, p, c.termination);
+    return c;
+}
+}  // namespace
+
+void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget) {
+    checked_run(algorithm, problem.prepared(), budget);
 }
 
 RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed) {
-    const AlgorithmEntry& entry = algorithms().at(algorithm.name);
     const Prepared& p = problem.prepared();
-    const Params params = checked(entry, p, algorithm);
-    const Termination termination = budget.termination(p.dimension, p.grid.has_value());
-    if (!entry.solve_grid) check_run_memory(entry, params, p, termination);
+    const auto [entry, params, termination] = checked_run(algorithm, p, budget);
 
     RunResult out;
     out.algorithm = entry.name;
