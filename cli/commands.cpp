@@ -1,6 +1,7 @@
 #include "cli/commands.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <istream>
 #include <ostream>
@@ -118,9 +119,7 @@ std::string markdown_heading(const std::vector<engine::AlgorithmEntry>& algorith
 std::string markdown_algorithms(const std::vector<engine::AlgorithmEntry>& algorithms) {
     std::string text = "### Algorithms\n\n| algorithm | runs on | what it is |\n|---|---|---|\n";
     for (const auto& a : algorithms) {
-        std::string spaces;
-        for (const auto& s : a.spaces()) spaces += (spaces.empty() ? "" : ", ") + s;
-        text += fmt::format("| `{}` | {} | {} |\n", a.name, spaces, md_cell(a.summary));
+        text += fmt::format("| `{}` | {} | {} |\n", a.name, fmt::join(a.spaces(), ", "), md_cell(a.summary));
     }
     text += "\n### Parameters\n";
     for (std::size_t i = 0, end = 0; i < algorithms.size(); i = end) {
@@ -193,9 +192,7 @@ int list_command(ListFormat format, std::ostream& out) {
         for (const auto& a : algorithms) {
             std::string params;
             for (const auto& p : a.params) params += (params.empty() ? "" : " ") + p.name;
-            std::string spaces;
-            for (const auto& s : a.spaces()) spaces += (spaces.empty() ? "" : ", ") + s;
-            text += fmt::format("  {:<22} {} [{}]{}\n", a.name, a.summary, spaces,
+            text += fmt::format("  {:<22} {} [{}]{}\n", a.name, a.summary, fmt::join(a.spaces(), ", "),
                                 params.empty() ? "" : " (params: " + params + ")");
         }
         for (const auto& s : sections) {
