@@ -42,6 +42,7 @@ std::string describe(const Campaign& c) {
             s += fmt::format("grid {} {} ({},{}) ({},{}) {} {} {} {} {} {} {}", json_string(p.map_file), p.inflate,
                              g->start.x, g->start.y, g->goal.x, g->goal.y, g->objective, g->encoding, g->connector,
                              g->waypoints, g->init, g->corner_cutting, json_array(g->weights));
+        if (const auto* g = std::get_if<GridSpec>(&p.spec); g && g->lambda) s += " lambda " + json_number(*g->lambda);
         s += "\n";
     }
     for (const auto& a : c.algorithms) {
@@ -207,12 +208,12 @@ void prepare(Campaign& c) {
                 }
                 // The exact optimum beside every run whose objective has one, for gaps in reports.
                 g->oracle = false;
-                auto problem = std::make_shared<const Problem>(p.spec);
-                if (problem->additive()) {
+                Problem problem(p.spec);
+                if (problem.additive()) {
+                    problem = problem.with_oracle();
                     g->oracle = true;
-                    problem = std::make_shared<const Problem>(p.spec);
                 }
-                p.problem = std::move(problem);
+                p.problem = std::make_shared<const Problem>(std::move(problem));
             } else {
                 p.problem = std::make_shared<const Problem>(p.spec);
             }

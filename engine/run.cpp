@@ -144,12 +144,16 @@ grid::LinearObjective linear_objective(const GridSpec& g) {
     return grid::LinearObjective::of(h);
 }
 
+void require_oracle(const GridSpec& g, const GridTarget& target) {
+    require(target.additive(), "oracle",
+            "the " + g.objective + " objective is not a sum of step and turn costs, so it has no exact oracle");
+}
+
 template <class Objective>
 void prepare_grid(Prepared& out, const GridSpec& g, Objective objective) {
     const grid::GridProblem<Objective> problem(g.map, g.start, g.goal, objective, g.corner_cutting);
     out.grid = GridTarget{problem};
-    require(!g.oracle || out.grid->additive(), "oracle",
-            "the " + g.objective + " objective is not a sum of step and turn costs, so it has no exact oracle");
+    if (g.oracle) require_oracle(g, *out.grid);
     try {
         if (g.encoding == "chain") {
             out.chain = ChainTarget{grid::ChainSpace<Objective>(problem)};
@@ -312,6 +316,14 @@ bool Problem::is_grid() const {
 }
 bool Problem::additive() const {
     return prepared_->grid && prepared_->grid->additive();
+}
+Problem Problem::with_oracle() const {
+    const auto* g = std::get_if<GridSpec>(&prepared_->spec);
+    require(g != nullptr, "oracle", "only grid problems have an exact optimum");
+    require_oracle(*g, *prepared_->grid);
+    auto copy = std::make_shared<Prepared>(*prepared_);  // the targets share their tables
+    std::get<GridSpec>(copy->spec).oracle = true;
+    return Problem(std::move(copy));
 }
 std::size_t Problem::dimension() const {
     return prepared_->dimension;

@@ -24,6 +24,9 @@ class Problem {
     bool is_grid() const;
     /// A grid problem whose objective is a sum of step and turn costs (so it has an exact optimum).
     bool additive() const;
+    /// The same grid problem with the exact optimum computed beside every run (GridSpec::oracle),
+    /// without building it again; InputError when the objective is not additive.
+    Problem with_oracle() const;
     /// The dimension of the box an algorithm searches (grids: of the encoding's genotype; chains: 0).
     std::size_t dimension() const;
     const ProblemSpec& spec() const;
@@ -33,6 +36,7 @@ class Problem {
     const Prepared& prepared() const { return *prepared_; }
 
   private:
+    explicit Problem(std::shared_ptr<const Prepared> prepared) : prepared_(std::move(prepared)) {}
     std::shared_ptr<const Prepared> prepared_;
 };
 

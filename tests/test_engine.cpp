@@ -273,6 +273,16 @@ TEST_CASE("engine: errors name the spec's fields, never a front end's flags", "[
     engine::GridSpec iqga = g;
     iqga.objective = "iqga";
     CHECK_THAT(refused(algo("exact"), engine::Problem(iqga)), Contains("exact") && Contains("iqga"));
+    CHECK_THAT(input_error_message([&] { engine::Problem(iqga).with_oracle(); }),
+               Contains("oracle") && Contains("iqga"));
+    CHECK_THAT(input_error_message([&] {
+                   engine::Problem(engine::ContinuousSpec{"sphere", 2}).with_oracle();
+               }),
+               Contains("oracle"));
+    const auto with_optimum = engine::Problem(g).with_oracle();
+    CHECK(std::get<engine::GridSpec>(with_optimum.spec()).oracle);
+    CHECK(engine::run(algo("astar"), with_optimum, evals(1), 1).grid->optimum.has_value());
+    CHECK_FALSE(engine::run(algo("astar"), grid, evals(1), 1).grid->optimum.has_value());
 }
 
 TEST_CASE("engine: a grid run returns a legal path, the optimum, and the papers' N = 20", "[engine][run][grid]") {
