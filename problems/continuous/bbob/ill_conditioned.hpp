@@ -10,8 +10,8 @@
 
 namespace pride::continuous::bbob {
 
-/// f10, rotated ellipsoid: sum 10^(6 (i-1)/(D-1)) z_i^2, z = T_osz(R (x - x_opt)) (COCO
-/// f_ellipsoid.c, R from seed + 1e6).
+/// f10, rotated ellipsoid: sum 10^(6 (i-1)/(D-1)) z_i^2, z = T_osz(R (x - x_opt)) (RR-6829
+/// f10; COCO f_ellipsoid.c, R from seed + 1e6).
 class F10 : public BbobFunction {
   public:
     static constexpr int id = 10;
@@ -41,7 +41,7 @@ class F10 : public BbobFunction {
     std::vector<double> z_;
 };
 
-/// f11, discus: 1e6 z_1^2 + sum_{i>1} z_i^2, z = T_osz(R (x - x_opt)) (COCO f_discus.c, R from
+/// f11, discus: 1e6 z_1^2 + sum_{i>1} z_i^2, z = T_osz(R (x - x_opt)) (RR-6829 f11; COCO f_discus.c, R from
 /// seed + 1e6).
 class F11 : public BbobFunction {
   public:
@@ -67,8 +67,8 @@ class F11 : public BbobFunction {
     std::vector<double> z_;
 };
 
-/// f12, bent cigar: z_1^2 + 1e6 sum_{i>1} z_i^2, z = R T_asy^0.5(R (x - x_opt)) (COCO
-/// f_bent_cigar.c). Unlike the other functions, COCO draws this x_opt from seed + 1e6, the
+/// f12, bent cigar: z_1^2 + 1e6 sum_{i>1} z_i^2, z = R T_asy^0.5(R (x - x_opt)) (RR-6829
+/// f12; COCO f_bent_cigar.c). Unlike the other functions, COCO draws this x_opt from seed + 1e6, the
 /// rotation's seed.
 class F12 : public BbobFunction {
   public:
@@ -95,8 +95,8 @@ class F12 : public BbobFunction {
     std::vector<double> b_;
 };
 
-/// f13, sharp ridge: z_1^2 + 100 sqrt(sum_{i>1} z_i^2), z = Q Lambda^10 R (x - x_opt) (COCO
-/// f_sharp_ridge.c, which adds z_1^2 after the root).
+/// f13, sharp ridge: z_1^2 + 100 sqrt(sum_{i>1} z_i^2), z = Q Lambda^10 R (x - x_opt) (RR-6829
+/// f13; COCO f_sharp_ridge.c, R from seed, Q from seed + 1e6; COCO adds z_1^2 after the root).
 class F13 : public BbobFunction {
   public:
     static constexpr int id = 13;
@@ -126,8 +126,8 @@ class F13 : public BbobFunction {
     std::vector<double> z_;
 };
 
-/// f14, different powers: sqrt(sum |z_i|^(2 + 4 (i-1)/(D-1))), z = R (x - x_opt) (COCO
-/// f_different_powers.c, R from seed + 1e6).
+/// f14, different powers: sqrt(sum |z_i|^(2 + 4 (i-1)/(D-1))), z = R (x - x_opt) (RR-6829
+/// f14; COCO f_different_powers.c, R from seed + 1e6).
 class F14 : public BbobFunction {
   public:
     static constexpr int id = 14;

@@ -12,7 +12,7 @@
 namespace pride::continuous::bbob {
 
 /// f6, attractive sector: T_osz(sum (s_i z_i)^2)^0.9, s_i = 100 where z_i x_opt_i > 0, else 1;
-/// z = Q Lambda^10 R (x - x_opt) (COCO f_attractive_sector.c; R from seed + 1e6, Q from seed).
+/// z = Q Lambda^10 R (x - x_opt) (RR-6829 f6; COCO f_attractive_sector.c; R from seed, Q from seed + 1e6).
 class F6 : public BbobFunction {
   public:
     static constexpr int id = 6;
@@ -42,7 +42,7 @@ class F6 : public BbobFunction {
 };
 
 /// f7, step ellipsoid: 0.1 max(|zhat_1|/1e4, sum 10^(2(i-1)/(D-1)) z_i^2) + f_pen, zhat =
-/// Lambda^10 R (x - x_opt), z = Q round(zhat) (COCO f_step_ellipsoid.c; R from seed, Q from
+/// Lambda^10 R (x - x_opt), z = Q round(zhat) (RR-6829 f7; COCO f_step_ellipsoid.c; R from seed, Q from
 /// seed + 1e6). RR-6829 writes the rounding as floor(0.5 + zhat) for |zhat| > 0.5, else
 /// floor(0.5 + 10 zhat)/10, as COCO does; the 1e-4 |zhat_1| term uses the unrounded zhat_1.
 class F7 : public BbobFunction {
@@ -100,7 +100,7 @@ inline double rosenbrock_sum(std::span<const double> z) noexcept {
     return 100.0 * s1 + s2;
 }
 
-/// f8, Rosenbrock: z = max(1, sqrt(D)/8) (x - x_opt) + 1 (COCO f_rosenbrock.c). COCO scales
+/// f8, Rosenbrock: z = max(1, sqrt(D)/8) (x - x_opt) + 1 (RR-6829 f8; COCO f_rosenbrock.c). COCO scales
 /// x_opt by 0.75 (RR-6829: x_opt in [-3, 3]^D).
 class F8 : public BbobFunction {
   public:
@@ -124,7 +124,7 @@ class F8 : public BbobFunction {
     std::vector<double> z_;
 };
 
-/// f9, rotated Rosenbrock: z = max(1, sqrt(D)/8) R x + 1/2 (COCO f_rosenbrock.c, R from seed).
+/// f9, rotated Rosenbrock: z = max(1, sqrt(D)/8) R x + 1/2 (RR-6829 f9; COCO f_rosenbrock.c, R from seed).
 /// x_opt is COCO's best parameter R^T 1 / (2 max(1, sqrt(D)/8)), where z = 1.
 class F9 : public BbobFunction {
   public:

@@ -13,7 +13,7 @@
 
 namespace pride::continuous::bbob {
 
-/// f15, rotated Rastrigin: z = R Lambda^10 Q T_asy^0.2(T_osz(R (x - x_opt))) (COCO f_rastrigin.c;
+/// f15, rotated Rastrigin: z = R Lambda^10 Q T_asy^0.2(T_osz(R (x - x_opt))) (RR-6829 f15; COCO f_rastrigin.c;
 /// R from seed + 1e6, Q from seed).
 class F15 : public BbobFunction {
   public:
@@ -41,7 +41,8 @@ class F15 : public BbobFunction {
 };
 
 /// f16, Weierstrass: 10 (1/D sum_i sum_k 2^-k cos(2 pi 3^k (z_i + 1/2)) - f0)^3 + 10/D f_pen,
-/// z = R Lambda^(1/100) Q T_osz(R (x - x_opt)), k = 0..11 (COCO f_weierstrass.c).
+/// z = R Lambda^(1/100) Q T_osz(R (x - x_opt)), k = 0..11 (RR-6829 f16; COCO f_weierstrass.c; R from seed + 1e6, Q from
+/// seed).
 class F16 : public BbobFunction {
   public:
     static constexpr int id = 16;
@@ -88,7 +89,7 @@ class F16 : public BbobFunction {
 
 /// Schaffers F7 and the shared transformation of f17 and f18: z = Lambda^c Q T_asy^0.5(R (x -
 /// x_opt)), f = (1/(D-1) sum sqrt(s_i) + sqrt(s_i) sin^2(50 s_i^0.2))^2 + 10 f_pen, s_i =
-/// sqrt(z_i^2 + z_{i+1}^2) (COCO f_schaffers.c; R from seed + 1e6, Q from seed).
+/// sqrt(z_i^2 + z_{i+1}^2) (RR-6829 f17, f18; COCO f_schaffers.c; R from seed + 1e6, Q from seed).
 class SchaffersF7 : public BbobFunction {
   public:
     double evaluate(std::span<const double> x) noexcept {
@@ -143,8 +144,8 @@ class F18 : public SchaffersF7 {
 };
 
 /// f19, composite Griewank-Rosenbrock F8F2: 10/(D-1) sum (s_i/4000 - cos(s_i)) + 10, s_i =
-/// 100 (z_i^2 - z_{i+1})^2 + (z_i - 1)^2, z = max(1, sqrt(D)/8) R x + 1/2 (COCO
-/// f_griewank_rosenbrock.c, R from seed; COCO writes (1 - z_i)^2). x_opt is COCO's best
+/// 100 (z_i^2 - z_{i+1})^2 + (z_i - 1)^2, z = max(1, sqrt(D)/8) R x + 1/2 (RR-6829
+/// f19; COCO f_griewank_rosenbrock.c, R from seed; COCO writes (1 - z_i)^2). x_opt is COCO's best
 /// parameter R^T 1 / (2 max(1, sqrt(D)/8)).
 class F19 : public BbobFunction {
   public:

@@ -10,7 +10,7 @@
 
 namespace pride::continuous::bbob {
 
-/// f1, sphere: ||z||^2 + f_opt, z = x - x_opt (COCO f_sphere.c).
+/// f1, sphere: ||z||^2 + f_opt, z = x - x_opt (RR-6829 f1; COCO f_sphere.c).
 class F1 : public BbobFunction {
   public:
     static constexpr int id = 1;
@@ -29,7 +29,7 @@ class F1 : public BbobFunction {
     std::vector<double> z_;
 };
 
-/// f2, separable ellipsoid: sum 10^(6 (i-1)/(D-1)) z_i^2, z = T_osz(x - x_opt) (COCO f_ellipsoid.c).
+/// f2, separable ellipsoid: sum 10^(6 (i-1)/(D-1)) z_i^2, z = T_osz(x - x_opt) (RR-6829 f2; COCO f_ellipsoid.c).
 class F2 : public BbobFunction {
   public:
     static constexpr int id = 2;
@@ -62,7 +62,7 @@ inline double rastrigin_sum(std::span<const double> z) noexcept {
     return 10.0 * (static_cast<double>(z.size()) - cosines) + squares;
 }
 
-/// f3, separable Rastrigin: z = Lambda^10 T_asy^0.2(T_osz(x - x_opt)) (COCO f_rastrigin.c).
+/// f3, separable Rastrigin: z = Lambda^10 T_asy^0.2(T_osz(x - x_opt)) (RR-6829 f3; COCO f_rastrigin.c).
 class F3 : public BbobFunction {
   public:
     static constexpr int id = 3;
@@ -85,7 +85,7 @@ class F3 : public BbobFunction {
 };
 
 /// f4, Bueche-Rastrigin: z_i = s_i T_osz(x_i - x_opt_i), s_i = 10^(0.5 (i-1)/(D-1)), times 10 at
-/// odd i (1-based) where the argument is positive; + 100 f_pen (COCO f_bueche_rastrigin.c,
+/// odd i (1-based) where the argument is positive; + 100 f_pen (RR-6829 f4; COCO f_bueche_rastrigin.c,
 /// transform_vars_brs.c). COCO (as the 2009 code) also makes x_opt's odd coordinates positive,
 /// which RR-6829 does not say; f4 shares f3's seed, so its x_opt is f3's with those made positive.
 class F4 : public BbobFunction {
@@ -116,7 +116,7 @@ class F4 : public BbobFunction {
 };
 
 /// f5, linear slope: sum 5 |s_i| - s_i z_i, s_i = sign(x_opt_i) 10^((i-1)/(D-1)), where
-/// z_i = x_i unless x_i lies beyond the corner x_opt (COCO f_linear_slope.c). x_opt is the corner
+/// z_i = x_i unless x_i lies beyond the corner x_opt (RR-6829 f5; COCO f_linear_slope.c). x_opt is the corner
 /// 5 sign(u_i) of the usual random x_opt; the function has no f_pen.
 class F5 : public BbobFunction {
   public:

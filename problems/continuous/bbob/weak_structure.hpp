@@ -12,13 +12,13 @@
 
 namespace pride::continuous::bbob {
 
-/// f20, Schwefel x sin(x): 0.01 (418.9828872724339 - 1/D sum z_i sin(sqrt|z_i|)) + f_pen(z/100)
+/// f20, Schwefel x sin(x): 0.01 (418.9828872724339 - 1/D sum z_i sin(sqrt|z_i|)) + 100 f_pen(z/100)
 /// with z = 100 (Lambda^10 (zhat - 2|x_opt|) + 2|x_opt|), zhat_1 = xhat_1, zhat_i = xhat_i +
 /// 0.25 (xhat_{i-1} - 2|x_opt_{i-1}|), xhat = 2 sign(x_opt) x, x_opt = 4.2096874637/2 sign(u)
-/// (COCO f_schwefel.c, transform_vars_x_hat.c, transform_vars_z_hat.c). COCO's penalty on
-/// |z_i| > 500 sits inside the 0.01 factor (RR-6829: 100 f_pen(z/100) outside it), and COCO's
-/// best parameter, returned by optimum_point(), is derived from 420.96874633 (not ...637), so it
-/// is near but not exactly at the minimiser.
+/// (RR-6829 f20; COCO f_schwefel.c, transform_vars_x_hat.c, transform_vars_z_hat.c). COCO writes
+/// the penalty as 0.01 sum max(0, |z_i| - 500)^2 inside the bracket (the same value). Its best
+/// parameter, returned by optimum_point(), derives from 420.96874633 (not ...637): near, not at,
+/// the minimiser, so f(x_opt) exceeds f_opt by about 1e-15.
 class F20 : public BbobFunction {
   public:
     static constexpr int id = 20;
@@ -76,7 +76,7 @@ class F20 : public BbobFunction {
 };
 
 /// Gallagher's Gaussian peaks, f21 (101 peaks) and f22 (21): T_osz(10 - max_p w_p exp(-1/(2D)
-/// (x - y_p)^T R^T C_p R (x - y_p)))^2 + f_pen (COCO f_gallagher.c, R from seed). COCO builds
+/// (x - y_p)^T R^T C_p R (x - y_p)))^2 + f_pen (RR-6829 f21, f22; COCO f_gallagher.c, R from seed). COCO builds
 /// C_p = alpha_p^(j/(D-1) - 1/2) directly, with alpha_p the square roots of RR-6829's (f21:
 /// global peak sqrt(1000), others 1000^(j/99); f22: 1000 and 1000^(j/19)), which is the same
 /// matrix as RR-6829's Lambda^(alpha_p)/alpha_p^(1/4); x_opt = y_1.
@@ -135,8 +135,8 @@ class F22 : public Gallagher {
 };
 
 /// f23, Katsuura: 10/D^2 prod (1 + i sum_{j=1}^{32} |2^j z_i - round(2^j z_i)| 2^-j)^(10/D^1.2)
-/// - 10/D^2 + f_pen, z = R Lambda^100 Q (x - x_opt) (COCO f_katsuura.c; R from seed + 1e6, Q from
-/// seed).
+/// - 10/D^2 + f_pen, z = Q Lambda^100 R (x - x_opt) (RR-6829 f23; COCO f_katsuura.c; R from seed, Q from
+/// seed + 1e6).
 class F23 : public BbobFunction {
   public:
     static constexpr int id = 23;
@@ -178,9 +178,9 @@ class F23 : public BbobFunction {
 };
 
 /// f24, Lunacek bi-Rastrigin: min(sum (xhat_i - mu0)^2, D + s sum (xhat_i - mu1)^2) + 10 (D -
-/// sum cos(2 pi z_i)) + 1e4 f_pen, xhat = 2 sign(x_opt) x, z = R Lambda^100 Q (xhat - mu0),
-/// mu0 = 2.5, mu1 = -sqrt((mu0^2 - 1)/s), s = 1 - 1/(2 sqrt(D + 20) - 8.2) (COCO
-/// f_lunacek_bi_rastrigin.c; R from seed + 1e6, Q from seed). x_opt = mu0/2 sign(g_i), g from
+/// sum cos(2 pi z_i)) + 1e4 f_pen, xhat = 2 sign(x_opt) x, z = Q Lambda^100 R (xhat - mu0),
+/// mu0 = 2.5, mu1 = -sqrt((mu0^2 - 1)/s), s = 1 - 1/(2 sqrt(D + 20) - 8.2) (RR-6829
+/// f24; COCO f_lunacek_bi_rastrigin.c; R from seed, Q from seed + 1e6). x_opt = mu0/2 sign(g_i), g from
 /// gauss(D, seed), not the usual uniform draw.
 class F24 : public BbobFunction {
   public:
@@ -189,8 +189,8 @@ class F24 : public BbobFunction {
         "bbob-f24", "Lunacek bi-Rastrigin (weak structure, two funnels)", -5.0, 5.0, 2, unknown, unknown};
     F24(std::size_t dim, std::int64_t instance)
         : BbobFunction(dim, instance, info, id),
-          r_(compute_rotation(dim, seed_ + 1000000)),
-          lambda_q_(compute_rotation(dim, seed_)),
+          q_(compute_rotation(dim, seed_ + 1000000)),
+          lambda_r_(compute_rotation(dim, seed_)),
           s_(1.0 - 0.5 / (std::sqrt(static_cast<double>(dim + 20)) - 4.1)),
           mu1_(-std::sqrt((mu0 * mu0 - 1.0) / s_)),
           xhat_(dim),
@@ -201,7 +201,7 @@ class F24 : public BbobFunction {
         for (std::size_t i = 0; i < dim; ++i) x_opt_[i] = g[i] < 0.0 ? -(0.5 * mu0) : 0.5 * mu0;
         for (std::size_t i = 0; i < dim; ++i) {
             const double c = std::pow(std::sqrt(100.0), static_cast<double>(i) / static_cast<double>(dim - 1));
-            for (std::size_t j = 0; j < dim; ++j) lambda_q_(Eigen::Index(i), Eigen::Index(j)) *= c;
+            for (std::size_t j = 0; j < dim; ++j) lambda_r_(Eigen::Index(i), Eigen::Index(j)) *= c;
         }
     }
     double evaluate(std::span<const double> x) noexcept {
@@ -210,10 +210,10 @@ class F24 : public BbobFunction {
         for (std::size_t i = 0; i < n; ++i) xhat_[i] = x_opt_[i] < 0.0 ? -(2.0 * x[i]) : 2.0 * x[i];
         for (std::size_t i = 0; i < n; ++i) {
             double sum = 0.0;
-            for (std::size_t j = 0; j < n; ++j) sum += lambda_q_(Eigen::Index(i), Eigen::Index(j)) * (xhat_[j] - mu0);
+            for (std::size_t j = 0; j < n; ++j) sum += lambda_r_(Eigen::Index(i), Eigen::Index(j)) * (xhat_[j] - mu0);
             a_[i] = sum;
         }
-        affine(r_, a_, z_);
+        affine(q_, a_, z_);
         double near = 0.0, far = 0.0, cosines = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             near += (xhat_[i] - mu0) * (xhat_[i] - mu0);
@@ -227,8 +227,8 @@ class F24 : public BbobFunction {
 
   private:
     static constexpr double mu0 = 2.5;
-    RowMatrix r_;
-    RowMatrix lambda_q_;  // Lambda^100 Q, row i scaled as COCO does
+    RowMatrix q_;
+    RowMatrix lambda_r_;  // Lambda^100 R, row i scaled as COCO does
     double s_;
     double mu1_;
     std::vector<double> xhat_;
