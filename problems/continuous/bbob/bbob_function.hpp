@@ -14,6 +14,8 @@ namespace pride::continuous::bbob {
 /// info's optimum fields: x_opt and f_opt depend on the instance (optimum_point(), optimum_value()).
 inline constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
 
+/// Base of F1-F24: checks dim >= 2 and instance >= 1 (InputError where "bbob-fN") before building
+/// anything, then holds the instance's seed, f_opt and x_opt. Values only, so copies are independent.
 class BbobFunction : public BoxFunction {
   public:
     /// COCO's best parameter (for f5 the corner, for f8/f9/f19/f20/f21/f22/f24 its own formula).

@@ -64,8 +64,8 @@ inline void affine(const RowMatrix& m, std::span<const double> x, std::span<doub
 }
 
 /// Lambda^alpha as transform_vars_conditioning.c writes it: alpha^(0.5 i/(D-1)). COCO writes the
-/// same diagonal two other ways, pow(sqrt(alpha), i/(D-1)) (power_ramp) and sqrt(pow(alpha/...,
-/// ...)) (f7), which differ in the last bits; each function uses its own.
+/// same diagonal two other ways, pow(sqrt(alpha), i/(D-1)) (power_ramp) and sqrt(pow(alpha,
+/// i/(D-1))) (f7), which differ in the last bits; each function uses the form its COCO file uses.
 inline std::vector<double> conditioning_diagonal(double alpha, std::size_t dim) {
     std::vector<double> d(dim);
     for (std::size_t i = 0; i < dim; ++i)
