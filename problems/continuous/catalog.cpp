@@ -7,9 +7,11 @@
 #include <limits>
 #include <type_traits>
 #include <utility>
+#include <tuple>
 #include <variant>
 
 #include "framework/error.hpp"
+#include "problems/continuous/bbob/suite.hpp"
 #include "problems/continuous/functions.hpp"
 #include "problems/continuous/transformed.hpp"
 
@@ -30,7 +32,12 @@ struct Append<std::variant<A...>, More...> {
     using type = std::variant<A..., More...>;
 };
 
-using Any = Scalable;
+template <class V, class Tuple>
+struct AppendTuple;
+template <class V, class... T>
+struct AppendTuple<V, std::tuple<T...>> : Append<V, T...> {};
+
+using Any = AppendTuple<Scalable, bbob::All>::type;
 
 template <class F>
 constexpr bool has_batch = requires(F& f, MatrixView points, std::span<double> values) {
@@ -156,6 +163,25 @@ void add_scalable(Registry<CatalogEntry>& r, bool with_shift) {
               shifted<F>());
 }
 
+/// bbob-fN: COCO's function N, instances from 1 (the class builds its own instance).
+template <class F>
+void add_bbob(Registry<CatalogEntry>& r) {
+    CatalogEntry e;
+    e.min_dim = F::info.min_dim;
+    e.instances = Instances::coco;
+    e.suite = "bbob";
+    e.number = F::id;
+    e.make = [](std::size_t dim, std::int64_t instance) {
+        return wrap(F(dim, instance), std::string(F::info.name), instance);
+    };
+    r.add(std::string(F::info.name), "BBOB " + std::string(F::info.summary) + "; COCO's instances", std::move(e));
+}
+
+template <class... F>
+void add_bbob_suite(Registry<CatalogEntry>& r, std::tuple<F...>*) {
+    (add_bbob<F>(r), ...);
+}
+
 }  // namespace
 
 const Registry<CatalogEntry>& catalog() {
@@ -170,6 +196,7 @@ const Registry<CatalogEntry>& catalog() {
         // would leave [-500, 500], where the formula has lower values than its "optimum" (its
         // instances k >= 1 clamp the argument instead: instance.hpp).
         add_scalable<Schwefel>(reg, false);
+        add_bbob_suite(reg, static_cast<bbob::All*>(nullptr));
         return reg;
     }();
     return r;
