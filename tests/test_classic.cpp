@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
@@ -29,9 +30,10 @@ using Catch::Matchers::WithinRel;
 namespace {
 
 static_assert(pride::BoxProblem<QuarticNoise> && pride::BoxProblem<Branin> && pride::BoxProblem<Schwefel226>);
-static_assert(pride::BatchBoxProblem<Sphere> && pride::BatchBoxProblem<Rastrigin> &&
-              pride::BatchBoxProblem<Schwefel222> && pride::BatchBoxProblem<Schwefel221> &&
-              pride::BatchBoxProblem<Step> && pride::BatchBoxProblem<Ellipsoid>);
+// Batch forms only where they measured faster (bench/batch_bench.cpp): not for Sphere, Rastrigin,
+// Schwefel 2.22 or Step, whose scalar loops the batch kernel did not beat.
+static_assert(pride::BatchBoxProblem<Schwefel221> && pride::BatchBoxProblem<Ellipsoid>);
+static_assert(!pride::BatchBoxProblem<Sphere> && !pride::BatchBoxProblem<Rastrigin>);
 
 /// F built in the dimension of x, evaluated at x.
 template <class F>
@@ -376,8 +378,8 @@ void check_batch_bits(std::size_t dim, Eigen::Index cols, std::uint64_t seed) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("classic: batch evaluation equals evaluate() bit for bit", "[classic][batch]", Sphere, Rastrigin,
-                   Schwefel222, Schwefel221, Step, Ellipsoid) {
+TEMPLATE_TEST_CASE("classic: batch evaluation equals evaluate() bit for bit", "[classic][batch]", Schwefel221,
+                   Ellipsoid) {
     std::uint64_t seed = 1;
     for (std::size_t dim : {1, 2, 10, 40})
         for (Eigen::Index cols : {1, 7, 50, 300}) check_batch_bits<TestType>(dim, cols, seed++);

@@ -2,9 +2,12 @@
 // Batch evaluation of the sum-like functions: the points are the columns of a column-major matrix,
 // and a function's scalar loop runs over the rows of one column. Here the loop runs row by row over
 // all columns at once, one accumulator per column, so each column sees exactly the operations of
-// the scalar loop in the same order (values are bit-identical to evaluate()), while the columns'
-// dependency chains are independent and overlap in the pipeline: that is what pays, the row is a
-// strided read and is not vectorised.
+// the scalar loop in the same order (values are bit-identical to evaluate()).
+//
+// That rarely pays (bench/batch_bench.cpp): the row is a strided read, and the out-of-order core
+// already overlaps the scalar chains of consecutive columns, while bit identity forbids the
+// reordering within a column that would let the scalar loop vectorise. Only the functions where it
+// measured faster use it (Schwefel 2.21, the ellipsoid).
 #include <Eigen/Core>
 #include <span>
 

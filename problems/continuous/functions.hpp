@@ -6,8 +6,6 @@
 #include <numbers>
 #include <span>
 
-#include "framework/problem.hpp"
-#include "problems/continuous/batch.hpp"
 #include "problems/continuous/box_function.hpp"
 
 namespace pride::continuous {
@@ -23,11 +21,6 @@ struct Sphere : BoxFunction {
         for (double v : x) f += v * v;
         return f;
     }
-    /// evaluate() of every column, bit for bit: the same additions in the same order, the columns'
-    /// chains interleaved (batch.hpp).
-    void evaluate_batch(MatrixView points, std::span<double> values) const {
-        accumulate_rows(points, values, 0.0, [](auto& f, const auto& v, Eigen::Index) { f += v * v; });
-    }
 };
 
 /// f = 10 n + sum (x_i^2 - 10 cos(2 pi x_i)).
@@ -42,15 +35,6 @@ struct Rastrigin : BoxFunction {
         double f = 10.0 * static_cast<double>(x.size());
         for (double v : x) f += v * v - 10.0 * std::cos(omega * v);
         return f;
-    }
-    /// evaluate() of every column, bit for bit: std::cos per element (Eigen's vectorised cos rounds
-    /// differently), so only the chains are interleaved.
-    void evaluate_batch(MatrixView points, std::span<double> values) const {
-        constexpr double omega = 2.0 * std::numbers::pi;
-        accumulate_rows(points, values, 10.0 * static_cast<double>(points.rows()),
-                        [](auto& f, const auto& v, Eigen::Index) {
-                            f += v * v - 10.0 * v.unaryExpr([](double t) { return std::cos(omega * t); });
-                        });
     }
 };
 

@@ -58,24 +58,6 @@ struct Schwefel222 : BoxFunction {
         }
         return s + p;
     }
-    /// Bit-identical to evaluate() per column (batch.hpp); the product's accumulators live on the
-    /// stack, in chunks of columns.
-    void evaluate_batch(MatrixView points, std::span<double> values) const {
-        constexpr Eigen::Index chunk = 256;
-        Eigen::Array<double, Eigen::Dynamic, 1, 0, chunk, 1> p;
-        for (Eigen::Index j0 = 0; j0 < points.cols(); j0 += chunk) {
-            const Eigen::Index n = std::min(chunk, points.cols() - j0);
-            Eigen::Map<Eigen::ArrayXd> s(values.data() + j0, n);
-            s.setZero();
-            p.setOnes(n);
-            for (Eigen::Index i = 0; i < points.rows(); ++i) {
-                const auto a = points.row(i).segment(j0, n).transpose().array().abs();
-                s += a;
-                p *= a;
-            }
-            s += p;
-        }
-    }
 };
 
 /// F3 (Yao et al. 1999 Table I), Schwefel's problem 1.2: f = sum_i (sum_{j<=i} x_j)^2.
@@ -127,10 +109,6 @@ struct Step : BoxFunction {
             f += r * r;
         }
         return f;
-    }
-    void evaluate_batch(MatrixView points, std::span<double> values) const {
-        accumulate_rows(points, values, 0.0,
-                        [](auto& f, const auto& v, Eigen::Index) { f += (v + 0.5).floor().square(); });
     }
 };
 
