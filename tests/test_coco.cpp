@@ -311,6 +311,22 @@ TEST_CASE("coco: a store with the suite columns read back, analysed and reported
     REQUIRE(latex.status == 0);
     CHECK(latex.out.find("% bbob-f20, 2-D (1 instance)\n\\begin{tabular}{lrrr}") != std::string::npos);
     CHECK(latex.out.find("a & 80 & 200 & 1/2 \\\\") != std::string::npos);
+
+    // Precisions in another order: the columns follow COCO's order, #succ the smallest precision.
+    // The hits stay as they are: for a on bbob-f1 the ERT at 10 is now the second entry's, 135;
+    // at 0.1 the first entry's, 45, reached by 3 of the 4 runs.
+    const std::string unordered = dir.file("unordered.sqlite");
+    std::filesystem::copy_file(store, unordered);
+    {
+        sqlite3* db = nullptr;
+        REQUIRE(sqlite3_open(unordered.c_str(), &db) == SQLITE_OK);
+        exec(db, "UPDATE campaign SET precisions = '[0.1, 10, 1]'");
+        sqlite3_close(db);
+    }
+    const auto u = run_pride("report " + quote(unordered));
+    REQUIRE(u.status == 0);
+    CHECK(u.out.find("the smallest precision (1e-1)") != std::string::npos);
+    CHECK(u.out.find("| a | 135 | 45 | 3/4 |") != std::string::npos);
 }
 
 TEST_CASE("coco: stores without the suite columns, or with them NULL, read as before", "[report][coco]") {
@@ -348,6 +364,10 @@ TEST_CASE("coco: stores without the suite columns, or with them NULL, read as be
         tampered(dir, store, "empty", "UPDATE campaign SET precisions = NULL; UPDATE runs SET target_hits = '[]'");
     CHECK(!pride::report::load_report(empty).coco);
     CHECK(run_pride("report " + quote(empty)).out.find("Expected running time") == std::string::npos);
+    const std::string no_precisions = tampered(
+        dir, store, "no-precisions", "UPDATE campaign SET precisions = '[]'; UPDATE runs SET target_hits = '[]'");
+    CHECK(pride::report::read_store(no_precisions).precisions->empty());
+    CHECK(!pride::report::load_report(no_precisions).coco);
     // Hits [] in a campaign with precisions: the runs are left out of the analysis.
     const std::string some = tampered(dir, store, "some", "UPDATE runs SET target_hits = '[]' WHERE algorithm = 'b'");
     const auto a = pride::report::load_report(some).coco;

@@ -91,7 +91,7 @@ std::string bbob_group_title(const std::string& group) {
 }
 
 std::optional<Analysis> analyse(const CampaignStore& store) {
-    if (!store.precisions) return std::nullopt;
+    if (!store.precisions || store.precisions->empty()) return std::nullopt;
     Analysis a;
     a.precisions = *store.precisions;
     const std::size_t n = a.precisions.size();

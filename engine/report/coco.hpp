@@ -87,8 +87,8 @@ struct Analysis {
     std::size_t runs_without_hits = 0;  // left out: their rows record no target hits
 };
 
-/// The analysis of `store`; empty when the campaign records no precisions. Runs without
-/// recorded hits are left out (and counted).
+/// The analysis of `store`; empty when the campaign records no precisions (NULL, absent or
+/// []). Runs without recorded hits are left out (and counted).
 std::optional<Analysis> analyse(const CampaignStore& store);
 
 /// The ECDF curves as JSON for scripts/plot_ecdf.py:

@@ -196,7 +196,10 @@ std::string render_ert(const coco::Analysis& a, bool md) {
                             "#succ: the runs that reached the smallest precision"
                           : "\n% Expected running time (ERT) per function and dimension; #succ: the runs that reached "
                             "the smallest precision";
-    text += fmt::format(" ({}).\n", precision_label(a.precisions.empty() ? 0.0 : a.precisions.back()));
+    // The smallest precision, wherever the campaign lists it (analyse() returns none without any).
+    const std::size_t smallest =
+        static_cast<std::size_t>(std::min_element(a.precisions.begin(), a.precisions.end()) - a.precisions.begin());
+    text += fmt::format(" ({}).\n", precision_label(a.precisions[smallest]));
     if (a.runs_without_hits)
         text += fmt::format("{}{} runs record no target hits and are left out.\n", md ? "" : "% ", a.runs_without_hits);
     for (std::size_t i = 0; i < a.erts.size();) {
@@ -216,7 +219,7 @@ std::string render_ert(const coco::Analysis& a, bool md) {
             const coco::ErtRow& r = a.erts[i];
             std::vector<std::string> cols{r.algorithm};
             for (const std::size_t k : shown) cols.push_back(num3(r.ert[k].value));
-            cols.push_back(r.ert.empty() ? "-" : fmt::format("{}/{}", r.ert.back().successes, r.runs));
+            cols.push_back(fmt::format("{}/{}", r.ert[smallest].successes, r.runs));
             text += line(cols);
         }
         if (!md) text += "\\hline\n\\end{tabular}\n";
