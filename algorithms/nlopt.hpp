@@ -86,6 +86,7 @@ class Nlopt {
         std::vector<double> x0(dim);
         for (std::size_t d = 0; d < dim; ++d) x0[d] = rng.uniform(lo[d], hi[d]);
         nlopt::srand(static_cast<unsigned long>(seed));
+        seed_noise(problem, seed);
 
         RunState state(termination, dim);
         Matrix current(static_cast<Eigen::Index>(dim), 1);  // what the observer sees: the last point

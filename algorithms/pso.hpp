@@ -89,7 +89,10 @@ class Pso {
 
         for (std::int64_t t = 0; !state.done(); ++t) {
             const auto [a, b1, b2] = velocity(t, horizon);
-            for (Eigen::Index i = 0; i < n && !state.exhausted(); ++i) {
+            // Every particle moves (1)-(3), then the swarm is evaluated in one batch; g is fixed
+            // within an iteration, so this is the same run as evaluating particle by particle.
+            const auto moving = std::min<Eigen::Index>(n, static_cast<Eigen::Index>(state.remaining()));
+            for (Eigen::Index i = 0; i < moving; ++i) {
                 double* xi = x.col(i).data();
                 double* vi = v.col(i).data();
                 const double* pi = p.col(i).data();
@@ -100,8 +103,10 @@ class Pso {
                     xi[d] += vi[d];                                     // (3)
                 }
                 bounds(column(x, i), lo, hi);
+            }
+            state.evaluate_columns(problem, x.leftCols(moving), std::span<double>(fx).first(static_cast<std::size_t>(moving)));
+            for (Eigen::Index i = 0; i < moving; ++i) {
                 const auto ui = static_cast<std::size_t>(i);
-                fx[ui] = state.evaluate(problem, column(x, i));
                 if (fx[ui] < fp[ui]) {  // (4)
                     p.col(i) = x.col(i);
                     fp[ui] = fx[ui];

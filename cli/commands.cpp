@@ -23,7 +23,8 @@ engine::ParamValues parse_params(const std::vector<std::string>& assignments, co
 }
 
 int run_command(const RunOptions& o, std::ostream& out) {
-    const engine::Problem problem(engine::ContinuousSpec{o.problem, o.dim});
+    const engine::Problem problem(engine::ContinuousSpec{o.problem, o.dim, o.instance});
+    const std::int64_t instance = problem.instance();
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
     engine::Budget budget;
     budget.evaluations = o.evals;
@@ -35,15 +36,15 @@ int run_command(const RunOptions& o, std::ostream& out) {
     const engine::RunResult r = engine::run(algorithm, problem, budget, static_cast<std::uint64_t>(o.seed));
     if (o.json) {
         out << fmt::format(
-            "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"seed\": {}, \"best_f\": {}, \"best_x\": {}, "
-            "\"evaluations\": {}, \"wall_ms\": {}, \"history\": {}}}\n",
-            json_string(o.algo), json_string(o.problem), o.dim, o.seed, json_number(r.best_f), json_array(r.best_x),
+            "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"instance\": {}, \"seed\": {}, \"best_f\": {}, "
+            "\"best_x\": {}, \"evaluations\": {}, \"wall_ms\": {}, \"history\": {}}}\n",
+            json_string(o.algo), json_string(o.problem), o.dim, instance, o.seed, json_number(r.best_f), json_array(r.best_x),
             r.evaluations, json_number(r.wall_ms), json_array(r.history));
     } else {
         out << fmt::format(
-            "algo         {}\nproblem      {} (D = {})\nseed         {}\nbest_f       {:.17g}\n"
+            "algo         {}\nproblem      {} (D = {}, instance {})\nseed         {}\nbest_f       {:.17g}\n"
             "evaluations  {}\niterations   {}\nwall_ms      {:.3f}\nbest_x       {}\n",
-            o.algo, o.problem, o.dim, o.seed, r.best_f, r.evaluations, r.iterations, r.wall_ms, json_array(r.best_x));
+            o.algo, o.problem, o.dim, instance, o.seed, r.best_f, r.evaluations, r.iterations, r.wall_ms, json_array(r.best_x));
     }
     return 0;
 }
@@ -67,10 +68,12 @@ int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out) {
     if (o.dim)
         require(static_cast<std::int64_t>(dim) == *o.dim, o.x == "-" ? "stdin" : "--x",
                 "expected " + std::to_string(*o.dim) + " coordinates (--dim), got " + std::to_string(dim));
-    auto problem = continuous::make_problem(o.problem, static_cast<std::int64_t>(dim), o.x == "-" ? "stdin" : "--x");
+    require(o.seed >= 0, "seed", "must be >= 0, got " + std::to_string(o.seed));
+    auto problem =
+        continuous::make_function(o.problem, static_cast<std::int64_t>(dim), o.instance, o.x == "-" ? "stdin" : "--x");
+    problem.reseed(static_cast<std::uint64_t>(o.seed));
     std::string text;
-    for (const auto& x : points)
-        text += fmt::format("{:.17g}\n", std::visit([&](auto& p) { return p.evaluate(x); }, problem));
+    for (const auto& x : points) text += fmt::format("{:.17g}\n", problem.evaluate(x));
     out << text;
     return 0;
 }

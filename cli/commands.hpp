@@ -14,6 +14,7 @@ namespace pride::cli {
 struct RunOptions {
     std::string problem;
     std::int64_t dim = 0;
+    std::optional<std::int64_t> instance;
     std::string algo;
     std::optional<std::int64_t> evals;
     std::optional<std::int64_t> iters;
@@ -33,6 +34,8 @@ struct EvalOptions {
     std::string problem;
     std::string x;  // "v1,v2,..." or "-" for stdin
     std::optional<std::int64_t> dim;
+    std::optional<std::int64_t> instance;
+    std::int64_t seed = 0;  // the noise of a noisy function (quartic-noise)
 };
 int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out);
 

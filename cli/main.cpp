@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
     auto* run_cmd = app.add_subcommand("run", "one run of an algorithm on a continuous problem");
     run_cmd->add_option("--problem", run.problem, "problem name (see 'pride list')")->required();
     run_cmd->add_option("--dim", run.dim, "dimension")->required();
+    run_cmd->add_option("--instance", run.instance,
+                        "instance: 0 = the function as defined (default; BBOB: 1), K >= 1 shifted and rotated");
     run_cmd->add_option("--algo", run.algo, box_names + " or nlopt:NAME (see 'pride list')")->required();
     auto* evals = run_cmd->add_option("--evals", run.evals, "evaluation budget (default 10000 * dim)");
     run_cmd->add_option("--iters", run.iters, "iteration limit")->excludes(evals);
@@ -48,6 +50,8 @@ int main(int argc, char** argv) {
     eval_cmd->add_option("--problem", eval.problem, "problem name (see 'pride list')")->required();
     eval_cmd->add_option("--x", eval.x, "V1,V2,... or - to read one point per line from stdin")->required();
     eval_cmd->add_option("--dim", eval.dim, "check that every point has this many coordinates");
+    eval_cmd->add_option("--instance", eval.instance, "instance (as for pride run)");
+    eval_cmd->add_option("--seed", eval.seed, "the noise stream of a noisy function (default 0)");
 
     PathOptions path;
     auto* path_cmd = app.add_subcommand(

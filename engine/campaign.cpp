@@ -37,7 +37,10 @@ std::string describe(const Campaign& c) {
     if (c.target) s += fmt::format("target = {}\n", json_number(*c.target));
     for (const auto& p : c.problems) {
         s += "problem " + json_string(p.id) + ": ";
-        if (const auto* f = std::get_if<ContinuousSpec>(&p.spec)) s += fmt::format("{} {}", f->function, f->dim);
+        if (const auto* f = std::get_if<ContinuousSpec>(&p.spec)) {
+            s += fmt::format("{} {}", f->function, f->dim);
+            if (f->instance) s += fmt::format(" instance {}", *f->instance);  // absent: texts as before instances
+        }
         if (const auto* g = std::get_if<GridSpec>(&p.spec))
             s += fmt::format("grid {} {} ({},{}) ({},{}) {} {} {} {} {} {} {}", json_string(p.map_file), p.inflate,
                              g->start.x, g->start.y, g->goal.x, g->goal.y, g->objective, g->encoding, g->connector,
@@ -76,10 +79,10 @@ constexpr int kTagResult = 1, kTagTask = 2;
 constexpr char kSep = '\x1f';
 
 std::string serialise(const RunRecord& r) {
-    return fmt::format("{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}", kSep,
-                       r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations,
+    return fmt::format("{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}{0}{13}",
+                       kSep, r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations,
                        r.wall_ms, r.optimum ? fmt::format("{:.17g}", *r.optimum) : "", r.solution, r.history,
-                       r.history_evaluations);
+                       r.history_evaluations, r.target_hits);
 }
 
 RunRecord deserialise(const std::string& text) {
@@ -90,7 +93,7 @@ RunRecord deserialise(const std::string& text) {
         if (end == std::string::npos) break;
         start = end + 1;
     }
-    if (f.size() != 12) throw std::runtime_error("MPI: a malformed run record");
+    if (f.size() != 13) throw std::runtime_error("MPI: a malformed run record");
     RunRecord r;
     r.problem = f[0];
     r.algorithm = f[1];
@@ -104,6 +107,7 @@ RunRecord deserialise(const std::string& text) {
     r.solution = f[9];
     r.history = f[10];
     r.history_evaluations = f[11];
+    r.target_hits = f[12];
     return r;
 }
 
@@ -239,7 +243,11 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     r.problem = p.id;
     r.algorithm = a.id;
     r.seed = seed;
-    const RunResult result = run(a.spec, *p.problem, budget, static_cast<std::uint64_t>(seed));
+    const std::optional<double> optimum = p.problem->optimum_value();
+    Budget with_targets = budget;
+    if (optimum)
+        for (const double precision : coco_precisions()) with_targets.recorded_targets.push_back(*optimum + precision);
+    const RunResult result = run(a.spec, *p.problem, with_targets, static_cast<std::uint64_t>(seed));
     if (result.grid) {
         r.feasible = result.grid->feasible;
         r.best = r.feasible ? result.grid->value : std::numeric_limits<double>::infinity();
@@ -255,6 +263,13 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     r.wall_ms = result.wall_ms;
     r.history = json_array(result.history);
     r.history_evaluations = json_integers(result.history_evaluations);
+    if (optimum) {
+        r.target_hits = "[";
+        for (std::size_t k = 0; k < coco_precisions().size(); ++k)
+            r.target_hits += (k ? ", " : "") +
+                             (k < result.target_hits.size() ? std::to_string(result.target_hits[k]) : std::string("null"));
+        r.target_hits += "]";
+    }
     return r;
 }
 

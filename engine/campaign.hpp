@@ -21,8 +21,18 @@ struct CampaignProblem {
     std::string map_file;  // ... and named here (read once per (file, inflate) by prepare())
     std::int64_t inflate = 0;
     int line = 0;                            // where it stands in the campaign file (0: not from a file)
+    std::string suite;                       // "bbob", "classic" when it came from a suite, else empty
     std::shared_ptr<const Problem> problem;  // built by prepare()
 };
+
+/// COCO's target precisions: a continuous problem with a known optimum f_opt records in every run
+/// the evaluations after which the best value first reached f_opt + 10^k, k = 2, 1, ..., -8
+/// (Hansen et al. 2021, "COCO: a platform for comparing continuous optimizers in a black-box
+/// setting", section 4).
+inline const std::vector<double>& coco_precisions() {
+    static const std::vector<double> p{1e2, 1e1, 1e0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+    return p;
+}
 
 struct CampaignAlgorithm {
     std::string id;
@@ -60,6 +70,9 @@ struct RunRecord {
     std::string solution;           // JSON: the best point, or the path as [[x,y],...]
     std::string history;            // JSON: best value after each iteration
     std::string history_evaluations;
+    // JSON: one entry per coco_precisions() value, the evaluations after which best <= f_opt +
+    // precision first held, or null; "[]" for problems without a known optimum.
+    std::string target_hits = "[]";
 };
 
 /// Runs one (problem, algorithm, seed) of a prepared campaign; the same inputs give the same

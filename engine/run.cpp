@@ -185,13 +185,15 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
         const auto* item = continuous::catalog().find(c->function);
         require(item != nullptr, "problem", "unknown problem '" + c->function + "'");
         require(c->dim >= 1, "dim", "dimension must be >= 1, got " + std::to_string(c->dim));
-        // Bounds, an optimum and a scratch vector per coordinate, before any is allocated.
-        require_memory(4.0 * 8.0 * static_cast<double>(c->dim), "dim",
+        // Bounds, an optimum and scratch vectors per coordinate, and a rotation (dim^2) for an
+        // instance that has one, before any is allocated.
+        const double n = static_cast<double>(c->dim);
+        const bool rotated = c->instance.value_or(continuous::default_instance(item->entry)) != 0;
+        require_memory(8.0 * (8.0 * n + (rotated ? 2.0 * n * n : 0.0)), "dim",
                        fmt::format("{} in dimension {}", c->function, c->dim));
         out->name = c->function;
         out->dimension = static_cast<std::size_t>(c->dim);
-        out->box = BoxTarget{std::visit([](auto&& p) { return BoxVariant(std::move(p)); },
-                                        continuous::make_problem(c->function, c->dim))};
+        out->box = BoxTarget{continuous::make_function(c->function, c->dim, c->instance)};
     } else if (const auto* g = std::get_if<GridSpec>(&spec)) {
         check_grid_spec(*g);
         out->name = "grid";
@@ -286,6 +288,7 @@ void copy_run(RunResult& out, R&& r) {
     out.wall_ms = r.wall_ms;
     out.history = std::move(r.history);
     out.history_evaluations = std::move(r.history_evaluations);
+    out.target_hits = std::move(r.target_hits);
 }
 
 double grid_value(const GridTarget& target, const grid::Path& path) {
@@ -334,6 +337,16 @@ const ProblemSpec& Problem::spec() const {
 std::string Problem::name() const {
     return prepared_->name;
 }
+std::int64_t Problem::instance() const {
+    const auto* f = prepared_->box ? std::get_if<continuous::Function>(&prepared_->box->problem) : nullptr;
+    return f ? f->instance() : 0;
+}
+std::optional<double> Problem::optimum_value() const {
+    const auto* f = prepared_->box ? std::get_if<continuous::Function>(&prepared_->box->problem) : nullptr;
+    if (!f) return std::nullopt;
+    const double v = f->optimum_value();
+    return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
 
 Termination Budget::termination(std::size_t dimension, bool grid) const {
     Termination t;
@@ -360,6 +373,7 @@ Termination Budget::termination(std::size_t dimension, bool grid) const {
             t = t | wall_time(std::chrono::duration_cast<Clock::duration>(
                         std::chrono::duration<double, std::milli>(*wall_ms)));
     }
+    t.recorded_targets = recorded_targets;
     return t;
 }
 

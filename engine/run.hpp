@@ -32,6 +32,10 @@ class Problem {
     const ProblemSpec& spec() const;
     /// The problem's display name: the function, "grid" or the callback's name.
     std::string name() const;
+    /// A continuous function's instance (0: as defined; BBOB: COCO's, from 1); 0 for others.
+    std::int64_t instance() const;
+    /// A continuous function's known minimum at this instance and dimension (for targets).
+    std::optional<double> optimum_value() const;
 
     const Prepared& prepared() const { return *prepared_; }
 
@@ -59,6 +63,7 @@ struct RunResult {
     double wall_ms = 0.0;
     std::vector<double> history;  // best value after each iteration (0: the initial population)
     std::vector<std::int64_t> history_evaluations;
+    std::vector<std::int64_t> target_hits;  // Budget::recorded_targets reached: evaluations at each
     std::optional<GridOutcome> grid;
 };
 

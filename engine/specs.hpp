@@ -18,10 +18,12 @@
 
 namespace pride::engine {
 
-/// A registered continuous function in a dimension.
+/// A registered continuous function in a dimension and an instance (empty: the function's default,
+/// 0 = as defined; 1 for BBOB).
 struct ContinuousSpec {
     std::string function;
     std::int64_t dim = 0;
+    std::optional<std::int64_t> instance = std::nullopt;
 };
 
 /// One planning problem on a grid. The map is shared and already parsed (and inflated), so that
@@ -67,6 +69,9 @@ struct Budget {
     std::optional<std::int64_t> iterations;
     std::optional<double> target;   // stop once the best value is <= this
     std::optional<double> wall_ms;  // stop after this many milliseconds
+    // Not a limit: decreasing values whose first reaching each run records exactly
+    // (RunResult::target_hits; campaigns: COCO's targets f_opt + 10^k).
+    std::vector<double> recorded_targets;
 
     /// The stopping rules for a problem of `dimension` (grid: whether it is a grid problem);
     /// InputError naming the field for a limit out of range.

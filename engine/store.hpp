@@ -14,6 +14,8 @@
 #include <tuple>
 
 #include "engine/campaign.hpp"
+#include "engine/json.hpp"
+#include "problems/continuous/catalog.hpp"
 #include "framework/error.hpp"
 
 namespace pride::engine {
@@ -61,6 +63,14 @@ class Store {
         exec(
             "CREATE TABLE IF NOT EXISTS problems (id TEXT PRIMARY KEY, type TEXT NOT NULL, dim INTEGER NOT NULL, "
             "map TEXT, start TEXT, goal TEXT)");
+        // Columns added with the suites (issue 10); a store from before gains them, empty.
+        add_column("campaign", "precisions", "TEXT");
+        add_column("problems", "function", "TEXT");
+        add_column("problems", "instance", "INTEGER NOT NULL DEFAULT 0");
+        add_column("problems", "f_opt", "REAL");
+        add_column("problems", "suite", "TEXT");
+        add_column("problems", "fid", "INTEGER");
+        add_column("runs", "target_hits", "TEXT NOT NULL DEFAULT '[]'");
     }
     ~Store() { sqlite3_close(db_); }
     Store(const Store&) = delete;
@@ -81,17 +91,21 @@ class Store {
         }
         sqlite3_finalize(s);
         exec("BEGIN");
-        s = prepare("INSERT INTO campaign (id, name, text, target) VALUES (1, ?, ?, ?)");
+        s = prepare("INSERT INTO campaign (id, name, text, target, precisions) VALUES (1, ?, ?, ?, ?)");
         sqlite3_bind_text(s, 1, c.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, c.text.c_str(), -1, SQLITE_TRANSIENT);
         if (c.target)
             sqlite3_bind_double(s, 3, *c.target);
         else
             sqlite3_bind_null(s, 3);
+        const std::string precisions = json_array(coco_precisions());
+        sqlite3_bind_text(s, 4, precisions.c_str(), -1, SQLITE_TRANSIENT);
         step_done(s);
         // The problems as resolved here (map paths made absolute), for reports and plots.
         for (const auto& p : c.problems) {
-            s = prepare("INSERT INTO problems (id, type, dim, map, start, goal) VALUES (?, ?, ?, ?, ?, ?)");
+            s = prepare(
+                "INSERT INTO problems (id, type, dim, map, start, goal, function, instance, f_opt, suite, fid) "
+                "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
             const std::string map = p.map_file.empty() ? "" : std::filesystem::absolute(p.map_file).string();
             const auto* g = std::get_if<GridSpec>(&p.spec);
             const auto* f = std::get_if<ContinuousSpec>(&p.spec);
@@ -104,6 +118,21 @@ class Store {
             sqlite3_bind_text(s, 4, map.c_str(), -1, SQLITE_TRANSIENT);
             sqlite3_bind_text(s, 5, start.c_str(), -1, SQLITE_TRANSIENT);
             sqlite3_bind_text(s, 6, goal.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 7, type.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_int64(s, 8, p.problem->instance());
+            if (const auto f_opt = p.problem->optimum_value())
+                sqlite3_bind_double(s, 9, *f_opt);
+            else
+                sqlite3_bind_null(s, 9);
+            const auto* item = f ? continuous::catalog().find(f->function) : nullptr;
+            const std::string suite = item ? item->entry.suite : "";
+            if (suite.empty()) {
+                sqlite3_bind_null(s, 10);
+                sqlite3_bind_null(s, 11);
+            } else {
+                sqlite3_bind_text(s, 10, suite.c_str(), -1, SQLITE_TRANSIENT);
+                sqlite3_bind_int64(s, 11, item->entry.number);
+            }
             step_done(s);
         }
         exec("COMMIT");
@@ -123,7 +152,7 @@ class Store {
     void insert(const RunRecord& r) {
         sqlite3_stmt* s = prepare(
             "INSERT INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, optimum, "
-            "solution, history, history_evaluations) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+            "solution, history, history_evaluations, target_hits) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
         sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_int64(s, 3, r.seed);
@@ -142,10 +171,19 @@ class Store {
         sqlite3_bind_text(s, 10, r.solution.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 11, r.history.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 12, r.history_evaluations.c_str(), -1, SQLITE_TRANSIENT);
+        sqlite3_bind_text(s, 13, r.target_hits.c_str(), -1, SQLITE_TRANSIENT);
         step_done(s);  // autocommit: the statement is its own transaction
     }
 
   private:
+    void add_column(const std::string& table, const std::string& column, const std::string& type) {
+        sqlite3_stmt* s = prepare(("SELECT 1 FROM pragma_table_info('" + table + "') WHERE name = ?").c_str());
+        sqlite3_bind_text(s, 1, column.c_str(), -1, SQLITE_TRANSIENT);
+        const bool present = sqlite3_step(s) == SQLITE_ROW;
+        sqlite3_finalize(s);
+        if (!present) exec(("ALTER TABLE " + table + " ADD COLUMN " + column + " " + type).c_str());
+    }
+
     void exec(const char* sql) {
         char* message = nullptr;
         if (sqlite3_exec(db_, sql, nullptr, nullptr, &message) != SQLITE_OK) {

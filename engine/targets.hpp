@@ -2,7 +2,8 @@
 // The concrete problem types the engine runs, as variants: each algorithm family's file visits a
 // target once per run and then executes fully typed code (no virtual call per evaluation). Grid
 // objectives linear in a path's metrics share one type (LinearObjective), and the connector is a
-// run-time setting, so the grid contributes four box types and two chain types.
+// run-time setting, so the grid contributes four box types and two chain types; the continuous
+// functions one (catalog.hpp).
 #include <variant>
 
 #include "engine/callback.hpp"
@@ -20,18 +21,10 @@ using GridLine = Encoded<grid::GridProblem<Objective>, grid::LineEncoding<grid::
 template <class Objective>
 using GridFree = Encoded<grid::GridProblem<Objective>, grid::FreeEncoding<grid::SelectableConnector>>;
 
-namespace detail {
-template <class V, class... More>
-struct Append;
-template <class... A, class... More>
-struct Append<std::variant<A...>, More...> {
-    using type = std::variant<A..., More...>;
-};
-}  // namespace detail
-
-using BoxVariant =
-    detail::Append<continuous::AnyProblem, GridLine<grid::LinearObjective>, GridLine<grid::IqgaObjective>,
-                   GridFree<grid::LinearObjective>, GridFree<grid::IqgaObjective>, CallbackProblem>::type;
+// Every continuous function is one type (continuous::Function: dispatch once per batch), so an
+// algorithm is compiled once for all of them.
+using BoxVariant = std::variant<continuous::Function, GridLine<grid::LinearObjective>, GridLine<grid::IqgaObjective>,
+                                GridFree<grid::LinearObjective>, GridFree<grid::IqgaObjective>, CallbackProblem>;
 using ChainVariant = std::variant<grid::ChainSpace<grid::LinearObjective>, grid::ChainSpace<grid::IqgaObjective>>;
 using GridVariant = std::variant<grid::GridProblem<grid::LinearObjective>, grid::GridProblem<grid::IqgaObjective>>;
 

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string_view>
 
@@ -46,6 +47,17 @@ template <class P>
 concept SuggestsStartingPoints = BoxProblem<P> && requires(const P& p, Rng& rng, Matrix& out) {
     p.starting_points(rng, out);  // fills every column of `out` (rows = dimension)
 };
+
+/// Optional: a problem with noise (a noisy test function) restarts its noise from the run's seed,
+/// so that a run is reproducible from its seed alone. Every algorithm calls seed_noise() once
+/// on its own copy of the problem before the first evaluation.
+template <class P>
+concept Reseedable = requires(P& p, std::uint64_t seed) { p.reseed(seed); };
+
+template <class P>
+void seed_noise(P& problem, std::uint64_t seed) noexcept {
+    if constexpr (Reseedable<P>) problem.reseed(seed);
+}
 
 /// Optional: a name for logs and the command line.
 template <class P>

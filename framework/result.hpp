@@ -19,6 +19,9 @@ struct BasicResult {
     /// when the run stopped at the end of an iteration.
     std::vector<double> history;
     std::vector<std::int64_t> history_evaluations;
+    /// target_hits[k]: the evaluations after which the best value first was <= the k-th of
+    /// Termination::recorded_targets, for the targets reached (a prefix: they decrease).
+    std::vector<std::int64_t> target_hits;
     double wall_ms = 0.0;  // from population set-up to the end of the run
 };
 

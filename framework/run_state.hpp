@@ -35,6 +35,7 @@ class BasicRunState {
         : termination_(termination),
           limit_(termination.max_evaluations.value_or(std::numeric_limits<std::int64_t>::max())) {
         if constexpr (is_point) best_x_.assign(dimension, std::numeric_limits<double>::quiet_NaN());
+        target_hits_.reserve(termination.recorded_targets.size());
         progress_.start = Clock::now();
     }
 
@@ -46,7 +47,7 @@ class BasicRunState {
         const double f = sanitize(problem.evaluate(x));
         ++progress_.evaluations;
         if (f < progress_.best) {
-            progress_.best = f;
+            improved(f);
             if constexpr (is_point)
                 std::copy(x.begin(), x.end(), best_x_.begin());
             else
@@ -58,7 +59,7 @@ class BasicRunState {
     /// Evaluates the first min(points.cols(), remaining()) columns into `values` and returns how
     /// many; columns past the budget get +inf. Uses the problem's batch evaluation when it has one.
     template <BoxProblem P>
-    Eigen::Index evaluate_columns(P& problem, const Matrix& points, std::span<double> values) requires is_point {
+    Eigen::Index evaluate_columns(P& problem, MatrixView points, std::span<double> values) requires is_point {
         const Eigen::Index n = std::min<Eigen::Index>(points.cols(), static_cast<Eigen::Index>(remaining()));
         if constexpr (BatchBoxProblem<P>) {
             problem.evaluate_batch(points.leftCols(n), values.first(static_cast<std::size_t>(n)));
@@ -67,14 +68,14 @@ class BasicRunState {
                 f = sanitize(f);
                 ++progress_.evaluations;
                 if (f < progress_.best) {
-                    progress_.best = f;
-                    const auto x = column(points, j);
-                    std::copy(x.begin(), x.end(), best_x_.begin());
+                    improved(f);
+                    std::copy_n(points.col(j).data(), points.rows(), best_x_.begin());
                 }
             }
         } else {
             for (Eigen::Index j = 0; j < n; ++j)
-                values[static_cast<std::size_t>(j)] = evaluate(problem, column(points, j));
+                values[static_cast<std::size_t>(j)] =
+                    evaluate(problem, std::span<const double>(points.col(j).data(), static_cast<std::size_t>(points.rows())));
         }
         for (auto j = static_cast<std::size_t>(n); j < static_cast<std::size_t>(points.cols()); ++j) values[j] = kInf;
         return n;
@@ -116,10 +117,19 @@ class BasicRunState {
         r.iterations = progress_.iterations;
         r.history = std::move(history_);
         r.history_evaluations = std::move(history_evaluations_);
+        r.target_hits = std::move(target_hits_);
         return r;
     }
 
   private:
+    /// A new best value (rare): the targets it reaches are recorded with the evaluation count.
+    void improved(double f) {
+        progress_.best = f;
+        const auto& targets = termination_.recorded_targets;
+        while (target_hits_.size() < targets.size() && f <= targets[target_hits_.size()])
+            target_hits_.push_back(progress_.evaluations);
+    }
+
     static constexpr bool is_point = std::is_same_v<Solution, std::vector<double>>;
 
     Termination termination_;
@@ -128,6 +138,7 @@ class BasicRunState {
     Solution best_x_;
     std::vector<double> history_;
     std::vector<std::int64_t> history_evaluations_;
+    std::vector<std::int64_t> target_hits_;
     bool started_ = false;
 };
 

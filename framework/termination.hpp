@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "framework/error.hpp"
 
@@ -29,6 +30,9 @@ class Termination {
     std::optional<std::int64_t> max_iterations;
     std::optional<double> target;  // stop once best <= target
     std::optional<Clock::duration> wall_time;
+    // Not a stopping rule: values, in decreasing order, whose first reaching the evaluation guard
+    // records as an exact evaluation count (COCO's targets f_opt + 10^k: Result::target_hits).
+    std::vector<double> recorded_targets;
 
     /// True when any limit set is reached.
     bool done(const Progress& p) const {
@@ -45,6 +49,8 @@ class Termination {
                 "no evaluation, iteration or wall-time limit is set, so the run might never end");
         if (max_evaluations) require(*max_evaluations >= 1, where, "the evaluation limit must be >= 1");
         if (max_iterations) require(*max_iterations >= 0, where, "the iteration limit must be >= 0");
+        for (std::size_t i = 1; i < recorded_targets.size(); ++i)
+            require(recorded_targets[i] <= recorded_targets[i - 1], where, "recorded targets must not increase");
     }
 
     /// The number of iterations T that schedules (inertia weight, step sizes) run over: the
@@ -72,6 +78,7 @@ class Termination {
         tighter(a.max_iterations, b.max_iterations, min);
         tighter(a.target, b.target, max);
         tighter(a.wall_time, b.wall_time, min);
+        if (a.recorded_targets.empty()) a.recorded_targets = b.recorded_targets;
         return a;
     }
 };

@@ -29,7 +29,7 @@
 #include "framework/error.hpp"
 #include "framework/termination.hpp"
 #include "problems/continuous/functions.hpp"
-#include "problems/continuous/shifted.hpp"
+#include "problems/continuous/transformed.hpp"
 
 namespace {
 

@@ -25,7 +25,7 @@
 #include "framework/run_state.hpp"
 #include "framework/termination.hpp"
 #include "problems/continuous/functions.hpp"
-#include "problems/continuous/shifted.hpp"
+#include "problems/continuous/transformed.hpp"
 #include "tests/test_support.hpp"
 
 using Catch::Matchers::Contains;

@@ -71,6 +71,7 @@ BoxRun start_box_run(const Algorithm& algorithm, P& problem, const Termination& 
                problem.dimension(),
                Matrix(static_cast<Eigen::Index>(problem.dimension()), static_cast<Eigen::Index>(algorithm.population)),
                std::vector<double>(static_cast<std::size_t>(algorithm.population))};
+    seed_noise(problem, seed);
     algorithm.init(problem, run.rng, run.x);
     for (Eigen::Index i = 0; i < run.x.cols(); ++i) algorithm.bounds(column(run.x, i), run.lo, run.hi);
     run.state.evaluate_columns(problem, run.x, run.fx);

@@ -1,68 +1,43 @@
 #pragma once
-// The continuous problems by name, for the command line, the benchmarks and campaigns. A problem
-// is returned as a std::variant of the concrete types, so a run visits it once and then executes
-// fully typed code: no virtual call per evaluation.
+// The continuous problems by name, for the command line, campaigns, Python and the benchmarks: each
+// name makes a Function (function.hpp) in a dimension and an instance. The concrete classes are
+// compiled in catalog.cpp only, so code that runs problems by name never includes them.
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
-#include <variant>
 
-#include "framework/error.hpp"
 #include "framework/registry.hpp"
-#include "problems/continuous/functions.hpp"
-#include "problems/continuous/shifted.hpp"
+#include "problems/continuous/function.hpp"
 
 namespace pride::continuous {
 
-using AnyProblem = std::variant<Sphere, Rastrigin, Rosenbrock, Ackley, Griewank, Schwefel, Shifted<Sphere>,
-                                Shifted<Rastrigin>, Shifted<Rosenbrock>, Shifted<Ackley>, Shifted<Griewank>>;
-
-struct CatalogEntry {
-    std::size_t min_dim;
-    AnyProblem (*make)(std::size_t dim);
+/// What an instance number means for a function.
+enum class Instances {
+    transform,  // scalable: 0 as defined, k >= 1 shifted and rotated (instance.hpp)
+    none,       // a fixed instance (fixed dimension, or a shifted-* alias): 0 only
+    coco,       // BBOB: COCO's instances, k >= 1 (default 1)
 };
 
-namespace detail {
-template <class F>
-AnyProblem make(std::size_t dim) {
-    return AnyProblem(std::in_place_type<F>, dim);
-}
-template <class F, bool with_shift>
-void add_plain_and_shifted(Registry<CatalogEntry>& r) {
-    r.add(std::string(F::info.name), std::string(F::info.summary), CatalogEntry{F::info.min_dim, &make<F>});
-    if constexpr (with_shift)
-        r.add("shifted-" + std::string(F::info.name),
-              std::string(F::info.name) + " with its optimum moved off the centre (see shifted.hpp)",
-              CatalogEntry{F::info.min_dim, &make<Shifted<F>>});
-}
-}  // namespace detail
+struct CatalogEntry {
+    std::size_t min_dim = 1;
+    std::size_t fixed_dim = 0;  // 0: any dimension >= min_dim
+    Instances instances = Instances::transform;
+    std::string suite;  // "bbob", "classic" (Yao et al. 1999's F1-F23), or empty
+    int number = 0;     // its number in the suite (bbob-f3: 3, yao-f9: 9)
+    std::function<Function(std::size_t dim, std::int64_t instance)> make;
+};
 
-inline const Registry<CatalogEntry>& catalog() {
-    static const Registry<CatalogEntry> r = [] {
-        Registry<CatalogEntry> reg;
-        detail::add_plain_and_shifted<Sphere, true>(reg);
-        detail::add_plain_and_shifted<Rastrigin, true>(reg);
-        detail::add_plain_and_shifted<Rosenbrock, true>(reg);
-        detail::add_plain_and_shifted<Ackley, true>(reg);
-        detail::add_plain_and_shifted<Griewank, true>(reg);
-        // Schwefel is not shifted: its optimum is already off the centre, and a shifted argument
-        // would leave [-500, 500], where the formula has lower values than its "optimum".
-        detail::add_plain_and_shifted<Schwefel, false>(reg);
-        return reg;
-    }();
-    return r;
-}
+const Registry<CatalogEntry>& catalog();
 
-/// The problem `name` in dimension `dim`; InputError for an unknown name or a bad dimension, the
-/// latter blamed on `dim_source` (the option or input the dimension came from).
-inline AnyProblem make_problem(std::string_view name, std::int64_t dim, const std::string& dim_source = "dim") {
-    const auto* item = catalog().find(name);
-    require(item != nullptr, "problem", "unknown problem '" + std::string(name) + "'");
-    require(dim >= 1, dim_source, "dimension must be >= 1, got " + std::to_string(dim));
-    require(static_cast<std::size_t>(dim) >= item->entry.min_dim, dim_source,
-            std::string(name) + " needs dimension >= " + std::to_string(item->entry.min_dim) + ", got " +
-                std::to_string(dim));
-    return item->entry.make(static_cast<std::size_t>(dim));
-}
+/// The instance a problem gets when none is given: 0, or 1 for BBOB (COCO counts from 1).
+std::int64_t default_instance(const CatalogEntry& entry);
+
+/// The problem `name` in dimension `dim`, instance `instance` (empty: the default). InputError
+/// for an unknown name, a bad dimension (blamed on `dim_source`, the option or input it came
+/// from) or an instance the function does not have (blamed on "instance").
+Function make_function(std::string_view name, std::int64_t dim, std::optional<std::int64_t> instance = {},
+                       const std::string& dim_source = "dim");
 
 }  // namespace pride::continuous
