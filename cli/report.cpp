@@ -43,13 +43,16 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
 }  // namespace
 
 int report_command(const ReportOptions& o, std::ostream& out) {
-    require(o.format == "md" || o.format == "csv" || o.format == "latex", "--format",
-            "expected md, csv or latex, got '" + o.format + "'");
+    require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv", "--format",
+            "expected md, csv, latex or ert-csv, got '" + o.format + "'");
     // The whole store is read and checked before any figure is drawn from it.
     const report::ReportData data = report::load_report(o.store);
-    const std::string text = o.format == "csv"  ? report::render_csv(data)
-                             : o.format == "md" ? report::render_markdown(data)
-                                                : report::render_latex(data);
+    require(o.format != "ert-csv" || data.coco, "--format ert-csv",
+            o.store + ": records no target hits (no precisions, or no run on a problem with a known optimum)");
+    const std::string text = o.format == "csv"       ? report::render_csv(data)
+                             : o.format == "ert-csv" ? report::render_ert_csv(data)
+                             : o.format == "md"      ? report::render_markdown(data)
+                                                     : report::render_latex(data);
     if (!o.plots.empty()) plot(o.store, o.plots, data);
     out << text;
     return 0;

@@ -300,13 +300,19 @@ TEST_CASE("coco: a store with the suite columns read back, analysed and reported
     CHECK(md.out.find("| b | inf | inf | 0/4 |") != std::string::npos);
     CHECK(md.out.find("### rastrigin, 3-D (1 instance)") != std::string::npos);
     CHECK(md.out.find("1 runs record no target hits") != std::string::npos);
+    // The main CSV stays one table; the ERT is its own CSV.
     const auto csv = run_pride("report " + quote(store) + " --format csv");
     REQUIRE(csv.status == 0);
-    CHECK(csv.out.find("\n\nfunction,dim,algorithm,precision,ert,successes,runs\n") != std::string::npos);
-    CHECK(csv.out.find("\nbbob-f1,2,a,10,45,3,4\n") != std::string::npos);
-    CHECK(csv.out.find("\nbbob-f1,2,a,1,135,2,4\n") != std::string::npos);
-    CHECK(csv.out.find("\nbbob-f1,2,a,0.1,350,1,4\n") != std::string::npos);
-    CHECK(csv.out.find("\nbbob-f20,2,b,0.1,inf,0,1\n") != std::string::npos);
+    CHECK(csv.out.find("\n\n") == std::string::npos);
+    CHECK(csv.out.find("ert") == std::string::npos);
+    const auto ert_csv = run_pride("report " + quote(store) + " --format ert-csv");
+    REQUIRE(ert_csv.status == 0);
+    CHECK(ert_csv.out.rfind("function,dim,algorithm,precision,ert,successes,runs\n", 0) == 0);
+    CHECK(ert_csv.out.find("\nbbob-f1,2,a,10,45,3,4\n") != std::string::npos);
+    CHECK(ert_csv.out.find("\nbbob-f1,2,a,1,135,2,4\n") != std::string::npos);
+    CHECK(ert_csv.out.find("\nbbob-f1,2,a,0.1,350,1,4\n") != std::string::npos);
+    CHECK(ert_csv.out.find("\nbbob-f20,2,b,0.1,inf,0,1\n") != std::string::npos);
+    CHECK(std::count(ert_csv.out.begin(), ert_csv.out.end(), '\n') == 1 + 6 * 3);  // 6 rows x 3 precisions
     const auto latex = run_pride("report " + quote(store) + " --format latex");
     REQUIRE(latex.status == 0);
     CHECK(latex.out.find("% bbob-f20, 2-D (1 instance)\n\\begin{tabular}{lrrr}") != std::string::npos);
@@ -350,6 +356,8 @@ TEST_CASE("coco: stores without the suite columns, or with them NULL, read as be
     const auto csv = run_pride("report " + quote(old) + " --format csv");
     REQUIRE(csv.status == 0);
     CHECK(csv.out.find("\n\n") == std::string::npos);  // one table only
+    check_input_error(run_pride("report " + quote(old) + " --format ert-csv"),
+                      {"--format ert-csv", "records no target hits"});
 
     // A new store of a campaign without targets: the columns NULL, or hits [].
     const std::string store = suite_store(dir, "suite");
@@ -374,6 +382,11 @@ TEST_CASE("coco: stores without the suite columns, or with them NULL, read as be
     REQUIRE(a);
     CHECK(a->runs_without_hits == 7);
     CHECK(a->erts.size() == 3);
+    // Precisions but no run with hits (pride bench on grids, no known optimum): no ERT section.
+    const std::string grids = tampered(dir, store, "grids", "UPDATE runs SET target_hits = '[]'");
+    CHECK(pride::report::read_store(grids).precisions);
+    CHECK(!pride::report::load_report(grids).coco);
+    CHECK(run_pride("report " + quote(grids)).out.find("Expected running time") == std::string::npos);
 }
 
 TEST_CASE("coco: damaged suite columns are bad input naming the run and the column", "[report][coco][damaged]") {
@@ -432,8 +445,6 @@ TEST_CASE("coco: damaged suite columns are bad input naming the run and the colu
         {"no-problem-row", "DELETE FROM problems WHERE id = 'ras3'",
          "runs row (problem 'ras3', algorithm 'a', seed 1), column problem: 'ras3' is not in table problems (the "
          "analysis of target hits needs its function and dimension)"},
-        {"no-problems-table", "DROP TABLE problems",
-         "the campaign records precisions, but the store has no table problems"},
     };
     for (const Case& c : cases) {
         INFO(c.name);
@@ -446,6 +457,10 @@ TEST_CASE("coco: damaged suite columns are bad input naming the run and the colu
         CHECK(!std::filesystem::exists(out));
     }
     CHECK_THROWS_AS(pride::report::read_store(dir.file("hits-short.sqlite")), pride::report::DamagedStore);
+    // Without the problems table (as before it existed) the store is reported, with no analysis.
+    const std::string no_problems = tampered(dir, store, "no-problems", "DROP TABLE problems");
+    CHECK(!pride::report::load_report(no_problems).coco);
+    CHECK(run_pride("report " + quote(no_problems)).status == 0);
 }
 
 TEST_CASE("coco: the IOH export names bbob problems by fid and instance", "[report][coco][export]") {

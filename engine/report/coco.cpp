@@ -91,7 +91,7 @@ std::string bbob_group_title(const std::string& group) {
 }
 
 std::optional<Analysis> analyse(const CampaignStore& store) {
-    if (!store.precisions || store.precisions->empty()) return std::nullopt;
+    if (!store.precisions || store.precisions->empty() || !store.problems) return std::nullopt;
     Analysis a;
     a.precisions = *store.precisions;
     const std::size_t n = a.precisions.size();
@@ -151,6 +151,7 @@ std::optional<Analysis> analyse(const CampaignStore& store) {
         for (const auto& runs : c.per_precision) row.ert.push_back(ert(runs));
         a.erts.push_back(std::move(row));
     }
+    if (a.erts.empty()) return std::nullopt;  // no run records hits (grids: no known optimum)
     for (const char* g : {"all", "separable", "moderate", "ill-conditioned", "multimodal", "weakly-structured"}) {
         const auto it = groups.find(g);
         if (it == groups.end()) continue;

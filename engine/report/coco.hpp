@@ -88,7 +88,9 @@ struct Analysis {
 };
 
 /// The analysis of `store`; empty when the campaign records no precisions (NULL, absent or
-/// []). Runs without recorded hits are left out (and counted).
+/// []), when the store has no problems table, or when no run records hits (pride bench records
+/// none for problems without a known optimum, grids). Runs without recorded hits are left out
+/// (and counted).
 std::optional<Analysis> analyse(const CampaignStore& store);
 
 /// The ECDF curves as JSON for scripts/plot_ecdf.py:

@@ -353,13 +353,16 @@ std::string render_csv(const ReportData& report) {
                                             optional(r.mean_evaluations_to_target))
                               : "\n";
     }
-    if (const auto& a = report.coco) {  // a second table after an empty line
-        text += "\nfunction,dim,algorithm,precision,ert,successes,runs\n";
+    return text;
+}
+
+std::string render_ert_csv(const ReportData& report) {
+    std::string text = "function,dim,algorithm,precision,ert,successes,runs\n";
+    if (const auto& a = report.coco)
         for (const coco::ErtRow& r : a->erts)
             for (std::size_t k = 0; k < a->precisions.size(); ++k)
                 text += fmt::format("{},{},{},{},{},{},{}\n", csv(r.function), r.dim, csv(r.algorithm),
                                     exact(a->precisions[k]), exact(r.ert[k].value), r.ert[k].successes, r.runs);
-    }
     return text;
 }
 

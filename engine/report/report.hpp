@@ -54,9 +54,12 @@ ReportData load_report(const std::string& path);
 
 std::string render_markdown(const ReportData& report);
 /// A header line, then one line per row; each number in the shortest form that reads back as
-/// the same double ("inf" when infinite), fields quoted as RFC 4180 says. With precisions, an
-/// empty line and a second table: function,dim,algorithm,precision,ert,successes,runs.
+/// the same double ("inf" when infinite), fields quoted as RFC 4180 says.
 std::string render_csv(const ReportData& report);
+/// The ERT of every function, dimension, algorithm and precision (report.coco) as CSV, numbers
+/// as render_csv writes them: function,dim,algorithm,precision,ert,successes,runs; the header
+/// alone without an analysis.
+std::string render_ert_csv(const ReportData& report);
 /// A `tabular` with the markdown's columns, then Friedman's ranks as a comment.
 std::string render_latex(const ReportData& report);
 
