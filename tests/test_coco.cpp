@@ -522,3 +522,71 @@ TEST_CASE("coco: --plots writes the ECDF figures of the suite and its groups", "
     REQUIRE(run_pride("report " + quote(old) + " --plots " + quote(old_figures)).status == 0);
     CHECK(!std::filesystem::exists(std::filesystem::path(old_figures) / "ecdf_all.png"));
 }
+
+TEST_CASE("coco: a store written by pride bench, read back and checked against its histories",
+          "[report][coco][bench]") {
+    TempDir dir("pride-coco-bench");
+    const std::string config = dir.write("c.toml",
+                                         "name = \"coco-bench\"\nseeds = 3\n[budget]\nevaluations = 3000\n"
+                                         "[[problem]]\nid = \"sphere4\"\ntype = \"sphere\"\ndim = 4\n"
+                                         "[[problem]]\nid = \"grid\"\ntype = \"grid\"\nmap = \"" +
+                                             std::string(PRIDE_SOURCE_DIR) +
+                                             "/examples/maps/file000-10x10.map\"\nstart = [0, 0]\ngoal = [9, 9]\n"
+                                             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n"
+                                             "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n");
+    const std::string store = dir.file("c.sqlite");
+    const auto bench = run_pride("bench " + quote(config) + " --jobs 2 --out " + quote(store));
+    INFO(bench.out << bench.err);
+    REQUIRE(bench.status == 0);
+    const auto s = pride::report::read_store(store);
+    REQUIRE(s.precisions);
+    CHECK(*s.precisions == std::vector<double>{1e2, 1e1, 1e0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8});
+    const auto& sphere = (*s.problems)[0];
+    REQUIRE(sphere.f_opt);
+    std::map<std::string, std::vector<std::vector<coco::TargetRun>>> by_algorithm;  // sphere runs, per precision
+    for (const auto& r : s.runs) {
+        if (r.problem == "grid") {
+            CHECK(r.target_hits.empty());  // no known optimum: no hits
+            continue;
+        }
+        REQUIRE(r.target_hits.size() == 11);
+        auto& per = by_algorithm[r.algorithm];
+        per.resize(11);
+        for (std::size_t k = 0; k < 11; ++k) {
+            INFO(r.algorithm << " seed " << r.seed << " precision " << (*s.precisions)[k]);
+            per[k].push_back({r.evaluations, r.target_hits[k], sphere.dim});
+            // The exact hit lies within the first iteration whose best value reached the target.
+            std::optional<std::size_t> first;
+            for (std::size_t i = 0; i < r.history.size() && !first; ++i)
+                if (r.history[i] - *sphere.f_opt <= (*s.precisions)[k]) first = i;
+            CHECK(bool(first) == bool(r.target_hits[k]));
+            if (first && r.target_hits[k]) {
+                CHECK(*r.target_hits[k] <= r.history_evaluations[*first]);
+                if (*first > 0) CHECK(*r.target_hits[k] > r.history_evaluations[*first - 1]);
+            }
+        }
+    }
+    REQUIRE(by_algorithm.size() == 2);
+    const auto report = pride::report::load_report(store);
+    REQUIRE(report.coco);
+    CHECK(report.coco->runs_without_hits == 6);  // the grid's
+    REQUIRE(report.coco->erts.size() == 2);
+    for (const auto& row : report.coco->erts) {
+        CHECK(row.function == "sphere");
+        CHECK(row.dim == 4);
+        CHECK(row.runs == 3);
+        for (std::size_t k = 0; k < 11; ++k) {
+            const coco::Ert e = coco::ert(by_algorithm.at(row.algorithm)[k]);
+            CHECK(row.ert[k].value == e.value);
+            CHECK(row.ert[k].successes == e.successes);
+        }
+    }
+    const auto md = run_pride("report " + quote(store));
+    REQUIRE(md.status == 0);
+    CHECK(md.out.find("### sphere, 4-D (1 instance)") != std::string::npos);
+    CHECK(md.out.find("| algorithm | ERT 1e1 | ERT 1e-1 | ERT 1e-3 | ERT 1e-5 | ERT 1e-7 | ERT 1e-8 | #succ |") !=
+          std::string::npos);
+    const auto ert_csv = run_pride("report " + quote(store) + " --format ert-csv");
+    REQUIRE(ert_csv.status == 0);
+    CHECK(std::count(ert_csv.out.begin(), ert_csv.out.end(), '\n') == 1 + 2 * 11);
+}
