@@ -153,7 +153,9 @@ int list_command(ListFormat format, std::ostream& out) {
     std::vector<Section> sections;
     Section problems{"problems", {}};
     for (const auto& item : continuous::catalog().items())
-        problems.items.push_back({item.name, item.summary + " (dim >= " + std::to_string(item.entry.min_dim) + ")"});
+        problems.items.push_back({item.name, item.summary + (item.entry.fixed_dim
+                                                                 ? " (dim = " + std::to_string(item.entry.fixed_dim) + ")"
+                                                                 : " (dim >= " + std::to_string(item.entry.min_dim) + ")")});
     sections.push_back(problems);
     sections.push_back({"encodings", {{"identity", "the genotype is the solution (every continuous problem)"}}});
     for (const auto& e : engine::grid_encodings()) sections.back().items.push_back(e);

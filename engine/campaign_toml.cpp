@@ -10,6 +10,7 @@
 #include <set>
 
 #include "framework/error.hpp"
+#include "problems/continuous/catalog.hpp"
 
 namespace pride::engine {
 namespace {
@@ -40,6 +41,15 @@ double need_number(const std::string& file, const toml::node& n, std::string_vie
     return **n.as_floating_point();
 }
 
+/// An array of integers.
+std::vector<std::int64_t> need_integers(const std::string& file, const toml::node& n, std::string_view key) {
+    const toml::array* a = n.as_array();
+    if (!a) fail(at(file, n), "'" + std::string(key) + "' must be a list of integers");
+    std::vector<std::int64_t> out;
+    for (const toml::node& v : *a) out.push_back(need_integer(file, v, key));
+    return out;
+}
+
 /// [x, y] with two integers.
 grid::Cell need_cell(const std::string& file, const toml::node& n, std::string_view key) {
     const toml::array* a = n.as_array();
@@ -51,7 +61,8 @@ grid::Cell need_cell(const std::string& file, const toml::node& n, std::string_v
     return {static_cast<int>(x), static_cast<int>(y)};
 }
 
-CampaignProblem read_problem(const std::string& file, const toml::table& t, const std::filesystem::path& folder) {
+CampaignProblem read_problem(const std::string& file, const toml::table& t, const std::filesystem::path& folder,
+                             std::vector<std::int64_t>& instances) {
     CampaignProblem p;
     p.line = static_cast<int>(t.source().begin.line);
     const std::string where = fmt::format("{}:{}", file, p.line);
@@ -60,7 +71,7 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
     const bool grid = type == "grid";
     GridSpec g;
     ContinuousSpec f{type, 0};
-    static const std::set<std::string> continuous_keys{"id", "type", "dim"};
+    static const std::set<std::string> continuous_keys{"id", "type", "dim", "instance"};
     static const std::set<std::string> grid_keys{"id",        "type",     "map",       "start", "goal",
                                                  "objective", "encoding", "connector", "init",  "waypoints",
                                                  "inflate",   "weights",  "lambda"};
@@ -69,6 +80,7 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
         if (!(grid ? grid_keys : continuous_keys).count(k))
             fail(at(file, value), "unknown key '" + k + "' in a " + (grid ? "grid" : "continuous") + " [[problem]]");
         if (k == "dim") f.dim = need_integer(file, value, k);
+        if (k == "instance") instances = value.is_array() ? need_integers(file, value, k) : std::vector{need_integer(file, value, k)};
         if (k == "map") {
             if (!value.is_string()) fail(at(file, value), "'map' must be a string");
             // Relative to the campaign file's folder when the file is there, else to the working folder.
@@ -99,6 +111,75 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
         p.spec = f;
     }
     return p;
+}
+
+/// A continuous [[problem]] with `instance = [k1, k2, ...]` is one problem per instance, "ID-iK".
+void add_problem(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t,
+                 const std::filesystem::path& folder) {
+    std::vector<std::int64_t> instances;
+    CampaignProblem p = read_problem(file, t, folder, instances);
+    const toml::node* given = t.get("instance");
+    if (!given) {
+        out.push_back(std::move(p));
+        return;
+    }
+    if (instances.empty()) fail(at(file, *given), "'instance' must not be an empty list");
+    const bool list = given->is_array();
+    for (const std::int64_t k : instances) {
+        CampaignProblem q = p;
+        std::get<ContinuousSpec>(q.spec).instance = k;
+        if (list) q.id += "-i" + std::to_string(k);
+        out.push_back(std::move(q));
+    }
+}
+
+/// [[suite]]: name = "bbob" (functions 1-24, instances from 1) or "classic" (Yao et al. 1999's
+/// F1-F23, instance 0 as defined), with `functions`, `instances` and `dimensions` lists; one
+/// problem per (function, instance, dimension), "PREFIX-fN-iK-dD" (fixed-dimension functions: their
+/// own dimension only).
+void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t) {
+    const int line = static_cast<int>(t.source().begin.line);
+    const std::string where = fmt::format("{}:{}", file, line);
+    static const std::set<std::string> keys{"name", "id", "functions", "instances", "dimensions"};
+    for (auto&& [key, value] : t)
+        if (!keys.count(std::string(key.str())))
+            fail(at(file, value), "unknown key '" + std::string(key.str()) +
+                                      "' in a [[suite]] (name, id, functions, instances, dimensions)");
+    const std::string name = need_string(file, t, "name", where);
+    if (name != "bbob" && name != "classic") fail(where, "unknown suite '" + name + "' (bbob, classic)");
+    const bool bbob = name == "bbob";
+    const std::string prefix = t.get("id") ? need_string(file, t, "id", where) : name;
+    std::vector<std::int64_t> functions, instances, dimensions;
+    for (std::int64_t f = 1; f <= (bbob ? 24 : 23); ++f) functions.push_back(f);
+    instances = bbob ? std::vector<std::int64_t>{1, 2, 3, 4, 5} : std::vector<std::int64_t>{0};
+    if (const auto* n = t.get("functions")) functions = need_integers(file, *n, "functions");
+    if (const auto* n = t.get("instances")) instances = need_integers(file, *n, "instances");
+    if (const auto* n = t.get("dimensions"))
+        dimensions = need_integers(file, *n, "dimensions");
+    else
+        fail(where, "a [[suite]] needs 'dimensions' (a list of integers)");
+    for (auto* list : {&functions, &instances, &dimensions})
+        if (list->empty()) fail(where, "the lists of a [[suite]] must not be empty");
+    for (const std::int64_t f : functions) {
+        if (f < 1 || f > (bbob ? 24 : 23))
+            fail(at(file, *t.get("functions")),
+                 fmt::format("function {} is not in the {} suite (1-{})", f, name, bbob ? 24 : 23));
+        const std::string function = (bbob ? "bbob-f" : "yao-f") + std::to_string(f);
+        const auto fixed = continuous::catalog().find(function)->entry.fixed_dim;
+        std::set<std::int64_t> seen;
+        for (const std::int64_t d : dimensions) {
+            const std::int64_t dim = fixed ? static_cast<std::int64_t>(fixed) : d;
+            if (!seen.insert(dim).second) continue;
+            for (const std::int64_t k : instances) {
+                CampaignProblem p;
+                p.line = line;
+                p.suite = name;
+                p.id = fmt::format("{}-f{}-i{}-d{}", prefix, f, k, dim);
+                p.spec = ContinuousSpec{function, dim, k};
+                out.push_back(std::move(p));
+            }
+        }
+    }
 }
 
 CampaignAlgorithm read_algorithm(const std::string& file, const toml::table& t) {
@@ -157,17 +238,21 @@ Campaign read_campaign(const std::string& path) {
                     fail(at(path, bv), "unknown key '" + kk + "' in [budget] (evaluations, iterations, target)");
                 }
             }
+        } else if (k == "suite") {
+            const toml::array* a = value.as_array();
+            if (!a || !a->is_array_of_tables()) fail(at(path, value), "'suite' must be [[suite]] tables");
+            for (const toml::node& n : *a) add_suite(c.problems, path, *n.as_table());
         } else if (k == "problem" || k == "algorithm") {
             const toml::array* a = value.as_array();
             if (!a || !a->is_array_of_tables()) fail(at(path, value), "'" + k + "' must be [[" + k + "]] tables");
             for (const toml::node& n : *a) {
                 if (k == "problem")
-                    c.problems.push_back(read_problem(path, *n.as_table(), folder));
+                    add_problem(c.problems, path, *n.as_table(), folder);
                 else
                     c.algorithms.push_back(read_algorithm(path, *n.as_table()));
             }
         } else {
-            fail(at(path, value), "unknown key '" + k + "' (name, seeds, budget, problem, algorithm)");
+            fail(at(path, value), "unknown key '" + k + "' (name, seeds, budget, problem, suite, algorithm)");
         }
     }
     prepare(c);

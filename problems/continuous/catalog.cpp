@@ -7,11 +7,16 @@
 #include <limits>
 #include <type_traits>
 #include <utility>
+#include <tuple>
 #include <variant>
 
 #include "framework/error.hpp"
+#include "problems/continuous/bbob/suite.hpp"
+#include "problems/continuous/extras.hpp"
 #include "problems/continuous/functions.hpp"
 #include "problems/continuous/transformed.hpp"
+#include "problems/continuous/yao.hpp"
+#include "problems/continuous/yao_fixed.hpp"
 
 namespace pride::continuous {
 
@@ -20,8 +25,11 @@ namespace {
 template <class... F>
 using WithInstances = std::variant<F..., Transformed<F>...>;
 
-// Scalable functions appear plain and transformed (instances k >= 1, shifted-*).
-using Scalable = WithInstances<Sphere, Rastrigin, Rosenbrock, Ackley, Griewank, Schwefel>;
+// Scalable functions appear plain and transformed (instances k >= 1, shifted-*); fixed-dimension
+// ones (Yao's F14-F23) and BBOB's (which build their own instances) plain only.
+using Scalable =
+    WithInstances<Sphere, Rastrigin, Rosenbrock, Ackley, Griewank, Schwefel, Schwefel222, Schwefel12, Schwefel221,
+                  Step, QuarticNoise, Schwefel226, Penalized1, Penalized2, Ellipsoid, Levy, Zakharov, StyblinskiTang>;
 
 template <class V, class... More>
 struct Append;
@@ -30,7 +38,14 @@ struct Append<std::variant<A...>, More...> {
     using type = std::variant<A..., More...>;
 };
 
-using Any = Scalable;
+template <class V, class Tuple>
+struct AppendTuple;
+template <class V, class... T>
+struct AppendTuple<V, std::tuple<T...>> : Append<V, T...> {};
+
+using Any = AppendTuple<Append<Scalable, ShekelFoxholes, Kowalik, SixHumpCamel, Branin, GoldsteinPrice, Hartman3,
+                               Hartman6, Shekel5, Shekel7, Shekel10>::type,
+                        bbob::All>::type;
 
 template <class F>
 constexpr bool has_batch = requires(F& f, MatrixView points, std::span<double> values) {
@@ -115,6 +130,31 @@ F build(std::size_t dim, const FunctionInfo* info) {
         return F(dim);
 }
 
+std::string number_text(double v) {
+    std::string s = std::to_string(v);
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s;
+}
+
+/// "Yao et al. 1999 F17: branin on [-5, 10] x [0, 15]": the formula's name and the box, read off
+/// the function itself (Branin's differs per coordinate).
+template <class F>
+std::string yao_summary(int number, std::string_view function, const FunctionInfo* info) {
+    const std::size_t dim = F::info.fixed_dim ? F::info.fixed_dim : F::info.min_dim;
+    const F f = build<F>(dim, info);
+    std::string box;
+    for (std::size_t i = 0; i < f.dimension(); ++i) {
+        const std::string side = "[" + number_text(f.lower()[i]) + ", " + number_text(f.upper()[i]) + "]";
+        if (F::info.fixed_dim == 0) {
+            box = side + "^D";
+            break;
+        }
+        box += (i ? " x " : "") + side;
+    }
+    return "Yao et al. 1999 F" + std::to_string(number) + ": " + std::string(function) + " on " + box;
+}
+
 /// A scalable function: instance 0 as defined, k >= 1 through instance_transform(). `info`: a
 /// static table other than F's own (Yao's box for the same formula), never a copy, since the
 /// function keeps a pointer to it.
@@ -147,6 +187,44 @@ CatalogEntry shifted() {
     return e;
 }
 
+/// A fixed-dimension function (Yao's F14-F23): its one dimension, instance 0 only.
+template <class F>
+CatalogEntry fixed(std::string name) {
+    CatalogEntry e;
+    e.min_dim = F::info.fixed_dim;
+    e.fixed_dim = F::info.fixed_dim;
+    e.instances = Instances::none;
+    e.make = [name](std::size_t dim, std::int64_t) { return wrap(F(dim), name, 0); };
+    return e;
+}
+
+template <class F>
+CatalogEntry entry_for(std::string name, const FunctionInfo* info = nullptr) {
+    if constexpr (F::info.fixed_dim != 0)
+        return fixed<F>(std::move(name));
+    else
+        return scalable<F>(std::move(name), info);
+}
+
+template <class F>
+void add(Registry<CatalogEntry>& r) {
+    r.add(std::string(F::info.name), std::string(F::info.summary), entry_for<F>(std::string(F::info.name)));
+}
+
+/// yao-fN: Yao, Liu and Lin (1999), Table I, function N: the class F with the table `info` (Yao's
+/// box where it differs from the plain name's: F1, F5, F10).
+template <class F>
+void add_yao(Registry<CatalogEntry>& r, int number, const FunctionInfo* info = nullptr) {
+    const YaoEntry& y = yao_table[static_cast<std::size_t>(number - 1)];
+    const FunctionInfo& table = info ? *info : F::info;
+    require(y.function == F::info.name && y.info == &table, "catalog", "yao_table disagrees at F" + std::to_string(number));
+    const std::string alias(y.alias);
+    CatalogEntry e = entry_for<F>(alias, info);
+    e.suite = "classic";
+    e.number = number;
+    r.add(alias, yao_summary<F>(number, y.function, info), std::move(e));
+}
+
 template <class F>
 void add_scalable(Registry<CatalogEntry>& r, bool with_shift) {
     r.add(std::string(F::info.name), std::string(F::info.summary), scalable<F>(std::string(F::info.name)));
@@ -154,6 +232,25 @@ void add_scalable(Registry<CatalogEntry>& r, bool with_shift) {
         r.add("shifted-" + std::string(F::info.name),
               std::string(F::info.name) + " with its optimum moved off the centre (instance.hpp: shift_optimum)",
               shifted<F>());
+}
+
+/// bbob-fN: COCO's function N, instances from 1 (the class builds its own instance).
+template <class F>
+void add_bbob(Registry<CatalogEntry>& r) {
+    CatalogEntry e;
+    e.min_dim = F::info.min_dim;
+    e.instances = Instances::coco;
+    e.suite = "bbob";
+    e.number = F::id;
+    e.make = [](std::size_t dim, std::int64_t instance) {
+        return wrap(F(dim, instance), std::string(F::info.name), instance);
+    };
+    r.add(std::string(F::info.name), "BBOB " + std::string(F::info.summary) + "; COCO's instances", std::move(e));
+}
+
+template <class... F>
+void add_bbob_suite(Registry<CatalogEntry>& r, std::tuple<F...>*) {
+    (add_bbob<F>(r), ...);
 }
 
 }  // namespace
@@ -170,6 +267,54 @@ const Registry<CatalogEntry>& catalog() {
         // would leave [-500, 500], where the formula has lower values than its "optimum" (its
         // instances k >= 1 clamp the argument instead: instance.hpp).
         add_scalable<Schwefel>(reg, false);
+        // Yao et al. (1999)'s functions under their own names, then the extras.
+        add<Schwefel222>(reg);
+        add<Schwefel12>(reg);
+        add<Schwefel221>(reg);
+        add<Step>(reg);
+        add<QuarticNoise>(reg);
+        add<Schwefel226>(reg);
+        add<Penalized1>(reg);
+        add<Penalized2>(reg);
+        add<ShekelFoxholes>(reg);
+        add<Kowalik>(reg);
+        add<SixHumpCamel>(reg);
+        add<Branin>(reg);
+        add<GoldsteinPrice>(reg);
+        add<Hartman3>(reg);
+        add<Hartman6>(reg);
+        add<Shekel5>(reg);
+        add<Shekel7>(reg);
+        add<Shekel10>(reg);
+        add<Ellipsoid>(reg);
+        add<Levy>(reg);
+        add<Zakharov>(reg);
+        add<StyblinskiTang>(reg);
+        // The F numbers of the swarm literature (Yao et al. 1999, Table I).
+        add_yao<Sphere>(reg, 1, &yao_f1_info);
+        add_yao<Schwefel222>(reg, 2);
+        add_yao<Schwefel12>(reg, 3);
+        add_yao<Schwefel221>(reg, 4);
+        add_yao<Rosenbrock>(reg, 5, &yao_f5_info);
+        add_yao<Step>(reg, 6);
+        add_yao<QuarticNoise>(reg, 7);
+        add_yao<Schwefel226>(reg, 8);
+        add_yao<Rastrigin>(reg, 9);
+        add_yao<Ackley>(reg, 10, &yao_f10_info);
+        add_yao<Griewank>(reg, 11);
+        add_yao<Penalized1>(reg, 12);
+        add_yao<Penalized2>(reg, 13);
+        add_yao<ShekelFoxholes>(reg, 14);
+        add_yao<Kowalik>(reg, 15);
+        add_yao<SixHumpCamel>(reg, 16);
+        add_yao<Branin>(reg, 17);
+        add_yao<GoldsteinPrice>(reg, 18);
+        add_yao<Hartman3>(reg, 19);
+        add_yao<Hartman6>(reg, 20);
+        add_yao<Shekel5>(reg, 21);
+        add_yao<Shekel7>(reg, 22);
+        add_yao<Shekel10>(reg, 23);
+        add_bbob_suite(reg, static_cast<bbob::All*>(nullptr));
         return reg;
     }();
     return r;

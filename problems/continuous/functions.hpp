@@ -14,6 +14,8 @@ namespace pride::continuous {
 struct Sphere : BoxFunction {
     static constexpr FunctionInfo info{"sphere", "sum of squares; unimodal, separable", -5.12, 5.12, 1, 0.0, 0.0};
     explicit Sphere(std::size_t dim) : BoxFunction(dim, info) {}
+    /// The same formula under another static table (name, box; never a temporary): yao.hpp.
+    Sphere(std::size_t dim, const FunctionInfo& other) : BoxFunction(dim, other) {}
     double evaluate(std::span<const double> x) const noexcept {
         double f = 0.0;
         for (double v : x) f += v * v;
@@ -26,6 +28,8 @@ struct Rastrigin : BoxFunction {
     static constexpr FunctionInfo info{
         "rastrigin", "10n + sum(x^2 - 10cos(2 pi x)); highly multimodal", -5.12, 5.12, 1, 0.0, 0.0};
     explicit Rastrigin(std::size_t dim) : BoxFunction(dim, info) {}
+    /// The same formula under another static table (name, box; never a temporary): yao.hpp.
+    Rastrigin(std::size_t dim, const FunctionInfo& other) : BoxFunction(dim, other) {}
     double evaluate(std::span<const double> x) const noexcept {
         constexpr double omega = 2.0 * std::numbers::pi;
         double f = 10.0 * static_cast<double>(x.size());
@@ -39,6 +43,8 @@ struct Rosenbrock : BoxFunction {
     static constexpr FunctionInfo info{"rosenbrock", "curved narrow valley; minimum at (1,...,1)", -5.0, 10.0, 2, 1.0,
                                        0.0};
     explicit Rosenbrock(std::size_t dim) : BoxFunction(dim, info) {}
+    /// The same formula under another static table (name, box; never a temporary): yao.hpp.
+    Rosenbrock(std::size_t dim, const FunctionInfo& other) : BoxFunction(dim, other) {}
     double evaluate(std::span<const double> x) const noexcept {
         double f = 0.0;
         for (std::size_t i = 0; i + 1 < x.size(); ++i) {
@@ -55,6 +61,8 @@ struct Ackley : BoxFunction {
     static constexpr FunctionInfo info{"ackley", "nearly flat outer region, deep central hole", -15.0, 30.0, 1, 0.0,
                                        0.0};
     explicit Ackley(std::size_t dim) : BoxFunction(dim, info) {}
+    /// The same formula under another static table (name, box; never a temporary): yao.hpp.
+    Ackley(std::size_t dim, const FunctionInfo& other) : BoxFunction(dim, other) {}
     double evaluate(std::span<const double> x) const noexcept {
         constexpr double omega = 2.0 * std::numbers::pi;
         double s1 = 0.0, s2 = 0.0;
@@ -72,6 +80,8 @@ struct Griewank : BoxFunction {
     static constexpr FunctionInfo info{"griewank", "sum x^2/4000 - prod cos(x_i/sqrt(i)) + 1", -600.0, 600.0, 1, 0.0,
                                        0.0};
     explicit Griewank(std::size_t dim) : BoxFunction(dim, info) {}
+    /// The same formula under another static table (name, box; never a temporary): yao.hpp.
+    Griewank(std::size_t dim, const FunctionInfo& other) : BoxFunction(dim, other) {}
     double evaluate(std::span<const double> x) const noexcept {
         double sum = 0.0, prod = 1.0;
         for (double v : x) sum += v * v;
