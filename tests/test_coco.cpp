@@ -590,3 +590,59 @@ TEST_CASE("coco: a store written by pride bench, read back and checked against i
     REQUIRE(ert_csv.status == 0);
     CHECK(std::count(ert_csv.out.begin(), ert_csv.out.end(), '\n') == 1 + 2 * 11);
 }
+
+TEST_CASE("coco: a bbob [[suite]] campaign from pride bench to tables, figures and IOH files",
+          "[report][coco][bench]") {
+    TempDir dir("pride-coco-suite");
+    const std::string config = dir.write("s.toml",
+                                         "name = \"bbob-small\"\nseeds = 2\n[budget]\nevaluations = 400\n"
+                                         "[[suite]]\nname = \"bbob\"\nfunctions = [1, 20]\ninstances = [1, 2]\n"
+                                         "dimensions = [2]\n"
+                                         "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n");
+    const std::string store = dir.file("s.sqlite");
+    const auto bench = run_pride("bench " + quote(config) + " --jobs 2 --out " + quote(store));
+    INFO(bench.out << bench.err);
+    REQUIRE(bench.status == 0);
+    const auto s = pride::report::read_store(store);
+    REQUIRE(s.problems->size() == 4);
+    for (const auto& p : *s.problems) {
+        CHECK(p.suite == "bbob");
+        CHECK(p.f_opt);
+        CHECK((p.fid == 1 || p.fid == 20));
+        CHECK(p.function == fmt::format("bbob-f{}", *p.fid));
+        CHECK((p.instance == 1 || p.instance == 2));
+    }
+    const auto report = pride::report::load_report(store);
+    REQUIRE(report.coco);
+    REQUIRE(report.coco->erts.size() == 2);
+    CHECK(report.coco->erts[0].function == "bbob-f1");
+    CHECK(report.coco->erts[0].instances == 2);
+    CHECK(report.coco->erts[0].runs == 4);  // 2 instances x 2 seeds
+    CHECK(report.coco->erts[1].function == "bbob-f20");
+    const auto md = run_pride("report " + quote(store) + " --plots " + quote(dir.file("figures")));
+    REQUIRE(md.status == 0);
+    CHECK(md.out.find("### bbob-f1, 2-D (2 instances)") != std::string::npos);
+    CHECK(md.out.find("### bbob-f20, 2-D (2 instances)") != std::string::npos);
+    for (const char* stem : {"ecdf_all", "ecdf_separable", "ecdf_weakly-structured"})
+        CHECK(std::filesystem::exists(dir.path() / "figures" / (std::string(stem) + ".png")));
+
+    // IOH: one function per fid, the runs of both instances in one data file, named by instance.
+    const std::string out = dir.file("ioh");
+    REQUIRE(run_pride("export " + quote(store) + " --ioh " + quote(out)).status == 0);
+    const std::filesystem::path a = std::filesystem::path(out) / "pso";
+    const std::string info = slurp(a / "IOHprofiler_f20_bbob-f20.info");
+    CHECK(info.rfind("suite = \"BBOB\", funcId = 20, funcName = \"bbob-f20\", DIM = 2, maximization = \"F\", "
+                     "algId = \"pso\", algInfo = \"campaign bbob-small\"\n%\n"
+                     "data_f20_bbob-f20/IOHprofiler_f20_DIM2.dat, 1:400|",
+                     0) == 0);
+    CHECK(info.find(", 2:400|") != std::string::npos);
+    CHECK(std::count(info.begin(), info.end(), ':') == 4);
+    const std::string dat = slurp(a / "data_f20_bbob-f20" / "IOHprofiler_f20_DIM2.dat");
+    std::size_t blocks = 0;
+    for (auto at = dat.find("\"function evaluation\""); at != std::string::npos;
+         at = dat.find("\"function evaluation\"", at + 1))
+        ++blocks;
+    CHECK(blocks == 4);
+    CHECK(std::filesystem::exists(a / "IOHprofiler_f1_bbob-f1.info"));
+    CHECK(std::distance(std::filesystem::directory_iterator(a), std::filesystem::directory_iterator()) == 4);
+}
