@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <algorithm>
 #include <set>
 
 #include "framework/error.hpp"
@@ -213,6 +214,7 @@ Campaign read_campaign(const std::string& path) {
         c.text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
     const auto folder = std::filesystem::path(path).parent_path();
+    bool suites_read = false;
     for (auto&& [key, value] : root) {
         const std::string k(key.str());
         if (k == "name") {
@@ -242,6 +244,7 @@ Campaign read_campaign(const std::string& path) {
             const toml::array* a = value.as_array();
             if (!a || !a->is_array_of_tables()) fail(at(path, value), "'suite' must be [[suite]] tables");
             for (const toml::node& n : *a) add_suite(c.problems, path, *n.as_table());
+            suites_read = true;
         } else if (k == "problem" || k == "algorithm") {
             const toml::array* a = value.as_array();
             if (!a || !a->is_array_of_tables()) fail(at(path, value), "'" + k + "' must be [[" + k + "]] tables");
@@ -255,6 +258,10 @@ Campaign read_campaign(const std::string& path) {
             fail(at(path, value), "unknown key '" + k + "' (name, seeds, budget, problem, suite, algorithm)");
         }
     }
+    // toml++ visits keys in name order; problems and suites run in the order the file gives them.
+    if (suites_read)
+        std::stable_sort(c.problems.begin(), c.problems.end(),
+                         [](const CampaignProblem& a, const CampaignProblem& b) { return a.line < b.line; });
     prepare(c);
     return c;
 }

@@ -95,7 +95,8 @@ struct Schwefel : BoxFunction {
     // The optimum coordinate is the root of the derivative to double precision; f there is about
     // 6e-14 per coordinate rather than 0, because 418.9828872724338 is itself rounded.
     static constexpr FunctionInfo info{
-        "schwefel", "deceptive: the second-best region is far from the best", -500.0, 500.0, 1, 420.968746359982, 0.0};
+        "schwefel", "deceptive: the second-best region is far from the best", -500.0, 500.0, 1, 420.968746359982, 0.0,
+        0, true};  // bounded_domain: below its optimum outside [-500, 500] (instance.hpp)
     explicit Schwefel(std::size_t dim) : BoxFunction(dim, info) {}
     double evaluate(std::span<const double> x) const noexcept {
         double s = 0.0;
