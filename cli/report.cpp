@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 
 #include "engine/report/report.hpp"
@@ -10,8 +11,11 @@
 namespace pride::cli {
 namespace {
 
-/// Runs scripts/plot_campaign.py with Debian's python3 (the one python3-matplotlib serves).
-void plot(const std::string& store, const std::string& folder) {
+/// Runs scripts/plot_campaign.py with Debian's python3 (the one python3-matplotlib serves), and
+/// with the campaign's precisions scripts/plot_ecdf.py on the ECDF curves computed here
+/// (engine/report/coco.hpp), written to DIR/ecdf.json, so the plots and the tables share one
+/// definition.
+void plot(const std::string& store, const std::string& folder, const report::ReportData& data) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     require(!ec && std::filesystem::is_directory(folder), "--plots", folder + ": cannot create the folder");
@@ -23,19 +27,33 @@ void plot(const std::string& store, const std::string& folder) {
             "needs python3 with matplotlib (apt-get install python3-matplotlib)");
     const std::string command = "'" + python + "' '" + script + "' '" + store + "' '" + folder + "'";
     require(std::system(command.c_str()) == 0, "--plots", "the plotting script failed (see above)");
+    if (!data.coco || data.coco->curves.empty()) return;
+    const std::string ecdf_script = std::string(PRIDE_SCRIPTS_DIR) + "/plot_ecdf.py";
+    require(std::filesystem::exists(ecdf_script), "--plots", ecdf_script + " is missing");
+    const std::string json = (std::filesystem::path(folder) / "ecdf.json").string();
+    {
+        std::ofstream f(json);
+        f << report::coco::ecdf_json(data.campaign, *data.coco);
+        require(f.good(), "--plots", json + ": cannot write the file");
+    }
+    const std::string ecdf = "'" + python + "' '" + ecdf_script + "' '" + json + "' '" + folder + "'";
+    require(std::system(ecdf.c_str()) == 0, "--plots", "the ECDF plotting script failed (see above)");
 }
 
 }  // namespace
 
 int report_command(const ReportOptions& o, std::ostream& out) {
-    require(o.format == "md" || o.format == "csv" || o.format == "latex", "--format",
-            "expected md, csv or latex, got '" + o.format + "'");
+    require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv", "--format",
+            "expected md, csv, latex or ert-csv, got '" + o.format + "'");
     // The whole store is read and checked before any figure is drawn from it.
     const report::ReportData data = report::load_report(o.store);
-    const std::string text = o.format == "csv"  ? report::render_csv(data)
-                             : o.format == "md" ? report::render_markdown(data)
-                                                : report::render_latex(data);
-    if (!o.plots.empty()) plot(o.store, o.plots);
+    require(o.format != "ert-csv" || data.coco, "--format ert-csv",
+            o.store + ": records no target hits (no precisions, or no run on a problem with a known optimum)");
+    const std::string text = o.format == "csv"       ? report::render_csv(data)
+                             : o.format == "ert-csv" ? report::render_ert_csv(data)
+                             : o.format == "md"      ? report::render_markdown(data)
+                                                     : report::render_latex(data);
+    if (!o.plots.empty()) plot(o.store, o.plots, data);
     out << text;
     return 0;
 }

@@ -33,8 +33,10 @@ TEST_CASE("export: IOHprofiler files, one folder per algorithm, one block per ru
     for (const char* algorithm : {"pso", "ga"}) {
         const fs::path a = dir / "ioh" / algorithm;
         const std::string info = slurp(a / "IOHprofiler_f1_sphere5.info");
-        CHECK(info.find("funcId = 1, funcName = 'sphere5', DIM = 5, maximization = 'F', algId = '" +
-                        std::string(algorithm) + "'") != std::string::npos);
+        // As IOHexperimenter's Analyzer writes them: double quotes.
+        CHECK(info.find("suite = \"pride\", funcId = 1, funcName = \"sphere5\", DIM = 5, maximization = \"F\", "
+                        "algId = \"" +
+                        std::string(algorithm) + "\"") != std::string::npos);
         CHECK(info.find("data_f1_sphere5/IOHprofiler_f1_DIM5.dat, 1:200|") != std::string::npos);
         CHECK(info.find(", 3:200|") != std::string::npos);
         const std::string dat = slurp(a / "data_f1_sphere5" / "IOHprofiler_f1_DIM5.dat");

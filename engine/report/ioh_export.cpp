@@ -3,10 +3,11 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <map>
+#include <tuple>
 #include <vector>
 
 #include "engine/report/store.hpp"
@@ -23,12 +24,34 @@ std::string safe(const std::string& name) {
     return s;
 }
 
+/// A name inside the .info file's double quotes.
+std::string quoted(const std::string& name) {
+    std::string s;
+    for (const char c : name) s += c == '"' || c == '\n' || c == '\r' ? '_' : c;
+    return s;
+}
+
+/// A value as IOHexperimenter's FlatFile logger writes it: "None" where it has none (its RawY
+/// property gives no value for an infinite f(x), and the logger writes its no-value text, "None").
+std::string value(double v) {
+    return std::isfinite(v) ? fmt::format("{:.17g}", v) : "None";
+}
+
+/// One IOHprofiler function: a .info file and, per dimension, a .dat file.
+struct Function {
+    std::int64_t id = 0;
+    std::string name, suite;
+    bool in_suite = false;  // runs named by instance (IOH) rather than by seed
+    // dim -> the runs, each with the instance it names
+    std::map<std::int64_t, std::vector<std::pair<std::int64_t, const StoredRun*>>> runs;
+};
+
 }  // namespace
 
 ExportSummary export_ioh(const std::string& store_path, const std::string& folder) {
     require(!folder.empty(), "IOH export", "name the folder to write");
     const CampaignStore store = read_store(store_path);
-    // The function ids are the problems' places in the campaign, which only this table keeps.
+    // The function ids and dimensions are in this table only.
     if (!store.problems) throw DamagedStore(store_path, "it has no table problems");
     require(!store.runs.empty(), store_path, "holds no runs yet (run pride bench first)");
     std::map<std::string, std::map<std::string, std::vector<const StoredRun*>>> runs;  // algorithm -> problem
@@ -38,35 +61,67 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
     summary.folder = folder;
     summary.algorithms = runs.size();
     for (const auto& [algorithm, by_problem] : runs) {
+        // Suite problems (a suite and a fid, e.g. bbob) as IOHexperimenter writes them: one
+        // function per fid (file IOHprofiler_f<fid>_<function>), all its instances and seeds as
+        // the runs of one .dat per dimension, each run named by its instance. Other problems keep
+        // their place in the campaign as function id, one function per problem, runs by seed.
+        std::map<std::tuple<int, std::int64_t, std::string>, Function> functions;
+        for (std::size_t f = 0; f < store.problems->size(); ++f) {
+            const StoredProblem& p = (*store.problems)[f];
+            const auto it = by_problem.find(p.id);
+            if (it == by_problem.end()) continue;
+            const bool in_suite = p.suite && p.fid;
+            const std::int64_t id = in_suite ? *p.fid : static_cast<std::int64_t>(f + 1);
+            const std::string name = in_suite ? p.function.value_or(p.id) : p.id;
+            Function& fn = functions[{in_suite ? 0 : 1, id, name}];
+            fn.id = id;
+            fn.name = name;
+            fn.in_suite = in_suite;
+            // IOHexperimenter's name of the BBOB suite; problems outside a suite are pride's.
+            fn.suite = !in_suite ? "pride" : *p.suite == "bbob" ? "BBOB" : *p.suite;
+            for (const StoredRun* r : it->second) fn.runs[p.dim].emplace_back(in_suite ? p.instance : r->seed, r);
+        }
         const std::filesystem::path dir = std::filesystem::path(folder) / safe(algorithm);
         std::error_code ec;
         std::filesystem::create_directories(dir, ec);
         require(!ec, dir.string(), "cannot create the folder");
-        for (std::size_t f = 0; f < store.problems->size(); ++f) {
-            const auto& [problem, dim] = (*store.problems)[f];
-            const auto it = by_problem.find(problem);
-            if (it == by_problem.end()) continue;
-            const std::string id = std::to_string(f + 1), name = safe(problem);
-            const std::string data_folder = "data_f" + id + "_" + name;
-            const std::string dat = "IOHprofiler_f" + id + "_DIM" + std::to_string(dim) + ".dat";
+        for (const auto& [key, fn] : functions) {
+            const std::string stem = fmt::format("f{}_{}", fn.id, safe(fn.name));
+            const std::string data_folder = "data_" + stem;
             std::filesystem::create_directories(dir / data_folder, ec);
-            std::ofstream d(dir / data_folder / dat);
-            std::string runs_line;
-            for (const StoredRun* r : it->second) {
-                // One block per run: the best value after each iteration, at its evaluation count.
-                d << "\"function evaluation\" \"current f(x)\" \"best-so-far f(x)\"\n";
-                for (std::size_t k = 0; k < r->history.size() && k < r->history_evaluations.size(); ++k)
-                    d << fmt::format("{} {:.17g} {:.17g}\n", r->history_evaluations[k], r->history[k], r->history[k]);
-                runs_line += fmt::format(", {}:{}|{:.17g}", r->seed, r->evaluations,
-                                         r->best.value_or(std::numeric_limits<double>::infinity()));
+            require(!ec, (dir / data_folder).string(), "cannot create the folder");
+            std::ofstream info(dir / ("IOHprofiler_" + stem + ".info"));
+            bool first = true;
+            for (const auto& [dim, dim_runs] : fn.runs) {
+                const std::string dat = fmt::format("IOHprofiler_f{}_DIM{}.dat", fn.id, dim);
+                std::ofstream d(dir / data_folder / dat);
+                // As IOHexperimenter's Analyzer (v1, the .info format) writes them: a header line per
+                // dimension, "%", the data file, then "instance:evaluations|best" per run.
+                info << fmt::format(
+                    "{}suite = \"{}\", funcId = {}, funcName = \"{}\", DIM = {}, maximization = \"F\", algId = "
+                    "\"{}\", algInfo = \"campaign {}\"\n%\n{}/{}",
+                    first ? "" : "\n", quoted(fn.suite), fn.id, quoted(fn.name), dim, quoted(algorithm),
+                    quoted(store.name), data_folder, dat);
+                first = false;
+                for (const auto& [number, r] : dim_runs) {
+                    // One block per run: the best value after each iteration, at its evaluation
+                    // count, in the five columns of IOHexperimenter's old data format (no
+                    // transformation here: af(x)+b = f(x)).
+                    d << "\"function evaluation\" \"current f(x)\" \"best-so-far f(x)\" \"current af(x)+b\" "
+                         "\"best af(x)+b\"\n";
+                    for (std::size_t k = 0; k < r->history.size() && k < r->history_evaluations.size(); ++k) {
+                        const std::string v = value(r->history[k]);
+                        d << fmt::format("{} {} {} {} {}\n", r->history_evaluations[k], v, v, v, v);
+                    }
+                    info << fmt::format(", {}:{}|{}", number, r->evaluations,
+                                        r->best ? fmt::format("{:.17g}", *r->best) : std::string("None"));
+                }
+                require(d.good(), (dir / data_folder / dat).string(), "cannot write the file");
+                ++summary.files;
             }
-            std::ofstream info(dir / ("IOHprofiler_f" + id + "_" + name + ".info"));
-            info << fmt::format(
-                "suite = 'pride', funcId = {}, funcName = '{}', DIM = {}, maximization = 'F', algId = "
-                "'{}', algInfo = 'campaign {}'\n%\n{}/{}{}\n",
-                id, problem, dim, algorithm, store.name, data_folder, dat, runs_line);
-            require(d.good() && info.good(), dir.string(), "cannot write the files");
-            summary.files += 2;
+            info << "\n";
+            require(info.good(), dir.string(), "cannot write the files");
+            ++summary.files;
         }
     }
     return summary;

@@ -54,6 +54,11 @@ std::string num(double v) {
     return std::isfinite(v) ? fmt::format("{:.6g}", v) : "inf";
 }
 
+/// For reading an ERT: 3 significant digits.
+std::string num3(double v) {
+    return std::isfinite(v) ? fmt::format("{:.3g}", v) : "inf";
+}
+
 /// For reading back: the shortest form that parses to the same double.
 std::string exact(double v) {
     return std::isfinite(v) ? fmt::format("{}", v) : "inf";
@@ -87,6 +92,8 @@ std::string latex(const std::string& s) {
     }
     return out;
 }
+
+std::string render_ert(const coco::Analysis& a, bool md);
 
 /// Markdown and LaTeX share their columns; only the cell syntax differs.
 std::string render_table(const ReportData& report, bool md) {
@@ -142,6 +149,81 @@ std::string render_table(const ReportData& report, bool md) {
                                 j + 1 < f->algorithms.size() ? "," : "");
         text += fmt::format("; chi-squared {:.4g}, p = {:.3g}\n", f->test.statistic, f->test.p_value);
     }
+    if (report.coco) text += render_ert(*report.coco, md);
+    return text;
+}
+
+/// The precisions an ERT table shows: of COCO's 1e1, 1e-1, 1e-3, 1e-5, 1e-7, 1e-8 those the
+/// campaign records, else all of the campaign's; as indices into its precisions.
+std::vector<std::size_t> shown_precisions(const std::vector<double>& precisions) {
+    std::vector<std::size_t> shown;
+    for (const double want : {1e1, 1e-1, 1e-3, 1e-5, 1e-7, 1e-8})
+        for (std::size_t k = 0; k < precisions.size(); ++k)
+            if (std::abs(precisions[k] - want) <= 1e-9 * want) {
+                shown.push_back(k);
+                break;
+            }
+    if (shown.empty())
+        for (std::size_t k = 0; k < precisions.size(); ++k) shown.push_back(k);
+    return shown;
+}
+
+/// A precision as a column title: 1e-3 for a power of ten, else 6 significant digits.
+std::string precision_label(double p) {
+    if (p > 0) {
+        const double k = std::round(std::log10(p));
+        if (std::abs(p - std::pow(10.0, k)) <= 1e-9 * p) return fmt::format("1e{}", static_cast<int>(k));
+    }
+    return fmt::format("{:.6g}", p);
+}
+
+/// The ERT tables, one per function and dimension: rows the algorithms, columns the shown
+/// precisions and #succ (the runs that reached the campaign's smallest precision, of all).
+std::string render_ert(const coco::Analysis& a, bool md) {
+    const auto shown = shown_precisions(a.precisions);
+    const std::string sep = md ? " | " : " & ", end = md ? " |\n" : " \\\\\n", begin = md ? "| " : "";
+    auto line = [&](const std::vector<std::string>& cols) {
+        std::string s = begin;
+        for (std::size_t i = 0; i < cols.size(); ++i) s += (i ? sep : "") + (md ? markdown(cols[i]) : latex(cols[i]));
+        return s + end;
+    };
+    std::vector<std::string> head{"algorithm"};
+    for (const std::size_t k : shown) head.push_back("ERT " + precision_label(a.precisions[k]));
+    head.push_back("#succ");
+    std::string text = md ? "\n## Expected running time (ERT)\n\n"
+                            "ERT: the evaluations of all runs (up to the target where reached) over the runs that "
+                            "reached f_opt + precision, over the instances of each function; inf where none did. "
+                            "#succ: the runs that reached the smallest precision"
+                          : "\n% Expected running time (ERT) per function and dimension; #succ: the runs that reached "
+                            "the smallest precision";
+    // The smallest precision, wherever the campaign lists it (analyse() returns none without any).
+    const std::size_t smallest =
+        static_cast<std::size_t>(std::min_element(a.precisions.begin(), a.precisions.end()) - a.precisions.begin());
+    text += fmt::format(" ({}).\n", precision_label(a.precisions[smallest]));
+    if (a.runs_without_hits)
+        text += fmt::format("{}{} runs record no target hits and are left out.\n", md ? "" : "% ", a.runs_without_hits);
+    for (std::size_t i = 0; i < a.erts.size();) {
+        const std::string& function = a.erts[i].function;
+        const std::int64_t dim = a.erts[i].dim;
+        const std::string title = fmt::format("{}, {}-D ({} instance{})", function, dim, a.erts[i].instances,
+                                              a.erts[i].instances == 1 ? "" : "s");
+        if (md) {
+            text += "\n### " + markdown(title) + "\n\n" + line(head) + "|---|";
+            for (std::size_t c = 1; c < head.size(); ++c) text += "---:|";
+            text += "\n";
+        } else {
+            text += "\n% " + title + "\n\\begin{tabular}{l" + std::string(head.size() - 1, 'r') + "}\n\\hline\n" +
+                    line(head) + "\\hline\n";
+        }
+        for (; i < a.erts.size() && a.erts[i].function == function && a.erts[i].dim == dim; ++i) {
+            const coco::ErtRow& r = a.erts[i];
+            std::vector<std::string> cols{r.algorithm};
+            for (const std::size_t k : shown) cols.push_back(num3(r.ert[k].value));
+            cols.push_back(fmt::format("{}/{}", r.ert[smallest].successes, r.runs));
+            text += line(cols);
+        }
+        if (!md) text += "\\hline\n\\end{tabular}\n";
+    }
     return text;
 }
 
@@ -151,6 +233,7 @@ ReportData make_report(const CampaignStore& store) {
     ReportData report;
     report.campaign = store.name;
     report.target = store.target;
+    report.coco = coco::analyse(store);
     std::map<std::string, std::map<std::string, Cell>> cells;
     for (const StoredRun& run : store.runs) {
         Cell& c = cells[run.problem][run.algorithm];
@@ -270,6 +353,16 @@ std::string render_csv(const ReportData& report) {
                                             optional(r.mean_evaluations_to_target))
                               : "\n";
     }
+    return text;
+}
+
+std::string render_ert_csv(const ReportData& report) {
+    std::string text = "function,dim,algorithm,precision,ert,successes,runs\n";
+    if (const auto& a = report.coco)
+        for (const coco::ErtRow& r : a->erts)
+            for (std::size_t k = 0; k < a->precisions.size(); ++k)
+                text += fmt::format("{},{},{},{},{},{},{}\n", csv(r.function), r.dim, csv(r.algorithm),
+                                    exact(a->precisions[k]), exact(r.ert[k].value), r.ert[k].successes, r.runs);
     return text;
 }
 

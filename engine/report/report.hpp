@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/report/coco.hpp"
 #include "engine/report/statistics.hpp"
 #include "engine/report/store.hpp"
 
@@ -41,6 +42,9 @@ struct ReportData {
     std::optional<double> target;
     std::vector<ReportRow> rows;              // sorted by problem, then algorithm
     std::optional<FriedmanSummary> friedman;  // with two algorithms on two problems or more
+    // With the campaign's target precisions: ERT per function, dimension and algorithm, and the
+    // ECDF curves (engine/report/coco.hpp); rendered after the table.
+    std::optional<coco::Analysis> coco;
 };
 
 /// The report of the runs of `store` (no rows when it holds none).
@@ -52,6 +56,10 @@ std::string render_markdown(const ReportData& report);
 /// A header line, then one line per row; each number in the shortest form that reads back as
 /// the same double ("inf" when infinite), fields quoted as RFC 4180 says.
 std::string render_csv(const ReportData& report);
+/// The ERT of every function, dimension, algorithm and precision (report.coco) as CSV, numbers
+/// as render_csv writes them: function,dim,algorithm,precision,ert,successes,runs; the header
+/// alone without an analysis.
+std::string render_ert_csv(const ReportData& report);
 /// A `tabular` with the markdown's columns, then Friedman's ranks as a comment.
 std::string render_latex(const ReportData& report);
 

@@ -24,10 +24,22 @@ std::string excerpt(std::string_view text, std::size_t at) {
            (to < text.size() ? "..." : "") + "'";
 }
 
-/// The numbers of a JSON list such as "[1, 2.5e-3, null]" as pride bench writes it; `null`
-/// (+inf: no feasible value yet) only when `T` is double. On failure, the character at fault.
+template <class T>
+struct Value {  // the number type of a list element
+    using type = T;
+};
+template <class T>
+struct Value<std::optional<T>> {
+    using type = T;
+};
+
+/// The numbers of a JSON list such as "[1, 2.5e-3, null]" as pride bench writes it; `null` only
+/// when `T` is double (+inf: no feasible value yet) or an optional (empty: never). On failure,
+/// the character at fault.
 template <class T>
 bool parse_list(std::string_view text, std::vector<T>& out, std::size_t& at) {
+    using V = typename Value<T>::type;
+    constexpr bool nullable = std::is_floating_point_v<T> || !std::is_same_v<T, V>;
     std::size_t& i = at;
     i = 0;
     const auto skip = [&] {
@@ -47,15 +59,18 @@ bool parse_list(std::string_view text, std::vector<T>& out, std::size_t& at) {
     }
     for (;;) {
         skip();
-        if (std::is_floating_point_v<T> && text.substr(i, 4) == "null") {
-            out.push_back(std::numeric_limits<T>::infinity());
+        if (nullable && text.substr(i, 4) == "null") {
+            if constexpr (std::is_floating_point_v<T>)
+                out.push_back(std::numeric_limits<T>::infinity());
+            else
+                out.push_back(T{});
             i += 4;
         } else {
             // from_chars alone would take "inf" and "nan": a JSON number starts with a digit.
             const std::size_t start = i;
             if (i < text.size() && text[i] == '-') ++i;
             if (i == text.size() || text[i] < '0' || text[i] > '9') return false;
-            T v{};
+            V v{};
             const auto [end, ec] = std::from_chars(text.data() + start, text.data() + text.size(), v);
             if (ec != std::errc()) return false;  // out of range included
             out.push_back(v);
@@ -147,16 +162,28 @@ class Query {
         if (sqlite3_column_type(s_, i) == SQLITE_NULL) return std::nullopt;
         return number(i, column);
     }
+    std::optional<std::string> optional_text(int i, const char* column) const {
+        if (sqlite3_column_type(s_, i) == SQLITE_NULL) return std::nullopt;
+        return text(i, column);
+    }
+    std::optional<std::int64_t> optional_integer(int i, const char* column, std::int64_t min) const {
+        if (sqlite3_column_type(s_, i) == SQLITE_NULL) return std::nullopt;
+        return integer(i, column, min);
+    }
+    bool is_null(int i) const { return sqlite3_column_type(s_, i) == SQLITE_NULL; }
     std::int64_t integer(int i, const char* column, std::int64_t min) const {
         if (sqlite3_column_type(s_, i) != SQLITE_INTEGER) fail(column, "expected an integer, got " + value(i));
         const std::int64_t v = sqlite3_column_int64(s_, i);
         if (v < min) fail(column, fmt::format("expected an integer of at least {}, got {}", min, v));
         return v;
     }
-    /// A JSON list of numbers (of counts when `T` is std::int64_t).
+    /// A JSON list of numbers (of counts when `T` is std::int64_t, of counts or nulls when it is
+    /// an optional).
     template <class T>
     std::vector<T> list(int i, const char* column) const {
-        const char* expected = std::is_floating_point_v<T> ? "a JSON list of numbers" : "a JSON list of counts";
+        const char* expected = std::is_floating_point_v<T>       ? "a JSON list of numbers"
+                               : std::is_same_v<T, std::int64_t> ? "a JSON list of counts"
+                                                                 : "a JSON list of counts or nulls";
         if (sqlite3_column_type(s_, i) != SQLITE_TEXT)
             fail(column, fmt::format("expected {}, got {}", expected, value(i)));
         const std::string json = raw_text(i);
@@ -168,6 +195,9 @@ class Query {
         if constexpr (std::is_integral_v<T>)
             for (const T v : out)
                 if (v < 0) fail(column, fmt::format("expected {}, got the negative count {}", expected, v));
+        if constexpr (!std::is_same_v<T, typename Value<T>::type>)
+            for (const T& v : out)
+                if (v && *v < 1) fail(column, fmt::format("expected {}, got the count {} (at least 1)", expected, *v));
         return out;
     }
     [[noreturn]] void fail(const char* column, const std::string& what) const {
@@ -225,25 +255,48 @@ CampaignStore read_store(const std::string& path) {
             if (!have.count(c)) throw DamagedStore(path, fmt::format("table {} has no column {}", table, c));
         return have;
     };
-    const bool has_target = columns("campaign", {"id", "name"}).count("target") > 0;
-    columns("runs", {"problem", "algorithm", "seed", "best", "evaluations", "wall_ms", "optimum", "history",
-                     "history_evaluations"});
+    const auto campaign_columns = columns("campaign", {"id", "name"});
+    const bool has_target = campaign_columns.count("target") > 0;
+    const bool has_precisions = campaign_columns.count("precisions") > 0;
+    const bool has_hits = columns("runs", {"problem", "algorithm", "seed", "best", "evaluations", "wall_ms", "optimum",
+                                           "history", "history_evaluations"})
+                              .count("target_hits") > 0;
     // Stores written before the problems table existed are still read: the report needs none of
     // it; the IOH export asks for it.
     const bool has_problems = tables.count("problems") > 0;
-    if (has_problems) columns("problems", {"id", "dim"});
+    std::set<std::string> problem_columns;
+    if (has_problems) problem_columns = columns("problems", {"id", "dim"});
+    // A column of the suite extension, or NULL in a store from before it.
+    const auto optional_column = [](const std::set<std::string>& have, const char* c) {
+        return have.count(c) ? std::string(c) : std::string("NULL");
+    };
 
     CampaignStore store;
     {
-        Query q(db, has_target ? "SELECT name, target FROM campaign WHERE id = 1"
-                               : "SELECT name, NULL FROM campaign WHERE id = 1");
+        Query q(db, fmt::format("SELECT name, {}, {} FROM campaign WHERE id = 1", has_target ? "target" : "NULL",
+                                has_precisions ? "precisions" : "NULL")
+                        .c_str());
         q.where = "the campaign row";
         if (!q.next()) throw DamagedStore(path, "table campaign has no row with id 1");
         store.name = q.text(0, "name");
         store.target = q.optional_number(1, "target");
+        if (!q.is_null(2)) {
+            // A JSON list of finite numbers, each at least 0 (null would read as +inf).
+            auto precisions = q.list<double>(2, "precisions");
+            for (const double p : precisions)
+                if (!std::isfinite(p) || p < 0)
+                    q.fail("precisions", fmt::format("expected a JSON list of numbers of at least 0, got {}", p));
+            store.precisions = std::move(precisions);
+        }
     }
+    std::set<std::string> problem_ids;
     if (has_problems) {
-        Query q(db, "SELECT rowid, id, dim FROM problems ORDER BY rowid");
+        const std::string sql =
+            fmt::format("SELECT rowid, id, dim, {}, {}, {}, {}, {} FROM problems ORDER BY rowid",
+                        optional_column(problem_columns, "function"), optional_column(problem_columns, "instance"),
+                        optional_column(problem_columns, "f_opt"), optional_column(problem_columns, "suite"),
+                        optional_column(problem_columns, "fid"));
+        Query q(db, sql.c_str());
         store.problems.emplace();
         while (q.next()) {
             q.where = fmt::format("problems row with rowid {}",
@@ -252,12 +305,19 @@ CampaignStore read_store(const std::string& path) {
             p.id = q.text(1, "id");
             q.where = fmt::format("problems row '{}'", p.id);
             p.dim = q.integer(2, "dim", 1);
+            p.function = q.optional_text(3, "function");
+            p.instance = q.optional_integer(4, "instance", 0).value_or(0);
+            p.f_opt = q.optional_number(5, "f_opt");
+            p.suite = q.optional_text(6, "suite");
+            p.fid = q.optional_integer(7, "fid", 1);
+            problem_ids.insert(p.id);
             store.problems->push_back(std::move(p));
         }
     }
-    Query q(db,
-            "SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, history_evaluations "
-            "FROM runs ORDER BY problem, algorithm, seed");
+    Query q(db, fmt::format("SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, "
+                            "history_evaluations, {} FROM runs ORDER BY problem, algorithm, seed",
+                            has_hits ? "target_hits" : "NULL")
+                    .c_str());
     while (q.next()) {
         // Named by rowid until its key is read, then by the key.
         constexpr auto any = std::numeric_limits<std::int64_t>::min();
@@ -276,6 +336,27 @@ CampaignStore read_store(const std::string& path) {
         if (!r.history_evaluations.empty() && r.history_evaluations.size() != r.history.size())
             q.fail("history_evaluations", fmt::format("expected one count per value of history ({}), got {}",
                                                       r.history.size(), r.history_evaluations.size()));
+        if (!q.is_null(10)) {
+            r.target_hits = q.list<std::optional<std::int64_t>>(10, "target_hits");
+            const std::size_t wanted = store.precisions ? store.precisions->size() : 0;
+            if (!r.target_hits.empty() && r.target_hits.size() != wanted)
+                q.fail("target_hits", store.precisions
+                                          ? fmt::format("expected one entry per precision of the campaign ({}), got {}",
+                                                        wanted, r.target_hits.size())
+                                          : fmt::format("expected no entries (the campaign records no precisions), "
+                                                        "got {}",
+                                                        r.target_hits.size()));
+            for (const auto& hit : r.target_hits)
+                if (hit && *hit > r.evaluations)
+                    q.fail("target_hits",
+                           fmt::format("expected at most the run's {} evaluations, got {}", r.evaluations, *hit));
+        }
+        // The analysis of target hits (engine/report/coco.hpp) needs each run's function and
+        // dimension; a store without the problems table gets no analysis.
+        if (store.precisions && has_problems && !problem_ids.count(r.problem))
+            q.fail("problem", fmt::format("'{}' is not in table problems (the analysis of target hits needs its "
+                                          "function and dimension)",
+                                          r.problem));
         store.runs.push_back(std::move(r));
     }
     return store;

@@ -31,16 +31,28 @@ struct StoredRun {
     // recorded, the evaluations spent by then (empty, or one per history value).
     std::vector<double> history;
     std::vector<std::int64_t> history_evaluations;
+    // One entry per precision of CampaignStore::precisions, in its order: the evaluations after
+    // which best - f_opt <= precision first held, empty where never. Empty when the run records
+    // no hits (column absent, NULL or []).
+    std::vector<std::optional<std::int64_t>> target_hits;
 };
 
 struct StoredProblem {
     std::string id;
     std::int64_t dim = 0;
+    std::optional<std::string> function;  // the registered function name (bbob-f3, rastrigin, grid)
+    std::int64_t instance = 0;            // 0: the function as defined; bbob: COCO's instance id >= 1
+    std::optional<double> f_opt;          // the known optimum value
+    std::optional<std::string> suite;     // bbob, classic
+    std::optional<std::int64_t> fid;      // the function's number in its suite (bbob f1..f24: 1..24)
 };
 
 struct CampaignStore {
     std::string name;
     std::optional<double> target;  // [budget] target; stores from before targets have none
+    // The target precisions (f - f_opt) the runs' target_hits refer to; empty optional for a
+    // campaign that records none (NULL, or a store from before them).
+    std::optional<std::vector<double>> precisions;
     // In the campaign's order; empty optional for stores from before the problems table.
     std::optional<std::vector<StoredProblem>> problems;
     std::vector<StoredRun> runs;  // ordered by problem, algorithm, seed

@@ -1,0 +1,196 @@
+#include "engine/report/coco.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <tuple>
+
+namespace pride::report::coco {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+/// A string as a JSON string.
+std::string json_string(const std::string& s) {
+    std::string out = "\"";
+    for (const char c : s) {
+        if (c == '"' || c == '\\')
+            out += std::string("\\") + c;
+        else if (static_cast<unsigned char>(c) < 0x20)
+            out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+        else
+            out += c;
+    }
+    return out + "\"";
+}
+
+/// A finite number as JSON (the shortest form that reads back as the same double); null else.
+std::string json_number(double v) {
+    return std::isfinite(v) ? fmt::format("{}", v) : "null";
+}
+
+}  // namespace
+
+Ert ert(const std::vector<TargetRun>& runs) {
+    Ert e;
+    e.runs = runs.size();
+    double spent = 0;
+    for (const TargetRun& r : runs) {
+        spent += static_cast<double>(r.hit ? *r.hit : r.evaluations);
+        if (r.hit) ++e.successes;
+    }
+    e.value = e.successes ? spent / static_cast<double>(e.successes) : inf;
+    return e;
+}
+
+Ecdf ecdf(const std::vector<TargetRun>& pairs) {
+    // Hansen et al. (2016), "COCO: Performance assessment", arXiv:1605.03560: the ECDF of the
+    // runtimes of a set of (run, target) pairs is, for a budget b, the fraction of the pairs
+    // whose target was reached within b evaluations; with budgets per dimension, b * dim, and
+    // plotted against log10(b). Unreached targets stay in the denominator, so the curve ends
+    // below 1 when some target was never reached.
+    Ecdf out;
+    out.pairs = pairs.size();
+    out.max_budget = -inf;
+    std::vector<double> runtimes;  // evaluations / dimension of the reached pairs
+    for (const TargetRun& p : pairs) {
+        const double dim = static_cast<double>(std::max<std::int64_t>(p.dim, 1));
+        out.max_budget = std::max(out.max_budget, std::log10(static_cast<double>(p.evaluations) / dim));
+        if (p.hit) runtimes.push_back(static_cast<double>(*p.hit) / dim);
+    }
+    std::sort(runtimes.begin(), runtimes.end());
+    for (std::size_t k = 0; k < runtimes.size(); ++k) {
+        if (k + 1 < runtimes.size() && runtimes[k + 1] == runtimes[k]) continue;  // one point per runtime
+        out.x.push_back(std::log10(runtimes[k]));
+        out.y.push_back(static_cast<double>(k + 1) / static_cast<double>(pairs.size()));
+    }
+    return out;
+}
+
+std::optional<std::string> bbob_group(std::int64_t fid) {
+    if (fid >= 1 && fid <= 5) return "separable";
+    if (fid >= 6 && fid <= 9) return "moderate";
+    if (fid >= 10 && fid <= 14) return "ill-conditioned";
+    if (fid >= 15 && fid <= 19) return "multimodal";
+    if (fid >= 20 && fid <= 24) return "weakly-structured";
+    return std::nullopt;
+}
+
+std::string bbob_group_title(const std::string& group) {
+    if (group == "separable") return "separable functions f1-f5";
+    if (group == "moderate") return "low or moderate conditioning f6-f9";
+    if (group == "ill-conditioned") return "high conditioning and unimodal f10-f14";
+    if (group == "multimodal") return "multimodal, adequate global structure f15-f19";
+    if (group == "weakly-structured") return "multimodal, weak global structure f20-f24";
+    return "all functions";
+}
+
+std::optional<Analysis> analyse(const CampaignStore& store) {
+    if (!store.precisions || store.precisions->empty() || !store.problems) return std::nullopt;
+    Analysis a;
+    a.precisions = *store.precisions;
+    const std::size_t n = a.precisions.size();
+    std::map<std::string, const StoredProblem*> problems;
+    if (store.problems)
+        for (const StoredProblem& p : *store.problems) problems[p.id] = &p;
+
+    // (fid or none, function, dim, algorithm) -> the runs, per precision; and their instances.
+    using Key = std::tuple<std::int64_t, std::string, std::int64_t, std::string>;
+    struct Cell {
+        const StoredProblem* problem = nullptr;
+        std::string function;
+        std::vector<std::vector<TargetRun>> per_precision;
+        std::set<std::pair<std::string, std::int64_t>> instances;  // (problem id, instance)
+        std::size_t runs = 0;
+    };
+    std::map<Key, Cell> cells;
+    // group -> algorithm -> (pairs, dims)
+    std::map<std::string, std::map<std::string, std::pair<std::vector<TargetRun>, std::set<std::int64_t>>>> groups;
+    for (const StoredRun& r : store.runs) {
+        if (r.target_hits.empty()) {
+            ++a.runs_without_hits;
+            continue;
+        }
+        const auto it = problems.find(r.problem);
+        if (it == problems.end()) continue;  // read_store refuses such runs when precisions are recorded
+        const StoredProblem& p = *it->second;
+        const std::string function = p.function.value_or(p.id);
+        Cell& c = cells[Key{p.fid.value_or(std::numeric_limits<std::int64_t>::max()), function, p.dim, r.algorithm}];
+        c.problem = &p;
+        c.function = function;
+        c.per_precision.resize(n);
+        c.instances.emplace(p.id, p.instance);
+        ++c.runs;
+        std::vector<std::string> in{"all"};
+        if (p.suite == "bbob" && p.fid)
+            if (const auto g = bbob_group(*p.fid)) in.push_back(*g);
+        for (std::size_t k = 0; k < n; ++k) {
+            const TargetRun t{r.evaluations, r.target_hits[k], p.dim};
+            c.per_precision[k].push_back(t);
+            for (const auto& g : in) {
+                auto& [pairs, dims] = groups[g][r.algorithm];
+                pairs.push_back(t);
+                dims.insert(p.dim);
+            }
+        }
+    }
+    for (const auto& [key, c] : cells) {
+        ErtRow row;
+        row.function = c.function;
+        row.fid = c.problem->fid;
+        row.suite = c.problem->suite;
+        row.dim = std::get<2>(key);
+        row.algorithm = std::get<3>(key);
+        row.runs = c.runs;
+        row.instances = c.instances.size();
+        for (const auto& runs : c.per_precision) row.ert.push_back(ert(runs));
+        a.erts.push_back(std::move(row));
+    }
+    if (a.erts.empty()) return std::nullopt;  // no run records hits (grids: no known optimum)
+    for (const char* g : {"all", "separable", "moderate", "ill-conditioned", "multimodal", "weakly-structured"}) {
+        const auto it = groups.find(g);
+        if (it == groups.end()) continue;
+        for (const auto& [algorithm, data] : it->second)
+            a.curves.push_back(EcdfCurve{
+                g, algorithm, std::vector<std::int64_t>(data.second.begin(), data.second.end()), ecdf(data.first)});
+    }
+    return a;
+}
+
+std::string ecdf_json(const std::string& campaign, const Analysis& analysis) {
+    std::string text = "{\"campaign\": " + json_string(campaign) + ", \"precisions\": [";
+    for (std::size_t k = 0; k < analysis.precisions.size(); ++k)
+        text += (k ? ", " : "") + json_number(analysis.precisions[k]);
+    text += "], \"groups\": [";
+    bool first_group = true;
+    for (std::size_t i = 0; i < analysis.curves.size();) {
+        const std::string& group = analysis.curves[i].group;
+        std::set<std::int64_t> dims;
+        std::string curves;
+        for (; i < analysis.curves.size() && analysis.curves[i].group == group; ++i) {
+            const EcdfCurve& c = analysis.curves[i];
+            dims.insert(c.dims.begin(), c.dims.end());
+            std::string x, y;
+            for (std::size_t k = 0; k < c.ecdf.x.size(); ++k) {
+                x += (k ? ", " : "") + json_number(c.ecdf.x[k]);
+                y += (k ? ", " : "") + json_number(c.ecdf.y[k]);
+            }
+            curves +=
+                fmt::format("{}{{\"algorithm\": {}, \"pairs\": {}, \"max_budget\": {}, \"x\": [{}], \"y\": [{}]}}",
+                            curves.empty() ? "" : ", ", json_string(c.algorithm), c.ecdf.pairs,
+                            json_number(c.ecdf.max_budget), x, y);
+        }
+        text +=
+            fmt::format("{}{{\"group\": {}, \"title\": {}, \"dims\": [{}], \"curves\": [{}]}}", first_group ? "" : ", ",
+                        json_string(group), json_string(bbob_group_title(group)), fmt::join(dims, ", "), curves);
+        first_group = false;
+    }
+    return text + "]}\n";
+}
+
+}  // namespace pride::report::coco

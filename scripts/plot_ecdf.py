@@ -1,0 +1,72 @@
+#!/usr/bin/python3
+"""ECDF plots of runtimes, COCO style (called by `pride report --plots DIR`, docs/analysis.md).
+
+Reads the ECDF curves that pride computed (engine/report/coco.hpp, written as DIR/ecdf.json, so
+that the plots and the ERT tables share one definition) and draws, per group ("all", then each
+BBOB function group present), one line per algorithm: the fraction of (run, target) pairs
+reached against log10(evaluations / dimension), with a cross at the largest budget of the runs.
+Each figure is written as PNG and SVG: ecdf_all, ecdf_<group>.
+
+Usage: plot_ecdf.py ECDF.json DIR
+"""
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def save(fig, folder, stem):
+    for ext in ("png", "svg"):
+        fig.savefig(os.path.join(folder, f"{stem}.{ext}"), dpi=120, bbox_inches="tight")
+    plt.close(fig)
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: plot_ecdf.py ECDF.json DIR")
+    with open(sys.argv[1], encoding="utf-8") as f:
+        data = json.load(f)
+    folder = sys.argv[2]
+    styles = ["-", "--", ":", "-."]
+    precisions = data["precisions"]
+    for group in data["groups"]:
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        budgets = [c["max_budget"] for c in group["curves"] if c["max_budget"] is not None]
+        right = max(budgets) if budgets else 1.0
+        lefts = [c["x"][0] for c in group["curves"] if c["x"]]
+        left = min(min(lefts), 0.0) if lefts else 0.0
+        for index, curve in enumerate(group["curves"]):
+            # A step function: 0 before the first runtime, constant up to the next, then flat
+            # to the run's largest budget, where the cross marks the end of the data.
+            xs = [left] + curve["x"] + [curve["max_budget"] if curve["max_budget"] is not None else right]
+            ys = [0.0] + curve["y"] + [curve["y"][-1] if curve["y"] else 0.0]
+            line, = ax.step(xs, ys, where="post", linestyle=styles[index % len(styles)], linewidth=1.8,
+                            label=f"{curve['algorithm']} ({curve['pairs']} pairs)")
+            ax.plot([xs[-1]], [ys[-1]], "x", color=line.get_color(), markersize=9, markeredgewidth=2)
+        dims = ", ".join(str(d) for d in group["dims"])
+        ax.set_title(f"{data['campaign']}: {group['title']}, D = {dims}\n"
+                     f"{len(precisions)} targets f_opt + 10^[{_span(precisions)}]", fontsize="medium")
+        ax.set_xlabel("log10(# evaluations / dimension)")
+        ax.set_ylabel("fraction of (run, target) pairs")
+        ax.set_ylim(-0.02, 1.02)
+        ax.set_xlim(left, right + 0.1 * max(right - left, 1.0))
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize="small", loc="best")
+        save(fig, folder, f"ecdf_{group['group']}")
+
+
+def _span(precisions):
+    """The targets' exponents as a range, e.g. 2..-8."""
+    exps = [math.log10(p) for p in precisions if p > 0]
+    if not exps:
+        return "?"
+    return f"{max(exps):.3g}..{min(exps):.3g}"
+
+
+if __name__ == "__main__":
+    main()
