@@ -195,16 +195,19 @@ void bench_pagmo(const Settings& s) {
 // the typed class called directly (the typed hot loop's baseline), the catalog's Function point by
 // point (one dispatch per evaluation) and by batch (one dispatch per population; the function's
 // batch form where it has one), for instance 0 and for instance 1 (shift and rotation: one
-// matrix-vector product more). The best of 7 timings of about 2 million evaluations each.
+// matrix-vector product more). The best of 7 timings of about 20 ms each.
 constexpr Eigen::Index kCostPopulation = 50;
 
 template <class Pass>
 double best_ns(Pass&& pass) {
-    constexpr long kEvaluations = 2'000'000;
-    const long passes = kEvaluations / kCostPopulation;
+    // Passes enough for about 20 ms per timing (at least one), found from one timed pass.
+    auto start = Clock::now();
+    pass();
+    const double one = std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+    const long passes = std::max(1L, static_cast<long>(2e7 / std::max(one, 1.0)));
     double best = 1e300;
     for (int r = 0; r < 7; ++r) {
-        const auto start = Clock::now();
+        start = Clock::now();
         for (long k = 0; k < passes; ++k) pass();
         const double ns = std::chrono::duration<double, std::nano>(Clock::now() - start).count();
         best = std::min(best, ns / static_cast<double>(passes * kCostPopulation));

@@ -142,6 +142,16 @@ std::string markdown_algorithms(const std::vector<engine::AlgorithmEntry>& algor
     return text;
 }
 
+/// A problem's dimensions, instances and suite, for `pride list --json`.
+std::string problem_facts(const continuous::CatalogEntry& e) {
+    static constexpr const char* instances[] = {"transform", "none", "coco"};
+    return fmt::format(", \"min_dim\": {}, \"fixed_dim\": {}, \"instances\": {}, \"default_instance\": {}, "
+                       "\"suite\": {}, \"number\": {}",
+                       e.min_dim, e.fixed_dim ? std::to_string(e.fixed_dim) : "null",
+                       json_string(instances[static_cast<int>(e.instances)]), continuous::default_instance(e),
+                       e.suite.empty() ? "null" : json_string(e.suite), e.suite.empty() ? "null" : std::to_string(e.number));
+}
+
 struct Section {
     std::string title;
     std::vector<engine::NamedItem> items;
@@ -186,9 +196,13 @@ int list_command(ListFormat format, std::ostream& out) {
         text += "]";
         for (const auto& s : sections) {
             text += ", " + json_string(s.title) + ": [";
-            for (std::size_t i = 0; i < s.items.size(); ++i)
-                text += fmt::format("{}{{\"name\": {}, \"summary\": {}}}", i ? ", " : "", json_string(s.items[i].name),
+            for (std::size_t i = 0; i < s.items.size(); ++i) {
+                text += fmt::format("{}{{\"name\": {}, \"summary\": {}", i ? ", " : "", json_string(s.items[i].name),
                                     json_string(s.items[i].summary));
+                if (const auto* f = s.title == "problems" ? continuous::catalog().find(s.items[i].name) : nullptr)
+                    text += problem_facts(f->entry);
+                text += "}";
+            }
             text += "]";
         }
         text += "}\n";

@@ -154,8 +154,8 @@ TEST_CASE("cli: run --json prints one object with the documented keys", "[cli][r
     auto keys = j.keys();
     const std::set<std::string> unique(keys.begin(), keys.end());
     CHECK(unique.size() == keys.size());  // no key twice
-    const std::set<std::string> expected = {"algo",   "problem",     "dim",     "seed",   "best_f",
-                                            "best_x", "evaluations", "wall_ms", "history"};
+    const std::set<std::string> expected = {"algo",   "problem",     "dim",     "instance", "seed",   "best_f",
+                                            "best_x", "evaluations", "wall_ms",  "history"};
     CHECK(unique == expected);
 
     CHECK(j.at("algo").kind == JsonValue::Kind::string);
@@ -324,14 +324,25 @@ TEST_CASE("cli: list names every algorithm and problem", "[cli][list]") {
     REQUIRE(j.has("algorithms"));
     REQUIRE(j.has("problems"));
     for (const auto& a : j.at("algorithms").items) algorithms.insert(a.at("name").text);
-    for (const auto& p : j.at("problems").items) problems.insert(p.at("name").text);
+    std::map<std::string, std::size_t> dimension;  // one each problem is defined in
+    for (const auto& p : j.at("problems").items) {
+        problems.insert(p.at("name").text);
+        const auto& fixed = p.at("fixed_dim");
+        dimension[p.at("name").text] =
+            fixed.kind == JsonValue::Kind::null ? std::max<std::size_t>(3, static_cast<std::size_t>(p.at("min_dim").number))
+                                                : static_cast<std::size_t>(fixed.number);
+        CHECK(p.has("instances"));
+        CHECK(p.has("suite"));
+    }
     for (const char* a : {"pso", "ga", "pso-constriction", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM"})
         CHECK(algorithms.count(a) == 1);
     for (const auto& item : pride::continuous::catalog().items()) CHECK(problems.count(item.name) == 1);
     // Every listed problem can be evaluated, every listed algorithm run.
     for (const auto& name : problems) {
         INFO(name);
-        const auto r = run_pride("eval --problem " + name + " --x 0.5,0.25,0.125");
+        std::string x = "0.5";
+        for (std::size_t d = 1; d < dimension[name]; ++d) x += ",0.25";
+        const auto r = run_pride("eval --problem " + name + " --x " + x);
         CHECK(r.status == 0);
         CHECK(lines_of(r.out).size() == 1);
     }
