@@ -137,7 +137,7 @@ void add_problem(std::vector<CampaignProblem>& out, const std::string& file, con
 /// [[suite]]: name = "bbob" (functions 1-24, instances from 1) or "classic" (Yao et al. 1999's
 /// F1-F23, instance 0 as defined), with `functions`, `instances` and `dimensions` lists; one
 /// problem per (function, instance, dimension), "PREFIX-fN-iK-dD" (fixed-dimension functions: their
-/// own dimension only).
+/// own dimension and instance 0 only).
 void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t) {
     const int line = static_cast<int>(t.source().begin.line);
     const std::string where = fmt::format("{}:{}", file, line);
@@ -166,12 +166,16 @@ void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const
             fail(at(file, *t.get("functions")),
                  fmt::format("function {} is not in the {} suite (1-{})", f, name, bbob ? 24 : 23));
         const std::string function = (bbob ? "bbob-f" : "yao-f") + std::to_string(f);
-        const auto fixed = continuous::catalog().find(function)->entry.fixed_dim;
+        const auto& entry = continuous::catalog().find(function)->entry;
+        const auto fixed = entry.fixed_dim;
+        // Fixed-dimension functions (Yao's F14-F23) have one instance: they run once, at instance 0.
+        const std::vector<std::int64_t> own_instances =
+            entry.instances == continuous::Instances::none ? std::vector<std::int64_t>{0} : instances;
         std::set<std::int64_t> seen;
         for (const std::int64_t d : dimensions) {
             const std::int64_t dim = fixed ? static_cast<std::int64_t>(fixed) : d;
             if (!seen.insert(dim).second) continue;
-            for (const std::int64_t k : instances) {
+            for (const std::int64_t k : own_instances) {
                 CampaignProblem p;
                 p.line = line;
                 p.suite = name;

@@ -70,6 +70,7 @@ dimensions = [2, 3]
 name = "classic"
 id = "yao"
 functions = [1, 16]
+instances = [0, 1]
 dimensions = [4, 6]
 [[problem]]
 id = "sph"
@@ -90,12 +91,12 @@ TEST_CASE("suites: [[suite]] and instance lists expand to one problem per (funct
     const auto c = pride::engine::read_campaign(dir.write("c.toml", kSuiteCampaign));
     std::vector<std::string> ids;
     for (const auto& p : c.problems) ids.push_back(p.id);
-    // bbob: 2 functions x 2 dimensions x 2 instances; classic: F1 in 4 and 6, F16 (2-D only) once;
-    // then the instance list of "sph".
+    // bbob: 2 functions x 2 dimensions x 2 instances; classic: F1 in 4 and 6 at instances 0 and 1,
+    // F16 (2-D, one instance) once; then the instance list of "sph".
     const std::vector<std::string> expected{"bbob-f1-i1-d2", "bbob-f1-i2-d2", "bbob-f1-i1-d3", "bbob-f1-i2-d3",
                                             "bbob-f8-i1-d2", "bbob-f8-i2-d2", "bbob-f8-i1-d3", "bbob-f8-i2-d3",
-                                            "yao-f1-i0-d4",  "yao-f1-i0-d6",  "yao-f16-i0-d2", "sph-i0",
-                                            "sph-i5"};
+                                            "yao-f1-i0-d4",  "yao-f1-i1-d4",  "yao-f1-i0-d6", "yao-f1-i1-d6",
+                                            "yao-f16-i0-d2", "sph-i0", "sph-i5"};
     CHECK(ids == expected);
     const auto& f8 = std::get<pride::engine::ContinuousSpec>(c.problems[7].spec);
     CHECK(f8.function == "bbob-f8");
@@ -103,8 +104,8 @@ TEST_CASE("suites: [[suite]] and instance lists expand to one problem per (funct
     CHECK(f8.instance == 2);
     CHECK(c.problems[7].problem->instance() == 2);
     CHECK(c.problems[0].suite == "bbob");
-    CHECK(c.problems[11].suite.empty());
-    CHECK(c.problems[12].problem->instance() == 5);
+    CHECK(c.problems[13].suite.empty());
+    CHECK(c.problems[14].problem->instance() == 5);
 }
 
 TEST_CASE("suites: bad suite tables are one line naming the file and line", "[suites]") {
@@ -141,27 +142,27 @@ TEST_CASE("suites: a suite campaign stores f_opt, instance, suite, COCO's precis
     const std::string store = dir.file("c.sqlite");
     const auto c = pride::engine::read_campaign(config);
     const auto summary = pride::engine::run_campaign(c, store, 2);
-    CHECK(summary.stored == 13 * 2);
+    CHECK(summary.stored == 15 * 2);
 
     const auto precisions = rows(store, "SELECT precisions FROM campaign");
     CHECK(precisions.at(0).at(0) == "[100, 10, 1, 0.1, 0.01, 0.001, 0.0001, 1e-05, 1e-06, 1e-07, 1e-08]");
 
     const auto problems =
         rows(store, "SELECT id, function, instance, f_opt, suite, fid FROM problems ORDER BY rowid");
-    REQUIRE(problems.size() == 13);
+    REQUIRE(problems.size() == 15);
     // bbob_optima.tsv (COCO): f1 instance 1 has f_opt 79.480000000000004, instance 2 394.48000000000002.
     CHECK(problems[0] == std::vector<std::string>{"bbob-f1-i1-d2", "bbob-f1", "1", "79.480000000000004", "bbob", "1"});
     CHECK(problems[1] == std::vector<std::string>{"bbob-f1-i2-d2", "bbob-f1", "2", "394.48000000000002", "bbob", "1"});
-    CHECK(problems[10] ==
+    CHECK(problems[12] ==
           std::vector<std::string>{"yao-f16-i0-d2", "yao-f16", "0", "-1.0316284534898774", "classic", "16"});
-    CHECK(problems[12] == std::vector<std::string>{"sph-i5", "sphere", "5", "0", "null", "null"});
+    CHECK(problems[14] == std::vector<std::string>{"sph-i5", "sphere", "5", "0", "null", "null"});
 
     // Each run's hits: 11 entries, an integer or null, non-decreasing, within the run's evaluations,
     // and agreeing with the best value stored (reached iff best <= f_opt + precision).
     const auto runs = rows(store,
                            "SELECT r.target_hits, r.best, r.evaluations, p.f_opt FROM runs r JOIN problems p ON "
                            "p.id = r.problem");
-    REQUIRE(runs.size() == 26);
+    REQUIRE(runs.size() == 30);
     const std::vector<double> p{1e2, 1e1, 1e0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
     for (const auto& r : runs) {
         INFO(r[0]);
@@ -194,10 +195,10 @@ TEST_CASE("suites: a store written before the suite columns resumes and gains th
          "precisions; ALTER TABLE problems DROP COLUMN function; ALTER TABLE problems DROP COLUMN instance; ALTER TABLE "
          "problems DROP COLUMN f_opt; ALTER TABLE problems DROP COLUMN suite; ALTER TABLE problems DROP COLUMN fid");
     const auto summary = pride::engine::run_campaign(c, store, 1);
-    CHECK(summary.already == 13);
-    CHECK(summary.stored == 13);
+    CHECK(summary.already == 15);
+    CHECK(summary.stored == 15);
     const auto hits = rows(store, "SELECT seed, target_hits FROM runs ORDER BY seed");
-    REQUIRE(hits.size() == 26);
+    REQUIRE(hits.size() == 30);
     CHECK(hits.front()[1] == "[]");  // the old runs: no hits recorded
     CHECK(hits.back()[1].size() > 2);
 }

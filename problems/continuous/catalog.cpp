@@ -1,124 +1,24 @@
-// The catalog: every function class and its instances behind continuous::Function. This is the
-// one file that compiles them all; the variant below is visited once per call, and once per batch
-// in evaluate_batch, whose loop over the points is then typed.
+// The catalog: every function by name, with its dimensions and instances (catalog.hpp). The
+// classes themselves are held by continuous::Function (function_variant.hpp, function.cpp).
 #include "problems/continuous/catalog.hpp"
 
 #include <cmath>
 #include <limits>
 #include <type_traits>
 #include <utility>
-#include <tuple>
-#include <variant>
 
 #include "framework/error.hpp"
-#include "problems/continuous/bbob/suite.hpp"
-#include "problems/continuous/extras.hpp"
-#include "problems/continuous/functions.hpp"
-#include "problems/continuous/transformed.hpp"
-#include "problems/continuous/yao.hpp"
-#include "problems/continuous/yao_fixed.hpp"
+#include "problems/continuous/function_variant.hpp"
 
 namespace pride::continuous {
 
-namespace {
-
-template <class... F>
-using WithInstances = std::variant<F..., Transformed<F>...>;
-
-// Scalable functions appear plain and transformed (instances k >= 1, shifted-*); fixed-dimension
-// ones (Yao's F14-F23) and BBOB's (which build their own instances) plain only.
-using Scalable =
-    WithInstances<Sphere, Rastrigin, Rosenbrock, Ackley, Griewank, Schwefel, Schwefel222, Schwefel12, Schwefel221,
-                  Step, QuarticNoise, Schwefel226, Penalized1, Penalized2, Ellipsoid, Levy, Zakharov, StyblinskiTang>;
-
-template <class V, class... More>
-struct Append;
-template <class... A, class... More>
-struct Append<std::variant<A...>, More...> {
-    using type = std::variant<A..., More...>;
-};
-
-template <class V, class Tuple>
-struct AppendTuple;
-template <class V, class... T>
-struct AppendTuple<V, std::tuple<T...>> : Append<V, T...> {};
-
-using Any = AppendTuple<Append<Scalable, ShekelFoxholes, Kowalik, SixHumpCamel, Branin, GoldsteinPrice, Hartman3,
-                               Hartman6, Shekel5, Shekel7, Shekel10>::type,
-                        bbob::All>::type;
-
-template <class F>
-constexpr bool has_batch = requires(F& f, MatrixView points, std::span<double> values) {
-    f.evaluate_batch(points, values);
-};
-
-}  // namespace
-
-struct Function::Impl {
-    Any function;
-    std::string name;
-    std::int64_t instance = 0;
-    Matrix scratch;  // transformed points for a batch-capable function (grown, never shrunk)
-};
-
-Function::Function(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {
-    std::visit(
-        [&](const auto& f) {
-            lower_.assign(f.lower().begin(), f.lower().end());
-            upper_.assign(f.upper().begin(), f.upper().end());
-        },
-        impl_->function);
-}
-Function::Function(const Function& other)
-    : impl_(std::make_unique<Impl>(*other.impl_)), lower_(other.lower_), upper_(other.upper_) {}
-Function& Function::operator=(const Function& other) {
-    if (this != &other) *this = Function(other);
-    return *this;
-}
-Function::Function(Function&&) noexcept = default;
-Function& Function::operator=(Function&&) noexcept = default;
-Function::~Function() = default;
-
-std::string_view Function::name() const noexcept { return impl_->name; }
-std::int64_t Function::instance() const noexcept { return impl_->instance; }
-
-double Function::evaluate(std::span<const double> x) {
-    return std::visit([&](auto& f) -> double { return f.evaluate(x); }, impl_->function);
-}
-
-void Function::evaluate_batch(MatrixView points, std::span<double> values) {
-    std::visit(
-        [&](auto& f) {
-            using F = std::decay_t<decltype(f)>;
-            if constexpr (has_batch<F>) {
-                f.evaluate_batch(points, values);
-            } else {
-                const auto rows = static_cast<std::size_t>(points.rows());
-                for (Eigen::Index j = 0; j < points.cols(); ++j)
-                    values[static_cast<std::size_t>(j)] = f.evaluate(std::span<const double>(points.col(j).data(), rows));
-            }
-        },
-        impl_->function);
-}
-
-std::vector<double> Function::optimum_point() const {
-    return std::visit([](const auto& f) { return f.optimum_point(); }, impl_->function);
-}
-double Function::optimum_value() const {
-    return std::visit([](const auto& f) -> double { return f.optimum_value(); }, impl_->function);
-}
-void Function::reseed(std::uint64_t seed) noexcept {
-    std::visit([&](auto& f) { seed_noise(f, seed); }, impl_->function);
-}
-bool Function::noisy() const noexcept {
-    return std::visit([](const auto& f) { return Reseedable<std::decay_t<decltype(f)>>; }, impl_->function);
-}
+using detail::Any;
 
 namespace {
 
 template <class Held>
 Function wrap(Held held, std::string name, std::int64_t instance) {
-    auto impl = std::make_unique<Function::Impl>(Function::Impl{Any(std::move(held)), std::move(name), instance, {}});
+    auto impl = std::make_unique<Function::Impl>(Function::Impl{Any(std::in_place_type<Held>, std::move(held)), std::move(name), instance});
     return Function(std::move(impl));
 }
 
