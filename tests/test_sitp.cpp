@@ -175,9 +175,12 @@ TEST_CASE("sitp: three bands of rows between start and goal; transition points o
     // Rows 4..9 (6 rows): 4..5, 6..7, 8..9.
     CHECK(sitp_band(map, {2, 9}, {7, 4}, 1).first == 6);
     CHECK(sitp_band(map, {2, 9}, {7, 4}, 1).last == 7);
-    // One row: widened to three (rows 7..9), one row per band; at the bottom edge widened upwards.
-    CHECK(sitp_band(map, {1, 7}, {12, 7}, 0).first == 7);
-    CHECK(sitp_band(map, {1, 7}, {12, 7}, 2).last == 9);
+    // One row: widened to three around it (rows 6..8), one row per band; at the bottom edge
+    // widened upwards (17..19).
+    CHECK(sitp_band(map, {1, 7}, {12, 7}, 0).first == 6);
+    CHECK(sitp_band(map, {1, 7}, {12, 7}, 0).last == 6);
+    CHECK(sitp_band(map, {1, 7}, {12, 7}, 2).first == 8);
+    CHECK(sitp_band(map, {1, 7}, {12, 7}, 2).last == 8);
     CHECK(sitp_band(map, {1, 19}, {12, 19}, 0).first == 17);
     CHECK(sitp_band(map, {1, 19}, {12, 19}, 2).last == 19);
 
@@ -250,16 +253,25 @@ TEST_CASE("sitp: the regions of eqs. 14-15 on the paper's 10x10 example", "[sitp
     // Outside the rectangle the lines extend: far right on the start row is region 0.
     CHECK(iqga_cell_region(s, g, {15, 9}) == 0);
 
-    // Paths: along the bottom and up the right edge (region 0: 10 of its 19 cells); along the top
-    // (region 1); the diagonal (region 2).
-    Path right, left, diagonal;
-    for (int x = 0; x <= 9; ++x) right.push_back({x, 9});
-    for (int y = 8; y >= 0; --y) right.push_back({9, y});
-    for (int y = 9; y >= 0; --y) left.push_back({0, y});
-    for (int x = 1; x <= 9; ++x) left.push_back({x, 0});
+    // Cell sets (a path's region only counts its cells). Along the bottom and up the right edge:
+    // 9 of its 19 cells in region 0 ((5..9, 9) and (9, 5..8)), 10 in the middle: region 2; up the
+    // left edge and along the top likewise. `corner`: (0..4, 9) in the middle (5 cells) against
+    // (5..9, 9), (9, 8..5), (8,8), (7,8), (8,7) in region 0 (12 cells): region 0; its mirror image
+    // through the centre: region 1. The diagonal: region 2.
+    Path edge_right, edge_left, corner, top_corner, diagonal;
+    for (int x = 0; x <= 9; ++x) edge_right.push_back({x, 9});
+    for (int y = 8; y >= 0; --y) edge_right.push_back({9, y});
+    for (int y = 9; y >= 0; --y) edge_left.push_back({0, y});
+    for (int x = 1; x <= 9; ++x) edge_left.push_back({x, 0});
+    for (int x = 0; x <= 9; ++x) corner.push_back({x, 9});
+    for (int y = 8; y >= 5; --y) corner.push_back({9, y});
+    for (const Cell c : {Cell{8, 8}, Cell{7, 8}, Cell{8, 7}}) corner.push_back(c);
+    for (const Cell& c : corner) top_corner.push_back({9 - c.x, 9 - c.y});  // the mirror image: region 1
     for (int k = 0; k <= 9; ++k) diagonal.push_back({k, 9 - k});
-    CHECK(iqga_path_region(s, g, right) == 0);
-    CHECK(iqga_path_region(s, g, left) == 1);
+    CHECK(iqga_path_region(s, g, edge_right) == 2);
+    CHECK(iqga_path_region(s, g, edge_left) == 2);
+    CHECK(iqga_path_region(s, g, corner) == 0);
+    CHECK(iqga_path_region(s, g, top_corner) == 1);
     CHECK(iqga_path_region(s, g, diagonal) == 2);
     // Ties: 2 wins, then 0.  Cells (9,9),(8,9) are region 0; (5,5),(4,4) region 2: tie -> 2.
     CHECK(iqga_path_region(s, g, Path{{9, 9}, {8, 9}, {5, 5}, {4, 4}}) == 2);
@@ -278,8 +290,9 @@ TEST_CASE("sitp: the regions of eqs. 14-15 on the paper's 10x10 example", "[sitp
     auto map = std::make_shared<const GridMap>(open_map(10, 10));
     const ChainSpace<IqgaObjective> space(GridProblem<IqgaObjective>(map, s, g));
     CHECK(space.region_count() == 3);
-    CHECK(space.region(right) == 0);
-    CHECK(space.region(left) == 1);
+    CHECK(space.region(corner) == 0);
+    CHECK(space.region(top_corner) == 1);
+    CHECK(space.region(diagonal) == 2);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -563,11 +576,31 @@ TEST_CASE("sitp: pride path --algo ga --encoding chain --init sitp", "[sitp][cli
     REQUIRE(r.status == 0);
     const auto j = pride::test::parse_json(r.out);
     CHECK(j.at("feasible").kind == pride::test::JsonValue::Kind::boolean);
-    CHECK(pride::test::run_pride(args).out == r.out);
+    const auto k = pride::test::parse_json(pride::test::run_pride(args).out);  // same seed, same run
+    CHECK(pride::test::json_numbers(k.at("history")) == pride::test::json_numbers(j.at("history")));
+    CHECK(k.at("path").items.size() == j.at("path").items.size());
     const auto pso = pride::test::run_pride("path --map '" + map +
                                             "' --start 0,19 --goal 19,0 --algo pso --iters 3 --json --init sitp");
     INFO(pso.err);
     CHECK(pso.status == 0);
     pride::test::expect_input_error("path --map '" + map + "' --start 0,19 --goal 19,0 --algo ga --init sitpx",
                                     {"--init", "sitpx"});
+}
+
+TEST_CASE("sitp: campaign files take init = \"sitp\"", "[sitp][cli]") {
+    const pride::test::TempDir dir;
+    const std::string map = (bundled_maps() / "file002-20x20.map").string();
+    auto campaign = [&](const std::string& init, const std::string& encoding) {
+        return "name = \"s\"\nseeds = 2\n[budget]\niterations = 3\n[[problem]]\nid = \"p\"\ntype = \"grid\"\nmap = \"" +
+               map + "\"\nstart = [0, 19]\ngoal = [19, 0]\nobjective = \"iqga\"\nencoding = \"" + encoding +
+               "\"\ninit = \"" + init + "\"\n[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\n";
+    };
+    const std::string good = dir.write("good.toml", campaign("sitp", "chain"));
+    const auto r = pride::test::run_pride("bench '" + good + "' --out '" + dir.file("out.sqlite") + "'");
+    INFO(r.out << r.err);
+    CHECK(r.status == 0);
+    const std::string line = dir.write("line.toml", campaign("sitp", "line"));
+    CHECK(pride::test::run_pride("bench '" + line + "' --out '" + dir.file("line.sqlite") + "'").status == 0);
+    const std::string bad = dir.write("bad.toml", campaign("rules", "chain"));
+    pride::test::expect_input_error("bench '" + bad + "' --out '" + dir.file("bad.sqlite") + "'", {"rules", "chain"});
 }
