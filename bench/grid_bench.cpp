@@ -166,8 +166,8 @@ void bench_sitp(const std::string& maps, int repeats = 51) {
         }
         std::sort(ms.begin(), ms.end());
         const double n = 40.0 * repeats;
-        fmt::print("sitp,{},40,{:.3f},{:.3f},{:.1f},{:.2f}\n", init == Walks::sitp ? "sitp" : "walk",
-                   ms[ms.size() / 2], ms.front(), cells / n, length / n);
+        fmt::print("sitp,{},40,{:.3f},{:.3f},{:.1f},{:.2f}\n", init == Walks::sitp ? "sitp" : "walk", ms[ms.size() / 2],
+                   ms.front(), cells / n, length / n);
     }
 }
 
