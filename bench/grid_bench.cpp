@@ -7,7 +7,9 @@
 //   3. PSO, LSO and ILSO (N = 20, T = 50, line + repair, objective cells) on the bundled 10x10 map,
 //      run through the engine, and the one-off construction of the rough-set rule book that
 //      ILSO's walks use.
-// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR]
+//   4. With --sitp only: the time to make N = 40 SITP paths (file 002's initial population) on
+//      the bundled 40x40 map, beside N = 40 random walks, through the chain space (objective iqga).
+// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp]
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -22,6 +24,7 @@
 #include "engine/targets.hpp"
 #include "framework/encoding.hpp"
 #include "problems/grid/astar.hpp"
+#include "problems/grid/chain.hpp"
 #include "problems/grid/encodings.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/objectives.hpp"
@@ -139,6 +142,35 @@ void bench_rule_book() {
                ms_since(start));
 }
 
+/// Milliseconds to make a population of 40 chains (the median of `repeats` populations, each from
+/// a fresh chain space and seed), and the mean cells and length of the chains.
+void bench_sitp(const std::string& maps, int repeats = 51) {
+    const Bundled b = bundled(maps, "file002-40x40");
+    const GridProblem<IqgaObjective> problem(b.map, b.start, b.goal);
+    fmt::print("part,init,paths,ms_per_population_median,ms_min,mean_cells,mean_length\n");
+    for (const Walks init : {Walks::sitp, Walks::random}) {
+        std::vector<double> ms;
+        double cells = 0.0, length = 0.0;
+        std::vector<Path> pop(40);
+        for (int r = 0; r < repeats; ++r) {
+            ChainSpace<IqgaObjective> space(problem);
+            space.set_init(init);
+            Rng rng(static_cast<std::uint64_t>(r) + 1);
+            const auto t = Clock::now();
+            for (auto& c : pop) space.random_chain(rng, c);
+            ms.push_back(ms_since(t));
+            for (const auto& c : pop) {
+                cells += static_cast<double>(c.size());
+                length += metrics(c, false).length;
+            }
+        }
+        std::sort(ms.begin(), ms.end());
+        const double n = 40.0 * repeats;
+        fmt::print("sitp,{},40,{:.3f},{:.3f},{:.1f},{:.2f}\n", init == Walks::sitp ? "sitp" : "walk", ms[ms.size() / 2],
+                   ms.front(), cells / n, length / n);
+    }
+}
+
 void bench_swarms(const std::string& maps) {
     for (const char* algorithm : {"pso", "lso", "ilso"}) bench_swarm(maps, algorithm);
 }
@@ -151,8 +183,14 @@ int main(int argc, char** argv) {
     CLI::App app{"grid benchmark: A*, decoding, PSO, LSO and ILSO on the 10x10 map"};
     app.add_option("--scen", scens, "Moving AI scenario files for the A* part");
     app.add_option("--maps", maps, "folder of the bundled maps (default examples/maps)");
+    bool sitp = false;
+    app.add_flag("--sitp", sitp, "only: the time to make N = 40 SITP paths on the bundled 40x40 map");
     CLI11_PARSE(app, argc, argv);
     try {
+        if (sitp) {
+            bench_sitp(maps);
+            return 0;
+        }
         bench_rule_book();
         fmt::print("part,what,queries,expansions,expansions_per_s,ms_per_query,max_diff\n");
         for (const auto& s : scens) bench_astar(s);

@@ -64,9 +64,10 @@ int main(int argc, char** argv) {
     path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
     path_cmd->add_option("--encoding", path.encoding, "line (default), free or chain");
     path_cmd->add_option("--connector", path.connector, "repair (default) or penalty");
-    path_cmd->add_option("--init", path.init,
-                         "uniform, walk (random feasible walks) or rules (file 000's rough-set rule walks); default: "
-                         "rules for ilso, uniform for the others");
+    path_cmd->add_option(
+        "--init", path.init,
+        "uniform, walk (random feasible walks), rules (file 000's rough-set rule walks) or sitp (file "
+        "002's SITP walks; also for --encoding chain); default: rules for ilso, uniform for the others");
     path_cmd->add_option("--pop", path.pop, "population size (default 20)");
     auto* path_iters =
         path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)");

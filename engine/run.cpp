@@ -62,7 +62,8 @@ const std::vector<NamedItem>& grid_connectors() {
 const std::vector<NamedItem>& grid_inits() {
     static const std::vector<NamedItem> items{{"uniform", "uniform genotypes in the box"},
                                               {"walk", "genotypes read off goal-biased random walks with taboo list"},
-                                              {"rules", "genotypes read off file 000's rough-set rule walks"}};
+                                              {"rules", "genotypes read off file 000's rough-set rule walks"},
+                                              {"sitp", "genotypes or chains from file 002's SITP walks (eqs. 3-7)"}};
     return items;
 }
 
@@ -107,11 +108,10 @@ void check_grid_names(const GridSpec& g) {
             "chains need no connector: every operator keeps them legal");
     require(g.waypoints >= 1 && g.waypoints <= 1000, "waypoints",
             "must be in [1, 1000], got " + std::to_string(g.waypoints));
-    const bool walks = g.init == "walk" || g.init == "rules";
     require(g.init.empty() || known(grid_inits(), g.init), "init",
-            "expected uniform, walk or rules, got '" + g.init + "'");
-    require(!walks || g.encoding == "line" || g.encoding == "free", "init " + g.init,
-            "only for the line and free encodings (chains always start from walks)");
+            "expected uniform, walk, rules or sitp, got '" + g.init + "'");
+    require(g.init != "rules" || g.encoding == "line" || g.encoding == "free", "init " + g.init,
+            "only for the line and free encodings (chains start from random walks, or SITP walks with init sitp)");
     require(g.weights.empty() || g.objective == "weighted", "weights", "only for the weighted objective");
     require(!g.lambda || g.objective == "hswoa", "lambda", "only for the hswoa objective");
 }
@@ -156,14 +156,18 @@ void prepare_grid(Prepared& out, const GridSpec& g, Objective objective) {
     if (g.oracle) require_oracle(g, *out.grid);
     try {
         if (g.encoding == "chain") {
-            out.chain = ChainTarget{grid::ChainSpace<Objective>(problem)};
+            grid::ChainSpace<Objective> space(problem);
+            if (g.init == "sitp") space.set_init(grid::Walks::sitp);
+            out.chain = ChainTarget{std::move(space)};
             return;
         }
         const grid::SelectableConnector connector(g.connector == "repair" ? grid::SelectableConnector::Kind::repair
                                                                           : grid::SelectableConnector::Kind::penalty);
-        // The problem's suggestions come from rule walks unless random walks are asked for.
+        // The problem's suggestions come from rule walks unless random or SITP walks are asked for.
         grid::GridProblem<Objective> suggesting = problem;
-        suggesting.set_walks(g.init == "walk" ? grid::Walks::random : grid::Walks::rules);
+        suggesting.set_walks(g.init == "walk"   ? grid::Walks::random
+                             : g.init == "sitp" ? grid::Walks::sitp
+                                                : grid::Walks::rules);
         if (g.encoding == "line") {
             grid::LineEncoding<grid::SelectableConnector> e(problem, connector);
             out.dimension = e.dimension(problem);

@@ -8,6 +8,7 @@
 //   evaluate(c)            the value to minimise.
 // The operators are non-const so that a problem may keep scratch; each run owns its copy.
 #include <concepts>
+#include <cstddef>
 #include <utility>
 
 #include "framework/random.hpp"
@@ -22,6 +23,48 @@ concept ChainProblem = std::copy_constructible<P> &&
     { p.crossover(a, b, rng) } -> std::same_as<bool>;
     { p.mutate(a, rng) } -> std::same_as<void>;
     { p.evaluate(std::as_const(a)) } -> std::convertible_to<double>;
+};
+
+}  // namespace pride
+
+namespace pride {
+
+// Optional capabilities of a chain problem, for algorithms that need more than the four operators
+// above (file 002's IQGA). An algorithm asks for them through these concepts (`if constexpr
+// (NumberedMutations<P>)`, or as a requirement), never through a problem's types.
+
+/// Several numbered mutation operators, so that a policy can pick operator k (IQGA's Q-learning
+/// actions order three of them). `badness` in [0, 1] says how bad the chain is in its population
+/// (file 002 eq. 20's B: 0 the best, 1 the worst); operators that ignore it may; 0 when unknown.
+template <class P>
+concept NumberedMutations = ChainProblem<P> &&
+    requires(P& p, const P& cp, Rng& rng, typename P::chain_type& a, std::size_t k, double badness) {
+    { cp.mutation_count() } -> std::convertible_to<std::size_t>;
+    { p.mutate(k, a, rng) } -> std::same_as<void>;
+    { p.mutate(k, a, rng, badness) } -> std::same_as<void>;
+};
+
+/// Chains fall into numbered regions of the search space, 0..region_count() - 1 (IQGA's
+/// region-partitioned selection, file 002 eqs. 14-16).
+template <class P>
+concept RegionOf = ChainProblem<P> && requires(const P& cp, const typename P::chain_type& a) {
+    { cp.region_count() } -> std::convertible_to<std::size_t>;
+    { cp.region(a) } -> std::convertible_to<std::size_t>;
+};
+
+/// A crossover at two cut points that swaps the parts between them (file 002 fig. 7); false, the
+/// parents left as they were, when the two cannot be crossed.
+template <class P>
+concept TwoPointCrossover = ChainProblem<P> &&
+    requires(P& p, Rng& rng, typename P::chain_type& a, typename P::chain_type& b) {
+    { p.crossover_two_point(a, b, rng) } -> std::same_as<bool>;
+};
+
+/// The part of a chain between positions i < j (both kept) made anew; false, the chain unchanged,
+/// when it cannot be (positions out of range or not ordered).
+template <class P>
+concept SegmentRegeneration = ChainProblem<P> && requires(P& p, Rng& rng, typename P::chain_type& a, std::size_t i) {
+    { p.regenerate(a, i, i, rng) } -> std::same_as<bool>;
 };
 
 }  // namespace pride

@@ -10,13 +10,25 @@
 //                 replaced by a new random walk between the same two cells (spec: "mutation by
 //                 replacing the segment between two random cells of the path with a new random
 //                 feasible segment"); loops are cut.
+// Initial chains come from those random walks, or, with set_init(Walks::sitp), from file 002's SITP
+// walks (sitp.hpp), whose transition-point band cycles 0, 1, 2 over the chains a space makes, so
+// that a population of N has N / 3 per band (step 1 of section 2.2).
+// The optional capabilities of framework/chain.hpp (file 002's IQGA operators, iqga_moves.hpp):
+//   region(c)                      eqs. 14-15, 0..2 (RegionOf);
+//   crossover_two_point(a, b, rng) fig. 7 (TwoPointCrossover);
+//   mutate(k, c, rng, badness)     section 2.4.3: 0 deletion, 1 mid-point, 2 turning point
+//                                  (NumberedMutations);
+//   regenerate(c, i, j, rng)       the SITP walk between c[i] and c[j] (SegmentRegeneration).
 // Every operator keeps the chain legal: joins happen at shared cells, walks take legal steps.
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "framework/error.hpp"
 #include "framework/random.hpp"
 #include "problems/grid/grid_problem.hpp"
+#include "problems/grid/iqga_moves.hpp"
+#include "problems/grid/sitp.hpp"
 #include "problems/grid/walk.hpp"
 
 namespace pride::grid {
@@ -31,7 +43,21 @@ class ChainSpace {
     const GridProblem<Objective>& problem() const noexcept { return problem_; }
     double evaluate(const Path& chain) const { return problem_.evaluate(chain); }
 
+    /// Which walks make random chains: Walks::random (the default) or Walks::sitp.
+    Walks init() const noexcept { return init_; }
+    void set_init(Walks w) {
+        require(w == Walks::random || w == Walks::sitp, "init", "chains start from random walks or SITP walks");
+        init_ = w;
+    }
+
     void random_chain(Rng& rng, Path& out) {
+        if (init_ == Walks::sitp) {
+            const int band = static_cast<int>(sitp_count_++ % 3);
+            moves_.sitp.walk(
+                problem_.map(), problem_.start(), problem_.goal(), rng, out, problem_.corner_cutting(), band,
+                [&](Cell c) { return problem_.reachable(c); }, [&](const Path& s) { return problem_.evaluate(s); });
+            return;
+        }
         walker_.walk(problem_.map(), problem_.start(), problem_.goal(), rng, out, problem_.corner_cutting());
     }
 
@@ -73,8 +99,21 @@ class ChainSpace {
         cut_loops(c, problem_.map(), seen_);
     }
 
+    // The IQGA capabilities (framework/chain.hpp; iqga_moves.hpp says how).
+    std::size_t region_count() const noexcept { return 3; }
+    std::size_t region(const Path& c) const { return iqga_path_region(problem_.start(), problem_.goal(), c); }
+    bool crossover_two_point(Path& a, Path& b, Rng& rng) { return moves_.crossover(problem_, a, b, rng); }
+    std::size_t mutation_count() const noexcept { return IqgaMoves::kMutations; }
+    void mutate(std::size_t k, Path& c, Rng& rng, double badness = 0.0) { moves_.mutate(problem_, k, c, rng, badness); }
+    bool regenerate(Path& c, std::size_t i, std::size_t j, Rng& rng) {
+        return moves_.regenerate(problem_, c, i, j, rng);
+    }
+
   private:
     GridProblem<Objective> problem_;
+    Walks init_ = Walks::random;
+    std::uint64_t sitp_count_ = 0;  // SITP chains made so far: their band is sitp_count_ % 3
+    IqgaMoves moves_;
     RandomWalker walker_;  // scratch below, reused: no allocation once the run has warmed up
     std::vector<std::int32_t> position_, seen_;
     std::vector<std::pair<std::size_t, std::size_t>> common_;

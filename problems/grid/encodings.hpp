@@ -16,6 +16,7 @@
 #include "problems/grid/connectors.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/rule_walk.hpp"
+#include "problems/grid/sitp.hpp"
 #include "problems/grid/walk.hpp"
 
 namespace pride::grid {
@@ -47,8 +48,9 @@ void prepare_walks(const GridProblem<Objective>& p) {
     if (p.walks() == Walks::rules) (void)grid_rule_book();
 }
 
-/// One feasible walk from start to goal per column of `out` (rule walks or random walks, as the
-/// problem says), handed to read(walk, column).
+/// One feasible walk from start to goal per column of `out` (rule walks, random walks or SITP
+/// walks, as the problem says; SITP's band cycles 0, 1, 2 over the columns), handed to
+/// read(walk, column).
 template <class Objective, class Read>
 void read_walks(const GridProblem<Objective>& p, Rng& rng, Matrix& out, Read&& read) {
     Path walk;
@@ -58,7 +60,15 @@ void read_walks(const GridProblem<Objective>& p, Rng& rng, Matrix& out, Read&& r
             read(walk, j);
         }
     };
-    if (p.walks() == Walks::rules)
+    if (p.walks() == Walks::sitp) {
+        SitpWalker sitp;
+        for (Eigen::Index j = 0; j < out.cols(); ++j) {
+            sitp.walk(
+                p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting(), static_cast<int>(j % 3),
+                [&](Cell c) { return p.reachable(c); }, [&](const Path& s) { return p.evaluate(s); });
+            read(walk, j);
+        }
+    } else if (p.walks() == Walks::rules)
         fill(RuleWalker{});
     else
         fill(RandomWalker{});
