@@ -159,10 +159,10 @@ struct ChainChecker {
 TEST_CASE("IAGA: Srinivas-Patnaik probabilities at their end points, by hand", "[ga-variants][iaga]") {
     // Minimisation: best = 2, mean = 6. k1 = 0.8, k3 = 0.6 to tell the branches apart.
     const AdaptiveProbability pc{0.8, 0.6};
-    CHECK(pc(2.0, 2.0, 6.0) == 0.0);                   // g = best: k1 * 0 (the best is kept as it is)
-    CHECK(pc(6.0, 2.0, 6.0) == 0.8);                   // g = mean: k1 * 1
+    CHECK(pc(2.0, 2.0, 6.0) == 0.0);                         // g = best: k1 * 0 (the best is kept as it is)
+    CHECK(pc(6.0, 2.0, 6.0) == 0.8);                         // g = mean: k1 * 1
     CHECK(pc(4.0, 2.0, 6.0) == Approx(0.4).epsilon(1e-15));  // halfway: k1 / 2
-    CHECK(pc(6.5, 2.0, 6.0) == 0.6);                   // worse than the mean: k3
+    CHECK(pc(6.5, 2.0, 6.0) == 0.6);                         // worse than the mean: k3
     // The authors' constants: k2 = k4 = 0.5 for pm, k1 = k3 = 1 for pc.
     const auto pm = kSrinivasPatnaikMutation;
     CHECK(pm(2.0, 2.0, 6.0) == 0.0);
@@ -502,6 +502,48 @@ TEST_CASE("Q-learning mutation: operators chosen by the action's probabilities, 
     REQUIRE_THROWS_AS(ga.validate(), InputError);
 }
 
+namespace {
+
+/// A box mutation that records, per call, the generation and which operator it is.
+struct RecordingMutation {
+    std::shared_ptr<std::vector<std::pair<std::int64_t, std::size_t>>> calls;
+    std::size_t which = 0;
+    void operator()(std::span<double>, std::span<const double>, std::span<const double>, Rng&,
+                    const GenerationContext& c) const {
+        calls->emplace_back(c.iteration, which);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("Q-learning mutation: learns once per generation from the population's best, as a replay says",
+          "[ga-variants][q-learning]") {
+    auto calls = std::make_shared<std::vector<std::pair<std::int64_t, std::size_t>>>();
+    Ga<TournamentSelection, SbxCrossover, QLearningMutation<RecordingMutation, RecordingMutation>> ga;
+    ga.population = 9;  // 8 children a generation
+    ga.mutation.operators = {RecordingMutation{calls, 0}, RecordingMutation{calls, 1}};
+    ga.mutation.weights = {1.0, 0.0};  // actions (1, 0) and (0, 1): the action is the operator
+    ga.mutation.learning.epsilon = 0.0;
+    const auto r = ga.run(continuous::Sphere(4), max_iterations(200), 3);
+    REQUIRE(calls->size() == 200 * 8);
+
+    // Replay: the learner told the best of each generation's parents (with elitism 1 the run's
+    // best so far, history[t]) chooses the operator every child of generation t got.
+    OperatorQLearning replay(ga.mutation.learning, ga.mutation.action_table());
+    Rng unused(0);
+    std::set<std::size_t> used;
+    for (std::int64_t t = 0; t < 200; ++t) {
+        replay.begin_generation(r.history[static_cast<std::size_t>(t)], unused);
+        for (std::size_t k = 0; k < 8; ++k) {
+            const auto& [iteration, which] = (*calls)[static_cast<std::size_t>(t) * 8 + k];
+            REQUIRE(iteration == t);
+            REQUIRE(which == replay.action());
+        }
+        used.insert(replay.action());
+    }
+    CHECK(used.size() == 2);  // the learner changed its mind at least once
+}
+
 // ---------------------------------------------------------------------------------------------
 // Every variant: reproducible, exact budgets, valid results
 
@@ -594,8 +636,7 @@ TEST_CASE("GA variants: budgets are exact and results valid, on boxes and on cha
             CHECK(*problem.count == budget);
             CHECK(r.evaluations == budget);
             CHECK(std::isfinite(r.best_f));
-            CHECK(grid::path_violation(grid_problem.map(), r.best_x, grid_problem.start(), grid_problem.goal()) ==
-                  "");
+            CHECK(grid::path_violation(grid_problem.map(), r.best_x, grid_problem.start(), grid_problem.goal()) == "");
             CHECK(r.best_f == grid_problem.evaluate(r.best_x));
         }
     };
@@ -632,7 +673,8 @@ TEST_CASE("GA variants: registry entries, their parameters and ranges", "[ga-var
         REQUIRE(it != e->params.end());
         return *it;
     };
-    for (const auto& [name, value] : {std::pair<const char*, double>{"k1", 1.0}, {"k2", 0.5}, {"k3", 1.0}, {"k4", 0.5}}) {
+    for (const auto& [name, value] :
+         {std::pair<const char*, double>{"k1", 1.0}, {"k2", 0.5}, {"k3", 1.0}, {"k4", 0.5}}) {
         const auto& p = param(iaga, name);
         CHECK(p.default_value == value);
         CHECK(p.min == 0.0);

@@ -42,8 +42,8 @@ class PolynomialMutation {
         }
 
         /// With a per-gene probability pm given per call (IAGA's adaptive pm: adaptive_rates.hpp).
-        void with_probability(double pm, std::span<double> x, std::span<const double> lo,
-                              std::span<const double> hi, Rng& rng) const {
+        void with_probability(double pm, std::span<double> x, std::span<const double> lo, std::span<const double> hi,
+                              Rng& rng) const {
             mutate(x, lo, hi, rng, threshold(pm));
         }
 

@@ -91,8 +91,7 @@ inline std::vector<double> default_operator_weights(std::size_t m) {
 }
 
 /// Checks a table of actions over m operators: at least one, each m probabilities summing to 1.
-inline void validate_actions(const std::vector<std::vector<double>>& actions, std::size_t m,
-                             const std::string& where) {
+inline void validate_actions(const std::vector<std::vector<double>>& actions, std::size_t m, const std::string& where) {
     require(!actions.empty(), where, "Q-learning needs at least one action");
     for (const auto& a : actions) {
         require(a.size() == m, where,
@@ -102,7 +101,8 @@ inline void validate_actions(const std::vector<std::vector<double>>& actions, st
             require(p >= 0.0 && p <= 1.0, where, "operator probabilities must be in [0, 1], got " + std::to_string(p));
             sum += p;
         }
-        require(std::abs(sum - 1.0) <= 1e-9, where, "an action's probabilities must sum to 1, got " + std::to_string(sum));
+        require(std::abs(sum - 1.0) <= 1e-9, where,
+                "an action's probabilities must sum to 1, got " + std::to_string(sum));
     }
 }
 
@@ -117,7 +117,8 @@ class OperatorQLearning {
           table_(actions_ * operators_),
           q_(kStates * actions_, 0.0) {
         for (std::size_t a = 0; a < actions.size(); ++a)
-            std::copy(actions[a].begin(), actions[a].end(), table_.begin() + static_cast<std::ptrdiff_t>(a * operators_));
+            std::copy(actions[a].begin(), actions[a].end(),
+                      table_.begin() + static_cast<std::ptrdiff_t>(a * operators_));
     }
 
     /// 1 when best < previous (better), 2 when equal, 3 when larger (worse).
@@ -192,8 +193,8 @@ class OperatorQLearning {
     QLearningSettings settings_;
     std::size_t operators_;
     std::size_t actions_;
-    std::vector<double> table_;    // actions x operators, row by row
-    std::vector<double> q_;        // states x actions, row by row
+    std::vector<double> table_;  // actions x operators, row by row
+    std::vector<double> q_;      // states x actions, row by row
     bool started_ = false;
     double previous_best_ = 0.0;
     int state_ = 2;
@@ -240,8 +241,8 @@ class QLearningMutation {
         template <class... Args>
         requires(sizeof...(Args) >= 2 &&
                  std::is_same_v<std::remove_cvref_t<std::tuple_element_t<sizeof...(Args) - 1, std::tuple<Args...>>>,
-                                GenerationContext>)
-        void operator()(Args&&... args) const {
+                                GenerationContext>) void
+        operator()(Args&&... args) const {
             constexpr std::size_t n = sizeof...(Args);
             auto all = std::forward_as_tuple(std::forward<Args>(args)...);
             const GenerationContext& context = std::get<n - 1>(all);

@@ -78,16 +78,17 @@ void iaga_common(G& a, const Params& p) {
 }
 
 std::vector<ParamSpec> iaga_params() {
-    return {population_param(50, 2),
-            integer("elitism", 1, 0, 100'000'000, "best parents kept unchanged, fewer than pop"),
-            integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
-            real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index").only_on_boxes(),
-            real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index").only_on_boxes(),
-            real("k1", 1.0, 0.0, 1.0, "pc = k1 (f' - best)/(mean - best) for a pair at least average (Srinivas-Patnaik)"),
-            real("k2", 0.5, 0.0, 1.0, "pm = k2 (f - best)/(mean - best) for a member at least average"),
-            real("k3", 1.0, 0.0, 1.0, "pc for a pair worse than average"),
-            real("k4", 0.5, 0.0, 1.0, "pm for a member worse than average (per gene on boxes, per child on chains)"),
-            walk_init_param(false).only_on_boxes()};
+    return {
+        population_param(50, 2),
+        integer("elitism", 1, 0, 100'000'000, "best parents kept unchanged, fewer than pop"),
+        integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
+        real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index").only_on_boxes(),
+        real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index").only_on_boxes(),
+        real("k1", 1.0, 0.0, 1.0, "pc = k1 (f' - best)/(mean - best) for a pair at least average (Srinivas-Patnaik)"),
+        real("k2", 0.5, 0.0, 1.0, "pm = k2 (f - best)/(mean - best) for a member at least average"),
+        real("k3", 1.0, 0.0, 1.0, "pc for a pair worse than average"),
+        real("k4", 0.5, 0.0, 1.0, "pm for a member worse than average (per gene on boxes, per child on chains)"),
+        walk_init_param(false).only_on_boxes()};
 }
 
 void add_iaga(AlgorithmRegistry& registry) {
@@ -132,8 +133,8 @@ void icga_common(G& a, const Params& p) {
 
 void add_icga(AlgorithmRegistry& registry) {
     auto v = params(false);
-    v.insert(v.end() - 1, integer("k", 10, 1, 1'000'000'000,
-                                  "generations without improvement of the best before a catastrophe"));
+    v.insert(v.end() - 1,
+             integer("k", 10, 1, 1'000'000'000, "generations without improvement of the best before a catastrophe"));
     v.insert(v.end() - 1, integer("elite", 1, 0, 100'000'000, "best members a catastrophe keeps, fewer than pop"));
     auto e = box_algorithm("icga", "ga",
                            "GA with a catastrophe (ICGA of file 002): after k generations without improvement all "
