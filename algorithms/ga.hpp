@@ -107,9 +107,8 @@ class Ga {
     template <ChainProblem P, class O = NoObserver>
     BasicResult<typename P::chain_type> run(P problem, const Termination& termination, std::uint64_t seed,
                                             O&& observer = O{}) const requires
-        OperatorOn<std::remove_cvref_t<detail::Prepared<Crossover>>, P&, typename P::chain_type&,
-                   typename P::chain_type&, Rng&>&& OperatorOn<std::remove_cvref_t<detail::Prepared<Mutation>>, P&,
-                                                               typename P::chain_type&, Rng&> {
+        PreparedOperatorOn<Crossover, P&, typename P::chain_type&, typename P::chain_type&, Rng&> &&
+        PreparedOperatorOn<Mutation, P&, typename P::chain_type&, Rng&> {
         ChainPopulation<Ga, P> population(*this, problem, termination, seed, observer);
         return generations(population, observer);
     }
@@ -129,7 +128,8 @@ class Ga {
 
         for (std::int64_t t = 0; !state.done(); ++t) {
             const std::span<const double> fx = pop.fitness();
-            pop.begin_generation(context);               // operators that learn between generations (nothing for most)
+            // Operators that learn between generations (nothing for most).
+            pop.begin_generation(context);
             for (std::size_t k = 0; k < kids; k += 2) {  // (1)
                 const std::size_t a = with_context(selection, context, fx, rng);
                 const std::size_t b = with_context(selection, context, fx, rng);

@@ -117,4 +117,8 @@ template <class Op>
 using Prepared = decltype(prepared(std::declval<const Op&>(), std::size_t{}));
 }  // namespace detail
 
+/// A policy whose prepared form (detail::prepared) with_context can call on `args`.
+template <class Op, class... Args>
+concept PreparedOperatorOn = OperatorOn<std::remove_cvref_t<detail::Prepared<Op>>, Args...>;
+
 }  // namespace pride
