@@ -401,6 +401,10 @@ TEST_CASE("Q-learning: eq. 19 and the reward r = u - w, by hand", "[ga-variants]
     q.update(3, 2, OperatorQLearning::reward(3, 1), 1);
     CHECK(q.q(3, 2) == Approx(0.2396).epsilon(1e-15));
     CHECK(q.q(2, 1) == 1.0);  // nothing else moved
+    // A table of actions must be one: each a probability vector over the same operators.
+    REQUIRE_THROWS_AS(OperatorQLearning({}, {{0.5, 0.5}, {1.0}}), InputError);
+    REQUIRE_THROWS_AS(OperatorQLearning({}, {}), InputError);
+    REQUIRE_THROWS_AS(OperatorQLearning({}, {{0.7, 0.7}}), InputError);
 }
 
 TEST_CASE("Q-learning: one generation at a time, greedy, by hand", "[ga-variants][q-learning]") {

@@ -116,6 +116,7 @@ class OperatorQLearning {
           actions_(actions.size()),
           table_(actions_ * operators_),
           q_(kStates * actions_, 0.0) {
+        validate_actions(actions, operators_, "Q-learning");
         for (std::size_t a = 0; a < actions.size(); ++a)
             std::copy(actions[a].begin(), actions[a].end(),
                       table_.begin() + static_cast<std::ptrdiff_t>(a * operators_));
