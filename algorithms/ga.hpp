@@ -17,7 +17,10 @@
 //   (3) the Replacement policy forms the next population from parents and children (elitist: the
 //       `elitism` best parents, unchanged and not re-evaluated, then the children; plus: the best N
 //       of parents and children, as pagmo2's sga);
-//   then the GenerationContext (generation_context.hpp: iteration, horizon, best / mean / worst of
+//   before (1), operators whose prepared form offers begin_generation(context, rng) are told a
+//   generation begins (generation_context.hpp; the Q-learning choice of q_learning.hpp learns and
+//   chooses there; nothing for the others);
+//   after (3), the GenerationContext (generation_context.hpp: iteration, horizon, best / mean / worst of
 //   the population, best so far, generations without improvement) is brought up to date, the Hook
 //   policy is called with it, the population and the Rng (generation_hook.hpp; by default it does
 //   nothing; after any other hook the population is described again, as the hook may have
@@ -25,6 +28,8 @@
 //   policies whose call accepts a trailing context get it; the others are called as they always were.
 // The initial population: for points, the Init policy then the Bounds policy (run_setup.hpp); for
 // chains, the problem's random chains. Both are evaluated in order and recorded as iteration 0.
+// Variants as policies: IAGA's adaptive pc and pm (adaptive_rates.hpp), ICGA's catastrophe
+// (catastrophe.hpp, a hook), Q-learning choice among mutation operators (q_learning.hpp).
 // Spec defaults (shared/spec/algorithms.md): tournament of 2, SBX eta 15 with probability 0.9,
 // polynomial mutation eta 20 with probability 1/D per gene, elitist replacement with elitism 1.
 // Decided by this project where the spec is silent: when an odd number of children is asked for,
@@ -39,12 +44,15 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/parts/adaptive_rates.hpp"
+#include "algorithms/parts/catastrophe.hpp"
 #include "algorithms/parts/chain_operators.hpp"
 #include "algorithms/parts/crossover.hpp"
 #include "algorithms/parts/ga_population.hpp"
 #include "algorithms/parts/generation_context.hpp"
 #include "algorithms/parts/generation_hook.hpp"
 #include "algorithms/parts/mutation.hpp"
+#include "algorithms/parts/q_learning.hpp"
 #include "algorithms/parts/replacement.hpp"
 #include "algorithms/parts/selection.hpp"
 #include "framework/bounds.hpp"
@@ -82,7 +90,10 @@ class Ga {
         selection.validate(name());
         crossover.validate(name());
         mutation.validate(name());
-        if constexpr (requires { hook.validate(name()); }) hook.validate(name());
+        if constexpr (requires { hook.validate(name(), population); })
+            hook.validate(name(), population);
+        else if constexpr (requires { hook.validate(name()); })
+            hook.validate(name());
     }
 
     /// Real-coded, on the box of a BoxProblem.
@@ -96,8 +107,8 @@ class Ga {
     template <ChainProblem P, class O = NoObserver>
     BasicResult<typename P::chain_type> run(P problem, const Termination& termination, std::uint64_t seed,
                                             O&& observer = O{}) const requires
-        OperatorOn<Crossover, P&, typename P::chain_type&, typename P::chain_type&, Rng&> &&
-        OperatorOn<Mutation, P&, typename P::chain_type&, Rng&> {
+        PreparedOperatorOn<Crossover, P&, typename P::chain_type&, typename P::chain_type&, Rng&> &&
+        PreparedOperatorOn<Mutation, P&, typename P::chain_type&, Rng&> {
         ChainPopulation<Ga, P> population(*this, problem, termination, seed, observer);
         return generations(population, observer);
     }
@@ -117,6 +128,8 @@ class Ga {
 
         for (std::int64_t t = 0; !state.done(); ++t) {
             const std::span<const double> fx = pop.fitness();
+            // Operators that learn between generations (nothing for most).
+            pop.begin_generation(context);
             for (std::size_t k = 0; k < kids; k += 2) {  // (1)
                 const std::size_t a = with_context(selection, context, fx, rng);
                 const std::size_t b = with_context(selection, context, fx, rng);

@@ -205,6 +205,25 @@ void for_each_algorithm(std::int64_t population, F&& f) {
     f("pso-constriction", pso_constriction(population));
     f("ga", ga(population));
     f("ga-plus", ga_plus(population));
+    // The GA variants of file 002 (algorithms/parts/adaptive_rates.hpp, catastrophe.hpp,
+    // q_learning.hpp; tests/test_ga_variants.cpp): the catastrophe every 2 generations here.
+    pride::Ga<pride::TournamentSelection, pride::AdaptiveSbxCrossover, pride::AdaptivePolynomialMutation> iaga;
+    iaga.id = "iaga";
+    iaga.population = population;
+    f("iaga", iaga);
+    pride::Ga<pride::TournamentSelection, pride::SbxCrossover, pride::PolynomialMutation, pride::Clamp,
+              pride::UniformInit, pride::ElitistReplacement, pride::CatastropheHook>
+        icga;
+    icga.id = "icga";
+    icga.population = population;
+    icga.hook.k = 2;
+    f("icga", icga);
+    pride::Ga<pride::TournamentSelection, pride::SbxCrossover,
+              pride::QLearningMutation<pride::PolynomialMutation, pride::UniformMutation, pride::GaussianMutation>>
+        ga_q;
+    ga_q.id = "ga-q";
+    ga_q.population = population;
+    f("ga-q", ga_q);
     pride::LsoAlgorithm lso;
     lso.population = population;
     f("lso", lso);

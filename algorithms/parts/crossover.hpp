@@ -47,7 +47,13 @@ class SbxCrossover::Prepared {
 
     void operator()(std::span<double> a, std::span<double> b, std::span<const double> lo, std::span<const double> hi,
                     Rng& rng) const {
-        if (!rng.bernoulli(probability_)) return;
+        if (rng.bernoulli(probability_)) cross(a, b, lo, hi, rng);
+    }
+
+    /// The crossover itself, without the test of `probability` (for policies that decide it
+    /// otherwise, as IAGA's adaptive pc: adaptive_rates.hpp).
+    void cross(std::span<double> a, std::span<double> b, std::span<const double> lo, std::span<const double> hi,
+               Rng& rng) const {
         // Coordinates go in blocks of 64: one 64-bit draw gives the block's "cross this
         // coordinate?" coins, a second its "swap the children?" coins; the roots of a block are
         // then taken in one pass (see FixedPower::apply).

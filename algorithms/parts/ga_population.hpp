@@ -29,17 +29,10 @@
 namespace pride {
 
 namespace detail {
-/// An operator policy may offer prepare(dim), its constants worked out once per run; otherwise it
-/// is used as it is (a reference to it).
 template <class Op>
-decltype(auto) prepared(const Op& op, std::size_t dim) {
-    if constexpr (requires { op.prepare(dim); })
-        return op.prepare(dim);
-    else
-        return (op);
+void begin_generation(Op& op, const GenerationContext& context, Rng& rng) {
+    if constexpr (requires { op.begin_generation(context, rng); }) op.begin_generation(context, rng);
 }
-template <class Op>
-using Prepared = decltype(prepared(std::declval<const Op&>(), std::size_t{}));
 }  // namespace detail
 
 /// Points in the box of a BoxProblem. `Algorithm`: the GA, for its policies.
@@ -76,6 +69,11 @@ class BoxPopulation {
     std::span<double> spare() { return column(spare_, 0); }
     void copy(std::size_t parent, std::span<double> to) const {
         std::copy_n(run_.x.col(index(parent)).data(), run_.dim, to.data());
+    }
+    /// At the start of each generation: the prepared operators that learn between generations.
+    void begin_generation(const GenerationContext& context) {
+        detail::begin_generation(cross_, context, run_.rng);
+        detail::begin_generation(mutate_, context, run_.rng);
     }
     void cross(std::span<double> a, std::span<double> b, const GenerationContext& context) {
         with_context(cross_, context, a, b, run_.lo, run_.hi, run_.rng);
@@ -151,7 +149,9 @@ class ChainPopulation {
           y_(kids_),
           fx_(x_.size(), kInf),
           fnext_(x_.size()),
-          fy_(kids_) {
+          fy_(kids_),
+          cross_(detail::prepared(ga.crossover, 0)),
+          mutate_(detail::prepared(ga.mutation, 0)) {
         for (auto& c : x_) problem_.random_chain(run_.rng, c);
         for (std::size_t i = 0; i < x_.size() && !run_.state.exhausted(); ++i)
             fx_[i] = run_.state.evaluate(problem_, x_[i]);
@@ -170,12 +170,14 @@ class ChainPopulation {
     Chain& child(std::size_t k) { return y_[k]; }
     Chain& spare() { return spare_; }
     void copy(std::size_t parent, Chain& to) const { to = x_[parent]; }
+    void begin_generation(const GenerationContext& context) {
+        detail::begin_generation(cross_, context, run_.rng);
+        detail::begin_generation(mutate_, context, run_.rng);
+    }
     void cross(Chain& a, Chain& b, const GenerationContext& context) {
-        with_context(ga_.crossover, context, problem_, a, b, run_.rng);
+        with_context(cross_, context, problem_, a, b, run_.rng);
     }
-    void mutate(Chain& c, const GenerationContext& context) {
-        with_context(ga_.mutation, context, problem_, c, run_.rng);
-    }
+    void mutate(Chain& c, const GenerationContext& context) { with_context(mutate_, context, problem_, c, run_.rng); }
     void repair(Chain&) const noexcept {}  // the chain operators keep every chain feasible
 
     void evaluate_children() {
@@ -213,6 +215,8 @@ class ChainPopulation {
     std::vector<Chain> x_, next_, y_;  // x_: the current population
     Chain spare_;
     std::vector<double> fx_, fnext_, fy_;
+    detail::Prepared<decltype(Algorithm::crossover)> cross_;
+    detail::Prepared<decltype(Algorithm::mutation)> mutate_;
 };
 
 }  // namespace pride

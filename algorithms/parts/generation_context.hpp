@@ -99,4 +99,26 @@ decltype(auto) with_context(const Op& op, const GenerationContext& context, Args
         return op(std::forward<Args>(args)...);
 }
 
+namespace detail {
+/// An operator policy may offer prepare(dim), its constants worked out once per run (dim 0 on
+/// chains), the prepared value then owned by the run; otherwise it is used as it is (a reference
+/// to it). A prepared value may also offer begin_generation(const GenerationContext&, Rng&),
+/// called once at the start of every generation, before its first selection, with the context of
+/// the parents and the run's Rng: per-run state that learns from generation to generation (the
+/// Q-learning operator choice of q_learning.hpp) lives there.
+template <class Op>
+decltype(auto) prepared(const Op& op, std::size_t dim) {
+    if constexpr (requires { op.prepare(dim); })
+        return op.prepare(dim);
+    else
+        return (op);
+}
+template <class Op>
+using Prepared = decltype(prepared(std::declval<const Op&>(), std::size_t{}));
+}  // namespace detail
+
+/// A policy whose prepared form (detail::prepared) with_context can call on `args`.
+template <class Op, class... Args>
+concept PreparedOperatorOn = OperatorOn<std::remove_cvref_t<detail::Prepared<Op>>, Args...>;
+
 }  // namespace pride

@@ -38,11 +38,27 @@ class PolynomialMutation {
             : threshold_(static_cast<std::uint64_t>(std::ldexp(pm, 32))), power_(eta + 1.0), root_(1.0 / (eta + 1.0)) {}
 
         void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
-            if (threshold_ == 0) return;
+            mutate(x, lo, hi, rng, threshold_);
+        }
+
+        /// With a per-gene probability pm given per call (IAGA's adaptive pm: adaptive_rates.hpp).
+        void with_probability(double pm, std::span<double> x, std::span<const double> lo, std::span<const double> hi,
+                              Rng& rng) const {
+            mutate(x, lo, hi, rng, threshold(pm));
+        }
+
+        static std::uint64_t threshold(double pm) noexcept {
+            return static_cast<std::uint64_t>(std::ldexp(std::clamp(pm, 0.0, 1.0), 32));
+        }
+
+      private:
+        void mutate(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng,
+                    std::uint64_t threshold) const {
+            if (threshold == 0) return;
             std::uint64_t bits = 0;
             for (std::size_t i = 0; i < x.size(); ++i) {
                 bits = i % 2 == 0 ? rng() : bits >> 32;
-                if ((bits & 0xFFFFFFFFu) >= threshold_) continue;
+                if ((bits & 0xFFFFFFFFu) >= threshold) continue;
                 const double width = hi[i] - lo[i];
                 if (!(width > 0.0)) continue;
                 const double y = x[i];
@@ -59,7 +75,6 @@ class PolynomialMutation {
             }
         }
 
-      private:
         std::uint64_t threshold_;  // pm 2^32; 2^32 when pm = 1
         FixedPower power_;
         FixedPower root_;
@@ -67,6 +82,69 @@ class PolynomialMutation {
 
     Prepared prepare(std::size_t dim) const {
         return Prepared(eta, probability < 0.0 ? 1.0 / static_cast<double>(dim) : probability);
+    }
+
+    void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
+        prepare(x.size())(x, lo, hi, rng);
+    }
+};
+
+/// Uniform (random-reset) mutation: each coordinate mutates with probability pm (pm < 0 means
+/// 1/D) and is then drawn anew, uniformly in [low, high] (Michalewicz 1996, Genetic Algorithms +
+/// Data Structures = Evolution Programs, 3rd ed., Springer: "uniform mutation"). One U(0,1) draw
+/// per coordinate decides, one more gives a mutated coordinate its value.
+class UniformMutation {
+  public:
+    double probability = -1.0;
+
+    void validate(const std::string& where) const {
+        require(probability <= 1.0, where,
+                "pm must be in [0, 1] (or negative for 1/D), got " + std::to_string(probability));
+    }
+
+    struct Prepared {
+        double pm;
+        void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
+            for (std::size_t i = 0; i < x.size(); ++i)
+                if (rng.bernoulli(pm)) x[i] = std::clamp(rng.uniform(lo[i], hi[i]), lo[i], hi[i]);
+        }
+    };
+
+    Prepared prepare(std::size_t dim) const {
+        return {probability < 0.0 ? 1.0 / static_cast<double>(dim) : probability};
+    }
+
+    void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
+        prepare(x.size())(x, lo, hi, rng);
+    }
+};
+
+/// Gaussian mutation: each coordinate mutates with probability pm (pm < 0 means 1/D) by
+///   y <- clamp(y + sigma (high - low) N(0, 1)),
+/// sigma relative to the coordinate's range (this project's choice: 0.1 by default, as the
+/// step of the (1+1)-ES example). One U(0,1) draw per coordinate decides, one N(0,1) draw
+/// (Rng::normal) moves a mutated coordinate.
+class GaussianMutation {
+  public:
+    double sigma = 0.1;
+    double probability = -1.0;
+
+    void validate(const std::string& where) const {
+        require(sigma > 0.0 && sigma <= 1.0, where, "sigma must be in (0, 1], got " + std::to_string(sigma));
+        require(probability <= 1.0, where,
+                "pm must be in [0, 1] (or negative for 1/D), got " + std::to_string(probability));
+    }
+
+    struct Prepared {
+        double sigma, pm;
+        void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
+            for (std::size_t i = 0; i < x.size(); ++i)
+                if (rng.bernoulli(pm)) x[i] = std::clamp(x[i] + sigma * (hi[i] - lo[i]) * rng.normal(), lo[i], hi[i]);
+        }
+    };
+
+    Prepared prepare(std::size_t dim) const {
+        return {sigma, probability < 0.0 ? 1.0 / static_cast<double>(dim) : probability};
     }
 
     void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {

@@ -1,6 +1,8 @@
 // The genetic algorithm family (algorithms/ga.hpp): ga (elitist generational replacement) and
 // ga-plus ((mu + lambda) replacement), two configurations of one instantiation on boxes and one on
-// chains (the replacement is chosen once per generation).
+// chains (the replacement is chosen once per generation); and the variants as policies of the same
+// skeleton: iaga (Srinivas and Patnaik's adaptive pc and pm), icga (the catastrophe hook) on boxes
+// and chains, ga-q (Q-learning choice among three box mutations) on boxes.
 #include "algorithms/ga.hpp"
 
 #include "engine/family.hpp"
@@ -60,6 +62,143 @@ std::vector<ParamSpec> params(bool plus) {
     return v;
 }
 
+// --- iaga: adaptive pc and pm (algorithms/parts/adaptive_rates.hpp) ---
+
+using IagaBox = Ga<TournamentSelection, AdaptiveSbxCrossover, AdaptivePolynomialMutation, Clamp, SelectableInit>;
+using IagaChain = Ga<TournamentSelection, AdaptiveChainCrossover, AdaptiveChainMutation>;
+
+template <class G>
+void iaga_common(G& a, const Params& p) {
+    a.id = "iaga";
+    a.population = p.integer("pop");
+    a.replacement.elitism = p.integer("elitism");
+    a.selection.size = p.integer("tournament");
+    a.crossover.probability = {p.real("k1"), p.real("k3")};
+    a.mutation.probability = {p.real("k2"), p.real("k4")};
+}
+
+std::vector<ParamSpec> iaga_params() {
+    return {
+        population_param(50, 2),
+        integer("elitism", 1, 0, 100'000'000, "best parents kept unchanged, fewer than pop"),
+        integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
+        real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index").only_on_boxes(),
+        real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index").only_on_boxes(),
+        real("k1", 1.0, 0.0, 1.0, "pc = k1 (f' - best)/(mean - best) for a pair at least average (Srinivas-Patnaik)"),
+        real("k2", 0.5, 0.0, 1.0, "pm = k2 (f - best)/(mean - best) for a member at least average"),
+        real("k3", 1.0, 0.0, 1.0, "pc for a pair worse than average"),
+        real("k4", 0.5, 0.0, 1.0, "pm for a member worse than average (per gene on boxes, per child on chains)"),
+        walk_init_param(false).only_on_boxes()};
+}
+
+void add_iaga(AlgorithmRegistry& registry) {
+    auto e = box_algorithm("iaga", "ga",
+                           "GA with Srinivas and Patnaik's adaptive crossover and mutation probabilities (IAGA of "
+                           "file 002): SBX / polynomial mutation on boxes, chain operators on chains",
+                           iaga_params(), [](const Params& p) {
+                               IagaBox a;
+                               iaga_common(a, p);
+                               a.init.suggestions = p.flag("walk_init");
+                               a.crossover.eta = p.real("eta_c");
+                               a.mutation.eta = p.real("eta_m");
+                               return a;
+                           });
+    add_chain_runner(e, [](const Params& p) {
+        IagaChain a;
+        iaga_common(a, p);
+        return a;
+    });
+    e.memory = population_memory(3);
+    registry.add(std::move(e));
+}
+
+// --- icga: the catastrophe hook (algorithms/parts/catastrophe.hpp) ---
+
+using IcgaBox = Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, SelectableInit, ElitistReplacement,
+                   CatastropheHook>;
+using IcgaChain =
+    Ga<TournamentSelection, ChainCrossover, ChainMutation, Clamp, UniformInit, ElitistReplacement, CatastropheHook>;
+
+template <class G>
+void icga_common(G& a, const Params& p) {
+    a.id = "icga";
+    a.population = p.integer("pop");
+    a.replacement.elitism = p.integer("elitism");
+    a.selection.size = p.integer("tournament");
+    a.crossover.probability = p.real("pc");
+    if (const auto pm = p.optional("pm")) a.mutation.probability = *pm;
+    a.hook.k = p.integer("k");
+    a.hook.elite = p.integer("elite");
+}
+
+void add_icga(AlgorithmRegistry& registry) {
+    auto v = params(false);
+    v.insert(v.end() - 1,
+             integer("k", 10, 1, 1'000'000'000, "generations without improvement of the best before a catastrophe"));
+    v.insert(v.end() - 1, integer("elite", 1, 0, 100'000'000, "best members a catastrophe keeps, fewer than pop"));
+    auto e = box_algorithm("icga", "ga",
+                           "GA with a catastrophe (ICGA of file 002): after k generations without improvement all "
+                           "but the elite are re-seeded; on chains too",
+                           std::move(v), [](const Params& p) {
+                               IcgaBox a;
+                               icga_common(a, p);
+                               a.init.suggestions = p.flag("walk_init");
+                               a.crossover.eta = p.real("eta_c");
+                               a.mutation.eta = p.real("eta_m");
+                               return a;
+                           });
+    add_chain_runner(e, [](const Params& p) {
+        IcgaChain a;
+        icga_common(a, p);
+        return a;
+    });
+    e.memory = population_memory(4);  // parents, next generation, children, re-seeded members
+    registry.add(std::move(e));
+}
+
+// --- ga-q: Q-learning choice among box mutations (algorithms/parts/q_learning.hpp) ---
+
+using GaQBox = Ga<TournamentSelection, SbxCrossover,
+                  QLearningMutation<PolynomialMutation, UniformMutation, GaussianMutation>, Clamp, SelectableInit>;
+
+void add_ga_q(AlgorithmRegistry& registry) {
+    std::vector<ParamSpec> v{
+        population_param(50, 2),
+        integer("elitism", 1, 0, 100'000'000, "best parents kept unchanged, fewer than pop"),
+        integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
+        real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index"),
+        real("pc", 0.9, 0.0, 1.0, "crossover probability per pair"),
+        real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
+        real("sigma", 0.1, 0.0, 1.0, "Gaussian mutation step, a fraction of each coordinate's range").open_below(),
+        real("pm", 0.0, 0.0, 1.0, "per-gene probability of the chosen mutation (default 1/D)").no_default(),
+        real("epsilon", 0.1, 0.0, 1.0, "Q-learning: probability of a random action"),
+        real("alpha", 0.1, 0.0, 1.0, "Q-learning: learning rate"),
+        real("gamma", 0.9, 0.0, 1.0, "Q-learning: discount factor"),
+        walk_init_param(false)};
+    auto e = box_algorithm("ga-q", "ga",
+                           "GA whose mutation is polynomial, uniform or Gaussian by probabilities (0.6/0.2/0.2 in "
+                           "some order) that Q-learning chooses once per generation (file 002, eq. 19); boxes only",
+                           std::move(v), [](const Params& p) {
+                               GaQBox a;
+                               a.id = "ga-q";
+                               a.population = p.integer("pop");
+                               a.replacement.elitism = p.integer("elitism");
+                               a.selection.size = p.integer("tournament");
+                               a.init.suggestions = p.flag("walk_init");
+                               a.crossover.eta = p.real("eta_c");
+                               a.crossover.probability = p.real("pc");
+                               auto& [polynomial, uniform, gaussian] = a.mutation.operators;
+                               polynomial.eta = p.real("eta_m");
+                               gaussian.sigma = p.real("sigma");
+                               if (const auto pm = p.optional("pm"))
+                                   polynomial.probability = uniform.probability = gaussian.probability = *pm;
+                               a.mutation.learning = {p.real("epsilon"), p.real("alpha"), p.real("gamma")};
+                               return a;
+                           });
+    e.memory = population_memory(3);
+    registry.add(std::move(e));
+}
+
 void add(AlgorithmRegistry& registry, bool plus, std::string summary) {
     auto e = box_algorithm(plus ? "ga-plus" : "ga", "ga", std::move(summary), params(plus),
                            [plus](const Params& p) { return configure_box(p, plus); });
@@ -76,6 +215,9 @@ void register_ga(AlgorithmRegistry& registry) {
         "at a common cell, segment mutation");
     add(registry, true,
         "the same GA with (mu + lambda) reinsertion: best N of parents and children, as pagmo2's sga; on chains too");
+    add_iaga(registry);
+    add_icga(registry);
+    add_ga_q(registry);
 }
 
 }  // namespace pride::engine
