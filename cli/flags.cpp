@@ -15,7 +15,8 @@ std::string user_message(const InputError& e) {
                                                           {"evaluations", "--evals"}, {"wall_ms", "--wall-ms"},
                                                           {"target", "--target"},     {"oracle", "--oracle"},
                                                           {"seed", "--seed"},         {"map", "--map"},
-                                                          {"jobs", "--jobs"},         {"instance", "--instance"}};
+                                                          {"jobs", "--jobs"},         {"instance", "--instance"},
+                                                          {"objectives", "--objectives"}};
     const std::string& where = e.where();
     if (where.empty()) return e.what();
     const auto space = where.find(' ');
