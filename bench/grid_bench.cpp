@@ -153,9 +153,9 @@ void bench_pareto(const std::string& label, const GridMap& map, Cell s, Cell g, 
     const struct {
         const char* name;
         Criteria c;
-    } sets[] = {{"length,turns", {true, true, false}},
-                {"length,angle", {true, false, true}},
-                {"length,angle,turns", {true, true, true}}};
+    } sets[] = {{"length+turns", {true, true, false}},
+                {"length+angle", {true, false, true}},
+                {"length+angle+turns", {true, true, true}}};
     for (const auto& set : sets) {
         ParetoSearch search;
         std::vector<double> wall;
@@ -170,7 +170,7 @@ void bench_pareto(const std::string& label, const GridMap& map, Cell s, Cell g, 
     }
     const auto start = Clock::now();
     const auto iqga = iqga_optimum(map, s, g);
-    fmt::print("pareto,{},iqga optimum {:.6f},,,{:.3f}\n", label, iqga.value_or(0.0), ms_since(start));
+    fmt::print("pareto,{},iqga optimum {:.6f},1,,{:.3f}\n", label, iqga.value_or(0.0), ms_since(start));
 }
 
 void bench_paretos(const std::string& maps) {

@@ -127,12 +127,12 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
 
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
                      const std::string& file, const std::string& shown_as, PictureFormat format) {
-    draw(map, file, shown_as, format,
-         [&](cairo_t* cr, double cell) { paint_many(cr, map, start, goal, paths, cell); });
+    draw(map, file, shown_as, format, [&](cairo_t* cr, double cell) { paint_many(cr, map, start, goal, paths, cell); });
 }
 
-void write_pictures(const std::vector<std::pair<std::string, PictureFormat>>& pictures,
-                    const std::function<void(const std::string& file, const std::string& shown_as, PictureFormat)>& draw_one) {
+void write_pictures(
+    const std::vector<std::pair<std::string, PictureFormat>>& pictures,
+    const std::function<void(const std::string& file, const std::string& shown_as, PictureFormat)>& draw_one) {
     std::error_code ec;
     try {
         for (const auto& [file, format] : pictures) draw_one(file + ".part", file, format);

@@ -78,7 +78,10 @@ int path_command(const PathOptions& o, std::ostream& out) {
         // The oracle sums step and turn costs in another order than the metrics do: values that
         // agree to 1e-9 (relative) are the same optimum, and the gap is exactly 0.
         const double scale = std::max(1.0, std::abs(*run.optimum));
-        gap = std::abs(run.value - *run.optimum) <= 1e-9 * scale ? 0.0 : (run.value - *run.optimum) / *run.optimum;
+        // Relative to |optimum|, so that a worse value has a positive gap when the optimum is negative
+        // (iqga); for every other objective the optimum is >= 0 and this is (value - optimum) / optimum.
+        gap = std::abs(run.value - *run.optimum) <= 1e-9 * scale ? 0.0
+                                                                 : (run.value - *run.optimum) / std::abs(*run.optimum);
     }
     // The pictures first: they are the only output that can fail now. Both are drawn to temporary
     // files and renamed only when both succeeded, so a failure leaves no picture and prints nothing.

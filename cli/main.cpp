@@ -140,8 +140,9 @@ int main(int argc, char** argv) {
         const bool known = argc > 1 && std::any_of(subcommands.begin(), subcommands.end(),
                                                    [&](const CLI::App* s) { return s->get_name() == argv[1]; });
         if (argc > 1 && argv[1][0] != '-' && !known)
-            throw pride::InputError(std::string("unknown subcommand '") + argv[1] +
-                                    "' (expected run, eval, list, path, pareto, scen, roughset, bench, report or export)");
+            throw pride::InputError(
+                std::string("unknown subcommand '") + argv[1] +
+                "' (expected run, eval, list, path, pareto, scen, roughset, bench, report or export)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);

@@ -134,7 +134,8 @@ class Search {
         std::vector<FrontPoint> out;
         for (const std::uint32_t id : ids) {
             FrontPoint p;
-            for (std::uint32_t i = id; i != kNil; i = labels_[i].parent) p.path.push_back(map_.cell(labels_[i].state / kDirs));
+            for (std::uint32_t i = id; i != kNil; i = labels_[i].parent)
+                p.path.push_back(map_.cell(labels_[i].state / kDirs));
             std::reverse(p.path.begin(), p.path.end());
             const Label& l = labels_[id];
             p.steps = {l.straight, l.diagonal};

@@ -67,11 +67,11 @@ int compare_lengths(const StepCounts& x, const StepCounts& y) noexcept;
 
 /// One point of the front and one path that has it.
 struct FrontPoint {
-    StepCounts steps;      // the exact length
-    double length = 0.0;   // metrics(path).length (the same bits as `pride path` reports)
+    StepCounts steps;     // the exact length
+    double length = 0.0;  // metrics(path).length (the same bits as `pride path` reports)
     int turns = 0;
     int angle_penalty = 0;
-    Path path;             // start first, goal last
+    Path path;  // start first, goal last
 };
 
 struct ParetoOptions {
