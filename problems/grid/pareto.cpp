@@ -57,7 +57,13 @@ int sign_of(std::int64_t x, std::int64_t y) noexcept {
 }  // namespace
 
 int compare_lengths(const StepCounts& x, const StepCounts& y) noexcept {
-    return sign_of(x.straight - y.straight, y.diagonal - x.diagonal);
+    const std::int64_t a = x.straight - y.straight, b = y.diagonal - x.diagonal;
+    // Fast path: a - b sqrt(2) in doubles is off by less than 1e-8 while |b| < 2^26 (a is exact),
+    // so a difference beyond 1e-6 has the sign it shows; closer ones are decided exactly.
+    const double approx = static_cast<double>(a) - static_cast<double>(b) * kSqrt2;
+    if (approx > 1e-6 && b < (std::int64_t{1} << 26) && -b < (std::int64_t{1} << 26)) return 1;
+    if (approx < -1e-6 && b < (std::int64_t{1} << 26) && -b < (std::int64_t{1} << 26)) return -1;
+    return sign_of(a, b);
 }
 
 namespace {
@@ -68,8 +74,14 @@ constexpr std::uint32_t kNil = std::numeric_limits<std::uint32_t>::max();
 
 struct Label {
     std::int32_t straight, diagonal, turns, angle;
-    std::uint32_t state, parent, next;  // next: the following label of the same state
+    std::uint32_t state, parent;
     bool dead;
+};
+
+/// A label's costs as its state's list holds them, side by side for the dominance scans.
+struct Costs {
+    std::int32_t straight, diagonal, turns, angle;
+    std::uint32_t label;
 };
 
 /// The open list's entry: the key (length + octile distance, exact; the other criteria) and the label.
@@ -83,12 +95,12 @@ class Search {
     Search(const GridMap& map, Cell s, Cell g, const Criteria& c, const ParetoOptions& o)
         : map_(map), goal_(g), c_(c), o_(o), goal_index_(static_cast<std::uint32_t>(map.index(g))) {
         max_labels_ = std::min<std::size_t>(o.max_labels, std::size_t{1} << 25);
-        head_.assign(map.size() * kDirs, kNil);
+        lists_.resize(map.size() * kDirs);
         goal_state_ = goal_index_ * kDirs + kNone;
         // The criteria after length, in the canonical order, as the key's second and third parts.
         if (c.turns) second_ = &Label::turns;
         if (c.angle_penalty) (second_ ? third_ : second_) = &Label::angle;
-        insert({0, 0, 0, 0, static_cast<std::uint32_t>(map.index(s)) * kDirs + kNone, kNil, kNil, false});
+        insert({0, 0, 0, 0, static_cast<std::uint32_t>(map.index(s)) * kDirs + kNone, kNil, false});
     }
 
     void run() {
@@ -121,8 +133,7 @@ class Search {
 
     std::vector<FrontPoint> front() const {
         std::vector<std::uint32_t> ids;
-        for (std::uint32_t i = head_[goal_state_]; i != kNil; i = labels_[i].next)
-            if (!labels_[i].dead) ids.push_back(i);
+        for (const Costs& c : lists_[goal_state_]) ids.push_back(c.label);
         std::sort(ids.begin(), ids.end(), [&](std::uint32_t x, std::uint32_t y) {
             const Label &a = labels_[x], &b = labels_[y];
             const int c = compare_lengths({a.straight, a.diagonal}, {b.straight, b.diagonal});
@@ -151,7 +162,8 @@ class Search {
 
   private:
     /// x weakly dominates y in the chosen criteria, y's costs raised by (ds, dd, dt, da).
-    bool dominates(const Label& x, const Label& y, int ds = 0, int dd = 0, int dt = 0, int da = 0) const noexcept {
+    template <class X, class Y>
+    bool dominates(const X& x, const Y& y, int ds = 0, int dd = 0, int dt = 0, int da = 0) const noexcept {
         if (c_.turns && x.turns > y.turns + dt) return false;
         if (c_.angle_penalty && x.angle > y.angle + da) return false;
         return !c_.length || compare_lengths({x.straight, x.diagonal}, {y.straight + ds, y.diagonal + dd}) <= 0;
@@ -179,32 +191,30 @@ class Search {
             const int t = std::max(std::abs(dx), std::abs(dy));
             ht = dx == t * kDx[last] && dy == t * kDy[last] ? 0 : 1;
         }
-        for (std::uint32_t i = head_[goal_state_]; i != kNil; i = labels_[i].next)
-            if (!labels_[i].dead && dominates(labels_[i], l, hs, hd, ht, 10 * ht)) return true;
+        for (const Costs& c : lists_[goal_state_])
+            if (dominates(c, l, hs, hd, ht, 10 * ht)) return true;
         return false;
     }
 
     void insert(const Label& candidate) {
         const std::uint32_t index = candidate.state / kDirs;
         if (o_.use_heuristic && bounded_by_goal(candidate, index, static_cast<int>(candidate.state % kDirs))) return;
-        // The state's list: drop dead labels on the way, stop at one that dominates the candidate,
-        // kill those it dominates.
-        std::uint32_t* link = &head_[candidate.state];
-        while (*link != kNil) {
-            Label& l = labels_[*link];
-            if (!l.dead && dominates(l, candidate)) return;
-            if (!l.dead && dominates(candidate, l)) l.dead = true;
-            if (l.dead)
-                *link = l.next;
-            else
-                link = &l.next;
-        }
-        require(labels_.size() < max_labels_, "pareto",
-                "the front needs more than " + std::to_string(max_labels_) + " labels on " + map_.name());
+        // The state's list: stop at a label that dominates the candidate, kill (and drop) those it
+        // dominates. The order of a list does not matter: an equal vector is never added twice.
+        std::vector<Costs>& list = lists_[candidate.state];
+        for (const Costs& c : list)
+            if (dominates(c, candidate)) return;
+        std::erase_if(list, [&](const Costs& c) {
+            if (!dominates(candidate, c)) return false;
+            labels_[c.label].dead = true;
+            return true;
+        });
+        if (labels_.size() >= max_labels_)  // (not require(): its message would be built every time)
+            throw InputError("pareto",
+                             "the front needs more than " + std::to_string(max_labels_) + " labels on " + map_.name());
         const auto id = static_cast<std::uint32_t>(labels_.size());
         labels_.push_back(candidate);
-        labels_.back().next = head_[candidate.state];
-        head_[candidate.state] = id;
+        list.push_back({candidate.straight, candidate.diagonal, candidate.turns, candidate.angle, id});
         if (candidate.state == goal_state_) return;  // goal labels are not extended
         int hs = 0, hd = 0;
         if (o_.use_heuristic) octile(index, hs, hd);
@@ -235,7 +245,7 @@ class Search {
     std::int32_t Label::*second_ = nullptr;
     std::int32_t Label::*third_ = nullptr;
     Later later_{c_.length};
-    std::vector<std::uint32_t> head_;  // per state: its first label, kNil when none
+    std::vector<std::vector<Costs>> lists_;  // per state: the costs of its live labels
     std::vector<Label> labels_;
     std::vector<Entry> heap_;
 };
@@ -246,9 +256,10 @@ std::vector<FrontPoint> ParetoSearch::front(const GridMap& map, Cell s, Cell g, 
                                             const ParetoOptions& options) {
     labels_ = 0;
     require(criteria.count() >= 1, "objectives", "at least one of length, turns and angle is needed");
-    // Every label's costs stay below 50 * 2^25 < 2^31, and states are indexed by 32 bits.
-    require(map.size() <= 4'000'000, "map",
-            map.name() + " has " + std::to_string(map.size()) + " cells; the Pareto front takes at most 4000000");
+    // Every label's costs stay below 50 * 2^25 < 2^31, states are indexed by 32 bits, and the
+    // per-state lists take 24 bytes per state before any label exists (216 MB at the limit).
+    require(map.size() <= 1'000'000, "map",
+            map.name() + " has " + std::to_string(map.size()) + " cells; the Pareto front takes at most 1000000");
     if (!map.free(s) || !map.free(g)) return {};
     if (s == g) return {FrontPoint{{0, 0}, 0.0, 0, 0, Path{s}}};
     Search search(map, s, g, criteria, options);

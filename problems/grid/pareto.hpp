@@ -79,7 +79,9 @@ struct ParetoOptions {
     /// Guide the length by the octile distance and prune with lower bounds; false: plain Martins.
     /// Both give the same front (the same points; the paths of tied points may differ).
     bool use_heuristic = true;
-    /// InputError("pareto", ...) instead of creating more labels than this (memory: 32 bytes each).
+    /// InputError("pareto", ...) instead of creating more labels than this (at most 2^25; memory:
+    /// 28 bytes each, plus 20 while it is live and 20 while it is open). Maps of more than a million
+    /// cells are refused before anything is allocated (the per-state lists take 24 bytes a state).
     std::size_t max_labels = std::size_t{1} << 25;
 };
 
