@@ -202,13 +202,18 @@ class Search {
         // The state's list: stop at a label that dominates the candidate, kill (and drop) those it
         // dominates. The order of a list does not matter: an equal vector is never added twice.
         std::vector<Costs>& list = lists_[candidate.state];
-        for (const Costs& c : list)
-            if (dominates(c, candidate)) return;
-        std::erase_if(list, [&](const Costs& c) {
-            if (!dominates(candidate, c)) return false;
-            labels_[c.label].dead = true;
-            return true;
-        });
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            // Once the candidate dominates a label, no other one dominates the candidate (it would
+            // dominate that label too, and a list holds no dominated label).
+            if (kept == k && dominates(list[k], candidate)) return;
+            if (dominates(candidate, list[k])) {
+                labels_[list[k].label].dead = true;
+                continue;
+            }
+            list[kept++] = list[k];
+        }
+        list.resize(kept);
         if (labels_.size() >= max_labels_)  // (not require(): its message would be built every time)
             throw InputError("pareto",
                              "the front needs more than " + std::to_string(max_labels_) + " labels on " + map_.name());
