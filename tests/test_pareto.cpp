@@ -450,6 +450,48 @@ TEST_CASE("pareto: pride pareto prints the front as text and JSON and draws it",
     CHECK(test::slurp(dir.file("f.svg")).find("<svg") != std::string::npos);
 }
 
+TEST_CASE("pareto: pride pareto's --inflate and --corner-cutting are those of pride path", "[pareto][cli]") {
+    test::TempDir dir;
+    // 12 x 12, free but for a few cells well away from the corners (so that inflation by 1 keeps
+    // start and goal free).
+    std::vector<std::string> rows(12, std::string(12, '.'));
+    for (const auto& [x, y] : std::vector<std::pair<int, int>>{{4, 4}, {5, 5}, {7, 3}, {3, 7}, {8, 8}, {6, 9}})
+        rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] = '@';
+    std::string text = "type octile\nheight 12\nwidth 12\nmap\n";
+    for (const auto& r : rows) text += r + "\n";
+    const std::string map = dir.write("m.map", text);
+    const GridMap m = grid::read_map(map);
+    grid::ParetoOptions cutting;
+    cutting.corner_cutting = true;
+    struct Case {
+        std::string flags;
+        GridMap map;
+        grid::ParetoOptions options;
+    };
+    for (const Case& k : {Case{"--inflate 1", m.inflated(1), {}}, Case{"--corner-cutting", m, cutting}}) {
+        INFO(k.flags);
+        const auto front = grid::pareto_front(k.map, {0, 0}, {11, 11}, kLTA, k.options);
+        if (k.flags == "--inflate 1") {  // the flag has an effect: the front differs from the plain map's
+            const auto plain = grid::pareto_front(m, {0, 0}, {11, 11}, kLTA);
+            bool differs = plain.size() != front.size();
+            for (std::size_t i = 0; i < std::min(plain.size(), front.size()); ++i)
+                differs = differs || plain[i].path != front[i].path;
+            CHECK(differs);
+        }
+        const auto r = test::run_pride("pareto --map '" + map +
+                                       "' --start 0,0 --goal 11,11 --objectives length,angle,turns --json " + k.flags);
+        INFO(r.err);
+        REQUIRE(r.status == 0);
+        const auto j = test::parse_json(r.out);
+        REQUIRE(j.at("front").items.size() == front.size());
+        for (std::size_t i = 0; i < front.size(); ++i) {
+            CHECK(j.at("front").items[i].at("length").number == front[i].length);
+            CHECK(j.at("front").items[i].at("turns").number == front[i].turns);
+            CHECK(j.at("front").items[i].at("angle_penalty").number == front[i].angle_penalty);
+        }
+    }
+}
+
 TEST_CASE("pareto: pride pareto's bad input: one line naming the flag, exit 2", "[pareto][cli]") {
     const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
     const std::string base = "pareto --map '" + map + "' ";
