@@ -9,7 +9,10 @@
 //      ILSO's walks use.
 //   4. With --sitp only: the time to make N = 40 SITP paths (file 002's initial population) on
 //      the bundled 40x40 map, beside N = 40 random walks, through the chain space (objective iqga).
-// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp]
+//   5. With --pareto, only: the exact Pareto fronts (problems/grid/pareto.hpp) of (length, turns),
+//      (length, angle_penalty) and all three, and the iqga optimum over the 3-D front, on the
+//      bundled 20x20 and 40x40 maps and on the 100x100 map with 20 % random obstacles.
+// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp | --pareto]
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -28,6 +31,7 @@
 #include "problems/grid/encodings.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/objectives.hpp"
+#include "problems/grid/pareto.hpp"
 #include "problems/grid/rough_rules.hpp"
 
 namespace {
@@ -175,6 +179,41 @@ void bench_swarms(const std::string& maps) {
     for (const char* algorithm : {"pso", "lso", "ilso"}) bench_swarm(maps, algorithm);
 }
 
+/// The fronts on one map: the median wall time of `repeats` searches, the front's size and the
+/// labels created.
+void bench_pareto(const std::string& label, const GridMap& map, Cell s, Cell g, int repeats) {
+    const struct {
+        const char* name;
+        Criteria c;
+    } sets[] = {{"length+turns", {true, true, false}},
+                {"length+angle", {true, false, true}},
+                {"length+angle+turns", {true, true, true}}};
+    for (const auto& set : sets) {
+        ParetoSearch search;
+        std::vector<double> wall;
+        std::size_t points = 0;
+        for (int r = 0; r < repeats; ++r) {
+            const auto start = Clock::now();
+            points = search.front(map, s, g, set.c).size();
+            wall.push_back(ms_since(start));
+        }
+        std::sort(wall.begin(), wall.end());
+        fmt::print("pareto,{},{},{},{},{:.3f}\n", label, set.name, points, search.labels(), wall[wall.size() / 2]);
+    }
+    const auto start = Clock::now();
+    const auto iqga = iqga_optimum(map, s, g);
+    fmt::print("pareto,{},iqga optimum {:.6f},1,,{:.3f}\n", label, iqga.value_or(0.0), ms_since(start));
+}
+
+void bench_paretos(const std::string& maps) {
+    fmt::print("part,map,objectives,front_points,labels,median_ms\n");
+    const Bundled m20 = bundled(maps, "file002-20x20");
+    bench_pareto("file002-20x20", *m20.map, m20.start, m20.goal, 11);
+    const Bundled m40 = bundled(maps, "file002-40x40");
+    bench_pareto("file002-40x40", *m40.map, m40.start, m40.goal, 5);
+    bench_pareto("random-100x100-20%", random_map(100, 100, 0.2, 3), {0, 0}, {99, 99}, 3);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -183,12 +222,17 @@ int main(int argc, char** argv) {
     CLI::App app{"grid benchmark: A*, decoding, PSO, LSO and ILSO on the 10x10 map"};
     app.add_option("--scen", scens, "Moving AI scenario files for the A* part");
     app.add_option("--maps", maps, "folder of the bundled maps (default examples/maps)");
-    bool sitp = false;
+    bool sitp = false, pareto = false;
     app.add_flag("--sitp", sitp, "only: the time to make N = 40 SITP paths on the bundled 40x40 map");
+    app.add_flag("--pareto", pareto, "only the exact Pareto fronts (20x20, 40x40, random 100x100)");
     CLI11_PARSE(app, argc, argv);
     try {
         if (sitp) {
             bench_sitp(maps);
+            return 0;
+        }
+        if (pareto) {
+            bench_paretos(maps);
             return 0;
         }
         bench_rule_book();

@@ -4,7 +4,10 @@
 #include <cairo.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include "framework/error.hpp"
 
@@ -21,8 +24,7 @@ void trace_path(cairo_t* cr, const grid::Path& path, double cell) {
     }
 }
 
-void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
-           const grid::Path* optimal, double cell) {
+void paint_map(cairo_t* cr, const grid::GridMap& map, double cell) {
     const double w = map.width() * cell, h = map.height() * cell;
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
@@ -46,6 +48,21 @@ void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell g
     }
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+}
+
+void paint_ends(cairo_t* cr, grid::Cell start, grid::Cell goal, double cell) {
+    const double radius = std::max(2.5, cell * 0.35);
+    cairo_set_source_rgb(cr, 0.05, 0.6, 0.15);
+    cairo_arc(cr, (start.x + 0.5) * cell, (start.y + 0.5) * cell, radius, 0, 6.283185307179586);
+    cairo_fill(cr);
+    cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+    cairo_arc(cr, (goal.x + 0.5) * cell, (goal.y + 0.5) * cell, radius, 0, 6.283185307179586);
+    cairo_fill(cr);
+}
+
+void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
+           const grid::Path* optimal, double cell) {
+    paint_map(cr, map, cell);
     if (optimal && !optimal->empty()) {  // underneath, wide and pale, so the found path stays visible
         cairo_set_source_rgba(cr, 0.1, 0.65, 0.25, 0.45);
         cairo_set_line_width(cr, std::max(3.0, cell * 0.55));
@@ -58,19 +75,28 @@ void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell g
         trace_path(cr, *path, cell);
         cairo_stroke(cr);
     }
-    const double radius = std::max(2.5, cell * 0.35);
-    cairo_set_source_rgb(cr, 0.05, 0.6, 0.15);
-    cairo_arc(cr, (start.x + 0.5) * cell, (start.y + 0.5) * cell, radius, 0, 6.283185307179586);
-    cairo_fill(cr);
-    cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
-    cairo_arc(cr, (goal.x + 0.5) * cell, (goal.y + 0.5) * cell, radius, 0, 6.283185307179586);
-    cairo_fill(cr);
+    paint_ends(cr, start, goal, cell);
 }
 
-}  // namespace
+/// Several paths, each in its own hue (from blue for the first to red for the last), half
+/// transparent so that shared stretches show as darker.
+void paint_many(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal,
+                const std::vector<grid::Path>& paths, double cell) {
+    paint_map(cr, map, cell);
+    const double n = static_cast<double>(std::max<std::size_t>(paths.size(), 2) - 1);
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        const double t = static_cast<double>(i) / n;
+        cairo_set_source_rgba(cr, 0.1 + 0.8 * t, 0.3 * (1.0 - std::abs(2.0 * t - 1.0)) + 0.1, 0.9 - 0.8 * t, 0.6);
+        cairo_set_line_width(cr, std::max(1.5, cell * 0.18));
+        trace_path(cr, paths[i], cell);
+        cairo_stroke(cr);
+    }
+    paint_ends(cr, start, goal, cell);
+}
 
-void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
-               const grid::Path* optimal, const std::string& file, const std::string& shown_as, PictureFormat format) {
+template <class Paint>
+void draw(const grid::GridMap& map, const std::string& file, const std::string& shown_as, PictureFormat format,
+          Paint paint_with) {
     // About 800 pixels on the longer side, cells between 2 and 40 pixels.
     const double cell = std::clamp(800.0 / std::max(map.width(), map.height()), 2.0, 40.0);
     const double w = map.width() * cell, h = map.height() * cell;
@@ -79,7 +105,7 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
             ? cairo_svg_surface_create(file.c_str(), w, h)
             : cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(w), static_cast<int>(h));
     cairo_t* cr = cairo_create(surface);
-    paint(cr, map, start, goal, path, optimal, cell);
+    paint_with(cr, cell);
     cairo_destroy(cr);
     cairo_status_t status = cairo_surface_status(surface);
     if (format == PictureFormat::png && status == CAIRO_STATUS_SUCCESS)
@@ -89,6 +115,35 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
     cairo_surface_destroy(surface);
     if (status != CAIRO_STATUS_SUCCESS)
         throw InputError(shown_as + ": cannot write the picture: " + cairo_status_to_string(status));
+}
+
+}  // namespace
+
+void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
+               const grid::Path* optimal, const std::string& file, const std::string& shown_as, PictureFormat format) {
+    draw(map, file, shown_as, format,
+         [&](cairo_t* cr, double cell) { paint(cr, map, start, goal, path, optimal, cell); });
+}
+
+void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
+                     const std::string& file, const std::string& shown_as, PictureFormat format) {
+    draw(map, file, shown_as, format, [&](cairo_t* cr, double cell) { paint_many(cr, map, start, goal, paths, cell); });
+}
+
+void write_pictures(
+    const std::vector<std::pair<std::string, PictureFormat>>& pictures,
+    const std::function<void(const std::string& file, const std::string& shown_as, PictureFormat)>& draw_one) {
+    std::error_code ec;
+    try {
+        for (const auto& [file, format] : pictures) draw_one(file + ".part", file, format);
+        for (const auto& [file, format] : pictures) {
+            std::filesystem::rename(file + ".part", file, ec);
+            if (ec) throw InputError(file + ": cannot write the picture: " + ec.message());
+        }
+    } catch (...) {
+        for (const auto& [file, format] : pictures) std::filesystem::remove(file + ".part", ec);
+        throw;
+    }
 }
 
 }  // namespace pride::cli

@@ -1,7 +1,10 @@
 #pragma once
 // Pictures of a grid run: the map, start, goal, the path found and (optionally) the optimal path,
-// as SVG or PNG, drawn once with cairo (Debian's libcairo2) for both formats.
+// or every path of a Pareto front, as SVG or PNG, drawn once with cairo (Debian's libcairo2) for both formats.
+#include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
@@ -15,5 +18,16 @@ enum class PictureFormat { svg, png };
 /// InputError when it cannot.
 void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
                const grid::Path* optimal, const std::string& file, const std::string& shown_as, PictureFormat format);
+
+/// The map with several paths (a Pareto front), each in its own colour, from blue (the first) to
+/// red (the last).
+void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
+                     const std::string& file, const std::string& shown_as, PictureFormat format);
+
+/// Draws every (file, format) with `draw_one(temporary, file, format)` to a temporary name beside
+/// the file and renames them all only when all succeeded, so that a failure leaves no picture.
+void write_pictures(
+    const std::vector<std::pair<std::string, PictureFormat>>& pictures,
+    const std::function<void(const std::string& file, const std::string& shown_as, PictureFormat)>& draw_one);
 
 }  // namespace pride::cli

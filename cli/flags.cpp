@@ -5,17 +5,29 @@
 namespace pride::cli {
 
 std::string user_message(const InputError& e) {
-    static const std::map<std::string, std::string> flags{{"dim", "--dim"},           {"problem", "--problem"},
-                                                          {"algo", "--algo"},         {"start", "--start"},
-                                                          {"goal", "--goal"},         {"objective", "--objective"},
-                                                          {"encoding", "--encoding"}, {"connector", "--connector"},
-                                                          {"init", "--init"},         {"waypoints", "--waypoints"},
-                                                          {"weights", "--weights"},   {"lambda", "--lambda"},
-                                                          {"inflate", "--inflate"},   {"iterations", "--iters"},
-                                                          {"evaluations", "--evals"}, {"wall_ms", "--wall-ms"},
-                                                          {"target", "--target"},     {"oracle", "--oracle"},
-                                                          {"seed", "--seed"},         {"map", "--map"},
-                                                          {"jobs", "--jobs"},         {"instance", "--instance"}};
+    static const std::map<std::string, std::string> flags{{"dim", "--dim"},
+                                                          {"problem", "--problem"},
+                                                          {"algo", "--algo"},
+                                                          {"start", "--start"},
+                                                          {"goal", "--goal"},
+                                                          {"objective", "--objective"},
+                                                          {"encoding", "--encoding"},
+                                                          {"connector", "--connector"},
+                                                          {"init", "--init"},
+                                                          {"waypoints", "--waypoints"},
+                                                          {"weights", "--weights"},
+                                                          {"lambda", "--lambda"},
+                                                          {"inflate", "--inflate"},
+                                                          {"iterations", "--iters"},
+                                                          {"evaluations", "--evals"},
+                                                          {"wall_ms", "--wall-ms"},
+                                                          {"target", "--target"},
+                                                          {"oracle", "--oracle"},
+                                                          {"seed", "--seed"},
+                                                          {"map", "--map"},
+                                                          {"jobs", "--jobs"},
+                                                          {"instance", "--instance"},
+                                                          {"objectives", "--objectives"}};
     const std::string& where = e.where();
     if (where.empty()) return e.what();
     const auto space = where.find(' ');

@@ -23,16 +23,6 @@ namespace {
 
 using namespace pride::grid;
 
-Cell parse_cell(const std::string& text, const std::string& where) {
-    const auto comma = text.find(',');
-    require(comma != std::string::npos, where, "expected X,Y, got '" + text + "'");
-    const double x = parse_finite(std::string_view(text).substr(0, comma), where + " X");
-    const double y = parse_finite(std::string_view(text).substr(comma + 1), where + " Y");
-    require(x == std::floor(x) && y == std::floor(y) && std::abs(x) < 1e9 && std::abs(y) < 1e9, where,
-            "expected integer coordinates, got '" + text + "'");
-    return {static_cast<int>(x), static_cast<int>(y)};
-}
-
 /// The spec of `pride path`'s options (names checked, the map not read yet).
 engine::GridSpec grid_spec(const PathOptions& o) {
     engine::GridSpec g;
@@ -49,6 +39,16 @@ engine::GridSpec grid_spec(const PathOptions& o) {
 }
 
 }  // namespace
+
+Cell parse_cell(const std::string& text, const std::string& where) {
+    const auto comma = text.find(',');
+    require(comma != std::string::npos, where, "expected X,Y, got '" + text + "'");
+    const double x = parse_finite(std::string_view(text).substr(0, comma), where + " X");
+    const double y = parse_finite(std::string_view(text).substr(comma + 1), where + " Y");
+    require(x == std::floor(x) && y == std::floor(y) && std::abs(x) < 1e9 && std::abs(y) < 1e9, where,
+            "expected integer coordinates, got '" + text + "'");
+    return {static_cast<int>(x), static_cast<int>(y)};
+}
 
 engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec_out) {
     engine::GridSpec spec = grid_spec(o);
@@ -78,26 +78,20 @@ int path_command(const PathOptions& o, std::ostream& out) {
         // The oracle sums step and turn costs in another order than the metrics do: values that
         // agree to 1e-9 (relative) are the same optimum, and the gap is exactly 0.
         const double scale = std::max(1.0, std::abs(*run.optimum));
-        gap = std::abs(run.value - *run.optimum) <= 1e-9 * scale ? 0.0 : (run.value - *run.optimum) / *run.optimum;
+        // Relative to |optimum|, so that a worse value has a positive gap when the optimum is negative
+        // (iqga); for every other objective the optimum is >= 0 and this is (value - optimum) / optimum.
+        gap = std::abs(run.value - *run.optimum) <= 1e-9 * scale ? 0.0
+                                                                 : (run.value - *run.optimum) / std::abs(*run.optimum);
     }
     // The pictures first: they are the only output that can fail now. Both are drawn to temporary
     // files and renamed only when both succeeded, so a failure leaves no picture and prints nothing.
     std::vector<std::pair<std::string, PictureFormat>> pictures;
     if (!o.svg.empty()) pictures.emplace_back(o.svg, PictureFormat::svg);
     if (!o.png.empty()) pictures.emplace_back(o.png, PictureFormat::png);
-    std::error_code ec;
-    try {
-        for (const auto& [file, format] : pictures)
-            draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.path : nullptr,
-                      o.oracle ? &run.optimal_path : nullptr, file + ".part", file, format);
-        for (const auto& [file, format] : pictures) {
-            std::filesystem::rename(file + ".part", file, ec);
-            if (ec) throw InputError(file + ": cannot write the picture: " + ec.message());
-        }
-    } catch (...) {
-        for (const auto& [file, format] : pictures) std::filesystem::remove(file + ".part", ec);
-        throw;
-    }
+    write_pictures(pictures, [&](const std::string& file, const std::string& shown_as, PictureFormat format) {
+        draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.path : nullptr,
+                  o.oracle ? &run.optimal_path : nullptr, file, shown_as, format);
+    });
 
     if (o.json) {
         std::string text = fmt::format(

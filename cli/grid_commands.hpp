@@ -43,6 +43,9 @@ int path_command(const PathOptions& o, std::ostream& out);
 /// it ran (the map as loaded and inflated, start, goal) into `spec` when given.
 engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec = nullptr);
 
+/// A cell given as "X,Y" (integers); InputError naming `where` otherwise.
+grid::Cell parse_cell(const std::string& text, const std::string& where);
+
 struct ScenOptions {
     std::string file;
     std::string map_dir;  // default: the scenario file's folder

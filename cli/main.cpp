@@ -12,6 +12,7 @@
 #include "cli/export.hpp"
 #include "cli/flags.hpp"
 #include "cli/grid_commands.hpp"
+#include "cli/pareto.hpp"
 #include "cli/report.hpp"
 #include "cli/roughset.hpp"
 #include "engine/registry.hpp"
@@ -84,6 +85,21 @@ int main(int argc, char** argv) {
     path_cmd->add_option("--png", path.png, "draw the map and the path(s) to this PNG file");
     path_cmd->add_option("--param", path.params, "algorithm parameter NAME=VALUE (repeatable)");
 
+    ParetoOptions pareto;
+    auto* pareto_cmd = app.add_subcommand(
+        "pareto", "the exact Pareto front of length, turns and angle penalty on a grid map, with a path each");
+    pareto_cmd->add_option("--map", pareto.map, "Moving AI .map or 0/1 matrix file")->required();
+    pareto_cmd->add_option("--start", pareto.start, "start cell X,Y (x: column from the left, y: row from the top)")
+        ->required();
+    pareto_cmd->add_option("--goal", pareto.goal, "goal cell X,Y")->required();
+    pareto_cmd->add_option("--objectives", pareto.objectives, "length,turns, length,angle or length,angle,turns")
+        ->required();
+    pareto_cmd->add_option("--inflate", pareto.inflate, "obstacle inflation radius in cells (default 0)");
+    pareto_cmd->add_flag("--corner-cutting", pareto.corner_cutting, "allow diagonal steps past a blocked corner");
+    pareto_cmd->add_flag("--json", pareto.json, "print one JSON object");
+    pareto_cmd->add_option("--svg", pareto.svg, "draw the map and every path of the front to this SVG file");
+    pareto_cmd->add_option("--png", pareto.png, "draw the map and every path of the front to this PNG file");
+
     ScenOptions scen;
     auto* scen_cmd = app.add_subcommand("scen", "solve every line of a Moving AI scenario file with A* and compare");
     scen_cmd->add_option("file", scen.file, "the .scen file")->required();
@@ -125,8 +141,9 @@ int main(int argc, char** argv) {
         const bool known = argc > 1 && std::any_of(subcommands.begin(), subcommands.end(),
                                                    [&](const CLI::App* s) { return s->get_name() == argv[1]; });
         if (argc > 1 && argv[1][0] != '-' && !known)
-            throw pride::InputError(std::string("unknown subcommand '") + argv[1] +
-                                    "' (expected run, eval, list, path, scen, roughset, bench, report or export)");
+            throw pride::InputError(
+                std::string("unknown subcommand '") + argv[1] +
+                "' (expected run, eval, list, path, pareto, scen, roughset, bench, report or export)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
@@ -137,6 +154,7 @@ int main(int argc, char** argv) {
                                 std::cout);
         if (*path_cmd) return path_command(path, std::cout);
         if (*scen_cmd) return scen_command(scen, std::cout);
+        if (*pareto_cmd) return pareto_command(pareto, std::cout);
         if (*roughset_cmd) return roughset_command(roughset, std::cout);
         if (*bench_cmd) return bench_command(bench, std::cout);
         if (*report_cmd) return report_command(report, std::cout);

@@ -213,7 +213,7 @@ void prepare(Campaign& c) {
                 // The exact optimum beside every run whose objective has one, for gaps in reports.
                 g->oracle = false;
                 Problem problem(p.spec);
-                if (problem.additive()) {
+                if (problem.has_optimum()) {
                     problem = problem.with_oracle();
                     g->oracle = true;
                 }

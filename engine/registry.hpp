@@ -47,8 +47,9 @@ struct AlgorithmEntry {
     std::function<ChainResult(const Params&, const ChainTarget&, const Termination&, std::uint64_t seed)> run_chain;
     /// Solves a grid as a whole (baselines): no budget, no seed.
     std::function<GridSolution(const GridTarget&)> solve_grid;
-    /// Whole-map algorithms that need an additive objective (the exact optimum) say so.
-    bool needs_additive_objective = false;
+    /// Whole-map algorithms that return the exact optimum say so: the objective must have one
+    /// (GridTarget::has_optimum), and the run records it beside the result.
+    bool needs_optimum = false;
     /// Bytes a run needs besides the problem, for a population algorithm in `dimension`; checked
     /// against the machine's memory before anything is allocated.
     std::function<double(const Params&, std::size_t dimension)> memory;

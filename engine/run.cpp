@@ -14,6 +14,7 @@
 #include "framework/error.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/oracle.hpp"
+#include "problems/grid/pareto.hpp"
 
 namespace pride::engine {
 
@@ -145,7 +146,7 @@ grid::LinearObjective linear_objective(const GridSpec& g) {
 }
 
 void require_oracle(const GridSpec& g, const GridTarget& target) {
-    require(target.additive(), "oracle",
+    require(target.has_optimum(), "oracle",
             "the " + g.objective + " objective is not a sum of step and turn costs, so it has no exact oracle");
 }
 
@@ -242,7 +243,7 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
         return params;
     }
     if (entry.solve_grid) {
-        require(!entry.needs_additive_objective || p.grid->additive(), "objective",
+        require(!entry.needs_optimum || p.grid->has_optimum(), "objective",
                 "the " + g->objective + " objective is not a sum of step and turn costs, so " + entry.name +
                     " has no optimum to find");
         return params;
@@ -316,6 +317,29 @@ void record_path(GridOutcome& o, const GridTarget& target, const grid::Path& can
 
 }  // namespace
 
+double grid_optimum(const GridTarget& target, grid::Path* out) {
+    if (!target.additive()) {
+        FrontOptimum& cached = *target.front_optimum;
+        std::call_once(cached.once, [&] {
+            const auto& g = std::get<grid::GridProblem<grid::IqgaObjective>>(target.problem);
+            cached.value = grid::iqga_optimum(g.map(), g.start(), g.goal(), g.corner_cutting(), &cached.path);
+        });
+        if (!cached.value) return -1.0;
+        if (out) *out = cached.path;
+        return *cached.value;
+    }
+    return std::visit(
+        [&](const auto& gp) {
+            double optimum = -1.0;
+            if constexpr (std::decay_t<decltype(gp.objective())>::additive) {
+                grid::Oracle oracle;
+                optimum = oracle.solve(gp.map(), gp.start(), gp.goal(), gp.objective(), out, gp.corner_cutting());
+            }
+            return optimum;
+        },
+        target.problem);
+}
+
 Problem::Problem(const ProblemSpec& spec) : prepared_(prepare(spec)) {}
 
 bool Problem::is_grid() const {
@@ -323,6 +347,9 @@ bool Problem::is_grid() const {
 }
 bool Problem::additive() const {
     return prepared_->grid && prepared_->grid->additive();
+}
+bool Problem::has_optimum() const {
+    return prepared_->grid && prepared_->grid->has_optimum();
 }
 Problem Problem::with_oracle() const {
     const auto* g = std::get_if<GridSpec>(&prepared_->spec);
@@ -418,17 +445,7 @@ RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budg
     const auto& g = std::get<GridSpec>(p.spec);
     GridOutcome o;
     const auto start = Clock::now();  // whole-map algorithms: their wall time includes the oracle
-    if (g.oracle || entry.needs_additive_objective) {
-        std::visit(
-            [&](const auto& gp) {
-                if constexpr (std::decay_t<decltype(gp.objective())>::additive) {
-                    grid::Oracle oracle;
-                    o.optimum = oracle.solve(gp.map(), gp.start(), gp.goal(), gp.objective(), &o.optimal_path,
-                                             gp.corner_cutting());
-                }
-            },
-            p.grid->problem);
-    }
+    if (g.oracle || entry.needs_optimum) o.optimum = grid_optimum(*p.grid, &o.optimal_path);
     if (entry.solve_grid) {
         GridSolution s = entry.solve_grid(*p.grid);
         o.feasible = true;

@@ -22,10 +22,13 @@ class Problem {
     explicit Problem(const ProblemSpec& spec);
 
     bool is_grid() const;
-    /// A grid problem whose objective is a sum of step and turn costs (so it has an exact optimum).
+    /// A grid problem whose objective is a sum of step and turn costs (the oracle's objectives).
     bool additive() const;
+    /// A grid problem whose objective has an exact optimum: every additive one (the oracle) and
+    /// iqga (over the 3-D Pareto front).
+    bool has_optimum() const;
     /// The same grid problem with the exact optimum computed beside every run (GridSpec::oracle),
-    /// without building it again; InputError when the objective is not additive.
+    /// without building it again; InputError when the objective has none.
     Problem with_oracle() const;
     /// The dimension of the box an algorithm searches (grids: of the encoding's genotype; chains: 0).
     std::size_t dimension() const;

@@ -4,6 +4,9 @@
 // objectives linear in a path's metrics share one type (LinearObjective), and the connector is a
 // run-time setting, so the grid contributes four box types and two chain types; the continuous
 // functions one (catalog.hpp).
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <variant>
 
 #include "engine/callback.hpp"
@@ -36,12 +39,29 @@ struct BoxTarget {
 struct ChainTarget {
     ChainVariant problem;
 };
+/// The exact optimum of iqga (over the 3-D Pareto front, problems/grid/pareto.hpp), worked out
+/// once per prepared problem and shared by its copies and its runs.
+struct FrontOptimum {
+    std::once_flag once;
+    std::optional<double> value;
+    grid::Path path;
+};
+
 /// A grid problem as whole-map algorithms (A*, the exact optimum) see it.
 struct GridTarget {
     GridVariant problem;
+    std::shared_ptr<FrontOptimum> front_optimum = std::make_shared<FrontOptimum>();
     bool additive() const {
         return std::visit([](const auto& p) { return std::decay_t<decltype(p.objective())>::additive; }, problem);
     }
+    /// Every objective has an exact optimum: the additive ones through the oracle (oracle.hpp),
+    /// iqga through the 3-D Pareto front (pareto.hpp).
+    bool has_optimum() const { return true; }
 };
+
+/// The exact optimum of the target's objective and one optimal path (into `out` when given), or
+/// -1 when the goal cannot be reached: the oracle for an additive objective, the least iqga value
+/// on the 3-D Pareto front for iqga (computed once per prepared problem).
+double grid_optimum(const GridTarget& target, grid::Path* out);
 
 }  // namespace pride::engine

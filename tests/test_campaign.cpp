@@ -903,8 +903,6 @@ TEST_CASE("bench: grid options that only a run would reject are refused up front
     expect_campaign_error(with("encoding = \"free\"\nwaypoints = 0\n"), {"FILE:5:", "'g1'", "waypoints"});
     expect_campaign_error(replace(with("init = \"walk\"\n"), "type = \"ga\"", "type = \"nlopt:LN_SBPLX\""),
                           {"FILE:", "walk"});
-    expect_campaign_error(replace(with("objective = \"iqga\"\n"), "type = \"ga\"", "type = \"exact\""),
-                          {"FILE:", "exact", "iqga"});
     expect_campaign_error(replace(g + "wibble = 3\n", "type = \"ga\"", "type = \"exact\""), {"FILE:11:", "'wibble'"});
     expect_campaign_error(g + "[[algorithm]]\nid = \"b\"\ntype = \"astar\"\npop = 20\n", {"FILE:14:", "pop"});
 }

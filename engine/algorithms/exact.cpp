@@ -1,5 +1,6 @@
-// The exact optimum (problems/grid/oracle.hpp) as a whole-map baseline, for every objective that is
-// a sum of step and turn costs.
+// The exact optimum as a whole-map baseline: the oracle (problems/grid/oracle.hpp) for every
+// objective that is a sum of step and turn costs, the 3-D Pareto front (problems/grid/pareto.hpp)
+// for iqga, whose minimum lies on it.
 #include "problems/grid/oracle.hpp"
 
 #include "engine/family.hpp"
@@ -10,12 +11,16 @@ void register_exact(AlgorithmRegistry& registry) {
     AlgorithmEntry e;
     e.name = "exact";
     e.family = "exact";
-    e.summary = "grids only: the exact optimum of an additive objective, over (cell, last direction)";
-    e.needs_additive_objective = true;
+    e.summary = "grids only: the exact optimum, over (cell, last direction); iqga: over the 3-D Pareto front";
+    e.needs_optimum = true;
     e.solve_grid = [](const GridTarget& target) {
+        GridSolution s;
+        if (!target.additive()) {
+            grid_optimum(target, &s.path);
+            return s;
+        }
         return std::visit(
-            [](const auto& g) {
-                GridSolution s;
+            [&s](const auto& g) {
                 if constexpr (std::decay_t<decltype(g.objective())>::additive) {
                     grid::Oracle oracle;
                     oracle.solve(g.map(), g.start(), g.goal(), g.objective(), &s.path, g.corner_cutting());

@@ -1,0 +1,72 @@
+#include "cli/pareto.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <ostream>
+#include <vector>
+
+#include "cli/draw.hpp"
+#include "cli/grid_commands.hpp"
+#include "cli/numbers.hpp"
+#include "engine/run.hpp"
+#include "framework/error.hpp"
+#include "problems/grid/grid_problem.hpp"
+#include "problems/grid/objectives.hpp"
+#include "problems/grid/pareto.hpp"
+
+namespace pride::cli {
+
+int pareto_command(const ParetoOptions& o, std::ostream& out) {
+    const grid::Criteria criteria = grid::parse_criteria(o.objectives);
+    std::vector<std::string> names;  // as given, with angle spelled angle_penalty
+    for (std::size_t begin = 0; begin <= o.objectives.size();) {
+        const std::size_t comma = std::min(o.objectives.find(',', begin), o.objectives.size());
+        const std::string name = o.objectives.substr(begin, comma - begin);
+        names.push_back(name == "angle" ? "angle_penalty" : name);
+        begin = comma + 1;
+    }
+    const auto map = engine::load_map(o.map, o.inflate);
+    const grid::Cell start = parse_cell(o.start, "--start"), goal = parse_cell(o.goal, "--goal");
+    // The checks of `pride path`: inside, free, and the goal reachable (one line, exit 2).
+    const grid::GridProblem<grid::LengthObjective> checked(map, start, goal, {}, o.corner_cutting);
+
+    grid::ParetoOptions options;
+    options.corner_cutting = o.corner_cutting;
+    // The per-state lists (24 bytes a state) must fit, and the labels stop where memory would end
+    // (at most 68 bytes each: the label, its place in its state's list and in the open list).
+    const double memory = engine::available_memory(), lists = 24.0 * 9.0 * static_cast<double>(map->size());
+    require(lists < 0.5 * memory, "map",
+            fmt::format("the Pareto front on {} needs {} before its first label; this machine has {}", map->name(),
+                        engine::format_bytes(lists), engine::format_bytes(memory)));
+    options.max_labels =
+        std::min(options.max_labels, static_cast<std::size_t>(std::max(1.0, (0.8 * memory - lists) / 68.0)));
+    const auto front = grid::pareto_front(*map, start, goal, criteria, options);
+
+    std::vector<std::pair<std::string, PictureFormat>> pictures;
+    if (!o.svg.empty()) pictures.emplace_back(o.svg, PictureFormat::svg);
+    if (!o.png.empty()) pictures.emplace_back(o.png, PictureFormat::png);
+    std::vector<grid::Path> paths;
+    for (const auto& p : front) paths.push_back(p.path);
+    write_pictures(pictures, [&](const std::string& file, const std::string& shown_as, PictureFormat format) {
+        draw_grid_paths(*map, start, goal, paths, file, shown_as, format);
+    });
+
+    std::string text;
+    if (o.json) {
+        std::string list, points;
+        for (const auto& n : names) list += (list.empty() ? "" : ", ") + json_string(n);
+        for (const auto& p : front)
+            points += fmt::format("{}{{\"length\": {}, \"turns\": {}, \"angle_penalty\": {}, \"path\": {}}}",
+                                  points.empty() ? "" : ", ", json_number(p.length), p.turns, p.angle_penalty,
+                                  json_cells(p.path));
+        text = fmt::format("{{\"objectives\": [{}], \"front\": [{}]}}\n", list, points);
+    } else {
+        text = "length turns angle_penalty\n";
+        for (const auto& p : front) text += fmt::format("{:.10g} {} {}\n", p.length, p.turns, p.angle_penalty);
+    }
+    out << text;
+    return 0;
+}
+
+}  // namespace pride::cli

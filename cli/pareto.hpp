@@ -1,0 +1,23 @@
+#pragma once
+// `pride pareto` (shared/spec/cli.md): the exact Pareto front of a grid path's length, turns and
+// angle penalty (problems/grid/pareto.hpp), as text or JSON, and drawn.
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+namespace pride::cli {
+
+struct ParetoOptions {
+    std::string map;
+    std::string start;  // "X,Y"
+    std::string goal;
+    std::string objectives;  // length,turns | length,angle | length,angle,turns (any order)
+    std::int64_t inflate = 0;
+    bool corner_cutting = false;
+    bool json = false;
+    std::string svg;
+    std::string png;
+};
+int pareto_command(const ParetoOptions& o, std::ostream& out);
+
+}  // namespace pride::cli
