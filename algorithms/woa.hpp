@@ -85,9 +85,9 @@ struct ConvergenceMode {
 /// Mode: file 003's balance factor (eq. 9) chooses exploration with probability `balance`.
 struct BalanceMode {
     static constexpr bool balanced = true;
-    double start = 0.8;        // the balance at the start and after a reconstruction
-    std::int64_t thr = 2;      // iterations without improvement before a switch
-    double keep = 0.2;         // share of the pod kept by the reconstruction
+    double start = 0.8;    // the balance at the start and after a reconstruction
+    std::int64_t thr = 2;  // iterations without improvement before a switch
+    double keep = 0.2;     // share of the pod kept by the reconstruction
     WhaleMove operator()(double /*A*/, double p, bool explore) const noexcept {
         if (explore) return WhaleMove::search;
         return p < 0.5 ? WhaleMove::encircle : WhaleMove::spiral;
@@ -169,7 +169,8 @@ class Woa {
             leader_f = fx[static_cast<std::size_t>(best)];
         }
         auto consider_pod = [&](Eigen::Index from, Eigen::Index count) {
-            for (Eigen::Index i = from; i < from + count; ++i) consider(column(std::as_const(x), i), fx[static_cast<std::size_t>(i)]);
+            for (Eigen::Index i = from; i < from + count; ++i)
+                consider(column(std::as_const(x), i), fx[static_cast<std::size_t>(i)]);
         };
         auto evaluate_pod = [&] {
             for (Eigen::Index i = 0; i < n; ++i) bounds(column(x, i), lo, hi);
@@ -237,10 +238,11 @@ class Woa {
                     x.leftCols(k) = kept.leftCols(k);
                     std::copy_n(kept_f.begin(), keep, fx.begin());
                     for (Eigen::Index i = k; i < n; ++i)
-                        for (std::size_t d = 0; d < dim; ++d) x(static_cast<Eigen::Index>(d), i) = rng.uniform(lo[d], hi[d]);
+                        for (std::size_t d = 0; d < dim; ++d)
+                            x(static_cast<Eigen::Index>(d), i) = rng.uniform(lo[d], hi[d]);
                     for (Eigen::Index i = k; i < n; ++i) bounds(column(x, i), lo, hi);
-                    const auto done = state.evaluate_columns(problem, x.rightCols(n - k),
-                                                             std::span<double>(fx).subspan(keep));
+                    const auto done =
+                        state.evaluate_columns(problem, x.rightCols(n - k), std::span<double>(fx).subspan(keep));
                     consider_pod(k, done);
                 }
             });
@@ -272,8 +274,12 @@ class Woa {
                         xi[d] = whale::search(xi[d], x(static_cast<Eigen::Index>(d), other), A, C);  // (6)-(7)
                         break;
                     }
-                    case WhaleMove::encircle: xi[d] = whale::encircle(xi[d], leader[d], A, C); break;  // (1)-(2)
-                    case WhaleMove::spiral: xi[d] = whale::spiral(xi[d], leader[d], l, b); break;      // (5)
+                    case WhaleMove::encircle:
+                        xi[d] = whale::encircle(xi[d], leader[d], A, C);
+                        break;  // (1)-(2)
+                    case WhaleMove::spiral:
+                        xi[d] = whale::spiral(xi[d], leader[d], l, b);
+                        break;  // (5)
                 }
             };
             if constexpr (!D::per_coordinate) {

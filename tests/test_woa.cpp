@@ -98,8 +98,8 @@ TEST_CASE("WOA: a falls from 2 to 0 and a2 from -1 to -2; l lies in [a2, 1]", "[
     CHECK(whale::a(499, 500) == Approx(2.0 / 500.0).epsilon(1e-12));  // the last iteration that moves
     CHECK(whale::a2(0, 500) == -1.0);
     CHECK(whale::a2(500, 500) == -2.0);
-    CHECK(whale::l(-1.0, 0.0) == 1.0);    // r = 0: l = 1
-    CHECK(whale::l(-1.0, 1.0) == -1.0);   // r = 1: l = a2
+    CHECK(whale::l(-1.0, 0.0) == 1.0);   // r = 0: l = 1
+    CHECK(whale::l(-1.0, 1.0) == -1.0);  // r = 1: l = a2
     CHECK(whale::l(-2.0, 1.0) == -2.0);
     CHECK(whale::l(-1.5, 0.5) == -0.25);  // (a2 - 1) r + 1
 }
@@ -126,11 +126,11 @@ TEST_CASE("WOA eqs. 6-7: search relative to a random whale", "[woa][equations]")
 
 TEST_CASE("WOA eq. 5: the spiral", "[woa][equations]") {
     // D' = |3 - 1| = 2.
-    CHECK(whale::spiral(1.0, 3.0, 0.0, 1.0) == 5.0);                                    // l = 0: D' + X*
-    CHECK(whale::spiral(1.0, 3.0, 1.0, 1.0) == Approx(2.0 * std::exp(1.0) + 3.0));      // cos 2 pi = 1
-    CHECK(whale::spiral(1.0, 3.0, 0.5, 1.0) == Approx(3.0 - 2.0 * std::exp(0.5)));      // cos pi = -1
-    CHECK(whale::spiral(1.0, 3.0, -1.0, 2.0) == Approx(2.0 * std::exp(-2.0) + 3.0));    // b = 2
-    CHECK(whale::spiral(3.0, 3.0, 0.3, 1.0) == 3.0);                                    // on the best
+    CHECK(whale::spiral(1.0, 3.0, 0.0, 1.0) == 5.0);                                  // l = 0: D' + X*
+    CHECK(whale::spiral(1.0, 3.0, 1.0, 1.0) == Approx(2.0 * std::exp(1.0) + 3.0));    // cos 2 pi = 1
+    CHECK(whale::spiral(1.0, 3.0, 0.5, 1.0) == Approx(3.0 - 2.0 * std::exp(0.5)));    // cos pi = -1
+    CHECK(whale::spiral(1.0, 3.0, -1.0, 2.0) == Approx(2.0 * std::exp(-2.0) + 3.0));  // b = 2
+    CHECK(whale::spiral(3.0, 3.0, 0.3, 1.0) == 3.0);                                  // on the best
 }
 
 TEST_CASE("WOA: one sweep replayed draw by draw (search per coordinate, encircling, spiral)", "[woa][equations]") {
@@ -148,10 +148,10 @@ TEST_CASE("WOA: one sweep replayed draw by draw (search per coordinate, encircli
     s.k = {1, 0};
     woa.sweep(pride::PerWhaleDraws{}, pride::ConvergenceMode{}, x, leader, a, a2, 0.0, s);
     CHECK(s.spent());
-    CHECK(x(0, 0) == Approx(2.4));    // D = |0.5 * 3 - 1| = 0.5; 3 - 1.2 * 0.5
-    CHECK(x(1, 0) == Approx(0.8));    // D = |0.5 * 2 - 2| = 1; 2 - 1.2 * 1
-    CHECK(x(0, 1) == -1.375);         // D = |0.5 - 3| = 2.5; 0.5 - 0.75 * 2.5
-    CHECK(x(1, 1) == -2.125);         // D = 3.5; 0.5 - 0.75 * 3.5
+    CHECK(x(0, 0) == Approx(2.4));                                         // D = |0.5 * 3 - 1| = 0.5; 3 - 1.2 * 0.5
+    CHECK(x(1, 0) == Approx(0.8));                                         // D = |0.5 * 2 - 2| = 1; 2 - 1.2 * 1
+    CHECK(x(0, 1) == -1.375);                                              // D = |0.5 - 3| = 2.5; 0.5 - 0.75 * 2.5
+    CHECK(x(1, 1) == -2.125);                                              // D = 3.5; 0.5 - 0.75 * 3.5
     const double k = std::exp(-0.25) * std::cos(-0.5 * std::numbers::pi);  // ~ 0: cos(-pi/2)
     CHECK(x(0, 2) == Approx(1.5 * k + 0.5));
     CHECK(x(1, 2) == Approx(0.5 * k + 0.5));
@@ -172,7 +172,7 @@ TEST_CASE("WOA: per-coordinate draws test |A| and p coordinate by coordinate", "
     CHECK(s.spent());
     CHECK(x(0, 0) == 3.0 - 2.0 * std::abs(3.0 - 1.0));  // -1
     CHECK(x(1, 0) == 0.0);                              // A = 0: onto the leader
-    CHECK(x(0, 1) == Approx(-3.0 * std::exp(-0.5)));   // D' = 3, cos(-pi) = -1
+    CHECK(x(0, 1) == Approx(-3.0 * std::exp(-0.5)));    // D' = 3, cos(-pi) = -1
     CHECK(x(1, 1) == Approx(-4.0 * std::exp(-0.5)));
 }
 
@@ -320,7 +320,8 @@ TEST_CASE("WOA family and HS spend exactly the evaluation budget and keep points
     }
 }
 
-TEST_CASE("WOA: an iteration limit gives T iterations of N evaluations (HS-WOA: 3N without rebuilds)", "[woa][budget]") {
+TEST_CASE("WOA: an iteration limit gives T iterations of N evaluations (HS-WOA: 3N without rebuilds)",
+          "[woa][budget]") {
     const pride::continuous::Sphere f(4);
     const auto r = configuration("woa", 10).run(f, pride::max_iterations(7), 1);
     CHECK(r.iterations == 7);

@@ -12,13 +12,13 @@ using Family = Woa<SelectableWhaleDraws, SelectableWhaleMode, SelectableSecondSt
 
 std::vector<ParamSpec> whale_params(bool harmony, bool balanced) {
     std::vector<ParamSpec> ps{
-        population_param(30, 2),
-        real("b", 1.0, -10.0, 10.0, "shape constant of the logarithmic spiral (eq. 5)"),
+        population_param(30, 2), real("b", 1.0, -10.0, 10.0, "shape constant of the logarithmic spiral (eq. 5)"),
         flag("per_coordinate", false,
              "draw r1, r2 and p anew for every coordinate (the vector reading) instead of once per whale (WOA.m)")};
     if (balanced) {
         ps.push_back(real("balance", 0.8, 0.0, 1.0, "starting balance factor: the probability of exploring (eq. 9)"));
-        ps.push_back(integer("thr", 2, 0, 1'000'000, "iterations without improvement before the mode switches (eq. 9)"));
+        ps.push_back(
+            integer("thr", 2, 0, 1'000'000, "iterations without improvement before the mode switches (eq. 9)"));
         ps.push_back(real("keep", 0.2, 0.0, 1.0, "share of the pod kept by tournament on stagnation").open_below());
     }
     if (harmony) {
