@@ -267,7 +267,7 @@ class Woa {
         const auto dim = static_cast<std::size_t>(x.rows());
         for (Eigen::Index i = 0; i < n; ++i) {
             double* xi = x.col(i).data();
-            auto move = [&](std::size_t d, double A, double C, double p, double l, bool explore) {
+            auto move = [&](std::size_t d, double A, double C, double p, double spiral, bool explore) {
                 switch (m(A, p, explore)) {
                     case WhaleMove::search: {
                         const auto other = static_cast<Eigen::Index>(u.below(un));  // anew per coordinate
@@ -278,25 +278,25 @@ class Woa {
                         xi[d] = whale::encircle(xi[d], leader[d], A, C);
                         break;  // (1)-(2)
                     case WhaleMove::spiral:
-                        xi[d] = whale::spiral(xi[d], leader[d], l, b);
+                        xi[d] = whale::spiral(xi[d], leader[d], spiral);
                         break;  // (5)
                 }
             };
             if constexpr (!D::per_coordinate) {
                 const double A = whale::coefficient_a(a, u.uniform());  // (3)
                 const double C = whale::coefficient_c(u.uniform());     // (4)
-                const double l = whale::l(a2, u.uniform());
+                const double spiral = whale::spiral_factor(whale::l(a2, u.uniform()), b);
                 const double p = u.uniform();
                 const bool explore = M::balanced && u.uniform() < balance;
-                for (std::size_t d = 0; d < dim; ++d) move(d, A, C, p, l, explore);
+                for (std::size_t d = 0; d < dim; ++d) move(d, A, C, p, spiral, explore);
             } else {
-                const double l = whale::l(a2, u.uniform());
+                const double spiral = whale::spiral_factor(whale::l(a2, u.uniform()), b);
                 const bool explore = M::balanced && u.uniform() < balance;
                 for (std::size_t d = 0; d < dim; ++d) {
                     const double A = whale::coefficient_a(a, u.uniform());
                     const double C = whale::coefficient_c(u.uniform());
                     const double p = u.uniform();
-                    move(d, A, C, p, l, explore);
+                    move(d, A, C, p, spiral, explore);
                 }
             }
         }

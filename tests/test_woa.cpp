@@ -126,11 +126,12 @@ TEST_CASE("WOA eqs. 6-7: search relative to a random whale", "[woa][equations]")
 
 TEST_CASE("WOA eq. 5: the spiral", "[woa][equations]") {
     // D' = |3 - 1| = 2.
-    CHECK(whale::spiral(1.0, 3.0, 0.0, 1.0) == 5.0);                                  // l = 0: D' + X*
-    CHECK(whale::spiral(1.0, 3.0, 1.0, 1.0) == Approx(2.0 * std::exp(1.0) + 3.0));    // cos 2 pi = 1
-    CHECK(whale::spiral(1.0, 3.0, 0.5, 1.0) == Approx(3.0 - 2.0 * std::exp(0.5)));    // cos pi = -1
-    CHECK(whale::spiral(1.0, 3.0, -1.0, 2.0) == Approx(2.0 * std::exp(-2.0) + 3.0));  // b = 2
-    CHECK(whale::spiral(3.0, 3.0, 0.3, 1.0) == 3.0);                                  // on the best
+    CHECK(whale::spiral(1.0, 3.0, whale::spiral_factor(0.0, 1.0)) == 5.0);  // l = 0: D' + X*
+    CHECK(whale::spiral(1.0, 3.0, whale::spiral_factor(1.0, 1.0)) ==
+          Approx(2.0 * std::exp(1.0) + 3.0));  // cos 2 pi = 1
+    CHECK(whale::spiral(1.0, 3.0, whale::spiral_factor(0.5, 1.0)) == Approx(3.0 - 2.0 * std::exp(0.5)));  // cos pi = -1
+    CHECK(whale::spiral(1.0, 3.0, whale::spiral_factor(-1.0, 2.0)) == Approx(2.0 * std::exp(-2.0) + 3.0));  // b = 2
+    CHECK(whale::spiral(3.0, 3.0, whale::spiral_factor(0.3, 1.0)) == 3.0);  // on the best
 }
 
 TEST_CASE("WOA: one sweep replayed draw by draw (search per coordinate, encircling, spiral)", "[woa][equations]") {

@@ -41,9 +41,14 @@ inline double encircle(double x, double best, double A, double C) noexcept {
 inline double search(double x, double other, double A, double C) noexcept {
     return other - A * std::abs(C * other - x);
 }
-/// Eq. 5, one coordinate: D' = |X* - X|, X <- D' e^{b l} cos(2 pi l) + X* (the spiral).
-inline double spiral(double x, double best, double l, double b) noexcept {
-    return std::abs(best - x) * std::exp(b * l) * std::cos(2.0 * std::numbers::pi * l) + best;
+/// Eq. 5's factor e^{b l} cos(2 pi l), the same for every coordinate of a whale.
+inline double spiral_factor(double l, double b) noexcept {
+    return std::exp(b * l) * std::cos(2.0 * std::numbers::pi * l);
+}
+/// Eq. 5, one coordinate: D' = |X* - X|, X <- D' e^{b l} cos(2 pi l) + X* (the spiral), with the
+/// factor of spiral_factor.
+inline double spiral(double x, double best, double factor) noexcept {
+    return std::abs(best - x) * factor + best;
 }
 
 /// Eq. 8, one coordinate: X <- X + r (target - X); the target is X* when f_i < f_avg, a random
