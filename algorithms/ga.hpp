@@ -22,7 +22,8 @@
 //   chooses there; nothing for the others): the crossover, the mutation, then the selection (whose
 //   prepared form, one per run, may build a mating pool there: IQGA's, iqga_operators.hpp; a
 //   Selection declaring `uses_regions` finds the members' regions in the context, on chain spaces
-//   with regions); the Selection is asked for parents two at a time, a pair per call pair;
+//   with regions, and a Mutation declaring `uses_best_length` the length of the best member, on
+//   chain spaces with lengths); the Selection is asked for parents two at a time, a pair per call pair;
 //   after (3), the GenerationContext (generation_context.hpp: iteration, horizon, best / mean / worst of
 //   the population, best so far, generations without improvement) is brought up to date, the Hook
 //   policy is called with it, the population and the Rng (generation_hook.hpp; by default it does
@@ -138,6 +139,7 @@ class Ga {
             const std::span<const double> fx = pop.fitness();
             // Operators that learn between generations (nothing for most).
             if constexpr (requires { Selection::uses_regions; }) context.regions = pop.regions();
+            if constexpr (requires { Mutation::uses_best_length; }) context.best_length = pop.best_length();
             pop.begin_generation(context);
             detail::begin_generation(select, context, rng);
             for (std::size_t k = 0; k < kids; k += 2) {  // (1)

@@ -613,3 +613,57 @@ TEST_CASE("iqga: registry entry, defaults, N = 40 on grids, SITP by default, cha
     g.encoding = "line";
     CHECK_THROWS_AS(engine::run({"iqga", {}}, engine::Problem(g), budget, 1), InputError);
 }
+
+namespace {
+
+/// Records, per generation, the length of the best member (the first of the smallest values).
+struct BestLengthRecorder {
+    std::shared_ptr<std::vector<double>> lengths = std::make_shared<std::vector<double>>();
+    template <class View>
+    void operator()(const View& view) const {
+        const std::vector<grid::Path>& pop = view.population;
+        const auto best = static_cast<std::size_t>(std::min_element(view.fitness.begin(), view.fitness.end()) -
+                                                   view.fitness.begin());
+        lengths->push_back(grid::metrics(pop[best], false).length);
+    }
+};
+
+/// RecordingChainMutation's operators inside a by-length Q-learning mutation that asks for lengths.
+struct ByLengthMutation : QLearningMutation<RecordingChainMutation, RecordingChainMutation, RecordingChainMutation> {
+    static constexpr bool uses_best_length = true;
+};
+
+}  // namespace
+
+TEST_CASE("iqga: the Q-learning states follow the best path's length", "[iqga]") {
+    static_assert(ChainLength<Space>);
+    auto calls = std::make_shared<std::vector<std::pair<std::int64_t, std::size_t>>>();
+    Ga<RegionTournamentSelection, EliteCrossover, ByLengthMutation> ga;
+    ga.population = 21;
+    ga.mutation.operators = {RecordingChainMutation{calls, 0}, RecordingChainMutation{calls, 1},
+                             RecordingChainMutation{calls, 2}};
+    ga.mutation.weights = {1.0, 0.0, 0.0};
+    ga.mutation.learning.epsilon = 0.0;
+    ga.mutation.probability = 1.0;
+    ga.mutation.by_length = true;
+    CHECK(IqgaMutation{}.by_length);
+    CHECK(IqgaMutation{}.probability == 0.1);
+    const Instance in = file002_40();
+    // Real crossovers move the best path: the IQGA operators do the variation, the recording
+    // mutation only watches (so the lengths come from crossover and selection).
+    BestLengthRecorder lengths;
+    const auto r = ga.run(space_of(in), max_iterations(80), 6, lengths);
+    REQUIRE(r.iterations == 80);
+    REQUIRE(lengths.lengths->size() == 81);
+    REQUIRE(calls->size() == 80 * 20);
+    OperatorQLearning replay(ga.mutation.learning, ga.mutation.action_table());
+    Rng unused(0);
+    for (std::int64_t t = 0; t < 80; ++t) {
+        replay.begin_generation((*lengths.lengths)[static_cast<std::size_t>(t)], unused);
+        for (std::size_t k = 0; k < 20; ++k) {
+            const auto& [iteration, which] = (*calls)[static_cast<std::size_t>(t) * 20 + k];
+            REQUIRE(iteration == t);
+            REQUIRE(which == replay.action());
+        }
+    }
+}

@@ -66,6 +66,7 @@ class BoxPopulation {
 
     // Variation: child k of this generation (the second child of an odd last pair goes to spare()).
     std::span<const std::size_t> regions() const noexcept { return {}; }  // points have no regions
+    std::optional<double> best_length() const noexcept { return std::nullopt; }
 
     std::span<double> child(std::size_t k) { return column(y_, index(k)); }
     std::span<double> spare() { return column(spare_, 0); }
@@ -177,6 +178,18 @@ class ChainPopulation {
             for (std::size_t i = 0; i < x_.size(); ++i) regions_[i] = problem_.region(x_[i]);
         }
         return regions_;
+    }
+
+    /// The length of the best current member (the first of the smallest values) when the space is
+    /// ChainLength, else empty.
+    std::optional<double> best_length() const {
+        if constexpr (ChainLength<P>) {
+            if (x_.empty()) return std::nullopt;
+            const auto best = static_cast<std::size_t>(std::min_element(fx_.begin(), fx_.end()) - fx_.begin());
+            return static_cast<double>(problem_.length(x_[best]));
+        } else {
+            return std::nullopt;
+        }
     }
 
     Chain& child(std::size_t k) { return y_[k]; }

@@ -8,7 +8,8 @@
 //                              two common cells, for pairs holding at least one elite member;
 //   NumberedChainMutation<K>   section 2.4.3: the space's mutation K (0 deletion, 1 mid-point,
 //                              2 turning point) with eq. 20's badness; IqgaMutation is the
-//                              Q-learning choice among the three (q_learning.hpp, eq. 19).
+//                              Q-learning choice among the three (q_learning.hpp, eq. 19), its
+//                              states from the length of the generation's best path (ChainLength).
 //
 // What the paper says (file 002 eqs. 16-18) and what is done here. Eq. 16: s_1 = n_1 if n_1 <= N/3,
 // else N/3; s_2 likewise; s_3 = N - s_1 - s_2 (n_i the members in region i; N/3 is read as
@@ -245,8 +246,14 @@ struct NumberedChainMutation {
 /// IQGA's mutation: with probability Pm (0.1) one of the three numbered mutations, by the
 /// probabilities of the action Q-learning chooses once per generation (a1..a3: 0.6 / 0.2 / 0.2 on
 /// deletion, mid-point, turning point in turn).
+/// The states follow the length of the best member (the first of the smallest values) when the
+/// space has lengths (ChainLength; the grid's ChainSpace has), as the spec says; else its value.
 struct IqgaMutation : QLearningMutation<NumberedChainMutation<0>, NumberedChainMutation<1>, NumberedChainMutation<2>> {
-    IqgaMutation() { probability = 0.1; }
+    static constexpr bool uses_best_length = true;  // the GA fills GenerationContext::best_length
+    IqgaMutation() {
+        probability = 0.1;
+        by_length = true;
+    }
 };
 
 }  // namespace pride
