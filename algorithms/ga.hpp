@@ -19,7 +19,11 @@
 //       of parents and children, as pagmo2's sga);
 //   before (1), operators whose prepared form offers begin_generation(context, rng) are told a
 //   generation begins (generation_context.hpp; the Q-learning choice of q_learning.hpp learns and
-//   chooses there; nothing for the others);
+//   chooses there; nothing for the others): the crossover, the mutation, then the selection (whose
+//   prepared form, one per run, may build a mating pool there: IQGA's, iqga_operators.hpp; a
+//   Selection declaring `uses_regions` finds the members' regions in the context, on chain spaces
+//   with regions, and a Mutation declaring `uses_best_length` the length of the best member, on
+//   chain spaces with lengths); the Selection is asked for parents two at a time, a pair per call pair;
 //   after (3), the GenerationContext (generation_context.hpp: iteration, horizon, best / mean / worst of
 //   the population, best so far, generations without improvement) is brought up to date, the Hook
 //   policy is called with it, the population and the Rng (generation_hook.hpp; by default it does
@@ -29,7 +33,8 @@
 // The initial population: for points, the Init policy then the Bounds policy (run_setup.hpp); for
 // chains, the problem's random chains. Both are evaluated in order and recorded as iteration 0.
 // Variants as policies: IAGA's adaptive pc and pm (adaptive_rates.hpp), ICGA's catastrophe
-// (catastrophe.hpp, a hook), Q-learning choice among mutation operators (q_learning.hpp).
+// (catastrophe.hpp, a hook), Q-learning choice among mutation operators (q_learning.hpp), IQGA's
+// region selection, elite crossover and Q-learning mutations on chains (iqga_operators.hpp; IqgaGa).
 // Spec defaults (shared/spec/algorithms.md): tournament of 2, SBX eta 15 with probability 0.9,
 // polynomial mutation eta 20 with probability 1/D per gene, elitist replacement with elitism 1.
 // Decided by this project where the spec is silent: when an odd number of children is asked for,
@@ -51,6 +56,7 @@
 #include "algorithms/parts/ga_population.hpp"
 #include "algorithms/parts/generation_context.hpp"
 #include "algorithms/parts/generation_hook.hpp"
+#include "algorithms/parts/iqga_operators.hpp"
 #include "algorithms/parts/mutation.hpp"
 #include "algorithms/parts/q_learning.hpp"
 #include "algorithms/parts/replacement.hpp"
@@ -125,14 +131,20 @@ class Ga {
         GenerationContext context;
         context.horizon = pop.horizon();
         context.describe(0, pop.fitness(), state.best());
+        // The selection's prepared form (detail::prepared; the policy itself unless it offers
+        // prepare), one per run, so that a selection may keep per-generation state (a mating pool).
+        auto&& select = detail::prepared(selection, 0);
 
         for (std::int64_t t = 0; !state.done(); ++t) {
             const std::span<const double> fx = pop.fitness();
             // Operators that learn between generations (nothing for most).
+            if constexpr (requires { Selection::uses_regions; }) context.regions = pop.regions();
+            if constexpr (requires { Mutation::uses_best_length; }) context.best_length = pop.best_length();
             pop.begin_generation(context);
+            detail::begin_generation(select, context, rng);
             for (std::size_t k = 0; k < kids; k += 2) {  // (1)
-                const std::size_t a = with_context(selection, context, fx, rng);
-                const std::size_t b = with_context(selection, context, fx, rng);
+                const std::size_t a = with_context(select, context, fx, rng);
+                const std::size_t b = with_context(select, context, fx, rng);
                 auto&& first = pop.child(k);
                 auto&& second = k + 1 < kids ? pop.child(k + 1) : pop.spare();
                 pop.copy(a, first);
@@ -162,5 +174,10 @@ class Ga {
 
 /// The GA on chains (grid paths, ...): the same skeleton with the chain operator policies.
 using ChainGa = Ga<TournamentSelection, ChainCrossover, ChainMutation>;
+
+/// File 002's IQGA on chain spaces with regions, two-point crossover and numbered mutations
+/// (iqga_operators.hpp); elitist replacement with elitism 1. Its initial chains are the problem's
+/// (on grids: SITP walks when the space is set so, as the registry entry iqga does by default).
+using IqgaGa = Ga<RegionTournamentSelection, EliteCrossover, IqgaMutation>;
 
 }  // namespace pride

@@ -50,6 +50,9 @@ struct AlgorithmEntry {
     /// Whole-map algorithms that return the exact optimum say so: the objective must have one
     /// (GridTarget::has_optimum), and the run records it beside the result.
     bool needs_optimum = false;
+    /// The population on grids when none is given (for entries with a `pop` parameter): the papers'
+    /// N = 20, IQGA's N = 40 (file 002, table 1; shared/spec/algorithms.md).
+    std::int64_t grid_population = 20;
     /// Bytes a run needs besides the problem, for a population algorithm in `dimension`; checked
     /// against the machine's memory before anything is allocated.
     std::function<double(const Params&, std::size_t dimension)> memory;

@@ -219,12 +219,16 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
 // Running
 
 /// The parameters as the run sees them: the user's, plus what the problem decides (on grids the
-/// papers' N = 20 unless a population is given; the grid spec's init sets walk_init).
+/// papers' N = 20 unless a population is given, AlgorithmEntry::grid_population: 40 for iqga; the
+/// grid spec's init sets walk_init, and on chains the `sitp` flag of an entry that has one: SITP
+/// walks unless the spec asks for other initial chains).
 ParamValues effective_params(const AlgorithmEntry& entry, const Prepared& p, const ParamValues& given) {
     ParamValues v = given;
     const auto* g = std::get_if<GridSpec>(&p.spec);
     if (!g) return v;
-    if (entry.param("pop") && !v.contains("pop")) v.set("pop", 20.0);
+    if (entry.param("pop") && !v.contains("pop")) v.set("pop", static_cast<double>(entry.grid_population));
+    if (!g->init.empty() && g->encoding == "chain" && entry.param("sitp") && !v.contains("sitp"))
+        v.set("sitp", g->init == "sitp" ? 1.0 : 0.0);
     if (!g->init.empty() && g->encoding != "chain") {
         if (entry.param("walk_init"))
             v.set("walk_init", g->init == "uniform" ? 0.0 : 1.0);

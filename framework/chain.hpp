@@ -60,6 +60,13 @@ concept TwoPointCrossover = ChainProblem<P> &&
     { p.crossover_two_point(a, b, rng) } -> std::same_as<bool>;
 };
 
+/// The length of a chain (on grids: the path's length, file 002 eq. 8), for operators whose choices
+/// follow the best path's length rather than its value (IQGA's Q-learning states).
+template <class P>
+concept ChainLength = ChainProblem<P> && requires(const P& cp, const typename P::chain_type& a) {
+    { cp.length(a) } -> std::convertible_to<double>;
+};
+
 /// The part of a chain between positions i < j (both kept) made anew; false, the chain unchanged,
 /// when it cannot be (positions out of range or not ordered).
 template <class P>

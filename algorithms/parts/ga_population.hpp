@@ -65,6 +65,9 @@ class BoxPopulation {
     std::span<const double> individual(std::size_t i) const { return column(run_.x, index(i)); }
 
     // Variation: child k of this generation (the second child of an odd last pair goes to spare()).
+    std::span<const std::size_t> regions() const noexcept { return {}; }  // points have no regions
+    std::optional<double> best_length() const noexcept { return std::nullopt; }
+
     std::span<double> child(std::size_t k) { return column(y_, index(k)); }
     std::span<double> spare() { return column(spare_, 0); }
     void copy(std::size_t parent, std::span<double> to) const {
@@ -167,6 +170,28 @@ class ChainPopulation {
     std::span<const double> fitness() const noexcept { return fx_; }
     const Chain& individual(std::size_t i) const { return x_[i]; }
 
+    /// The region of every current member when the space is RegionOf (worked out on each call),
+    /// else empty.
+    std::span<const std::size_t> regions() {
+        if constexpr (RegionOf<P>) {
+            regions_.resize(x_.size());
+            for (std::size_t i = 0; i < x_.size(); ++i) regions_[i] = problem_.region(x_[i]);
+        }
+        return regions_;
+    }
+
+    /// The length of the best current member (the first of the smallest values) when the space is
+    /// ChainLength, else empty.
+    std::optional<double> best_length() const {
+        if constexpr (ChainLength<P>) {
+            if (x_.empty()) return std::nullopt;
+            const auto best = static_cast<std::size_t>(std::min_element(fx_.begin(), fx_.end()) - fx_.begin());
+            return static_cast<double>(problem_.length(x_[best]));
+        } else {
+            return std::nullopt;
+        }
+    }
+
     Chain& child(std::size_t k) { return y_[k]; }
     Chain& spare() { return spare_; }
     void copy(std::size_t parent, Chain& to) const { to = x_[parent]; }
@@ -215,6 +240,7 @@ class ChainPopulation {
     std::vector<Chain> x_, next_, y_;  // x_: the current population
     Chain spare_;
     std::vector<double> fx_, fnext_, fy_;
+    std::vector<std::size_t> regions_;  // of x_, when asked for (regions())
     detail::Prepared<decltype(Algorithm::crossover)> cross_;
     detail::Prepared<decltype(Algorithm::mutation)> mutate_;
 };

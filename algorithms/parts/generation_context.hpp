@@ -37,6 +37,13 @@ struct GenerationContext {
     // whose rates depend on the individuals' own fitness (IAGA's f' and f).
     std::array<std::size_t, 2> parents{};
     std::size_t child = 0;
+    // The region of each current member (framework/chain.hpp's RegionOf), by index; filled only for
+    // a Selection policy that declares `uses_regions` and a chain space that has regions, else empty.
+    std::span<const std::size_t> regions;
+    // The length of the population's best member (the first of the smallest values) when the
+    // population is of a chain space with lengths (framework/chain.hpp's ChainLength), else empty;
+    // for a Q-learning whose states follow the best path's length (IQGA).
+    std::optional<double> best_length;
 
     /// Describes the population `f` after `completed` generations, `best_ever` the run's best:
     /// the stagnation count restarts when best_ever improved on the last description's, and grows

@@ -7,7 +7,9 @@
 //   File 002, eq. 19:  Q(s_t, a_t) <- Q(s_t, a_t) + alpha (r_{t+1} + gamma max_a' Q(s_{t+1}, a') - Q(s_t, a_t)).
 //
 // States: how this generation's best value (the population's smallest, GenerationContext::best)
-// compares with the previous generation's: 1 = smaller (better), 2 = equal, 3 = larger (worse).
+// compares with the previous generation's: 1 = smaller (better), 2 = equal, 3 = larger (worse);
+// with `by_length` (IQGA), how the best member's length (GenerationContext::best_length) does, as
+// file 002 and the spec word it, when the population gives one (else the best value).
 // Actions: assignments of probabilities to the operators; by default the distinct orderings of a
 // weight vector, for three operators of (0.6, 0.2, 0.2) (the paper's values): a1 = (0.6, 0.2, 0.2),
 // a2 = (0.2, 0.6, 0.2), a3 = (0.2, 0.2, 0.6). Reward: r_t = u - w for a move from state s_t = u to
@@ -215,6 +217,9 @@ class QLearningMutation {
     std::vector<std::vector<double>> actions;                      // ... unless given here
     QLearningSettings learning{};
     double probability = 1.0;  // of mutating a child at all (then one operator is chosen)
+    // States from the best member's length (GenerationContext::best_length, when the population
+    // gives one) instead of the best value: IQGA's states (file 002: "the best path length").
+    bool by_length = false;
 
     /// The table of actions the learner chooses among.
     std::vector<std::vector<double>> action_table() const { return actions.empty() ? orderings(weights) : actions; }
@@ -233,9 +238,12 @@ class QLearningMutation {
         Prepared(const QLearningMutation& m, std::size_t dim, std::index_sequence<I...>)
             : ops_(detail::prepared(std::get<I>(m.operators), dim)...),
               learner_(m.learning, m.action_table()),
-              probability_(m.probability) {}
+              probability_(m.probability),
+              by_length_(m.by_length) {}
 
-        void begin_generation(const GenerationContext& c, Rng& rng) { learner_.begin_generation(c.best, rng); }
+        void begin_generation(const GenerationContext& c, Rng& rng) {
+            learner_.begin_generation(by_length_ && c.best_length ? *c.best_length : c.best, rng);
+        }
         const OperatorQLearning& learner() const noexcept { return learner_; }
 
         /// (operator arguments..., Rng&, const GenerationContext&).
@@ -266,6 +274,7 @@ class QLearningMutation {
         std::tuple<detail::Prepared<Operators>...> ops_;
         OperatorQLearning learner_;
         double probability_;
+        bool by_length_;
     };
 
     /// One per run: the learner starts afresh.

@@ -2,7 +2,8 @@
 // ga-plus ((mu + lambda) replacement), two configurations of one instantiation on boxes and one on
 // chains (the replacement is chosen once per generation); and the variants as policies of the same
 // skeleton: iaga (Srinivas and Patnaik's adaptive pc and pm), icga (the catastrophe hook) on boxes
-// and chains, ga-q (Q-learning choice among three box mutations) on boxes.
+// and chains, ga-q (Q-learning choice among three box mutations) on boxes, iqga (file 002's IQGA:
+// region selection, elite crossover, Q-learning among three mutations) on chains only.
 #include "algorithms/ga.hpp"
 
 #include "engine/family.hpp"
@@ -199,6 +200,53 @@ void add_ga_q(AlgorithmRegistry& registry) {
     registry.add(std::move(e));
 }
 
+// --- iqga: file 002's IQGA on chains (algorithms/parts/iqga_operators.hpp) ---
+
+IqgaGa configure_iqga(const Params& p) {
+    IqgaGa a;
+    a.id = "iqga";
+    a.population = p.integer("pop");
+    a.replacement.elitism = 1;  // the best path so far is always kept (section 2.3)
+    a.selection.elite = a.crossover.elite = p.integer("elite");
+    a.crossover.probability = p.real("pc");
+    a.mutation.probability = p.real("pm");
+    a.mutation.learning = {p.real("epsilon"), p.real("alpha"), p.real("gamma")};
+    return a;
+}
+
+void add_iqga(AlgorithmRegistry& registry) {
+    AlgorithmEntry e;
+    e.name = "iqga";
+    e.family = "ga";
+    e.summary =
+        "file 002's IQGA on chains: SITP initial paths, region tournaments with SA acceptance (eqs. 14-18), elite "
+        "two-point crossover, three mutations chosen by Q-learning (eq. 19); N = 40 on grids";
+    e.params = {
+        population_param(40, 2, "population size (on grids 40 unless given, as file 002)"),
+        integer("elite", 20, 1, 100'000'000, "elite of the crossover pairing: the min(elite, pop/2) best"),
+        real("pc", 0.9, 0.0, 1.0, "crossover probability per pair with an elite member"),
+        real("pm", 0.1, 0.0, 1.0, "mutation probability per child"),
+        real("epsilon", 0.1, 0.0, 1.0, "Q-learning: probability of a random action"),
+        real("alpha", 0.1, 0.0, 1.0, "Q-learning: learning rate"),
+        real("gamma", 0.9, 0.0, 1.0, "Q-learning: discount factor"),
+        flag("sitp", true, "initial chains from SITP walks (file 002 section 2.2); the grid spec's init sets it")};
+    e.grid_population = 40;
+    e.run_chain = [](const Params& p, const ChainTarget& target, const Termination& termination,
+                     std::uint64_t seed) -> ChainResult {
+        const auto algorithm = configure_iqga(p);
+        return std::visit(
+            [&](const auto& problem) -> ChainResult {
+                auto space = problem;
+                if constexpr (requires { space.set_init(grid::Walks::sitp); })
+                    if (p.flag("sitp")) space.set_init(grid::Walks::sitp);
+                return algorithm.run(std::move(space), termination, seed);
+            },
+            target.problem);
+    };
+    e.memory = population_memory(4);  // parents, next generation, children, the mating pool
+    registry.add(std::move(e));
+}
+
 void add(AlgorithmRegistry& registry, bool plus, std::string summary) {
     auto e = box_algorithm(plus ? "ga-plus" : "ga", "ga", std::move(summary), params(plus),
                            [plus](const Params& p) { return configure_box(p, plus); });
@@ -218,6 +266,7 @@ void register_ga(AlgorithmRegistry& registry) {
     add_iaga(registry);
     add_icga(registry);
     add_ga_q(registry);
+    add_iqga(registry);
 }
 
 }  // namespace pride::engine

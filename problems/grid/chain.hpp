@@ -18,7 +18,8 @@
 //   crossover_two_point(a, b, rng) fig. 7 (TwoPointCrossover);
 //   mutate(k, c, rng, badness)     section 2.4.3: 0 deletion, 1 mid-point, 2 turning point
 //                                  (NumberedMutations);
-//   regenerate(c, i, j, rng)       the SITP walk between c[i] and c[j] (SegmentRegeneration).
+//   regenerate(c, i, j, rng)       the SITP walk between c[i] and c[j] (SegmentRegeneration);
+//   length(c)                      the path's length, eq. 8 (ChainLength).
 // Every operator keeps the chain legal: joins happen at shared cells, walks take legal steps.
 #include <cstdint>
 #include <span>
@@ -100,6 +101,7 @@ class ChainSpace {
     }
 
     // The IQGA capabilities (framework/chain.hpp; iqga_moves.hpp says how).
+    double length(const Path& c) const { return metrics(c, false).length; }  // ChainLength
     std::size_t region_count() const noexcept { return 3; }
     std::size_t region(const Path& c) const { return iqga_path_region(problem_.start(), problem_.goal(), c); }
     bool crossover_two_point(Path& a, Path& b, Rng& rng) { return moves_.crossover(problem_, a, b, rng); }
