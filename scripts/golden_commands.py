@@ -88,5 +88,23 @@ paths += [
     "path --map ../shared/data/movingai/random-32-32-20.map --start 1,1 --goal 30,30 --algo pso --encoding free --objective length --oracle --seed 1 --json",
     "path --map ../shared/data/movingai/maze-32-32-4.map --start 1,1 --goal 29,29 --algo ga --encoding chain --objective length --oracle --seed 2 --json",
 ]
-for c in runs + paths:
+# Added with the suites and the new algorithms (session 4: issues 10-12); appended, so that the
+# lines above keep their numbers.
+later = []
+for algo in ["pso", "ga-plus", "woa", "woa-hs", "woa-balance", "hswoa", "hs", "iaga", "icga", "ga-q"]:
+    for problem, dim, instance in [("yao-f1", 5, 0), ("yao-f5", 4, 2), ("yao-f7", 3, 0), ("yao-f8", 4, 1),
+                                   ("yao-f12", 3, 0), ("yao-f14", 2, 0), ("yao-f20", 6, 0), ("levy", 4, 3),
+                                   ("styblinski-tang", 3, 1), ("bbob-f3", 5, 2), ("bbob-f16", 3, 1),
+                                   ("bbob-f24", 4, 7)]:
+        later.append(f"run --problem {problem} --dim {dim} --instance {instance} --algo {algo} --evals 1500 --seed 3 --json")
+later.append("run --problem rastrigin --dim 6 --instance 4 --algo nlopt:LN_SBPLX --evals 1000 --seed 2 --json")
+for m, s, g in maps:
+    base = f"path --map {m} --start {s} --goal {g}"
+    later.append(f"{base} --algo exact --objective iqga --json")
+    later.append(f"{base} --algo iqga --encoding chain --objective iqga --iters 10 --oracle --seed 2 --json")
+    for a in ["iaga", "icga"]:
+        later.append(f"{base} --algo {a} --encoding chain --objective length --iters 10 --oracle --seed 3 --json")
+    later.append(f"{base} --algo ga --encoding chain --init sitp --objective iqga --iters 10 --oracle --seed 4 --json")
+    later.append(f"{base} --algo pso --init sitp --objective cells --iters 10 --oracle --seed 5 --json")
+for c in runs + paths + later:
     print(c)

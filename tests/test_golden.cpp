@@ -1,6 +1,8 @@
 // The golden-results gate: the JSON results (every field but wall_ms) of a fixed set of `pride run`
 // and `pride path` commands, recorded before the engine refactor (tests/data/golden/, written by
 // scripts/golden_commands.py and the commands' own output), must come out bit for bit the same.
+// Commands for the suites and the algorithms added later (instances, BBOB, WOA, HS, IAGA, ICGA,
+// IQGA, SITP, the exact iqga optimum) are appended after the first 447, recorded when they landed.
 // A change of results is a documented fix: the golden file is updated in the same commit, with the
 // reason in its message.
 #include <catch2/catch.hpp>
