@@ -104,7 +104,8 @@ class Pso {
                 }
                 bounds(column(x, i), lo, hi);
             }
-            state.evaluate_columns(problem, x.leftCols(moving), std::span<double>(fx).first(static_cast<std::size_t>(moving)));
+            state.evaluate_columns(problem, x.leftCols(moving),
+                                   std::span<double>(fx).first(static_cast<std::size_t>(moving)));
             for (Eigen::Index i = 0; i < moving; ++i) {
                 const auto ui = static_cast<std::size_t>(i);
                 if (fx[ui] < fp[ui]) {  // (4)

@@ -319,7 +319,8 @@ int main(int argc, char** argv) {
         ->delimiter(',');
     app.add_flag("!--no-pagmo", s.pagmo, "skip pagmo2 even when it was found at build time");
     bool cost = false;
-    app.add_flag("--cost", cost, "instead: the cost of one evaluation by each route (typed, scalar, batch), D 10 and 40");
+    app.add_flag("--cost", cost,
+                 "instead: the cost of one evaluation by each route (typed, scalar, batch), D 10 and 40");
     CLI11_PARSE(app, argc, argv);
     try {
         if (cost) {

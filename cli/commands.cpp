@@ -38,13 +38,14 @@ int run_command(const RunOptions& o, std::ostream& out) {
         out << fmt::format(
             "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"instance\": {}, \"seed\": {}, \"best_f\": {}, "
             "\"best_x\": {}, \"evaluations\": {}, \"wall_ms\": {}, \"history\": {}}}\n",
-            json_string(o.algo), json_string(o.problem), o.dim, instance, o.seed, json_number(r.best_f), json_array(r.best_x),
-            r.evaluations, json_number(r.wall_ms), json_array(r.history));
+            json_string(o.algo), json_string(o.problem), o.dim, instance, o.seed, json_number(r.best_f),
+            json_array(r.best_x), r.evaluations, json_number(r.wall_ms), json_array(r.history));
     } else {
         out << fmt::format(
             "algo         {}\nproblem      {} (D = {}, instance {})\nseed         {}\nbest_f       {:.17g}\n"
             "evaluations  {}\niterations   {}\nwall_ms      {:.3f}\nbest_x       {}\n",
-            o.algo, o.problem, o.dim, instance, o.seed, r.best_f, r.evaluations, r.iterations, r.wall_ms, json_array(r.best_x));
+            o.algo, o.problem, o.dim, instance, o.seed, r.best_f, r.evaluations, r.iterations, r.wall_ms,
+            json_array(r.best_x));
     }
     return 0;
 }
@@ -145,11 +146,12 @@ std::string markdown_algorithms(const std::vector<engine::AlgorithmEntry>& algor
 /// A problem's dimensions, instances and suite, for `pride list --json`.
 std::string problem_facts(const continuous::CatalogEntry& e) {
     static constexpr const char* instances[] = {"transform", "none", "coco"};
-    return fmt::format(", \"min_dim\": {}, \"fixed_dim\": {}, \"instances\": {}, \"default_instance\": {}, "
-                       "\"suite\": {}, \"number\": {}",
-                       e.min_dim, e.fixed_dim ? std::to_string(e.fixed_dim) : "null",
-                       json_string(instances[static_cast<int>(e.instances)]), continuous::default_instance(e),
-                       e.suite.empty() ? "null" : json_string(e.suite), e.suite.empty() ? "null" : std::to_string(e.number));
+    return fmt::format(
+        ", \"min_dim\": {}, \"fixed_dim\": {}, \"instances\": {}, \"default_instance\": {}, "
+        "\"suite\": {}, \"number\": {}",
+        e.min_dim, e.fixed_dim ? std::to_string(e.fixed_dim) : "null",
+        json_string(instances[static_cast<int>(e.instances)]), continuous::default_instance(e),
+        e.suite.empty() ? "null" : json_string(e.suite), e.suite.empty() ? "null" : std::to_string(e.number));
 }
 
 struct Section {
@@ -163,9 +165,10 @@ int list_command(ListFormat format, std::ostream& out) {
     std::vector<Section> sections;
     Section problems{"problems", {}};
     for (const auto& item : continuous::catalog().items())
-        problems.items.push_back({item.name, item.summary + (item.entry.fixed_dim
-                                                                 ? " (dim = " + std::to_string(item.entry.fixed_dim) + ")"
-                                                                 : " (dim >= " + std::to_string(item.entry.min_dim) + ")")});
+        problems.items.push_back(
+            {item.name,
+             item.summary + (item.entry.fixed_dim ? " (dim = " + std::to_string(item.entry.fixed_dim) + ")"
+                                                  : " (dim >= " + std::to_string(item.entry.min_dim) + ")")});
     sections.push_back(problems);
     sections.push_back({"encodings", {{"identity", "the genotype is the solution (every continuous problem)"}}});
     for (const auto& e : engine::grid_encodings()) sections.back().items.push_back(e);

@@ -266,8 +266,8 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     if (optimum) {
         r.target_hits = "[";
         for (std::size_t k = 0; k < coco_precisions().size(); ++k)
-            r.target_hits += (k ? ", " : "") +
-                             (k < result.target_hits.size() ? std::to_string(result.target_hits[k]) : std::string("null"));
+            r.target_hits += (k ? ", " : "") + (k < result.target_hits.size() ? std::to_string(result.target_hits[k])
+                                                                              : std::string("null"));
         r.target_hits += "]";
     }
     return r;

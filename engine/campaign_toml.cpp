@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <toml++/toml.h>
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <algorithm>
 #include <set>
 
 #include "framework/error.hpp"
@@ -81,7 +81,8 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
         if (!(grid ? grid_keys : continuous_keys).count(k))
             fail(at(file, value), "unknown key '" + k + "' in a " + (grid ? "grid" : "continuous") + " [[problem]]");
         if (k == "dim") f.dim = need_integer(file, value, k);
-        if (k == "instance") instances = value.is_array() ? need_integers(file, value, k) : std::vector{need_integer(file, value, k)};
+        if (k == "instance")
+            instances = value.is_array() ? need_integers(file, value, k) : std::vector{need_integer(file, value, k)};
         if (k == "map") {
             if (!value.is_string()) fail(at(file, value), "'map' must be a string");
             // Relative to the campaign file's folder when the file is there, else to the working folder.

@@ -15,8 +15,8 @@
 
 #include "engine/campaign.hpp"
 #include "engine/json.hpp"
-#include "problems/continuous/catalog.hpp"
 #include "framework/error.hpp"
+#include "problems/continuous/catalog.hpp"
 
 namespace pride::engine {
 

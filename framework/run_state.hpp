@@ -74,8 +74,8 @@ class BasicRunState {
             }
         } else {
             for (Eigen::Index j = 0; j < n; ++j)
-                values[static_cast<std::size_t>(j)] =
-                    evaluate(problem, std::span<const double>(points.col(j).data(), static_cast<std::size_t>(points.rows())));
+                values[static_cast<std::size_t>(j)] = evaluate(
+                    problem, std::span<const double>(points.col(j).data(), static_cast<std::size_t>(points.rows())));
         }
         for (auto j = static_cast<std::size_t>(n); j < static_cast<std::size_t>(points.cols()); ++j) values[j] = kInf;
         return n;

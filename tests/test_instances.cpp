@@ -45,7 +45,8 @@ TEST_CASE("instances: the rotation is orthogonal to 1e-12 and differs between in
         for (const std::uint64_t k : {1u, 2u, 17u}) {
             INFO("n " << n << " instance " << k);
             const Eigen::MatrixXd r = random_rotation(n, k);
-            const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+            const Eigen::MatrixXd identity =
+                Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
             CHECK((r.transpose() * r - identity).cwiseAbs().maxCoeff() <= 1e-12);
             CHECK((r * r.transpose() - identity).cwiseAbs().maxCoeff() <= 1e-12);
             CHECK(r == random_rotation(n, k));  // the same every time, bit for bit
@@ -54,8 +55,7 @@ TEST_CASE("instances: the rotation is orthogonal to 1e-12 and differs between in
     }
 }
 
-TEST_CASE("instances: the sign fix makes the rotation uniform (Haar): E[trace] = 0, E[trace^2] = 1",
-          "[instances]") {
+TEST_CASE("instances: the sign fix makes the rotation uniform (Haar): E[trace] = 0, E[trace^2] = 1", "[instances]") {
     // For a Haar-distributed orthogonal matrix the trace has mean 0 and second moment 1 (Diaconis and
     // Shahshahani 1994); QR without the sign fix biases the diagonal towards positive values
     // (mean trace near n/2 for Householder QR's convention).
@@ -73,8 +73,7 @@ TEST_CASE("instances: the sign fix makes the rotation uniform (Haar): E[trace] =
     CHECK(std::abs(second - 1.0) < 0.12);
 }
 
-TEST_CASE("instances: the moved optimum is inside the box, 20-80 % of the half-width from the centre",
-          "[instances]") {
+TEST_CASE("instances: the moved optimum is inside the box, 20-80 % of the half-width from the centre", "[instances]") {
     const std::vector<double> lo{-5.0, -100.0, 0.0}, hi{10.0, 100.0, 1.0};
     for (const std::uint64_t k : {1u, 2u, 3u, 99u}) {
         const auto o = random_shift(lo, hi, k);
@@ -89,8 +88,7 @@ TEST_CASE("instances: the moved optimum is inside the box, 20-80 % of the half-w
     CHECK(random_shift(lo, hi, 1) != random_shift(lo, hi, 2));
 }
 
-TEST_CASE("instances: every scalable function's instance k has its optimum at o_k with F's value",
-          "[instances]") {
+TEST_CASE("instances: every scalable function's instance k has its optimum at o_k with F's value", "[instances]") {
     pride::Rng rng(11);
     for (const auto& name : transformable()) {
         for (const std::int64_t dim : {2, 5, 10}) {
@@ -175,7 +173,8 @@ TEST_CASE("instances: batch and scalar evaluation of an instance agree bit for b
         }
         std::vector<double> batch(9);
         f.evaluate_batch(points, batch);
-        for (Eigen::Index j = 0; j < points.cols(); ++j) CHECK(batch[static_cast<std::size_t>(j)] == f.evaluate(pride::column(points, j)));
+        for (Eigen::Index j = 0; j < points.cols(); ++j)
+            CHECK(batch[static_cast<std::size_t>(j)] == f.evaluate(pride::column(points, j)));
     }
 }
 

@@ -95,8 +95,8 @@ TEST_CASE("suites: [[suite]] and instance lists expand to one problem per (funct
     // F16 (2-D, one instance) once; then the instance list of "sph".
     const std::vector<std::string> expected{"bbob-f1-i1-d2", "bbob-f1-i2-d2", "bbob-f1-i1-d3", "bbob-f1-i2-d3",
                                             "bbob-f8-i1-d2", "bbob-f8-i2-d2", "bbob-f8-i1-d3", "bbob-f8-i2-d3",
-                                            "yao-f1-i0-d4",  "yao-f1-i1-d4",  "yao-f1-i0-d6", "yao-f1-i1-d6",
-                                            "yao-f16-i0-d2", "sph-i0", "sph-i5"};
+                                            "yao-f1-i0-d4",  "yao-f1-i1-d4",  "yao-f1-i0-d6",  "yao-f1-i1-d6",
+                                            "yao-f16-i0-d2", "sph-i0",        "sph-i5"};
     CHECK(ids == expected);
     const auto& f8 = std::get<pride::engine::ContinuousSpec>(c.problems[7].spec);
     CHECK(f8.function == "bbob-f8");
@@ -115,7 +115,8 @@ TEST_CASE("suites: bad suite tables are one line naming the file and line", "[su
                                  "[[algorithm]]\nid = \"a\"\ntype = \"pso\"\n";
         return input_error_message([&] { (void)pride::engine::read_campaign(dir.write("bad.toml", text)); });
     };
-    CHECK_THAT(error("[[suite]]\nname = \"cec\"\ndimensions = [2]\n"), Contains("bad.toml:5") && Contains("unknown suite 'cec'"));
+    CHECK_THAT(error("[[suite]]\nname = \"cec\"\ndimensions = [2]\n"),
+               Contains("bad.toml:5") && Contains("unknown suite 'cec'"));
     CHECK_THAT(error("[[suite]]\nname = \"bbob\"\n"), Contains("bad.toml:5") && Contains("needs 'dimensions'"));
     CHECK_THAT(error("[[suite]]\nname = \"bbob\"\nfunctions = [25]\ndimensions = [2]\n"),
                Contains("bad.toml:7") && Contains("function 25 is not in the bbob suite"));
@@ -147,8 +148,7 @@ TEST_CASE("suites: a suite campaign stores f_opt, instance, suite, COCO's precis
     const auto precisions = rows(store, "SELECT precisions FROM campaign");
     CHECK(precisions.at(0).at(0) == "[100, 10, 1, 0.1, 0.01, 0.001, 0.0001, 1e-05, 1e-06, 1e-07, 1e-08]");
 
-    const auto problems =
-        rows(store, "SELECT id, function, instance, f_opt, suite, fid FROM problems ORDER BY rowid");
+    const auto problems = rows(store, "SELECT id, function, instance, f_opt, suite, fid FROM problems ORDER BY rowid");
     REQUIRE(problems.size() == 15);
     // bbob_optima.tsv (COCO): f1 instance 1 has f_opt 79.480000000000004, instance 2 394.48000000000002.
     CHECK(problems[0] == std::vector<std::string>{"bbob-f1-i1-d2", "bbob-f1", "1", "79.480000000000004", "bbob", "1"});
@@ -190,10 +190,11 @@ TEST_CASE("suites: a store written before the suite columns resumes and gains th
     const auto c = pride::engine::read_campaign(config);
     (void)pride::engine::run_campaign(c, store, 1);
     // Back to the schema of before: no new columns, half the runs.
-    exec(store,
-         "DELETE FROM runs WHERE seed = 2; ALTER TABLE runs DROP COLUMN target_hits; ALTER TABLE campaign DROP COLUMN "
-         "precisions; ALTER TABLE problems DROP COLUMN function; ALTER TABLE problems DROP COLUMN instance; ALTER TABLE "
-         "problems DROP COLUMN f_opt; ALTER TABLE problems DROP COLUMN suite; ALTER TABLE problems DROP COLUMN fid");
+    exec(
+        store,
+        "DELETE FROM runs WHERE seed = 2; ALTER TABLE runs DROP COLUMN target_hits; ALTER TABLE campaign DROP COLUMN "
+        "precisions; ALTER TABLE problems DROP COLUMN function; ALTER TABLE problems DROP COLUMN instance; ALTER TABLE "
+        "problems DROP COLUMN f_opt; ALTER TABLE problems DROP COLUMN suite; ALTER TABLE problems DROP COLUMN fid");
     const auto summary = pride::engine::run_campaign(c, store, 1);
     CHECK(summary.already == 15);
     CHECK(summary.stored == 15);

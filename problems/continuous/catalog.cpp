@@ -18,7 +18,8 @@ namespace {
 
 template <class Held>
 Function wrap(Held held, std::string name, std::int64_t instance) {
-    auto impl = std::make_unique<Function::Impl>(Function::Impl{Any(std::in_place_type<Held>, std::move(held)), std::move(name), instance});
+    auto impl = std::make_unique<Function::Impl>(
+        Function::Impl{Any(std::in_place_type<Held>, std::move(held)), std::move(name), instance});
     return Function(std::move(impl));
 }
 
@@ -117,7 +118,8 @@ template <class F>
 void add_yao(Registry<CatalogEntry>& r, int number, const FunctionInfo* info = nullptr) {
     const YaoEntry& y = yao_table[static_cast<std::size_t>(number - 1)];
     const FunctionInfo& table = info ? *info : F::info;
-    require(y.function == F::info.name && y.info == &table, "catalog", "yao_table disagrees at F" + std::to_string(number));
+    require(y.function == F::info.name && y.info == &table, "catalog",
+            "yao_table disagrees at F" + std::to_string(number));
     const std::string alias(y.alias);
     CatalogEntry e = entry_for<F>(alias, info);
     e.suite = "classic";
@@ -237,17 +239,18 @@ Function make_function(std::string_view name, std::int64_t dim, std::optional<st
                 std::to_string(dim));
     const std::int64_t k = instance.value_or(default_instance(e));
     switch (e.instances) {
-    case Instances::transform:
-        require(k >= 0, "instance", "must be >= 0, got " + std::to_string(k));
-        break;
-    case Instances::none:
-        require(k == 0, "instance",
-                std::string(name) + " has one instance only (0)" +
-                    (name.starts_with("shifted-") ? "; use " + std::string(name.substr(8)) + " --instance K" : ""));
-        break;
-    case Instances::coco:
-        require(k >= 1, "instance", std::string(name) + ": COCO numbers instances from 1, got " + std::to_string(k));
-        break;
+        case Instances::transform:
+            require(k >= 0, "instance", "must be >= 0, got " + std::to_string(k));
+            break;
+        case Instances::none:
+            require(k == 0, "instance",
+                    std::string(name) + " has one instance only (0)" +
+                        (name.starts_with("shifted-") ? "; use " + std::string(name.substr(8)) + " --instance K" : ""));
+            break;
+        case Instances::coco:
+            require(k >= 1, "instance",
+                    std::string(name) + ": COCO numbers instances from 1, got " + std::to_string(k));
+            break;
     }
     return e.make(static_cast<std::size_t>(dim), k);
 }

@@ -26,8 +26,12 @@ Function::Function(Function&&) noexcept = default;
 Function& Function::operator=(Function&&) noexcept = default;
 Function::~Function() = default;
 
-std::string_view Function::name() const noexcept { return impl_->name; }
-std::int64_t Function::instance() const noexcept { return impl_->instance; }
+std::string_view Function::name() const noexcept {
+    return impl_->name;
+}
+std::int64_t Function::instance() const noexcept {
+    return impl_->instance;
+}
 
 double Function::evaluate(std::span<const double> x) {
     return std::visit([&](auto& f) -> double { return f.evaluate(x); }, impl_->function);
@@ -42,7 +46,8 @@ void Function::evaluate_batch(MatrixView points, std::span<double> values) {
             } else {
                 const auto rows = static_cast<std::size_t>(points.rows());
                 for (Eigen::Index j = 0; j < points.cols(); ++j)
-                    values[static_cast<std::size_t>(j)] = f.evaluate(std::span<const double>(points.col(j).data(), rows));
+                    values[static_cast<std::size_t>(j)] =
+                        f.evaluate(std::span<const double>(points.col(j).data(), rows));
             }
         },
         impl_->function);

@@ -25,8 +25,8 @@ using WithInstances = std::variant<F..., Transformed<F>...>;
 // Scalable functions appear plain and transformed (instances k >= 1, shifted-*); fixed-dimension
 // ones (Yao's F14-F23) and BBOB's (which build their own instances) plain only.
 using Scalable =
-    WithInstances<Sphere, Rastrigin, Rosenbrock, Ackley, Griewank, Schwefel, Schwefel222, Schwefel12, Schwefel221,
-                  Step, QuarticNoise, Schwefel226, Penalized1, Penalized2, Ellipsoid, Levy, Zakharov, StyblinskiTang>;
+    WithInstances<Sphere, Rastrigin, Rosenbrock, Ackley, Griewank, Schwefel, Schwefel222, Schwefel12, Schwefel221, Step,
+                  QuarticNoise, Schwefel226, Penalized1, Penalized2, Ellipsoid, Levy, Zakharov, StyblinskiTang>;
 
 template <class V, class... More>
 struct Append;
@@ -56,6 +56,5 @@ struct Function::Impl {
     std::string name;
     std::int64_t instance = 0;
 };
-
 
 }  // namespace pride::continuous

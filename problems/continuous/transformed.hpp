@@ -59,7 +59,8 @@ class Transformed {
 template <class F>
 class Shifted : public Transformed<F> {
   public:
-    explicit Shifted(std::size_t dim) : Transformed<F>(F(dim), make_transform(dim), "shifted-" + std::string(F::info.name)) {}
+    explicit Shifted(std::size_t dim)
+        : Transformed<F>(F(dim), make_transform(dim), "shifted-" + std::string(F::info.name)) {}
 
   private:
     static Transform make_transform(std::size_t dim) {
