@@ -6,8 +6,6 @@
 
 namespace pride::continuous {
 
-using detail::has_batch;
-
 Function::Function(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {
     std::visit(
         [&](const auto& f) {
@@ -41,7 +39,7 @@ void Function::evaluate_batch(MatrixView points, std::span<double> values) {
     std::visit(
         [&](auto& f) {
             using F = std::decay_t<decltype(f)>;
-            if constexpr (has_batch<F>) {
+            if constexpr (BatchBoxProblem<F>) {
                 f.evaluate_batch(points, values);
             } else {
                 const auto rows = static_cast<std::size_t>(points.rows());

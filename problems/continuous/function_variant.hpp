@@ -44,11 +44,6 @@ using Any = AppendTuple<Append<Scalable, ShekelFoxholes, Kowalik, SixHumpCamel, 
                                Hartman6, Shekel5, Shekel7, Shekel10>::type,
                         bbob::All>::type;
 
-template <class F>
-constexpr bool has_batch = requires(F& f, MatrixView points, std::span<double> values) {
-    f.evaluate_batch(points, values);
-};
-
 }  // namespace detail
 
 struct Function::Impl {
