@@ -40,6 +40,7 @@
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 #include "problems/grid/search_arrays.hpp"
+#include "problems/grid/walk.hpp"
 
 namespace pride::grid {
 
@@ -117,35 +118,9 @@ class SitpWalker {
     /// One angle walk (steps 2-3) from s to g into `out`: a legal path with no cell twice, or false
     /// (and `out` empty) when g cannot be reached.
     bool angle_walk(const GridMap& map, Cell s, Cell g, Rng& rng, Path& out, bool corner_cutting = false) {
-        out.clear();
-        if (!map.free(s) || !map.free(g)) return false;
-        visited_.begin(map.size());
-        out.push_back(s);
-        visited_.visit(map.index(s));
-        while (!out.empty()) {
-            const Cell c = out.back();
-            if (c == g) return true;
-            int count = 0;
-            double total = 0.0;
-            for (int d = 0; d < 8; ++d) {
-                const Cell n{c.x + kDx[d], c.y + kDy[d]};
-                if (!map.legal_step(c, d, corner_cutting) || visited_.visited(map.index(n))) continue;
-                const double w = sitp_step_weight(kDx[d], kDy[d], g.x - c.x, g.y - c.y);
-                candidates_[count] = n;
-                weights_[count++] = w;
-                total += w;
-            }
-            if (count == 0) {  // dead end: back up one cell; it stays taboo
-                out.pop_back();
-                continue;
-            }
-            double r = rng.uniform() * total;
-            int pick = 0;
-            while (pick + 1 < count && r >= weights_[pick]) r -= weights_[pick++];
-            visited_.visit(map.index(candidates_[pick]));
-            out.push_back(candidates_[pick]);
-        }
-        return false;
+        return walk_.walk(map, s, g, rng, out, corner_cutting, [&](Cell c) {
+            return [&, c](Cell, int d) { return sitp_step_weight(kDx[d], kDy[d], g.x - c.x, g.y - c.y); };
+        });
     }
 
     /// The best of walks_per_segment angle walks from s to g by `score` (lower is better; ties:
@@ -202,9 +177,7 @@ class SitpWalker {
     }
 
   private:
-    VisitMarks visited_;  // generation stamps: no clearing between walks
-    Cell candidates_[8];
-    double weights_[8];
+    TabooRouletteWalk walk_;
     Path trial_, half_;
     std::vector<std::int32_t> seen_;
 };

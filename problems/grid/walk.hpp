@@ -15,14 +15,14 @@
 
 namespace pride::grid {
 
-class RandomWalker {
+/// The walk itself, for every walker: a depth-first search with a taboo list whose next cell is
+/// drawn by roulette among the free, unvisited, legal neighbours. `weights_at(c)` returns, for the
+/// current cell c, the weight of a step: w(n, d) for the neighbour n in direction d. A dead end
+/// backs up one cell (it stays taboo).
+class TabooRouletteWalk {
   public:
-    /// Goal bias: a neighbour's weight is exp(-bias * (how much the step changes the octile
-    /// distance to the goal)); 0 walks blindly.
-    double bias = 2.0;
-
-    /// A legal path from s to g in `out` (no cell twice), or false when g cannot be reached.
-    bool walk(const GridMap& map, Cell s, Cell g, Rng& rng, Path& out, bool corner_cutting = false) {
+    template <class WeightsAt>
+    bool walk(const GridMap& map, Cell s, Cell g, Rng& rng, Path& out, bool corner_cutting, WeightsAt&& weights_at) {
         out.clear();
         if (!map.free(s) || !map.free(g)) return false;
         visited_.begin(map.size());
@@ -31,13 +31,13 @@ class RandomWalker {
         while (!out.empty()) {
             const Cell c = out.back();
             if (c == g) return true;
-            const double here = octile(c, g);
+            const auto weight = weights_at(c);
             int count = 0;
             double total = 0.0;
             for (int d = 0; d < 8; ++d) {
                 const Cell n{c.x + kDx[d], c.y + kDy[d]};
                 if (!map.legal_step(c, d, corner_cutting) || visited_.visited(map.index(n))) continue;
-                const double w = std::exp(-bias * (octile(n, g) - here));
+                const double w = weight(n, d);
                 candidates_[count] = n;
                 weights_[count++] = w;
                 total += w;
@@ -59,6 +59,24 @@ class RandomWalker {
     VisitMarks visited_;  // generation stamps: no clearing between walks
     Cell candidates_[8];
     double weights_[8];
+};
+
+class RandomWalker {
+  public:
+    /// Goal bias: a neighbour's weight is exp(-bias * (how much the step changes the octile
+    /// distance to the goal)); 0 walks blindly.
+    double bias = 2.0;
+
+    /// A legal path from s to g in `out` (no cell twice), or false when g cannot be reached.
+    bool walk(const GridMap& map, Cell s, Cell g, Rng& rng, Path& out, bool corner_cutting = false) {
+        return walk_.walk(map, s, g, rng, out, corner_cutting, [&](Cell c) {
+            const double here = octile(c, g);
+            return [&, here](Cell n, int) { return std::exp(-bias * (octile(n, g) - here)); };
+        });
+    }
+
+  private:
+    TabooRouletteWalk walk_;
 };
 
 }  // namespace pride::grid
