@@ -31,12 +31,18 @@ void common(G& a, const Params& p, bool plus) {
     a.crossover.probability = p.real("pc");
 }
 
-BoxFamily configure_box(const Params& p, bool plus) {
-    BoxFamily a;
-    common(a, p, plus);
+/// What every GA variant on boxes sets alike: where it starts, SBX's and the mutation's indices.
+template <class G>
+void box_operators(G& a, const Params& p) {
     a.init.suggestions = p.flag("walk_init");
     a.crossover.eta = p.real("eta_c");
     a.mutation.eta = p.real("eta_m");
+}
+
+BoxFamily configure_box(const Params& p, bool plus) {
+    BoxFamily a;
+    common(a, p, plus);
+    box_operators(a, p);
     if (const auto pm = p.optional("pm")) a.mutation.probability = *pm;  // else 1/D
     return a;
 }
@@ -99,9 +105,7 @@ void add_iaga(AlgorithmRegistry& registry) {
                            iaga_params(), [](const Params& p) {
                                IagaBox a;
                                iaga_common(a, p);
-                               a.init.suggestions = p.flag("walk_init");
-                               a.crossover.eta = p.real("eta_c");
-                               a.mutation.eta = p.real("eta_m");
+                               box_operators(a, p);
                                return a;
                            });
     add_chain_runner(e, [](const Params& p) {
@@ -143,9 +147,7 @@ void add_icga(AlgorithmRegistry& registry) {
                            std::move(v), [](const Params& p) {
                                IcgaBox a;
                                icga_common(a, p);
-                               a.init.suggestions = p.flag("walk_init");
-                               a.crossover.eta = p.real("eta_c");
-                               a.mutation.eta = p.real("eta_m");
+                               box_operators(a, p);
                                return a;
                            });
     add_chain_runner(e, [](const Params& p) {
