@@ -4,6 +4,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -433,14 +434,34 @@ void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget&
     checked_run(algorithm, problem.prepared(), budget);
 }
 
-RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed) {
+namespace {
+/// A box run, observed when `observer` is given: its stop flag joins the stopping rules.
+Result run_box(const AlgorithmEntry& entry, const Params& params, const BoxTarget& target,
+               const Termination& termination, std::uint64_t seed, const IterationObserver* observer) {
+    if (!observer) return entry.run_box(params, target, termination, seed);
+    require(static_cast<bool>(entry.run_box_observed), "observer", entry.name + " cannot be observed");
+    auto stop = std::make_shared<std::atomic<bool>>(false);
+    Termination observed = termination;
+    observed.stop = stop;
+    const BoxObserver forward = [&](const IterationView& view) {
+        if (!(*observer)(view)) stop->store(true, std::memory_order_relaxed);
+    };
+    return entry.run_box_observed(params, target, observed, seed, forward);
+}
+
+RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget,
+                       std::uint64_t seed, const IterationObserver* observer) {
     const Prepared& p = problem.prepared();
     const auto [entry, params, termination] = checked_run(algorithm, p, budget);
 
     RunResult out;
     out.algorithm = entry.name;
+    if (observer && p.grid)
+        require(!entry.solve_grid && !p.chain, "observer",
+                "only box runs are observed (" + entry.name +
+                    (entry.solve_grid ? " solves the whole map)" : " runs on chains)"));
     if (!p.grid) {
-        Result r = entry.run_box(params, *p.box, termination, seed);
+        Result r = run_box(entry, params, *p.box, termination, seed, observer);
         copy_run(out, r);
         out.best_x = std::move(r.best_x);
         return out;
@@ -465,7 +486,7 @@ RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budg
         copy_run(out, r);
     } else {
         o.encoding = g.encoding;
-        Result r = entry.run_box(params, *p.box, termination, seed);
+        Result r = run_box(entry, params, *p.box, termination, seed, observer);
         std::visit(
             [&](const auto& target) {
                 using Target = std::decay_t<decltype(target)>;
@@ -481,6 +502,16 @@ RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budg
     }
     out.grid = std::move(o);
     return out;
+}
+}  // namespace
+
+RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed) {
+    return run_observed(algorithm, problem, budget, seed, nullptr);
+}
+
+RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed,
+              const IterationObserver& observer) {
+    return run_observed(algorithm, problem, budget, seed, &observer);
 }
 
 std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate) {
