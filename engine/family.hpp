@@ -62,11 +62,13 @@ AlgorithmEntry box_algorithm(std::string name, std::string family, std::string s
             [&](const auto& problem) -> Result { return algorithm.run(problem, termination, seed, forward); },
             target.problem);
     };
-    e.run_box = [runner](const Params& p, const BoxTarget& target, const Termination& termination,
-                         std::uint64_t seed) { return runner(p, target, termination, seed, nullptr); };
+    e.run_box = [runner](const Params& p, const BoxTarget& target, const Termination& termination, std::uint64_t seed) {
+        return runner(p, target, termination, seed, nullptr);
+    };
     e.run_box_observed = [runner](const Params& p, const BoxTarget& target, const Termination& termination,
-                                  std::uint64_t seed,
-                                  const BoxObserver& observer) { return runner(p, target, termination, seed, &observer); };
+                                  std::uint64_t seed, const BoxObserver& observer) {
+        return runner(p, target, termination, seed, &observer);
+    };
     return e;
 }
 

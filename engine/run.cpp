@@ -449,8 +449,8 @@ Result run_box(const AlgorithmEntry& entry, const Params& params, const BoxTarge
     return entry.run_box_observed(params, target, observed, seed, forward);
 }
 
-RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget,
-                       std::uint64_t seed, const IterationObserver* observer) {
+RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed,
+                       const IterationObserver* observer) {
     const Prepared& p = problem.prepared();
     const auto [entry, params, termination] = checked_run(algorithm, p, budget);
 

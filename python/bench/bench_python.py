@@ -2,6 +2,8 @@
 numbers, not a test.
 
     PYTHONPATH=build/python /usr/bin/python3 python/bench/bench_python.py [--repeats 5] [--pride build/cli/pride]
+    PYTHONPATH=build/python valgrind --tool=callgrind /usr/bin/python3 python/bench/bench_python.py \
+        --part {base,bare,bare_rows,run,run_rows,own} --function {trivial,rastrigin} [--evals 10000]
 
 1. pride.minimize("pso", "rastrigin", dim=30, evals=100_000) against the same run of the command
    line (`pride run ... --json`): the engine's wall_ms of each, and the whole call / process.
@@ -32,12 +34,14 @@ def rastrigin_rows(X):
 
 
 def median_ms(fn, repeats):
+    """The median and the least of `repeats` wall times (the least is the one least disturbed by
+    other processes on a loaded machine)."""
     times = []
     for _ in range(repeats):
         t = time.perf_counter()
         fn()
         times.append(1e3 * (time.perf_counter() - t))
-    return statistics.median(times), times
+    return statistics.median(times), min(times)
 
 
 def numpy_pso(f_rows, dim, evals, pop, lo, hi, rng):
@@ -90,17 +94,44 @@ def numpy_woa(f, dim, evals, pop, lo, hi, rng):
     return fbest
 
 
+def part(name, evals, fn_name):
+    """One piece of work alone, for instruction counts under callgrind (wall times on a loaded
+    machine are noise): the counts of `base` (import and points) subtracted from the others give
+    the instructions per evaluation of the bare calls and of the same calls inside pride."""
+    f, f_rows = {"trivial": (lambda x: 0.0, lambda X: np.zeros(len(X))),
+                 "rastrigin": (rastrigin, rastrigin_rows)}[fn_name]
+    points = np.random.default_rng(1).uniform(-5.12, 5.12, (evals, DIM))
+    bounds = ([-5.12] * DIM, [5.12] * DIM)
+    if name == "bare":
+        for p in points:
+            f(p)
+    elif name == "bare_rows":
+        for i in range(0, evals, POP):
+            f_rows(points[i:i + POP])
+    elif name == "run":
+        pride.minimize("pso", f, bounds=bounds, evals=evals, seed=1)
+    elif name == "run_rows":
+        pride.minimize("pso", f_rows, bounds=bounds, evals=evals, seed=1, vectorized=True)
+    elif name == "own":
+        pride.minimize("pso", "sphere", dim=DIM, evals=evals, seed=1)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--pride", default="build/cli/pride")
+    ap.add_argument("--part", choices=["base", "bare", "bare_rows", "run", "run_rows", "own"])
+    ap.add_argument("--function", choices=["trivial", "rastrigin"], default="trivial")
+    ap.add_argument("--evals", type=int, default=10_000)
     a = ap.parse_args()
+    if a.part:
+        return part(a.part, a.evals, a.function)
     R = a.repeats
     print(f"rastrigin, D = {DIM}, {EVALS} evaluations, pso pop {POP}; median of {R} (all times in ms)")
 
     # 1. The module against the command line, same run.
     engine_py, engine_cli = [], []
-    call_ms, _ = median_ms(lambda: engine_py.append(
+    call_ms, call_min = median_ms(lambda: engine_py.append(
         pride.minimize("pso", "rastrigin", dim=DIM, evals=EVALS, seed=1).wall_ms), R)
 
     def cli_run():
@@ -109,32 +140,37 @@ def main():
                              check=True)
         engine_cli.append(json.loads(out.stdout)["wall_ms"])
 
-    process_ms, _ = median_ms(cli_run, R)
+    process_ms, process_min = median_ms(cli_run, R)
     py, cl = statistics.median(engine_py), statistics.median(engine_cli)
-    print(f"engine wall_ms: python {py:.2f}, cli {cl:.2f} (python / cli {py / cl:.3f}); "
-          f"whole call: python {call_ms:.2f}, cli process {process_ms:.2f}")
+    print(f"engine wall_ms, median (least): python {py:.2f} ({min(engine_py):.2f}), cli {cl:.2f} "
+          f"({min(engine_cli):.2f}); python / cli {py / cl:.3f} ({min(engine_py) / min(engine_cli):.3f})")
+    print(f"whole call: python {call_ms:.2f} ({call_min:.2f}), cli process {process_ms:.2f} ({process_min:.2f})")
 
-    # 2. Python functions: overhead per evaluation over the bare calls.
+    # 2. Python functions: overhead per evaluation over the bare calls (the least of the repeats).
     rng = np.random.default_rng(1)
     points = rng.uniform(-5.12, 5.12, (EVALS, DIM))
-    bare_scalar, _ = median_ms(lambda: [rastrigin(p) for p in points], R)
-    bare_rows, _ = median_ms(lambda: [rastrigin_rows(points[i:i + POP]) for i in range(0, EVALS, POP)], R)
     bounds = ([-5.12] * DIM, [5.12] * DIM)
-    scalar_ms, _ = median_ms(lambda: pride.minimize("pso", rastrigin, bounds=bounds, evals=EVALS, seed=1), R)
-    rows_ms, _ = median_ms(
-        lambda: pride.minimize("pso", rastrigin_rows, bounds=bounds, evals=EVALS, seed=1, vectorized=True), R)
     us = 1e3 / EVALS
-    print(f"scalar function: bare calls {bare_scalar * us:.3f} us/eval, in pride {scalar_ms * us:.3f} us/eval, "
-          f"overhead {(scalar_ms - bare_scalar - py) * us:.3f} us/eval (pso's own {py * us:.3f} us/eval apart)")
-    print(f"vectorised function (batches of {POP}): bare calls {bare_rows * us:.3f} us/eval, in pride "
-          f"{rows_ms * us:.3f} us/eval, overhead {(rows_ms - bare_rows - py) * us:.3f} us/eval")
+    _, own = median_ms(lambda: pride.minimize("pso", "sphere", dim=DIM, evals=EVALS, seed=1), R)
+    print(f"pso's own work with a C++ sphere: {own * us:.3f} us/eval")
+    for name, f, f_rows in (("trivial (returns 0)", lambda x: 0.0, lambda X: np.zeros(len(X))),
+                            ("numpy rastrigin", rastrigin, rastrigin_rows)):
+        _, bare = median_ms(lambda: [f(p) for p in points], R)
+        _, bare_rows = median_ms(lambda: [f_rows(points[i:i + POP]) for i in range(0, EVALS, POP)], R)
+        _, run = median_ms(lambda: pride.minimize("pso", f, bounds=bounds, evals=EVALS, seed=1), R)
+        _, run_rows = median_ms(
+            lambda: pride.minimize("pso", f_rows, bounds=bounds, evals=EVALS, seed=1, vectorized=True), R)
+        print(f"{name}: scalar: bare {bare * us:.3f}, in pride {run * us:.3f}, overhead {(run - bare) * us:.3f} "
+              f"us/eval; vectorised (batches of {POP}): bare {bare_rows * us:.3f}, in pride {run_rows * us:.3f}, "
+              f"overhead {(run_rows - bare_rows) * us:.3f} us/eval (overheads include pso's own work)")
 
     # 3. Pure-numpy PSO and WOA for scale.
     lo, hi = -5.12, 5.12
-    pso_np, _ = median_ms(lambda: numpy_pso(rastrigin_rows, DIM, EVALS, POP, lo, hi, np.random.default_rng(1)), R)
-    woa_np, _ = median_ms(lambda: numpy_woa(rastrigin, DIM, EVALS, POP, lo, hi, np.random.default_rng(1)), R)
-    woa_ms, _ = median_ms(lambda: pride.minimize("woa", "rastrigin", dim=DIM, evals=EVALS, seed=1), R)
-    print(f"numpy pso (vectorised per iteration) {pso_np:.1f} ms vs pride pso {call_ms:.1f} ms: "
+    _, pso_np = median_ms(lambda: numpy_pso(rastrigin_rows, DIM, EVALS, POP, lo, hi, np.random.default_rng(1)), R)
+    _, woa_np = median_ms(lambda: numpy_woa(rastrigin, DIM, EVALS, POP, lo, hi, np.random.default_rng(1)), R)
+    _, woa_ms = median_ms(lambda: pride.minimize("woa", "rastrigin", dim=DIM, evals=EVALS, seed=1), R)
+    call_ms = call_min
+    print(f"least times: numpy pso (vectorised per iteration) {pso_np:.1f} ms vs pride pso {call_ms:.1f} ms: "
           f"{pso_np / call_ms:.1f}x")
     print(f"numpy woa (MEALPy's per-whale loop) {woa_np:.1f} ms vs pride woa {woa_ms:.1f} ms: "
           f"{woa_np / woa_ms:.1f}x")
