@@ -129,3 +129,15 @@ def test_map_file_equals_cli():
         assert r.objective_value == j["objective_value"] and r.history.tolist() == j["history"]
     inflated = pride.Grid.load(str(path), inflate=1)
     assert inflated.to_array().sum() > a.sum()
+
+
+def test_plan_observer_on_boxes_refused_on_chains():
+    g = pride.Grid(ARRAY)
+    seen = []
+    r = pride.plan(g, START, GOAL, algo="pso", iters=4, pop=6, seed=1,
+                   callback=lambda i, e, f, pop, fit: seen.append((i, pop.shape)))
+    assert [s[0] for s in seen] == [0, 1, 2, 3, 4] and seen[0][1][0] == 6 and r.iterations == 4
+    with pytest.raises(ValueError, match="observer: only box runs are observed"):
+        pride.plan(g, START, GOAL, algo="ga", encoding="chain", iters=2, callback=lambda *a: None)
+    with pytest.raises(ValueError, match="observer"):
+        pride.plan(g, START, GOAL, algo="astar", callback=lambda *a: None)
