@@ -11,6 +11,8 @@ this module takes::
 
 from __future__ import annotations
 
+import numbers as _numbers
+
 import numpy as _np
 
 from . import _pride
@@ -36,6 +38,29 @@ def problems():
 def grid_names():
     """The objectives, encodings, connectors and initialisations grid plans take."""
     return _pride.grid_names()
+
+
+def _int(name, value, optional=True):
+    """An integer keyword, or a one-line TypeError naming it (pybind11's own lists signatures)."""
+    if value is None and optional:
+        return None
+    if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
+        raise TypeError(f"{name}: expected an integer, got {type(value).__name__}")
+    return int(value)
+
+
+def _real(name, value):
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, _numbers.Real):
+        raise TypeError(f"{name}: expected a number, got {type(value).__name__}")
+    return float(value)
+
+
+def _str(name, value):
+    if not isinstance(value, str):
+        raise TypeError(f"{name}: expected a name (str), got {type(value).__name__}")
+    return value
 
 
 class Result:
@@ -66,8 +91,10 @@ def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, ta
     best_f, population, fitness)`` is called after every iteration with read-only views (valid
     during the call); returning False stops the run there. The same seed gives the same bits as
     ``pride run --seed``."""
-    return Result(_pride.minimize(algo, problem, dim, bounds, evals, iters, target, wall_ms, seed, instance,
-                                  callback, vectorized, params))
+    return Result(_pride.minimize(_str("algo", algo), problem, _int("dim", dim), bounds, _int("evals", evals),
+                                  _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
+                                  _int("seed", seed, False), _int("instance", instance), callback, bool(vectorized),
+                                  params))
 
 
 class Optimizer:
@@ -78,7 +105,9 @@ class Optimizer:
 
     def __init__(self, algo, *, bounds, dim=None, evals=None, iters=None, target=None, wall_ms=None, seed=0,
                  **params):
-        self._run = _pride.Optimizer(algo, bounds, dim, evals, iters, target, wall_ms, seed, params)
+        self._run = _pride.Optimizer(_str("algo", algo), bounds, _int("dim", dim), _int("evals", evals),
+                                     _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
+                                     _int("seed", seed, False), params)
         self.algo = algo
 
     def ask(self):
@@ -118,9 +147,14 @@ def plan(grid, start, goal, *, algo="pso", objective="cells", encoding="line", c
     result's ``path`` is an (n, 2) array of (x, y), with ``metrics`` and ``objective_value``;
     ``oracle=True`` adds the exact ``optimum`` and the ``gap``. Without evals or iters, 50
     iterations."""
-    return Result(_pride.plan(grid, start, goal, algo, objective, encoding, connector, init, waypoints,
-                              None if weights is None else [float(w) for w in weights], lambda_, corner_cutting,
-                              oracle, evals, iters, seed, callback, params))
+    if not isinstance(grid, Grid):
+        raise TypeError(f"grid: expected a pride.Grid, got {type(grid).__name__}")
+    return Result(_pride.plan(grid, start, goal, _str("algo", algo), _str("objective", objective),
+                              _str("encoding", encoding), _str("connector", connector), _str("init", init),
+                              _int("waypoints", waypoints, False),
+                              None if weights is None else [float(w) for w in weights], _real("lambda_", lambda_),
+                              bool(corner_cutting), bool(oracle), _int("evals", evals), _int("iters", iters),
+                              _int("seed", seed, False), callback, params))
 
 
 def astar(grid, start, goal, *, objective="cells", corner_cutting=False):

@@ -54,8 +54,12 @@ def test_type_errors():
         pride.minimize("pso", "sphere", dim=2, pop="many")
     with pytest.raises(TypeError):
         pride.minimize("pso", lambda x: "not a number", bounds=([0, 0], [1, 1]), evals=10)
-    with pytest.raises(TypeError):
+    with pytest.raises(TypeError, match="^dim: expected an integer, got str$"):
         pride.minimize("pso", "sphere", dim="two")
+    with pytest.raises(TypeError, match="^evals: expected an integer, got float$"):
+        pride.minimize("pso", "sphere", dim=2, evals=1e4)
+    with pytest.raises(TypeError, match="^algo: "):
+        pride.minimize(None, "sphere", dim=2)
 
 
 def test_bounds_errors():
