@@ -167,3 +167,19 @@ def test_the_gil_is_released_during_cpp_work():
         stop.set()
         t.join()
     assert during > 0
+
+
+def test_ctrl_c_ends_a_run_of_a_python_function():
+    import signal
+
+    calls = {"n": 0}
+
+    def f(x):
+        calls["n"] += 1
+        if calls["n"] == 5:
+            signal.raise_signal(signal.SIGINT)
+        return float(x @ x)
+
+    with pytest.raises(KeyboardInterrupt):
+        pride.minimize("pso", f, bounds=([-1.0] * 2, [1.0] * 2), evals=100_000)
+    assert calls["n"] < 10
