@@ -2,8 +2,12 @@
 // File 003's whale moves on chains (shared/spec/algorithms.md, HS-WOA on grids): the operators
 // behind framework/chain.hpp's TowardMoves and Shortening capabilities, which ChainSpace offers.
 //   shortcut(c)          the line-of-sight shortcut: scan from the start and join each cell to the
-//                        farthest later cell it can see by the straight cell line (grid.md's legal
-//                        join), then cut loops;
+//                        farthest later cell it can reach by a legal shortest join, then cut
+//                        loops. The join is an octile elbow (diagonal run then straight run, or
+//                        the other way round: at most one turn) when one is legal, else grid.md's
+//                        straight cell line (decided here: all three are as short, and the
+//                        straight line of a slope other than 0, 1 or infinity is a staircase of
+//                        turns, which the hswoa objective counts);
 //   toward(c, t, w, rng) moving whale c towards whale t: a section of relative length w is chosen
 //                        at one random position, the same share of both chains (positions
 //                        floor/ceil of [u (1 - w), u (1 - w) + w] times the chain's last index,
@@ -44,14 +48,23 @@ class WhaleChainMoves {
         std::size_t i = 0;
         while (i + 1 < c.size()) {
             std::size_t j = c.size() - 1;
-            while (j > i + 1 && !line_is_free(map, c[i], c[j], corner_cutting)) --j;
-            if (j == i + 1)
-                out.push_back(c[j]);
-            else
-                append_line(c[i], c[j], out);
+            for (; j > i + 1; --j)
+                if (join(map, c[i], c[j], out, corner_cutting)) break;
+            if (j == i + 1) out.push_back(c[j]);
             i = j;
         }
         cut_loops(out, map, seen_);
+    }
+
+    /// Appends to `out` a legal join from a (not appended) to b, when there is one: the octile
+    /// elbow with its diagonal run first, else the elbow with its straight run first (both at
+    /// most one turn), else grid.md's straight cell line. All three have the octile length.
+    static bool join(const GridMap& map, Cell a, Cell b, Path& out, bool corner_cutting) {
+        for (const bool diagonal_first : {true, false})
+            if (elbow(map, a, b, diagonal_first, out, corner_cutting)) return true;
+        if (!line_is_free(map, a, b, corner_cutting)) return false;
+        append_line(a, b, out);
+        return true;
     }
 
     /// Moves `c` towards `target` (both legal chains between the same ends) by a section of
@@ -100,6 +113,32 @@ class WhaleChainMoves {
     }
 
   private:
+    static int sign(int v) noexcept { return (v > 0) - (v < 0); }
+    /// The elbow from a to b: min(|dx|, |dy|) diagonal steps and the rest straight along the
+    /// longer axis, in the order asked; appended when every step is legal, else out unchanged.
+    static bool elbow(const GridMap& map, Cell a, Cell b, bool diagonal_first, Path& out, bool corner_cutting) {
+        const int dx = b.x - a.x, dy = b.y - a.y, ax = std::abs(dx), ay = std::abs(dy);
+        const Cell diagonal{sign(dx), sign(dy)};
+        const Cell straight = ax > ay ? Cell{sign(dx), 0} : Cell{0, sign(dy)};
+        const int runs[2] = {std::min(ax, ay), std::max(ax, ay) - std::min(ax, ay)};
+        const std::size_t mark = out.size();
+        Cell here = a;
+        for (int part = 0; part < 2; ++part) {
+            const bool diag = (part == 0) == diagonal_first;
+            const Cell step = diag ? diagonal : straight;
+            for (int k = 0; k < runs[diag ? 0 : 1]; ++k) {
+                const Cell next{here.x + step.x, here.y + step.y};
+                if (!map.legal_step(here, direction(here, next), corner_cutting)) {
+                    out.resize(mark);
+                    return false;
+                }
+                out.push_back(next);
+                here = next;
+            }
+        }
+        return true;
+    }
+
     TabooRouletteWalk walk_;  // scratch below, reused: no allocation once the run has warmed up
     Path first_, second_, tail_;
     std::vector<std::int32_t> seen_;
