@@ -52,8 +52,8 @@
 #include "algorithms/parts/run_setup.hpp"
 #include "algorithms/parts/whale_moves.hpp"
 #include "algorithms/parts/whale_pods.hpp"
-#include "framework/chain.hpp"
 #include "framework/bounds.hpp"
+#include "framework/chain.hpp"
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
@@ -159,7 +159,8 @@ class Woa {
     BasicResult<typename P::chain_type> run(P problem, const Termination& termination, std::uint64_t seed,
                                             O&& observer = O{}) const {
         visit_policy(draws, [&](const auto& d) {
-            require(!std::decay_t<decltype(d)>::per_coordinate, name(), "per-coordinate draws have no meaning on chains");
+            require(!std::decay_t<decltype(d)>::per_coordinate, name(),
+                    "per-coordinate draws have no meaning on chains");
         });
         whale::ChainPod<Woa, P> pod(*this, problem, termination, seed, observer, horizon_need());
         return iterations(pod, observer);

@@ -83,7 +83,7 @@ def main():
                   f"{statistics.mean(l for l, _ in lt):.3f} | {statistics.mean(t for _, t in lt):.2f} | "
                   f"{100 * statistics.mean(gaps):.2f} % | {100 * optimal / len(rs):.1f} % | "
                   f"{100 * short / len(rs):.1f} % | "
-                  f"{statistics.mean(conv) if conv else float('nan'):.1f} | {statistics.mean(r[4] for r in rs):.0f} | "
+                  f"{f'{statistics.mean(conv):.1f}' if conv else '-'} | {statistics.mean(r[4] for r in rs):.0f} | "
                   f"{statistics.mean(r[5] for r in rs):.2f} |")
 
 

@@ -200,11 +200,9 @@ TEST_CASE("whale chains: the line-of-sight shortcut joins each cell to the farth
     }
 }
 
-TEST_CASE("whale chains: a whale moved towards another passes through its section, inside the window",
-          "[woa][chain]") {
+TEST_CASE("whale chains: a whale moved towards another passes through its section, inside the window", "[woa][chain]") {
     // Start bottom-left, goal bottom-right; the target runs along the bottom row, c over the top.
-    const auto map = test::map_of({"..........", "..........", "..........", "..........", "..........",
-                                   ".........."});
+    const auto map = test::map_of({"..........", "..........", "..........", "..........", "..........", ".........."});
     const grid::Cell s{0, 5}, g{9, 5};
     grid::Path target;
     for (int x = 0; x <= 9; ++x) target.push_back({x, 5});
@@ -377,7 +375,8 @@ TEST_CASE("woa on chains: per-coordinate draws are refused", "[woa][chain]") {
     CHECK_THROWS_AS(a.run(space_of(bundled("file003-env1-30x30.map")), max_iterations(2), 1), InputError);
 }
 
-TEST_CASE("woa entries on grids: the chain encoding, N = 20 and 50 iterations, objective hswoa", "[woa][chain][engine]") {
+TEST_CASE("woa entries on grids: the chain encoding, N = 20 and 50 iterations, objective hswoa",
+          "[woa][chain][engine]") {
     engine::GridSpec g;
     g.map = engine::load_map((bundled_maps() / "file003-50x50.map").string());
     const auto scen = grid::read_scenario((bundled_maps() / "file003-50x50.map.scen").string());

@@ -175,7 +175,7 @@ class ChainPod {
         const auto un = static_cast<std::uint64_t>(x_.size());
         for (std::size_t i = 0; i < x_.size(); ++i) {
             const double A = coefficient_a(a, u.uniform());  // (3)
-            (void)coefficient_c(u.uniform());                 // (4): drawn as on boxes, no part on chains
+            (void)coefficient_c(u.uniform());                // (4): drawn as on boxes, no part on chains
             const double spiral = spiral_factor(l(a2, u.uniform()), b_);
             const double p = u.uniform();
             const bool explore = M::balanced && u.uniform() < balance;

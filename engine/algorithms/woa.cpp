@@ -59,7 +59,8 @@ auto configure(std::string id, bool harmony, bool balanced) {
 void add(AlgorithmRegistry& registry, const std::string& name, const std::string& summary, bool harmony,
          bool balanced) {
     auto e = box_algorithm(name, "woa", summary, whale_params(harmony, balanced), configure(name, harmony, balanced));
-    add_chain_runner(e, configure(name, harmony, balanced));  // chains: whale_pods.hpp
+    // On chains the same configuration runs the chain pod (algorithms/parts/whale_pods.hpp).
+    add_chain_runner(e, configure(name, harmony, balanced));
     e.memory = population_memory(2);  // the pod and the reconstruction's copy
     registry.add(std::move(e));
 }
