@@ -65,8 +65,10 @@ class EvaluationPool {
         }
         std::unique_lock lock(mutex_);
         done_.wait(lock, [&] { return pending_ == 0; });
+        std::exception_ptr first;
         for (auto& e : errors_)
-            if (e) std::rethrow_exception(std::exchange(e, nullptr));
+            if (auto taken = std::exchange(e, nullptr); taken && !first) first = taken;
+        if (first) std::rethrow_exception(first);
     }
 
   private:
