@@ -16,9 +16,9 @@ CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, st
         require(std::isfinite(lower[i]) && std::isfinite(upper[i]) && lower[i] <= upper[i], name,
                 "bounds " + std::to_string(i) + " must be finite with lower <= upper");
     require(static_cast<bool>(scalar) || static_cast<bool>(batch), name, "no function to evaluate");
-    shared_ = std::make_shared<const Shared>(
-        Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar), std::move(batch),
-                                             thread_safe, std::move(starts)});
+    shared_ =
+        std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar),
+                                              std::move(batch), thread_safe, std::move(starts)});
 }
 
 double CallbackProblem::evaluate(std::span<const double> x) {

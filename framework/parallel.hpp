@@ -110,8 +110,7 @@ class EvaluationPool {
 /// columns with copy k. Copies of a ParallelBatch share the copies and the pool, so one run
 /// (one thread calling at a time) may copy it freely; two runs must not share one.
 template <BoxProblem P>
-requires(!Reseedable<P>)
-class ParallelBatch {
+requires(!Reseedable<P>) class ParallelBatch {
   public:
     ParallelBatch(const P& problem, std::size_t threads)
         : shared_(std::make_shared<Shared>(problem, std::max<std::size_t>(threads, 1))) {}

@@ -5,11 +5,11 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <bit>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -119,7 +119,7 @@ TEST_CASE("threads: a batch callback is handed slices of the population, with th
         calls = 0;
         points = 0;
         check_same(one, engine::run(algo(name), problem, budget(1000, 3), 3));
-        CHECK(points == 1000);        // every point once
+        CHECK(points == 1000);         // every point once
         CHECK(calls > 2 * one_calls);  // each batch in three slices (one slice only when one point is left)
     }
 }
@@ -226,8 +226,8 @@ TEST_CASE("threads: bad thread counts and callbacks not marked thread-safe are r
         CHECK_THAT(r.err, Contains("--threads") && Contains("[1, 256]"));
         CHECK(r.out.empty());
     }
-    const auto ok = pride::test::run_pride(
-        "path --map '" + example_map("file000-10x10.map") + "' --start 0,0 --goal 9,9 --algo pso --iters 3 --threads 2");
+    const auto ok = pride::test::run_pride("path --map '" + example_map("file000-10x10.map") +
+                                           "' --start 0,0 --goal 9,9 --algo pso --iters 3 --threads 2");
     CHECK(ok.status == 0);
 
     const auto dir = std::filesystem::temp_directory_path() / "pride-test-threads";

@@ -251,8 +251,7 @@ void add_iqga(AlgorithmRegistry& registry) {
 
 // --- ga-sga: ga-plus with pagmo2's polynomial mutation (issue 15; mutation.hpp) ---
 
-using SgaBox =
-    Ga<TournamentSelection, SbxCrossover, SimplePolynomialMutation, Clamp, SelectableInit, PlusReplacement>;
+using SgaBox = Ga<TournamentSelection, SbxCrossover, SimplePolynomialMutation, Clamp, SelectableInit, PlusReplacement>;
 
 void add_ga_sga(AlgorithmRegistry& registry) {
     auto e = box_algorithm("ga-sga", "ga",
