@@ -253,11 +253,21 @@ void add_iqga(AlgorithmRegistry& registry) {
 
 using SgaBox = Ga<TournamentSelection, SbxCrossover, SimplePolynomialMutation, Clamp, SelectableInit, PlusReplacement>;
 
+std::vector<ParamSpec> sga_params() {
+    return {population_param(50, 2),
+            integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
+            real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index"),
+            real("pc", 0.9, 0.0, 1.0, "crossover probability per pair"),
+            real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
+            real("pm", 0.0, 0.0, 1.0, "mutation probability per gene (default 1/D)").no_default(),
+            walk_init_param(false)};
+}
+
 void add_ga_sga(AlgorithmRegistry& registry) {
     auto e = box_algorithm("ga-sga", "ga",
                            "ga-plus with the simple polynomial mutation of pagmo2's sga (steps a fraction of the "
                            "distance to the face moved towards); boxes only",
-                           params(true), [](const Params& p) {
+                           sga_params(), [](const Params& p) {
                                SgaBox a;
                                a.id = "ga-sga";
                                a.population = p.integer("pop");
