@@ -13,6 +13,7 @@
 #include "engine/registry.hpp"
 #include "engine/targets.hpp"
 #include "framework/error.hpp"
+#include "framework/parallel.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/oracle.hpp"
 #include "problems/grid/pareto.hpp"
@@ -211,7 +212,7 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
         const auto& cb = std::get<CallbackSpec>(spec);
         out->name = cb.name;
         out->dimension = cb.lower.size();
-        out->box = BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch)};
+        out->box = BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch, cb.thread_safe)};
     }
     return out;
 }
@@ -422,7 +423,52 @@ struct CheckedRun {
     Termination termination;
 };
 
+/// The largest Budget::threads: far more than a population's slices are worth.
+constexpr std::int64_t kMaxThreads = 256;
+
+void check_threads(const Prepared& p, const Budget& budget) {
+    require(budget.threads >= 1 && budget.threads <= kMaxThreads, "threads",
+            fmt::format("must be in [1, {}], got {}", kMaxThreads, budget.threads));
+    if (budget.threads == 1 || !p.box) return;
+    if (const auto* cb = std::get_if<CallbackProblem>(&p.box->problem))
+        require(cb->thread_safe(), "threads",
+                fmt::format("the function '{}' is not marked thread-safe (CallbackSpec::thread_safe), so it runs on "
+                            "one thread only; Python functions always do",
+                            cb->name()));
+}
+
+/// The box a run with Budget::threads > 1 searches: the prepared target's problem behind a
+/// ParallelBatch (framework/parallel.hpp), erased into a CallbackProblem so that no algorithm is
+/// compiled twice; one std::function call per slice of a batch. Empty when the run stays on one
+/// thread: one thread asked for, or a continuous function (its noise is drawn in evaluation order,
+/// and an evaluation costs less than waking a thread).
+std::optional<BoxTarget> threaded_box(const BoxTarget& target, const std::string& name, std::int64_t threads) {
+    if (threads <= 1) return std::nullopt;
+    return std::visit(
+        [&](const auto& problem) -> std::optional<BoxTarget> {
+            using P = std::decay_t<decltype(problem)>;
+            if constexpr (Reseedable<P> || std::is_same_v<P, continuous::Function>) {
+                return std::nullopt;
+            } else {
+                ParallelBatch<P> parallel(problem, static_cast<std::size_t>(threads));
+                CallbackProblem::Starts starts;
+                if constexpr (SuggestsStartingPoints<P>)
+                    starts = [parallel](Rng& rng, Matrix& out) { parallel.first().starting_points(rng, out); };
+                const auto lo = problem.lower(), hi = problem.upper();
+                return BoxTarget{CallbackProblem(
+                    name, std::vector<double>(lo.begin(), lo.end()), std::vector<double>(hi.begin(), hi.end()),
+                    [parallel](std::span<const double> x) mutable { return parallel.evaluate(x); },
+                    [parallel](MatrixView points, std::span<double> values) mutable {
+                        parallel.evaluate_batch(points, values);
+                    },
+                    true, std::move(starts))};
+            }
+        },
+        target.problem);
+}
+
 CheckedRun checked_run(const AlgorithmSpec& algorithm, const Prepared& p, const Budget& budget) {
+    check_threads(p, budget);
     const AlgorithmEntry& entry = algorithms().at(algorithm.name);
     CheckedRun c{entry, checked(entry, p, algorithm), budget.termination(p.dimension, p.grid.has_value())};
     if (!entry.solve_grid) check_run_memory(entry, c.params, p, c.termination);
@@ -460,8 +506,13 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
         require(!entry.solve_grid && !p.chain, "observer",
                 "only box runs are observed (" + entry.name +
                     (entry.solve_grid ? " solves the whole map)" : " runs on chains)"));
+    // Made only for a run on the box (its threads start here and end with the run).
+    auto box_run = [&] {
+        const auto threaded = threaded_box(*p.box, p.name, budget.threads);
+        return run_box(entry, params, threaded ? *threaded : *p.box, termination, seed, observer);
+    };
     if (!p.grid) {
-        Result r = run_box(entry, params, *p.box, termination, seed, observer);
+        Result r = box_run();
         copy_run(out, r);
         out.best_x = std::move(r.best_x);
         return out;
@@ -486,7 +537,7 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
         copy_run(out, r);
     } else {
         o.encoding = g.encoding;
-        Result r = run_box(entry, params, *p.box, termination, seed, observer);
+        Result r = box_run();
         std::visit(
             [&](const auto& target) {
                 using Target = std::decay_t<decltype(target)>;
