@@ -562,7 +562,7 @@ TEST_CASE("iqga: registry entry, defaults, N = 40 on grids, SITP by default, cha
     CHECK(e->family == "ga");
     CHECK(e->spaces() == std::vector<std::string>{"chain"});
     CHECK(e->grid_population == 40);
-    const std::map<std::string, double> defaults{{"pop", 40},   {"elite", 20},  {"pc", 0.9},   {"pm", 0.1},
+    const std::map<std::string, double> defaults{{"pop", 40},      {"elite", 20},  {"pc", 0.9},    {"pm", 0.1},
                                                  {"epsilon", 0.1}, {"alpha", 0.1}, {"gamma", 0.9}, {"sitp", 1}};
     for (const auto& [name, value] : defaults) {
         INFO(name);
@@ -622,8 +622,8 @@ struct BestLengthRecorder {
     template <class View>
     void operator()(const View& view) const {
         const std::vector<grid::Path>& pop = view.population;
-        const auto best = static_cast<std::size_t>(std::min_element(view.fitness.begin(), view.fitness.end()) -
-                                                   view.fitness.begin());
+        const auto best =
+            static_cast<std::size_t>(std::min_element(view.fitness.begin(), view.fitness.end()) - view.fitness.begin());
         lengths->push_back(grid::metrics(pop[best], false).length);
     }
 };
