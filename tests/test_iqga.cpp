@@ -9,7 +9,9 @@
 //   - Q-learning learns once per generation (a replay of the learner chooses every child's operator);
 //   - reproducible bit for bit; every member of every population a legal simple path from start to
 //     goal on every bundled map and on 200 random maps; budgets exact;
-//   - the registry entry: parameters, N = 40 on grids, SITP by default, chains only.
+//   - the registry entry: parameters, N = 40 on grids, SITP by default, chains only;
+//   - the ablation flags (regions, elite_crossover, qlearning, with sitp): each removes its change
+//     only, every variant legal and reproducible.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
