@@ -16,7 +16,9 @@
 //      hswoa) on the bundled 50x50 map (file 003), run through the engine, 51 seeds: the median
 //      and least wall time of a run (RunState's clock) and its median processor time (std::clock,
 //      steadier than the wall clock on a loaded machine).
-// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp | --pareto | --whales]
+//   7. With --init-table only: file 002's table 2, 30 SITP and 30 random-walk initial paths on
+//      each bundled file002 map (longest, shortest, mean length, share of legal paths).
+// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp | --pareto | --whales | --init-table]
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -212,6 +214,35 @@ void bench_whales(const std::string& maps) {
     }
 }
 
+/// File 002's table 2: 30 initial paths by SITP and by the goal-biased random walk (the chain GA's
+/// random initial population) on each bundled file002 map, seed 1: longest, shortest and mean
+/// length, and the share of legal paths (checked by path_violation).
+void bench_init_table(const std::string& maps) {
+    fmt::print("part,map,init,paths,longest,shortest,mean_length,feasible_share\n");
+    for (const char* name : {"file002-20x20", "file002-40x40"}) {
+        const Bundled b = bundled(maps, name);
+        const GridProblem<IqgaObjective> problem(b.map, b.start, b.goal);
+        for (const Walks init : {Walks::sitp, Walks::random}) {
+            ChainSpace<IqgaObjective> space(problem);
+            space.set_init(init);
+            Rng rng(1);
+            double longest = 0.0, shortest = 1e300, sum = 0.0;
+            int legal = 0;
+            Path c;
+            for (int k = 0; k < 30; ++k) {
+                space.random_chain(rng, c);
+                const double l = metrics(c, false).length;
+                longest = std::max(longest, l);
+                shortest = std::min(shortest, l);
+                sum += l;
+                legal += path_violation(*b.map, c, b.start, b.goal).empty() ? 1 : 0;
+            }
+            fmt::print("init,{},{},30,{:.3f},{:.3f},{:.3f},{:.2f}\n", name, init == Walks::sitp ? "sitp" : "walk",
+                       longest, shortest, sum / 30.0, legal / 30.0);
+        }
+    }
+}
+
 void bench_swarms(const std::string& maps) {
     for (const char* algorithm : {"pso", "lso", "ilso"}) bench_swarm(maps, algorithm);
 }
@@ -259,12 +290,17 @@ int main(int argc, char** argv) {
     CLI::App app{"grid benchmark: A*, decoding, PSO, LSO and ILSO on the 10x10 map"};
     app.add_option("--scen", scens, "Moving AI scenario files for the A* part");
     app.add_option("--maps", maps, "folder of the bundled maps (default examples/maps)");
-    bool sitp = false, pareto = false, whales = false;
+    bool sitp = false, pareto = false, whales = false, init_table = false;
     app.add_flag("--sitp", sitp, "only: the time to make N = 40 SITP paths on the bundled 40x40 map");
     app.add_flag("--pareto", pareto, "only the exact Pareto fronts (20x20, 40x40, random 100x100)");
     app.add_flag("--whales", whales, "only: HS-WOA and WOA, N = 20, 50 iterations, on the bundled 50x50 map");
+    app.add_flag("--init-table", init_table, "only: file 002's table 2 (30 SITP and 30 random-walk paths per map)");
     CLI11_PARSE(app, argc, argv);
     try {
+        if (init_table) {
+            bench_init_table(maps);
+            return 0;
+        }
         if (sitp) {
             bench_sitp(maps);
             return 0;

@@ -163,9 +163,11 @@ TEST_CASE("IAGA: Srinivas-Patnaik probabilities at their end points, by hand", "
     CHECK(pc(6.0, 2.0, 6.0) == 0.8);                         // g = mean: k1 * 1
     CHECK(pc(4.0, 2.0, 6.0) == Approx(0.4).epsilon(1e-15));  // halfway: k1 / 2
     CHECK(pc(6.5, 2.0, 6.0) == 0.6);                         // worse than the mean: k3
-    // The authors' constants: k2 = k4 = 0.5 for pm, k1 = k3 = 1 for pc.
+    // The authors' constants: k2 = k4 = 0.5 for pm, k1 = k3 = 1 for pc, pm never below 0.005.
     const auto pm = kSrinivasPatnaikMutation;
-    CHECK(pm(2.0, 2.0, 6.0) == 0.0);
+    CHECK(pm(2.0, 2.0, 6.0) == 0.005);                         // the best: the floor, not 0
+    CHECK(pm(2.02, 2.0, 6.0) == Approx(0.005).epsilon(1e-12));  // 0.5 * 0.005 = 0.0025 < 0.005
+    CHECK(pm(2.4, 2.0, 6.0) == Approx(0.05).epsilon(1e-12));    // 0.5 * 0.1, above the floor
     CHECK(pm(6.0, 2.0, 6.0) == 0.5);
     CHECK(pm(5.0, 2.0, 6.0) == 0.375);  // 0.5 * 3/4
     CHECK(pm(100.0, 2.0, 6.0) == 0.5);
@@ -189,8 +191,9 @@ TEST_CASE("IAGA: Srinivas-Patnaik probabilities at their end points, by hand", "
     c.parents = {3, 2};  // g' = 6 > 5: k3
     CHECK(pc.for_pair(c) == 0.6);
     c.parents = {0, 3};
-    c.child = 0;  // the copy of member 0, the best: pm = 0
-    CHECK(pm.for_child(c) == 0.0);
+    c.child = 0;  // the copy of member 0, the best: pm = the floor 0.005
+    CHECK(pm.for_child(c) == 0.005);
+    CHECK(AdaptiveProbability{0.5, 0.5}.for_child(c) == 0.0);  // no floor: 0
     c.child = 1;  // the copy of member 3, below the mean: k4
     CHECK(pm.for_child(c) == 0.5);
 }
@@ -211,6 +214,8 @@ TEST_CASE("IAGA: with every k = 0 nothing is crossed or mutated", "[ga-variants]
     for (const double h : rc.history) CHECK(same_bits(h, rc.history.front()));
 
     box.mutation.probability = {1.5, 0.5};
+    REQUIRE_THROWS_AS(box.validate(), InputError);
+    box.mutation.probability = {0.5, 0.5, -0.1};  // pm_min outside [0, 1]
     REQUIRE_THROWS_AS(box.validate(), InputError);
 }
 
@@ -678,7 +683,7 @@ TEST_CASE("GA variants: registry entries, their parameters and ranges", "[ga-var
         return *it;
     };
     for (const auto& [name, value] :
-         {std::pair<const char*, double>{"k1", 1.0}, {"k2", 0.5}, {"k3", 1.0}, {"k4", 0.5}}) {
+         {std::pair<const char*, double>{"k1", 1.0}, {"k2", 0.5}, {"k3", 1.0}, {"k4", 0.5}, {"pm_min", 0.005}}) {
         const auto& p = param(iaga, name);
         CHECK(p.default_value == value);
         CHECK(p.min == 0.0);

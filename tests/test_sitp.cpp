@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <set>
@@ -603,4 +604,54 @@ TEST_CASE("sitp: campaign files take init = \"sitp\"", "[sitp][cli]") {
     CHECK(pride::test::run_pride("bench '" + line + "' --out '" + dir.file("line.sqlite") + "'").status == 0);
     const std::string bad = dir.write("bad.toml", campaign("rules", "chain"));
     pride::test::expect_input_error("bench '" + bad + "' --out '" + dir.file("bad.sqlite") + "'", {"rules", "chain"});
+}
+
+TEST_CASE("sitp: the weight table holds sitp_step_weight's own bits; direction() inverts kDx / kDy", "[sitp]") {
+    // Every offset of a 13 x 9 map, every step: the table's value is the function's, bit for bit
+    // (so the walks draw as without the table), and a second lookup returns the same.
+    const GridMap map(13, 9, std::vector<std::uint8_t>(13 * 9, 0));
+    SitpWalker w;
+    for (int ty = -8; ty <= 8; ++ty)
+        for (int tx = -12; tx <= 12; ++tx) {
+            if (tx == 0 && ty == 0) continue;
+            const double* e = w.step_weights(map, tx, ty);
+            REQUIRE(e != nullptr);
+            for (int d = 0; d < 8; ++d) {
+                const double f = sitp_step_weight(kDx[d], kDy[d], tx, ty);
+                REQUIRE(std::memcmp(&e[d], &f, sizeof f) == 0);
+            }
+            REQUIRE(w.step_weights(map, tx, ty) == e);
+        }
+    // A map too large for a table (8 x 799 x 799 > 2^20 entries): no table, the walk computes.
+    const GridMap big(400, 400, std::vector<std::uint8_t>(400 * 400, 0));
+    CHECK(w.step_weights(big, 3, 4) == nullptr);
+    Path p;
+    Rng rng(4);
+    REQUIRE(w.angle_walk(big, {0, 0}, {399, 399}, rng, p));
+    CHECK(p.size() == 400);  // the diagonal: weight 1e15 at every step
+    // direction(): the index d with (kDx[d], kDy[d]) = b - a, -1 for anything else.
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            int expected = -1;
+            for (int d = 0; d < 8; ++d)
+                if (kDx[d] == dx && kDy[d] == dy) expected = d;
+            CHECK(direction({5, 5}, {5 + dx, 5 + dy}) == expected);
+        }
+}
+
+TEST_CASE("sitp: the ablation flags and IAGA's pm_min out of range are input errors naming them", "[sitp][cli]") {
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string base = "path --map " + map + " --start 0,19 --goal 19,0 --encoding chain --objective iqga ";
+    for (const char* bad :
+         {"--algo iqga --param regions=2", "--algo iqga --param elite_crossover=-1",
+          "--algo iqga --param qlearning=0.5", "--algo iaga --param pm_min=1.5", "--algo iaga --param pm_min=-0.1"}) {
+        INFO(bad);
+        const auto r = pride::test::run_pride(base + bad);
+        CHECK(r.status == 2);
+        const std::string name = std::string(bad).substr(std::string(bad).find("--param ") + 8);
+        CHECK(r.err.find(name.substr(0, name.find('='))) != std::string::npos);
+        CHECK(r.out.empty());
+    }
+    const auto ok = pride::test::run_pride(base + "--algo iqga --iters 5 --param regions=0 --param qlearning=0 --json");
+    CHECK(ok.status == 0);
 }

@@ -93,7 +93,9 @@ inline std::array<std::size_t, 3> selections(std::size_t n1, std::size_t n2, std
 }
 
 /// Eq. 17 on maximised fitness values.
-inline double uniformity(double f_best, double f_worst) noexcept { return f_best - 21.0 / 20.0 * f_worst; }
+inline double uniformity(double f_best, double f_worst) noexcept {
+    return f_best - 21.0 / 20.0 * f_worst;
+}
 
 /// Eq. 18 on maximised fitness values: the probability that a member of fitness F_i is kept.
 inline double acceptance(double f_i, double f_best, double f_worst) noexcept {
@@ -115,6 +117,11 @@ inline double badness(double v, double best, double worst) noexcept {
 struct RegionTournamentSelection {
     static constexpr bool uses_regions = true;  // the GA fills GenerationContext::regions for it
     std::int64_t elite = 20;                    // the pairing rule's elite: min(elite, N/2) best
+    // Ablations (file 002's changes removed one at a time): without `regions` the whole population
+    // is one region and all N tournaments draw from it; without `pairing` the second parent is
+    // drawn from the whole pool like the first (no elite pairing rule).
+    bool regions = true;
+    bool pairing = true;
 
     void validate(const std::string& where) const {
         require(elite >= 1, where, "elite must be >= 1, got " + std::to_string(elite));
@@ -122,7 +129,8 @@ struct RegionTournamentSelection {
 
     class Prepared {
       public:
-        explicit Prepared(std::int64_t elite) : elite_(elite) {}
+        explicit Prepared(std::int64_t elite, bool regions = true, bool pairing = true)
+            : elite_(elite), regions_(regions), pairing_(pairing) {}
 
         /// Builds the generation's pool from the context's fitness and regions.
         void begin_generation(const GenerationContext& c, Rng& rng) {
@@ -134,10 +142,11 @@ struct RegionTournamentSelection {
             if (n == 0) return;
             for (auto& m : members_) m.clear();
             for (std::size_t i = 0; i < n; ++i) {
-                const std::size_t r = c.regions.size() == n ? std::min<std::size_t>(c.regions[i], 2) : 0;
+                const std::size_t r = regions_ && c.regions.size() == n ? std::min<std::size_t>(c.regions[i], 2) : 0;
                 members_[r].push_back(i);
             }
-            const auto s = iqga::selections(members_[0].size(), members_[1].size(), n);
+            const auto s = regions_ ? iqga::selections(members_[0].size(), members_[1].size(), n)
+                                    : std::array<std::size_t, 3>{n, 0, 0};
             // Maximised fitness F = -f of the population's best and worst.
             std::size_t best = 0;
             double worst = f[0];
@@ -173,7 +182,7 @@ struct RegionTournamentSelection {
             }
             const std::size_t first = *pending_;
             pending_.reset();
-            const auto& from = elite_flags_[first] ? pool_ : pool_elite_;
+            const auto& from = !pairing_ || elite_flags_[first] ? pool_ : pool_elite_;
             return from[static_cast<std::size_t>(rng.below(from.size()))];
         }
 
@@ -183,13 +192,14 @@ struct RegionTournamentSelection {
 
       private:
         std::int64_t elite_;
+        bool regions_, pairing_;
         std::array<std::vector<std::size_t>, 3> members_;
         std::vector<std::size_t> pool_, pool_elite_, order_;
         std::vector<char> elite_flags_;
         mutable std::optional<std::size_t> pending_;  // the first parent of the pair being drawn
     };
 
-    Prepared prepare(std::size_t) const { return Prepared(elite); }
+    Prepared prepare(std::size_t) const { return Prepared(elite, regions, pairing); }
 };
 
 /// Section 2.4.2, fig. 7: a pair with at least one elite member (min(elite, N/2) best of the
@@ -198,6 +208,7 @@ struct RegionTournamentSelection {
 struct EliteCrossover {
     double probability = 0.9;
     std::int64_t elite = 20;
+    bool elite_only = true;  // ablation: false crosses every pair with probability Pc
 
     void validate(const std::string& where) const {
         require(probability >= 0.0 && probability <= 1.0, where,
@@ -207,7 +218,8 @@ struct EliteCrossover {
 
     class Prepared {
       public:
-        Prepared(double probability, std::int64_t elite) : probability_(probability), elite_(elite) {}
+        Prepared(double probability, std::int64_t elite, bool elite_only = true)
+            : probability_(probability), elite_(elite), elite_only_(elite_only) {}
         void begin_generation(const GenerationContext& c, Rng&) {
             iqga::elite_flags(c.fitness, iqga::elite_size(elite_, c.fitness.size()), flags_, order_);
         }
@@ -216,18 +228,19 @@ struct EliteCrossover {
         template <TwoPointCrossover P>
         void operator()(P& problem, typename P::chain_type& a, typename P::chain_type& b, Rng& rng,
                         const GenerationContext& c) const {
-            if (!is_elite(c.parents[0]) && !is_elite(c.parents[1])) return;
+            if (elite_only_ && !is_elite(c.parents[0]) && !is_elite(c.parents[1])) return;
             if (rng.bernoulli(probability_)) problem.crossover_two_point(a, b, rng);
         }
 
       private:
         double probability_;
         std::int64_t elite_;
+        bool elite_only_;
         std::vector<char> flags_;
         std::vector<std::size_t> order_;
     };
 
-    Prepared prepare(std::size_t) const { return Prepared(probability, elite); }
+    Prepared prepare(std::size_t) const { return Prepared(probability, elite, elite_only); }
 };
 
 /// The chain space's numbered mutation K (NumberedMutations), always applied (the Q-learning
@@ -237,8 +250,8 @@ struct NumberedChainMutation {
     template <NumberedMutations P>
     void operator()(P& problem, typename P::chain_type& c, Rng& rng, const GenerationContext& context) const {
         const std::size_t parent = context.parents[context.child == 0 ? 0 : 1];
-        const double v = parent < context.fitness.size() ? context.fitness[parent]
-                                                         : std::numeric_limits<double>::quiet_NaN();
+        const double v =
+            parent < context.fitness.size() ? context.fitness[parent] : std::numeric_limits<double>::quiet_NaN();
         problem.mutate(K, c, rng, iqga::badness(v, context.best, context.worst));
     }
 };

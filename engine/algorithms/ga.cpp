@@ -81,7 +81,7 @@ void iaga_common(G& a, const Params& p) {
     a.replacement.elitism = p.integer("elitism");
     a.selection.size = p.integer("tournament");
     a.crossover.probability = {p.real("k1"), p.real("k3")};
-    a.mutation.probability = {p.real("k2"), p.real("k4")};
+    a.mutation.probability = {p.real("k2"), p.real("k4"), p.real("pm_min")};
 }
 
 std::vector<ParamSpec> iaga_params() {
@@ -95,6 +95,7 @@ std::vector<ParamSpec> iaga_params() {
         real("k2", 0.5, 0.0, 1.0, "pm = k2 (f - best)/(mean - best) for a member at least average"),
         real("k3", 1.0, 0.0, 1.0, "pc for a pair worse than average"),
         real("k4", 0.5, 0.0, 1.0, "pm for a member worse than average (per gene on boxes, per child on chains)"),
+        real("pm_min", 0.005, 0.0, 1.0, "least pm of any member (Srinivas-Patnaik's default mutation rate)"),
         walk_init_param(false).only_on_boxes()};
 }
 
@@ -213,6 +214,10 @@ IqgaGa configure_iqga(const Params& p) {
     a.crossover.probability = p.real("pc");
     a.mutation.probability = p.real("pm");
     a.mutation.learning = {p.real("epsilon"), p.real("alpha"), p.real("gamma")};
+    // The ablations of docs/results/file002.md: each flag removes one of file 002's changes.
+    a.selection.regions = p.flag("regions");
+    a.selection.pairing = a.crossover.elite_only = p.flag("elite_crossover");
+    if (!p.flag("qlearning")) a.mutation.actions = {{1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0}};  // one fixed action
     return a;
 }
 
@@ -231,7 +236,13 @@ void add_iqga(AlgorithmRegistry& registry) {
         real("epsilon", 0.1, 0.0, 1.0, "Q-learning: probability of a random action"),
         real("alpha", 0.1, 0.0, 1.0, "Q-learning: learning rate"),
         real("gamma", 0.9, 0.0, 1.0, "Q-learning: discount factor"),
-        flag("sitp", true, "initial chains from SITP walks (file 002 section 2.2); the grid spec's init sets it")};
+        flag("sitp", true, "initial chains from SITP walks (file 002 section 2.2); the grid spec's init sets it"),
+        flag("regions", true,
+             "region-partitioned tournaments (eqs. 14-16); false: all N tournaments over the whole population"),
+        flag("elite_crossover", true,
+             "elite pairing rule and elite-only crossover (section 2.4.2); false: any pair, crossed with pc"),
+        flag("qlearning", true,
+             "Q-learning chooses the mutation probabilities (eq. 19); false: fixed 1/3 each")};
     e.grid_population = 40;
     e.run_chain = [](const Params& p, const ChainTarget& target, const Termination& termination,
                      std::uint64_t seed) -> ChainResult {

@@ -28,10 +28,11 @@ inline constexpr bool is_diagonal(int d) {
 }
 /// The direction of a one-cell step from a to b, or -1 when b is not one of a's 8 neighbours.
 inline int direction(Cell a, Cell b) {
+    // A table on (dx, dy) in {-1, 0, 1}^2 (kDx / kDy inverted): path metrics call this per step.
+    constexpr int kTable[9] = {5, 6, 7, 4, -1, 0, 3, 2, 1};
     const int dx = b.x - a.x, dy = b.y - a.y;
-    for (int d = 0; d < 8; ++d)
-        if (kDx[d] == dx && kDy[d] == dy) return d;
-    return -1;
+    if (static_cast<unsigned>(dx + 1) > 2u || static_cast<unsigned>(dy + 1) > 2u) return -1;
+    return kTable[(dy + 1) * 3 + (dx + 1)];
 }
 /// The turn between two directions in multiples of 45 degrees (0..4).
 inline constexpr int turn_steps(int d, int e) {

@@ -32,7 +32,9 @@
 // Unreachable goal: walk() returns false and leaves `out` empty, as the other walkers do.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "framework/random.hpp"
@@ -119,8 +121,33 @@ class SitpWalker {
     /// (and `out` empty) when g cannot be reached.
     bool angle_walk(const GridMap& map, Cell s, Cell g, Rng& rng, Path& out, bool corner_cutting = false) {
         return walk_.walk(map, s, g, rng, out, corner_cutting, [&](Cell c) {
-            return [&, c](Cell, int d) { return sitp_step_weight(kDx[d], kDy[d], g.x - c.x, g.y - c.y); };
+            const double* w = step_weights(map, g.x - c.x, g.y - c.y);
+            return [w, g, c](Cell, int d) {
+                return w != nullptr ? w[d] : sitp_step_weight(kDx[d], kDy[d], g.x - c.x, g.y - c.y);
+            };
         });
+    }
+
+    /// The eq. 7 weights of the eight steps from a cell whose segment end lies at (tx, ty) from it,
+    /// from a table filled as offsets are met (a logarithm, an arc cosine and two hypot calls per
+    /// neighbour were most of a walk's time); the values are sitp_step_weight's own, so the walks
+    /// draw exactly as without the table. Null when the map is too large for one (more than
+    /// kMaxTable entries): the caller then computes the weight.
+    const double* step_weights(const GridMap& map, int tx, int ty) {
+        const std::size_t w = 2 * static_cast<std::size_t>(map.width()) - 1;
+        const std::size_t h = 2 * static_cast<std::size_t>(map.height()) - 1;
+        if (w * h * 8 > kMaxTable) return nullptr;
+        if (table_w_ != w || table_h_ != h) {
+            table_.assign(w * h * 8, std::numeric_limits<double>::quiet_NaN());
+            table_w_ = w;
+            table_h_ = h;
+        }
+        const std::size_t at =
+            (static_cast<std::size_t>(ty + map.height() - 1) * w + static_cast<std::size_t>(tx + map.width() - 1)) * 8;
+        double* e = table_.data() + at;
+        if (std::isnan(e[0]))
+            for (int d = 0; d < 8; ++d) e[d] = sitp_step_weight(kDx[d], kDy[d], tx, ty);
+        return e;
     }
 
     /// The best of walks_per_segment angle walks from s to g by `score` (lower is better; ties:
@@ -177,9 +204,12 @@ class SitpWalker {
     }
 
   private:
+    static constexpr std::size_t kMaxTable = std::size_t{1} << 20;  // 8 MB: maps up to about 360 x 360
     TabooRouletteWalk walk_;
     Path trial_, half_;
     std::vector<std::int32_t> seen_;
+    std::vector<double> table_;  // step_weights' table: NaN where not yet met
+    std::size_t table_w_ = 0, table_h_ = 0;
 };
 
 }  // namespace pride::grid
