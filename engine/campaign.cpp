@@ -582,8 +582,9 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
     }
 #else
     require(launched_ranks() == 1, "pride bench",
-            "this pride was built without MPI (configure with -DPRIDE_MPI=ON); under mpirun every rank would "
-            "run the whole campaign");
+            "this pride was built without MPI, so under mpirun every rank would run the whole campaign; install "
+            "Open MPI (scripts/deps.sh), then configure afresh so that CMake finds it (rm build/CMakeCache.txt; "
+            "cmake -S . -B build -DPRIDE_MPI=ON) and rebuild");
 #endif
     Ledger ledger(c, store_path, static_cast<std::size_t>(jobs));
     return run_local(ledger, jobs, progress, stop, nullptr);
