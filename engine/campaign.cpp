@@ -353,7 +353,9 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
     const auto start = std::chrono::steady_clock::now();
     std::size_t in_flight = 0;  // handed out (here or to a rank), not finished
     bool exhausted = false;
-    std::deque<std::size_t> spare;  // claimed for the ranks, not yet given
+    std::deque<std::size_t> spare;   // claimed for the ranks, not yet given
+    std::vector<RunRecord> waiting;  // finished, not yet committed
+    auto oldest = std::chrono::steady_clock::now();
     try {
         for (;;) {
             std::vector<RunRecord> batch;
@@ -396,16 +398,26 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
                 finished.clear();
             }
             in_flight -= batch.size();
-            ledger.commit(batch);
-            if (progress && !batch.empty())
-                progress(ledger.in_store(), tasks.size(),
-                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            if (!batch.empty() && waiting.empty()) oldest = std::chrono::steady_clock::now();
+            for (auto& r : batch) waiting.push_back(std::move(r));
+            // A transaction per `jobs` runs, or per 20 ms, whichever comes first: short runs do not
+            // wait for one commit each, and a finished run is in the store within 20 ms.
+            const bool last_ones = exhausted && spare.empty() && in_flight == 0;
+            if (!waiting.empty() && (waiting.size() >= width || last_ones ||
+                                     std::chrono::steady_clock::now() - oldest >= std::chrono::milliseconds(20))) {
+                ledger.commit(waiting);
+                waiting.clear();
+                if (progress)
+                    progress(ledger.in_store(), tasks.size(),
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            }
             if (stop.signal && stop.signal->load() != 0) {
-                std::vector<RunRecord> last;  // finished while this thread committed
+                std::vector<RunRecord> last = std::move(waiting);  // finished, not yet committed
+                waiting.clear();
                 {
                     const std::lock_guard lock(mutex);
                     quit = true;  // the queued runs are not started
-                    last = std::move(finished);
+                    for (auto& r : finished) last.push_back(std::move(r));
                     finished.clear();
                 }
                 ledger.commit(last);
@@ -433,8 +445,8 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
     if (remotes) remotes->release_all();
     {
         // What finished before a failure is kept.
-        std::vector<RunRecord> last = std::move(finished);
-        ledger.commit(last);
+        for (auto& r : finished) waiting.push_back(std::move(r));
+        ledger.commit(waiting);
     }
     if (failure) std::rethrow_exception(failure);
     return ledger.finish();
@@ -573,7 +585,7 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
                 mpi_worker(c);
                 return {};
             }
-            Ledger ledger(c, store_path, static_cast<std::size_t>(jobs) + static_cast<std::size_t>(size - 1));
+            Ledger ledger(c, store_path, 4 * (static_cast<std::size_t>(jobs) + static_cast<std::size_t>(size - 1)));
             Remotes remotes(c, size);
             BenchSummary s = run_local(ledger, jobs, progress, stop, &remotes);
             s.ranks = size;
@@ -586,7 +598,9 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
             "Open MPI (scripts/deps.sh), then configure afresh so that CMake finds it (rm build/CMakeCache.txt; "
             "cmake -S . -B build -DPRIDE_MPI=ON) and rebuild");
 #endif
-    Ledger ledger(c, store_path, static_cast<std::size_t>(jobs));
+    // Claims in batches of 4 runs per thread: one transaction for several short runs, and still
+    // small enough for two processes on one store to share the work evenly.
+    Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs));
     return run_local(ledger, jobs, progress, stop, nullptr);
 }
 

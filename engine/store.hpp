@@ -154,6 +154,8 @@ class Store {
     }
     ~Store() {
         if (!db_) return;
+        sqlite3_finalize(insert_);
+        sqlite3_finalize(unclaim_);
         try {
             release();
         } catch (...) {  // a store that cannot be written keeps its claims; the next process takes them over
@@ -374,8 +376,22 @@ class Store {
         }
     }
 
+    /// A statement prepared once (the ones run per stored run), reset for its next use.
+    sqlite3_stmt* cached(sqlite3_stmt*& s, const char* sql) {
+        if (!s) s = prepare(sql);
+        sqlite3_reset(s);
+        sqlite3_clear_bindings(s);
+        return s;
+    }
+    void step_cached(sqlite3_stmt* s, const char* doing) {
+        const int rc = sqlite3_step(s);
+        sqlite3_reset(s);
+        if (rc != SQLITE_DONE) fail(doing);
+    }
+
     std::size_t insert_one(const RunRecord& r) {
-        sqlite3_stmt* s = prepare(
+        sqlite3_stmt* s = cached(
+            insert_,
             "INSERT OR IGNORE INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, "
             "optimum, solution, history, history_evaluations, target_hits) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
             "?, ?)");
@@ -394,17 +410,18 @@ class Store {
             sqlite3_bind_double(s, 9, *r.optimum);
         else
             sqlite3_bind_null(s, 9);
-        sqlite3_bind_text(s, 10, r.solution.c_str(), -1, SQLITE_TRANSIENT);
-        sqlite3_bind_text(s, 11, r.history.c_str(), -1, SQLITE_TRANSIENT);
-        sqlite3_bind_text(s, 12, r.history_evaluations.c_str(), -1, SQLITE_TRANSIENT);
-        sqlite3_bind_text(s, 13, r.target_hits.c_str(), -1, SQLITE_TRANSIENT);
-        step_done(s, "cannot write the store");
+        // SQLITE_STATIC: the record outlives the step (no copy of the long JSON texts).
+        sqlite3_bind_text(s, 10, r.solution.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 11, r.history.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 12, r.history_evaluations.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 13, r.target_hits.c_str(), -1, SQLITE_STATIC);
+        step_cached(s, "cannot write the store");
         const std::size_t added = static_cast<std::size_t>(sqlite3_changes(db_));
-        s = prepare("DELETE FROM claims WHERE problem = ? AND algorithm = ? AND seed = ?");
-        sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_TRANSIENT);
-        sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_TRANSIENT);
+        s = cached(unclaim_, "DELETE FROM claims WHERE problem = ? AND algorithm = ? AND seed = ?");
+        sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_STATIC);
         sqlite3_bind_int64(s, 3, r.seed);
-        step_done(s, "cannot write the store");
+        step_cached(s, "cannot write the store");
         return added;
     }
 
@@ -453,6 +470,8 @@ class Store {
     std::string path_;
     std::string token_;
     sqlite3* db_ = nullptr;
+    sqlite3_stmt* insert_ = nullptr;  // cached()
+    sqlite3_stmt* unclaim_ = nullptr;
     dev_t device_ = 0;
     ino_t inode_ = 0;
 };

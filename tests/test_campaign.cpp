@@ -1120,11 +1120,11 @@ TEST_CASE("bench: a read-only or full file system is an error naming the store; 
         CHECK(!fs::exists(dir.file("ro/new.sqlite")));
     }
     {
-        INFO("full: a 192 KiB tmpfs; the store, the message and a copy are taken before the namespace ends");
+        INFO("full: a 1 MiB tmpfs; the store, the message and a copy are taken before the namespace ends");
         fs::create_directories(dir.path() / "full");
         fs::create_directories(dir.path() / "copy");
         const std::string full = dir.file("full"), store = dir.file("full/s.sqlite");
-        const std::string script = "mount -t tmpfs -o size=192k none " + sh_quote(full) + " && " + sh_quote(PRIDE_EXE) +
+        const std::string script = "mount -t tmpfs -o size=1m none " + sh_quote(full) + " && " + sh_quote(PRIDE_EXE) +
                                    " bench " + sh_quote(config) + " --jobs 2 --out " + sh_quote(store) + " >" +
                                    sh_quote(dir.file("full-out")) + " 2>" + sh_quote(dir.file("full-err")) +
                                    "; echo $? >" + sh_quote(dir.file("full-rc")) + "; cp " + sh_quote(full) + "/* " +
