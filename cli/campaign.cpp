@@ -71,6 +71,7 @@ int bench_command(const BenchOptions& o, std::ostream& out) {
     catch_signals();
     const engine::BenchSummary s = engine::run_campaign(c, store, jobs, progress, stop);
     if (show_progress) fmt::print(stderr, "\n");
+    if (s.ranks == 0) return 0;  // another MPI rank than 0: rank 0 prints the summary
     std::string extra = s.ranks > 1 ? fmt::format("; {} MPI ranks", s.ranks) : "";
     if (s.others > 0)
         extra += fmt::format("; {} being run by another pride bench on this store, or failed there", s.others);

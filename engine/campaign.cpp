@@ -583,7 +583,9 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
         if (size > 1) {
             if (rank != 0) {
                 mpi_worker(c);
-                return {};
+                BenchSummary none;
+                none.ranks = 0;  // a worker rank: rank 0 reports
+                return none;
             }
             Ledger ledger(c, store_path, 4 * (static_cast<std::size_t>(jobs) + static_cast<std::size_t>(size - 1)));
             Remotes remotes(c, size);

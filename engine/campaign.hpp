@@ -86,7 +86,7 @@ struct BenchSummary {
     std::size_t already = 0;  // runs the store held before
     std::size_t total = 0;    // runs of the campaign
     std::size_t others = 0;   // runs left to another pride bench that is running them on the same store
-    int ranks = 1;            // MPI ranks (1: threads only)
+    int ranks = 1;            // MPI ranks (1: threads only; 0: an MPI rank other than 0, which reports nothing)
 };
 
 /// Called from the storing thread after each stored batch: (runs in the store, runs in all, seconds).
