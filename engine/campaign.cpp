@@ -207,32 +207,86 @@ class Ledger {
 };
 
 #ifdef PRIDE_HAVE_MPI
-void mpi_worker(const Campaign& c) {
+/// A rank other than 0: `jobs` threads, each slot asking rank 0 for a run and sending back its
+/// record (which asks for the next) until rank 0 answers "no more" (-1). Only this thread calls
+/// MPI.
+void mpi_worker(const Campaign& c, std::int64_t jobs) {
     const std::vector<Task> tasks = all_tasks(c);
-    std::string payload;  // empty: "ready"; "!..." a failure; else a record
-    for (;;) {
-        MPI_Send(payload.data(), static_cast<int>(payload.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
-        long long index = -1;
-        MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        if (index < 0) return;
-        try {
-            const Task& t = tasks[static_cast<std::size_t>(index)];
-            payload = serialise(run_one(*t.problem, *t.algorithm, c.budget, t.seed));
-        } catch (const std::exception& e) {
-            payload = std::string("!") + e.what();
+    std::mutex mutex;
+    std::condition_variable to_workers, to_main;
+    std::deque<long long> work;
+    std::deque<std::string> results;  // "!..." a failure; else a record
+    bool done = false;
+    auto worker = [&] {
+        for (;;) {
+            long long index = -1;
+            {
+                std::unique_lock lock(mutex);
+                to_workers.wait(lock, [&] { return done || !work.empty(); });
+                if (work.empty()) return;
+                index = work.front();
+                work.pop_front();
+            }
+            std::string payload;
+            try {
+                const Task& t = tasks[static_cast<std::size_t>(index)];
+                payload = serialise(run_one(*t.problem, *t.algorithm, c.budget, t.seed));
+            } catch (const std::exception& e) {
+                payload = std::string("!") + e.what();
+            }
+            {
+                const std::lock_guard lock(mutex);
+                results.push_back(std::move(payload));
+            }
+            to_main.notify_one();
         }
+    };
+    std::vector<std::thread> pool;
+    for (std::int64_t j = 0; j < jobs; ++j) pool.emplace_back(worker);
+    std::int64_t open = jobs;  // slots that have not been told "no more"
+    for (std::int64_t j = 0; j < jobs; ++j) MPI_Send(nullptr, 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+    while (open > 0) {
+        for (int flag = 1; flag;) {
+            MPI_Iprobe(0, kTagTask, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
+            if (!flag) break;
+            long long index = -1;
+            MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            if (index < 0) {
+                --open;
+                continue;
+            }
+            {
+                const std::lock_guard lock(mutex);
+                work.push_back(index);
+            }
+            to_workers.notify_one();
+        }
+        std::deque<std::string> ready;
+        {
+            std::unique_lock lock(mutex);
+            to_main.wait_for(lock, std::chrono::milliseconds(1), [&] { return !results.empty(); });
+            ready.swap(results);
+        }
+        for (const auto& payload : ready)
+            MPI_Send(payload.data(), static_cast<int>(payload.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
     }
+    {
+        const std::lock_guard lock(mutex);
+        done = true;
+    }
+    to_workers.notify_all();
+    for (auto& t : pool) t.join();
 }
 
-/// Rank 0's view of the other ranks: each asks for a run, gets one, and sends its record back.
+/// Rank 0's view of the other ranks: each has `jobs` slots; a slot asks for a run, gets one, and
+/// sends its record back, which asks for the next.
 class Remotes {
   public:
-    Remotes(const Campaign&, int size) : active_(size - 1), idle_(static_cast<std::size_t>(size), false) {}
-    bool active() const { return active_ > 0; }
-    std::size_t running() const { return running_; }
+    Remotes(int size, std::int64_t jobs)
+        : active_(static_cast<std::int64_t>(size - 1) * jobs), idle_(static_cast<std::size_t>(size), 0) {}
 
-    /// Reads the messages waiting; the records go to `finished`, the ranks asking for work to the
-    /// idle list. A failure on a rank is thrown.
+    /// Reads the messages waiting; the records go to `finished`, the slots asking for work to the
+    /// idle counts. A failure on a rank is thrown.
     void poll(std::vector<RunRecord>& finished) {
         for (;;) {
             int flag = 0;
@@ -244,33 +298,34 @@ class Remotes {
             std::string payload(static_cast<std::size_t>(length), '\0');
             MPI_Recv(payload.data(), length, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD,
                      MPI_STATUS_IGNORE);
-            idle_[static_cast<std::size_t>(status.MPI_SOURCE)] = true;
+            ++idle_[static_cast<std::size_t>(status.MPI_SOURCE)];
             if (payload.empty()) continue;
-            --running_;
             if (payload.front() == '!') throw InputError(payload.substr(1));
             finished.push_back(deserialise(payload));
         }
     }
-    /// The number of ranks waiting for a run.
-    std::size_t idle() const { return static_cast<std::size_t>(std::count(idle_.begin(), idle_.end(), true)); }
+    /// The number of slots waiting for a run.
+    std::size_t idle() const {
+        std::size_t n = 0;
+        for (const std::int64_t k : idle_) n += static_cast<std::size_t>(k);
+        return n;
+    }
     void give(long long task) {
         for (std::size_t r = 1; r < idle_.size(); ++r)
-            if (idle_[r]) {
+            if (idle_[r] > 0) {
                 MPI_Send(&task, 1, MPI_LONG_LONG, static_cast<int>(r), kTagTask, MPI_COMM_WORLD);
-                idle_[r] = false;
-                ++running_;
+                --idle_[r];
                 return;
             }
     }
-    /// Sends "no more" to every rank, waiting for the ones still running (their records dropped).
+    /// Sends "no more" to every slot, waiting for the ones still running (their records dropped).
     void release_all() {
         std::vector<RunRecord> ignored;
         while (active_ > 0) {
             for (std::size_t r = 1; r < idle_.size(); ++r)
-                if (idle_[r]) {
+                for (; idle_[r] > 0; --idle_[r]) {
                     const long long none = -1;
                     MPI_Send(&none, 1, MPI_LONG_LONG, static_cast<int>(r), kTagTask, MPI_COMM_WORLD);
-                    idle_[r] = false;
                     --active_;
                 }
             if (active_ == 0) break;
@@ -283,15 +338,12 @@ class Remotes {
     }
 
   private:
-    int active_;
-    std::vector<bool> idle_;
-    std::size_t running_ = 0;
+    std::int64_t active_;
+    std::vector<std::int64_t> idle_;
 };
 #else
 class Remotes {
   public:
-    bool active() const { return false; }
-    std::size_t running() const { return 0; }
     void poll(std::vector<RunRecord>&) {}
     std::size_t idle() const { return 0; }
     void give(long long) {}
@@ -582,13 +634,13 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
         MPI_Comm_size(MPI_COMM_WORLD, &size);
         if (size > 1) {
             if (rank != 0) {
-                mpi_worker(c);
+                mpi_worker(c, jobs);
                 BenchSummary none;
                 none.ranks = 0;  // a worker rank: rank 0 reports
                 return none;
             }
-            Ledger ledger(c, store_path, 4 * (static_cast<std::size_t>(jobs) + static_cast<std::size_t>(size - 1)));
-            Remotes remotes(c, size);
+            Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size));
+            Remotes remotes(size, jobs);
             BenchSummary s = run_local(ledger, jobs, progress, stop, &remotes);
             s.ranks = size;
             return s;
