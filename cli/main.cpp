@@ -155,7 +155,8 @@ int run_main(int argc, char** argv) {
     auto* bench_cmd = app.add_subcommand("bench", "run a campaign file: every (problem, algorithm, seed), resumable");
     bench_cmd->add_option("config", bench.config, "the campaign file (TOML)")->required();
     bench_cmd->add_option("--jobs", bench.jobs, "parallel runs (default: the number of cores)");
-    bench_cmd->add_option("--out", bench.out, "the SQLite store (default: CONFIG with .sqlite)");
+    bench_cmd->add_option("--out", bench.out,
+                          "the SQLite store (default: the name of CONFIG with .sqlite, in the working folder)");
 
     ReportOptions report;
     auto* report_cmd = app.add_subcommand("report", "comparison tables and statistics from a campaign store");

@@ -1074,7 +1074,8 @@ TEST_CASE("bench: a store of a campaign that stored no run takes the corrected c
         REQUIRE(sqlite3_exec(db, "DELETE FROM runs", nullptr, nullptr, nullptr) == SQLITE_OK);
         sqlite3_close(db);
     }
-    const std::string corrected = dir.write("d.toml", replace(kSmallContinuous, "evaluations = 2000", "evaluations = 2001"));
+    const std::string corrected =
+        dir.write("d.toml", replace(kSmallContinuous, "evaluations = 2000", "evaluations = 2001"));
     check_summary(bench_ok({"bench", corrected, "--jobs", "1", "--out", store}), kSmallContinuousRuns, 0,
                   kSmallContinuousRuns, store);
     // Once it holds runs, another campaign is refused again.
@@ -1108,10 +1109,11 @@ TEST_CASE("bench: a read-only or full file system is an error naming the store; 
         (void)entries;
         const std::string ro = dir.file("ro");
         for (const std::string& target : {store, dir.file("ro/new.sqlite")}) {
-            const std::string script = "mount --bind " + sh_quote(ro) + " " + sh_quote(ro) + " && mount -o remount,bind,ro " +
-                                       sh_quote(ro) + " && " + sh_quote(PRIDE_EXE) + " bench " + sh_quote(config) +
-                                       " --jobs 1 --out " + sh_quote(target) + " >" + sh_quote(dir.file("ro-out")) +
-                                       " 2>" + sh_quote(dir.file("ro-err")) + "; echo $? >" + sh_quote(dir.file("ro-rc"));
+            const std::string script = "mount --bind " + sh_quote(ro) + " " + sh_quote(ro) +
+                                       " && mount -o remount,bind,ro " + sh_quote(ro) + " && " + sh_quote(PRIDE_EXE) +
+                                       " bench " + sh_quote(config) + " --jobs 1 --out " + sh_quote(target) + " >" +
+                                       sh_quote(dir.file("ro-out")) + " 2>" + sh_quote(dir.file("ro-err")) +
+                                       "; echo $? >" + sh_quote(dir.file("ro-rc"));
             REQUIRE(std::system(("unshare -rm sh -c " + sh_quote(script)).c_str()) == 0);
             const Outcome r{std::stoi(slurp(dir.file("ro-rc"))), slurp(dir.file("ro-out")), slurp(dir.file("ro-err"))};
             check_input_error(r, {target, "store", "Read-only file system"});
@@ -1130,7 +1132,8 @@ TEST_CASE("bench: a read-only or full file system is an error naming the store; 
                                    "; echo $? >" + sh_quote(dir.file("full-rc")) + "; cp " + sh_quote(full) + "/* " +
                                    sh_quote(dir.file("copy"));
         REQUIRE(std::system(("unshare -rm sh -c " + sh_quote(script)).c_str()) == 0);
-        const Outcome r{std::stoi(slurp(dir.file("full-rc"))), slurp(dir.file("full-out")), slurp(dir.file("full-err"))};
+        const Outcome r{std::stoi(slurp(dir.file("full-rc"))), slurp(dir.file("full-out")),
+                        slurp(dir.file("full-err"))};
         check_input_error(r, {store, "full", "runs are stored and kept", "resume"});
         // What the message says is stored is there, intact.
         const std::string copy = dir.file("copy/s.sqlite");
