@@ -1,10 +1,13 @@
 #include "cli/campaign.hpp"
 
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <ostream>
 #include <thread>
@@ -13,26 +16,67 @@
 #include "engine/campaign_toml.hpp"
 
 namespace pride::cli {
+namespace {
+
+std::atomic<int> stop_signal{0};  // lock-free: written by the signal handler
+
+extern "C" void on_signal(int signal) {
+    stop_signal.store(signal);
+}
+
+/// SIGINT and SIGTERM stop the campaign between commits (run_campaign polls the flag); a second
+/// one kills the process at once (SA_RESETHAND).
+void catch_signals() {
+    struct sigaction action {};
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
+}  // namespace
 
 int bench_command(const BenchOptions& o, std::ostream& out) {
     const engine::Campaign c = engine::read_campaign(o.config);
+    // By default in the working folder, not beside the campaign file (which may be in a
+    // checkout or a read-only place); the summary line says where.
     const std::string store =
-        o.out.empty() ? std::filesystem::path(o.config).replace_extension(".sqlite").string() : o.out;
-    const std::int64_t jobs = o.jobs.value_or(std::max(1u, std::thread::hardware_concurrency()));
+        o.out.empty() ? std::filesystem::path(o.config).filename().replace_extension(".sqlite").string() : o.out;
+    // Under mpirun every rank is a process of its own: one thread each unless --jobs says more.
+    const std::int64_t jobs =
+        o.jobs.value_or(engine::launched_ranks() > 1 ? 1 : std::max(1u, std::thread::hardware_concurrency()));
     const bool show_progress = isatty(STDERR_FILENO) != 0;
     engine::Progress progress;
     if (show_progress)
         progress = [](std::size_t done, std::size_t total, double seconds) {
             fmt::print(stderr, "\r{}/{} runs, {:.0f} s elapsed   ", done, total, seconds);
         };
-    const engine::BenchSummary s = engine::run_campaign(c, store, jobs, progress);
+    engine::Stop stop;
+    stop.signal = &stop_signal;
+    // The store is closed when this is called: the process ends here, abandoning the runs in
+    // progress (nothing of theirs is in the store), with 128 + the signal as a shell reports it.
+    stop.on_stop = [&](const engine::Interrupted& i) {
+        if (show_progress) fmt::print(stderr, "\n");
+        std::fflush(stdout);
+        fmt::print(stderr,
+                   "pride: interrupted by {}: {} of {} runs are stored in {}; run the same command again to resume\n",
+                   i.signal == SIGINT    ? "SIGINT"
+                   : i.signal == SIGTERM ? "SIGTERM"
+                                         : "a signal",
+                   i.in_store, i.total, store);
+        std::fflush(stderr);
+        std::_Exit(128 + i.signal);
+    };
+    catch_signals();
+    const engine::BenchSummary s = engine::run_campaign(c, store, jobs, progress, stop);
     if (show_progress) fmt::print(stderr, "\n");
-    if (s.ranks > 1)
-        out << fmt::format("{}: {} runs stored in {} ({} were there already, {} in all; {} MPI ranks)\n", c.name,
-                           s.stored, store, s.already, s.total, s.ranks);
-    else
-        out << fmt::format("{}: {} runs stored in {} ({} were there already, {} in all)\n", c.name, s.stored, store,
-                           s.already, s.total);
+    if (s.ranks == 0) return 0;  // another MPI rank than 0: rank 0 prints the summary
+    std::string extra = s.ranks > 1 ? fmt::format("; {} MPI ranks", s.ranks) : "";
+    if (s.others > 0)
+        extra += fmt::format("; {} being run by another pride bench on this store, or failed there", s.others);
+    out << fmt::format("{}: {} runs stored in {} ({} were there already, {} in all{})\n", c.name, s.stored, store,
+                       s.already, s.total, extra);
     return 0;
 }
 

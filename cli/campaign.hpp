@@ -11,7 +11,7 @@ namespace pride::cli {
 struct BenchOptions {
     std::string config;
     std::optional<std::int64_t> jobs;  // default: the number of cores
-    std::string out;                   // default: CONFIG with the extension .sqlite
+    std::string out;                   // default: the campaign file's name with .sqlite, in the working folder
 };
 int bench_command(const BenchOptions& o, std::ostream& out);
 

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include <unistd.h>
+
 #include "framework/error.hpp"
 
 namespace pride::cli {
@@ -133,15 +135,40 @@ void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal
 void write_pictures(
     const std::vector<std::pair<std::string, PictureFormat>>& pictures,
     const std::function<void(const std::string& file, const std::string& shown_as, PictureFormat)>& draw_one) {
+    namespace fs = std::filesystem;
     std::error_code ec;
+    // Everything checked before anything is written: one file named twice, or a folder.
+    for (std::size_t i = 0; i < pictures.size(); ++i) {
+        const std::string& file = pictures[i].first;
+        if (fs::is_directory(file, ec)) throw InputError(file + ": cannot write the picture: it is a folder");
+        for (std::size_t j = 0; j < i; ++j) {
+            const fs::path a = fs::weakly_canonical(file, ec), b = fs::weakly_canonical(pictures[j].first, ec);
+            if (a == b || file == pictures[j].first)
+                throw InputError(file + ": named for two pictures (--svg and --png); give each its own file");
+        }
+    }
+    // A new path or a regular file is written through a temporary file renamed over it, so that a
+    // failure leaves nothing half-written; anything else (a device such as /dev/stdout or
+    // /dev/full, a pipe, a symbolic link) is written directly, since a rename would replace it.
+    std::vector<bool> direct(pictures.size());
+    for (std::size_t i = 0; i < pictures.size(); ++i) {
+        const fs::file_status st = fs::symlink_status(pictures[i].first, ec);
+        direct[i] = !(st.type() == fs::file_type::not_found || st.type() == fs::file_type::regular);
+    }
+    const std::string suffix = ".part-" + std::to_string(::getpid());
     try {
-        for (const auto& [file, format] : pictures) draw_one(file + ".part", file, format);
-        for (const auto& [file, format] : pictures) {
-            std::filesystem::rename(file + ".part", file, ec);
-            if (ec) throw InputError(file + ": cannot write the picture: " + ec.message());
+        for (std::size_t i = 0; i < pictures.size(); ++i)
+            if (!direct[i]) draw_one(pictures[i].first + suffix, pictures[i].first, pictures[i].second);
+        for (std::size_t i = 0; i < pictures.size(); ++i)
+            if (direct[i]) draw_one(pictures[i].first, pictures[i].first, pictures[i].second);
+        for (std::size_t i = 0; i < pictures.size(); ++i) {
+            if (direct[i]) continue;
+            fs::rename(pictures[i].first + suffix, pictures[i].first, ec);
+            if (ec) throw InputError(pictures[i].first + ": cannot write the picture: " + ec.message());
         }
     } catch (...) {
-        for (const auto& [file, format] : pictures) std::filesystem::remove(file + ".part", ec);
+        for (std::size_t i = 0; i < pictures.size(); ++i)
+            if (!direct[i]) fs::remove(pictures[i].first + suffix, ec);
         throw;
     }
 }

@@ -26,6 +26,8 @@ void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal
 
 /// Draws every (file, format) with `draw_one(temporary, file, format)` to a temporary name beside
 /// the file and renames them all only when all succeeded, so that a failure leaves no picture.
+/// Files that are neither regular nor new (devices, pipes, symbolic links) are written directly.
+/// One file named twice, or a folder, is refused before anything is drawn.
 void write_pictures(
     const std::vector<std::pair<std::string, PictureFormat>>& pictures,
     const std::function<void(const std::string& file, const std::string& shown_as, PictureFormat)>& draw_one);

@@ -3,8 +3,13 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "cli/campaign.hpp"
@@ -18,10 +23,50 @@
 #include "engine/registry.hpp"
 #include "framework/error.hpp"
 
+namespace {
+
+/// Standard output flushed and checked: a full disk or a closed stream is a failure (exit 2, one
+/// line), never a silent success with lost output.
+int finish_output(int status) {
+    std::cout.flush();
+    const bool failed = !std::cout.good() || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+    if (failed) {
+        const int e = errno;
+        fmt::print(stderr, "pride: cannot write to standard output: {}\n", e != 0 ? std::strerror(e) : "write error");
+        return 2;
+    }
+    return status;
+}
+
+}  // namespace
+
+int run_main(int argc, char** argv);
+
 int main(int argc, char** argv) {
+    // A closed standard output (`>&-`) is refused before anything is done: a file opened later
+    // would get its descriptor and receive what is printed.
+    if (fcntl(STDOUT_FILENO, F_GETFD) == -1 && errno == EBADF) {
+        fmt::print(stderr, "pride: cannot write to standard output: it is closed\n");
+        return 2;
+    }
+    if (fcntl(STDERR_FILENO, F_GETFD) == -1 && errno == EBADF && open("/dev/null", O_WRONLY) != STDERR_FILENO)
+        return 2;  // descriptor 2 kept taken for the same reason
+    int status = 0;
+    try {
+        status = run_main(argc, argv);
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "pride: internal error: {}\n", e.what());
+        status = 1;
+    }
+    errno = 0;
+    return finish_output(status);
+}
+
+int run_main(int argc, char** argv) {
     using namespace pride::cli;
     CLI::App app{"pride: metaheuristic optimisation with pluggable problems"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("pride ") + PRIDE_VERSION, "print the version and exit");
 
     // The algorithm names of the help texts, from the registry.
     std::string box_names, all_names;
@@ -116,7 +161,8 @@ int main(int argc, char** argv) {
     auto* bench_cmd = app.add_subcommand("bench", "run a campaign file: every (problem, algorithm, seed), resumable");
     bench_cmd->add_option("config", bench.config, "the campaign file (TOML)")->required();
     bench_cmd->add_option("--jobs", bench.jobs, "parallel runs (default: the number of cores)");
-    bench_cmd->add_option("--out", bench.out, "the SQLite store (default: CONFIG with .sqlite)");
+    bench_cmd->add_option("--out", bench.out,
+                          "the SQLite store (default: the name of CONFIG with .sqlite, in the working folder)");
 
     ReportOptions report;
     auto* report_cmd = app.add_subcommand("report", "comparison tables and statistics from a campaign store");
@@ -146,6 +192,10 @@ int main(int argc, char** argv) {
         const auto subcommands = app.get_subcommands([](const CLI::App*) { return true; });
         const bool known = argc > 1 && std::any_of(subcommands.begin(), subcommands.end(),
                                                    [&](const CLI::App* s) { return s->get_name() == argv[1]; });
+        if (argc == 2 && std::string(argv[1]) == "--version") {  // before the check for a subcommand
+            std::cout << "pride " << PRIDE_VERSION << "\n";
+            return 0;
+        }
         if (argc > 1 && argv[1][0] != '-' && !known)
             throw pride::InputError(
                 std::string("unknown subcommand '") + argv[1] +

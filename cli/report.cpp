@@ -4,12 +4,49 @@
 #include <filesystem>
 #include <fstream>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "engine/report/report.hpp"
 #include "framework/error.hpp"
 
 namespace pride::cli {
 namespace {
+
+/// `text` as one word for /bin/sh.
+std::string shell_quote(const std::string& text) {
+    std::string s = "'";
+    for (const char c : text) s += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return s + "'";
+}
+
+/// Runs scripts/plot_campaign.py with Debian's python3 (the one python3-matplotlib serves), and
+/// with the campaign's precisions scripts/plot_ecdf.py on the ECDF curves computed here
+/// (engine/report/coco.hpp), written to DIR/ecdf.json, so the plots and the tables share one
+/// definition.
+/// Runs `python script args...`, its standard error kept aside: nothing of it is shown on
+/// success (library warnings), its last line on failure (the scripts print one line).
+void run_script(const std::string& python, const std::string& script, const std::vector<std::string>& args,
+                const std::string& folder) {
+    const std::string errors = (std::filesystem::path(folder) / ".plot-errors.txt").string();
+    std::string command = "PYTHONWARNINGS=ignore MPLBACKEND=Agg '" + python + "' '" + script + "'";
+    for (const auto& a : args) command += " " + shell_quote(a);
+    command += " 2>" + shell_quote(errors);
+    const int status = std::system(command.c_str());
+    std::string last;
+    {
+        std::ifstream f(errors);
+        for (std::string line; std::getline(f, line);)
+            if (!line.empty()) last = line;
+    }
+    std::error_code ec;
+    std::filesystem::remove(errors, ec);
+    if (status != 0) {
+        const std::string name = std::filesystem::path(script).filename().string();
+        if (last.empty()) throw InputError("--plots", name + " failed");
+        throw InputError(last.rfind(name, 0) == 0 ? "--plots: " + last : last);
+    }
+}
 
 /// Runs scripts/plot_campaign.py with Debian's python3 (the one python3-matplotlib serves), and
 /// with the campaign's precisions scripts/plot_ecdf.py on the ECDF curves computed here
@@ -25,8 +62,7 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
     const std::string check = "'" + python + "' -c 'import matplotlib' >/dev/null 2>&1";
     require(std::system(check.c_str()) == 0, "--plots",
             "needs python3 with matplotlib (apt-get install python3-matplotlib)");
-    const std::string command = "'" + python + "' '" + script + "' '" + store + "' '" + folder + "'";
-    require(std::system(command.c_str()) == 0, "--plots", "the plotting script failed (see above)");
+    run_script(python, script, {store, folder}, folder);
     if (!data.coco || data.coco->curves.empty()) return;
     const std::string ecdf_script = std::string(PRIDE_SCRIPTS_DIR) + "/plot_ecdf.py";
     require(std::filesystem::exists(ecdf_script), "--plots", ecdf_script + " is missing");
@@ -34,10 +70,10 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
     {
         std::ofstream f(json);
         f << report::coco::ecdf_json(data.campaign, *data.coco);
-        require(f.good(), "--plots", json + ": cannot write the file");
+        f.close();
+        require(!f.fail(), "--plots", json + ": cannot write the file");
     }
-    const std::string ecdf = "'" + python + "' '" + ecdf_script + "' '" + json + "' '" + folder + "'";
-    require(std::system(ecdf.c_str()) == 0, "--plots", "the ECDF plotting script failed (see above)");
+    run_script(python, ecdf_script, {json, folder}, folder);
 }
 
 }  // namespace

@@ -111,66 +111,398 @@ RunRecord deserialise(const std::string& text) {
     return r;
 }
 
-BenchSummary bench_mpi(const Campaign& c, const std::string& store_path, int rank, int size) {
-    const std::vector<Task> tasks = all_tasks(c);
-    if (rank != 0) {
-        std::string payload;  // empty: "ready"; "!..." a failure; else a record
+#endif
+
+/// The process that owns the store: the runs still to take (claimed from the store in batches,
+/// so that other processes on the same store take others), and the commits of finished ones.
+class Ledger {
+  public:
+    Ledger(const Campaign& c, const std::string& path, std::size_t batch)
+        : tasks_(all_tasks(c)), budget_(c.budget), batch_(std::max<std::size_t>(batch, 1)) {
+        store_.emplace(path);
+        store_->claim(c);
+        const auto done = store_->done();
+        already_ = done.size();
+        for (std::size_t i = 0; i < tasks_.size(); ++i) {
+            RunKey key{tasks_[i].problem->id, tasks_[i].algorithm->id, tasks_[i].seed};
+            if (done.count(key)) continue;
+            todo_.push_back(i);
+            keys_.push_back(std::move(key));
+        }
+    }
+
+    const std::vector<Task>& tasks() const { return tasks_; }
+    const Budget& budget() const { return budget_; }
+    std::size_t todo() const { return todo_.size(); }
+    std::size_t in_store() const { return already_ + stored_; }
+
+    /// The next runs to do (task numbers), claimed in the store; empty when none is left that
+    /// no live process holds.
+    std::vector<std::size_t> take() {
+        try {
+            return take_from_store();
+        } catch (const InputError& e) {
+            throw with_count(e);
+        }
+    }
+
+    void commit(const std::vector<RunRecord>& records) {
+        try {
+            stored_ += store_->insert(records);
+        } catch (const InputError& e) {
+            throw with_count(e);
+        }
+    }
+
+  private:
+    /// A store error with what the store holds and how to go on.
+    InputError with_count(const InputError& e) const {
+        return InputError(fmt::format("{} ({} runs are stored and kept; run the same command again to resume)",
+                                      e.what(), in_store()));
+    }
+
+    std::vector<std::size_t> take_from_store() {
         for (;;) {
-            MPI_Send(payload.data(), static_cast<int>(payload.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+            std::vector<std::size_t> out;
+            for (const std::size_t at : store_->take(keys_, cursor_, batch_, busy_)) out.push_back(todo_[at]);
+            if (!out.empty() || cursor_ < keys_.size()) return out;
+            // Everything looked at: the runs other processes hold are retried once such a
+            // process has died (its claims dropped).
+            if (busy_.empty() || !store_->drop_dead_claims()) return out;
+            std::vector<std::size_t> todo;
+            std::vector<RunKey> keys;
+            for (const std::size_t at : busy_) {
+                todo.push_back(todo_[at]);
+                keys.push_back(keys_[at]);
+            }
+            todo_ = std::move(todo);
+            keys_ = std::move(keys);
+            busy_.clear();
+            cursor_ = 0;
+        }
+    }
+
+  public:
+    /// The summary once every run is done; throws when the store's file went away meanwhile.
+    BenchSummary finish() {
+        store_->check_same_file();
+        const std::size_t now = store_->count();
+        const std::size_t others = now < tasks_.size() ? tasks_.size() - now : 0;
+        return {stored_, already_, tasks_.size(), others, 1};
+    }
+
+    /// Drops the claims of the runs not finished, and closes the store.
+    void close() { store_.reset(); }
+
+  private:
+    std::vector<Task> tasks_;
+    Budget budget_;
+    std::optional<Store> store_;
+    std::size_t batch_;
+    std::size_t already_ = 0, stored_ = 0;
+    std::vector<std::size_t> todo_;  // task numbers not stored when this process started
+    std::vector<RunKey> keys_;       // their keys
+    std::size_t cursor_ = 0;         // keys_[cursor_...] not looked at yet
+    std::vector<std::size_t> busy_;  // positions in keys_ another process held
+};
+
+#ifdef PRIDE_HAVE_MPI
+/// A rank other than 0: `jobs` threads, each slot asking rank 0 for a run and sending back its
+/// record (which asks for the next) until rank 0 answers "no more" (-1). Only this thread calls
+/// MPI.
+void mpi_worker(const Campaign& c, std::int64_t jobs) {
+    const std::vector<Task> tasks = all_tasks(c);
+    std::mutex mutex;
+    std::condition_variable to_workers, to_main;
+    std::deque<long long> work;
+    std::deque<std::string> results;  // "!..." a failure; else a record
+    bool done = false;
+    auto worker = [&] {
+        for (;;) {
             long long index = -1;
-            MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-            if (index < 0) return {};
+            {
+                std::unique_lock lock(mutex);
+                to_workers.wait(lock, [&] { return done || !work.empty(); });
+                if (work.empty()) return;
+                index = work.front();
+                work.pop_front();
+            }
+            std::string payload;
             try {
                 const Task& t = tasks[static_cast<std::size_t>(index)];
                 payload = serialise(run_one(*t.problem, *t.algorithm, c.budget, t.seed));
             } catch (const std::exception& e) {
                 payload = std::string("!") + e.what();
             }
-        }
-    }
-    std::exception_ptr failure;
-    std::vector<long long> pending;
-    std::size_t already = 0, stored = 0;
-    std::optional<Store> store;
-    try {
-        store.emplace(store_path);
-        store->claim(c);
-        const auto done = store->done();
-        already = done.size();
-        for (std::size_t i = tasks.size(); i-- > 0;)
-            if (!done.count({tasks[i].problem->id, tasks[i].algorithm->id, tasks[i].seed}))
-                pending.push_back(static_cast<long long>(i));  // taken from the back: in task order
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    for (int active = size - 1; active > 0;) {
-        MPI_Status status;
-        MPI_Probe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &status);
-        int length = 0;
-        MPI_Get_count(&status, MPI_CHAR, &length);
-        std::string payload(static_cast<std::size_t>(length), '\0');
-        MPI_Recv(payload.data(), length, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        if (!payload.empty() && !failure) {
-            try {
-                if (payload.front() == '!') throw InputError(payload.substr(1));
-                store->insert(deserialise(payload));
-                ++stored;
-            } catch (...) {
-                failure = std::current_exception();
+            {
+                const std::lock_guard lock(mutex);
+                results.push_back(std::move(payload));
             }
+            to_main.notify_one();
         }
-        long long next = -1;
-        if (!failure && !pending.empty()) {
-            next = pending.back();
-            pending.pop_back();
+    };
+    std::vector<std::thread> pool;
+    for (std::int64_t j = 0; j < jobs; ++j) pool.emplace_back(worker);
+    std::int64_t open = jobs;  // slots that have not been told "no more"
+    for (std::int64_t j = 0; j < jobs; ++j) MPI_Send(nullptr, 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+    while (open > 0) {
+        for (int flag = 1; flag;) {
+            MPI_Iprobe(0, kTagTask, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
+            if (!flag) break;
+            long long index = -1;
+            MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            if (index < 0) {
+                --open;
+                continue;
+            }
+            {
+                const std::lock_guard lock(mutex);
+                work.push_back(index);
+            }
+            to_workers.notify_one();
         }
-        MPI_Send(&next, 1, MPI_LONG_LONG, status.MPI_SOURCE, kTagTask, MPI_COMM_WORLD);
-        if (next < 0) --active;
+        std::deque<std::string> ready;
+        {
+            std::unique_lock lock(mutex);
+            to_main.wait_for(lock, std::chrono::milliseconds(1), [&] { return !results.empty(); });
+            ready.swap(results);
+        }
+        for (const auto& payload : ready)
+            MPI_Send(payload.data(), static_cast<int>(payload.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+    }
+    {
+        const std::lock_guard lock(mutex);
+        done = true;
+    }
+    to_workers.notify_all();
+    for (auto& t : pool) t.join();
+}
+
+/// Rank 0's view of the other ranks: each has `jobs` slots; a slot asks for a run, gets one, and
+/// sends its record back, which asks for the next.
+class Remotes {
+  public:
+    Remotes(int size, std::int64_t jobs)
+        : active_(static_cast<std::int64_t>(size - 1) * jobs), idle_(static_cast<std::size_t>(size), 0) {}
+
+    /// Reads the messages waiting; the records go to `finished`, the slots asking for work to the
+    /// idle counts. A failure on a rank is thrown.
+    void poll(std::vector<RunRecord>& finished) {
+        for (;;) {
+            int flag = 0;
+            MPI_Status status;
+            MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &status);
+            if (!flag) return;
+            int length = 0;
+            MPI_Get_count(&status, MPI_CHAR, &length);
+            std::string payload(static_cast<std::size_t>(length), '\0');
+            MPI_Recv(payload.data(), length, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD,
+                     MPI_STATUS_IGNORE);
+            ++idle_[static_cast<std::size_t>(status.MPI_SOURCE)];
+            if (payload.empty()) continue;
+            if (payload.front() == '!') throw InputError(payload.substr(1));
+            finished.push_back(deserialise(payload));
+        }
+    }
+    /// The number of slots waiting for a run.
+    std::size_t idle() const {
+        std::size_t n = 0;
+        for (const std::int64_t k : idle_) n += static_cast<std::size_t>(k);
+        return n;
+    }
+    void give(long long task) {
+        for (std::size_t r = 1; r < idle_.size(); ++r)
+            if (idle_[r] > 0) {
+                MPI_Send(&task, 1, MPI_LONG_LONG, static_cast<int>(r), kTagTask, MPI_COMM_WORLD);
+                --idle_[r];
+                return;
+            }
+    }
+    /// Sends "no more" to every slot, waiting for the ones still running (their records dropped).
+    void release_all() {
+        std::vector<RunRecord> ignored;
+        while (active_ > 0) {
+            for (std::size_t r = 1; r < idle_.size(); ++r)
+                for (; idle_[r] > 0; --idle_[r]) {
+                    const long long none = -1;
+                    MPI_Send(&none, 1, MPI_LONG_LONG, static_cast<int>(r), kTagTask, MPI_COMM_WORLD);
+                    --active_;
+                }
+            if (active_ == 0) break;
+            try {
+                poll(ignored);
+            } catch (...) {
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+    }
+
+  private:
+    std::int64_t active_;
+    std::vector<std::int64_t> idle_;
+};
+#else
+class Remotes {
+  public:
+    void poll(std::vector<RunRecord>&) {}
+    std::size_t idle() const { return 0; }
+    void give(long long) {}
+    void release_all() {}
+};
+#endif
+
+/// Runs the ledger's runs on `jobs` threads of this process (and the other MPI ranks, when
+/// `remotes`), committing what finishes in batches from this thread alone, so that the commits
+/// never hold up the runs.
+BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progress, const Stop& stop,
+                       Remotes* remotes) {
+    const std::vector<Task>& tasks = ledger.tasks();
+    const Budget budget = ledger.budget();
+    std::mutex mutex;
+    std::condition_variable to_workers, to_main;
+    std::deque<std::size_t> work;  // claimed, not started
+    bool no_more = false, quit = false;
+    std::vector<RunRecord> finished;
+    std::exception_ptr failure;
+    const std::size_t width = static_cast<std::size_t>(jobs);
+    auto worker = [&] {
+        for (;;) {
+            std::size_t i = 0;
+            {
+                std::unique_lock lock(mutex);
+                to_workers.wait(lock, [&] { return quit || !work.empty() || no_more; });
+                if (quit || work.empty()) return;
+                i = work.front();
+                work.pop_front();
+            }
+            to_main.notify_one();  // room in the queue: the main thread claims more
+            try {
+                RunRecord r = run_one(*tasks[i].problem, *tasks[i].algorithm, budget, tasks[i].seed);
+                const std::lock_guard lock(mutex);
+                finished.push_back(std::move(r));
+            } catch (...) {
+                const std::lock_guard lock(mutex);
+                if (!failure) failure = std::current_exception();
+                quit = true;
+            }
+            to_main.notify_one();
+            to_workers.notify_all();
+        }
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t j = 0; j < std::min(width, ledger.todo()); ++j) pool.emplace_back(worker);
+    const auto shut_down = [&] {
+        {
+            const std::lock_guard lock(mutex);
+            quit = true;
+        }
+        to_workers.notify_all();
+        for (auto& t : pool) t.join();
+        pool.clear();
+    };
+
+    if (pool.empty() && !remotes) return ledger.finish();
+    const auto start = std::chrono::steady_clock::now();
+    std::size_t in_flight = 0;  // handed out (here or to a rank), not finished
+    bool exhausted = false;
+    std::deque<std::size_t> spare;   // claimed for the ranks, not yet given
+    std::vector<RunRecord> waiting;  // finished, not yet committed
+    auto oldest = std::chrono::steady_clock::now();
+    try {
+        for (;;) {
+            std::vector<RunRecord> batch;
+            if (remotes) remotes->poll(batch);
+            // Keep `jobs` runs queued for the threads and one for each idle rank.
+            std::size_t queued = 0;
+            {
+                const std::lock_guard lock(mutex);
+                queued = work.size();
+            }
+            const std::size_t wanted_here = pool.empty() ? 0 : (queued < width ? width - queued : 0);
+            const std::size_t wanted_there = remotes ? remotes->idle() : 0;
+            while (!exhausted && spare.size() < wanted_here + wanted_there) {
+                const auto got = ledger.take();
+                if (got.empty()) exhausted = true;
+                spare.insert(spare.end(), got.begin(), got.end());
+            }
+            for (std::size_t k = 0; k < wanted_there && !spare.empty(); ++k) {
+                remotes->give(static_cast<long long>(spare.front()));
+                spare.pop_front();
+                ++in_flight;
+            }
+            {
+                const std::lock_guard lock(mutex);
+                for (std::size_t k = 0; k < wanted_here && !spare.empty(); ++k) {
+                    work.push_back(spare.front());
+                    spare.pop_front();
+                    ++in_flight;
+                }
+                if (exhausted && spare.empty()) no_more = true;
+            }
+            to_workers.notify_all();
+            {
+                std::unique_lock lock(mutex);
+                // Ranks are polled every millisecond; threads wake this one themselves.
+                to_main.wait_for(lock, remotes ? std::chrono::milliseconds(1) : std::chrono::milliseconds(20), [&] {
+                    return !finished.empty() || failure || (!exhausted && work.size() < width && !pool.empty());
+                });
+                for (auto& r : finished) batch.push_back(std::move(r));
+                finished.clear();
+            }
+            in_flight -= batch.size();
+            if (!batch.empty() && waiting.empty()) oldest = std::chrono::steady_clock::now();
+            for (auto& r : batch) waiting.push_back(std::move(r));
+            // A transaction per `jobs` runs, or per 20 ms, whichever comes first: short runs do not
+            // wait for one commit each, and a finished run is in the store within 20 ms.
+            const bool last_ones = exhausted && spare.empty() && in_flight == 0;
+            if (!waiting.empty() && (waiting.size() >= width || last_ones ||
+                                     std::chrono::steady_clock::now() - oldest >= std::chrono::milliseconds(20))) {
+                ledger.commit(waiting);
+                waiting.clear();
+                if (progress)
+                    progress(ledger.in_store(), tasks.size(),
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            }
+            if (stop.signal && stop.signal->load() != 0) {
+                std::vector<RunRecord> last = std::move(waiting);  // finished, not yet committed
+                waiting.clear();
+                {
+                    const std::lock_guard lock(mutex);
+                    quit = true;  // the queued runs are not started
+                    for (auto& r : finished) last.push_back(std::move(r));
+                    finished.clear();
+                }
+                ledger.commit(last);
+                const Interrupted stopped(ledger.in_store(), tasks.size(), stop.signal->load());
+                ledger.close();
+                if (stop.on_stop) stop.on_stop(stopped);
+                shut_down();
+                if (remotes) remotes->release_all();
+                throw stopped;
+            }
+            {
+                const std::lock_guard lock(mutex);
+                if (failure) break;
+            }
+            if (exhausted && spare.empty() && in_flight == 0) break;
+        }
+    } catch (const Interrupted&) {
+        throw;
+    } catch (...) {
+        shut_down();
+        if (remotes) remotes->release_all();
+        throw;
+    }
+    shut_down();
+    if (remotes) remotes->release_all();
+    {
+        // What finished before a failure is kept.
+        for (auto& r : finished) waiting.push_back(std::move(r));
+        ledger.commit(waiting);
     }
     if (failure) std::rethrow_exception(failure);
-    return {stored, already, tasks.size(), size};
+    return ledger.finish();
 }
-#endif
 
 }  // namespace
 
@@ -279,13 +611,17 @@ int launched_ranks() {
     return 1;
 }
 
-BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std::int64_t jobs,
-                          const Progress& progress) {
+BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std::int64_t jobs, const Progress& progress,
+                          const Stop& stop) {
+    require(jobs >= 1 && jobs <= 1024, "jobs", "must be in [1, 1024], got " + std::to_string(jobs));
 #ifdef PRIDE_HAVE_MPI
     if (launched_ranks() > 1) {  // MPI only under mpirun: a plain run needs no MPI runtime
         int initialised = 0;
         MPI_Initialized(&initialised);
-        if (!initialised) MPI_Init(nullptr, nullptr);
+        if (!initialised) {
+            int provided = 0;  // only the main thread calls MPI; the others only run
+            MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+        }
         struct Finalise {
             ~Finalise() {
                 int finalised = 0;
@@ -296,71 +632,30 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
         int rank = 0, size = 1;
         MPI_Comm_rank(MPI_COMM_WORLD, &rank);
         MPI_Comm_size(MPI_COMM_WORLD, &size);
-        if (size > 1) return bench_mpi(c, store_path, rank, size);
+        if (size > 1) {
+            if (rank != 0) {
+                mpi_worker(c, jobs);
+                BenchSummary none;
+                none.ranks = 0;  // a worker rank: rank 0 reports
+                return none;
+            }
+            Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size));
+            Remotes remotes(size, jobs);
+            BenchSummary s = run_local(ledger, jobs, progress, stop, &remotes);
+            s.ranks = size;
+            return s;
+        }
     }
 #else
     require(launched_ranks() == 1, "pride bench",
-            "this pride was built without MPI (configure with -DPRIDE_MPI=ON); under mpirun every rank would "
-            "run the whole campaign");
+            "this pride was built without MPI, so under mpirun every rank would run the whole campaign; install "
+            "Open MPI (scripts/deps.sh), then configure afresh so that CMake finds it (rm build/CMakeCache.txt; "
+            "cmake -S . -B build -DPRIDE_MPI=ON) and rebuild");
 #endif
-    require(jobs >= 1 && jobs <= 1024, "jobs", "must be in [1, 1024], got " + std::to_string(jobs));
-    Store store(store_path);
-    store.claim(c);
-    const auto done = store.done();
-
-    std::vector<Task> tasks = all_tasks(c);
-    const std::size_t total = tasks.size();
-    std::erase_if(tasks, [&](const Task& t) { return done.count({t.problem->id, t.algorithm->id, t.seed}) != 0; });
-
-    std::mutex mutex;
-    std::condition_variable ready;
-    std::deque<RunRecord> finished;
-    std::exception_ptr failure;
-    std::atomic<std::size_t> next{0};
-    std::atomic<bool> stop{false};
-    auto worker = [&] {
-        for (std::size_t i; !stop && (i = next++) < tasks.size();) {
-            try {
-                RunRecord r = run_one(*tasks[i].problem, *tasks[i].algorithm, c.budget, tasks[i].seed);
-                const std::lock_guard lock(mutex);
-                finished.push_back(std::move(r));
-            } catch (...) {
-                const std::lock_guard lock(mutex);
-                if (!failure) failure = std::current_exception();
-                stop = true;
-            }
-            ready.notify_one();
-        }
-    };
-    std::vector<std::thread> pool;
-    for (std::int64_t j = 0; j < std::min<std::int64_t>(jobs, static_cast<std::int64_t>(tasks.size())); ++j)
-        pool.emplace_back(worker);
-
-    const auto start = std::chrono::steady_clock::now();
-    std::size_t stored = 0;
-    try {
-        while (stored < tasks.size()) {
-            std::unique_lock lock(mutex);
-            ready.wait(lock, [&] { return !finished.empty() || failure; });
-            if (failure && finished.empty()) break;
-            RunRecord r = std::move(finished.front());
-            finished.pop_front();
-            lock.unlock();
-            store.insert(r);  // the storing thread alone writes: one transaction per run
-            ++stored;
-            if (progress)
-                progress(done.size() + stored, total,
-                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        }
-    } catch (...) {
-        stop = true;
-        for (auto& t : pool) t.join();
-        throw;
-    }
-    stop = true;
-    for (auto& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
-    return {stored, done.size(), total, 1};
+    // Claims in batches of 4 runs per thread: one transaction for several short runs, and still
+    // small enough for two processes on one store to share the work evenly.
+    Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs));
+    return run_local(ledger, jobs, progress, stop, nullptr);
 }
 
 }  // namespace pride::engine

@@ -207,16 +207,28 @@ CampaignAlgorithm read_algorithm(const std::string& file, const toml::table& t) 
 Campaign read_campaign(const std::string& path) {
     Campaign c;
     c.file = path;
+    // Read here, with a cap, then parsed: a folder, a device or an endless stream is refused
+    // with a message rather than read without end.
+    constexpr std::size_t kMaxBytes = 16u << 20;
+    std::error_code ec;
+    require(!std::filesystem::is_directory(path, ec), path, "is a folder, not a campaign file");
+    {
+        std::ifstream in(path, std::ios::binary);
+        require(in.is_open(), path, "cannot read the campaign file (missing or unreadable)");
+        std::string chunk(1 << 16, '\0');
+        while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
+            c.text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+            require(c.text.size() <= kMaxBytes, path,
+                    fmt::format("is larger than {} MiB; a campaign file is a few lines of TOML", kMaxBytes >> 20));
+        }
+        require(!in.bad(), path, "cannot read the campaign file");
+    }
     toml::table root;
     try {
-        root = toml::parse_file(path);
+        root = toml::parse(c.text, path);
     } catch (const toml::parse_error& e) {
         throw InputError(
             fmt::format("{}:{}:{}: {}", path, e.source().begin.line, e.source().begin.column, e.description()));
-    }
-    {
-        std::ifstream in(path, std::ios::binary);
-        c.text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
     const auto folder = std::filesystem::path(path).parent_path();
     bool suites_read = false;

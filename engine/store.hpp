@@ -1,15 +1,24 @@
 #pragma once
 // The SQLite store of a campaign as run_campaign writes it (internal to engine/campaign.cpp; the
-// report code reads it): the campaign
-// itself, its problems, and one row per finished run, each committed in a transaction of its own.
+// report code reads it): the campaign itself, its problems, one row per finished run (committed
+// in batches: a finished run is never lost once its batch returns), and the claims by which
+// several processes on one store share its runs.
+#include <signal.h>
 #include <sqlite3.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
+#include <sstream>
 #include <string>
 #include <tuple>
 
@@ -20,17 +29,68 @@
 
 namespace pride::engine {
 
+/// The key of a run in a store.
+using RunKey = std::tuple<std::string, std::string, std::int64_t>;
+
+/// This process, as it stands in a store's claims: "PID:START" with START the process's start
+/// time (so a later process that reuses the number is not taken for it).
+inline std::string process_token(long pid) {
+    std::ifstream f("/proc/" + std::to_string(pid) + "/stat");
+    std::string stat((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    std::string start = "0";
+    const auto close = stat.rfind(')');  // the command name may hold spaces: count fields after it
+    if (close != std::string::npos) {
+        std::istringstream rest(stat.substr(close + 2));
+        std::string field;
+        for (int i = 3; i <= 22 && rest >> field; ++i)
+            if (i == 22) start = field;
+    }
+    return std::to_string(pid) + ":" + start;
+}
+
+/// Is the process of a claim's token still running? (A token of an unknown form counts as alive:
+/// its runs are never taken over by mistake.)
+inline bool token_alive(const std::string& token) {
+    const auto colon = token.find(':');
+    if (colon == std::string::npos) return true;
+    long pid = 0;
+    try {
+        pid = std::stol(token.substr(0, colon));
+    } catch (...) {
+        return true;
+    }
+    if (pid <= 0) return true;
+    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) return false;
+    if (!std::filesystem::exists("/proc/self/stat")) return true;  // no /proc: the pid alone decides
+    return process_token(pid) == token;
+}
+
 class Store {
   public:
-    explicit Store(const std::string& path) : path_(path) {
+    explicit Store(const std::string& path) : path_(path), token_(process_token(::getpid())) {
+        const bool existed = std::filesystem::exists(path);
+        if (!existed) {  // SQLite's own message would give the errno of its last try, not the reason
+            const auto parent = std::filesystem::path(path).parent_path();
+            if (::access(parent.empty() ? "." : parent.c_str(), W_OK) != 0 && errno != ENOENT)
+                throw InputError(path + ": cannot create the store: " + std::strerror(errno));
+        }
         if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_FULLMUTEX,
                             nullptr) != SQLITE_OK) {
-            const std::string why = db_ ? sqlite3_errmsg(db_) : "out of memory";
+            const std::string why = db_ ? reason() : "out of memory";
             sqlite3_close(db_);
             db_ = nullptr;
-            throw InputError(path + ": cannot open the store: " + why);
+            throw InputError(path + ": cannot " + (existed ? "open" : "create") + " the store: " + why);
         }
-        sqlite3_busy_timeout(db_, 10000);
+        sqlite3_busy_timeout(db_, 30000);  // another pride bench on the same store holds it briefly
+        // SQLite opens a file it may not write read-only: refused here, before any work is done.
+        if (sqlite3_db_readonly(db_, "main") == 1) {
+            const int e = errno;
+            sqlite3_close(db_);
+            db_ = nullptr;
+            throw InputError(path + ": cannot write the store (" +
+                             (e == EROFS || e == EACCES || e == EPERM ? std::strerror(e) : "it is read-only") +
+                             "); nothing was changed");
+        }
         // Never take over another application's database: a store has a campaign table or no table.
         bool foreign = false;
         try {
@@ -52,46 +112,225 @@ class Store {
         }
         exec("PRAGMA journal_mode=WAL");
         exec("PRAGMA synchronous=NORMAL");
-        exec(
-            "CREATE TABLE IF NOT EXISTS campaign (id INTEGER PRIMARY KEY CHECK (id = 1), name TEXT NOT NULL, "
-            "text TEXT NOT NULL, target REAL)");
-        exec(
-            "CREATE TABLE IF NOT EXISTS runs (problem TEXT NOT NULL, algorithm TEXT NOT NULL, seed INTEGER NOT NULL, "
-            "feasible INTEGER NOT NULL, best REAL, evaluations INTEGER NOT NULL, iterations INTEGER NOT NULL, "
-            "wall_ms REAL NOT NULL, optimum REAL, solution TEXT NOT NULL, history TEXT NOT NULL, "
-            "history_evaluations TEXT NOT NULL, UNIQUE (problem, algorithm, seed))");
-        exec(
-            "CREATE TABLE IF NOT EXISTS problems (id TEXT PRIMARY KEY, type TEXT NOT NULL, dim INTEGER NOT NULL, "
-            "map TEXT, start TEXT, goal TEXT)");
-        // Columns added with the suites (issue 10); a store from before gains them, empty.
-        add_column("campaign", "precisions", "TEXT");
-        add_column("problems", "function", "TEXT");
-        add_column("problems", "instance", "INTEGER NOT NULL DEFAULT 0");
-        add_column("problems", "f_opt", "REAL");
-        add_column("problems", "suite", "TEXT");
-        add_column("problems", "fid", "INTEGER");
-        add_column("runs", "target_hits", "TEXT NOT NULL DEFAULT '[]'");
+        // The schema in one transaction: two processes opening one new store create it once.
+        exec("BEGIN IMMEDIATE");
+        try {
+            exec(
+                "CREATE TABLE IF NOT EXISTS campaign (id INTEGER PRIMARY KEY CHECK (id = 1), name TEXT NOT NULL, "
+                "text TEXT NOT NULL, target REAL)");
+            exec(
+                "CREATE TABLE IF NOT EXISTS runs (problem TEXT NOT NULL, algorithm TEXT NOT NULL, seed INTEGER NOT "
+                "NULL, feasible INTEGER NOT NULL, best REAL, evaluations INTEGER NOT NULL, iterations INTEGER NOT "
+                "NULL, wall_ms REAL NOT NULL, optimum REAL, solution TEXT NOT NULL, history TEXT NOT NULL, "
+                "history_evaluations TEXT NOT NULL, UNIQUE (problem, algorithm, seed))");
+            exec(
+                "CREATE TABLE IF NOT EXISTS problems (id TEXT PRIMARY KEY, type TEXT NOT NULL, dim INTEGER NOT NULL, "
+                "map TEXT, start TEXT, goal TEXT)");
+            // The runs a pride bench has taken and not yet stored, so that two processes on one
+            // store share the work; the claims of a process that died are taken over.
+            exec(
+                "CREATE TABLE IF NOT EXISTS claims (problem TEXT NOT NULL, algorithm TEXT NOT NULL, seed INTEGER NOT "
+                "NULL, owner TEXT NOT NULL, UNIQUE (problem, algorithm, seed))");
+            // Columns added with the suites (issue 10); a store from before gains them, empty.
+            add_column("campaign", "precisions", "TEXT");
+            add_column("problems", "function", "TEXT");
+            add_column("problems", "instance", "INTEGER NOT NULL DEFAULT 0");
+            add_column("problems", "f_opt", "REAL");
+            add_column("problems", "suite", "TEXT");
+            add_column("problems", "fid", "INTEGER");
+            add_column("runs", "target_hits", "TEXT NOT NULL DEFAULT '[]'");
+            exec("COMMIT");
+        } catch (...) {
+            rollback();
+            sqlite3_close(db_);
+            db_ = nullptr;
+            throw;
+        }
+        struct stat st {};
+        if (::stat(path.c_str(), &st) == 0) {
+            device_ = st.st_dev;
+            inode_ = st.st_ino;
+        }
     }
-    ~Store() { sqlite3_close(db_); }
+    ~Store() {
+        if (!db_) return;
+        sqlite3_finalize(insert_);
+        sqlite3_finalize(unclaim_);
+        try {
+            release();
+        } catch (...) {  // a store that cannot be written keeps its claims; the next process takes them over
+        }
+        sqlite3_close(db_);
+    }
     Store(const Store&) = delete;
     Store& operator=(const Store&) = delete;
 
-    /// Records the campaign, or checks that the store holds this very campaign.
+    const std::string& path() const { return path_; }
+
+    /// Records the campaign, or checks that the store holds this very campaign. A store that
+    /// holds no run yet (a campaign that failed before its first) takes the new campaign.
     void claim(const Campaign& c) {
-        sqlite3_stmt* s = prepare("SELECT name, text FROM campaign WHERE id = 1");
-        const int rc = sqlite3_step(s);
-        if (rc == SQLITE_ROW) {
-            const std::string name = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
-            const std::string text = reinterpret_cast<const char*>(sqlite3_column_text(s, 1));
-            sqlite3_finalize(s);
-            if (text != c.text)
-                throw InputError(path_ + ": holds the results of another campaign ('" + name +
-                                 "', or an edited version of this file); choose another store file");
-            return;
+        exec("BEGIN IMMEDIATE");
+        try {
+            sqlite3_stmt* s = prepare("SELECT name, text, (SELECT COUNT(*) FROM runs) FROM campaign WHERE id = 1");
+            const int rc = sqlite3_step(s);
+            if (rc == SQLITE_ROW) {
+                const std::string name = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
+                const std::string text = reinterpret_cast<const char*>(sqlite3_column_text(s, 1));
+                const std::int64_t runs = sqlite3_column_int64(s, 2);
+                sqlite3_finalize(s);
+                if (text == c.text) {
+                    exec("COMMIT");
+                    return;
+                }
+                if (runs > 0 || live_claims() > 0)
+                    throw InputError(path_ + ": holds the results of another campaign ('" + name +
+                                     "', or an edited version of this file); choose another store file");
+                exec("DELETE FROM campaign; DELETE FROM problems; DELETE FROM claims");
+            } else {
+                sqlite3_finalize(s);
+                if (rc != SQLITE_DONE) fail("cannot read the store");
+            }
+            record(c);
+            exec("COMMIT");
+        } catch (...) {
+            rollback();
+            throw;
         }
+    }
+
+    std::set<RunKey> done() {
+        std::set<RunKey> keys;
+        sqlite3_stmt* s = prepare("SELECT problem, algorithm, seed FROM runs");
+        int rc;
+        while ((rc = sqlite3_step(s)) == SQLITE_ROW)
+            keys.emplace(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)),
+                         reinterpret_cast<const char*>(sqlite3_column_text(s, 1)), sqlite3_column_int64(s, 2));
         sqlite3_finalize(s);
-        exec("BEGIN");
-        s = prepare("INSERT INTO campaign (id, name, text, target, precisions) VALUES (1, ?, ?, ?, ?)");
+        if (rc != SQLITE_DONE) fail("cannot read the store");
+        return keys;
+    }
+
+    /// Takes, in one transaction, the first runs of `keys[from...]` that are neither stored nor
+    /// taken by another live process, up to `wanted`; returns the positions taken and sets `from`
+    /// past the last one looked at. Positions that another live process holds go to `busy`.
+    std::vector<std::size_t> take(const std::vector<RunKey>& keys, std::size_t& from, std::size_t wanted,
+                                  std::vector<std::size_t>& busy) {
+        std::vector<std::size_t> taken;
+        exec("BEGIN IMMEDIATE");
+        try {
+            sqlite3_stmt* s = prepare(
+                "INSERT OR IGNORE INTO claims (problem, algorithm, seed, owner) SELECT ?1, ?2, ?3, ?4 WHERE NOT EXISTS "
+                "(SELECT 1 FROM runs WHERE problem = ?1 AND algorithm = ?2 AND seed = ?3)");
+            sqlite3_stmt* held =
+                prepare("SELECT 1 FROM claims WHERE problem = ?1 AND algorithm = ?2 AND seed = ?3 AND owner <> ?4");
+            for (; from < keys.size() && taken.size() < wanted; ++from) {
+                const auto& [p, a, seed] = keys[from];
+                for (sqlite3_stmt* q : {s, held}) {
+                    sqlite3_reset(q);
+                    sqlite3_bind_text(q, 1, p.c_str(), -1, SQLITE_TRANSIENT);
+                    sqlite3_bind_text(q, 2, a.c_str(), -1, SQLITE_TRANSIENT);
+                    sqlite3_bind_int64(q, 3, seed);
+                    sqlite3_bind_text(q, 4, token_.c_str(), -1, SQLITE_TRANSIENT);
+                }
+                const int rc = sqlite3_step(s);
+                if (rc != SQLITE_DONE) {
+                    sqlite3_finalize(s);
+                    sqlite3_finalize(held);
+                    fail("cannot write the store");
+                }
+                if (sqlite3_changes(db_) == 1) {
+                    taken.push_back(from);
+                } else if (sqlite3_step(held) == SQLITE_ROW) {
+                    busy.push_back(from);
+                }
+            }
+            sqlite3_finalize(s);
+            sqlite3_finalize(held);
+            exec("COMMIT");
+        } catch (...) {
+            rollback();
+            throw;
+        }
+        return taken;
+    }
+
+    /// Drops the claims of processes that are no longer running; true when there were any.
+    bool drop_dead_claims() {
+        std::vector<std::string> owners;
+        sqlite3_stmt* s = prepare("SELECT DISTINCT owner FROM claims");
+        while (sqlite3_step(s) == SQLITE_ROW)
+            owners.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)));
+        sqlite3_finalize(s);
+        bool dropped = false;
+        for (const auto& owner : owners) {
+            if (owner == token_ || token_alive(owner)) continue;
+            s = prepare("DELETE FROM claims WHERE owner = ?");
+            sqlite3_bind_text(s, 1, owner.c_str(), -1, SQLITE_TRANSIENT);
+            step_done(s, "cannot write the store");
+            dropped = true;
+        }
+        return dropped;
+    }
+
+    /// Finished runs in one transaction with the release of their claims: once this returns, a
+    /// kill cannot lose them. A run another process stored meanwhile (same inputs, same values)
+    /// is kept once. Returns the number of rows added.
+    std::size_t insert(const std::vector<RunRecord>& records) {
+        if (records.empty()) return 0;
+        check_same_file();
+        std::size_t added = 0;
+        exec("BEGIN IMMEDIATE");
+        try {
+            for (const RunRecord& r : records) added += insert_one(r);
+            exec("COMMIT");
+        } catch (...) {
+            rollback();
+            throw;
+        }
+        check_same_file();
+        return added;
+    }
+    std::size_t insert(const RunRecord& r) { return insert(std::vector<RunRecord>{r}); }
+
+    /// The claims of this process, dropped (runs it took and will not finish).
+    void release() {
+        sqlite3_stmt* s = prepare("DELETE FROM claims WHERE owner = ?");
+        sqlite3_bind_text(s, 1, token_.c_str(), -1, SQLITE_TRANSIENT);
+        step_done(s, "cannot write the store");
+    }
+
+    std::size_t count() {
+        sqlite3_stmt* s = prepare("SELECT COUNT(*) FROM runs");
+        const int rc = sqlite3_step(s);
+        const std::int64_t n = rc == SQLITE_ROW ? sqlite3_column_int64(s, 0) : 0;
+        sqlite3_finalize(s);
+        return static_cast<std::size_t>(n);
+    }
+
+    /// Throws when the store's file is gone or replaced (deleted while a campaign ran: SQLite
+    /// would go on writing into the unlinked file, and every result would be lost unseen).
+    void check_same_file() const {
+        struct stat st {};
+        if (inode_ == 0) return;
+        if (::stat(path_.c_str(), &st) != 0 || st.st_dev != device_ || st.st_ino != inode_)
+            throw InputError(path_ +
+                             ": the store was deleted or replaced while pride bench ran; the runs of this call "
+                             "went with it (run the same command again to compute them)");
+    }
+
+  private:
+    std::int64_t live_claims() {
+        drop_dead_claims();
+        sqlite3_stmt* s = prepare("SELECT COUNT(*) FROM claims WHERE owner <> ?");
+        sqlite3_bind_text(s, 1, token_.c_str(), -1, SQLITE_TRANSIENT);
+        const std::int64_t n = sqlite3_step(s) == SQLITE_ROW ? sqlite3_column_int64(s, 0) : 0;
+        sqlite3_finalize(s);
+        return n;
+    }
+
+    void record(const Campaign& c) {
+        sqlite3_stmt* s = prepare("INSERT INTO campaign (id, name, text, target, precisions) VALUES (1, ?, ?, ?, ?)");
         sqlite3_bind_text(s, 1, c.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, c.text.c_str(), -1, SQLITE_TRANSIENT);
         if (c.target)
@@ -100,7 +339,7 @@ class Store {
             sqlite3_bind_null(s, 3);
         const std::string precisions = json_array(coco_precisions());
         sqlite3_bind_text(s, 4, precisions.c_str(), -1, SQLITE_TRANSIENT);
-        step_done(s);
+        step_done(s, "cannot write the store");
         // The problems as resolved here (map paths made absolute), for reports and plots.
         for (const auto& p : c.problems) {
             s = prepare(
@@ -133,26 +372,29 @@ class Store {
                 sqlite3_bind_text(s, 10, suite.c_str(), -1, SQLITE_TRANSIENT);
                 sqlite3_bind_int64(s, 11, item->entry.number);
             }
-            step_done(s);
+            step_done(s, "cannot write the store");
         }
-        exec("COMMIT");
     }
 
-    std::set<std::tuple<std::string, std::string, std::int64_t>> done() {
-        std::set<std::tuple<std::string, std::string, std::int64_t>> keys;
-        sqlite3_stmt* s = prepare("SELECT problem, algorithm, seed FROM runs");
-        while (sqlite3_step(s) == SQLITE_ROW)
-            keys.emplace(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)),
-                         reinterpret_cast<const char*>(sqlite3_column_text(s, 1)), sqlite3_column_int64(s, 2));
-        sqlite3_finalize(s);
-        return keys;
+    /// A statement prepared once (the ones run per stored run), reset for its next use.
+    sqlite3_stmt* cached(sqlite3_stmt*& s, const char* sql) {
+        if (!s) s = prepare(sql);
+        sqlite3_reset(s);
+        sqlite3_clear_bindings(s);
+        return s;
+    }
+    void step_cached(sqlite3_stmt* s, const char* doing) {
+        const int rc = sqlite3_step(s);
+        sqlite3_reset(s);
+        if (rc != SQLITE_DONE) fail(doing);
     }
 
-    /// One run, in a transaction of its own: once this returns, a kill cannot lose it.
-    void insert(const RunRecord& r) {
-        sqlite3_stmt* s = prepare(
-            "INSERT INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, optimum, "
-            "solution, history, history_evaluations, target_hits) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    std::size_t insert_one(const RunRecord& r) {
+        sqlite3_stmt* s = cached(
+            insert_,
+            "INSERT OR IGNORE INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, "
+            "optimum, solution, history, history_evaluations, target_hits) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+            "?, ?)");
         sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_int64(s, 3, r.seed);
@@ -168,14 +410,21 @@ class Store {
             sqlite3_bind_double(s, 9, *r.optimum);
         else
             sqlite3_bind_null(s, 9);
-        sqlite3_bind_text(s, 10, r.solution.c_str(), -1, SQLITE_TRANSIENT);
-        sqlite3_bind_text(s, 11, r.history.c_str(), -1, SQLITE_TRANSIENT);
-        sqlite3_bind_text(s, 12, r.history_evaluations.c_str(), -1, SQLITE_TRANSIENT);
-        sqlite3_bind_text(s, 13, r.target_hits.c_str(), -1, SQLITE_TRANSIENT);
-        step_done(s);  // autocommit: the statement is its own transaction
+        // SQLITE_STATIC: the record outlives the step (no copy of the long JSON texts).
+        sqlite3_bind_text(s, 10, r.solution.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 11, r.history.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 12, r.history_evaluations.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 13, r.target_hits.c_str(), -1, SQLITE_STATIC);
+        step_cached(s, "cannot write the store");
+        const std::size_t added = static_cast<std::size_t>(sqlite3_changes(db_));
+        s = cached(unclaim_, "DELETE FROM claims WHERE problem = ? AND algorithm = ? AND seed = ?");
+        sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_int64(s, 3, r.seed);
+        step_cached(s, "cannot write the store");
+        return added;
     }
 
-  private:
     void add_column(const std::string& table, const std::string& column, const std::string& type) {
         sqlite3_stmt* s = prepare(("SELECT 1 FROM pragma_table_info('" + table + "') WHERE name = ?").c_str());
         sqlite3_bind_text(s, 1, column.c_str(), -1, SQLITE_TRANSIENT);
@@ -184,28 +433,47 @@ class Store {
         if (!present) exec(("ALTER TABLE " + table + " ADD COLUMN " + column + " " + type).c_str());
     }
 
+    /// SQLite's reason, with the system's where it has one ("disk I/O error: No space left on device").
+    std::string reason() const {
+        std::string why = sqlite3_errmsg(db_);
+        const int e = sqlite3_system_errno(db_);
+        const int code = sqlite3_errcode(db_) & 0xff;
+        if (e != 0 && (code == SQLITE_IOERR || code == SQLITE_CANTOPEN || code == SQLITE_FULL))
+            why += std::string(" (") + std::strerror(e) + ")";
+        return why;
+    }
+    [[noreturn]] void fail(const std::string& doing) const { throw InputError(path_ + ": " + doing + ": " + reason()); }
+
+    void rollback() noexcept { sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr); }
+
     void exec(const char* sql) {
         char* message = nullptr;
         if (sqlite3_exec(db_, sql, nullptr, nullptr, &message) != SQLITE_OK) {
-            const std::string why = message ? message : sqlite3_errmsg(db_);
             sqlite3_free(message);
-            throw InputError(path_ + ": " + why);
+            fail("cannot write the store");
         }
     }
     sqlite3_stmt* prepare(const char* sql) {
         sqlite3_stmt* s = nullptr;
-        if (sqlite3_prepare_v2(db_, sql, -1, &s, nullptr) != SQLITE_OK)
-            throw InputError(path_ + ": " + sqlite3_errmsg(db_));
+        if (sqlite3_prepare_v2(db_, sql, -1, &s, nullptr) != SQLITE_OK) {
+            sqlite3_finalize(s);
+            fail("cannot read the store");
+        }
         return s;
     }
-    void step_done(sqlite3_stmt* s) {
+    void step_done(sqlite3_stmt* s, const char* doing) {
         const int rc = sqlite3_step(s);
         sqlite3_finalize(s);
-        if (rc != SQLITE_DONE) throw InputError(path_ + ": " + sqlite3_errmsg(db_));
+        if (rc != SQLITE_DONE) fail(doing);
     }
 
     std::string path_;
+    std::string token_;
     sqlite3* db_ = nullptr;
+    sqlite3_stmt* insert_ = nullptr;  // cached()
+    sqlite3_stmt* unclaim_ = nullptr;
+    dev_t device_ = 0;
+    ino_t inode_ = 0;
 };
 
 }  // namespace pride::engine

@@ -13,6 +13,7 @@ import os
 import re
 import sqlite3
 import sys
+import warnings
 
 import matplotlib
 
@@ -43,6 +44,26 @@ def save(fig, folder, stem):
     plt.close(fig)
 
 
+class Damaged(Exception):
+    """A store whose values are not what pride bench writes."""
+
+
+def is_number(v):
+    return v is None or (isinstance(v, (int, float)) and not isinstance(v, bool))
+
+
+def valid_numbers(v):
+    return isinstance(v, list) and all(is_number(x) for x in v)
+
+
+def valid_solution(v):
+    """A point (a list of numbers) or a path (a list of [x, y] cells)."""
+    if not isinstance(v, list):
+        return False
+    return all(is_number(x) for x in v) or all(
+        isinstance(c, list) and len(c) == 2 and all(isinstance(x, int) for x in c) for c in v)
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit("usage: plot_campaign.py STORE DIR")
@@ -54,8 +75,20 @@ def main():
         "ORDER BY problem, algorithm, seed").fetchall()
     by_problem = {}
     for problem, algorithm, seed, best, solution, history, history_evaluations in runs:
-        by_problem.setdefault(problem, {}).setdefault(algorithm, []).append(
-            (seed, best, json.loads(solution), json.loads(history), json.loads(history_evaluations)))
+        row = f"runs row (problem '{problem}', algorithm '{algorithm}', seed {seed})"
+        parsed = []
+        for column, text, check in (("solution", solution, valid_solution), ("history", history, valid_numbers),
+                                    ("history_evaluations", history_evaluations, valid_numbers)):
+            try:
+                value = json.loads(text)
+            except (TypeError, ValueError):
+                value = None
+            if not check(value):
+                raise Damaged(f"{store}: damaged store: {row}, column {column}: not what pride bench writes")
+            parsed.append(value)
+        if best is not None and not isinstance(best, (int, float)):
+            raise Damaged(f"{store}: damaged store: {row}, column best: not a number")
+        by_problem.setdefault(problem, {}).setdefault(algorithm, []).append((seed, best, *parsed))
     for problem, algorithms in by_problem.items():
         stem = safe(problem)
         # Convergence: median and interquartile band of the best value after each iteration.
@@ -114,4 +147,13 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    # One clear line on failure, never a traceback; library warnings are not for the user.
+    warnings.simplefilter("ignore")
+    try:
+        main()
+    except Damaged as e:
+        print(e, file=sys.stderr)
+        sys.exit(2)
+    except Exception as e:  # noqa: BLE001
+        print(f"plot_campaign.py: {type(e).__name__}: {e}".splitlines()[0], file=sys.stderr)
+        sys.exit(1)

@@ -13,6 +13,7 @@ import json
 import math
 import os
 import sys
+import warnings
 
 import matplotlib
 
@@ -69,4 +70,10 @@ def _span(precisions):
 
 
 if __name__ == "__main__":
-    main()
+    # One clear line on failure, never a traceback; library warnings are not for the user.
+    warnings.simplefilter("ignore")
+    try:
+        main()
+    except Exception as e:  # noqa: BLE001
+        print(f"plot_ecdf.py: {type(e).__name__}: {e}".splitlines()[0], file=sys.stderr)
+        sys.exit(1)

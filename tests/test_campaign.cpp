@@ -59,7 +59,8 @@ fs::path bundled_campaigns() {
 /// files. The destructor kills and reaps a child still running, so a failed check never leaves one.
 class Child {
   public:
-    Child(const std::vector<std::string>& args, const std::string& out, const std::string& err) {
+    Child(const std::vector<std::string>& args, const std::string& out, const std::string& err,
+          const std::string& cwd = "") {
         std::vector<std::string> argv_strings{PRIDE_EXE};
         argv_strings.insert(argv_strings.end(), args.begin(), args.end());
         std::vector<char*> argv;
@@ -70,6 +71,7 @@ class Child {
         posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
         posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
         const int rc = posix_spawn(&pid_, PRIDE_EXE, &actions, nullptr, argv.data(), environ);
         posix_spawn_file_actions_destroy(&actions);
         if (rc != 0) throw std::runtime_error("posix_spawn failed");
@@ -100,6 +102,7 @@ class Child {
         reaped_ = true;
         status_ = status;
     }
+    void send(int signal) { ::kill(pid_, signal); }
     /// Waits for the child to exit by itself; kills it after `limit` and returns false.
     bool wait_for(Clock::duration limit) {
         const auto deadline = Clock::now() + limit;
@@ -128,9 +131,9 @@ struct Outcome {
 };
 
 /// Runs `pride ARGS...` to its end, within a generous bound (a hang is a failure, never a hang).
-Outcome run(const std::vector<std::string>& args, Clock::duration limit = 120s) {
+Outcome run(const std::vector<std::string>& args, Clock::duration limit = 120s, const std::string& cwd = "") {
     const TempDir io;
-    Child child(args, io.file("out"), io.file("err"));
+    Child child(args, io.file("out"), io.file("err"), cwd);
     const bool finished = child.wait_for(limit);
     Outcome o;
     o.status = child.exit_status();
@@ -401,7 +404,7 @@ void expect_campaign_error(const std::string& text, std::vector<std::string> wor
         if (w.rfind("FILE", 0) == 0) w = file + w.substr(4);
     INFO(join(args));
     INFO("campaign file:\n" << text);
-    const Outcome r = run(args);
+    const Outcome r = run(args, 120s, dir.path().string());
     check_input_error(r, words);
     CHECK(dir.entries() == std::vector<std::string>{"c.toml"});
 }
@@ -503,9 +506,9 @@ const std::string kResume =
 constexpr long long kResumeRuns = 2 * 3 * 30;
 
 /// Runs a campaign to its end; checks the summary line and returns it.
-std::string bench_ok(const std::vector<std::string>& args) {
+std::string bench_ok(const std::vector<std::string>& args, const std::string& cwd = "") {
     INFO(join(args));
-    const Outcome r = run(args);
+    const Outcome r = run(args, 120s, cwd);
     INFO("stderr: " << r.err);
     REQUIRE(r.status == 0);
     CHECK(r.err.empty());
@@ -558,7 +561,7 @@ TEST_CASE("bench: the base campaign files of the error tests are valid", "[cli][
     for (const auto& text : {kContinuous, grid_base()}) {
         const TempDir dir;
         const std::string file = dir.write("c.toml", text);
-        bench_ok({"bench", file, "--jobs", "1"});
+        bench_ok({"bench", file, "--jobs", "1"}, dir.path().string());
         CHECK(count_runs(dir.file("c.sqlite")) >= 1);
     }
 }
@@ -847,8 +850,9 @@ TEST_CASE("bench: a campaign killed with SIGKILL resumes with no run lost or run
 TEST_CASE("bench: re-running a finished campaign stores nothing and says so", "[cli][bench]") {
     const TempDir dir;
     const std::string config = dir.write("c.toml", kSmallContinuous);
-    const std::string store = dir.file("c.sqlite");  // the default: CONFIG with .sqlite
-    check_summary(bench_ok({"bench", config, "--jobs", "2"}), kSmallContinuousRuns, 0, kSmallContinuousRuns, store);
+    const std::string store = dir.file("c.sqlite");  // the default: CONFIG's name with .sqlite, here
+    check_summary(bench_ok({"bench", config, "--jobs", "2"}, dir.path().string()), kSmallContinuousRuns, 0,
+                  kSmallContinuousRuns, "c.sqlite");
     const auto before = runs_of(store, true);
     const std::string bytes = slurp(store);
     const auto entries = dir.entries();
@@ -865,7 +869,7 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
     const TempDir dir;
     const std::string config = dir.write("c.toml", kSmallContinuous);
     const std::string store = dir.file("c.sqlite");
-    bench_ok({"bench", config, "--jobs", "2"});
+    bench_ok({"bench", config, "--jobs", "2", "--out", store});
     const auto before = runs_of(store, true);
     const std::string bytes = slurp(store);
 
@@ -892,7 +896,8 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
     CHECK(slurp(not_a_store) == "these are my notes, not a database\n");
 
     // The campaign itself still finds its store intact: nothing to do.
-    check_summary(bench_ok({"bench", config, "--jobs", "1"}), 0, kSmallContinuousRuns, kSmallContinuousRuns, store);
+    check_summary(bench_ok({"bench", config, "--jobs", "1", "--out", store}), 0, kSmallContinuousRuns,
+                  kSmallContinuousRuns, store);
 }
 
 TEST_CASE("bench: grid options that only a run would reject are refused up front", "[cli][bench][errors]") {
@@ -922,4 +927,225 @@ TEST_CASE("bench: an SQLite database that is not a pride store is refused and le
     check_input_error(run({"bench", config, "--jobs", "1", "--out", foreign}), {foreign});
     CHECK(slurp(foreign) == bytes);
     CHECK(dir.entries() == std::vector<std::string>{"c.toml", "notes.db"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5. Campaigns under faults (issue 14): signals, two processes on one store, read-only and full
+// file systems, a store deleted meanwhile, a store of a campaign that stored nothing
+
+namespace {
+
+/// Waits (bounded) until `store` holds at least `at_least` runs while `child` runs.
+void wait_for_runs(Child& child, const std::string& store, long long at_least, const std::string& err) {
+    const auto deadline = Clock::now() + 120s;
+    long long seen = -1;
+    while ((seen = count_runs(store)) < at_least) {
+        if (!child.running()) {
+            INFO("stderr: " << slurp(err));
+            FAIL("pride bench ended (status " << child.exit_status() << ") before " << at_least << " runs were stored");
+        }
+        if (Clock::now() > deadline) FAIL("no " << at_least << " runs stored within 120 s; " << seen << " were");
+        std::this_thread::sleep_for(1ms);
+    }
+}
+
+long long claims_left(const std::string& store) {
+    Db db(store);
+    const auto rows = db.query("SELECT count(*) FROM claims");
+    REQUIRE(rows);
+    return integer_of((*rows)[0][0]);
+}
+
+/// "NAME: N runs stored in ..." -> N
+long long stored_of(const std::string& out) {
+    const auto colon = out.find(": ");
+    REQUIRE(colon != std::string::npos);
+    return std::stoll(out.substr(colon + 2));
+}
+
+/// Can this process make a user and mount namespace (unshare -rm) for a tmpfs of its own?
+bool can_unshare() {
+    return std::system("unshare -rm sh -c 'mount -t tmpfs -o size=64k none /mnt' >/dev/null 2>&1") == 0;
+}
+
+std::string sh_quote(const std::string& s) {
+    return "'" + s + "'";
+}
+
+}  // namespace
+
+TEST_CASE("bench: SIGINT and SIGTERM commit the finished runs, say how to resume, exit 130 and 143",
+          "[cli][bench][resume][faults]") {
+    const TempDir dir;
+    const std::string config = dir.write("r.toml", kResume);
+    const std::string reference_store = dir.file("reference.sqlite");
+    bench_ok({"bench", config, "--jobs", "2", "--out", reference_store});
+    const auto reference = runs_of(reference_store);
+    for (const auto& [signal, name, status] :
+         {std::tuple{SIGINT, "SIGINT", 130}, std::tuple{SIGTERM, "SIGTERM", 143}}) {
+        INFO(name);
+        const std::string store = dir.file(std::string(name) + ".sqlite");
+        long long left = 0;
+        {
+            Child child({"bench", config, "--jobs", "2", "--out", store}, dir.file("sig-out"), dir.file("sig-err"));
+            wait_for_runs(child, store, 10, dir.file("sig-err"));  // event-driven: 10 runs are in the store
+            child.send(signal);
+            REQUIRE(child.wait_for(60s));
+            CHECK(child.exit_status() == status);
+            left = count_runs(store);
+            const std::string err = slurp(dir.file("sig-err"));
+            INFO("stderr: " << err);
+            CHECK(std::count(err.begin(), err.end(), '\n') == 1);
+            CHECK(err.find(std::string("interrupted by ") + name) != std::string::npos);
+            CHECK(err.find(": " + std::to_string(left) + " of " + std::to_string(kResumeRuns) + " runs are stored in " +
+                           store) != std::string::npos);
+            CHECK(err.find("run the same command again to resume") != std::string::npos);
+            CHECK(slurp(dir.file("sig-out")).empty());
+        }
+        CHECK(left >= 10);
+        REQUIRE(left < kResumeRuns);
+        CHECK(static_cast<long long>(distinct_keys(store)) == left);
+        CHECK(claims_left(store) == 0);  // the abandoned runs were handed back
+        {
+            Db db(store);
+            const auto ok = db.query("PRAGMA integrity_check");
+            REQUIRE(ok);
+            CHECK((*ok)[0][0] == "t:ok");
+        }
+        check_summary(bench_ok({"bench", config, "--jobs", "2", "--out", store}), kResumeRuns - left, left, kResumeRuns,
+                      store);
+        check_same_runs(runs_of(store), reference);
+    }
+}
+
+TEST_CASE("bench: two processes on one store share its runs, none lost or stored twice", "[cli][bench][faults]") {
+    const TempDir dir;
+    const std::string config = dir.write("r.toml", kResume);
+    const std::string reference_store = dir.file("reference.sqlite");
+    bench_ok({"bench", config, "--jobs", "2", "--out", reference_store});
+    const auto reference = runs_of(reference_store);
+    for (const bool together : {true, false}) {
+        INFO((together ? "started at once on a new store" : "the second started once the first stored 5 runs"));
+        const std::string store = dir.file(together ? "together.sqlite" : "later.sqlite");
+        Child a({"bench", config, "--jobs", "1", "--out", store}, dir.file("a-out"), dir.file("a-err"));
+        if (!together) wait_for_runs(a, store, 5, dir.file("a-err"));
+        Child b({"bench", config, "--jobs", "1", "--out", store}, dir.file("b-out"), dir.file("b-err"));
+        REQUIRE(a.wait_for(120s));
+        REQUIRE(b.wait_for(120s));
+        const std::string out_a = slurp(dir.file("a-out")), out_b = slurp(dir.file("b-out"));
+        INFO("a: " << out_a << slurp(dir.file("a-err")) << "b: " << out_b << slurp(dir.file("b-err")));
+        CHECK(a.exit_status() == 0);
+        CHECK(b.exit_status() == 0);
+        CHECK(slurp(dir.file("a-err")).empty());
+        CHECK(slurp(dir.file("b-err")).empty());
+        CHECK(count_runs(store) == kResumeRuns);
+        CHECK(static_cast<long long>(distinct_keys(store)) == kResumeRuns);
+        CHECK(stored_of(out_a) + stored_of(out_b) == kResumeRuns);  // each run stored by one of them
+        if (!together) {
+            // The second took runs the first had not: 175 runs remained when it started.
+            CHECK(stored_of(out_a) > 0);
+            CHECK(stored_of(out_b) > 0);
+        }
+        CHECK(claims_left(store) == 0);
+        check_same_runs(runs_of(store), reference);
+    }
+}
+
+TEST_CASE("bench: a store deleted while it runs is an error naming it, never a success", "[cli][bench][faults]") {
+    const TempDir dir;
+    const std::string config = dir.write("r.toml", kResume);
+    const std::string store = dir.file("gone.sqlite");
+    Child child({"bench", config, "--jobs", "2", "--out", store}, dir.file("out"), dir.file("err"));
+    wait_for_runs(child, store, 3, dir.file("err"));
+    for (const char* suffix : {"", "-wal", "-shm"}) fs::remove(store + suffix);
+    REQUIRE(child.wait_for(120s));
+    const Outcome r{child.exit_status(), slurp(dir.file("out")), slurp(dir.file("err"))};
+    check_input_error(r, {store, "deleted or replaced"});
+}
+
+TEST_CASE("bench: a store of a campaign that stored no run takes the corrected campaign", "[cli][bench][faults]") {
+    const TempDir dir;
+    const std::string first = dir.write("c.toml", kSmallContinuous);
+    const std::string store = dir.file("s.sqlite");
+    bench_ok({"bench", first, "--jobs", "1", "--out", store});
+    {  // as a campaign that failed (or was stopped) before its first run leaves it
+        sqlite3* db = nullptr;
+        REQUIRE(sqlite3_open(store.c_str(), &db) == SQLITE_OK);
+        REQUIRE(sqlite3_exec(db, "DELETE FROM runs", nullptr, nullptr, nullptr) == SQLITE_OK);
+        sqlite3_close(db);
+    }
+    const std::string corrected =
+        dir.write("d.toml", replace(kSmallContinuous, "evaluations = 2000", "evaluations = 2001"));
+    check_summary(bench_ok({"bench", corrected, "--jobs", "1", "--out", store}), kSmallContinuousRuns, 0,
+                  kSmallContinuousRuns, store);
+    // Once it holds runs, another campaign is refused again.
+    check_input_error(run({"bench", first, "--jobs", "1", "--out", store}), {store, "another campaign"});
+}
+
+TEST_CASE("bench: a folder or an endless stream as the campaign file is one clear line", "[cli][bench][faults]") {
+    const TempDir dir;
+    check_input_error(run({"bench", dir.path().string()}, 120s, dir.path().string()),
+                      {dir.path().string(), "is a folder"});
+    check_input_error(run({"bench", "/dev/zero"}, 120s, dir.path().string()), {"/dev/zero", "MiB"});
+    CHECK(dir.entries().empty());
+}
+
+TEST_CASE("bench: a read-only or full file system is an error naming the store; nothing stored is lost",
+          "[cli][bench][faults]") {
+    if (!can_unshare()) {
+        WARN("skipped: no user and mount namespace here (unshare -rm) for a read-only or small file system");
+        return;
+    }
+    const TempDir dir;
+    const std::string config = dir.write("r.toml", kResume);
+    const std::string small = dir.write("c.toml", kSmallContinuous);
+    {
+        INFO("read-only: a bind mount of the store's folder, remounted read-only in a namespace of its own");
+        fs::create_directories(dir.path() / "ro");
+        const std::string store = dir.file("ro/s.sqlite");
+        bench_ok({"bench", small, "--jobs", "1", "--out", store});
+        const std::string bytes = slurp(store);
+        const auto entries = fs::directory_iterator(dir.path() / "ro");
+        (void)entries;
+        const std::string ro = dir.file("ro");
+        for (const std::string& target : {store, dir.file("ro/new.sqlite")}) {
+            const std::string script = "mount --bind " + sh_quote(ro) + " " + sh_quote(ro) +
+                                       " && mount -o remount,bind,ro " + sh_quote(ro) + " && " + sh_quote(PRIDE_EXE) +
+                                       " bench " + sh_quote(config) + " --jobs 1 --out " + sh_quote(target) + " >" +
+                                       sh_quote(dir.file("ro-out")) + " 2>" + sh_quote(dir.file("ro-err")) +
+                                       "; echo $? >" + sh_quote(dir.file("ro-rc"));
+            REQUIRE(std::system(("unshare -rm sh -c " + sh_quote(script)).c_str()) == 0);
+            const Outcome r{std::stoi(slurp(dir.file("ro-rc"))), slurp(dir.file("ro-out")), slurp(dir.file("ro-err"))};
+            check_input_error(r, {target, "store", "Read-only file system"});
+        }
+        CHECK(slurp(store) == bytes);
+        CHECK(!fs::exists(dir.file("ro/new.sqlite")));
+    }
+    {
+        INFO("full: a 1 MiB tmpfs; the store, the message and a copy are taken before the namespace ends");
+        fs::create_directories(dir.path() / "full");
+        fs::create_directories(dir.path() / "copy");
+        const std::string full = dir.file("full"), store = dir.file("full/s.sqlite");
+        const std::string script = "mount -t tmpfs -o size=1m none " + sh_quote(full) + " && " + sh_quote(PRIDE_EXE) +
+                                   " bench " + sh_quote(config) + " --jobs 2 --out " + sh_quote(store) + " >" +
+                                   sh_quote(dir.file("full-out")) + " 2>" + sh_quote(dir.file("full-err")) +
+                                   "; echo $? >" + sh_quote(dir.file("full-rc")) + "; cp " + sh_quote(full) + "/* " +
+                                   sh_quote(dir.file("copy"));
+        REQUIRE(std::system(("unshare -rm sh -c " + sh_quote(script)).c_str()) == 0);
+        const Outcome r{std::stoi(slurp(dir.file("full-rc"))), slurp(dir.file("full-out")),
+                        slurp(dir.file("full-err"))};
+        check_input_error(r, {store, "full", "runs are stored and kept", "resume"});
+        // What the message says is stored is there, intact.
+        const std::string copy = dir.file("copy/s.sqlite");
+        REQUIRE(fs::exists(copy));
+        Db db(copy);
+        const auto ok = db.query("PRAGMA integrity_check");
+        REQUIRE(ok);
+        CHECK((*ok)[0][0] == "t:ok");
+        const long long kept = count_runs(copy);
+        INFO("stderr: " << r.err);
+        CHECK(kept > 0);
+        CHECK(kept < kResumeRuns);
+        CHECK(r.err.find("(" + std::to_string(kept) + " runs are stored and kept") != std::string::npos);
+    }
 }

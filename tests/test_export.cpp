@@ -25,7 +25,9 @@ TEST_CASE("export: IOHprofiler files, one folder per algorithm, one block per ru
              "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 20\n"
              "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 20\n";
     }
-    REQUIRE(pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --jobs 2").status == 0);
+    REQUIRE(pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --jobs 2 --out '" +
+                                   (dir / "c.sqlite").string() + "'")
+                .status == 0);
     const auto r =
         pride::test::run_pride("export '" + (dir / "c.sqlite").string() + "' --ioh '" + (dir / "ioh").string() + "'");
     REQUIRE(r.status == 0);

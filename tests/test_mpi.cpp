@@ -1,5 +1,5 @@
-// pride bench under mpirun (built with -DPRIDE_MPI=ON): two local ranks store the same values as
-// a threaded run. Compiled only into MPI builds.
+// pride bench under mpirun (built with -DPRIDE_MPI=ON): two local ranks, with one thread or two
+// each, store the same values as a threaded run. Compiled only into MPI builds.
 #ifdef PRIDE_HAVE_MPI
 #include <sqlite3.h>
 #include <unistd.h>
@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -52,13 +53,29 @@ TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[benc
                 .status == 0);
     // Open MPI leaks in its own libraries at exit, which LeakSanitizer (sanitizer builds) reports:
     // leak checking is off for the ranks, and only for them.
-    const std::string mpi = std::string("ASAN_OPTIONS=detect_leaks=0 '") + PRIDE_MPIEXEC + "' --allow-run-as-root --oversubscribe -np 2 '" +
-                            PRIDE_EXE + "' bench '" + config + "' --out '" + (dir / "mpi.sqlite").string() + "' > '" +
-                            (dir / "out").string() + "' 2>&1";
+    const std::string mpi = std::string("ASAN_OPTIONS=detect_leaks=0 '") + PRIDE_MPIEXEC +
+                            "' --allow-run-as-root --oversubscribe -np 2 '" + PRIDE_EXE + "' bench '" + config +
+                            "' --out '" + (dir / "mpi.sqlite").string() + "' > '" + (dir / "out").string() + "' 2>&1";
     REQUIRE(std::system(mpi.c_str()) == 0);
     const auto a = rows(dir / "threads.sqlite"), b = rows(dir / "mpi.sqlite");
     CHECK(a.size() == 12);
     CHECK(a == b);
+    {
+        // One summary line, from rank 0 alone, naming the ranks.
+        std::ifstream f(dir / "out");
+        std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+        INFO(text);
+        CHECK(text.find("12 runs stored in") != std::string::npos);
+        CHECK(text.find("2 MPI ranks") != std::string::npos);
+        CHECK(text.find("0 runs stored") == std::string::npos);
+    }
+    // Every rank runs --jobs threads (rank 0 beside handing runs out): the same values again.
+    const std::string threaded = std::string("ASAN_OPTIONS=detect_leaks=0 '") + PRIDE_MPIEXEC +
+                                 "' --allow-run-as-root --oversubscribe -np 2 '" + PRIDE_EXE + "' bench '" + config +
+                                 "' --jobs 2 --out '" + (dir / "mpi-jobs.sqlite").string() + "' > '" +
+                                 (dir / "out2").string() + "' 2>&1";
+    REQUIRE(std::system(threaded.c_str()) == 0);
+    CHECK(rows(dir / "mpi-jobs.sqlite") == a);
     fs::remove_all(dir);
 }
 #endif

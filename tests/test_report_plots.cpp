@@ -32,7 +32,8 @@ TEST_CASE("report: --plots writes convergence, final-value and path figures", "[
           << "\"\nstart = [0, 0]\ngoal = [9, 9]\n"
              "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n";
     }
-    const auto bench = pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --jobs 2");
+    const auto bench = pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --jobs 2 --out '" +
+                                              (dir / "c.sqlite").string() + "'");
     REQUIRE(bench.status == 0);
     const auto report = pride::test::run_pride("report '" + (dir / "c.sqlite").string() + "' --plots '" +
                                                (dir / "figures").string() + "'");

@@ -25,7 +25,9 @@ TEST_CASE("report: evaluations to reach the campaign's target", "[report][target
              "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 20\n"
              "[[algorithm]]\nid = \"sbplx\"\ntype = \"nlopt:LN_SBPLX\"\npop = 10\n";
     }
-    REQUIRE(pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --jobs 2").status == 0);
+    REQUIRE(pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --jobs 2 --out '" +
+                                   (dir / "c.sqlite").string() + "'")
+                .status == 0);
     const auto r = pride::test::run_pride("report '" + (dir / "c.sqlite").string() + "' --format csv");
     REQUIRE(r.status == 0);
     std::istringstream in(r.out);

@@ -4,9 +4,11 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <tuple>
 #include <vector>
 
@@ -16,12 +18,42 @@
 namespace pride::report {
 namespace {
 
-/// A name as a file name: anything but letters, digits, '-' and '.' becomes '_'.
+/// A name as a file name: anything but letters, digits, '-' and '.' becomes '_', and a leading
+/// '.' too (no "..", no hidden file).
 std::string safe(const std::string& name) {
-    std::string s = name;
+    std::string s = name.empty() ? std::string("_") : name;
     for (char& c : s)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
+    if (s.front() == '.') s.front() = '_';
     return s;
+}
+
+/// One folder name per algorithm id, each a safe file name, no two alike: an id that is a safe
+/// name already keeps it; one that had to change gets a hash of the id (FNV-1a) after it, so
+/// that "a/b" and "a_b" never share a folder; a clash left over (or the same name in another
+/// case, for case-insensitive file systems) is numbered.
+std::map<std::string, std::string> folder_names(const std::vector<std::string>& ids) {
+    const auto lower = [](std::string s) {
+        for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    };
+    std::map<std::string, std::string> out;
+    std::set<std::string> used;  // lower case
+    std::vector<std::string> changed;
+    for (const auto& id : ids)
+        if (safe(id) == id && used.insert(lower(id)).second)
+            out[id] = id;
+        else
+            changed.push_back(id);
+    for (const auto& id : changed) {
+        std::uint64_t h = 1469598103934665603ull;
+        for (const unsigned char c : id) h = (h ^ c) * 1099511628211ull;
+        std::string name = fmt::format("{}-{:08x}", safe(id), static_cast<std::uint32_t>(h ^ (h >> 32)));
+        for (int k = 2; !used.insert(lower(name)).second; ++k)
+            name = fmt::format("{}-{:08x}-{}", safe(id), static_cast<std::uint32_t>(h ^ (h >> 32)), k);
+        out[id] = name;
+    }
+    return out;
 }
 
 /// A name inside the .info file's double quotes.
@@ -60,6 +92,9 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
     ExportSummary summary;
     summary.folder = folder;
     summary.algorithms = runs.size();
+    std::vector<std::string> ids;
+    for (const auto& entry : runs) ids.push_back(entry.first);
+    const auto folders = folder_names(ids);
     for (const auto& [algorithm, by_problem] : runs) {
         // Suite problems (a suite and a fid, e.g. bbob) as IOHexperimenter writes them: one
         // function per fid (file IOHprofiler_f<fid>_<function>), all its instances and seeds as
@@ -81,7 +116,7 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
             fn.suite = !in_suite ? "pride" : *p.suite == "bbob" ? "BBOB" : *p.suite;
             for (const StoredRun* r : it->second) fn.runs[p.dim].emplace_back(in_suite ? p.instance : r->seed, r);
         }
-        const std::filesystem::path dir = std::filesystem::path(folder) / safe(algorithm);
+        const std::filesystem::path dir = std::filesystem::path(folder) / folders.at(algorithm);
         std::error_code ec;
         std::filesystem::create_directories(dir, ec);
         require(!ec, dir.string(), "cannot create the folder");
@@ -116,11 +151,13 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
                     info << fmt::format(", {}:{}|{}", number, r->evaluations,
                                         r->best ? fmt::format("{:.17g}", *r->best) : std::string("None"));
                 }
-                require(d.good(), (dir / data_folder / dat).string(), "cannot write the file");
+                d.close();  // the last buffer is written here: checked too (a full disk)
+                require(!d.fail(), (dir / data_folder / dat).string(), "cannot write the file");
                 ++summary.files;
             }
             info << "\n";
-            require(info.good(), dir.string(), "cannot write the files");
+            info.close();
+            require(!info.fail(), (dir / ("IOHprofiler_" + stem + ".info")).string(), "cannot write the file");
             ++summary.files;
         }
     }

@@ -1,6 +1,7 @@
 #pragma once
 // A campaign store as IOHprofiler files (the COCO-style `.info` and `.dat` files IOHanalyzer
-// reads; docs/campaigns.md, `pride export`): one folder per algorithm, one `.info` file and one
+// reads; docs/campaigns.md, `pride export`): one folder per algorithm (its id as a safe, unique
+// file name), one `.info` file and one
 // `.dat` file per problem it ran on.
 #include <cstddef>
 #include <string>

@@ -5,7 +5,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <set>
 #include <string_view>
@@ -239,10 +241,37 @@ std::set<std::string> names(const Connection& db, const char* sql, const std::st
     return out;
 }
 
+/// A store file shorter than its header says (cut short by a full disk or a careless copy):
+/// SQLite would report it as malformed somewhere later, or not at all for the pages never read.
+/// The header's page count holds only when its "version valid for" number equals the change
+/// counter, and without a write-ahead log (which may hold pages not yet in the file).
+void check_length(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    unsigned char h[100] = {};
+    if (!f.read(reinterpret_cast<char*>(h), sizeof h)) return;  // too short for a header: SQLite says so
+    if (std::string(reinterpret_cast<char*>(h), 16) != std::string("SQLite format 3\0", 16)) return;
+    const auto be32 = [&](int at) {
+        return (std::uint64_t{h[at]} << 24) | (std::uint64_t{h[at + 1]} << 16) | (std::uint64_t{h[at + 2]} << 8) |
+               std::uint64_t{h[at + 3]};
+    };
+    std::uint64_t page = (std::uint64_t{h[16]} << 8) | h[17];
+    if (page == 1) page = 65536;
+    const std::uint64_t pages = be32(28);
+    std::error_code ec;
+    const auto wal = std::filesystem::file_size(path + "-wal", ec);
+    if (be32(24) != be32(92) || pages == 0 || (!ec && wal > 0)) return;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size < page * pages)
+        throw DamagedStore(path, fmt::format("the file is truncated: {} bytes, where its header gives {} pages of {} "
+                                             "bytes ({} bytes)",
+                                             size, pages, page, page * pages));
+}
+
 }  // namespace
 
 CampaignStore read_store(const std::string& path) {
     require(std::filesystem::is_regular_file(path), path, "no such store");
+    check_length(path);
     const Connection db(path);
     const auto tables = names(db, "SELECT name FROM sqlite_master WHERE type = 'table'");
     if (!tables.count("campaign") && !tables.count("runs"))
