@@ -300,8 +300,9 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
     }
 #else
     require(launched_ranks() == 1, "pride bench",
-            "this pride was built without MPI (configure with -DPRIDE_MPI=ON); under mpirun every rank would "
-            "run the whole campaign");
+            "this pride was built without MPI, so under mpirun every rank would run the whole campaign; install "
+            "Open MPI (bash scripts/deps.sh) and rebuild with `cmake -S . -B build -DPRIDE_MPI=ON && cmake "
+            "--build build` (a build configured before Open MPI was installed keeps PRIDE_MPI off until told)");
 #endif
     require(jobs >= 1 && jobs <= 1024, "jobs", "must be in [1, 1024], got " + std::to_string(jobs));
     Store store(store_path);
