@@ -51,7 +51,8 @@ std::size_t utf8_length(std::string_view s, std::size_t i) {
     const unsigned char c = byte(i);
     std::size_t n = 0;
     unsigned char lo = 0x80, hi = 0xBF;  // the range of the second byte
-    if (c >= 0xC2 && c <= 0xDF) n = 2;
+    if (c >= 0xC2 && c <= 0xDF)
+        n = 2;
     else if (c >= 0xE0 && c <= 0xEF) {
         n = 3;
         if (c == 0xE0) lo = 0xA0;

@@ -34,8 +34,9 @@ int main(int argc, char** argv) {
     auto* run_cmd = app.add_subcommand("run", "one run of an algorithm on a continuous problem");
     run_cmd->add_option("--problem", run.problem, "problem name (see 'pride list')")->required();
     run_cmd->add_option("--dim", run.dim, "dimension")->required()->check(integer_in(1, max_count));
-    run_cmd->add_option("--instance", run.instance,
-                        "instance: 0 = the function as defined (default; BBOB: 1), K >= 1 shifted and rotated")
+    run_cmd
+        ->add_option("--instance", run.instance,
+                     "instance: 0 = the function as defined (default; BBOB: 1), K >= 1 shifted and rotated")
         ->check(integer_in(0, max_instance));
     run_cmd->add_option("--algo", run.algo, box_names + " or nlopt:NAME (see 'pride list')")->required();
     auto* evals = run_cmd->add_option("--evals", run.evals, "evaluation budget (default 10000 * dim)")

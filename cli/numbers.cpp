@@ -38,12 +38,14 @@ void check_integer(std::string_view text, std::int64_t min, std::uint64_t max, c
     std::uint64_t magnitude = 0;
     const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), magnitude);
     const bool integer = !digits.empty() && digits.front() >= '0' && digits.front() <= '9' &&
-                         ptr == digits.data() + digits.size() && (ec == std::errc() || ec == std::errc::result_out_of_range);
+                         ptr == digits.data() + digits.size() &&
+                         (ec == std::errc() || ec == std::errc::result_out_of_range);
     require(integer, where, fmt::format("must be an integer in {}, got '{}'", range, t));
     // |min| as an unsigned number without overflowing at INT64_MIN.
     const std::uint64_t below = min < 0 ? static_cast<std::uint64_t>(-(min + 1)) + 1 : 0;
-    const bool in_range = ec == std::errc() && (negative ? min < 0 && magnitude <= below
-                                                         : magnitude <= max && (min <= 0 || magnitude >= static_cast<std::uint64_t>(min)));
+    const bool in_range = ec == std::errc() &&
+                          (negative ? min < 0 && magnitude <= below
+                                    : magnitude <= max && (min <= 0 || magnitude >= static_cast<std::uint64_t>(min)));
     require(in_range, where, fmt::format("must be an integer in {}, got {}", range, t));
 }
 

@@ -5,10 +5,16 @@
 // below is one section of that page; a new kind of bad input is a new row here and there.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "framework/problem.hpp"
+#include "problems/continuous/catalog.hpp"
+#include "problems/continuous/function.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 
@@ -31,7 +37,9 @@ class Inputs {
         const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
         dir_.write("m.map", pride::test::slurp(map));
         dir_.write("empty.map", "");
-        dir_.write("binary.map", std::string("\x7f" "ELF\x02\x01\x01\0\0\x1b[31m\xff\xfe", 16));
+        dir_.write("binary.map", std::string("\x7f"
+                                             "ELF\x02\x01\x01\0\0\x1b[31m\xff\xfe",
+                                             16));
         dir_.write("latin1.map", "type octile\nheight 2\nwidth 2\nmap\n.\xe9\n..\n");
         dir_.write("huge.map", "type octile\nheight 1000000000000\nwidth 1000000000000\nmap\n");
         dir_.write("wide.map", "type octile\nheight 100000\nwidth 100000\nmap\n");
@@ -48,8 +56,7 @@ class Inputs {
     }
     /// `args` with FILES replaced by the folder of inputs (quoted by the row itself).
     std::string expand(std::string args) const {
-        for (std::size_t at; (at = args.find("FILES")) != std::string::npos;)
-            args.replace(at, 5, dir_.path().string());
+        for (std::size_t at; (at = args.find("FILES")) != std::string::npos;) args.replace(at, 5, dir_.path().string());
         return args;
     }
     /// A campaign file: one continuous problem and one algorithm, with `budget`, `problem` and
@@ -62,9 +69,10 @@ class Inputs {
     }
     /// A campaign file with one grid problem on m.map (the 10x10 map of file 000).
     std::string grid_campaign(const std::string& name, const std::string& problem) const {
-        return dir_.write(name, "name = \"g\"\nseeds = 1\n[budget]\niterations = 5\n[[problem]]\nid = \"g\"\n"
-                                "type = \"grid\"\nmap = \"m.map\"\n" +
-                                    problem + "\n[[algorithm]]\nid = \"p\"\ntype = \"pso\"\n");
+        return dir_.write(name,
+                          "name = \"g\"\nseeds = 1\n[budget]\niterations = 5\n[[problem]]\nid = \"g\"\n"
+                          "type = \"grid\"\nmap = \"m.map\"\n" +
+                              problem + "\n[[algorithm]]\nid = \"p\"\ntype = \"pso\"\n");
     }
     const TempDir& dir() const { return dir_; }
 
@@ -136,7 +144,7 @@ TEST_CASE("cli contract: run refuses every bad number with its range", "[cli][co
                        {run + "--param pop=1e300", {"pop", "integer"}},
                        {run + "--param nosuch=1", {"pso", "unknown parameter 'nosuch'"}},
                        {run + "--param pop", {"pop", "NAME=VALUE"}},
-                       {run + "--pop 1e12 --bogus", {"--bogus"}},
+                       {run + "--evals 10 --bogus", {"--bogus"}},
                        {run + "--bogus $'\\x1b[31m'", {"\\x1b[31m"}},
                    });
 }
@@ -192,7 +200,7 @@ TEST_CASE("cli contract: path refuses bad cells, numbers and maps", "[cli][contr
                        {run + "--objective weighted --weights 1,1", {"--weights", "three weights"}},
                        {"path --map FILES/empty.map --algo pso --start 0,0 --goal 1,1", {"empty.map"}},
                        {"path --map FILES/binary.map --algo pso --start 0,0 --goal 1,1", {"binary.map:1"}},
-                       {"path --map FILES/latin1.map --algo pso --start 0,0 --goal 1,1", {"latin1.map:5", "\\xe9"}},
+                       {"path --map FILES/latin1.map --algo pso --start 0,0 --goal 1,1", {"latin1.map:5", "\\xE9"}},
                        {"path --map FILES/huge.map --algo pso --start 0,0 --goal 1,1", {"huge.map"}},
                        {"path --map FILES/nosuch.map --algo pso --start 0,0 --goal 1,1", {"nosuch.map"}},
                        {"path --map FILES/folder --algo pso --start 0,0 --goal 1,1", {"folder"}},
@@ -222,7 +230,7 @@ TEST_CASE("cli contract: pareto, scen and roughset refuse bad input", "[cli][con
                        {pareto + "--start 0,0 --goal 9,9 --inflate nan", {"--inflate", "[0, 1000]"}},
                        {"pareto --map FILES/m.map --start 0,0 --goal 9,9 --objectives length,bogus", {"--objectives"}},
                        {"scen FILES/empty.scen", {"empty.scen"}},
-                       {"scen FILES/binary.scen", {"binary.scen:1", "\\x1b"}},
+                       {"scen FILES/binary.scen", {"binary.scen:1", "UTF-8"}},
                        {"scen FILES/nosuch.scen", {"nosuch.scen"}},
                        {"roughset FILES/empty.csv", {"empty.csv"}},
                        {"roughset FILES/binary.csv", {"binary.csv"}},
@@ -235,41 +243,42 @@ TEST_CASE("cli contract: campaign files name the file, line and key", "[cli][con
     const Inputs in;
     const std::string out = " --out FILES/out.sqlite";
     auto bench = [&](const std::string& file) { return "bench '" + file + "'" + out; };
-    check_rows(in, {
-                       {"bench FILES/empty.toml" + out, {"empty.toml", "no [[problem]]"}},
-                       {"bench FILES/binary.toml" + out, {"binary.toml:1"}},
-                       {"bench FILES/duplicate.toml" + out, {"duplicate.toml:2", "name"}},
-                       {"bench FILES/unknown.toml" + out, {"unknown.toml:3", "unknown key 'bogus'"}},
-                       {"bench FILES/nosuch.toml" + out, {"nosuch.toml"}},
-                       {bench(in.campaign("nan-param.toml", "evaluations = 100", "", "c1 = nan")),
-                        {"nan-param.toml:9", "c1", "finite number"}},
-                       {bench(in.campaign("range-param.toml", "evaluations = 100", "", "c1 = 99")),
-                        {"range-param.toml:9", "c1", "[0, 4]"}},
-                       {bench(in.campaign("unknown-param.toml", "evaluations = 100", "", "nosuch = 1")),
-                        {"unknown-param.toml:9", "nosuch"}},
-                       {bench(in.campaign("float-evals.toml", "evaluations = 1e3", "", "")),
-                        {"float-evals.toml:4", "'evaluations' must be an integer"}},
-                       {bench(in.campaign("huge-evals.toml", "evaluations = 9223372036854775807", "", "")),
-                        {"huge-evals.toml:4", "evaluations", "1000000000000000"}},
-                       {bench(in.campaign("neg-iters.toml", "iterations = -1", "", "")), {"neg-iters.toml:4", "iterations"}},
-                       {bench(in.campaign("nan-target.toml", "evaluations = 10\ntarget = nan", "", "")),
-                        {"nan-target.toml:5", "target", "finite number"}},
-                       {bench(in.campaign("neg-seeds.toml", "evaluations = 10", "", "", "seeds = -1")),
-                        {"neg-seeds.toml:2", "seeds"}},
-                       {bench(in.campaign("neg-dim.toml", "evaluations = 10", "dim = -1", "")), {"neg-dim.toml", "dim"}},
-                       {bench(in.grid_campaign("outside.toml", "start = [50, 0]\ngoal = [9, 9]")),
-                        {"outside.toml", "start", "outside"}},
-                       {bench(in.grid_campaign("blocked.toml", "start = [5, 1]\ngoal = [9, 9]")),
-                        {"blocked.toml", "start", "blocked"}},
-                       {bench(in.grid_campaign("nan-weights.toml",
-                                               "start = [0, 0]\ngoal = [9, 9]\nobjective = \"weighted\"\n"
-                                               "weights = [nan, 1, 1]")),
-                        {"nan-weights.toml", "weights"}},
-                       {bench(in.grid_campaign("inf-lambda.toml",
-                                               "start = [0, 0]\ngoal = [9, 9]\nobjective = \"hswoa\"\nlambda = inf")),
-                        {"inf-lambda.toml", "lambda", "finite number"}},
-                       {"bench FILES/folder" + out, {"folder"}},
-                   });
+    check_rows(
+        in, {
+                {"bench FILES/empty.toml" + out, {"empty.toml", "missing key 'name'"}},
+                {"bench FILES/binary.toml" + out, {"binary.toml:1"}},
+                {"bench FILES/duplicate.toml" + out, {"duplicate.toml:2", "name"}},
+                {"bench FILES/unknown.toml" + out, {"unknown.toml:3", "unknown key 'bogus'"}},
+                {"bench FILES/nosuch.toml" + out, {"nosuch.toml"}},
+                {bench(in.campaign("nan-param.toml", "evaluations = 100", "", "c1 = nan")),
+                 {"nan-param.toml:10", "c1", "finite number"}},
+                {bench(in.campaign("range-param.toml", "evaluations = 100", "", "c1 = 99")),
+                 {"range-param.toml:10", "c1", "[0, 10]"}},
+                {bench(in.campaign("unknown-param.toml", "evaluations = 100", "", "nosuch = 1")),
+                 {"unknown-param.toml:10", "nosuch"}},
+                {bench(in.campaign("float-evals.toml", "evaluations = 1e3", "", "")),
+                 {"float-evals.toml:4", "'evaluations' must be an integer"}},
+                {bench(in.campaign("huge-evals.toml", "evaluations = 9223372036854775807", "", "")),
+                 {"huge-evals.toml:4", "'evaluations' must be in [1, 1000000000000000]"}},
+                {bench(in.campaign("neg-iters.toml", "iterations = -1", "", "")), {"neg-iters.toml:4", "iterations"}},
+                {bench(in.campaign("nan-target.toml", "evaluations = 10\ntarget = nan", "", "")),
+                 {"nan-target.toml:5", "'target' must be a finite number"}},
+                {bench(in.campaign("neg-seeds.toml", "evaluations = 10", "", "", "seeds = -1")),
+                 {"neg-seeds.toml:2", "seeds"}},
+                {bench(in.campaign("neg-dim.toml", "evaluations = 10", "dim = -1", "")), {"neg-dim.toml", "dim"}},
+                {bench(in.grid_campaign("outside.toml", "start = [50, 0]\ngoal = [9, 9]")),
+                 {"outside.toml", "start", "outside"}},
+                {bench(in.grid_campaign("blocked.toml", "start = [5, 1]\ngoal = [9, 9]")),
+                 {"blocked.toml", "start", "blocked"}},
+                {bench(in.grid_campaign("nan-weights.toml",
+                                        "start = [0, 0]\ngoal = [9, 9]\nobjective = \"weighted\"\n"
+                                        "weights = [nan, 1, 1]")),
+                 {"nan-weights.toml", "weights"}},
+                {bench(in.grid_campaign("inf-lambda.toml",
+                                        "start = [0, 0]\ngoal = [9, 9]\nobjective = \"hswoa\"\nlambda = inf")),
+                 {"inf-lambda.toml", "lambda", "finite number"}},
+                {"bench FILES/folder" + out, {"folder"}},
+            });
     CHECK(!std::filesystem::exists(in.dir().path() / "out.sqlite"));
 }
 
@@ -282,4 +291,37 @@ TEST_CASE("cli contract: report and export refuse what is not a store", "[cli][c
                        {"export FILES/nosuch.sqlite --ioh FILES/ioh", {"nosuch.sqlite"}},
                    });
     CHECK(!std::filesystem::exists(in.dir().path() / "ioh"));
+}
+
+TEST_CASE("problems: no function is NaN at a finite point far outside its box", "[problems][contract]") {
+    // Far out, formulas overflow (x^4 - 16 x^2 is inf - inf, cos(2 pi x) is cos(inf)): the value
+    // there is beyond the largest double, so it is +inf, or finite where the function is bounded
+    // (Ackley: 20 at every integer point far out). Scalar and batch evaluation agree.
+    int checked = 0;
+    for (const auto& item : pride::continuous::catalog().items()) {
+        const std::size_t dim =
+            item.entry.fixed_dim ? item.entry.fixed_dim : std::max<std::size_t>(item.entry.min_dim, 2);
+        auto f = pride::continuous::make_function(item.name, static_cast<std::int64_t>(dim));
+        for (const double v : {1e308, -1e308, 1e200, -1e160, 1e20, -3e15}) {
+            INFO(item.name << " at " << v);
+            const std::vector<double> x(dim, v);
+            const double value = f.evaluate(x);
+            CHECK(!std::isnan(value));
+            pride::Matrix m(static_cast<Eigen::Index>(dim), 1);
+            for (std::size_t i = 0; i < dim; ++i) m(static_cast<Eigen::Index>(i), 0) = v;
+            std::vector<double> batch(1);
+            f.evaluate_batch(m, batch);
+            CHECK(!std::isnan(batch[0]));
+            if (!f.noisy()) CHECK((batch[0] == value || (std::isinf(value) && std::isinf(batch[0]))));
+            ++checked;
+        }
+    }
+    CHECK(checked >= 6 * 70);
+    auto ackley = pride::continuous::make_function("ackley", 2);
+    CHECK(ackley.evaluate(std::vector<double>{1e308, 1e308}) == Approx(20.0));
+    CHECK(ackley.evaluate(std::vector<double>{-1e300, 1e16}) == Approx(20.0));
+    auto rastrigin = pride::continuous::make_function("rastrigin", 2);
+    CHECK(rastrigin.evaluate(std::vector<double>{1e308, 0.0}) == std::numeric_limits<double>::infinity());
+    // A NaN coordinate is not an overflow: it stays NaN (the run state turns it into +inf).
+    CHECK(std::isnan(rastrigin.evaluate(std::vector<double>{std::nan(""), 0.0})));
 }

@@ -824,7 +824,6 @@ TEST_CASE("framework: UniformInit and SuggestedInit", "[framework][init]") {
     CHECK((c.array() == 0.125).all());
 }
 
-
 // ---------------------------------------------------------------------------------------------
 // Registry
 

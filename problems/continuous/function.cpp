@@ -67,7 +67,8 @@ void Function::evaluate_batch(MatrixView points, std::span<double> values) {
     const auto rows = static_cast<std::size_t>(points.rows());
     for (std::size_t j = 0; j < values.size(); ++j)
         if (std::isnan(values[j]))
-            values[j] = overflowed(values[j], std::span<const double>(points.col(static_cast<Eigen::Index>(j)).data(), rows));
+            values[j] =
+                overflowed(values[j], std::span<const double>(points.col(static_cast<Eigen::Index>(j)).data(), rows));
 }
 
 std::vector<double> Function::optimum_point() const {
