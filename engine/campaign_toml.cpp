@@ -210,6 +210,8 @@ Campaign read_campaign(const std::string& path) {
     Campaign c;
     c.file = path;
     toml::table root;
+    if (std::error_code ec; std::filesystem::is_directory(path, ec))
+        throw InputError(path + ": is a folder, not a campaign file");
     try {
         root = toml::parse_file(path);
     } catch (const toml::parse_error& e) {

@@ -562,13 +562,14 @@ TEST_CASE("GA reaches 1e-6 on the 10-D sphere within 20000 evaluations", "[algor
 
 TEST_CASE("GA with its default settings on the 10-D sphere within 20000 evaluations", "[algorithms][convergence]") {
     // Population 50 and one elite (the registry's defaults). Measured over seeds 1-5: best_f
-    // MEASURE_GA_DEFAULTS; the bound leaves a factor of ten.
+    // 3.1e-4, 3.2e-4, 3.1e-5, 2.0e-4, 5.9e-4 from initial bests of 30-46; the bound leaves a
+    // factor of ten over the worst seed.
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
         INFO("seed " << seed);
         const auto r = ga().run(pride::continuous::Sphere(10), pride::max_evaluations(20000), seed);
-        WARN("measure ga defaults seed " << seed << " best " << r.best_f << " first " << r.history.front());
         CHECK(r.evaluations == 20000);
-        CHECK(r.best_f < 1e-2 * r.history.front());
+        CHECK(r.best_f < 6e-3);
+        CHECK(r.best_f < 1e-3 * r.history.front());
     }
 }
 
@@ -591,21 +592,22 @@ double random_search(const P& problem, std::int64_t n, std::uint64_t seed) {
 
 TEST_CASE("PSO and GA improve on a shifted multimodal problem", "[algorithms][convergence]") {
     // 20,000 evaluations on the 5-D shifted Rastrigin. Random search with the same budget reaches
-    // 10.6-18.1 (seeds 1-3, as measured below every time); PSO (population 20) and the GA
-    // (population 20, 2 elites) MEASURE_RASTRIGIN. The bounds sit between: a broken search that
-    // only samples does not pass them.
+    // 12.1-16.7 (seeds 1-5, computed below every time). Measured, seeds 1-5: PSO (population 20)
+    // 0, 3.98, 0, 0, 0 (seed 2 ends in a local minimum); the GA (population 20, 2 elites)
+    // 4e-8 to 3e-7. The bounds sit far below random search: a search that only samples fails them.
     const auto problem = pride::continuous::Shifted<pride::continuous::Rastrigin>(5);
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
         INFO("seed " << seed);
         const auto rp = pso(20).run(problem, pride::max_evaluations(20000), seed);
         const auto rg = ga(20, 2).run(problem, pride::max_evaluations(20000), seed);
         const double random = random_search(problem, 20000, seed);
-        WARN("measure rastrigin seed " << seed << " pso " << rp.best_f << " ga " << rg.best_f << " random " << random);
         CHECK(random > 5.0);
         CHECK(rp.best_f < 0.2 * rp.history.front());
         CHECK(rg.best_f < 0.2 * rg.history.front());
         CHECK(rp.best_f < 0.5 * random);
         CHECK(rg.best_f < 0.5 * random);
+        CHECK(rp.best_f < 5.0);
+        CHECK(rg.best_f < 1e-5);
     }
 }
 

@@ -277,7 +277,7 @@ TEST_CASE("cli contract: campaign files name the file, line and key", "[cli][con
                 {bench(in.grid_campaign("inf-lambda.toml",
                                         "start = [0, 0]\ngoal = [9, 9]\nobjective = \"hswoa\"\nlambda = inf")),
                  {"inf-lambda.toml", "lambda", "finite number"}},
-                {"bench FILES/folder" + out, {"folder"}},
+                {"bench FILES/folder" + out, {"folder", "not a campaign file"}},
             });
     CHECK(!std::filesystem::exists(in.dir().path() / "out.sqlite"));
 }

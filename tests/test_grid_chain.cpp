@@ -481,13 +481,14 @@ TEST_CASE("chain GA: on the bundled maps the best of five seeds reaches the orac
 }
 
 TEST_CASE("chain GA: with pride path's defaults (N = 20, T = 50) on the bundled maps", "[grid][chain][ga]") {
-    // What a user gets without options. Measured (seeds 1..5, gap to the oracle's optimum):
-    // MEASURE_CHAIN_DEFAULTS. The bounds leave room over the worst seed.
+    // What a user gets without options. Measured (seeds 1..5, gap to the oracle's optimum): 0 on
+    // every seed on 20x20; 0.010-0.035 on 40x40; 0.008-0.076 on 50x50, from initial gaps of
+    // 0.05-0.27. The bounds leave room over the worst seed.
     struct Case {
         const char* map;
         double each;
     };
-    for (const Case c : {Case{"file002-20x20", 0.10}, Case{"file002-40x40", 0.25}, Case{"file003-50x50", 0.25}}) {
+    for (const Case c : {Case{"file002-20x20", 0.02}, Case{"file002-40x40", 0.08}, Case{"file003-50x50", 0.15}}) {
         const auto problem = bundled_problem<LengthObjective>(c.map);
         Oracle oracle;
         const double optimum = oracle.solve(problem.map(), problem.start(), problem.goal(), LengthObjective{});
@@ -499,8 +500,6 @@ TEST_CASE("chain GA: with pride path's defaults (N = 20, T = 50) on the bundled 
             CHECK(r.evaluations == 20 + 50 * 19);
             const double gap = (r.best_f - optimum) / optimum;
             INFO(c.map << " seed " << seed << " gap " << gap);
-            WARN("measure chain " << c.map << " seed " << seed << " gap " << gap << " first "
-                                  << (r.history.front() - optimum) / optimum);
             CHECK(gap >= -1e-12);
             CHECK(gap <= c.each);
             CHECK(r.best_f <= r.history.front());
