@@ -33,8 +33,7 @@ int run_command(const RunOptions& o, std::ostream& out) {
     budget.wall_ms = o.wall_ms;
     budget.threads = o.threads;
     engine::check(algorithm, problem, budget);
-    require(o.seed >= 0, "seed", "must be >= 0, got " + std::to_string(o.seed));
-    const engine::RunResult r = engine::run(algorithm, problem, budget, static_cast<std::uint64_t>(o.seed));
+    const engine::RunResult r = engine::run(algorithm, problem, budget, o.seed);
     if (o.json) {
         out << fmt::format(
             "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"instance\": {}, \"seed\": {}, \"best_f\": {}, "
@@ -67,13 +66,13 @@ int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out) {
         points.push_back(parse_point(o.x, "--x"));
     }
     const std::size_t dim = points.front().size();
+    if (o.dim) require(*o.dim >= 1, "dim", "must be an integer >= 1, got " + std::to_string(*o.dim));
     if (o.dim)
         require(static_cast<std::int64_t>(dim) == *o.dim, o.x == "-" ? "stdin" : "--x",
                 "expected " + std::to_string(*o.dim) + " coordinates (--dim), got " + std::to_string(dim));
-    require(o.seed >= 0, "seed", "must be >= 0, got " + std::to_string(o.seed));
     auto problem =
         continuous::make_function(o.problem, static_cast<std::int64_t>(dim), o.instance, o.x == "-" ? "stdin" : "--x");
-    problem.reseed(static_cast<std::uint64_t>(o.seed));
+    problem.reseed(o.seed);
     std::string text;
     for (const auto& x : points) text += fmt::format("{:.17g}\n", problem.evaluate(x));
     out << text;

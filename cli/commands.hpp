@@ -21,7 +21,7 @@ struct RunOptions {
     std::optional<double> target;
     std::optional<double> wall_ms;
     std::optional<std::int64_t> pop;
-    std::int64_t seed = 1;
+    std::uint64_t seed = 1;           // every 64-bit value is a seed (flags.hpp: max_seed)
     std::int64_t threads = 1;         // evaluation threads (engine::Budget::threads)
     std::vector<std::string> params;  // "name=value"
     bool json = false;
@@ -36,7 +36,7 @@ struct EvalOptions {
     std::string x;  // "v1,v2,..." or "-" for stdin
     std::optional<std::int64_t> dim;
     std::optional<std::int64_t> instance;
-    std::int64_t seed = 0;  // the noise of a noisy function (quartic-noise)
+    std::uint64_t seed = 0;  // the noise of a noisy function (quartic-noise)
 };
 int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out);
 

@@ -1,6 +1,11 @@
 #include "cli/flags.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <map>
+
+#include "cli/numbers.hpp"
 
 namespace pride::cli {
 
@@ -30,13 +35,91 @@ std::string user_message(const InputError& e) {
                                                           {"instance", "--instance"},
                                                           {"objectives", "--objectives"}};
     const std::string& where = e.where();
-    if (where.empty()) return e.what();
+    if (where.empty()) return printable(e.what());
     const auto space = where.find(' ');
     const std::string head = where.substr(0, space), rest = space == std::string::npos ? "" : where.substr(space);
-    if (head == "parameter") return "--param" + rest + ": " + e.detail();
+    if (head == "parameter") return printable("--param" + rest + ": " + e.detail());
     const auto it = flags.find(head);
-    if (it == flags.end()) return e.what();
-    return it->second + rest + ": " + e.detail();
+    if (it == flags.end()) return printable(e.what());
+    return printable(it->second + rest + ": " + e.detail());
+}
+
+namespace {
+/// The length of the UTF-8 sequence starting at s[i] (2 to 4 bytes, no overlong forms, no
+/// surrogates, nothing past U+10FFFF), or 0 when there is none.
+std::size_t utf8_length(std::string_view s, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+    const unsigned char c = byte(i);
+    std::size_t n = 0;
+    unsigned char lo = 0x80, hi = 0xBF;  // the range of the second byte
+    if (c >= 0xC2 && c <= 0xDF)
+        n = 2;
+    else if (c >= 0xE0 && c <= 0xEF) {
+        n = 3;
+        if (c == 0xE0) lo = 0xA0;
+        if (c == 0xED) hi = 0x9F;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        n = 4;
+        if (c == 0xF0) lo = 0x90;
+        if (c == 0xF4) hi = 0x8F;
+    }
+    if (n == 0 || i + n > s.size()) return 0;
+    if (byte(i + 1) < lo || byte(i + 1) > hi) return 0;
+    for (std::size_t k = 2; k < n; ++k)
+        if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+    return n;
+}
+}  // namespace
+
+std::string printable(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x20 && c < 0x7F) {
+            out += text[i++];
+        } else if (c == '\n' || c == '\r' || c == '\t') {
+            out += c == '\n' ? "\\n" : c == '\r' ? "\\r" : "\\t";
+            ++i;
+        } else if (const std::size_t n = c >= 0x80 ? utf8_length(text, i) : 0) {
+            out.append(text.substr(i, n));
+            i += n;
+        } else {
+            out += fmt::format("\\x{:02x}", c);
+            ++i;
+        }
+    }
+    return out;
+}
+
+CLI::Validator integer_in(std::int64_t min, std::uint64_t max) {
+    return CLI::Validator(
+        [min, max](std::string& value) {
+            try {
+                check_integer(value, min, max, "");
+            } catch (const InputError& e) {
+                return e.detail();
+            }
+            return std::string();
+        },
+        "");
+}
+
+CLI::Validator finite_in(double min, double max) {
+    return CLI::Validator(
+        [min, max](std::string& value) {
+            const bool bounded = std::isfinite(min) || std::isfinite(max);
+            const std::string range = bounded ? fmt::format(" in [{}, {}]", min, max) : "";
+            double v = 0.0;
+            try {
+                v = parse_finite(value, "");
+            } catch (const InputError&) {
+                return fmt::format("must be a finite number{}, got '{}'", range, value);
+            }
+            if (v < min || v > max) return fmt::format("must be{}, got {}", range, value);
+            return std::string();
+        },
+        "");
 }
 
 }  // namespace pride::cli

@@ -63,9 +63,8 @@ engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec_out) {
     budget.evaluations = o.evals;
     budget.threads = o.threads;
     engine::check(algorithm, problem, budget);
-    require(o.seed >= 0, "--seed", "must be >= 0, got " + std::to_string(o.seed));
     if (spec_out) *spec_out = spec;
-    return engine::run(algorithm, problem, budget, static_cast<std::uint64_t>(o.seed));
+    return engine::run(algorithm, problem, budget, o.seed);
 }
 
 int path_command(const PathOptions& o, std::ostream& out) {

@@ -25,7 +25,7 @@ struct PathOptions {
     std::optional<std::int64_t> pop;
     std::optional<std::int64_t> iters;
     std::optional<std::int64_t> evals;
-    std::int64_t seed = 1;
+    std::uint64_t seed = 1;
     std::int64_t threads = 1;  // evaluation threads (engine::Budget::threads)
     std::int64_t inflate = 0;
     std::int64_t waypoints = 3;

@@ -78,19 +78,24 @@ int run_main(int argc, char** argv) {
     RunOptions run;
     auto* run_cmd = app.add_subcommand("run", "one run of an algorithm on a continuous problem");
     run_cmd->add_option("--problem", run.problem, "problem name (see 'pride list')")->required();
-    run_cmd->add_option("--dim", run.dim, "dimension")->required();
-    run_cmd->add_option("--instance", run.instance,
-                        "instance: 0 = the function as defined (default; BBOB: 1), K >= 1 shifted and rotated");
+    run_cmd->add_option("--dim", run.dim, "dimension")->required()->check(integer_in(1, max_count));
+    run_cmd
+        ->add_option("--instance", run.instance,
+                     "instance: 0 = the function as defined (default; BBOB: 1), K >= 1 shifted and rotated")
+        ->check(integer_in(0, max_instance));
     run_cmd->add_option("--algo", run.algo, box_names + " or nlopt:NAME (see 'pride list')")->required();
-    auto* evals = run_cmd->add_option("--evals", run.evals, "evaluation budget (default 10000 * dim)");
-    run_cmd->add_option("--iters", run.iters, "iteration limit")->excludes(evals);
-    run_cmd->add_option("--target", run.target, "stop once the best value is <= this");
-    run_cmd->add_option("--wall-ms", run.wall_ms, "stop after this many milliseconds");
-    run_cmd->add_option("--pop", run.pop, "population size (NLopt: evaluations per recorded iteration)");
-    run_cmd->add_option("--seed", run.seed, "random seed (default 1)");
+    auto* evals = run_cmd->add_option("--evals", run.evals, "evaluation budget (default 10000 * dim)")
+                      ->check(integer_in(1, max_count));
+    run_cmd->add_option("--iters", run.iters, "iteration limit")->excludes(evals)->check(integer_in(0, max_count));
+    run_cmd->add_option("--target", run.target, "stop once the best value is <= this")->check(finite_in());
+    run_cmd->add_option("--wall-ms", run.wall_ms, "stop after this many milliseconds")->check(finite_in());
+    run_cmd->add_option("--pop", run.pop, "population size (NLopt: evaluations per recorded iteration)")
+        ->check(integer_in(1, max_count));
+    run_cmd->add_option("--seed", run.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
     run_cmd->add_option("--threads", run.threads,
                         "threads evaluating a population (default 1; continuous functions use one: they are cheaper "
-                        "than a thread's wake-up)");
+                        "than a thread's wake-up)")
+        ->check(integer_in(1, 256));
     run_cmd->add_option("--param", run.params, "algorithm parameter NAME=VALUE (repeatable)");
     run_cmd->add_flag("--json", run.json, "print one JSON object");
 
@@ -98,9 +103,12 @@ int run_main(int argc, char** argv) {
     auto* eval_cmd = app.add_subcommand("eval", "the value of a continuous problem at given points");
     eval_cmd->add_option("--problem", eval.problem, "problem name (see 'pride list')")->required();
     eval_cmd->add_option("--x", eval.x, "V1,V2,... or - to read one point per line from stdin")->required();
-    eval_cmd->add_option("--dim", eval.dim, "check that every point has this many coordinates");
-    eval_cmd->add_option("--instance", eval.instance, "instance (as for pride run)");
-    eval_cmd->add_option("--seed", eval.seed, "the noise stream of a noisy function (default 0)");
+    eval_cmd->add_option("--dim", eval.dim, "check that every point has this many coordinates")
+        ->check(integer_in(1, max_count));
+    eval_cmd->add_option("--instance", eval.instance, "instance (as for pride run)")
+        ->check(integer_in(0, max_instance));
+    eval_cmd->add_option("--seed", eval.seed, "the noise stream of a noisy function (default 0)")
+        ->check(integer_in(0, max_seed));
 
     PathOptions path;
     auto* path_cmd = app.add_subcommand(
@@ -117,18 +125,25 @@ int run_main(int argc, char** argv) {
         "--init", path.init,
         "uniform, walk (random feasible walks), rules (file 000's rough-set rule walks) or sitp (file "
         "002's SITP walks; also for --encoding chain); default: rules for ilso, uniform for the others");
-    path_cmd->add_option("--pop", path.pop, "population size (default 20)");
+    path_cmd->add_option("--pop", path.pop, "population size (default 20)")->check(integer_in(1, max_count));
     auto* path_iters =
-        path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)");
-    path_cmd->add_option("--evals", path.evals, "evaluation limit")->excludes(path_iters);
-    path_cmd->add_option("--seed", path.seed, "random seed (default 1)");
+        path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)")
+            ->check(integer_in(0, max_count));
+    path_cmd->add_option("--evals", path.evals, "evaluation limit")
+        ->excludes(path_iters)
+        ->check(integer_in(1, max_count));
+    path_cmd->add_option("--seed", path.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
     path_cmd->add_option("--threads", path.threads,
                          "threads evaluating a population of genotypes (line and free encodings; default 1); the "
-                         "same result as one thread");
-    path_cmd->add_option("--inflate", path.inflate, "obstacle inflation radius in cells (default 0)");
-    path_cmd->add_option("--waypoints", path.waypoints, "waypoints of the free encoding (default 3)");
+                         "same result as one thread")
+        ->check(integer_in(1, 256));
+    path_cmd->add_option("--inflate", path.inflate, "obstacle inflation radius in cells (default 0)")
+        ->check(integer_in(0, 1000));
+    path_cmd->add_option("--waypoints", path.waypoints, "waypoints of the free encoding (default 3)")
+        ->check(integer_in(1, 1000));
     path_cmd->add_option("--weights", path.weights, "L,T,A weights of the weighted objective (default 1,1,0.1)");
-    path_cmd->add_option("--lambda", path.lambda, "turn weight of the hswoa objective (default 1)");
+    path_cmd->add_option("--lambda", path.lambda, "turn weight of the hswoa objective (default 1)")
+        ->check(finite_in(0, pride::engine::max_weight));
     path_cmd->add_flag("--corner-cutting", path.corner_cutting, "allow diagonal steps past a blocked corner");
     path_cmd->add_flag("--oracle", path.oracle, "add the exact optimum and the gap to it");
     path_cmd->add_flag("--json", path.json, "print one JSON object");
@@ -145,7 +160,8 @@ int run_main(int argc, char** argv) {
     pareto_cmd->add_option("--goal", pareto.goal, "goal cell X,Y")->required();
     pareto_cmd->add_option("--objectives", pareto.objectives, "length,turns, length,angle or length,angle,turns")
         ->required();
-    pareto_cmd->add_option("--inflate", pareto.inflate, "obstacle inflation radius in cells (default 0)");
+    pareto_cmd->add_option("--inflate", pareto.inflate, "obstacle inflation radius in cells (default 0)")
+        ->check(integer_in(0, 1000));
     pareto_cmd->add_flag("--corner-cutting", pareto.corner_cutting, "allow diagonal steps past a blocked corner");
     pareto_cmd->add_flag("--json", pareto.json, "print one JSON object");
     pareto_cmd->add_option("--svg", pareto.svg, "draw the map and every path of the front to this SVG file");
@@ -160,7 +176,8 @@ int run_main(int argc, char** argv) {
     BenchOptions bench;
     auto* bench_cmd = app.add_subcommand("bench", "run a campaign file: every (problem, algorithm, seed), resumable");
     bench_cmd->add_option("config", bench.config, "the campaign file (TOML)")->required();
-    bench_cmd->add_option("--jobs", bench.jobs, "parallel runs (default: the number of cores)");
+    bench_cmd->add_option("--jobs", bench.jobs, "parallel runs (default: the number of cores)")
+        ->check(integer_in(1, 1024));
     bench_cmd->add_option("--out", bench.out,
                           "the SQLite store (default: the name of CONFIG with .sqlite, in the working folder)");
 
@@ -219,13 +236,13 @@ int run_main(int argc, char** argv) {
     } catch (const CLI::Success& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        fmt::print(stderr, "pride: {}\n", e.what());
+        fmt::print(stderr, "pride: {}\n", printable(e.what()));
         return 2;
     } catch (const pride::InputError& e) {
         fmt::print(stderr, "pride: {}\n", user_message(e));
         return 2;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "pride: internal error: {}\n", e.what());
+        fmt::print(stderr, "pride: internal error: {}\n", printable(e.what()));
         return 1;
     }
 }

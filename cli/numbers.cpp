@@ -30,6 +30,25 @@ double parse_finite(std::string_view text, const std::string& where) {
     return v;
 }
 
+void check_integer(std::string_view text, std::int64_t min, std::uint64_t max, const std::string& where) {
+    const std::string_view t = trim(text);
+    const std::string range = fmt::format("[{}, {}]", min, max);
+    const bool negative = !t.empty() && t.front() == '-';
+    const std::string_view digits = !t.empty() && (t.front() == '-' || t.front() == '+') ? t.substr(1) : t;
+    std::uint64_t magnitude = 0;
+    const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), magnitude);
+    const bool integer = !digits.empty() && digits.front() >= '0' && digits.front() <= '9' &&
+                         ptr == digits.data() + digits.size() &&
+                         (ec == std::errc() || ec == std::errc::result_out_of_range);
+    require(integer, where, fmt::format("must be an integer in {}, got '{}'", range, t));
+    // |min| as an unsigned number without overflowing at INT64_MIN.
+    const std::uint64_t below = min < 0 ? static_cast<std::uint64_t>(-(min + 1)) + 1 : 0;
+    const bool in_range = ec == std::errc() &&
+                          (negative ? min < 0 && magnitude <= below
+                                    : magnitude <= max && (min <= 0 || magnitude >= static_cast<std::uint64_t>(min)));
+    require(in_range, where, fmt::format("must be an integer in {}, got {}", range, t));
+}
+
 std::vector<double> parse_point(std::string_view text, const std::string& where) {
     require(!trim(text).empty(), where, "no coordinates given");
     std::vector<double> point;

@@ -649,8 +649,8 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
 #else
     require(launched_ranks() == 1, "pride bench",
             "this pride was built without MPI, so under mpirun every rank would run the whole campaign; install "
-            "Open MPI (scripts/deps.sh), then configure afresh so that CMake finds it (rm build/CMakeCache.txt; "
-            "cmake -S . -B build -DPRIDE_MPI=ON) and rebuild");
+            "Open MPI (bash scripts/deps.sh) and rebuild with `cmake -S . -B build -DPRIDE_MPI=ON && cmake "
+            "--build build` (a build configured before Open MPI was installed keeps PRIDE_MPI off until told)");
 #endif
     // Claims in batches of 4 runs per thread: one transaction for several short runs, and still
     // small enough for two processes on one store to share the work evenly.

@@ -4,12 +4,14 @@
 
 #include <toml++/toml.h>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <set>
 
+#include "engine/run.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 
@@ -224,6 +226,8 @@ Campaign read_campaign(const std::string& path) {
         require(!in.bad(), path, "cannot read the campaign file");
     }
     toml::table root;
+    if (std::error_code ec; std::filesystem::is_directory(path, ec))
+        throw InputError(path + ": is a folder, not a campaign file");
     try {
         root = toml::parse(c.text, path);
     } catch (const toml::parse_error& e) {
@@ -247,12 +251,18 @@ Campaign read_campaign(const std::string& path) {
                 const std::string kk(bk.str());
                 if (kk == "evaluations") {
                     c.budget.evaluations = need_integer(path, bv, kk);
-                    if (*c.budget.evaluations < 1) fail(at(path, bv), "'evaluations' must be >= 1");
+                    if (*c.budget.evaluations < 1 || *c.budget.evaluations > max_budget)
+                        fail(at(path, bv), fmt::format("'evaluations' must be in [1, {}], got {}", max_budget,
+                                                       *c.budget.evaluations));
                 } else if (kk == "iterations") {
                     c.budget.iterations = need_integer(path, bv, kk);
-                    if (*c.budget.iterations < 0) fail(at(path, bv), "'iterations' must be >= 0");
+                    if (*c.budget.iterations < 0 || *c.budget.iterations > max_budget)
+                        fail(at(path, bv),
+                             fmt::format("'iterations' must be in [0, {}], got {}", max_budget, *c.budget.iterations));
                 } else if (kk == "target") {
                     c.target = need_number(path, bv, kk);
+                    if (!std::isfinite(*c.target))
+                        fail(at(path, bv), fmt::format("'target' must be a finite number, got {}", *c.target));
                 } else {
                     fail(at(path, bv), "unknown key '" + kk + "' in [budget] (evaluations, iterations, target)");
                 }

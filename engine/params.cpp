@@ -33,6 +33,7 @@ std::string ParamSpec::range() const {
 }
 
 void ParamSpec::check(double v, const std::string& where) const {
+    require(std::isfinite(v), where, fmt::format("{} must be a finite number in {}, got {}", name, range(), number(v)));
     const bool integral = v == std::floor(v) && std::abs(v) < 9.0e15;
     if (type != ParamType::real)
         require(

@@ -134,6 +134,9 @@ grid::LinearObjective linear_objective(const GridSpec& g) {
         if (!g.weights.empty()) {
             require(g.weights.size() == 3, "weights",
                     "expected L,T,A (three weights), got " + std::to_string(g.weights.size()));
+            for (const double w : g.weights)
+                require(std::isfinite(w) && w >= 0 && w <= max_weight, "weights",
+                        fmt::format("each weight must be a finite number in [0, {}], got {}", max_weight, w));
             w.w_len = g.weights[0];
             w.w_turn = g.weights[1];
             w.w_angle = g.weights[2];
@@ -143,6 +146,8 @@ grid::LinearObjective linear_objective(const GridSpec& g) {
     }
     grid::HswoaObjective h;
     h.lambda = g.lambda.value_or(h.lambda);
+    require(std::isfinite(h.lambda) && h.lambda >= 0 && h.lambda <= max_weight, "lambda",
+            fmt::format("must be a finite number in [0, {}], got {}", max_weight, h.lambda));
     h.validate();
     return grid::LinearObjective::of(h);
 }
@@ -191,7 +196,7 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
     if (const auto* c = std::get_if<ContinuousSpec>(&spec)) {
         const auto* item = continuous::catalog().find(c->function);
         require(item != nullptr, "problem", "unknown problem '" + c->function + "'");
-        require(c->dim >= 1, "dim", "dimension must be >= 1, got " + std::to_string(c->dim));
+        require(c->dim >= 1, "dim", "must be an integer >= 1, got " + std::to_string(c->dim));
         // Bounds, an optimum and scratch vectors per coordinate, and a rotation (dim^2) for an
         // instance that has one, before any is allocated.
         const double n = static_cast<double>(c->dim);
@@ -388,11 +393,13 @@ std::optional<double> Problem::optimum_value() const {
 Termination Budget::termination(std::size_t dimension, bool grid) const {
     Termination t;
     if (iterations) {
-        require(*iterations >= 0, "iterations", "must be >= 0, got " + std::to_string(*iterations));
+        require(*iterations >= 0 && *iterations <= max_budget, "iterations",
+                fmt::format("must be in [0, {}], got {}", max_budget, *iterations));
         t = t | max_iterations(*iterations);
     }
     if (evaluations) {
-        require(*evaluations >= 1, "evaluations", "must be >= 1, got " + std::to_string(*evaluations));
+        require(*evaluations >= 1 && *evaluations <= max_budget, "evaluations",
+                fmt::format("must be in [1, {}], got {}", max_budget, *evaluations));
         t = t | max_evaluations(*evaluations);
     }
     if (!evaluations && !iterations) {
@@ -401,9 +408,13 @@ Termination Budget::termination(std::size_t dimension, bool grid) const {
         else
             t = max_evaluations(static_cast<std::int64_t>(10000 * std::max<std::size_t>(dimension, 1)));
     }
-    if (target) t = t | target_value(*target);
+    if (target) {
+        require(std::isfinite(*target), "target", fmt::format("must be a finite number, got {}", *target));
+        t = t | target_value(*target);
+    }
     if (wall_ms) {
-        require(*wall_ms > 0, "wall_ms", "must be > 0");
+        require(std::isfinite(*wall_ms), "wall_ms", fmt::format("must be a finite number, got {}", *wall_ms));
+        require(*wall_ms > 0, "wall_ms", fmt::format("must be > 0, got {}", *wall_ms));
         // A limit beyond what the clock can count (about 292 years) is no limit.
         const double longest = std::chrono::duration<double, std::milli>(Clock::duration::max()).count();
         if (*wall_ms < longest)

@@ -10,6 +10,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <random>
 #include <span>
 #include <string>
 #include <tuple>
@@ -547,6 +548,8 @@ TEST_CASE("PSO reaches 1e-6 on the 10-D sphere within 20000 evaluations", "[algo
 }
 
 TEST_CASE("GA reaches 1e-6 on the 10-D sphere within 20000 evaluations", "[algorithms][convergence]") {
+    // Tuned, not the defaults: population 20 and 4 elites (defaults 50 and 1) make the GA greedy
+    // enough to reach 1e-6 in this budget; with the defaults it gets less far (next test).
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
         INFO("seed " << seed);
         const auto r = ga(20, 4).run(pride::continuous::Sphere(10), pride::max_evaluations(20000), seed);
@@ -557,18 +560,54 @@ TEST_CASE("GA reaches 1e-6 on the 10-D sphere within 20000 evaluations", "[algor
     }
 }
 
+TEST_CASE("GA with its default settings on the 10-D sphere within 20000 evaluations", "[algorithms][convergence]") {
+    // Population 50 and one elite (the registry's defaults). Measured over seeds 1-5: best_f
+    // 3.1e-4, 3.2e-4, 3.1e-5, 2.0e-4, 5.9e-4 from initial bests of 30-46; the bound leaves a
+    // factor of ten over the worst seed.
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+        INFO("seed " << seed);
+        const auto r = ga().run(pride::continuous::Sphere(10), pride::max_evaluations(20000), seed);
+        CHECK(r.evaluations == 20000);
+        CHECK(r.best_f < 6e-3);
+        CHECK(r.best_f < 1e-3 * r.history.front());
+    }
+}
+
+namespace {
+/// The best of `n` uniform points of the box: what any search must beat.
+template <class P>
+double random_search(const P& problem, std::int64_t n, std::uint64_t seed) {
+    P p = problem;
+    std::mt19937_64 rng(seed);
+    std::vector<double> x(p.dimension());
+    double best = std::numeric_limits<double>::infinity();
+    for (std::int64_t k = 0; k < n; ++k) {
+        for (std::size_t i = 0; i < x.size(); ++i)
+            x[i] = std::uniform_real_distribution<double>(p.lower()[i], p.upper()[i])(rng);
+        best = std::min(best, p.evaluate(x));
+    }
+    return best;
+}
+}  // namespace
+
 TEST_CASE("PSO and GA improve on a shifted multimodal problem", "[algorithms][convergence]") {
-    // Not a success threshold, a sanity one: after 20,000 evaluations both are far below the best
-    // of a random population and near the shifted optimum's basin.
+    // 20,000 evaluations on the 5-D shifted Rastrigin. Random search with the same budget reaches
+    // 12.1-16.7 (seeds 1-5, computed below every time). Measured, seeds 1-5: PSO (population 20)
+    // 0, 3.98, 0, 0, 0 (seed 2 ends in a local minimum); the GA (population 20, 2 elites)
+    // 4e-8 to 3e-7. The bounds sit far below random search: a search that only samples fails them.
     const auto problem = pride::continuous::Shifted<pride::continuous::Rastrigin>(5);
-    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
         INFO("seed " << seed);
         const auto rp = pso(20).run(problem, pride::max_evaluations(20000), seed);
         const auto rg = ga(20, 2).run(problem, pride::max_evaluations(20000), seed);
+        const double random = random_search(problem, 20000, seed);
+        CHECK(random > 5.0);
         CHECK(rp.best_f < 0.2 * rp.history.front());
         CHECK(rg.best_f < 0.2 * rg.history.front());
-        CHECK(rp.best_f < 20.0);
-        CHECK(rg.best_f < 20.0);
+        CHECK(rp.best_f < 0.5 * random);
+        CHECK(rg.best_f < 0.5 * random);
+        CHECK(rp.best_f < 5.0);
+        CHECK(rg.best_f < 1e-5);
     }
 }
 

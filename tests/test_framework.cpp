@@ -607,6 +607,36 @@ TEMPLATE_TEST_CASE("framework: RunState evaluate_columns stops exactly at the bu
     CHECK(rs.progress().evaluations == 5);
 }
 
+TEMPLATE_TEST_CASE("framework: RunState keeps the first of equal best values", "[framework][runstate]", WildProblem,
+                   WildBatchProblem) {
+    // docs/architecture.md: the best point is the first one to reach the best value. These three
+    // points have exactly the same value, 0.3^2 + 0.4^2 (addition commutes, and the sign squares away).
+    TestType p;
+    const std::vector<double> first{0.3, 0.4}, second{0.4, 0.3}, third{-0.3, 0.4};
+    REQUIRE(p.evaluate(first) == p.evaluate(second));
+    REQUIRE(p.evaluate(first) == p.evaluate(third));
+    {
+        pride::RunState rs(pride::max_evaluations(10), 2);
+        rs.evaluate(p, first);
+        rs.evaluate(p, second);
+        rs.evaluate(p, third);
+        CHECK(std::vector<double>(rs.best_x().begin(), rs.best_x().end()) == first);
+        CHECK(rs.finish().best_x == first);
+    }
+    {
+        pride::RunState rs(pride::max_evaluations(10), 2);
+        const auto pts = points_matrix({{0.9, 0.0}, second, first, third});  // NaN first, then the ties
+        std::vector<double> values(4);
+        CHECK(rs.evaluate_columns(p, pts, values) == 4);
+        CHECK(std::vector<double>(rs.best_x().begin(), rs.best_x().end()) == second);
+        // A later batch with the same value does not replace it either.
+        const auto again = points_matrix({first, third});
+        std::vector<double> more(2);
+        rs.evaluate_columns(p, again, more);
+        CHECK(std::vector<double>(rs.best_x().begin(), rs.best_x().end()) == second);
+    }
+}
+
 TEST_CASE("framework: RunState evaluate_columns without a budget evaluates all", "[framework][runstate]") {
     WildBatchProblem p;
     pride::RunState rs(pride::max_iterations(3), 2);
@@ -793,7 +823,6 @@ TEST_CASE("framework: UniformInit and SuggestedInit", "[framework][init]") {
     pride::SuggestedInit{}(s, r4, c);
     CHECK((c.array() == 0.125).all());
 }
-
 
 // ---------------------------------------------------------------------------------------------
 // Registry

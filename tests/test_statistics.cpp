@@ -50,7 +50,19 @@ TEST_CASE("statistics: Holm's adjustment worked by hand", "[statistics]") {
     CHECK(h[0] == Approx(0.06));
     CHECK(h[1] == Approx(0.5));
     const std::vector<double> big{0.4, 0.6};
-    CHECK(pride::stats::holm(big) == std::vector<double>{0.8, 0.8});  // capped, monotone
+    CHECK(pride::stats::holm(big) == std::vector<double>{0.8, 0.8});  // monotone
+}
+
+TEST_CASE("statistics: Holm's adjusted p-values are capped at 1", "[statistics]") {
+    // 0.6 * 2 = 1.2 and 0.7 * 1 = 0.7, made non-decreasing (1.2, 1.2): both are 1 after the cap.
+    // Without the cap the first would be 1.2, which no probability is.
+    CHECK(pride::stats::holm(std::vector<double>{0.6, 0.7}) == std::vector<double>{1.0, 1.0});
+    CHECK(pride::stats::holm(std::vector<double>{0.7, 0.6}) == std::vector<double>{1.0, 1.0});
+    const auto h = pride::stats::holm(std::vector<double>{0.01, 0.3, 0.9});  // 0.03, 0.6, 0.9
+    CHECK(h[0] == Approx(0.03));
+    CHECK(h[1] == Approx(0.6));
+    CHECK(h[2] == Approx(0.9));
+    for (const double v : pride::stats::holm(std::vector<double>{0.2, 0.4, 0.5, 0.9})) CHECK(v <= 1.0);
 }
 
 TEST_CASE("statistics: Friedman test equals scipy's friedmanchisquare", "[statistics]") {

@@ -1,5 +1,7 @@
 // continuous::Function's members: each visits the variant of function_variant.hpp once; the
 // batch form runs the typed loop over the points inside one visit.
+#include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include "problems/continuous/function_variant.hpp"
@@ -31,8 +33,21 @@ std::int64_t Function::instance() const noexcept {
     return impl_->instance;
 }
 
+namespace {
+/// A formula that overflows far from the box (inf - inf, 0 * inf, sin(inf)) gives NaN at a finite
+/// point; the function's value there is beyond the largest double, so it is +inf, like any other
+/// overflow. (Ackley and Rastrigin, bounded or not there, are computed so that they do not
+/// overflow into NaN: functions.hpp.) A NaN coordinate keeps its NaN.
+double overflowed(double value, std::span<const double> x) noexcept {
+    for (const double v : x)
+        if (!std::isfinite(v)) return value;
+    return std::numeric_limits<double>::infinity();
+}
+}  // namespace
+
 double Function::evaluate(std::span<const double> x) {
-    return std::visit([&](auto& f) -> double { return f.evaluate(x); }, impl_->function);
+    const double value = std::visit([&](auto& f) -> double { return f.evaluate(x); }, impl_->function);
+    return std::isnan(value) ? overflowed(value, x) : value;
 }
 
 void Function::evaluate_batch(MatrixView points, std::span<double> values) {
@@ -49,6 +64,11 @@ void Function::evaluate_batch(MatrixView points, std::span<double> values) {
             }
         },
         impl_->function);
+    const auto rows = static_cast<std::size_t>(points.rows());
+    for (std::size_t j = 0; j < values.size(); ++j)
+        if (std::isnan(values[j]))
+            values[j] =
+                overflowed(values[j], std::span<const double>(points.col(static_cast<Eigen::Index>(j)).data(), rows));
 }
 
 std::vector<double> Function::optimum_point() const {

@@ -102,7 +102,7 @@ class LineEncoding {
         first_ = from + step_;
         count_ = std::abs(to - from) - 1;
         require(count_ >= 1, "encoding line",
-                "start and goal must be at least two rows or columns apart; use --encoding free");
+                "start and goal must be at least two rows or columns apart; use the free encoding");
         extent_ = rows_ ? p.map().width() : p.map().height();
         auto snap = std::make_shared<std::vector<int>>(static_cast<std::size_t>(count_) * extent_);
         for (int k = 0; k < count_; ++k) {
