@@ -429,7 +429,7 @@ TEST_CASE("bound policies on hand-worked values", "[algorithms][bounds][operator
 // ---------------------------------------------------------------------------------------------
 // 3. Reproducibility
 
-TEST_CASE("equal seeds give bit-identical runs; different seeds differ", "[algorithms][reproducible]") {
+TEST_CASE("equal seeds give bit-identical runs, different seeds differ", "[algorithms][reproducible]") {
     for_each_algorithm(20, [&](const std::string& label, const auto& algo) {
         INFO(label);
         const auto problem = pride::continuous::Shifted<pride::continuous::Rastrigin>(6);

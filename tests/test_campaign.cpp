@@ -1090,7 +1090,7 @@ TEST_CASE("bench: a folder or an endless stream as the campaign file is one clea
     CHECK(dir.entries().empty());
 }
 
-TEST_CASE("bench: a read-only or full file system is an error naming the store; nothing stored is lost",
+TEST_CASE("bench: a read-only or full file system is an error naming the store, nothing stored is lost",
           "[cli][bench][faults]") {
     if (!can_unshare()) {
         WARN("skipped: no user and mount namespace here (unshare -rm) for a read-only or small file system");

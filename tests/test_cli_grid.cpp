@@ -616,7 +616,7 @@ TEST_CASE("cli grid: --seed, --pop, --iters and --evals are obeyed", "[cli][grid
     }
 }
 
-TEST_CASE("cli grid: iqga has no oracle; without --oracle it is scored by its formula", "[cli][grid][path]") {
+TEST_CASE("cli grid: iqga has no oracle, without --oracle it is scored by its formula", "[cli][grid][path]") {
     const Bundled& b = bundled()[0];
     expect_input_error("path " + b.endpoints() + " --algo ga --objective iqga --oracle --json", {"--oracle", "iqga"});
     expect_input_error("path " + b.endpoints() + " --algo ga --encoding chain --objective iqga --oracle", {"--oracle"});

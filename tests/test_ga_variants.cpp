@@ -440,7 +440,7 @@ TEST_CASE("Q-learning: one generation at a time, greedy, by hand", "[ga-variants
           std::vector<double>{0.2, 0.6, 0.2});
 }
 
-TEST_CASE("Q-learning: epsilon-greedy and roulette frequencies; the orderings", "[ga-variants][q-learning]") {
+TEST_CASE("Q-learning: epsilon-greedy and roulette frequencies, the orderings", "[ga-variants][q-learning]") {
     CHECK(orderings({0.6, 0.2, 0.2}) ==
           std::vector<std::vector<double>>{{0.6, 0.2, 0.2}, {0.2, 0.6, 0.2}, {0.2, 0.2, 0.6}});
     CHECK(orderings({0.2, 0.5, 0.3}).size() == 6);

@@ -245,7 +245,7 @@ TEST_CASE("iqga: eqs. 16-18 and eq. 20's badness on worked numbers", "[iqga]") {
 // ---------------------------------------------------------------------------------------------
 // The pool
 
-TEST_CASE("iqga: the region pool, replayed; best always kept; regions in proportion to eq. 16", "[iqga]") {
+TEST_CASE("iqga: the region pool, replayed, best always kept, regions in proportion to eq. 16", "[iqga]") {
     Rng make(11);
     for (int trial = 0; trial < 200; ++trial) {
         INFO("trial " << trial);
@@ -331,7 +331,7 @@ TEST_CASE("iqga: the pool's mean composition: 1 + 1/2 entries per tournament whe
 // ---------------------------------------------------------------------------------------------
 // Elite pairing
 
-TEST_CASE("iqga: every pair holds an elite member; EliteCrossover refuses a pair without one", "[iqga]") {
+TEST_CASE("iqga: every pair holds an elite member, EliteCrossover refuses a pair without one", "[iqga]") {
     Rng make(3);
     for (const std::size_t n : {4u, 11u, 30u, 40u, 41u, 80u}) {
         INFO("N " << n);

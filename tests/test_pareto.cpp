@@ -297,7 +297,7 @@ TEST_CASE("pareto: on tiny random maps the fronts equal brute force's, and so do
     CHECK(points > 1500);
 }
 
-TEST_CASE("pareto: the 2-D fronts are the non-dominated projections of the 3-D front; length extreme = A*",
+TEST_CASE("pareto: the 2-D fronts are the non-dominated projections of the 3-D front, length extreme = A*",
           "[pareto]") {
     Rng rng(11);
     for (int trial = 0; trial < 60; ++trial) {

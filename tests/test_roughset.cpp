@@ -353,7 +353,7 @@ TEST_CASE("roughset: everything is deterministic and duplicate rows change no ru
     }
 }
 
-TEST_CASE("roughset: 10^5 rows and 16 conditions; every state of 8 three-valued attributes", "[roughset]") {
+TEST_CASE("roughset: 10^5 rows and 16 conditions, every state of 8 three-valued attributes", "[roughset]") {
     // Behaviour only: how long these take is for the benchmarks to report, not for a test to assert.
     {
         const auto t = random_table(5, 100000, 16, 3, 4, 3, 0.0);

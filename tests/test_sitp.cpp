@@ -163,7 +163,7 @@ TEST_CASE("sitp: eq. 7 weights on hand-computed angles", "[sitp]") {
     CHECK(sitp_step_weight(1, 0, 10, 1) < 1e15);
 }
 
-TEST_CASE("sitp: three bands of rows between start and goal; transition points on x_r in their band", "[sitp]") {
+TEST_CASE("sitp: three bands of rows between start and goal, transition points on x_r in their band", "[sitp]") {
     const GridMap map = open_map(20, 20);
     // Paper's 20x20 task: (0,19) -> (19,0), rows 0..19: bands 0..5, 6..12, 13..19.
     const Cell s{0, 19}, g{19, 0};
@@ -528,7 +528,7 @@ TEST_CASE("sitp: the mutation rules on paths whose regeneration is forced", "[si
 // ---------------------------------------------------------------------------------------------
 // init = "sitp" through the engine and the command line
 
-TEST_CASE("sitp: init sitp through the engine for chains and line genotypes; error paths", "[sitp]") {
+TEST_CASE("sitp: init sitp through the engine for chains and line genotypes, error paths", "[sitp]") {
     namespace engine = pride::engine;
     engine::GridSpec g;
     g.map = engine::load_map((bundled_maps() / "file002-20x20.map").string());
@@ -606,7 +606,7 @@ TEST_CASE("sitp: campaign files take init = \"sitp\"", "[sitp][cli]") {
     pride::test::expect_input_error("bench '" + bad + "' --out '" + dir.file("bad.sqlite") + "'", {"rules", "chain"});
 }
 
-TEST_CASE("sitp: the weight table holds sitp_step_weight's own bits; direction() inverts kDx / kDy", "[sitp]") {
+TEST_CASE("sitp: the weight table holds sitp_step_weight's own bits, direction() inverts kDx / kDy", "[sitp]") {
     // Every offset of a 13 x 9 map, every step: the table's value is the function's, bit for bit
     // (so the walks draw as without the table), and a second lookup returns the same.
     const GridMap map(13, 9, std::vector<std::uint8_t>(13 * 9, 0));

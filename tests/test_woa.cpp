@@ -91,7 +91,7 @@ const char* const kConfigurations[] = {"woa", "woa-coord", "woa-hs", "woa-balanc
 
 }  // namespace
 
-TEST_CASE("WOA: a falls from 2 to 0 and a2 from -1 to -2; l lies in [a2, 1]", "[woa][equations]") {
+TEST_CASE("WOA: a falls from 2 to 0 and a2 from -1 to -2, l lies in [a2, 1]", "[woa][equations]") {
     CHECK(whale::a(0, 500) == 2.0);
     CHECK(whale::a(250, 500) == 1.0);
     CHECK(whale::a(500, 500) == 0.0);
@@ -276,7 +276,7 @@ TEST_CASE("HS-WOA: on a plateau the pod is rebuilt, renewing 80 % of it", "[woa]
     CHECK(r.evaluations == 10 + 30 * 10 + 5 * 8);
 }
 
-TEST_CASE("WOA family and HS: equal seeds give bit-identical runs; different seeds differ", "[woa][reproducible]") {
+TEST_CASE("WOA family and HS: equal seeds give bit-identical runs, different seeds differ", "[woa][reproducible]") {
     const pride::continuous::Rastrigin f(5);
     for (const char* name : kConfigurations) {
         INFO(name);

@@ -311,7 +311,7 @@ TEST_CASE("woa on chains: every whale legal on every bundled map and 200 random 
     }
 }
 
-TEST_CASE("woa on chains: reproducible bit for bit; never worse than the first pod", "[woa][chain]") {
+TEST_CASE("woa on chains: reproducible bit for bit, never worse than the first pod", "[woa][chain]") {
     const Instance in = bundled("file003-50x50.map");
     HsWoa a;
     a.population = 20;
