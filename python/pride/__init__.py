@@ -46,6 +46,8 @@ def _int(name, value, optional=True):
         return None
     if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
         raise TypeError(f"{name}: expected an integer, got {type(value).__name__}")
+    if not -2**63 <= value < 2**63:  # the engine's integers are 64-bit
+        raise ValueError(f"{name}: {value} is out of range (64-bit integers)")
     return int(value)
 
 

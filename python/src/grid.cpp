@@ -16,8 +16,7 @@ namespace pride::python {
 namespace {
 
 Grid grid_from_array(const py::object& array) {
-    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
-    if (!a) throw py::type_error("grid: expected an array of numbers 0 and 1");
+    const auto a = real_array(array, "grid");
     if (a.ndim() != 2)
         throw InputError("grid", "expected a 2-D array of 0 (free) and 1 (blocked), rows top first, got " +
                                      std::to_string(a.ndim()) + " dimensions");
