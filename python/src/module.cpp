@@ -231,7 +231,7 @@ engine::ParamValues param_values(const py::dict& params) {
     return v;
 }
 
-py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const py::object& o, const std::string& what) {
+py::array numeric_array(const py::object& o, const std::string& what) {
     // numpy would turn None and objects into NaN and complex numbers into their real part.
     const auto type = [&] { return py::str(py::type::of(o).attr("__name__")).cast<std::string>(); };
     if (o.is_none()) throw py::type_error(what + ": expected real numbers, got NoneType");
@@ -245,7 +245,17 @@ py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const 
     if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'b')
         throw py::type_error(what + ": expected real numbers, got " + type() + " of dtype " +
                              py::str(a.dtype()).cast<std::string>());
-    return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    return a;
+}
+
+py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const py::object& o,
+                                                                          const std::string& what) {
+    const py::array a = numeric_array(o, what);
+    auto f = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!f)
+        throw py::value_error(what + ": " + std::to_string(a.size()) +
+                              " numbers do not fit in memory as an array of doubles");
+    return f;
 }
 
 std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::object& bounds,

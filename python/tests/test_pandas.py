@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import pride
-from conftest import cli, shared_data
+from conftest import ROUGHSET_TABLES as TABLES, cli, roughset_as_cli as strip, shared_roughset
 
 pd = pytest.importorskip("pandas")
 
@@ -69,23 +69,9 @@ def test_report_dataframe_equals_the_list_and_the_cli_csv(store):
             assert float(t[k]) == pytest.approx(row[k], rel=1e-9, abs=1e-300), k
 
 
-TABLES = ["pawlak1991_p72.csv", "pawlak_8obj.csv"]
-
-
-def strip(result):
-    out = dict(result)
-    out.pop("table", None)
-    if out.get("rules"):
-        out["rules"] = [{k: v for k, v in r.items() if k != "objects"} for r in out["rules"]]
-    return out
-
-
 @pytest.mark.parametrize("name", TABLES)
 def test_roughset_from_a_dataframe_equals_the_cli(name):
-    path = shared_data() / "roughset" / name
-    if not path.exists():
-        pytest.skip("no shared data")
-    want = strip(cli("roughset", path, "--json"))
+    path, want = shared_roughset(name)
     codes = pd.read_csv(path)  # integer columns: codes
     assert strip(pride.roughset(codes)) == want
     labels = pd.read_csv(path, dtype=str)  # text columns: labels
