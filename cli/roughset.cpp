@@ -22,8 +22,8 @@ using roughset::Attributes;
 using roughset::DecisionTable;
 using roughset::Rule;
 
-using roughset::Analysis;
 using roughset::analyse;
+using roughset::Analysis;
 
 std::string names_of(const DecisionTable& t, const Attributes& A) {
     std::string s = "{";

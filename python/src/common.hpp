@@ -61,8 +61,7 @@ engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::v
 py::array numeric_array(const py::object& o, const std::string& what);
 
 /// numeric_array(o) as a C-contiguous array of doubles.
-py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const py::object& o,
-                                                                          const std::string& what);
+py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const py::object& o, const std::string& what);
 
 /// (lower, upper) from Python: sequences or scalars (broadcast to `dim`).
 std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::object& bounds,

@@ -1,8 +1,8 @@
 // Rough sets for Python: a decision table from codes or labels (pride/__init__.py turns arrays
 // and DataFrames into those) or a CSV file, analysed by roughset::analyse as `pride roughset
 // --json` analyses one: the same keys, limits and choice of the reduct the rules are computed on.
-#include "common.hpp"
 #include "roughset/roughset.hpp"
+#include "common.hpp"
 
 namespace pride::python {
 
@@ -19,7 +19,7 @@ py::list names(const DecisionTable& t, const Attributes& A) {
 
 /// roughset::analyse (with the GIL released) as the keys of `pride roughset --json`; rules also
 /// list their objects (0-based).
-py::dict analyse(const DecisionTable& t) {
+py::dict analysis_dict(const DecisionTable& t) {
     roughset::Analysis a;
     {
         py::gil_scoped_release release;
@@ -79,14 +79,14 @@ void bind_roughset(py::module_& m) {
     m.def(
         "roughset_table",
         [](const std::vector<std::string>& columns, const py::object& rows, bool labels) {
-            return analyse(table(columns, rows, labels));
+            return analysis_dict(table(columns, rows, labels));
         },
         py::arg("columns"), py::arg("rows"), py::arg("labels"));
     m.def(
         "roughset_csv",
         [](const std::string& path) {
             const DecisionTable t = roughset::read_csv(path);
-            return analyse(t);
+            return analysis_dict(t);
         },
         py::arg("path"));
 }
