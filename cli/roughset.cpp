@@ -22,63 +22,8 @@ using roughset::Attributes;
 using roughset::DecisionTable;
 using roughset::Rule;
 
-// Minimal rules cost about 2^|B| partitions of the distinct rows; beyond this many row-subset
-// steps they are not attempted (minutes of work, thousands of rules).
-constexpr double rule_budget = 1 << 28;
-
-struct Analysis {
-    Attributes C, D;
-    std::size_t rows = 0;
-    bool consistent = false;
-    std::size_t positive = 0;
-    double gamma = 1.0;
-    Attributes core;
-    bool exhaustive = false;
-    std::vector<Attributes> reducts;  // all of them when exhaustive, else {quick}
-    Attributes quick;
-    Attributes used;  // the attributes the rules are computed on
-    std::string why;  // why those
-    std::optional<std::vector<Rule>> rules;
-    std::string no_rules;  // why they were not computed, when rules is empty (nullopt)
-};
-
-Analysis analyse(const DecisionTable& t, std::optional<std::pair<Attributes, std::vector<Rule>>> given = {}) {
-    Analysis a;
-    a.C = t.conditions();
-    a.D = t.decision();
-    a.rows = t.rows();
-    a.positive = roughset::positive_region(t, a.C, a.D).size();
-    a.consistent = a.positive == a.rows;
-    a.gamma = roughset::dependency(t, a.C, a.D);
-    a.core = roughset::core(t, a.C, a.D);
-    a.quick = roughset::quick_reduct(t, a.C, a.D);
-    a.exhaustive = a.C.size() <= roughset::max_exhaustive_attributes;
-    if (a.exhaustive) {
-        a.reducts = roughset::reducts(t, a.C, a.D);
-        a.used = a.reducts.front();
-        a.why = a.reducts.size() == 1 ? "the only reduct" : "the first of the smallest reducts";
-    } else {
-        a.reducts = {a.quick};
-        a.used = a.quick;
-        a.why = "the QuickReduct result";
-    }
-    if (given) {
-        a.used = given->first;
-        a.why = "the grid rule book's reduct";
-        a.rules = std::move(given->second);
-        return a;
-    }
-    const std::size_t distinct = roughset::indiscernibility(t, a.used).size();
-    if (a.used.size() > roughset::max_exhaustive_attributes)
-        a.no_rules = fmt::format("not computed: the reduct has {} attributes, the limit is {}", a.used.size(),
-                                 roughset::max_exhaustive_attributes);
-    else if (static_cast<double>(std::uint64_t{1} << a.used.size()) * static_cast<double>(distinct) > rule_budget)
-        a.no_rules = fmt::format("not computed: 2^{} value subsets x {} distinct rows is over the limit of 2^28",
-                                 a.used.size(), distinct);
-    else
-        a.rules = roughset::minimal_rules(t, a.used, a.D);
-    return a;
-}
+using roughset::analyse;
+using roughset::Analysis;
 
 std::string names_of(const DecisionTable& t, const Attributes& A) {
     std::string s = "{";
@@ -200,7 +145,7 @@ int roughset_command(const RoughsetOptions& o, std::ostream& out) {
     }
     const auto& book = grid::grid_rule_book();
     const DecisionTable& t = book.table;
-    const Analysis a = analyse(t, std::pair{book.reduct, book.rules});
+    const Analysis a = analyse(t, roughset::GivenRules{book.reduct, book.rules, "the grid rule book's reduct"});
     // File 000 reports its own table's sizes (4374 rows -> 5 attributes, 162 rows -> 80 rules).
     if (o.json) {
         s = fmt::format(

@@ -46,6 +46,8 @@ def _int(name, value, optional=True):
         return None
     if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
         raise TypeError(f"{name}: expected an integer, got {type(value).__name__}")
+    if not -2**63 <= value < 2**63:  # the engine's integers are 64-bit
+        raise ValueError(f"{name}: {value} is out of range (64-bit integers)")
     return int(value)
 
 
@@ -152,7 +154,7 @@ def plan(grid, start, goal, *, algo="pso", objective="cells", encoding="line", c
     return Result(_pride.plan(grid, start, goal, _str("algo", algo), _str("objective", objective),
                               _str("encoding", encoding), _str("connector", connector), _str("init", init),
                               _int("waypoints", waypoints, False),
-                              None if weights is None else [float(w) for w in weights], _real("lambda_", lambda_),
+                              None if weights is None else [_real("weights", w) for w in weights], _real("lambda_", lambda_),
                               bool(corner_cutting), bool(oracle), _int("evals", evals), _int("iters", iters),
                               _int("seed", seed, False), callback, params))
 

@@ -56,6 +56,13 @@ engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::v
                                    std::vector<double> upper, const std::shared_ptr<UserError>& errors,
                                    std::string name = "bounds");
 
+/// o as a numpy array of real numbers (float, int, bool; any layout, not copied when it is one);
+/// None, objects, text and complex numbers are a TypeError "WHAT: expected real numbers, got ...".
+py::array numeric_array(const py::object& o, const std::string& what);
+
+/// numeric_array(o) as a C-contiguous array of doubles.
+py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const py::object& o, const std::string& what);
+
 /// (lower, upper) from Python: sequences or scalars (broadcast to `dim`).
 std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::object& bounds,
                                                                  std::optional<std::int64_t> dim);

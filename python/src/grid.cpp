@@ -16,15 +16,15 @@ namespace pride::python {
 namespace {
 
 Grid grid_from_array(const py::object& array) {
-    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
-    if (!a) throw py::type_error("grid: expected an array of numbers 0 and 1");
-    if (a.ndim() != 2)
+    const py::array raw = numeric_array(array, "grid");  // sizes checked before any copy
+    if (raw.ndim() != 2)
         throw InputError("grid", "expected a 2-D array of 0 (free) and 1 (blocked), rows top first, got " +
-                                     std::to_string(a.ndim()) + " dimensions");
-    const auto height = a.shape(0), width = a.shape(1);
+                                     std::to_string(raw.ndim()) + " dimensions");
+    const auto height = raw.shape(0), width = raw.shape(1);
     require(width >= 1 && height >= 1, "grid", "a map needs at least one row and one column");
     require(width <= 1'000'000 && height <= 1'000'000 && width * height <= 100'000'000, "grid",
             fmt::format("a {} x {} map is larger than 10^8 cells", width, height));
+    const auto a = real_array(raw, "grid");
     std::vector<std::uint8_t> blocked(static_cast<std::size_t>(width * height));
     const double* v = a.data();
     for (py::ssize_t i = 0; i < width * height; ++i) {
@@ -76,11 +76,11 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
         py::gil_scoped_release release;  // reachability and the encodings' tables
         problem.emplace(spec);
     }
-    const engine::Budget budget{evals, iters, std::nullopt, std::nullopt, {}};
-    engine::check(algorithm, *problem, budget);
+    const engine::Budget b = budget(evals, iters, std::nullopt, std::nullopt);
+    engine::check(algorithm, *problem, b);
     const auto s = checked_seed(seed);
     auto errors = std::make_shared<UserError>();
-    const engine::RunResult r = run_released(algorithm, *problem, budget, s, callback, errors);
+    const engine::RunResult r = run_released(algorithm, *problem, b, s, callback, errors);
     py::dict d = result_dict(r);
     d["objective"] = objective;
     d["seed"] = seed;

@@ -177,8 +177,7 @@ class Optimizer {
     }
 
     void tell(const py::object& values) {
-        const auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
-        if (!v) throw py::type_error("tell: expected an array of numbers");
+        const auto v = real_array(values, "tell");
         require(v.ndim() == 1 || (v.ndim() == 2 && v.shape(1) == 1), "tell",
                 "expected a 1-D array of values, one per point asked for, got an array with " +
                     std::to_string(v.ndim()) + " dimensions");
@@ -232,14 +231,40 @@ engine::ParamValues param_values(const py::dict& params) {
     return v;
 }
 
+py::array numeric_array(const py::object& o, const std::string& what) {
+    // numpy would turn None and objects into NaN and complex numbers into their real part.
+    const auto type = [&] { return py::str(py::type::of(o).attr("__name__")).cast<std::string>(); };
+    if (o.is_none()) throw py::type_error(what + ": expected real numbers, got NoneType");
+    py::array a;
+    try {
+        a = py::module_::import("numpy").attr("asarray")(o);
+    } catch (const py::error_already_set&) {
+        throw py::type_error(what + ": expected real numbers, got " + type());
+    }
+    const char kind = a.dtype().kind();
+    if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'b')
+        throw py::type_error(what + ": expected real numbers, got " + type() + " of dtype " +
+                             py::str(a.dtype()).cast<std::string>());
+    return a;
+}
+
+py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const py::object& o,
+                                                                          const std::string& what) {
+    const py::array a = numeric_array(o, what);
+    auto f = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!f)
+        throw py::value_error(what + ": " + std::to_string(a.size()) +
+                              " numbers do not fit in memory as an array of doubles");
+    return f;
+}
+
 std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::object& bounds,
                                                                  std::optional<std::int64_t> dim) {
     if (!py::isinstance<py::sequence>(bounds) || py::len(bounds) != 2)
         throw py::type_error("bounds: expected (lower, upper)");
     const py::sequence pair = bounds.cast<py::sequence>();
     auto side = [&](const py::object& o, const char* which) {
-        const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(o);
-        if (!a) throw py::type_error(std::string("bounds: ") + which + " must be numbers");
+        const auto a = real_array(o, std::string("bounds: ") + which);
         require(a.ndim() <= 1, "bounds", std::string(which) + " must be a number or a 1-D sequence");
         std::vector<double> v(a.data(), a.data() + a.size());
         if (a.ndim() == 0) {
@@ -277,7 +302,11 @@ engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::v
                 std::memcpy(point.mutable_data(), x.data(), sizeof(double) * x.size());
                 const py::object value = (*function)(point);
                 const double f = PyFloat_AsDouble(value.ptr());
-                if (f == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+                if (f == -1.0 && PyErr_Occurred()) {
+                    PyErr_Clear();
+                    throw py::type_error("the function must return one number, got " +
+                                         py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+                }
                 return f;
             } catch (...) {
                 errors->remember(std::current_exception());
@@ -294,10 +323,7 @@ engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::v
                 for (py::ssize_t j = 0; j < n; ++j)
                     std::memcpy(out + j * dim, points.col(j).data(), sizeof(double) * static_cast<std::size_t>(dim));
                 const py::object result = (*function)(x);
-                const auto f = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(result);
-                if (!f)
-                    throw py::type_error("the vectorized function must return numbers, one per row of X, got " +
-                                         py::str(py::type::of(result).attr("__name__")).cast<std::string>());
+                const auto f = real_array(result, "vectorized: the function must return one value per row of X");
                 require(f.size() == n, "vectorized",
                         "the function returned " + std::to_string(f.size()) + " values for " + std::to_string(n) +
                             " points (X has one point per row; expected shape (" + std::to_string(n) + ",))");
@@ -338,6 +364,9 @@ engine::IterationObserver observer(const py::object& fn, const std::shared_ptr<U
 
 engine::Budget budget(std::optional<std::int64_t> evals, std::optional<std::int64_t> iters,
                       std::optional<double> target, std::optional<double> wall_ms) {
+    // The command line's rules: one limit of evaluations or of iterations, a target that is a number.
+    require(!(evals && iters), "evals", "excludes iters (give one of them)");
+    require(!target || !std::isnan(*target), "target", "must be a number, got nan");
     engine::Budget b;
     b.evaluations = evals;
     b.iterations = iters;

@@ -1,10 +1,8 @@
 // Rough sets for Python: a decision table from codes or labels (pride/__init__.py turns arrays
-// and DataFrames into those) or a CSV file, analysed as `pride roughset --json` analyses one:
-// the same keys, the same limits, the same choice of the reduct the rules are computed on.
-#include <fmt/format.h>
-
-#include "common.hpp"
+// and DataFrames into those) or a CSV file, analysed by roughset::analyse as `pride roughset
+// --json` analyses one: the same keys, limits and choice of the reduct the rules are computed on.
 #include "roughset/roughset.hpp"
+#include "common.hpp"
 
 namespace pride::python {
 
@@ -13,69 +11,49 @@ namespace {
 using roughset::Attributes;
 using roughset::DecisionTable;
 
-// cli/roughset.cpp's limit: minimal rules cost about 2^|B| partitions of the distinct rows.
-constexpr double rule_budget = 1 << 28;
-
 py::list names(const DecisionTable& t, const Attributes& A) {
     py::list l;
     for (auto a : A) l.append(t.name(a));
     return l;
 }
 
-py::dict analyse(const DecisionTable& t) {
-    const Attributes C = t.conditions(), D = t.decision();
+/// roughset::analyse (with the GIL released) as the keys of `pride roughset --json`; rules also
+/// list their objects (0-based).
+py::dict analysis_dict(const DecisionTable& t) {
+    roughset::Analysis a;
+    {
+        py::gil_scoped_release release;
+        a = roughset::analyse(t);
+    }
     py::dict d;
-    const std::size_t positive = roughset::positive_region(t, C, D).size();
-    d["rows"] = t.rows();
-    d["conditions"] = names(t, C);
-    d["decision"] = t.name(D.front());
-    d["consistent"] = positive == t.rows();
-    d["positive_region"] = positive;
-    d["dependency"] = roughset::dependency(t, C, D);
-    d["core"] = names(t, roughset::core(t, C, D));
-    const Attributes quick = roughset::quick_reduct(t, C, D);
-    const bool exhaustive = C.size() <= roughset::max_exhaustive_attributes;
-    std::vector<Attributes> reducts;
-    Attributes used;
-    if (exhaustive) {
-        reducts = roughset::reducts(t, C, D);
-        used = reducts.front();
-    } else {
-        reducts = {quick};
-        used = quick;
-    }
-    d["exhaustive"] = exhaustive;
-    py::list rl;
-    for (const auto& r : reducts) rl.append(names(t, r));
-    d["reducts"] = rl;
-    d["quick_reduct"] = names(t, quick);
-    d["reduct_used"] = names(t, used);
-    const std::size_t distinct = roughset::indiscernibility(t, used).size();
-    if (used.size() > roughset::max_exhaustive_attributes) {
+    d["rows"] = a.rows;
+    d["conditions"] = names(t, a.C);
+    d["decision"] = t.name(a.D.front());
+    d["consistent"] = a.consistent;
+    d["positive_region"] = a.positive;
+    d["dependency"] = a.gamma;
+    d["core"] = names(t, a.core);
+    d["exhaustive"] = a.exhaustive;
+    py::list reducts;
+    for (const auto& r : a.reducts) reducts.append(names(t, r));
+    d["reducts"] = reducts;
+    d["quick_reduct"] = names(t, a.quick);
+    d["reduct_used"] = names(t, a.used);
+    if (!a.rules) {
         d["rules"] = py::none();
-        d["rules_note"] = fmt::format("not computed: the reduct has {} attributes, the limit is {}", used.size(),
-                                      roughset::max_exhaustive_attributes);
-    } else if (static_cast<double>(std::uint64_t{1} << used.size()) * static_cast<double>(distinct) > rule_budget) {
-        d["rules"] = py::none();
-        d["rules_note"] = fmt::format("not computed: 2^{} value subsets x {} distinct rows is over the limit of 2^28",
-                                      used.size(), distinct);
-    } else {
-        std::vector<roughset::Rule> rules;
-        {
-            py::gil_scoped_release release;
-            rules = roughset::minimal_rules(t, used, D);
-        }
-        py::list out;
-        for (const auto& r : rules) {
-            py::dict conditions;
-            for (const auto& c : r.conditions) conditions[py::str(t.name(c.attribute))] = t.label(c.attribute, c.value);
-            py::list support;
-            for (auto o : r.support) support.append(o);
-            out.append(py::dict(py::arg("if") = conditions, py::arg("then") = t.label(D.front(), r.decision.front()),
-                                py::arg("support") = r.support.size(), py::arg("objects") = support));
-        }
-        d["rules"] = out;
+        d["rules_note"] = a.no_rules;
+        return d;
     }
+    py::list rules;
+    for (const auto& r : *a.rules) {
+        py::dict conditions;
+        for (const auto& c : r.conditions) conditions[py::str(t.name(c.attribute))] = t.label(c.attribute, c.value);
+        py::list support;
+        for (auto o : r.support) support.append(o);
+        rules.append(py::dict(py::arg("if") = conditions, py::arg("then") = t.label(a.D.front(), r.decision.front()),
+                              py::arg("support") = r.support.size(), py::arg("objects") = support));
+    }
+    d["rules"] = rules;
     return d;
 }
 
@@ -101,14 +79,14 @@ void bind_roughset(py::module_& m) {
     m.def(
         "roughset_table",
         [](const std::vector<std::string>& columns, const py::object& rows, bool labels) {
-            return analyse(table(columns, rows, labels));
+            return analysis_dict(table(columns, rows, labels));
         },
         py::arg("columns"), py::arg("rows"), py::arg("labels"));
     m.def(
         "roughset_csv",
         [](const std::string& path) {
             const DecisionTable t = roughset::read_csv(path);
-            return analyse(t);
+            return analysis_dict(t);
         },
         py::arg("path"));
 }

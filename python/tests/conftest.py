@@ -29,6 +29,26 @@ def cli(*args, check=True):
     return json.loads(p.stdout) if "--json" in args else p
 
 
+ROUGHSET_TABLES = ["pawlak1991_p72.csv", "pawlak_8obj.csv"]  # the shared decision tables
+
+
+def roughset_as_cli(result):
+    """A roughset result with the keys `pride roughset --json` has (no table, no rule objects)."""
+    out = dict(result)
+    out.pop("table", None)
+    if out.get("rules"):
+        out["rules"] = [{k: v for k, v in r.items() if k != "objects"} for r in out["rules"]]
+    return out
+
+
+def shared_roughset(name):
+    """A shared decision table's path and `pride roughset --json`'s answer on it (as roughset_as_cli)."""
+    path = shared_data() / "roughset" / name
+    if not path.exists():
+        pytest.skip("no shared data")
+    return path, roughset_as_cli(cli("roughset", path, "--json"))
+
+
 @pytest.fixture
 def run_cli():
     return cli

@@ -5,25 +5,12 @@ import numpy as np
 import pytest
 
 import pride
-from conftest import cli, shared_data
-
-TABLES = ["pawlak1991_p72.csv", "pawlak_8obj.csv"]
-
-
-def strip(result):
-    out = dict(result)
-    out.pop("table", None)
-    if out.get("rules"):
-        out["rules"] = [{k: v for k, v in r.items() if k != "objects"} for r in out["rules"]]
-    return out
+from conftest import ROUGHSET_TABLES as TABLES, roughset_as_cli as strip, shared_data, shared_roughset
 
 
 @pytest.mark.parametrize("name", TABLES)
 def test_shared_tables_equal_cli(name):
-    path = shared_data() / "roughset" / name
-    if not path.exists():
-        pytest.skip("no shared data")
-    want = strip(cli("roughset", path, "--json"))
+    path, want = shared_roughset(name)
     assert strip(pride.roughset(str(path))) == want
     with open(path) as f:
         rows = list(csv.reader(f))
