@@ -11,6 +11,7 @@
 #include <set>
 
 #include "framework/error.hpp"
+#include "framework/read_file.hpp"
 #include "problems/continuous/catalog.hpp"
 
 namespace pride::engine {
@@ -207,16 +208,14 @@ CampaignAlgorithm read_algorithm(const std::string& file, const toml::table& t) 
 Campaign read_campaign(const std::string& path) {
     Campaign c;
     c.file = path;
+    // Read under a cap (framework/read_file.hpp): `pride bench /dev/zero` is refused, not read forever.
+    c.text = read_capped_file(path, std::size_t{16} << 20, "campaign");
     toml::table root;
     try {
-        root = toml::parse_file(path);
+        root = toml::parse(c.text, path);
     } catch (const toml::parse_error& e) {
         throw InputError(
             fmt::format("{}:{}:{}: {}", path, e.source().begin.line, e.source().begin.column, e.description()));
-    }
-    {
-        std::ifstream in(path, std::ios::binary);
-        c.text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
     const auto folder = std::filesystem::path(path).parent_path();
     bool suites_read = false;

@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/, clang, address + undefined sanitizers) in build-fuzz and runs
+# each for SECONDS on its corpus, then prints per target the executions, coverage (cov/ft of
+# libFuzzer's final statistics) and findings (crashes, hangs over 1 s, leaks, memory over the RSS
+# limit), each saved under build-fuzz/findings/TARGET/.
+#
+# Usage: scripts/fuzz.sh SECONDS [TARGET...]     (targets: map scenario roughset campaign store cli)
+# Environment: PRIDE_FUZZ_BUILD (build folder, default build-fuzz), PRIDE_FUZZ_JOBS (targets run at
+# once, default 1), PRIDE_FUZZ_RSS_MB (default 1024), PRIDE_DATA (extra seeds, default
+# ../shared/data when it exists), PRIDE_FUZZ_MAX_LEN (largest input, default 16384 bytes).
+# Exit status 1 when any target found something.
+#
+# Seeds: fuzz/corpus/TARGET/ (checked in) plus, collected at run time, the maps and scenarios of
+# examples/maps and PRIDE_DATA/movingai, the CSV tables of PRIDE_DATA/roughset and the campaign
+# files of examples/campaigns. New inputs libFuzzer finds go to build-fuzz/corpus/TARGET/ (kept
+# between runs, so later runs start where earlier ones stopped).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+seconds=${1:?usage: scripts/fuzz.sh SECONDS [TARGET...]}
+shift
+all=(map scenario roughset campaign store cli)
+targets=("$@")
+((${#targets[@]})) || targets=("${all[@]}")
+build=${PRIDE_FUZZ_BUILD:-build-fuzz}
+jobs=${PRIDE_FUZZ_JOBS:-1}
+rss=${PRIDE_FUZZ_RSS_MB:-1024}
+# Inputs up to 16 KiB (and seeds no larger): every format's structure fits, and one input stays far
+# below the 1 s hang limit even on a loaded machine (a 37 KB map took 0.5 s there under ASan).
+max_len=${PRIDE_FUZZ_MAX_LEN:-16384}
+data=${PRIDE_DATA:-$root/../shared/data}
+
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+# -O1 with assertions kept (no -DNDEBUG): what sanitizers and fuzzers are usually built with.
+cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DPRIDE_FUZZ=ON -DPRIDE_BUILD_TESTS=OFF -DPRIDE_BUILD_BENCH=OFF \
+  -DPRIDE_MPI=OFF "${launcher[@]}" >/dev/null
+cmake --build "$build" -j "${PRIDE_FUZZ_BUILD_JOBS:-2}" --target "${targets[@]/#/fuzz_}"
+
+# The seeds of one target, gathered into build/seeds/TARGET (files up to max_len only).
+collect() {
+  local t=$1 dir="$build/seeds/$1"
+  rm -rf "$dir"
+  mkdir -p "$dir" "$build/corpus/$t"
+  [[ -d fuzz/corpus/$t ]] && cp fuzz/corpus/"$t"/* "$dir"/ 2>/dev/null || true
+  local f
+  case $t in
+    map) for f in examples/maps/*.map "$data"/movingai/*.map; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
+    scenario) for f in examples/maps/*.scen "$data"/movingai/*.scen; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
+    roughset) for f in "$data"/roughset/*.csv; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
+    campaign) for f in examples/campaigns/*.toml; do cp "$f" "$dir/"; done ;;
+  esac
+  find "$dir" -type f -size +"$((max_len / 1024))"k -delete
+}
+
+run_one() {
+  local t=$1 log="$build/logs/$1.log"
+  rm -rf "$build/findings/$t"
+  mkdir -p "$build/findings/$t" "$build/logs"
+  collect "$t"
+  local status=0
+  # Hangs: -timeout=1 (seconds per input); memory: -rss_limit_mb (and malloc_limit_mb with it);
+  # leaks: -detect_leaks=1, at exit of every input that allocated more than it freed.
+  ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:symbolize=1} \
+  UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
+    nice "$build/fuzz/fuzz_$t" "$build/corpus/$t" "$build/seeds/$t" -max_total_time="$seconds" -timeout=1 \
+    -max_len="$max_len" -rss_limit_mb="$rss" -detect_leaks=1 -print_final_stats=1 -artifact_prefix="$build/findings/$t/" \
+    >"$log" 2>&1 || status=$?
+  echo "$status" >"$build/logs/$t.status"
+}
+
+running=0
+for t in "${targets[@]}"; do
+  run_one "$t" &
+  running=$((running + 1))
+  if ((running >= jobs)); then
+    wait -n || true
+    running=$((running - 1))
+  fi
+done
+wait
+
+found=0
+printf '%-10s %12s %8s %8s %10s  %s\n' target executions cov ft corpus findings
+for t in "${targets[@]}"; do
+  log="$build/logs/$t.log"
+  execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | tail -1 | awk '{print $2}')
+  last=$(grep -E '^#[0-9]+' "$log" | grep -E 'cov: ' | tail -1)
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
+  corpus=$(sed -n 's/.* corp: \([0-9]*\/[0-9a-zA-Z]*\).*/\1/p' <<<"$last")
+  n=$(find "$build/findings/$t" -type f | wc -l)
+  what=$(find "$build/findings/$t" -type f -printf '%f ' | head -c 300)
+  status=$(cat "$build/logs/$t.status")
+  if ((n > 0)) || [[ $status != 0 ]]; then
+    found=1
+    [[ -n $what ]] || what="exit status $status, see $log"
+  fi
+  printf '%-10s %12s %8s %8s %10s  %s\n' "$t" "${execs:-?}" "${cov:-?}" "${ft:-?}" "${corpus:-?}" "${what:-none}"
+done
+exit "$found"
