@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cstring>
 #include <istream>
+#include <ostream>
 #include <span>
 #include <string_view>
-#include <ostream>
 #include <variant>
 
 #include "cli/numbers.hpp"

@@ -27,8 +27,7 @@ using pride::test::TempDir;
 /// `pride ARGS` with stdin from the shell pipeline `feed` (e.g. "yes 1"), as a user would run it.
 CliOutput run_fed(const std::string& feed, const std::string& args) {
     const TempDir dir("pride-fed");
-    const std::string cmd =
-        feed + " | '" + PRIDE_EXE + "' " + args + " >" + dir.file("out") + " 2>" + dir.file("err");
+    const std::string cmd = feed + " | '" + PRIDE_EXE + "' " + args + " >" + dir.file("out") + " 2>" + dir.file("err");
     const int raw = std::system(cmd.c_str());
     CliOutput r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -55,10 +54,12 @@ TEST_CASE("readers: endless streams are refused after a bounded read, exit 2", "
     // Before: 10.5 GB (roughset) and 7.7 GB (bench) in 60 s, eval never returned.
     expect_input_error("roughset /dev/zero", {"/dev/zero", "too large", "16 MiB"});
     expect_input_error("bench /dev/zero", {"/dev/zero", "too large", "16 MiB"});
-    expect_input_error("path --map /dev/zero --start 0,0 --goal 1,1 --algo astar", {"/dev/zero", "too large", "64 MiB"});
+    expect_input_error("path --map /dev/zero --start 0,0 --goal 1,1 --algo astar",
+                       {"/dev/zero", "too large", "64 MiB"});
     expect_input_error("scen /dev/zero", {"/dev/zero", "too large", "64 MiB"});
     // A map that never ends: refused at 64 MiB read (it was 1 GiB, after 2 GB of memory).
-    check_input_error(run_fed("yes .", "path --map /dev/stdin --start 0,0 --goal 1,1 --algo astar"), {"too large", "64 MiB"});
+    check_input_error(run_fed("yes .", "path --map /dev/stdin --start 0,0 --goal 1,1 --algo astar"),
+                      {"too large", "64 MiB"});
     // eval --x -: a NUL byte at once, an endless text stream at 64 MiB.
     check_input_error(run_fed("cat /dev/zero", "eval --problem sphere --x -"), {"stdin line 1", "NUL byte"});
     expect_input_error("eval --problem sphere --x -", {"stdin line 2", "NUL byte"}, std::string("1,2\n3,\0", 7));
@@ -146,7 +147,8 @@ TEST_CASE("readers: a CSV table that is not UTF-8 is refused at its line and col
     const std::string truncated = dir.write("truncated.csv", "a,d\n1,\xC3");
     expect_input_error("roughset '" + truncated + "'", {"truncated.csv:2:3:", "\\xC3"});
     // Valid UTF-8 (a BOM, accents, 4-byte characters) is read and printed as it is.
-    const std::string utf8 = dir.write("utf8.csv", "\xEF\xBB\xBFnom,d\xC3\xA9\x63ision\ncaf\xC3\xA9,\xF0\x9F\x99\x82\nth\xC3\xA9,no\n");
+    const std::string utf8 =
+        dir.write("utf8.csv", "\xEF\xBB\xBFnom,d\xC3\xA9\x63ision\ncaf\xC3\xA9,\xF0\x9F\x99\x82\nth\xC3\xA9,no\n");
     const auto r = run_pride("roughset --json '" + utf8 + "'");
     REQUIRE(r.status == 0);
     CHECK(valid_utf8(r.out));
