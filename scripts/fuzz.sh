@@ -114,10 +114,13 @@ printf '%-10s %12s %8s %8s %10s %8s  %s\n' target executions cov ft corpus sessi
 for t in "${targets[@]}"; do
   logs=("$build/logs/$t".[0-9]*.log)
   execs=$(cat "${logs[@]}" | sed -n 's/^stat::number_of_executed_units: \([0-9]*\)/\1/p' | awk '{n += $1} END {print n}')
-  last=$(ls -v "${logs[@]}" | tail -1 | xargs grep -E '^#[0-9]+.* cov: ' | tail -1)
-  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
-  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
-  corpus=$(sed -n 's/.* corp: \([0-9]*\/[0-9a-zA-Z]*\).*/\1/p' <<<"$last")
+  # The largest coverage any session reached (a session cut short by the time left may end
+  # before it has reloaded the whole corpus), and the corpus as the last line left it.
+  stats=$(cat "${logs[@]}" | grep -aE '^#[0-9]+.* cov: ')
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$stats" | sort -n | tail -1)
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$stats" | sort -n | tail -1)
+  corpus=$(ls -v "${logs[@]}" | tail -1 | xargs grep -aE '^#[0-9]+.* cov: ' | tail -1 |
+    sed -n 's/.* corp: \([0-9]*\/[0-9a-zA-Z]*\).*/\1/p')
   n=$(find "$build/findings/$t" -type f | wc -l)
   what=$(find "$build/findings/$t" -type f -printf '%f ' | head -c 300)
   load=$(find "$build/findings-load/$t" -type f | wc -l)
