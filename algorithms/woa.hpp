@@ -26,6 +26,12 @@
 //   Balance mode, at the end of the iteration (eq. 9): whale::balance_step; on stagnation the
 //   pod is rebuilt: 20 % kept by tournament (the best among them), the rest uniform in the box,
 //   evaluated.
+// On chains (grid paths, the chain encoding) the same loop runs on whale::ChainPod
+// (whale_pods.hpp): the whales are the space's chains (on grids random walks with backtracking,
+// shortened by the line-of-sight shortcut), and each move of eqs. 1-8 moves a whale towards its
+// target through the space's TowardMoves capability; the improvisation and the reconstruction are
+// chain operations too. whale_pods.hpp says how each equation's factor becomes a share of the
+// target's course (the spec leaves that open).
 // Decided by the spec or this project where the papers are open: as in WOA.m, whales move one
 // after another in place, so a random whale drawn for whale i may already have moved this
 // iteration (and is not yet clamped: clamping is applied to the whole pod before evaluation); the
@@ -45,7 +51,9 @@
 
 #include "algorithms/parts/run_setup.hpp"
 #include "algorithms/parts/whale_moves.hpp"
+#include "algorithms/parts/whale_pods.hpp"
 #include "framework/bounds.hpp"
+#include "framework/chain.hpp"
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
@@ -69,8 +77,6 @@ struct PerCoordinateDraws {
     void validate(const std::string&) const {}
 };
 using SelectableWhaleDraws = OneOf<PerWhaleDraws, PerCoordinateDraws>;
-
-enum class WhaleMove { search, encircle, spiral };
 
 /// Mode: WOA's convergence factor chooses between exploration and exploitation through |A|.
 struct ConvergenceMode {
@@ -140,116 +146,24 @@ class Woa {
         second_step.validate(name());
     }
 
+    /// On the box of a BoxProblem.
     template <BoxProblem P, Observer O = NoObserver>
     Result run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
-        const std::int64_t per_iteration = population * (1 + evaluations_per_whale());
-        auto run = start_box_run(*this, problem, termination, seed, observer, {per_iteration, "for its schedule of a"});
-        const std::int64_t horizon = *run.horizon;
-        const auto lo = run.lo, hi = run.hi;
-        const std::size_t dim = run.dim;
-        Rng& rng = run.rng;
-        RunState& state = run.state;
-        Matrix& x = run.x;
-        std::vector<double>& fx = run.fx;
-        const auto n = x.cols();
-        const auto un = static_cast<std::uint64_t>(n);
+        whale::BoxPod<Woa, P> pod(*this, problem, termination, seed, observer, horizon_need());
+        return iterations(pod, observer);
+    }
 
-        std::vector<double> leader(dim), y(dim);
-        double leader_f = kInf;
-        auto consider = [&](std::span<const double> xi, double f) {
-            if (f < leader_f) {
-                leader_f = f;
-                std::copy(xi.begin(), xi.end(), leader.begin());
-            }
-        };
-        {
-            const auto best = std::min_element(fx.begin(), fx.end()) - fx.begin();
-            const auto xb = column(std::as_const(x), best);
-            std::copy(xb.begin(), xb.end(), leader.begin());
-            leader_f = fx[static_cast<std::size_t>(best)];
-        }
-        auto consider_pod = [&](Eigen::Index from, Eigen::Index count) {
-            for (Eigen::Index i = from; i < from + count; ++i)
-                consider(column(std::as_const(x), i), fx[static_cast<std::size_t>(i)]);
-        };
-        auto evaluate_pod = [&] {
-            for (Eigen::Index i = 0; i < n; ++i) bounds(column(x, i), lo, hi);
-            const auto done = state.evaluate_columns(problem, x, fx);
-            consider_pod(0, done);
-        };
-
-        whale::BalanceState balance;
-        visit_policy(mode, [&](const auto& m) {
-            if constexpr (std::decay_t<decltype(m)>::balanced) balance.balance = m.start;
+    /// On chains with TowardMoves (framework/chain.hpp; whale_pods.hpp says how the equations act
+    /// on chains). The draws are per whale: PerCoordinateDraws has no meaning on chains.
+    template <TowardMoves P, class O = NoObserver>
+    BasicResult<typename P::chain_type> run(P problem, const Termination& termination, std::uint64_t seed,
+                                            O&& observer = O{}) const {
+        visit_policy(draws, [&](const auto& d) {
+            require(!std::decay_t<decltype(d)>::per_coordinate, name(),
+                    "per-coordinate draws have no meaning on chains");
         });
-        std::vector<std::size_t> order(static_cast<std::size_t>(n));
-        Matrix kept(x.rows(), n);
-        std::vector<double> kept_f(static_cast<std::size_t>(n));
-
-        for (std::int64_t t = 0; !state.done(); ++t) {
-            const double before = leader_f;
-            const double a = whale::a(t, horizon), a2 = whale::a2(t, horizon);
-            visit_policy(draws, [&](const auto& dp) {
-                visit_policy(mode, [&](const auto& m) { sweep(dp, m, x, leader, a, a2, balance.balance, rng); });
-            });
-            evaluate_pod();
-            visit_policy(second_step, [&](const auto& s) {
-                // From the type: clang 14 refuses `s.evaluations_per_whale` (a reference) here.
-                if constexpr (std::remove_cvref_t<decltype(s)>::evaluations_per_whale > 0) {
-                    if (state.exhausted()) return;
-                    // Eq. 8: towards X* if better than the average, towards a random whale otherwise.
-                    double avg = 0.0;
-                    for (double f : fx) avg += f;
-                    avg /= static_cast<double>(n);
-                    for (Eigen::Index i = 0; i < n; ++i) {
-                        const bool good = fx[static_cast<std::size_t>(i)] < avg;
-                        const Eigen::Index other = good ? 0 : static_cast<Eigen::Index>(rng.below(un));
-                        const double r = rng.uniform();
-                        double* xi = x.col(i).data();
-                        const double* target = good ? leader.data() : x.col(other).data();
-                        for (std::size_t d = 0; d < dim; ++d) xi[d] = whale::toward(xi[d], target[d], r);
-                    }
-                    evaluate_pod();
-                    // Improvisations from the pod (the harmony memory), each replacing the worst.
-                    for (Eigen::Index k = 0; k < n && !state.exhausted(); ++k) {
-                        whale::improvise(x, lo, hi, s.rates, rng, std::span<double>(y));
-                        bounds(std::span<double>(y), lo, hi);
-                        const double f = state.evaluate(problem, std::span<const double>(y));
-                        consider(y, f);
-                        const std::size_t w = whale::worst(fx);
-                        if (f < fx[w]) {
-                            std::copy(y.begin(), y.end(), x.col(static_cast<Eigen::Index>(w)).data());
-                            fx[w] = f;
-                        }
-                    }
-                }
-            });
-            visit_policy(mode, [&](const auto& m) {
-                if constexpr (std::decay_t<decltype(m)>::balanced) {
-                    if (!whale::balance_step(balance, leader_f < before, m.start, m.thr) || state.exhausted()) return;
-                    // Reconstruction: keep 20 % by tournament (the best among them), renew the rest.
-                    const auto keep = static_cast<std::size_t>(
-                        std::clamp<double>(std::round(m.keep * static_cast<double>(n)), 1.0, static_cast<double>(n)));
-                    whale::tournament_keep(std::span<const double>(fx), keep, rng, std::span<std::size_t>(order));
-                    for (std::size_t j = 0; j < keep; ++j) {
-                        kept.col(static_cast<Eigen::Index>(j)) = x.col(static_cast<Eigen::Index>(order[j]));
-                        kept_f[j] = fx[order[j]];
-                    }
-                    const auto k = static_cast<Eigen::Index>(keep);
-                    x.leftCols(k) = kept.leftCols(k);
-                    std::copy_n(kept_f.begin(), keep, fx.begin());
-                    for (Eigen::Index i = k; i < n; ++i)
-                        for (std::size_t d = 0; d < dim; ++d)
-                            x(static_cast<Eigen::Index>(d), i) = rng.uniform(lo[d], hi[d]);
-                    for (Eigen::Index i = k; i < n; ++i) bounds(column(x, i), lo, hi);
-                    const auto done =
-                        state.evaluate_columns(problem, x.rightCols(n - k), std::span<double>(fx).subspan(keep));
-                    consider_pod(k, done);
-                }
-            });
-            state.end_iteration(observer, x, fx);
-        }
-        return state.finish();
+        whale::ChainPod<Woa, P> pod(*this, problem, termination, seed, observer, horizon_need());
+        return iterations(pod, observer);
     }
 
     std::int64_t evaluations_per_whale() const {
@@ -304,6 +218,63 @@ class Woa {
     }
 
   private:
+    HorizonNeed horizon_need() const { return {population * (1 + evaluations_per_whale()), "for its schedule of a"}; }
+
+    /// The iteration loop, for boxes and chains alike (the pod holds what differs).
+    template <class Pod, class O>
+    auto iterations(Pod& pod, O& observer) const {
+        Rng& rng = pod.rng();
+        auto& state = pod.state();
+        const std::int64_t horizon = pod.horizon();
+        const std::size_t n = pod.size();
+        whale::BalanceState balance;
+        visit_policy(mode, [&](const auto& m) {
+            if constexpr (std::decay_t<decltype(m)>::balanced) balance.balance = m.start;
+        });
+        std::vector<std::size_t> order(n);
+
+        for (std::int64_t t = 0; !state.done(); ++t) {
+            const double before = pod.leader_f();
+            const double a = whale::a(t, horizon), a2 = whale::a2(t, horizon);
+            visit_policy(draws, [&](const auto& dp) {
+                visit_policy(mode, [&](const auto& m) { pod.sweep(dp, m, a, a2, balance.balance); });
+            });
+            pod.evaluate_pod();
+            visit_policy(second_step, [&](const auto& s) {
+                // From the type: clang 14 refuses `s.evaluations_per_whale` (a reference) here.
+                if constexpr (std::remove_cvref_t<decltype(s)>::evaluations_per_whale > 0) {
+                    if (state.exhausted()) return;
+                    // Eq. 8: towards X* if better than the average, towards a random whale otherwise.
+                    const auto fx = pod.fitness();
+                    double avg = 0.0;
+                    for (double f : fx) avg += f;
+                    avg /= static_cast<double>(n);
+                    for (std::size_t i = 0; i < n; ++i) {
+                        const bool good = fx[i] < avg;
+                        const std::size_t other = good ? 0 : static_cast<std::size_t>(rng.below(n));
+                        pod.toward(i, good, other, rng.uniform());
+                    }
+                    pod.evaluate_pod();
+                    // Improvisations from the pod (the harmony memory), each replacing the worst.
+                    for (std::size_t k = 0; k < n && !state.exhausted(); ++k) pod.improvise(s.rates);
+                }
+            });
+            visit_policy(mode, [&](const auto& m) {
+                if constexpr (std::decay_t<decltype(m)>::balanced) {
+                    if (!whale::balance_step(balance, pod.leader_f() < before, m.start, m.thr) || state.exhausted())
+                        return;
+                    // Reconstruction: keep 20 % by tournament (the best among them), renew the rest.
+                    const auto keep = static_cast<std::size_t>(
+                        std::clamp<double>(std::round(m.keep * static_cast<double>(n)), 1.0, static_cast<double>(n)));
+                    whale::tournament_keep(pod.fitness(), keep, rng, std::span<std::size_t>(order));
+                    pod.rebuild(order, keep);
+                }
+            });
+            pod.end_iteration(observer);
+        }
+        return pod.finish();
+    }
+
     template <class Policy, class F>
     static void visit_policy(const Policy& policy, F&& f) {
         if constexpr (requires { policy.visit(f); })

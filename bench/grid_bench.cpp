@@ -12,12 +12,17 @@
 //   5. With --pareto, only: the exact Pareto fronts (problems/grid/pareto.hpp) of (length, turns),
 //      (length, angle_penalty) and all three, and the iqga optimum over the 3-D front, on the
 //      bundled 20x20 and 40x40 maps and on the 100x100 map with 20 % random obstacles.
-// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp | --pareto]
+//   6. With --whales only: HS-WOA and WOA (N = 20, 50 iterations, chain encoding, objective
+//      hswoa) on the bundled 50x50 map (file 003), run through the engine, 51 seeds: the median
+//      and least wall time of a run (RunState's clock) and its median processor time (std::clock,
+//      steadier than the wall clock on a loaded machine).
+// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp | --pareto | --whales]
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -175,6 +180,38 @@ void bench_sitp(const std::string& maps, int repeats = 51) {
     }
 }
 
+/// HS-WOA and WOA, file 003's setting, on the bundled 50x50 map (section 6 of the header).
+void bench_whales(const std::string& maps) {
+    const Bundled b = bundled(maps, "file003-50x50");
+    engine::GridSpec spec;
+    spec.map = b.map;
+    spec.start = b.start;
+    spec.goal = b.goal;
+    spec.encoding = "chain";
+    spec.objective = "hswoa";
+    const engine::Problem problem(spec);  // N = 20 on grids
+    engine::Budget t50;
+    t50.iterations = 50;
+    fmt::print("part,map,runs,median_wall_ms,min_wall_ms,median_cpu_ms,mean_evaluations,mean_value\n");
+    for (const char* algorithm : {"hswoa", "woa"}) {
+        std::vector<double> wall, cpu;
+        double evaluations = 0.0, value = 0.0;
+        constexpr int runs = 51;
+        for (std::uint64_t seed = 1; seed <= runs; ++seed) {
+            const std::clock_t c0 = std::clock();
+            const auto r = engine::run({algorithm, {}}, problem, t50, seed);
+            cpu.push_back(1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
+            wall.push_back(r.wall_ms);
+            evaluations += static_cast<double>(r.evaluations) / runs;
+            value += r.best_f / runs;
+        }
+        std::sort(wall.begin(), wall.end());
+        std::sort(cpu.begin(), cpu.end());
+        fmt::print("{},file003-50x50,{},{:.2f},{:.2f},{:.2f},{:.0f},{:.3f}\n", algorithm, runs, wall[wall.size() / 2],
+                   wall.front(), cpu[cpu.size() / 2], evaluations, value);
+    }
+}
+
 void bench_swarms(const std::string& maps) {
     for (const char* algorithm : {"pso", "lso", "ilso"}) bench_swarm(maps, algorithm);
 }
@@ -222,9 +259,10 @@ int main(int argc, char** argv) {
     CLI::App app{"grid benchmark: A*, decoding, PSO, LSO and ILSO on the 10x10 map"};
     app.add_option("--scen", scens, "Moving AI scenario files for the A* part");
     app.add_option("--maps", maps, "folder of the bundled maps (default examples/maps)");
-    bool sitp = false, pareto = false;
+    bool sitp = false, pareto = false, whales = false;
     app.add_flag("--sitp", sitp, "only: the time to make N = 40 SITP paths on the bundled 40x40 map");
     app.add_flag("--pareto", pareto, "only the exact Pareto fronts (20x20, 40x40, random 100x100)");
+    app.add_flag("--whales", whales, "only: HS-WOA and WOA, N = 20, 50 iterations, on the bundled 50x50 map");
     CLI11_PARSE(app, argc, argv);
     try {
         if (sitp) {
@@ -233,6 +271,10 @@ int main(int argc, char** argv) {
         }
         if (pareto) {
             bench_paretos(maps);
+            return 0;
+        }
+        if (whales) {
+            bench_whales(maps);
             return 0;
         }
         bench_rule_book();

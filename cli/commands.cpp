@@ -35,6 +35,7 @@ int run_command(const RunOptions& o, std::ostream& out) {
     budget.iterations = o.iters;
     budget.target = o.target;
     budget.wall_ms = o.wall_ms;
+    budget.threads = o.threads;
     engine::check(algorithm, problem, budget);
     require(o.seed >= 0, "seed", "must be >= 0, got " + std::to_string(o.seed));
     const engine::RunResult r = engine::run(algorithm, problem, budget, static_cast<std::uint64_t>(o.seed));

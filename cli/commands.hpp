@@ -22,6 +22,7 @@ struct RunOptions {
     std::optional<double> wall_ms;
     std::optional<std::int64_t> pop;
     std::int64_t seed = 1;
+    std::int64_t threads = 1;         // evaluation threads (engine::Budget::threads)
     std::vector<std::string> params;  // "name=value"
     bool json = false;
 };

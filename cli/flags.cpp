@@ -26,6 +26,7 @@ std::string user_message(const InputError& e) {
                                                           {"seed", "--seed"},
                                                           {"map", "--map"},
                                                           {"jobs", "--jobs"},
+                                                          {"threads", "--threads"},
                                                           {"instance", "--instance"},
                                                           {"objectives", "--objectives"}};
     const std::string& where = e.where();

@@ -61,6 +61,7 @@ engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec_out) {
     engine::Budget budget;
     budget.iterations = o.iters;
     budget.evaluations = o.evals;
+    budget.threads = o.threads;
     engine::check(algorithm, problem, budget);
     require(o.seed >= 0, "--seed", "must be >= 0, got " + std::to_string(o.seed));
     if (spec_out) *spec_out = spec;

@@ -26,6 +26,7 @@ struct PathOptions {
     std::optional<std::int64_t> iters;
     std::optional<std::int64_t> evals;
     std::int64_t seed = 1;
+    std::int64_t threads = 1;  // evaluation threads (engine::Budget::threads)
     std::int64_t inflate = 0;
     std::int64_t waypoints = 3;
     std::optional<std::string> weights;  // "L,T,A" for the weighted objective

@@ -43,6 +43,9 @@ int main(int argc, char** argv) {
     run_cmd->add_option("--wall-ms", run.wall_ms, "stop after this many milliseconds");
     run_cmd->add_option("--pop", run.pop, "population size (NLopt: evaluations per recorded iteration)");
     run_cmd->add_option("--seed", run.seed, "random seed (default 1)");
+    run_cmd->add_option("--threads", run.threads,
+                        "threads evaluating a population (default 1; continuous functions use one: they are cheaper "
+                        "than a thread's wake-up)");
     run_cmd->add_option("--param", run.params, "algorithm parameter NAME=VALUE (repeatable)");
     run_cmd->add_flag("--json", run.json, "print one JSON object");
 
@@ -74,6 +77,9 @@ int main(int argc, char** argv) {
         path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)");
     path_cmd->add_option("--evals", path.evals, "evaluation limit")->excludes(path_iters);
     path_cmd->add_option("--seed", path.seed, "random seed (default 1)");
+    path_cmd->add_option("--threads", path.threads,
+                         "threads evaluating a population of genotypes (line and free encodings; default 1); the "
+                         "same result as one thread");
     path_cmd->add_option("--inflate", path.inflate, "obstacle inflation radius in cells (default 0)");
     path_cmd->add_option("--waypoints", path.waypoints, "waypoints of the free encoding (default 3)");
     path_cmd->add_option("--weights", path.weights, "L,T,A weights of the weighted objective (default 1,1,0.1)");

@@ -3,11 +3,12 @@
 #include <cmath>
 
 #include "framework/error.hpp"
+#include "framework/initializer.hpp"
 
 namespace pride::engine {
 
 CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
-                                 Batch batch) {
+                                 Batch batch, bool thread_safe, Starts starts) {
     require(!lower.empty(), name, "the box has no coordinates (lower and upper are empty)");
     require(lower.size() == upper.size(), name,
             "lower has " + std::to_string(lower.size()) + " coordinates and upper " + std::to_string(upper.size()));
@@ -15,8 +16,9 @@ CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, st
         require(std::isfinite(lower[i]) && std::isfinite(upper[i]) && lower[i] <= upper[i], name,
                 "bounds " + std::to_string(i) + " must be finite with lower <= upper");
     require(static_cast<bool>(scalar) || static_cast<bool>(batch), name, "no function to evaluate");
-    shared_ = std::make_shared<const Shared>(
-        Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar), std::move(batch)});
+    shared_ =
+        std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar),
+                                              std::move(batch), thread_safe, std::move(starts)});
 }
 
 double CallbackProblem::evaluate(std::span<const double> x) {
@@ -35,6 +37,17 @@ void CallbackProblem::evaluate_batch(MatrixView points, std::span<double> values
     for (Eigen::Index j = 0; j < points.cols(); ++j)
         values[static_cast<std::size_t>(j)] =
             shared_->scalar(std::span<const double>(points.col(j).data(), static_cast<std::size_t>(points.rows())));
+}
+
+}  // namespace pride::engine
+
+namespace pride::engine {
+
+void CallbackProblem::starting_points(Rng& rng, Matrix& out) const {
+    if (shared_->starts)
+        shared_->starts(rng, out);
+    else
+        UniformInit{}(*this, rng, out);
 }
 
 }  // namespace pride::engine

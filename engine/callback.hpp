@@ -18,18 +18,26 @@ class CallbackProblem {
   public:
     using Scalar = std::function<double(std::span<const double>)>;
     using Batch = std::function<void(MatrixView, std::span<double>)>;
+    /// Fills every column of a matrix with a starting point (as SuggestsStartingPoints).
+    using Starts = std::function<void(Rng&, Matrix&)>;
 
     /// Throws InputError for an empty box, lower > upper, a non-finite bound, or no function.
+    /// `thread_safe`: the functions may be called from several threads at once (RunSettings'
+    /// threads); `starts`: the problem's own starting points (empty: uniform in the box).
     CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
-                    Batch batch = {});
+                    Batch batch = {}, bool thread_safe = false, Starts starts = {});
 
     std::size_t dimension() const noexcept { return shared_->lower.size(); }
     std::span<const double> lower() const noexcept { return shared_->lower; }
     std::span<const double> upper() const noexcept { return shared_->upper; }
     std::string_view name() const noexcept { return shared_->name; }
+    bool thread_safe() const noexcept { return shared_->thread_safe; }
 
     double evaluate(std::span<const double> x);
     void evaluate_batch(MatrixView points, std::span<double> values);
+    /// The given starting points, or uniform ones drawn as UniformInit draws them (so a callback
+    /// without starts runs as it did before it had any).
+    void starting_points(Rng& rng, Matrix& out) const;
 
   private:
     struct Shared {
@@ -37,6 +45,8 @@ class CallbackProblem {
         std::vector<double> lower, upper;
         Scalar scalar;
         Batch batch;
+        bool thread_safe = false;
+        Starts starts;
     };
     std::shared_ptr<const Shared> shared_;  // copies per run share the function and the box
 };

@@ -244,6 +244,9 @@ Campaign read_campaign(const std::string& path) {
                     fail(at(path, bv), "unknown key '" + kk + "' in [budget] (evaluations, iterations, target)");
                 }
             }
+        } else if (k == "threads") {  // evaluation threads per run (Budget::threads; results unchanged)
+            c.budget.threads = need_integer(path, value, k);
+            if (c.budget.threads < 1 || c.budget.threads > 256) fail(at(path, value), "'threads' must be in [1, 256]");
         } else if (k == "suite") {
             const toml::array* a = value.as_array();
             if (!a || !a->is_array_of_tables()) fail(at(path, value), "'suite' must be [[suite]] tables");
@@ -259,7 +262,7 @@ Campaign read_campaign(const std::string& path) {
                     c.algorithms.push_back(read_algorithm(path, *n.as_table()));
             }
         } else {
-            fail(at(path, value), "unknown key '" + k + "' (name, seeds, budget, problem, suite, algorithm)");
+            fail(at(path, value), "unknown key '" + k + "' (name, seeds, budget, threads, problem, suite, algorithm)");
         }
     }
     // toml++ visits keys in name order; problems and suites run in the order the file gives them.

@@ -35,6 +35,14 @@ inline auto population_memory(double matrices) {
     };
 }
 
+/// Calls the engine's observer when there is one (box_algorithm's runners).
+struct ForwardingObserver {
+    const BoxObserver* observer = nullptr;
+    void operator()(const IterationView& view) const {
+        if (observer && *observer) (*observer)(view);
+    }
+};
+
 /// An entry that runs on boxes: `configure(params)` returns the configured typed algorithm.
 template <class Configure>
 AlgorithmEntry box_algorithm(std::string name, std::string family, std::string summary, std::vector<ParamSpec> params,
@@ -44,11 +52,22 @@ AlgorithmEntry box_algorithm(std::string name, std::string family, std::string s
     e.family = std::move(family);
     e.summary = std::move(summary);
     e.params = std::move(params);
-    e.run_box = [configure](const Params& p, const BoxTarget& target, const Termination& termination,
-                            std::uint64_t seed) -> Result {
+    // One typed run per (algorithm, problem type), observed or not: the observer is tested once
+    // per iteration.
+    auto runner = [configure](const Params& p, const BoxTarget& target, const Termination& termination,
+                              std::uint64_t seed, const BoxObserver* observer) -> Result {
         const auto algorithm = configure(p);
-        return std::visit([&](const auto& problem) -> Result { return algorithm.run(problem, termination, seed); },
-                          target.problem);
+        ForwardingObserver forward{observer};
+        return std::visit(
+            [&](const auto& problem) -> Result { return algorithm.run(problem, termination, seed, forward); },
+            target.problem);
+    };
+    e.run_box = [runner](const Params& p, const BoxTarget& target, const Termination& termination, std::uint64_t seed) {
+        return runner(p, target, termination, seed, nullptr);
+    };
+    e.run_box_observed = [runner](const Params& p, const BoxTarget& target, const Termination& termination,
+                                  std::uint64_t seed, const BoxObserver& observer) {
+        return runner(p, target, termination, seed, &observer);
     };
     return e;
 }

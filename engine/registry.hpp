@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine/params.hpp"
+#include "framework/observer.hpp"
 #include "framework/result.hpp"
 #include "framework/termination.hpp"
 #include "problems/grid/path.hpp"
@@ -27,6 +28,10 @@ struct ChainTarget;  // engine/targets.hpp
 struct GridTarget;   // engine/targets.hpp
 
 using ChainResult = BasicResult<grid::Path>;
+
+/// What an observed box run calls at the end of every iteration (iteration 0: the initial
+/// population); once per iteration, never per evaluation.
+using BoxObserver = std::function<void(const IterationView&)>;
 
 /// What a whole-map algorithm (A*, the exact optimum) returns: a legal path, its value under the
 /// problem's objective, and the work it took (A*: node expansions).
@@ -43,6 +48,10 @@ struct AlgorithmEntry {
 
     /// Runs on a box (continuous problems, grids through the line and free encodings, callbacks).
     std::function<Result(const Params&, const BoxTarget&, const Termination&, std::uint64_t seed)> run_box;
+    /// run_box with an observer (engine::run with an observer; box_algorithm sets both, one
+    /// instantiation for the two). Empty: the entry's box runs cannot be observed.
+    std::function<Result(const Params&, const BoxTarget&, const Termination&, std::uint64_t seed, const BoxObserver&)>
+        run_box_observed;
     /// Runs on cell chains (grids with the chain encoding).
     std::function<ChainResult(const Params&, const ChainTarget&, const Termination&, std::uint64_t seed)> run_chain;
     /// Solves a grid as a whole (baselines): no budget, no seed.

@@ -4,6 +4,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include "engine/registry.hpp"
 #include "engine/targets.hpp"
 #include "framework/error.hpp"
+#include "framework/parallel.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/oracle.hpp"
 #include "problems/grid/pareto.hpp"
@@ -210,7 +212,7 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
         const auto& cb = std::get<CallbackSpec>(spec);
         out->name = cb.name;
         out->dimension = cb.lower.size();
-        out->box = BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch)};
+        out->box = BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch, cb.thread_safe)};
     }
     return out;
 }
@@ -421,7 +423,52 @@ struct CheckedRun {
     Termination termination;
 };
 
+/// The largest Budget::threads: far more than a population's slices are worth.
+constexpr std::int64_t kMaxThreads = 256;
+
+void check_threads(const Prepared& p, const Budget& budget) {
+    require(budget.threads >= 1 && budget.threads <= kMaxThreads, "threads",
+            fmt::format("must be in [1, {}], got {}", kMaxThreads, budget.threads));
+    if (budget.threads == 1 || !p.box) return;
+    if (const auto* cb = std::get_if<CallbackProblem>(&p.box->problem))
+        require(cb->thread_safe(), "threads",
+                fmt::format("the function '{}' is not marked thread-safe (CallbackSpec::thread_safe), so it runs on "
+                            "one thread only; Python functions always do",
+                            cb->name()));
+}
+
+/// The box a run with Budget::threads > 1 searches: the prepared target's problem behind a
+/// ParallelBatch (framework/parallel.hpp), erased into a CallbackProblem so that no algorithm is
+/// compiled twice; one std::function call per slice of a batch. Empty when the run stays on one
+/// thread: one thread asked for, or a continuous function (its noise is drawn in evaluation order,
+/// and an evaluation costs less than waking a thread).
+std::optional<BoxTarget> threaded_box(const BoxTarget& target, const std::string& name, std::int64_t threads) {
+    if (threads <= 1) return std::nullopt;
+    return std::visit(
+        [&](const auto& problem) -> std::optional<BoxTarget> {
+            using P = std::decay_t<decltype(problem)>;
+            if constexpr (Reseedable<P> || std::is_same_v<P, continuous::Function>) {
+                return std::nullopt;
+            } else {
+                ParallelBatch<P> parallel(problem, static_cast<std::size_t>(threads));
+                CallbackProblem::Starts starts;
+                if constexpr (SuggestsStartingPoints<P>)
+                    starts = [parallel](Rng& rng, Matrix& out) { parallel.first().starting_points(rng, out); };
+                const auto lo = problem.lower(), hi = problem.upper();
+                return BoxTarget{CallbackProblem(
+                    name, std::vector<double>(lo.begin(), lo.end()), std::vector<double>(hi.begin(), hi.end()),
+                    [parallel](std::span<const double> x) mutable { return parallel.evaluate(x); },
+                    [parallel](MatrixView points, std::span<double> values) mutable {
+                        parallel.evaluate_batch(points, values);
+                    },
+                    true, std::move(starts))};
+            }
+        },
+        target.problem);
+}
+
 CheckedRun checked_run(const AlgorithmSpec& algorithm, const Prepared& p, const Budget& budget) {
+    check_threads(p, budget);
     const AlgorithmEntry& entry = algorithms().at(algorithm.name);
     CheckedRun c{entry, checked(entry, p, algorithm), budget.termination(p.dimension, p.grid.has_value())};
     if (!entry.solve_grid) check_run_memory(entry, c.params, p, c.termination);
@@ -433,14 +480,39 @@ void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget&
     checked_run(algorithm, problem.prepared(), budget);
 }
 
-RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed) {
+namespace {
+/// A box run, observed when `observer` is given: its stop flag joins the stopping rules.
+Result run_box(const AlgorithmEntry& entry, const Params& params, const BoxTarget& target,
+               const Termination& termination, std::uint64_t seed, const IterationObserver* observer) {
+    if (!observer) return entry.run_box(params, target, termination, seed);
+    require(static_cast<bool>(entry.run_box_observed), "observer", entry.name + " cannot be observed");
+    auto stop = std::make_shared<std::atomic<bool>>(false);
+    Termination observed = termination;
+    observed.stop = stop;
+    const BoxObserver forward = [&](const IterationView& view) {
+        if (!(*observer)(view)) stop->store(true, std::memory_order_relaxed);
+    };
+    return entry.run_box_observed(params, target, observed, seed, forward);
+}
+
+RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed,
+                       const IterationObserver* observer) {
     const Prepared& p = problem.prepared();
     const auto [entry, params, termination] = checked_run(algorithm, p, budget);
 
     RunResult out;
     out.algorithm = entry.name;
+    if (observer && p.grid)
+        require(!entry.solve_grid && !p.chain, "observer",
+                "only box runs are observed (" + entry.name +
+                    (entry.solve_grid ? " solves the whole map)" : " runs on chains)"));
+    // Made only for a run on the box (its threads start here and end with the run).
+    auto box_run = [&] {
+        const auto threaded = threaded_box(*p.box, p.name, budget.threads);
+        return run_box(entry, params, threaded ? *threaded : *p.box, termination, seed, observer);
+    };
     if (!p.grid) {
-        Result r = entry.run_box(params, *p.box, termination, seed);
+        Result r = box_run();
         copy_run(out, r);
         out.best_x = std::move(r.best_x);
         return out;
@@ -465,7 +537,7 @@ RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budg
         copy_run(out, r);
     } else {
         o.encoding = g.encoding;
-        Result r = entry.run_box(params, *p.box, termination, seed);
+        Result r = box_run();
         std::visit(
             [&](const auto& target) {
                 using Target = std::decay_t<decltype(target)>;
@@ -481,6 +553,16 @@ RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budg
     }
     out.grid = std::move(o);
     return out;
+}
+}  // namespace
+
+RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed) {
+    return run_observed(algorithm, problem, budget, seed, nullptr);
+}
+
+RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed,
+              const IterationObserver& observer) {
+    return run_observed(algorithm, problem, budget, seed, &observer);
 }
 
 std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate) {

@@ -3,12 +3,14 @@
 // built once from its spec (a campaign builds each once: maps parsed once, reachability and
 // encodings' tables computed once) and copied into every run, so runs never share state.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/specs.hpp"
+#include "framework/observer.hpp"
 #include "problems/grid/path.hpp"
 
 namespace pride::engine {
@@ -81,6 +83,17 @@ void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget&
 
 /// Runs once. The same inputs give the same result, bit for bit (bar wall_ms), on any thread.
 RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed);
+
+/// Sees every iteration of an observed run (iteration 0: the initial population) and returns
+/// false to stop it there, as a stopping rule would: the result is the run up to that iteration.
+using IterationObserver = std::function<bool(const IterationView&)>;
+
+/// run() with an observer: box algorithms only (continuous, callback and grid problems through
+/// the line and free encodings); InputError("observer", ...) for chains and whole-map algorithms.
+/// The observer changes nothing else: the same inputs give the same result as run() when it
+/// never stops the run.
+RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed,
+              const IterationObserver& observer);
 
 /// Bytes of memory this machine has for one process (physical memory, or a lower address-space
 /// limit); sizes are checked against it before anything is allocated.

@@ -52,6 +52,10 @@ struct CallbackSpec {
     std::vector<double> lower, upper;
     std::function<double(std::span<const double>)> scalar;
     std::function<void(MatrixView, std::span<double>)> batch;
+    /// The functions may be called from several threads at once (Budget::threads > 1). A run with
+    /// threads asks for it and refuses a callback without it (Python functions hold the GIL: leave
+    /// it false for them).
+    bool thread_safe = false;
 };
 
 using ProblemSpec = std::variant<ContinuousSpec, GridSpec, CallbackSpec>;
@@ -72,6 +76,11 @@ struct Budget {
     // Not a limit: decreasing values whose first reaching each run records exactly
     // (RunResult::target_hits; campaigns: COCO's targets f_opt + 10^k).
     std::vector<double> recorded_targets;
+    // Not a limit either: how many threads evaluate one population (1..256). Box algorithms hand
+    // callbacks and grids (line and free encodings) a population cut into that many slices, one
+    // per thread, with results bit-identical to one thread; continuous functions (cheaper than a
+    // thread's wake-up) and chains (evaluated one at a time) run on the run's thread whatever it is.
+    std::int64_t threads = 1;
 
     /// The stopping rules for a problem of `dimension` (grid: whether it is a grid problem);
     /// InputError naming the field for a limit out of range.

@@ -75,3 +75,23 @@ concept SegmentRegeneration = ChainProblem<P> && requires(P& p, Rng& rng, typena
 };
 
 }  // namespace pride
+
+namespace pride {
+
+/// Moving one chain towards another (file 003's whale moves on grids): `a` takes a share `w` in
+/// [0, 1] of `b`'s course (0 barely, 1 as much as the space allows), stays feasible, and `b` may be
+/// `a` itself (a perturbation of `a`'s own course).
+template <class P>
+concept TowardMoves = ChainProblem<P> &&
+    requires(P& p, Rng& rng, typename P::chain_type& a, const typename P::chain_type& b, double w) {
+    { p.toward(a, b, w, rng) } -> std::same_as<void>;
+};
+
+/// A chain made shorter in place and kept feasible (on grids: file 003's line-of-sight shortcut),
+/// for algorithms that shorten every chain they make.
+template <class P>
+concept Shortening = ChainProblem<P> && requires(P& p, typename P::chain_type& a) {
+    { p.shorten(a) } -> std::same_as<void>;
+};
+
+}  // namespace pride

@@ -3,9 +3,11 @@
 // iterations, a target value, wall time. Each is a Termination with one limit set; `a | b` stops
 // at whichever comes first. Checked once per iteration, never per evaluation.
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,9 +35,13 @@ class Termination {
     // Not a stopping rule: values, in decreasing order, whose first reaching the evaluation guard
     // records as an exact evaluation count (COCO's targets f_opt + 10^k: Result::target_hits).
     std::vector<double> recorded_targets;
+    // Not a limit: a flag set from outside the run's loop (an observer asking to stop, a front end
+    // cancelling), read with the other rules once per iteration; unset costs one test.
+    std::shared_ptr<const std::atomic<bool>> stop;
 
     /// True when any limit set is reached.
     bool done(const Progress& p) const {
+        if (stop && stop->load(std::memory_order_relaxed)) return true;
         if (max_evaluations && p.evaluations >= *max_evaluations) return true;
         if (max_iterations && p.iterations >= *max_iterations) return true;
         if (target && p.best <= *target) return true;
@@ -79,6 +85,7 @@ class Termination {
         tighter(a.target, b.target, max);
         tighter(a.wall_time, b.wall_time, min);
         if (a.recorded_targets.empty()) a.recorded_targets = b.recorded_targets;
+        if (!a.stop) a.stop = b.stop;
         return a;
     }
 };

@@ -12,6 +12,11 @@
 
 #include "framework/problem.hpp"
 
+namespace pride {
+/// The move eqs. 1-7 make of a whale (the Mode policies of woa.hpp choose it).
+enum class WhaleMove { search, encircle, spiral };
+}  // namespace pride
+
 namespace pride::whale {
 
 /// a of eqs. 3-4 at iteration t of T (t = 0..T-1): 2 - 2t/T, from 2 towards 0 (WOA.m).

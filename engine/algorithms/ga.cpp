@@ -249,6 +249,38 @@ void add_iqga(AlgorithmRegistry& registry) {
     registry.add(std::move(e));
 }
 
+// --- ga-sga: ga-plus with pagmo2's polynomial mutation (issue 15; mutation.hpp) ---
+
+using SgaBox = Ga<TournamentSelection, SbxCrossover, SimplePolynomialMutation, Clamp, SelectableInit, PlusReplacement>;
+
+std::vector<ParamSpec> sga_params() {
+    return {population_param(50, 2),
+            integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
+            real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index"),
+            real("pc", 0.9, 0.0, 1.0, "crossover probability per pair"),
+            real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
+            real("pm", 0.0, 0.0, 1.0, "mutation probability per gene (default 1/D)").no_default(),
+            walk_init_param(false)};
+}
+
+void add_ga_sga(AlgorithmRegistry& registry) {
+    auto e = box_algorithm("ga-sga", "ga",
+                           "ga-plus with the simple polynomial mutation of pagmo2's sga (steps a fraction of the "
+                           "distance to the face moved towards); boxes only",
+                           sga_params(), [](const Params& p) {
+                               SgaBox a;
+                               a.id = "ga-sga";
+                               a.population = p.integer("pop");
+                               a.selection.size = p.integer("tournament");
+                               a.crossover.probability = p.real("pc");
+                               box_operators(a, p);
+                               if (const auto pm = p.optional("pm")) a.mutation.probability = *pm;  // else 1/D
+                               return a;
+                           });
+    e.memory = population_memory(4);
+    registry.add(std::move(e));
+}
+
 void add(AlgorithmRegistry& registry, bool plus, std::string summary) {
     auto e = box_algorithm(plus ? "ga-plus" : "ga", "ga", std::move(summary), params(plus),
                            [plus](const Params& p) { return configure_box(p, plus); });
@@ -269,6 +301,7 @@ void register_ga(AlgorithmRegistry& registry) {
     add_icga(registry);
     add_ga_q(registry);
     add_iqga(registry);
+    add_ga_sga(registry);
 }
 
 }  // namespace pride::engine

@@ -1,6 +1,7 @@
 // The whale family (algorithms/woa.hpp): woa, the two halves of file 003's ablation (woa-hs: the
 // harmony second step only; woa-balance: the balance factor only) and hswoa (both), four
-// configurations of one instantiation (the policies are chosen once per iteration).
+// configurations of one instantiation (the policies are chosen once per iteration), on boxes and
+// on chains (grids with the chain encoding: N = 20 and 50 iterations by default, as file 003).
 #include "algorithms/woa.hpp"
 
 #include "engine/family.hpp"
@@ -14,7 +15,8 @@ std::vector<ParamSpec> whale_params(bool harmony, bool balanced) {
     std::vector<ParamSpec> ps{
         population_param(30, 2), real("b", 1.0, -10.0, 10.0, "shape constant of the logarithmic spiral (eq. 5)"),
         flag("per_coordinate", false,
-             "draw r1, r2 and p anew for every coordinate (the vector reading) instead of once per whale (WOA.m)")};
+             "draw r1, r2 and p anew for every coordinate (the vector reading) instead of once per whale (WOA.m)")
+            .only_on_boxes()};
     if (balanced) {
         ps.push_back(real("balance", 0.8, 0.0, 1.0, "starting balance factor: the probability of exploring (eq. 9)"));
         ps.push_back(
@@ -26,7 +28,7 @@ std::vector<ParamSpec> whale_params(bool harmony, bool balanced) {
         ps.push_back(real("par", 0.3, 0.0, 1.0, "pitch adjusting rate of the second step"));
         ps.push_back(real("bw", 0.01, 0.0, 1.0, "bandwidth as a fraction of each coordinate's range"));
     }
-    ps.push_back(walk_init_param(false));
+    ps.push_back(walk_init_param(false).only_on_boxes());
     return ps;
 }
 
@@ -57,6 +59,8 @@ auto configure(std::string id, bool harmony, bool balanced) {
 void add(AlgorithmRegistry& registry, const std::string& name, const std::string& summary, bool harmony,
          bool balanced) {
     auto e = box_algorithm(name, "woa", summary, whale_params(harmony, balanced), configure(name, harmony, balanced));
+    // On chains the same configuration runs the chain pod (algorithms/parts/whale_pods.hpp).
+    add_chain_runner(e, configure(name, harmony, balanced));
     e.memory = population_memory(2);  // the pod and the reconstruction's copy
     registry.add(std::move(e));
 }

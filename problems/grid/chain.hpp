@@ -20,6 +20,10 @@
 //                                  (NumberedMutations);
 //   regenerate(c, i, j, rng)       the SITP walk between c[i] and c[j] (SegmentRegeneration);
 //   length(c)                      the path's length, eq. 8 (ChainLength).
+// File 003's whale moves (whale_chain.hpp), for HS-WOA on grids:
+//   toward(c, t, w, rng)           c's section regenerated within a window around t's (TowardMoves);
+//   shorten(c)                     the line-of-sight shortcut, kept when it does not raise the
+//                                  objective (a Bresenham join may add turns) (Shortening).
 // Every operator keeps the chain legal: joins happen at shared cells, walks take legal steps.
 #include <cstdint>
 #include <span>
@@ -31,6 +35,7 @@
 #include "problems/grid/iqga_moves.hpp"
 #include "problems/grid/sitp.hpp"
 #include "problems/grid/walk.hpp"
+#include "problems/grid/whale_chain.hpp"
 
 namespace pride::grid {
 
@@ -111,6 +116,15 @@ class ChainSpace {
         return moves_.regenerate(problem_, c, i, j, rng);
     }
 
+    // The whale capabilities (framework/chain.hpp; whale_chain.hpp says how).
+    void toward(Path& c, const Path& target, double w, Rng& rng) {
+        whale_.toward(problem_.map(), c, target, w, rng, problem_.corner_cutting());
+    }
+    void shorten(Path& c) {
+        whale_.shortcut(problem_.map(), c, shortened_, problem_.corner_cutting());
+        if (problem_.evaluate(shortened_) <= problem_.evaluate(c)) c.swap(shortened_);
+    }
+
   private:
     GridProblem<Objective> problem_;
     Walks init_ = Walks::random;
@@ -120,6 +134,8 @@ class ChainSpace {
     std::vector<std::int32_t> position_, seen_;
     std::vector<std::pair<std::size_t, std::size_t>> common_;
     Path tail_, segment_;
+    WhaleChainMoves whale_;
+    Path shortened_;
 };
 
 }  // namespace pride::grid

@@ -1,0 +1,113 @@
+#include "engine/ask_tell.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "framework/error.hpp"
+
+namespace pride::engine {
+
+AskTell::AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector<double> upper, Budget budget,
+                 std::uint64_t seed) {
+    dimension_ = lower.size();
+    CallbackSpec spec;
+    spec.name = "bounds";
+    spec.lower = std::move(lower);
+    spec.upper = std::move(upper);
+    spec.batch = [this](MatrixView points, std::span<double> values) { exchange(points, values); };
+    Problem problem(spec);
+    check(algorithm, problem, budget);
+    worker_ = std::thread(&AskTell::work, this, std::move(algorithm), std::move(problem), std::move(budget), seed);
+}
+
+AskTell::~AskTell() {
+    {
+        const std::lock_guard lock(mutex_);
+        cancel_ = true;
+    }
+    changed_.notify_all();
+    if (worker_.joinable()) worker_.join();
+}
+
+void AskTell::work(AlgorithmSpec algorithm, Problem problem, Budget budget, std::uint64_t seed) {
+    std::optional<RunResult> result;
+    std::exception_ptr failure;
+    try {
+        result = run(algorithm, problem, budget, seed);
+    } catch (...) {
+        failure = std::current_exception();  // Cancelled, or NLopt's own error around it
+    }
+    {
+        const std::lock_guard lock(mutex_);
+        if (!cancel_) {
+            result_ = std::move(result);
+            failure_ = failure;
+        }
+        state_ = State::finished;
+    }
+    changed_.notify_all();
+}
+
+void AskTell::exchange(MatrixView points, std::span<double> values) {
+    std::unique_lock lock(mutex_);
+    if (cancel_) throw Cancelled{};
+    pending_ = points;
+    told_ = false;
+    asked_ = false;
+    state_ = State::asking;
+    changed_.notify_all();
+    changed_.wait(lock, [&] { return told_ || cancel_; });
+    if (cancel_) throw Cancelled{};
+    std::copy(values_.begin(), values_.end(), values.begin());
+    state_ = State::running;
+}
+
+void AskTell::wait_for_run(std::unique_lock<std::mutex>& lock) {
+    changed_.wait(lock, [&] { return state_ != State::running; });
+}
+
+const Matrix& AskTell::ask() {
+    std::unique_lock lock(mutex_);
+    wait_for_run(lock);
+    if (state_ == State::finished) {
+        if (failure_) std::rethrow_exception(failure_);
+        pending_.resize(static_cast<Eigen::Index>(dimension_), 0);
+        return pending_;
+    }
+    asked_ = true;
+    return pending_;
+}
+
+void AskTell::tell(std::span<const double> values) {
+    {
+        std::unique_lock lock(mutex_);
+        wait_for_run(lock);
+        require(state_ != State::finished, "tell", "the run has ended (done is true): nothing more to tell");
+        require(asked_, "tell", "no points were asked for: call ask() first");
+        require(values.size() == static_cast<std::size_t>(pending_.cols()), "tell",
+                "expected " + std::to_string(pending_.cols()) + " values, one per point asked for, got " +
+                    std::to_string(values.size()));
+        values_.assign(values.begin(), values.end());
+        told_ = true;
+        asked_ = false;
+        state_ = State::running;
+    }
+    changed_.notify_all();
+}
+
+bool AskTell::done() {
+    std::unique_lock lock(mutex_);
+    wait_for_run(lock);
+    return state_ == State::finished;
+}
+
+const RunResult& AskTell::result() {
+    std::unique_lock lock(mutex_);
+    wait_for_run(lock);
+    if (failure_) std::rethrow_exception(failure_);
+    require(state_ == State::finished && result_.has_value(), "result",
+            "the run has not ended yet: tell the values of every batch until done is true");
+    return *result_;
+}
+
+}  // namespace pride::engine

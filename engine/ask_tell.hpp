@@ -1,0 +1,70 @@
+#pragma once
+// Ask and tell: any box algorithm driven from outside, one batch at a time. The run proceeds on
+// its own thread over a callback problem whose batch function hands each batch the evaluation
+// guard asks for (the population, or what is left of the budget) to the caller and waits for its
+// values, so no algorithm is rewritten and the run is the one engine::run gives with the same
+// function: the same seed, the same bits.
+#include <condition_variable>
+#include <cstdint>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <thread>
+#include <vector>
+
+#include "engine/run.hpp"
+#include "engine/specs.hpp"
+#include "framework/problem.hpp"
+
+namespace pride::engine {
+
+class AskTell {
+  public:
+    /// Checks everything engine::check does on the box [lower, upper] (InputError naming what is
+    /// wrong), then starts the run; it waits at its first batch.
+    AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector<double> upper, Budget budget,
+            std::uint64_t seed);
+    /// A run still going is stopped at its pending batch and its thread joined.
+    ~AskTell();
+    AskTell(const AskTell&) = delete;
+    AskTell& operator=(const AskTell&) = delete;
+
+    std::size_t dimension() const noexcept { return dimension_; }
+
+    /// The points the run wants evaluated next, one per column (0 columns once the run has
+    /// ended); asking again before telling gives the same points. Blocks until the run asks or ends.
+    const Matrix& ask();
+    /// The values of the points of the last ask(), one each (NaN: worse than every value).
+    /// InputError("tell", ...) after the end, before an ask, or for a wrong number of values.
+    void tell(std::span<const double> values);
+    /// True once the run has ended (blocks until the run asks or ends).
+    bool done();
+    /// The run's result; InputError("result", ...) before the end. Rethrows what stopped the run
+    /// if it failed.
+    const RunResult& result();
+
+  private:
+    void work(AlgorithmSpec algorithm, Problem problem, Budget budget, std::uint64_t seed);
+    /// The batch function: publishes `points`, waits for tell() (or cancellation).
+    void exchange(MatrixView points, std::span<double> values);
+    void wait_for_run(std::unique_lock<std::mutex>& lock);
+
+    struct Cancelled {};
+    enum class State { running, asking, finished };
+
+    std::size_t dimension_ = 0;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    State state_ = State::running;
+    bool asked_ = false;   // ask() has shown the pending points
+    bool cancel_ = false;  // the destructor wants the run to end
+    Matrix pending_;       // the points of the pending batch
+    std::vector<double> values_;
+    bool told_ = false;
+    std::optional<RunResult> result_;
+    std::exception_ptr failure_;
+    std::thread worker_;  // last: started once everything above exists
+};
+
+}  // namespace pride::engine

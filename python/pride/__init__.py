@@ -1,0 +1,268 @@
+"""pride: metaheuristic optimisation at C++ speed (docs/python.md).
+
+Every algorithm and problem of pride's registry, grid planning, rough sets and campaigns.
+The names and parameters come from the engine's registry, so what ``pride list`` shows is what
+this module takes::
+
+    import pride
+    r = pride.minimize("pso", "rastrigin", dim=10, evals=20_000, seed=1)
+    r.best_f, r.best_x, r.history
+"""
+
+from __future__ import annotations
+
+import numbers as _numbers
+
+import numpy as _np
+
+from . import _pride
+from ._pride import Grid
+
+__all__ = [
+    "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Grid", "plan", "astar",
+    "exact", "pareto", "roughset", "Campaign", "read_store", "report",
+]
+
+
+def algorithms():
+    """Every registered algorithm: name, family, summary, spaces and parameters (name, type,
+    default, min, max, range, doc), as ``pride list --json`` gives them."""
+    return _pride.algorithms()
+
+
+def problems():
+    """Every registered continuous problem: name, summary, dimensions, instances, suite."""
+    return _pride.problems()
+
+
+def grid_names():
+    """The objectives, encodings, connectors and initialisations grid plans take."""
+    return _pride.grid_names()
+
+
+def _int(name, value, optional=True):
+    """An integer keyword, or a one-line TypeError naming it (pybind11's own lists signatures)."""
+    if value is None and optional:
+        return None
+    if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
+        raise TypeError(f"{name}: expected an integer, got {type(value).__name__}")
+    return int(value)
+
+
+def _real(name, value):
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, _numbers.Real):
+        raise TypeError(f"{name}: expected a number, got {type(value).__name__}")
+    return float(value)
+
+
+def _str(name, value):
+    if not isinstance(value, str):
+        raise TypeError(f"{name}: expected a name (str), got {type(value).__name__}")
+    return value
+
+
+class Result:
+    """What a run returns: best_x (numpy), best_f, evaluations, iterations, history (numpy: the
+    best value after each iteration, 0 = the initial population), history_evaluations, wall_ms;
+    grid plans add path ((n, 2) array of x, y), feasible, objective_value, metrics, optimum, gap."""
+
+    def __init__(self, fields):
+        self.__dict__.update(fields)
+
+    def as_dict(self):
+        return dict(self.__dict__)
+
+    def __repr__(self):
+        shown = ", ".join(
+            f"{k}={v!r}" for k, v in self.__dict__.items()
+            if k in ("algo", "best_f", "evaluations", "iterations", "wall_ms", "feasible", "objective_value"))
+        return f"Result({shown})"
+
+
+def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, target=None, wall_ms=None,
+             seed=0, instance=None, callback=None, vectorized=False, **params):
+    """One run of ``algo`` on ``problem``: a registered problem's name (with ``dim``, and
+    ``instance``) or a Python function with ``bounds=(lower, upper)``, called as ``f(x)`` with x
+    of shape (dim,), or, with ``vectorized=True``, as ``f(X)`` with X of shape (n, dim) returning n
+    values. ``params`` are the algorithm's parameters (see ``algorithms()``). Without evals or
+    iters the budget is 10,000 evaluations per dimension. ``callback(iteration, evaluations,
+    best_f, population, fitness)`` is called after every iteration with read-only views (valid
+    during the call); returning False stops the run there. The same seed gives the same bits as
+    ``pride run --seed``."""
+    return Result(_pride.minimize(_str("algo", algo), problem, _int("dim", dim), bounds, _int("evals", evals),
+                                  _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
+                                  _int("seed", seed, False), _int("instance", instance), callback, bool(vectorized),
+                                  params))
+
+
+class Optimizer:
+    """Ask and tell: ``X = opt.ask()`` gives the (n, dim) batch the algorithm wants evaluated,
+    ``opt.tell(values)`` its n values, until ``opt.done``; then ``opt.result`` as from
+    ``minimize``. The run is the one ``minimize`` makes with the same function and seed, bit for
+    bit. Closing (or dropping) an optimizer mid-run stops its run."""
+
+    def __init__(self, algo, *, bounds, dim=None, evals=None, iters=None, target=None, wall_ms=None, seed=0,
+                 **params):
+        self._run = _pride.Optimizer(_str("algo", algo), bounds, _int("dim", dim), _int("evals", evals),
+                                     _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
+                                     _int("seed", seed, False), params)
+        self.algo = algo
+
+    def ask(self):
+        return self._run.ask()
+
+    def tell(self, values):
+        self._run.tell(values)
+
+    @property
+    def done(self):
+        return self._run.done()
+
+    @property
+    def dim(self):
+        return self._run.dimension()
+
+    @property
+    def result(self):
+        return Result(self._run.result())
+
+    def close(self):
+        """Stops the run if it is still going (its thread ends); the optimizer is then unusable."""
+        self._run.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
+def plan(grid, start, goal, *, algo="pso", objective="cells", encoding="line", connector="repair", init="",
+         waypoints=3, weights=None, lambda_=None, corner_cutting=False, oracle=False, evals=None, iters=None,
+         seed=0, callback=None, **params):
+    """A path on ``grid`` (a ``pride.Grid``) from ``start`` to ``goal`` ((x, y), x the column from
+    the left, y the row from the top) by any grid algorithm, as ``pride path`` plans it: the
+    result's ``path`` is an (n, 2) array of (x, y), with ``metrics`` and ``objective_value``;
+    ``oracle=True`` adds the exact ``optimum`` and the ``gap``. Without evals or iters, 50
+    iterations."""
+    if not isinstance(grid, Grid):
+        raise TypeError(f"grid: expected a pride.Grid, got {type(grid).__name__}")
+    return Result(_pride.plan(grid, start, goal, _str("algo", algo), _str("objective", objective),
+                              _str("encoding", encoding), _str("connector", connector), _str("init", init),
+                              _int("waypoints", waypoints, False),
+                              None if weights is None else [float(w) for w in weights], _real("lambda_", lambda_),
+                              bool(corner_cutting), bool(oracle), _int("evals", evals), _int("iters", iters),
+                              _int("seed", seed, False), callback, params))
+
+
+def astar(grid, start, goal, *, objective="cells", corner_cutting=False):
+    """A* on the grid (a shortest path under ``objective``'s step costs)."""
+    return plan(grid, start, goal, algo="astar", objective=objective, corner_cutting=corner_cutting)
+
+
+def exact(grid, start, goal, *, objective="cells", corner_cutting=False):
+    """The exact optimum of ``objective`` (the oracle; for iqga the 3-D Pareto front)."""
+    return plan(grid, start, goal, algo="exact", objective=objective, corner_cutting=corner_cutting)
+
+
+def pareto(grid, start, goal, *, objectives="length,turns", corner_cutting=False):
+    """The exact Pareto front over ``objectives`` (length, turns, angle: two or three of them, as
+    ``pride pareto``): a list of dicts with length, turns, angle_penalty and path."""
+    if not isinstance(objectives, str):
+        objectives = ",".join(objectives)
+    return _pride.pareto(grid, start, goal, objectives, corner_cutting)
+
+
+def _pandas():
+    try:
+        import pandas
+        return pandas
+    except ImportError:
+        return None
+
+
+def roughset(table, *, columns=None):
+    """Core, reducts and minimal certain rules of a decision table, as ``pride roughset --json``:
+    ``table`` is a CSV file's path, a 2-D array (integers are codes, anything else is a label;
+    the last column is the decision; ``columns`` names them, default a, b, c, ...) or a pandas
+    DataFrame (its column names)."""
+    if isinstance(table, str):
+        return _pride.roughset_csv(table)
+    pd = _pandas()
+    if pd is not None and isinstance(table, pd.DataFrame):
+        columns = [str(c) for c in table.columns] if columns is None else list(columns)
+        values = table.to_numpy()
+    else:
+        values = _np.asarray(table)
+    if values.ndim != 2:
+        raise ValueError(f"table: expected a 2-D table (rows of objects), got {values.ndim} dimensions")
+    if columns is None:
+        columns = [chr(ord("a") + i) if i < 26 else f"c{i}" for i in range(values.shape[1])]
+    columns = [str(c) for c in columns]
+    if len(columns) != values.shape[1]:
+        raise ValueError(f"columns: {len(columns)} names for {values.shape[1]} columns")
+    if values.dtype.kind in "iub":
+        return _pride.roughset_table(columns, values.astype(int).tolist(), False)
+    if values.dtype.kind == "f" and _np.all(_np.isfinite(values)) and _np.all(values == _np.floor(values)):
+        return _pride.roughset_table(columns, values.astype(int).tolist(), False)
+    return _pride.roughset_table(columns, [[str(v) for v in row] for row in values], True)
+
+
+class Campaign:
+    """A campaign: problems x algorithms x seeds under one budget, run on threads into an SQLite
+    store (resumable: runs already stored are not run again). Build it from Python data::
+
+        pride.Campaign("demo", seeds=5, evals=10_000,
+                       problems=[{"id": "sph", "problem": "sphere", "dim": 10},
+                                 {"id": "mine", "function": f, "bounds": (-5, 5), "dim": 3}],
+                       algorithms=["pso", {"id": "ga", "algo": "ga", "pop": 40}])
+
+    or from a TOML file (``pride bench``'s format) with ``Campaign.load(path)``. Python functions
+    are called with the GIL held, one at a time, whatever the number of jobs."""
+
+    def __init__(self, name, *, seeds, problems, algorithms, evals=None, iters=None, target=None):
+        self._c = _pride.campaign_from_data(name, seeds, evals, iters, target, list(problems), list(algorithms))
+
+    @classmethod
+    def load(cls, path):
+        self = cls.__new__(cls)
+        self._c = _pride.campaign_from_file(path)
+        return self
+
+    name = property(lambda self: self._c.name)
+    seeds = property(lambda self: self._c.seeds)
+    runs = property(lambda self: self._c.runs)
+    problems = property(lambda self: self._c.problems)
+    algorithms = property(lambda self: self._c.algorithms)
+
+    def run(self, store, *, jobs=1):
+        """Runs what ``store`` does not hold yet on ``jobs`` threads; returns the counts
+        (stored, already, total)."""
+        return _pride.campaign_run(self._c, str(store), jobs)
+
+
+def read_store(path, *, dataframe=None):
+    """The runs of a campaign store: a DataFrame when pandas is present (or ``dataframe=True``),
+    else a list of dicts (problem, algorithm, seed, best, evaluations, wall_ms, optimum, history)."""
+    store = _pride.read_store(str(path))
+    pd = _pandas()
+    if dataframe or (dataframe is None and pd is not None):
+        if pd is None:
+            raise ImportError("read_store(dataframe=True) needs pandas")
+        return pd.DataFrame(store["runs"])
+    return store["runs"]
+
+
+def report(path, *, dataframe=None):
+    """The report of a campaign store (``pride report``): ``rows`` (per problem and algorithm:
+    min, mean, std, median, max, best, p_holm, ...) as a DataFrame when pandas is present,
+    ``friedman`` and the rendered ``markdown`` and ``csv``, as a dict."""
+    r = _pride.report(str(path))
+    pd = _pandas()
+    if dataframe or (dataframe is None and pd is not None):
+        if pd is None:
+            raise ImportError("report(dataframe=True) needs pandas")
+        r["rows"] = pd.DataFrame(r["rows"])
+    return r

@@ -1,0 +1,261 @@
+// Campaigns for Python: built from Python data (problems may be Python functions) or read from a
+// TOML file (`pride bench`'s format), run on threads into an SQLite store, and the store and its
+// report read back as Python data. MPI stays with the command line.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstring>
+#include <set>
+
+#include "common.hpp"
+#include "engine/campaign.hpp"
+#include "engine/campaign_toml.hpp"
+#include "engine/report/report.hpp"
+#include "engine/report/store.hpp"
+
+namespace pride::python {
+
+namespace {
+
+/// A prepared campaign and the first exception its Python functions raised.
+struct PyCampaign {
+    engine::Campaign campaign;
+    std::shared_ptr<UserError> errors = std::make_shared<UserError>();
+    bool python_functions = false;
+};
+
+const std::set<std::string> problem_keys{"id",       "problem",        "dim",      "instance",  "grid",
+                                         "map",      "inflate",        "start",    "goal",      "objective",
+                                         "encoding", "connector",      "init",     "waypoints", "weights",
+                                         "lambda",   "corner_cutting", "function", "bounds",    "vectorized"};
+
+template <class T>
+std::optional<T> get(const py::dict& d, const char* key) {
+    if (!d.contains(key) || d[key].is_none()) return std::nullopt;
+    return d[key].cast<T>();
+}
+
+engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t index) {
+    const std::string where = "problems[" + std::to_string(index) + "]";
+    for (const auto& [k, v] : d)
+        require(problem_keys.count(py::str(k).cast<std::string>()) != 0, where,
+                "unknown key '" + py::str(k).cast<std::string>() + "'");
+    engine::CampaignProblem p;
+    const auto id = get<std::string>(d, "id");
+    require(id && !id->empty(), where, "needs an id");
+    p.id = *id;
+    const int kinds =
+        int(d.contains("problem")) + int(d.contains("grid") || d.contains("map")) + int(d.contains("function"));
+    require(kinds == 1, where, "give exactly one of problem (a registered name), grid (a map) or function");
+    if (d.contains("problem")) {
+        const auto dim = get<std::int64_t>(d, "dim");
+        require(dim.has_value(), where, "problem '" + p.id + "' needs dim");
+        p.spec = engine::ContinuousSpec{d["problem"].cast<std::string>(), *dim, get<std::int64_t>(d, "instance")};
+    } else if (d.contains("function")) {
+        const py::object fn = d["function"];
+        if (!PyCallable_Check(fn.ptr())) throw py::type_error(where + ": function must be callable");
+        require(d.contains("bounds"), where, "a function needs bounds=(lower, upper)");
+        auto [lower, upper] = parse_bounds(d["bounds"], get<std::int64_t>(d, "dim"));
+        p.spec = callback_spec(fn, get<bool>(d, "vectorized").value_or(false), std::move(lower), std::move(upper),
+                               c.errors, p.id);
+        c.python_functions = true;
+    } else {
+        engine::GridSpec g;
+        const py::object map = d.contains("grid") ? d["grid"] : d["map"];
+        if (py::isinstance<py::str>(map)) {
+            p.map_file = map.cast<std::string>();
+            p.inflate = get<std::int64_t>(d, "inflate").value_or(0);
+        } else {
+            // A pride.Grid (its map is shared as it is; inflate it with Grid.inflated).
+            require(!d.contains("inflate"), where, "inflate a Grid with grid.inflated(r)");
+            if (!py::isinstance<Grid>(map))
+                throw py::type_error(where + ": grid must be a map file's path or a pride.Grid");
+            g.map = map.cast<const Grid&>().map;
+        }
+        auto cell = [&](const char* key) {
+            require(d.contains(key), where, std::string("a grid problem needs ") + key + "=(x, y)");
+            const auto v = d[key].cast<std::vector<int>>();
+            require(v.size() == 2, where, std::string(key) + " must be (x, y)");
+            return grid::Cell{v[0], v[1]};
+        };
+        g.start = cell("start");
+        g.goal = cell("goal");
+        g.objective = get<std::string>(d, "objective").value_or(g.objective);
+        g.encoding = get<std::string>(d, "encoding").value_or(g.encoding);
+        g.connector = get<std::string>(d, "connector").value_or(g.connector);
+        g.init = get<std::string>(d, "init").value_or(g.init);
+        g.waypoints = get<std::int64_t>(d, "waypoints").value_or(g.waypoints);
+        g.weights = get<std::vector<double>>(d, "weights").value_or(g.weights);
+        g.lambda = get<double>(d, "lambda");
+        g.corner_cutting = get<bool>(d, "corner_cutting").value_or(false);
+        p.spec = std::move(g);
+    }
+    return p;
+}
+
+engine::CampaignAlgorithm algorithm(const py::handle& item, std::size_t index) {
+    const std::string where = "algorithms[" + std::to_string(index) + "]";
+    engine::CampaignAlgorithm a;
+    if (py::isinstance<py::str>(item)) {
+        a.id = a.spec.name = item.cast<std::string>();
+        return a;
+    }
+    if (!py::isinstance<py::dict>(item)) throw py::type_error(where + ": expected an algorithm name or a dict");
+    py::dict d = item.cast<py::dict>();
+    const auto algo = get<std::string>(d, "algo");
+    require(algo.has_value(), where, "needs algo (a registered algorithm's name)");
+    a.spec.name = *algo;
+    a.id = get<std::string>(d, "id").value_or(*algo);
+    py::dict params;
+    for (const auto& [k, v] : d) {
+        const auto key = py::str(k).cast<std::string>();
+        if (key == "id" || key == "algo") continue;
+        if (key == "params") {
+            for (const auto& [pk, pv] : v.cast<py::dict>()) params[pk] = pv;
+        } else {
+            params[k] = v;
+        }
+    }
+    a.spec.params = param_values(params);
+    return a;
+}
+
+std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seeds, std::optional<std::int64_t> evals,
+                                      std::optional<std::int64_t> iters, std::optional<double> target,
+                                      const py::list& problems, const py::list& algorithms) {
+    auto c = std::make_shared<PyCampaign>();
+    auto& k = c->campaign;
+    require(!name.empty(), "name", "a campaign needs a name");
+    require(seeds >= 1 && seeds <= 1'000'000, "seeds", "must be in [1, 1000000], got " + std::to_string(seeds));
+    require(evals || iters, "campaign", "give evals or iters (the budget of every run)");
+    k.name = name;
+    k.seeds = seeds;
+    k.budget.evaluations = evals;
+    k.budget.iterations = iters;
+    k.target = target;
+    require(py::len(problems) > 0, "problems", "a campaign needs at least one problem");
+    require(py::len(algorithms) > 0, "algorithms", "a campaign needs at least one algorithm");
+    std::size_t i = 0;
+    for (const auto& p : problems) {
+        if (!py::isinstance<py::dict>(p)) throw py::type_error("problems[" + std::to_string(i) + "]: expected a dict");
+        k.problems.push_back(problem(p.cast<py::dict>(), *c, i++));
+    }
+    i = 0;
+    for (const auto& a : algorithms) k.algorithms.push_back(algorithm(a, i++));
+    engine::prepare(k);
+    return c;
+}
+
+std::shared_ptr<PyCampaign> from_file(const std::string& path) {
+    auto c = std::make_shared<PyCampaign>();
+    py::gil_scoped_release release;
+    c->campaign = engine::read_campaign(path);
+    return c;
+}
+
+py::dict run(PyCampaign& c, const std::string& store, std::int64_t jobs) {
+    engine::BenchSummary s;
+    {
+        // Runs of Python functions take the GIL for each call: threads never run Python at once.
+        py::gil_scoped_release release;
+        try {
+            s = engine::run_campaign(c.campaign, store, jobs);
+        } catch (...) {
+            c.errors->rethrow_or(std::current_exception());
+        }
+    }
+    return py::dict(py::arg("stored") = s.stored, py::arg("already") = s.already, py::arg("total") = s.total);
+}
+
+py::object optional_number(const std::optional<double>& v) {
+    return v ? py::object(py::float_(*v)) : py::object(py::none());
+}
+
+py::dict read_store(const std::string& path) {
+    report::CampaignStore s;
+    {
+        py::gil_scoped_release release;
+        s = report::read_store(path);
+    }
+    py::list runs;
+    for (const auto& r : s.runs) {
+        py::array_t<std::int64_t> he(static_cast<py::ssize_t>(r.history_evaluations.size()));
+        if (!r.history_evaluations.empty())
+            std::memcpy(he.mutable_data(), r.history_evaluations.data(),
+                        sizeof(std::int64_t) * r.history_evaluations.size());
+        runs.append(py::dict(py::arg("problem") = r.problem, py::arg("algorithm") = r.algorithm,
+                             py::arg("seed") = r.seed, py::arg("best") = optional_number(r.best),
+                             py::arg("evaluations") = r.evaluations, py::arg("wall_ms") = r.wall_ms,
+                             py::arg("optimum") = optional_number(r.optimum),
+                             py::arg("history") = vector_array(r.history), py::arg("history_evaluations") = he));
+    }
+    py::list problems;
+    if (s.problems)
+        for (const auto& p : *s.problems)
+            problems.append(py::dict(py::arg("id") = p.id, py::arg("dim") = p.dim, py::arg("function") = p.function,
+                                     py::arg("instance") = p.instance, py::arg("f_opt") = optional_number(p.f_opt),
+                                     py::arg("suite") = p.suite, py::arg("fid") = p.fid));
+    return py::dict(py::arg("name") = s.name, py::arg("target") = optional_number(s.target),
+                    py::arg("problems") = problems, py::arg("runs") = runs);
+}
+
+py::dict report_data(const std::string& path) {
+    report::ReportData r;
+    {
+        py::gil_scoped_release release;
+        r = report::load_report(path);
+    }
+    py::list rows;
+    for (const auto& x : r.rows)
+        rows.append(
+            py::dict(py::arg("problem") = x.problem, py::arg("algorithm") = x.algorithm, py::arg("runs") = x.runs,
+                     py::arg("min") = x.min, py::arg("mean") = x.mean, py::arg("std") = x.std,
+                     py::arg("median") = x.median, py::arg("max") = x.max, py::arg("mean_wall_ms") = x.mean_wall_ms,
+                     py::arg("mean_evaluations") = x.mean_evaluations, py::arg("optimum") = optional_number(x.optimum),
+                     py::arg("mean_gap") = optional_number(x.mean_gap), py::arg("success") = optional_number(x.success),
+                     py::arg("best") = x.best, py::arg("p_holm") = optional_number(x.p_holm),
+                     py::arg("reached_target") = x.reached_target,
+                     py::arg("mean_evaluations_to_target") = optional_number(x.mean_evaluations_to_target)));
+    py::object friedman = py::none();
+    if (r.friedman)
+        friedman =
+            py::dict(py::arg("algorithms") = r.friedman->algorithms, py::arg("problems") = r.friedman->problems,
+                     py::arg("average_ranks") = r.friedman->test.average_ranks,
+                     py::arg("statistic") = r.friedman->test.statistic, py::arg("p_value") = r.friedman->test.p_value);
+    return py::dict(py::arg("campaign") = r.campaign, py::arg("target") = optional_number(r.target),
+                    py::arg("rows") = rows, py::arg("friedman") = friedman,
+                    py::arg("markdown") = report::render_markdown(r), py::arg("csv") = report::render_csv(r));
+}
+
+}  // namespace
+
+void bind_campaign(py::module_& m) {
+    py::class_<PyCampaign, std::shared_ptr<PyCampaign>>(m, "Campaign")
+        .def_property_readonly("name", [](const PyCampaign& c) { return c.campaign.name; })
+        .def_property_readonly("seeds", [](const PyCampaign& c) { return c.campaign.seeds; })
+        .def_property_readonly(
+            "runs",
+            [](const PyCampaign& c) {
+                return static_cast<std::int64_t>(c.campaign.problems.size() * c.campaign.algorithms.size()) *
+                       c.campaign.seeds;
+            })
+        .def_property_readonly("problems",
+                               [](const PyCampaign& c) {
+                                   std::vector<std::string> ids;
+                                   for (const auto& p : c.campaign.problems) ids.push_back(p.id);
+                                   return ids;
+                               })
+        .def_property_readonly("algorithms", [](const PyCampaign& c) {
+            std::vector<std::string> ids;
+            for (const auto& a : c.campaign.algorithms) ids.push_back(a.id);
+            return ids;
+        });
+    m.def("campaign_from_data", &from_data, py::arg("name"), py::arg("seeds"), py::arg("evals"), py::arg("iters"),
+          py::arg("target"), py::arg("problems"), py::arg("algorithms"));
+    m.def("campaign_from_file", &from_file, py::arg("path"));
+    m.def("campaign_run", &run, py::arg("campaign"), py::arg("store"), py::arg("jobs"));
+    m.def("read_store", &read_store, py::arg("path"));
+    m.def("report", &report_data, py::arg("path"));
+}
+
+}  // namespace pride::python

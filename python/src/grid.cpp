@@ -1,0 +1,172 @@
+// Grids for Python: maps from files or 0/1 arrays, planning with every grid algorithm of the
+// registry (engine::run, as `pride path`), and the exact Pareto front (as `pride pareto`).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "common.hpp"
+#include "problems/grid/grid_problem.hpp"
+#include "problems/grid/objectives.hpp"
+#include "problems/grid/pareto.hpp"
+
+namespace pride::python {
+
+namespace {
+
+Grid grid_from_array(const py::object& array) {
+    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+    if (!a) throw py::type_error("grid: expected an array of numbers 0 and 1");
+    if (a.ndim() != 2)
+        throw InputError("grid", "expected a 2-D array of 0 (free) and 1 (blocked), rows top first, got " +
+                                     std::to_string(a.ndim()) + " dimensions");
+    const auto height = a.shape(0), width = a.shape(1);
+    require(width >= 1 && height >= 1, "grid", "a map needs at least one row and one column");
+    require(width <= 1'000'000 && height <= 1'000'000 && width * height <= 100'000'000, "grid",
+            fmt::format("a {} x {} map is larger than 10^8 cells", width, height));
+    std::vector<std::uint8_t> blocked(static_cast<std::size_t>(width * height));
+    const double* v = a.data();
+    for (py::ssize_t i = 0; i < width * height; ++i) {
+        require(v[i] == 0.0 || v[i] == 1.0, "grid",
+                fmt::format("cell ({},{}) is {}; expected 0 (free) or 1 (blocked)", i % width, i / width, v[i]));
+        blocked[static_cast<std::size_t>(i)] = v[i] == 1.0;
+    }
+    return {std::make_shared<const grid::GridMap>(static_cast<int>(width), static_cast<int>(height), std::move(blocked),
+                                                  "array")};
+}
+
+grid::Cell cell(const py::object& o, const char* where) {
+    if (!py::isinstance<py::sequence>(o) || py::isinstance<py::str>(o) || py::len(o) != 2)
+        throw py::type_error(std::string(where) + ": expected (x, y)");
+    const py::sequence s = o.cast<py::sequence>();
+    auto coordinate = [&](const py::object& c) {
+        if (!py::isinstance(c, py::module_::import("numbers").attr("Integral")) || PyBool_Check(c.ptr()))
+            throw py::type_error(std::string(where) + ": expected integer coordinates (x, y)");
+        const auto v = c.cast<long long>();
+        require(v > -1'000'000'000 && v < 1'000'000'000, where, "coordinate out of range");
+        return static_cast<int>(v);
+    };
+    return {coordinate(s[0]), coordinate(s[1])};
+}
+
+py::dict plan(const Grid& g, const py::object& start, const py::object& goal, const std::string& algo,
+              const std::string& objective, const std::string& encoding, const std::string& connector,
+              const std::string& init, std::int64_t waypoints, const std::optional<std::vector<double>>& weights,
+              std::optional<double> lambda, bool corner_cutting, bool oracle, std::optional<std::int64_t> evals,
+              std::optional<std::int64_t> iters, std::int64_t seed, const py::object& callback,
+              const py::dict& params) {
+    engine::GridSpec spec;
+    spec.objective = objective;
+    spec.encoding = encoding;
+    spec.connector = connector;
+    spec.init = init;
+    spec.waypoints = waypoints;
+    if (weights) spec.weights = *weights;
+    spec.lambda = lambda;
+    spec.corner_cutting = corner_cutting;
+    spec.oracle = oracle;
+    engine::check_grid_names(spec);
+    spec.map = g.map;
+    spec.start = cell(start, "start");
+    spec.goal = cell(goal, "goal");
+    const engine::AlgorithmSpec algorithm{algo, param_values(params)};
+    std::optional<engine::Problem> problem;
+    {
+        py::gil_scoped_release release;  // reachability and the encodings' tables
+        problem.emplace(spec);
+    }
+    const engine::Budget budget{evals, iters, std::nullopt, std::nullopt, {}};
+    engine::check(algorithm, *problem, budget);
+    const auto s = checked_seed(seed);
+    auto errors = std::make_shared<UserError>();
+    const engine::RunResult r = run_released(algorithm, *problem, budget, s, callback, errors);
+    py::dict d = result_dict(r);
+    d["objective"] = objective;
+    d["seed"] = seed;
+    const auto& run = *r.grid;
+    if (run.optimum && run.feasible) {
+        // As `pride path`: values that agree to 1e-9 (relative) are the optimum, gap exactly 0.
+        const double scale = std::max(1.0, std::abs(*run.optimum));
+        d["gap"] = std::abs(run.value - *run.optimum) <= 1e-9 * scale
+                       ? 0.0
+                       : (run.value - *run.optimum) / std::abs(*run.optimum);
+    } else {
+        d["gap"] = py::none();
+    }
+    return d;
+}
+
+py::list pareto(const Grid& g, const py::object& start, const py::object& goal, const std::string& objectives,
+                bool corner_cutting) {
+    const grid::Criteria criteria = grid::parse_criteria(objectives);
+    const grid::Cell s = cell(start, "start"), e = cell(goal, "goal");
+    // The checks of `pride pareto`: inside, free, the goal reachable, and memory.
+    const grid::GridProblem<grid::LengthObjective> checked(g.map, s, e, {}, corner_cutting);
+    grid::ParetoOptions options;
+    options.corner_cutting = corner_cutting;
+    const double memory = engine::available_memory(), lists = 24.0 * 9.0 * static_cast<double>(g.map->size());
+    require(lists < 0.5 * memory, "map",
+            fmt::format("the Pareto front on {} needs {} before its first label; this machine has {}", g.map->name(),
+                        engine::format_bytes(lists), engine::format_bytes(memory)));
+    options.max_labels =
+        std::min(options.max_labels, static_cast<std::size_t>(std::max(1.0, (0.8 * memory - lists) / 68.0)));
+    std::vector<grid::FrontPoint> front;
+    {
+        py::gil_scoped_release release;
+        front = grid::pareto_front(*g.map, s, e, criteria, options);
+    }
+    py::list out;
+    for (const auto& p : front)
+        out.append(py::dict(py::arg("length") = p.length, py::arg("turns") = p.turns,
+                            py::arg("angle_penalty") = p.angle_penalty, py::arg("path") = path_array(p.path)));
+    return out;
+}
+
+py::array_t<std::uint8_t> grid_array(const Grid& g) {
+    const auto& m = *g.map;
+    py::array_t<std::uint8_t> a({static_cast<py::ssize_t>(m.height()), static_cast<py::ssize_t>(m.width())});
+    auto v = a.mutable_unchecked<2>();
+    for (int y = 0; y < m.height(); ++y)
+        for (int x = 0; x < m.width(); ++x) v(y, x) = m.free({x, y}) ? 0 : 1;
+    return a;
+}
+
+}  // namespace
+
+void bind_grid(py::module_& m) {
+    py::class_<Grid>(m, "Grid")
+        .def(py::init(&grid_from_array), py::arg("array"))
+        .def_static(
+            "load",
+            [](const std::string& path, std::int64_t inflate) {
+                py::gil_scoped_release release;
+                return Grid{engine::load_map(path, inflate)};
+            },
+            py::arg("path"), py::arg("inflate") = 0)
+        .def(
+            "inflated",
+            [](const Grid& g, std::int64_t r) {
+                require(r >= 0 && r <= 1000, "inflate", "must be in [0, 1000], got " + std::to_string(r));
+                return Grid{std::make_shared<const grid::GridMap>(g.map->inflated(static_cast<int>(r)))};
+            },
+            py::arg("radius"))
+        .def_property_readonly("width", [](const Grid& g) { return g.map->width(); })
+        .def_property_readonly("height", [](const Grid& g) { return g.map->height(); })
+        .def_property_readonly("name", [](const Grid& g) { return g.map->name(); })
+        .def("to_array", &grid_array)
+        .def(
+            "free",
+            [](const Grid& g, int x, int y) {
+                return g.map->free({x, y});
+            },
+            py::arg("x"), py::arg("y"));
+    m.def("plan", &plan, py::arg("grid"), py::arg("start"), py::arg("goal"), py::arg("algo"), py::arg("objective"),
+          py::arg("encoding"), py::arg("connector"), py::arg("init"), py::arg("waypoints"), py::arg("weights"),
+          py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"), py::arg("evals"), py::arg("iters"),
+          py::arg("seed"), py::arg("callback"), py::arg("params"));
+    m.def("pareto", &pareto, py::arg("grid"), py::arg("start"), py::arg("goal"), py::arg("objectives"),
+          py::arg("corner_cutting"));
+}
+
+}  // namespace pride::python

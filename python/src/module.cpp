@@ -1,0 +1,450 @@
+// pride._pride: the engine for Python (docs/python.md). The package's pride/__init__.py wraps
+// these functions in the Python-facing API; everything here takes plain values.
+#include <cmath>
+#include <cstring>
+#include <map>
+
+#include "common.hpp"
+#include "engine/ask_tell.hpp"
+#include "engine/registry.hpp"
+#include "problems/continuous/catalog.hpp"
+
+namespace pride::python {
+
+namespace {
+
+/// The command line's one-line message (cli/flags.cpp) with the Python keyword where the command
+/// line names its flag: "dim: ..." for "--dim: ...", "evals: ..." for "--evals: ...".
+std::string python_message(const InputError& e) {
+    static const std::map<std::string, std::string> keywords{{"evaluations", "evals"}, {"iterations", "iters"}};
+    const std::string& where = e.where();
+    if (where.empty()) return e.what();
+    const auto space = where.find(' ');
+    const std::string head = where.substr(0, space), rest = space == std::string::npos ? "" : where.substr(space);
+    const auto it = keywords.find(head);
+    if (it == keywords.end()) return e.what();
+    return it->second + rest + ": " + e.detail();
+}
+
+py::dict param_dict(const engine::ParamSpec& p) {
+    py::dict d;
+    d["name"] = p.name;
+    d["type"] = std::string(engine::to_string(p.type));
+    if (p.default_value) {
+        if (p.type == engine::ParamType::integer)
+            d["default"] = static_cast<std::int64_t>(*p.default_value);
+        else if (p.type == engine::ParamType::flag)
+            d["default"] = *p.default_value != 0.0;
+        else
+            d["default"] = *p.default_value;
+    } else {
+        d["default"] = py::none();
+    }
+    d["min"] = p.min;
+    d["max"] = p.max;
+    d["min_open"] = p.min_open;
+    d["max_open"] = p.max_open;
+    d["range"] = p.range();
+    d["doc"] = p.doc;
+    return d;
+}
+
+py::list algorithms() {
+    py::list out;
+    for (const auto& a : engine::algorithms().entries()) {
+        py::dict d;
+        d["name"] = a.name;
+        d["family"] = a.family;
+        d["summary"] = a.summary;
+        d["spaces"] = a.spaces();
+        py::list params;
+        for (const auto& p : a.params) params.append(param_dict(p));
+        d["params"] = params;
+        out.append(d);
+    }
+    return out;
+}
+
+py::list problems() {
+    static constexpr const char* instances[] = {"transform", "none", "coco"};
+    py::list out;
+    for (const auto& item : continuous::catalog().items()) {
+        const auto& e = item.entry;
+        py::dict d;
+        d["name"] = item.name;
+        d["summary"] = item.summary;
+        d["min_dim"] = e.min_dim;
+        d["fixed_dim"] = e.fixed_dim ? py::object(py::int_(e.fixed_dim)) : py::object(py::none());
+        d["instances"] = instances[static_cast<int>(e.instances)];
+        d["default_instance"] = continuous::default_instance(e);
+        d["suite"] = e.suite.empty() ? py::object(py::none()) : py::object(py::str(e.suite));
+        d["number"] = e.suite.empty() ? py::object(py::none()) : py::object(py::int_(e.number));
+        out.append(d);
+    }
+    return out;
+}
+
+py::dict grid_names() {
+    auto items = [](const std::vector<engine::NamedItem>& v) {
+        py::list l;
+        for (const auto& i : v) l.append(py::dict(py::arg("name") = i.name, py::arg("summary") = i.summary));
+        return l;
+    };
+    py::dict d;
+    d["objectives"] = items(engine::grid_objectives());
+    d["encodings"] = items(engine::grid_encodings());
+    d["connectors"] = items(engine::grid_connectors());
+    d["inits"] = items(engine::grid_inits());
+    return d;
+}
+
+/// The problem of minimize(): a registered name (dim, instance) or a Python callable on bounds.
+engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::int64_t> dim, const py::object& bounds,
+                                 std::optional<std::int64_t> instance, bool vectorized,
+                                 const std::shared_ptr<UserError>& errors) {
+    if (py::isinstance<py::str>(problem)) {
+        const auto name = problem.cast<std::string>();
+        require(bounds.is_none(), "bounds",
+                "only for Python functions: problem '" + name + "' has its own box (see pride.problems())");
+        require(!vectorized, "vectorized", "only for Python functions");
+        if (!dim)
+            if (const auto* item = continuous::catalog().find(name); item && item->entry.fixed_dim)
+                dim = static_cast<std::int64_t>(item->entry.fixed_dim);
+        if (!dim && !continuous::catalog().find(name)) throw InputError("problem", "unknown problem '" + name + "'");
+        require(dim.has_value(), "dim", "give the dimension of problem '" + name + "'");
+        return engine::ContinuousSpec{name, *dim, instance};
+    }
+    if (!PyCallable_Check(problem.ptr()))
+        throw py::type_error("problem: expected a registered problem's name (str) or a callable, got " +
+                             py::str(py::type::of(problem).attr("__name__")).cast<std::string>());
+    require(!instance, "instance", "only for registered problems");
+    require(!bounds.is_none(), "bounds", "a Python function needs bounds=(lower, upper)");
+    auto [lower, upper] = parse_bounds(bounds, dim);
+    return callback_spec(problem, vectorized, std::move(lower), std::move(upper), errors);
+}
+
+py::dict minimize(const std::string& algo, const py::object& problem, std::optional<std::int64_t> dim,
+                  const py::object& bounds, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters,
+                  std::optional<double> target, std::optional<double> wall_ms, std::int64_t seed,
+                  std::optional<std::int64_t> instance, const py::object& callback, bool vectorized,
+                  const py::dict& params) {
+    auto errors = std::make_shared<UserError>();
+    const engine::AlgorithmSpec algorithm{algo, param_values(params)};
+    std::optional<engine::Problem> prepared;
+    prepared.emplace(problem_spec(problem, dim, bounds, instance, vectorized, errors));
+    const engine::Budget b = budget(evals, iters, target, wall_ms);
+    engine::check(algorithm, *prepared, b);
+    const engine::RunResult r = run_released(algorithm, *prepared, b, checked_seed(seed), callback, errors);
+    py::dict d = result_dict(r);
+    d["problem"] = prepared->name();
+    d["instance"] = prepared->instance();
+    return d;
+}
+
+/// Optimizer: an engine::AskTell, stopped and joined without the GIL.
+class Optimizer {
+  public:
+    Optimizer(const std::string& algo, const py::object& bounds, std::optional<std::int64_t> dim,
+              std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::optional<double> target,
+              std::optional<double> wall_ms, std::int64_t seed, const py::dict& params) {
+        require(!bounds.is_none(), "bounds", "the Optimizer needs bounds=(lower, upper)");
+        auto [lower, upper] = parse_bounds(bounds, dim);
+        engine::AlgorithmSpec algorithm{algo, param_values(params)};
+        const auto b = budget(evals, iters, target, wall_ms);
+        const auto s = checked_seed(seed);
+        py::gil_scoped_release release;
+        run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, s);
+    }
+    ~Optimizer() { close(); }
+
+    void close() {
+        if (!run_) return;
+        py::gil_scoped_release release;
+        run_.reset();
+    }
+
+    py::array_t<double> ask() {
+        const Matrix* points = nullptr;
+        {
+            py::gil_scoped_release release;
+            points = &live().ask();
+        }
+        const auto n = static_cast<py::ssize_t>(points->cols()), dim = static_cast<py::ssize_t>(points->rows());
+        py::array_t<double> out({n, dim});
+        // A column of the engine's matrix is a row of X: one copy of the whole block.
+        if (n > 0) std::memcpy(out.mutable_data(), points->data(), sizeof(double) * static_cast<std::size_t>(n * dim));
+        return out;
+    }
+
+    void tell(const py::object& values) {
+        const auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
+        if (!v) throw py::type_error("tell: expected an array of numbers");
+        require(v.ndim() == 1 || (v.ndim() == 2 && v.shape(1) == 1), "tell",
+                "expected a 1-D array of values, one per point asked for, got an array with " +
+                    std::to_string(v.ndim()) + " dimensions");
+        const std::span<const double> values_span(v.data(), static_cast<std::size_t>(v.size()));
+        py::gil_scoped_release release;
+        live().tell(values_span);
+    }
+
+    bool done() {
+        py::gil_scoped_release release;
+        return live().done();
+    }
+
+    py::dict result() {
+        const engine::RunResult* r = nullptr;
+        {
+            py::gil_scoped_release release;
+            r = &live().result();
+        }
+        return result_dict(*r);
+    }
+
+    std::size_t dimension() { return live().dimension(); }
+
+  private:
+    engine::AskTell& live() {
+        if (!run_) throw InputError("optimizer", "closed: its run was stopped");
+        return *run_;
+    }
+    std::unique_ptr<engine::AskTell> run_;
+};
+
+}  // namespace
+
+engine::ParamValues param_values(const py::dict& params) {
+    engine::ParamValues v;
+    for (const auto& [key, value] : params) {
+        const auto name = py::str(key).cast<std::string>();
+        if (PyBool_Check(value.ptr())) {
+            v.set(name, value.cast<bool>() ? 1.0 : 0.0);
+        } else if (PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr()) ||
+                   py::isinstance(value, py::module_::import("numbers").attr("Real"))) {
+            const double d = value.cast<double>();
+            require(std::isfinite(d), "parameter " + name, "must be a finite number");
+            v.set(name, d);
+        } else {
+            throw py::type_error("parameter " + name + ": expected a number, got " +
+                                 py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+        }
+    }
+    return v;
+}
+
+std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::object& bounds,
+                                                                 std::optional<std::int64_t> dim) {
+    if (!py::isinstance<py::sequence>(bounds) || py::len(bounds) != 2)
+        throw py::type_error("bounds: expected (lower, upper)");
+    const py::sequence pair = bounds.cast<py::sequence>();
+    auto side = [&](const py::object& o, const char* which) {
+        const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(o);
+        if (!a) throw py::type_error(std::string("bounds: ") + which + " must be numbers");
+        require(a.ndim() <= 1, "bounds", std::string(which) + " must be a number or a 1-D sequence");
+        std::vector<double> v(a.data(), a.data() + a.size());
+        if (a.ndim() == 0) {
+            require(dim.has_value(), "dim", std::string("give dim when ") + which + " is one number");
+            require(*dim >= 1, "dim", "dimension must be >= 1, got " + std::to_string(*dim));
+            v.assign(static_cast<std::size_t>(*dim), v.front());
+        }
+        return v;
+    };
+    auto lower = side(pair[0], "lower"), upper = side(pair[1], "upper");
+    if (dim) {
+        require(lower.size() == static_cast<std::size_t>(*dim), "dim",
+                "is " + std::to_string(*dim) + " but lower has " + std::to_string(lower.size()) + " coordinates");
+        require(upper.size() == static_cast<std::size_t>(*dim), "dim",
+                "is " + std::to_string(*dim) + " but upper has " + std::to_string(upper.size()) + " coordinates");
+    }
+    return {std::move(lower), std::move(upper)};
+}
+
+engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::vector<double> lower,
+                                   std::vector<double> upper, const std::shared_ptr<UserError>& errors,
+                                   std::string name) {
+    // The function lives as long as the problem; it is released with the GIL held (the problem
+    // is destroyed in the binding's own scope, after the run).
+    auto function = std::make_shared<py::object>(fn);
+    engine::CallbackSpec spec;
+    spec.name = std::move(name);
+    spec.lower = std::move(lower);
+    spec.upper = std::move(upper);
+    if (!vectorized) {
+        spec.scalar = [function, errors](std::span<const double> x) -> double {
+            py::gil_scoped_acquire gil;
+            try {
+                py::array_t<double> point(static_cast<py::ssize_t>(x.size()));
+                std::memcpy(point.mutable_data(), x.data(), sizeof(double) * x.size());
+                const py::object value = (*function)(point);
+                const double f = PyFloat_AsDouble(value.ptr());
+                if (f == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+                return f;
+            } catch (...) {
+                errors->remember(std::current_exception());
+                throw;
+            }
+        };
+    } else {
+        spec.batch = [function, errors](MatrixView points, std::span<double> values) {
+            py::gil_scoped_acquire gil;
+            try {
+                const auto n = static_cast<py::ssize_t>(points.cols()), dim = static_cast<py::ssize_t>(points.rows());
+                py::array_t<double> x({n, dim});
+                double* out = x.mutable_data();
+                for (py::ssize_t j = 0; j < n; ++j)
+                    std::memcpy(out + j * dim, points.col(j).data(), sizeof(double) * static_cast<std::size_t>(dim));
+                const py::object result = (*function)(x);
+                const auto f = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(result);
+                if (!f)
+                    throw py::type_error("the vectorized function must return numbers, one per row of X, got " +
+                                         py::str(py::type::of(result).attr("__name__")).cast<std::string>());
+                require(f.size() == n, "vectorized",
+                        "the function returned " + std::to_string(f.size()) + " values for " + std::to_string(n) +
+                            " points (X has one point per row; expected shape (" + std::to_string(n) + ",))");
+                std::memcpy(values.data(), f.data(), sizeof(double) * static_cast<std::size_t>(n));
+            } catch (...) {
+                errors->remember(std::current_exception());
+                throw;
+            }
+        };
+    }
+    return spec;
+}
+
+engine::IterationObserver observer(const py::object& fn, const std::shared_ptr<UserError>& errors) {
+    auto function = std::make_shared<py::object>(fn);
+    return [function, errors](const IterationView& v) -> bool {
+        py::gil_scoped_acquire gil;
+        try {
+            const auto n = static_cast<py::ssize_t>(v.population.cols()),
+                       dim = static_cast<py::ssize_t>(v.population.rows());
+            // Views of the run's own memory (no copy), read-only, valid during the call.
+            const py::none owner;
+            py::array_t<double> population(
+                {n, dim}, {static_cast<py::ssize_t>(sizeof(double)) * dim, static_cast<py::ssize_t>(sizeof(double))},
+                v.population.data(), owner);
+            py::array_t<double> fitness({static_cast<py::ssize_t>(v.fitness.size())},
+                                        {static_cast<py::ssize_t>(sizeof(double))}, v.fitness.data(), owner);
+            population.attr("flags").attr("writeable") = false;
+            fitness.attr("flags").attr("writeable") = false;
+            const py::object r = (*function)(v.iteration, v.evaluations, v.best_f, population, fitness);
+            return !(r.ptr() == Py_False);
+        } catch (...) {
+            errors->remember(std::current_exception());
+            throw;
+        }
+    };
+}
+
+engine::Budget budget(std::optional<std::int64_t> evals, std::optional<std::int64_t> iters,
+                      std::optional<double> target, std::optional<double> wall_ms) {
+    engine::Budget b;
+    b.evaluations = evals;
+    b.iterations = iters;
+    b.target = target;
+    b.wall_ms = wall_ms;
+    return b;
+}
+
+std::uint64_t checked_seed(std::int64_t seed) {
+    require(seed >= 0, "seed", "must be >= 0, got " + std::to_string(seed));
+    return static_cast<std::uint64_t>(seed);
+}
+
+engine::RunResult run_released(const engine::AlgorithmSpec& algorithm, const engine::Problem& problem,
+                               const engine::Budget& budget, std::uint64_t seed, const py::object& callback,
+                               const std::shared_ptr<UserError>& errors) {
+    std::optional<engine::IterationObserver> watch;
+    if (!callback.is_none()) {
+        if (!PyCallable_Check(callback.ptr())) throw py::type_error("callback: expected a callable");
+        watch = observer(callback, errors);
+    }
+    py::gil_scoped_release release;
+    try {
+        return watch ? engine::run(algorithm, problem, budget, seed, *watch)
+                     : engine::run(algorithm, problem, budget, seed);
+    } catch (...) {
+        errors->rethrow_or(std::current_exception());
+    }
+}
+
+py::array_t<double> vector_array(const std::vector<double>& v) {
+    py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
+    if (!v.empty()) std::memcpy(a.mutable_data(), v.data(), sizeof(double) * v.size());
+    return a;
+}
+
+py::array_t<int> path_array(const grid::Path& path) {
+    py::array_t<int> a({static_cast<py::ssize_t>(path.size()), py::ssize_t{2}});
+    auto m = a.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        m(static_cast<py::ssize_t>(i), 0) = path[i].x;
+        m(static_cast<py::ssize_t>(i), 1) = path[i].y;
+    }
+    return a;
+}
+
+py::dict result_dict(const engine::RunResult& r) {
+    py::dict d;
+    d["algo"] = r.algorithm;
+    d["best_f"] = r.best_f;
+    d["best_x"] = vector_array(r.best_x);
+    d["evaluations"] = r.evaluations;
+    d["iterations"] = r.iterations;
+    d["wall_ms"] = r.wall_ms;
+    d["history"] = vector_array(r.history);
+    py::array_t<std::int64_t> he(static_cast<py::ssize_t>(r.history_evaluations.size()));
+    if (!r.history_evaluations.empty())
+        std::memcpy(he.mutable_data(), r.history_evaluations.data(),
+                    sizeof(std::int64_t) * r.history_evaluations.size());
+    d["history_evaluations"] = he;
+    if (r.grid) {
+        const auto& g = *r.grid;
+        const auto m = grid::metrics(g.path);
+        d["encoding"] = g.encoding;
+        d["feasible"] = g.feasible;
+        d["path"] = path_array(g.path);
+        d["objective_value"] = g.feasible ? py::object(py::float_(g.value)) : py::object(py::none());
+        d["metrics"] =
+            py::dict(py::arg("cells") = m.cells, py::arg("length") = m.length, py::arg("turns") = m.turns,
+                     py::arg("turn_angle_deg") = m.turn_angle_deg, py::arg("angle_penalty") = m.angle_penalty);
+        d["optimum"] = g.optimum ? py::object(py::float_(*g.optimum)) : py::object(py::none());
+        d["optimal_path"] = g.optimum ? py::object(path_array(g.optimal_path)) : py::object(py::none());
+    }
+    return d;
+}
+
+}  // namespace pride::python
+
+PYBIND11_MODULE(_pride, m) {
+    using namespace pride::python;
+    m.doc() = "pride's engine (use the pride package, not this module)";
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const pride::InputError& e) {
+            PyErr_SetString(PyExc_ValueError, python_message(e).c_str());
+        }
+    });
+    m.def("algorithms", &algorithms);
+    m.def("problems", &problems);
+    m.def("grid_names", &grid_names);
+    m.def("minimize", &minimize, py::arg("algo"), py::arg("problem"), py::arg("dim"), py::arg("bounds"),
+          py::arg("evals"), py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"),
+          py::arg("instance"), py::arg("callback"), py::arg("vectorized"), py::arg("params"));
+    py::class_<Optimizer>(m, "Optimizer")
+        .def(py::init<const std::string&, const py::object&, std::optional<std::int64_t>, std::optional<std::int64_t>,
+                      std::optional<std::int64_t>, std::optional<double>, std::optional<double>, std::int64_t,
+                      const py::dict&>(),
+             py::arg("algo"), py::arg("bounds"), py::arg("dim"), py::arg("evals"), py::arg("iters"), py::arg("target"),
+             py::arg("wall_ms"), py::arg("seed"), py::arg("params"))
+        .def("ask", &Optimizer::ask)
+        .def("tell", &Optimizer::tell)
+        .def("done", &Optimizer::done)
+        .def("result", &Optimizer::result)
+        .def("dimension", &Optimizer::dimension)
+        .def("close", &Optimizer::close);
+    bind_grid(m);
+    bind_roughset(m);
+    bind_campaign(m);
+}

@@ -1,0 +1,79 @@
+"""Campaigns from Python data (Python functions included) and TOML files, run on threads, the
+store and the report read back."""
+import numpy as np
+import pytest
+
+import pride
+
+ARRAY = np.zeros((6, 6), dtype=int)
+ARRAY[1:5, 2] = 1
+
+
+def test_campaign_from_data(tmp_path):
+    calls = {"n": 0}
+
+    def mine(x):
+        calls["n"] += 1
+        return float(np.sum((x - 0.5) ** 2))
+
+    c = pride.Campaign(
+        "demo", seeds=2, evals=300,
+        problems=[{"id": "sph", "problem": "sphere", "dim": 3},
+                  {"id": "mine", "function": mine, "bounds": (-1, 1), "dim": 2},
+                  {"id": "rows", "function": lambda X: np.sum(X * X, axis=1), "bounds": ([-1, -1], [1, 1]),
+                   "vectorized": True}],
+        algorithms=["pso", {"id": "ga40", "algo": "ga", "pop": 40}])
+    assert c.runs == 12 and c.problems == ["sph", "mine", "rows"] and c.algorithms == ["pso", "ga40"]
+    store = tmp_path / "demo.sqlite"
+    summary = c.run(store, jobs=2)  # Python functions under the GIL, one call at a time
+    assert summary == {"stored": 12, "already": 0, "total": 12}
+    assert calls["n"] == 2 * 2 * 300
+    assert c.run(store, jobs=2)["already"] == 12  # resumable: nothing run twice
+    runs = pride.read_store(store, dataframe=False)
+    assert len(runs) == 12 and all(r["evaluations"] == 300 for r in runs)
+    one = next(r for r in runs if r["problem"] == "sph" and r["algorithm"] == "pso" and r["seed"] == 1)
+    assert one["best"] == pride.minimize("pso", "sphere", dim=3, evals=300, seed=1).best_f
+    rep = pride.report(store, dataframe=False)
+    assert {(r["problem"], r["algorithm"]) for r in rep["rows"]} == {
+        (p, a) for p in ("sph", "mine", "rows") for a in ("pso", "ga40")}
+    assert sum(r["best"] for r in rep["rows"]) == 3 and "sph" in rep["markdown"]
+
+
+def test_campaign_grid_and_toml(tmp_path):
+    g = pride.Grid(ARRAY)
+    c = pride.Campaign("grids", seeds=1, iters=3,
+                       problems=[{"id": "g", "grid": g, "start": (0, 5), "goal": (5, 0), "objective": "length"}],
+                       algorithms=["ga", "astar"])
+    c.run(tmp_path / "g.sqlite")
+    runs = pride.read_store(tmp_path / "g.sqlite", dataframe=False)
+    assert len(runs) == 2 and all(r["optimum"] is not None for r in runs)
+    toml = tmp_path / "c.toml"
+    toml.write_text('name = "t"\nseeds = 2\n[budget]\nevaluations = 200\n'
+                    '[[problem]]\nid = "s"\ntype = "sphere"\ndim = 2\n'
+                    '[[algorithm]]\nid = "p"\ntype = "pso"\npop = 10\n')
+    t = pride.Campaign.load(str(toml))
+    assert t.runs == 2
+    t.run(tmp_path / "t.sqlite", jobs=2)
+    assert len(pride.read_store(tmp_path / "t.sqlite", dataframe=False)) == 2
+
+
+def test_campaign_errors(tmp_path):
+    with pytest.raises(ValueError, match="unknown algorithm"):
+        pride.Campaign("x", seeds=1, evals=10, problems=[{"id": "s", "problem": "sphere", "dim": 2}],
+                       algorithms=["nope"])
+    with pytest.raises(ValueError, match="id"):
+        pride.Campaign("x", seeds=1, evals=10, problems=[{"problem": "sphere", "dim": 2}], algorithms=["pso"])
+    with pytest.raises(ValueError, match="unknown key 'colour'"):
+        pride.Campaign("x", seeds=1, evals=10, problems=[{"id": "s", "problem": "sphere", "dim": 2, "colour": 1}],
+                       algorithms=["pso"])
+
+    class Boom(Exception):
+        pass
+
+    def bad(x):
+        raise Boom()
+
+    c = pride.Campaign("x", seeds=2, evals=50, problems=[{"id": "b", "function": bad, "bounds": ([0], [1])}],
+                       algorithms=["pso"])
+    with pytest.raises(Boom):
+        c.run(tmp_path / "x.sqlite", jobs=2)

@@ -1,0 +1,143 @@
+"""Grids: from numpy arrays and map files, inflation, every grid algorithm with legal paths,
+A*, the exact optimum, the Pareto front, and the command line's results."""
+import numpy as np
+import pytest
+
+import pride
+from conftest import cli, shared_data
+
+ALGOS = pride.algorithms()
+
+# 0 free, 1 blocked; rows top first, x the column.
+ARRAY = np.array([
+    [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0],
+    [0, 1, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0],
+    [0, 0, 0, 1, 0, 1, 0, 0, 1, 0, 1, 0],
+    [0, 1, 0, 1, 0, 1, 1, 0, 1, 0, 1, 0],
+    [0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0],
+    [0, 1, 1, 1, 1, 0, 1, 1, 1, 0, 1, 0],
+    [0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0],
+    [1, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0],
+])
+START, GOAL = (0, 7 - 1), (11, 7)
+
+
+def legal(grid, path, start, goal):
+    a = grid.to_array()
+    assert path.ndim == 2 and path.shape[1] == 2
+    assert tuple(path[0]) == start and tuple(path[-1]) == goal
+    for (x, y) in path:
+        assert a[y, x] == 0
+    for (x0, y0), (x1, y1) in zip(path[:-1], path[1:]):
+        dx, dy = x1 - x0, y1 - y0
+        assert max(abs(dx), abs(dy)) == 1
+        if dx and dy:  # no corner cutting
+            assert a[y0, x1] == 0 and a[y1, x0] == 0
+    return True
+
+
+def test_grid_from_array_and_inflation():
+    g = pride.Grid(ARRAY)
+    assert (g.width, g.height) == (12, 8)
+    assert np.array_equal(g.to_array(), ARRAY)
+    assert g.free(0, 0) and not g.free(1, 1)
+    h = g.inflated(1)
+    assert h.to_array().sum() > ARRAY.sum() and not h.free(0, 0)
+    assert np.array_equal(pride.Grid(ARRAY.astype(bool)).to_array(), ARRAY)
+    with pytest.raises(ValueError, match=r"grid: cell \(2,0\) is 2"):
+        pride.Grid(np.array([[0, 0, 2]]))
+    with pytest.raises(ValueError, match="2-D"):
+        pride.Grid(np.zeros(3))
+    with pytest.raises(ValueError, match="inflate"):
+        g.inflated(-1)
+
+
+def algorithm_cases():
+    for a in ALGOS:
+        if "grid" in a["spaces"]:
+            yield a["name"], "line"
+        if "box" in a["spaces"]:
+            yield a["name"], "line"
+        if "chain" in a["spaces"]:
+            yield a["name"], "chain"
+
+
+@pytest.mark.parametrize("algo, encoding", sorted(set(algorithm_cases())))
+def test_every_grid_algorithm_plans_a_legal_path(algo, encoding):
+    g = pride.Grid(ARRAY)
+    budget = {} if any(a["name"] == algo and "grid" in a["spaces"] for a in ALGOS) else {"evals": 120}
+    r = pride.plan(g, START, GOAL, algo=algo, encoding=encoding, seed=3, **budget)
+    if r.feasible:
+        assert legal(g, r.path, START, GOAL)
+        assert r.metrics["cells"] == len(r.path)
+    else:
+        assert len(r.path) == 0
+    if algo in ("astar", "exact"):
+        assert r.feasible
+
+
+def test_astar_exact_and_oracle():
+    g = pride.Grid(ARRAY)
+    a = pride.astar(g, START, GOAL, objective="length")
+    e = pride.exact(g, START, GOAL, objective="length")
+    assert legal(g, a.path, START, GOAL) and legal(g, e.path, START, GOAL)
+    assert a.objective_value == pytest.approx(e.objective_value)
+    r = pride.plan(g, START, GOAL, algo="ga", objective="length", iters=5, oracle=True, seed=1)
+    assert r.optimum == pytest.approx(e.objective_value) and r.gap >= 0
+
+
+def test_pareto_front():
+    g = pride.Grid(ARRAY)
+    front = pride.pareto(g, START, GOAL, objectives="length,turns")
+    assert front and all(legal(g, p["path"], START, GOAL) for p in front)
+    lengths = [p["length"] for p in front]
+    turns = [p["turns"] for p in front]
+    assert lengths == sorted(lengths) and turns == sorted(turns, reverse=True)
+    assert front[0]["length"] == pytest.approx(pride.exact(g, START, GOAL, objective="length").objective_value)
+
+
+def test_bad_grid_arguments():
+    g = pride.Grid(ARRAY)
+    with pytest.raises(ValueError, match="start"):
+        pride.plan(g, (1, 1), GOAL, algo="astar")
+    with pytest.raises(ValueError, match="goal"):
+        pride.plan(g, START, (50, 0), algo="astar")
+    with pytest.raises(ValueError, match="encoding"):
+        pride.plan(g, START, GOAL, encoding="spiral")
+    with pytest.raises(TypeError, match="start"):
+        pride.plan(g, "0,6", GOAL)
+    with pytest.raises(ValueError, match="objectives"):
+        pride.pareto(g, START, GOAL, objectives="length,colour")
+
+
+def test_map_file_equals_cli():
+    path = shared_data() / "movingai" / "random-32-32-10.map"
+    if not path.exists():
+        pytest.skip("no shared data")
+    g = pride.Grid.load(str(path))
+    a = g.to_array()
+    free = [(x, y) for y in range(g.height) for x in range(g.width) if a[y, x] == 0]
+    start, goal = free[0], free[-1]
+    for algo, extra in (("pso", ["--iters", 5]), ("ga", ["--iters", 5, "--encoding", "chain"]), ("astar", [])):
+        kw = {"iters": 5} if extra else {}
+        if "chain" in extra:
+            kw["encoding"] = "chain"
+        r = pride.plan(g, start, goal, algo=algo, seed=2, objective="length", **kw)
+        j = cli("path", "--map", path, "--start", "%d,%d" % start, "--goal", "%d,%d" % goal, "--algo", algo,
+                "--seed", 2, "--objective", "length", "--json", *extra)
+        assert r.path.tolist() == j["path"]
+        assert r.objective_value == j["objective_value"] and r.history.tolist() == j["history"]
+    inflated = pride.Grid.load(str(path), inflate=1)
+    assert inflated.to_array().sum() > a.sum()
+
+
+def test_plan_observer_on_boxes_refused_on_chains():
+    g = pride.Grid(ARRAY)
+    seen = []
+    r = pride.plan(g, START, GOAL, algo="pso", iters=4, pop=6, seed=1,
+                   callback=lambda i, e, f, pop, fit: seen.append((i, pop.shape)))
+    assert [s[0] for s in seen] == [0, 1, 2, 3, 4] and seen[0][1][0] == 6 and r.iterations == 4
+    with pytest.raises(ValueError, match="observer: only box runs are observed"):
+        pride.plan(g, START, GOAL, algo="ga", encoding="chain", iters=2, callback=lambda *a: None)
+    with pytest.raises(ValueError, match="observer"):
+        pride.plan(g, START, GOAL, algo="astar", callback=lambda *a: None)
