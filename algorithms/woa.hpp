@@ -241,7 +241,8 @@ class Woa {
             });
             pod.evaluate_pod();
             visit_policy(second_step, [&](const auto& s) {
-                if constexpr (s.evaluations_per_whale > 0) {
+                // From the type: clang 14 refuses `s.evaluations_per_whale` (a reference) here.
+                if constexpr (std::remove_cvref_t<decltype(s)>::evaluations_per_whale > 0) {
                     if (state.exhausted()) return;
                     // Eq. 8: towards X* if better than the average, towards a random whale otherwise.
                     const auto fx = pod.fitness();

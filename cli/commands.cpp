@@ -3,8 +3,12 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <cstring>
 #include <istream>
 #include <ostream>
+#include <span>
+#include <string_view>
 #include <variant>
 
 #include "cli/numbers.hpp"
@@ -51,21 +55,46 @@ int run_command(const RunOptions& o, std::ostream& out) {
 }
 
 int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out) {
-    std::vector<std::vector<double>> points;
+    // Every point, flat (one allocation whatever their number): `dim` coordinates each.
+    std::vector<double> coords;
+    std::size_t dim = 0;
     if (o.x == "-") {
-        std::string line;
-        for (std::size_t n = 1; std::getline(in, line); ++n) {
-            if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-            points.push_back(parse_point(line, "stdin line " + std::to_string(n)));
-            require(points.back().size() == points.front().size(), "stdin line " + std::to_string(n),
-                    "expected " + std::to_string(points.front().size()) + " coordinates like the first point, got " +
-                        std::to_string(points.back().size()));
+        // Read in chunks under a cap, and a NUL byte refused at once: `--x - < /dev/zero` is bad
+        // input, not an endless read.
+        constexpr std::size_t max_bytes = std::size_t{64} << 20;
+        std::string all;
+        std::size_t lines_before = 1;
+        char buffer[1 << 16];
+        while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+            const auto n = static_cast<std::size_t>(in.gcount());
+            if (const void* nul = std::memchr(buffer, 0, n)) {
+                const auto at = static_cast<std::size_t>(static_cast<const char*>(nul) - buffer);
+                const auto line = lines_before + static_cast<std::size_t>(std::count(buffer, buffer + at, '\n'));
+                throw InputError("stdin line " + std::to_string(line), "NUL byte: binary input, not points");
+            }
+            require(n <= max_bytes - all.size(), "stdin", "more than 64 MiB of points");
+            lines_before += static_cast<std::size_t>(std::count(buffer, buffer + n, '\n'));
+            all.append(buffer, n);
         }
-        require(!points.empty(), "stdin", "no points given");
+        const std::string_view text(all);
+        std::size_t start = 0;
+        for (std::size_t n = 1; start < text.size(); ++n) {
+            const std::size_t end = std::min(text.find('\n', start), text.size());
+            const std::string_view line = text.substr(start, end - start);
+            start = end + 1;
+            if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+            const std::vector<double> x = parse_point(line, "stdin line " + std::to_string(n));
+            if (coords.empty()) dim = x.size();
+            require(x.size() == dim, "stdin line " + std::to_string(n),
+                    "expected " + std::to_string(dim) + " coordinates like the first point, got " +
+                        std::to_string(x.size()));
+            coords.insert(coords.end(), x.begin(), x.end());
+        }
+        require(!coords.empty(), "stdin", "no points given");
     } else {
-        points.push_back(parse_point(o.x, "--x"));
+        coords = parse_point(o.x, "--x");
+        dim = coords.size();
     }
-    const std::size_t dim = points.front().size();
     if (o.dim) require(*o.dim >= 1, "dim", "must be an integer >= 1, got " + std::to_string(*o.dim));
     if (o.dim)
         require(static_cast<std::int64_t>(dim) == *o.dim, o.x == "-" ? "stdin" : "--x",
@@ -73,8 +102,15 @@ int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out) {
     auto problem =
         continuous::make_function(o.problem, static_cast<std::int64_t>(dim), o.instance, o.x == "-" ? "stdin" : "--x");
     problem.reseed(o.seed);
+    // Written in pieces once every point is read and checked: nothing is printed for bad input.
     std::string text;
-    for (const auto& x : points) text += fmt::format("{:.17g}\n", problem.evaluate(x));
+    for (std::size_t i = 0; i < coords.size(); i += dim) {
+        text += fmt::format("{:.17g}\n", problem.evaluate(std::span<const double>(coords.data() + i, dim)));
+        if (text.size() > (1 << 16)) {
+            out << text;
+            text.clear();
+        }
+    }
     out << text;
     return 0;
 }

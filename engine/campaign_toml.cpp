@@ -13,6 +13,7 @@
 
 #include "engine/run.hpp"
 #include "framework/error.hpp"
+#include "framework/read_file.hpp"
 #include "problems/continuous/catalog.hpp"
 
 namespace pride::engine {
@@ -209,22 +210,10 @@ CampaignAlgorithm read_algorithm(const std::string& file, const toml::table& t) 
 Campaign read_campaign(const std::string& path) {
     Campaign c;
     c.file = path;
-    // Read here, with a cap, then parsed: a folder, a device or an endless stream is refused
-    // with a message rather than read without end.
-    constexpr std::size_t kMaxBytes = 16u << 20;
+    // Read under a cap (framework/read_file.hpp): `pride bench /dev/zero` is refused, not read forever.
     std::error_code ec;
     require(!std::filesystem::is_directory(path, ec), path, "is a folder, not a campaign file");
-    {
-        std::ifstream in(path, std::ios::binary);
-        require(in.is_open(), path, "cannot read the campaign file (missing or unreadable)");
-        std::string chunk(1 << 16, '\0');
-        while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
-            c.text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
-            require(c.text.size() <= kMaxBytes, path,
-                    fmt::format("is larger than {} MiB; a campaign file is a few lines of TOML", kMaxBytes >> 20));
-        }
-        require(!in.bad(), path, "cannot read the campaign file");
-    }
+    c.text = read_capped_file(path, std::size_t{16} << 20, "campaign");
     toml::table root;
     if (std::error_code ec; std::filesystem::is_directory(path, ec))
         throw InputError(path + ": is a folder, not a campaign file");

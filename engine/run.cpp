@@ -518,7 +518,8 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
                 "only box runs are observed (" + entry.name +
                     (entry.solve_grid ? " solves the whole map)" : " runs on chains)"));
     // Made only for a run on the box (its threads start here and end with the run).
-    auto box_run = [&] {
+    // The bindings captured by name: clang 14 (the fuzz build) cannot capture structured bindings.
+    auto box_run = [&, &entry = entry, &params = params, &termination = termination] {
         const auto threaded = threaded_box(*p.box, p.name, budget.threads);
         return run_box(entry, params, threaded ? *threaded : *p.box, termination, seed, observer);
     };

@@ -29,6 +29,10 @@ inline double sanitize(double f) noexcept {
 /// the span evaluated) or a chain for algorithms on chains.
 template <class Solution = std::vector<double>>
 class BasicRunState {
+    // Declared first: clang 14 does not look ahead in the class from a trailing requires-clause
+    // (evaluate_columns), which the fuzz build (fuzz/, clang) needs.
+    static constexpr bool is_point = std::is_same_v<Solution, std::vector<double>>;
+
   public:
     /// `dimension`: the length of a point, for box problems (the best point is allocated once).
     explicit BasicRunState(const Termination& termination, std::size_t dimension = 0)
@@ -129,8 +133,6 @@ class BasicRunState {
         while (target_hits_.size() < targets.size() && f <= targets[target_hits_.size()])
             target_hits_.push_back(progress_.evaluations);
     }
-
-    static constexpr bool is_point = std::is_same_v<Solution, std::vector<double>>;
 
     Termination termination_;
     std::int64_t limit_;

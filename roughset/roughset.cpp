@@ -11,8 +11,10 @@
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "framework/error.hpp"
+#include "framework/read_file.hpp"
 #include "roughset/roughset.hpp"
 
 namespace pride::roughset {
@@ -22,10 +24,12 @@ namespace pride::roughset {
 
 DecisionTable::DecisionTable(std::vector<std::string> names) : names_(std::move(names)) {
     require(names_.size() >= 2, "decision table", "needs at least 2 columns, got " + std::to_string(names_.size()));
+    // A hash set, not pairwise comparisons: tables may have 100,000 columns.
+    std::unordered_set<std::string_view> seen;
+    seen.reserve(names_.size());
     for (std::size_t i = 0; i < names_.size(); ++i) {
         require(!names_[i].empty(), "decision table", "column " + std::to_string(i + 1) + " has an empty name");
-        for (std::size_t j = 0; j < i; ++j)
-            require(names_[j] != names_[i], "decision table", "duplicate column name '" + names_[i] + "'");
+        require(seen.insert(names_[i]).second, "decision table", "duplicate column name '" + names_[i] + "'");
     }
     labels_.resize(names_.size());
     lookup_.resize(names_.size());
@@ -105,6 +109,51 @@ struct Record {
     std::size_t line = 0;
     std::size_t end_col = 0;  // column just past the last character of the record's last line
 };
+
+// Limits on what a CSV table may hold, checked while reading so that memory stays bounded: the
+// file (read in chunks under the cap, framework/read_file.hpp) and the fields of one row.
+constexpr std::size_t kMaxCsvBytes = std::size_t{16} << 20;
+constexpr std::size_t kMaxCsvColumns = 1000000;
+
+/// The first place where `s` is not UTF-8 text (a NUL byte, a byte outside a valid UTF-8
+/// sequence): InputError "SOURCE:LINE:COL: ..." with the line and column the reader would give,
+/// so that labels and names, printed as read and in --json, are always valid UTF-8.
+void check_utf8(std::string_view s, const std::string& source) {
+    std::size_t line = 1, col = 1;
+    std::size_t i = s.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+    static constexpr char hex[] = "0123456789ABCDEF";
+    while (i < s.size()) {
+        const auto c = static_cast<unsigned char>(s[i]);
+        const auto fail = [&](const std::string& what) {
+            throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + what);
+        };
+        if (c == 0) fail("NUL byte (\\x00): this is a binary file, not a CSV table");
+        std::size_t len = c < 0x80                   ? 1
+                          : (c >= 0xC2 && c <= 0xDF) ? 2
+                          : (c >= 0xE0 && c <= 0xEF) ? 3
+                          : (c >= 0xF0 && c <= 0xF4) ? 4
+                                                     : 0;
+        std::uint32_t v = len == 1 ? c : len == 2 ? c & 0x1Fu : len == 3 ? c & 0x0Fu : c & 0x07u;
+        for (std::size_t k = 1; k < len; ++k) {
+            if (i + k >= s.size() || (static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) {
+                len = 0;
+                break;
+            }
+            v = v << 6 | (static_cast<unsigned char>(s[i + k]) & 0x3Fu);
+        }
+        if ((len == 3 && (v < 0x800 || (v >= 0xD800 && v <= 0xDFFF))) || (len == 4 && (v < 0x10000 || v > 0x10FFFF)))
+            len = 0;
+        if (len == 0)
+            fail(std::string("byte \\x") + hex[c >> 4] + hex[c & 15] + " is not UTF-8: a CSV table must be UTF-8 text");
+        if (c == '\n' || (c == '\r' && (i + 1 >= s.size() || s[i + 1] != '\n'))) {
+            ++line;
+            col = 1;
+        } else if (c != '\r') {
+            ++col;
+        }
+        i += len;
+    }
+}
 
 // A small cursor that knows its line and column (in characters: UTF-8 continuation bytes do not
 // advance the column).
@@ -193,6 +242,9 @@ class CsvReader {
                 }
             }
             r.fields.push_back(std::move(f));
+            if (r.fields.size() > kMaxCsvColumns)
+                fail(r.fields.back().line, r.fields.back().col,
+                     "more than " + std::to_string(kMaxCsvColumns) + " columns in one row");
             if (peek() == ',') {
                 advance();
                 continue;
@@ -212,6 +264,7 @@ class CsvReader {
 }  // namespace
 
 DecisionTable parse_csv(std::string_view text, const std::string& source_name) {
+    check_utf8(text, source_name);
     CsvReader in(text, source_name);
     Record header;
     if (!in.next(header)) in.fail(1, 1, "empty file (expected a header line naming the columns)");
@@ -220,14 +273,16 @@ DecisionTable parse_csv(std::string_view text, const std::string& source_name) {
         in.fail(header.line, header.fields[0].col,
                 "the header has 1 column, need at least 2 (conditions, then the decision)");
     std::vector<std::string> names;
+    std::unordered_map<std::string_view, std::size_t> column_of_name;  // not pairwise: 100,000 columns
+    column_of_name.reserve(n);
     for (std::size_t c = 0; c < n; ++c) {
         const Field& f = header.fields[c];
         if (f.text.empty()) in.fail(f.line, f.col, "empty column name (column " + std::to_string(c + 1) + ")");
-        for (std::size_t j = 0; j < c; ++j)
-            if (names[j] == f.text)
-                in.fail(f.line, f.col,
-                        "duplicate column name '" + f.text + "' (columns " + std::to_string(j + 1) + " and " +
-                            std::to_string(c + 1) + ")");
+        const auto [it, added] = column_of_name.try_emplace(f.text, c);
+        if (!added)
+            in.fail(f.line, f.col,
+                    "duplicate column name '" + f.text + "' (columns " + std::to_string(it->second + 1) + " and " +
+                        std::to_string(c + 1) + ")");
         names.push_back(f.text);
     }
     DecisionTable table(names);
@@ -253,14 +308,7 @@ DecisionTable parse_csv(std::string_view text, const std::string& source_name) {
 }
 
 DecisionTable read_csv(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot open (is a directory)");
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw InputError(path + ": cannot open (" + std::strerror(errno) + ")");
-    std::stringstream s;
-    s << f.rdbuf();
-    if (f.bad()) throw InputError(path + ": cannot read");
-    return parse_csv(s.str(), path);
+    return parse_csv(read_capped_file(path, kMaxCsvBytes, "decision table"), path);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -630,28 +678,49 @@ bool consistent(const DecisionTable& t, const Attributes& C, const Attributes& D
 // ---------------------------------------------------------------------------------------------
 // Core and reducts
 
+namespace {
+
+// Whether each position k in [lo, hi) of B is in the core, given `outside`, the partition of the
+// merged rows on every position of B outside [lo, hi): the partition on B - {k} is `outside`
+// refined by the rest of [lo, hi), built by halves, so that the whole search refines
+// O(|B| log |B|) times instead of |B|^2 (a table may have 100,000 columns).
+void core_search(const Collapsed& rows, const Partition& outside, std::size_t lo, std::size_t hi,
+                 std::vector<char>& in_core) {
+    if (hi - lo == 1) {
+        // Dropping k keeps POS_B(D) iff every (B - k)-class has a single generalised decision.
+        std::vector<std::uint32_t> g(outside.count, none);
+        for (std::size_t c = 0; c < rows.rows; ++c) {
+            auto& v = g[outside.id[c]];
+            if (v == none) {
+                v = rows.gd[c];
+            } else if (v != rows.gd[c]) {
+                in_core[lo] = 1;
+                return;
+            }
+        }
+        return;
+    }
+    const std::size_t mid = lo + (hi - lo) / 2;
+    Partition left = outside;
+    for (std::size_t k = mid; k < hi; ++k) left = refine(left, rows.cols[k]);
+    core_search(rows, left, lo, mid, in_core);
+    left = {};
+    Partition right = outside;
+    for (std::size_t k = lo; k < mid; ++k) right = refine(right, rows.cols[k]);
+    core_search(rows, right, mid, hi, in_core);
+}
+
+}  // namespace
+
 Attributes core(const DecisionTable& t, const Attributes& C0, const Attributes& D) {
     const Attributes C = checked(t, C0, "C");
     const Collapsed rows(t, C, checked(t, D, "D"));
-    // Dropping a keeps POS_C(D) iff every (C - a)-class has a single generalised decision.
     Attributes out;
-    std::vector<std::size_t> others;
-    for (std::size_t k = 0; k < C.size(); ++k) {
-        others.clear();
-        for (std::size_t j = 0; j < C.size(); ++j)
-            if (j != k) others.push_back(j);
-        const Partition p = rows.partition(others);
-        std::vector<std::uint32_t> g(p.count, none);
-        bool keeps = true;
-        for (std::size_t c = 0; c < rows.rows && keeps; ++c) {
-            auto& v = g[p.id[c]];
-            if (v == none)
-                v = rows.gd[c];
-            else if (v != rows.gd[c])
-                keeps = false;
-        }
-        if (!keeps) out.push_back(C[k]);
-    }
+    if (C.empty()) return out;
+    std::vector<char> in_core(C.size(), 0);
+    core_search(rows, single_class(rows.rows), 0, C.size(), in_core);
+    for (std::size_t k = 0; k < C.size(); ++k)
+        if (in_core[k]) out.push_back(C[k]);
     return out;
 }
 

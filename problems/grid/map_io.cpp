@@ -2,25 +2,24 @@
 #include "problems/grid/map_io.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <climits>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <memory>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <vector>
 
 #include "framework/error.hpp"
+#include "framework/read_file.hpp"
 
 namespace pride::grid {
 namespace {
 
-constexpr std::size_t kMaxFileBytes = std::size_t{1} << 30;  // 1 GiB: far above any grid map
+// 64 MiB: an 8000 x 8000 Moving AI map; the largest maps of the benchmark sets are 1-2 MB, and the
+// grid algorithms keep several arrays per cell. Read in chunks under the cap (framework/read_file.hpp).
+constexpr std::size_t kMaxFileBytes = std::size_t{64} << 20;
 
 // ---------------------------------------------------------------------------------------------
 // Messages
@@ -453,26 +452,7 @@ GridMap parse_matrix(const std::vector<Line>& lines, std::size_t first, const st
 // Files
 
 std::string read_file(const std::string& path) {
-    struct Closer {
-        void operator()(std::FILE* f) const { std::fclose(f); }
-    };
-    errno = 0;
-    std::unique_ptr<std::FILE, Closer> f(std::fopen(path.c_str(), "rb"));
-    if (!f) throw InputError(path + ": cannot open: " + std::strerror(errno));
-    std::string data;
-    char buffer[1 << 16];
-    for (;;) {
-        const std::size_t n = std::fread(buffer, 1, sizeof buffer, f.get());
-        data.append(buffer, n);
-        if (data.size() > kMaxFileBytes)
-            throw InputError(path + ": file too large (more than " + std::to_string(kMaxFileBytes >> 20) + " MiB)");
-        if (n < sizeof buffer) break;
-    }
-    if (std::ferror(f.get())) {
-        const int err = errno;
-        throw InputError(path + ": cannot read: " + (err ? std::strerror(err) : "read error"));
-    }
-    return data;
+    return read_capped_file(path, kMaxFileBytes, "map and scenario");
 }
 
 }  // namespace
