@@ -14,8 +14,13 @@
 // baseline always spends the budget it is compared under (`restart = false` runs NLopt once);
 // algorithms that need a local optimiser (MLSL, AUGLAG) get LN_SBPLX; gradient-based algorithms
 // (LD_*, GD_*) are refused, since problems here give no gradients.
+// Non-finite values (NaN, +-inf) reach NLopt as a finite plateau just above the worst finite
+// value seen (+inf before any): the run state still ranks them worst, but NLopt's models (NEWUOA,
+// BOBYQA) looped without end on NaN and -inf, so they never see them.
 #include <nlopt.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -111,6 +116,7 @@ class Nlopt {
             std::int64_t record_every;
             decltype(record)* record_iteration;
             const Termination* termination;
+            double best_finite = kInf, worst_finite = -kInf;
         } context{&problem, &state, &current, &current_f, limit, record_every, &record, &per_evaluation};
 
         auto objective = [](unsigned n, const double* x, double*, void* data) -> double {
@@ -123,7 +129,13 @@ class Nlopt {
             std::copy(point.begin(), point.end(), c.current->data());
             *c.current_f = f;
             if (c.state->progress().evaluations % c.record_every == 0) (*c.record_iteration)();
-            return f;
+            if (std::isfinite(f)) {
+                c.best_finite = std::min(c.best_finite, f);
+                c.worst_finite = std::max(c.worst_finite, f);
+                return f;
+            }
+            if (!std::isfinite(c.worst_finite)) return kInf;
+            return c.worst_finite + (c.worst_finite - c.best_finite) + 1.0;
         };
         const std::vector<double> lower(lo.begin(), lo.end()), upper(hi.begin(), hi.end());
         while (true) {
@@ -140,6 +152,7 @@ class Nlopt {
             }
             double fmin = kInf;
             bool stopped_by_us = false;
+            const std::int64_t evaluations_before = state.progress().evaluations;
             try {
                 opt.optimize(x0, fmin);
             } catch (const nlopt::forced_stop&) {
@@ -150,7 +163,8 @@ class Nlopt {
             }
             const bool limit_reached =
                 stopped_by_us || state.progress().evaluations >= limit || termination.done(state.progress());
-            if (limit_reached || !restart || state.progress().evaluations == 0) break;
+            // A start that NLopt left without evaluating anything would be drawn again for ever.
+            if (limit_reached || !restart || state.progress().evaluations == evaluations_before) break;
             for (std::size_t d = 0; d < dim; ++d) x0[d] = rng.uniform(lo[d], hi[d]);
         }
         if (state.progress().evaluations % record_every != 0 || state.progress().evaluations == 0) record();

@@ -616,12 +616,26 @@ TEST_CASE("cli grid: --seed, --pop, --iters and --evals are obeyed", "[cli][grid
     }
 }
 
-TEST_CASE("cli grid: iqga has no oracle, without --oracle it is scored by its formula", "[cli][grid][path]") {
+TEST_CASE("cli grid: iqga's oracle is the exact optimum over the 3-D front, and every result is scored by its formula",
+          "[cli][grid][path]") {
     const Bundled& b = bundled()[0];
-    expect_input_error("path " + b.endpoints() + " --algo ga --objective iqga --oracle --json", {"--oracle", "iqga"});
-    expect_input_error("path " + b.endpoints() + " --algo ga --encoding chain --objective iqga --oracle", {"--oracle"});
-    expect_input_error("path " + b.endpoints() + " --algo exact --objective iqga", {"exact", "iqga"});
     const Objective iqga{"iqga", "--objective iqga"};
+    // The exact optimum (pareto.hpp) is what --oracle reports, and no heuristic result beats it;
+    // iqga values are negative, so the gap is (value - optimum) / |optimum|.
+    const JsonValue e = check_path_json(success("path " + b.endpoints() + " --algo exact --objective iqga --json"),
+                                        b.grid, b.start, b.goal, iqga, "exact", false);
+    const double optimum = e.at("objective_value").number;
+    REQUIRE(optimum < 0);
+    for (const std::string& encoding : {std::string("line"), std::string("chain")}) {
+        const std::string args =
+            "path " + b.endpoints() + " --algo ga --encoding " + encoding + " --objective iqga --oracle --json";
+        INFO(args);
+        const JsonValue j = check_path_json(success(args), b.grid, b.start, b.goal, iqga, "ga", true);
+        CHECK(j.at("optimum").at("objective_value").number == optimum);
+        if (j.at("feasible").boolean)
+            CHECK(std::abs(j.at("optimum").at("gap").number -
+                           (j.at("objective_value").number - optimum) / std::abs(optimum)) <= 1e-12);
+    }
     for (const Heuristic& h : heuristics()) {
         const std::string args = "path " + b.endpoints() + " " + h.args + " --objective iqga --json";
         INFO(args);
