@@ -18,7 +18,8 @@
 //      steadier than the wall clock on a loaded machine).
 //   7. With --init-table only: file 002's table 2, 30 SITP and 30 random-walk initial paths on
 //      each bundled file002 map (longest, shortest, mean length, share of legal paths).
-// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp | --pareto | --whales | --init-table]
+// Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp | --pareto | --whales | --init-table | --decode |
+//        --astar] [--rounds N] (--decode: only part 2; --astar: only part 1; --rounds: decode rounds, for callgrind)
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -90,6 +91,8 @@ Bundled bundled(const std::string& maps, const std::string& name) {
 }
 
 /// Decode + evaluate of random `line` genotypes by `encoded` (a copy per call, fresh detour memory).
+int g_decode_rounds = 2000;  // --rounds: fewer for instruction counts under callgrind
+
 template <class E>
 double decode_ns(E encoded) {
     Rng rng(7);
@@ -98,7 +101,7 @@ double decode_ns(E encoded) {
         for (std::size_t i = 0; i < x.size(); ++i) x[i] = rng.uniform(encoded.lower()[i], encoded.upper()[i]);
     double sink = 0.0;
     for (const auto& x : genotypes) sink += encoded.evaluate(x);  // warm the detour memory, as a run does
-    const int rounds = 2000;
+    const int rounds = g_decode_rounds;
     const auto start = Clock::now();
     for (int r = 0; r < rounds; ++r)
         for (const auto& x : genotypes) sink += encoded.evaluate(x);
@@ -290,7 +293,12 @@ int main(int argc, char** argv) {
     CLI::App app{"grid benchmark: A*, decoding, PSO, LSO and ILSO on the 10x10 map"};
     app.add_option("--scen", scens, "Moving AI scenario files for the A* part");
     app.add_option("--maps", maps, "folder of the bundled maps (default examples/maps)");
-    bool sitp = false, pareto = false, whales = false, init_table = false;
+    bool sitp = false, pareto = false, whales = false, init_table = false, decode_only = false,
+         astar_only = false;
+    app.add_flag("--decode", decode_only, "only the decode + evaluate part");
+    app.add_flag("--astar", astar_only, "only the A* part (the --scen files)");
+    app.add_option("--rounds", g_decode_rounds, "rounds of 64 genotypes per decode figure (default 2000)")
+        ->check(CLI::PositiveNumber);
     app.add_flag("--sitp", sitp, "only: the time to make N = 40 SITP paths on the bundled 40x40 map");
     app.add_flag("--pareto", pareto, "only the exact Pareto fronts (20x20, 40x40, random 100x100)");
     app.add_flag("--whales", whales, "only: HS-WOA and WOA, N = 20, 50 iterations, on the bundled 50x50 map");
@@ -313,15 +321,17 @@ int main(int argc, char** argv) {
             bench_whales(maps);
             return 0;
         }
-        bench_rule_book();
-        fmt::print("part,what,queries,expansions,expansions_per_s,ms_per_query,max_diff\n");
-        for (const auto& s : scens) bench_astar(s);
+        if (!decode_only && !astar_only) bench_rule_book();
+        if (!decode_only) fmt::print("part,what,queries,expansions,expansions_per_s,ms_per_query,max_diff\n");
+        if (!decode_only)
+            for (const auto& s : scens) bench_astar(s);
+        if (astar_only) return 0;
         fmt::print("part,map,genes,ns_per_decode_and_evaluate,ns_with_fixed_types\n");
         const Bundled m20 = bundled(maps, "file002-20x20");
         bench_decode("file002-20x20", m20.map, m20.start, m20.goal);
         bench_decode("random-100x100-20%", std::make_shared<const GridMap>(random_map(100, 100, 0.2, 3)), {0, 0},
                      {99, 99});
-        bench_swarms(maps);
+        if (!decode_only) bench_swarms(maps);
     } catch (const std::exception& e) {
         fmt::print(stderr, "grid_bench: {}\n", e.what());
         return 2;

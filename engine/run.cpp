@@ -196,7 +196,8 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
     if (const auto* c = std::get_if<ContinuousSpec>(&spec)) {
         const auto* item = continuous::catalog().find(c->function);
         require(item != nullptr, "problem", "unknown problem '" + c->function + "'");
-        require(c->dim >= 1, "dim", "must be an integer >= 1, got " + std::to_string(c->dim));
+        require(c->dim >= 1 && c->dim <= 1'000'000'000'000'000, "dim",
+                "must be an integer in [1, 1000000000000000], got " + std::to_string(c->dim));
         // Bounds, an optimum and scratch vectors per coordinate, and a rotation (dim^2) for an
         // instance that has one, before any is allocated.
         const double n = static_cast<double>(c->dim);

@@ -523,11 +523,14 @@ TEST_CASE("cli grid: lso and ilso with the line and free encodings on every bund
                     CHECK(history.front() < 10.0 * b.grid.width * b.grid.height);
                     // Any feasible start passes that bound (the repair connector makes every path
                     // legal). With the line encoding, rule walks start at least as well as uniform
-                    // genotypes with the same seed (measured on all five maps and four objectives:
+                    // genotypes with the same seed (measured on the bundled maps and four objectives:
                     // 10x10 cells 12 against 16, weighted 48.3 against 67.2); with the free encoding
                     // they need not (three waypoints read
-                    // off a walk lose most of it), so only the line encoding is compared.
-                    if (h.encoding == "line") {
+                    // off a walk lose most of it), so only the line encoding is compared. Nor on
+                    // file 003's env2, whose walls with 1-2 cell gaps send rule walks round them
+                    // (measured with ilso: cells 62 against 60, length 69.7 against 66.9): a
+                    // measured property of the other seven maps, not a law.
+                    if (h.encoding == "line" && b.name != "file003-env2-30x30.map") {
                         const std::string args =
                             "path " + b.endpoints() + " " + h.args + " " + objective.args + " --init uniform --json";
                         INFO(args);

@@ -13,6 +13,20 @@ namespace pride::python {
 
 namespace {
 
+// The command line's integer ranges and wording (cli/flags.hpp: max_count, max_seed), so that an
+// error reads the same from Python as from `pride`.
+constexpr std::int64_t kMaxCount = 1'000'000'000'000'000;
+
+void integer_in(const char* name, std::int64_t value, std::int64_t lo, const std::string& hi_text, bool in_range) {
+    require(in_range, name, "must be an integer in [" + std::to_string(lo) + ", " + hi_text + "], got " +
+                                std::to_string(value));
+}
+
+void count_in(const char* name, std::int64_t value, std::int64_t lo) {
+    integer_in(name, value, lo, std::to_string(kMaxCount), value >= lo && value <= kMaxCount);
+}
+
+
 /// The command line's one-line message (cli/flags.cpp) with the Python keyword where the command
 /// line names its flag: "dim: ..." for "--dim: ...", "evals: ..." for "--evals: ...".
 std::string python_message(const InputError& e) {
@@ -269,7 +283,7 @@ std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::objec
         std::vector<double> v(a.data(), a.data() + a.size());
         if (a.ndim() == 0) {
             require(dim.has_value(), "dim", std::string("give dim when ") + which + " is one number");
-            require(*dim >= 1, "dim", "dimension must be >= 1, got " + std::to_string(*dim));
+            count_in("dim", *dim, 1);
             v.assign(static_cast<std::size_t>(*dim), v.front());
         }
         return v;
@@ -366,6 +380,8 @@ engine::Budget budget(std::optional<std::int64_t> evals, std::optional<std::int6
                       std::optional<double> target, std::optional<double> wall_ms) {
     // The command line's rules: one limit of evaluations or of iterations, a target that is a number.
     require(!(evals && iters), "evals", "excludes iters (give one of them)");
+    if (evals) count_in("evals", *evals, 1);
+    if (iters) count_in("iters", *iters, 0);
     require(!target || !std::isnan(*target), "target", "must be a number, got nan");
     engine::Budget b;
     b.evaluations = evals;
@@ -376,7 +392,7 @@ engine::Budget budget(std::optional<std::int64_t> evals, std::optional<std::int6
 }
 
 std::uint64_t checked_seed(std::int64_t seed) {
-    require(seed >= 0, "seed", "must be >= 0, got " + std::to_string(seed));
+    integer_in("seed", seed, 0, "18446744073709551615", seed >= 0);
     return static_cast<std::uint64_t>(seed);
 }
 

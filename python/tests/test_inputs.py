@@ -72,7 +72,7 @@ def test_bounds_of_any_dtype_and_layout():
 
 
 @pytest.mark.parametrize("kwargs, kind, message", [
-    (dict(evals=-5), ValueError, "evals: must be >= 1, got -5"),
+    (dict(evals=-5), ValueError, "evals: must be an integer in [1, 1000000000000000], got -5"),
     (dict(evals=2**70), ValueError, "evals: 1180591620717411303424 is out of range (64-bit integers)"),
     (dict(seed=2**64), ValueError, "seed: 18446744073709551616 is out of range (64-bit integers)"),
     (dict(dim=-2**64), ValueError, "dim: -18446744073709551616 is out of range (64-bit integers)"),
