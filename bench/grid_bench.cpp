@@ -293,8 +293,7 @@ int main(int argc, char** argv) {
     CLI::App app{"grid benchmark: A*, decoding, PSO, LSO and ILSO on the 10x10 map"};
     app.add_option("--scen", scens, "Moving AI scenario files for the A* part");
     app.add_option("--maps", maps, "folder of the bundled maps (default examples/maps)");
-    bool sitp = false, pareto = false, whales = false, init_table = false, decode_only = false,
-         astar_only = false;
+    bool sitp = false, pareto = false, whales = false, init_table = false, decode_only = false, astar_only = false;
     app.add_flag("--decode", decode_only, "only the decode + evaluate part");
     app.add_flag("--astar", astar_only, "only the A* part (the --scen files)");
     app.add_option("--rounds", g_decode_rounds, "rounds of 64 genotypes per decode figure (default 2000)")

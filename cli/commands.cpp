@@ -95,7 +95,8 @@ int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out) {
         coords = parse_point(o.x, "--x");
         dim = coords.size();
     }
-    if (o.dim) require(*o.dim >= 1, "dim", "must be an integer in [1, 1000000000000000], got " + std::to_string(*o.dim));
+    if (o.dim)
+        require(*o.dim >= 1, "dim", "must be an integer in [1, 1000000000000000], got " + std::to_string(*o.dim));
     if (o.dim)
         require(static_cast<std::int64_t>(dim) == *o.dim, o.x == "-" ? "stdin" : "--x",
                 "expected " + std::to_string(*o.dim) + " coordinates (--dim), got " + std::to_string(dim));

@@ -92,9 +92,10 @@ int run_main(int argc, char** argv) {
     run_cmd->add_option("--pop", run.pop, "population size (NLopt: evaluations per recorded iteration)")
         ->check(integer_in(1, max_count));
     run_cmd->add_option("--seed", run.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
-    run_cmd->add_option("--threads", run.threads,
-                        "threads evaluating a population (default 1; continuous functions use one: they are cheaper "
-                        "than a thread's wake-up)")
+    run_cmd
+        ->add_option("--threads", run.threads,
+                     "threads evaluating a population (default 1; continuous functions use one: they are cheaper "
+                     "than a thread's wake-up)")
         ->check(integer_in(1, 256));
     run_cmd->add_option("--param", run.params, "algorithm parameter NAME=VALUE (repeatable)");
     run_cmd->add_flag("--json", run.json, "print one JSON object");
@@ -133,9 +134,10 @@ int run_main(int argc, char** argv) {
         ->excludes(path_iters)
         ->check(integer_in(1, max_count));
     path_cmd->add_option("--seed", path.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
-    path_cmd->add_option("--threads", path.threads,
-                         "threads evaluating a population of genotypes (line and free encodings; default 1); the "
-                         "same result as one thread")
+    path_cmd
+        ->add_option("--threads", path.threads,
+                     "threads evaluating a population of genotypes (line and free encodings; default 1); the "
+                     "same result as one thread")
         ->check(integer_in(1, 256));
     path_cmd->add_option("--inflate", path.inflate, "obstacle inflation radius in cells (default 0)")
         ->check(integer_in(0, 1000));

@@ -575,8 +575,8 @@ TEST_CASE("cli grid: the penalty connector never returns an infeasible path as a
         }
     // check_path_json checked each: a feasible result is a legal path of the value printed, an
     // infeasible one prints no path and no value. Counting both kinds: with the penalty
-    // connector the searches still find legal paths on these maps (measured: 4 of the 10 on the first five bundled maps), so a
-    // connector whose penalty never let a legal path win would fail here.
+    // connector the searches still find legal paths on these maps (measured: 4 of the 10 on the first five bundled
+    // maps), so a connector whose penalty never let a legal path win would fail here.
     CHECK(feasible + infeasible == static_cast<int>(2 * bundled().size()));
     CHECK(feasible >= 2);
 }

@@ -18,14 +18,13 @@ namespace {
 constexpr std::int64_t kMaxCount = 1'000'000'000'000'000;
 
 void integer_in(const char* name, std::int64_t value, std::int64_t lo, const std::string& hi_text, bool in_range) {
-    require(in_range, name, "must be an integer in [" + std::to_string(lo) + ", " + hi_text + "], got " +
-                                std::to_string(value));
+    require(in_range, name,
+            "must be an integer in [" + std::to_string(lo) + ", " + hi_text + "], got " + std::to_string(value));
 }
 
 void count_in(const char* name, std::int64_t value, std::int64_t lo) {
     integer_in(name, value, lo, std::to_string(kMaxCount), value >= lo && value <= kMaxCount);
 }
-
 
 /// The command line's one-line message (cli/flags.cpp) with the Python keyword where the command
 /// line names its flag: "dim: ..." for "--dim: ...", "evals: ..." for "--evals: ...".
