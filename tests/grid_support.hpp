@@ -1,11 +1,16 @@
 #pragma once
-// Small helpers shared by the grid tests: hand-drawn maps and bounded random integers.
+// Small helpers shared by the grid tests: hand-drawn maps, bounded random integers, and the
+// bundled and random (map, start, goal) instances the property tests run over.
 #include <cstdint>
+#include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "framework/random.hpp"
+#include "problems/grid/grid_problem.hpp"
 #include "problems/grid/map.hpp"
+#include "problems/grid/map_io.hpp"
 
 namespace pride::test {
 
@@ -21,6 +26,48 @@ inline grid::GridMap map_of(const std::vector<std::string>& rows) {
 /// A uniform integer in [0, n), n > 0.
 inline int below(Rng& rng, int n) {
     return static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));
+}
+
+/// One planning task: a map, its end points and whether corners may be cut.
+struct GridInstance {
+    std::shared_ptr<const grid::GridMap> map;
+    grid::Cell start, goal;
+    bool corner_cutting = false;
+};
+
+/// The bundled maps (examples/maps) and every start/goal pair of their scenario files.
+inline std::vector<GridInstance> bundled_instances(const std::filesystem::path& maps) {
+    std::vector<GridInstance> out;
+    for (const std::filesystem::directory_entry& f : std::filesystem::directory_iterator(maps)) {
+        if (f.path().extension() != ".map") continue;
+        auto map = std::make_shared<const grid::GridMap>(grid::read_map(f.path().string()));
+        for (const auto& s : grid::read_scenario(f.path().string() + ".scen")) out.push_back({map, s.start, s.goal});
+    }
+    return out;
+}
+
+/// Random maps 8x8 .. 30x30 with 0-35 % obstacles and a reachable start/goal pair each; every fifth
+/// map allows corner cutting, every fourth pair shares a column.
+inline std::vector<GridInstance> random_instances(std::uint64_t seed, int maps) {
+    Rng rng(seed);
+    std::vector<GridInstance> out;
+    for (int m = 0; m < maps; ++m) {
+        const int w = 8 + below(rng, 23), h = 8 + below(rng, 23);
+        std::vector<std::uint8_t> blocked(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+        const double density = 0.35 * rng.uniform();
+        for (auto& b : blocked) b = rng.uniform() < density ? 1 : 0;
+        auto map = std::make_shared<const grid::GridMap>(w, h, std::move(blocked), "random");
+        const bool cc = m % 5 == 4;
+        for (int tries = 0; tries < 5000; ++tries) {
+            const grid::Cell s{below(rng, w), below(rng, h)};
+            grid::Cell g{below(rng, w), below(rng, h)};
+            if (m % 4 == 1) g.x = s.x;
+            if (!map->free(s) || !map->free(g) || s == g || !grid::reachable_from(*map, s, cc)[map->index(g)]) continue;
+            out.push_back({map, s, g, cc});
+            break;
+        }
+    }
+    return out;
 }
 
 }  // namespace pride::test

@@ -52,45 +52,12 @@ fs::path bundled_maps() {
     return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
 }
 
-struct Instance {
-    std::shared_ptr<const grid::GridMap> map;
-    grid::Cell start, goal;
-    bool corner_cutting = false;
-};
+using Instance = test::GridInstance;
 
 std::vector<Instance> bundled_instances() {
-    std::vector<Instance> out;
-    for (const fs::directory_entry& f : fs::directory_iterator(bundled_maps())) {
-        if (f.path().extension() != ".map") continue;
-        auto map = std::make_shared<const grid::GridMap>(grid::read_map(f.path().string()));
-        for (const auto& s : grid::read_scenario(f.path().string() + ".scen")) out.push_back({map, s.start, s.goal});
-    }
-    return out;
+    return test::bundled_instances(bundled_maps());
 }
-
-/// Random maps 8x8 .. 30x30 with 0-35 % obstacles and a reachable start/goal pair each; every fifth
-/// map allows corner cutting, every fourth pair shares a column.
-std::vector<Instance> random_instances(std::uint64_t seed, int maps) {
-    Rng rng(seed);
-    std::vector<Instance> out;
-    for (int m = 0; m < maps; ++m) {
-        const int w = 8 + test::below(rng, 23), h = 8 + test::below(rng, 23);
-        std::vector<std::uint8_t> blocked(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-        const double density = 0.35 * rng.uniform();
-        for (auto& b : blocked) b = rng.uniform() < density ? 1 : 0;
-        auto map = std::make_shared<const grid::GridMap>(w, h, std::move(blocked), "random");
-        const bool cc = m % 5 == 4;
-        for (int tries = 0; tries < 5000; ++tries) {
-            const grid::Cell s{test::below(rng, w), test::below(rng, h)};
-            grid::Cell g{test::below(rng, w), test::below(rng, h)};
-            if (m % 4 == 1) g.x = s.x;
-            if (!map->free(s) || !map->free(g) || s == g || !grid::reachable_from(*map, s, cc)[map->index(g)]) continue;
-            out.push_back({map, s, g, cc});
-            break;
-        }
-    }
-    return out;
-}
+using test::random_instances;
 
 grid::GridProblem<grid::LinearObjective> problem_of(const Instance& in) {
     return {in.map, in.start, in.goal, grid::LinearObjective::of(grid::HswoaObjective{}), in.corner_cutting};
