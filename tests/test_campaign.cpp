@@ -1122,11 +1122,13 @@ TEST_CASE("bench: a read-only or full file system is an error naming the store, 
         CHECK(!fs::exists(dir.file("ro/new.sqlite")));
     }
     {
-        INFO("full: a 1 MiB tmpfs; the store, the message and a copy are taken before the namespace ends");
+        // 4 MiB: about half of the 8 MB this campaign stores, so that several commits (one per 16 runs
+        // or 20 ms, about 0.7 MB) land before the file system fills.
+        INFO("full: a 4 MiB tmpfs; the store, the message and a copy are taken before the namespace ends");
         fs::create_directories(dir.path() / "full");
         fs::create_directories(dir.path() / "copy");
         const std::string full = dir.file("full"), store = dir.file("full/s.sqlite");
-        const std::string script = "mount -t tmpfs -o size=1m none " + sh_quote(full) + " && " + sh_quote(PRIDE_EXE) +
+        const std::string script = "mount -t tmpfs -o size=4m none " + sh_quote(full) + " && " + sh_quote(PRIDE_EXE) +
                                    " bench " + sh_quote(config) + " --jobs 2 --out " + sh_quote(store) + " >" +
                                    sh_quote(dir.file("full-out")) + " 2>" + sh_quote(dir.file("full-err")) +
                                    "; echo $? >" + sh_quote(dir.file("full-rc")) + "; cp " + sh_quote(full) + "/* " +
