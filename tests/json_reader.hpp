@@ -13,33 +13,46 @@
 
 namespace pride::test {
 
+struct JsonMember;
+
 struct JsonValue {
     enum class Kind { null, boolean, number, string, array, object } kind = Kind::null;
     bool boolean = false;
     double number = 0.0;
     std::string text;  // a string's value, or a number's literal text
     std::vector<JsonValue> items;
-    std::vector<std::pair<std::string, JsonValue>> members;
+    // Not std::pair<std::string, JsonValue>: a pair of an incomplete type is undefined, and clang
+    // with libstdc++ refuses it (the sanitizer build).
+    std::vector<JsonMember> members;
 
-    bool has(const std::string& key) const {
-        return std::any_of(members.begin(), members.end(), [&](const auto& m) { return m.first == key; });
-    }
+    bool has(const std::string& key) const;
     /// The first member named `key`; throws if there is none.
-    const JsonValue& at(const std::string& key) const {
-        for (const auto& [k, v] : members)
-            if (k == key) return v;
-        throw std::runtime_error("JSON: no member '" + key + "'");
-    }
+    const JsonValue& at(const std::string& key) const;
     /// Member names in document order, duplicates included.
-    std::vector<std::string> keys() const {
-        std::vector<std::string> out;
-        for (const auto& m : members) out.push_back(m.first);
-        return out;
-    }
+    std::vector<std::string> keys() const;
     bool is_number() const { return kind == Kind::number; }
     /// A number written without fraction or exponent.
     bool is_integer() const { return kind == Kind::number && text.find_first_of(".eE") == std::string::npos; }
 };
+
+struct JsonMember {
+    std::string first;
+    JsonValue second;
+};
+
+inline bool JsonValue::has(const std::string& key) const {
+    return std::any_of(members.begin(), members.end(), [&](const JsonMember& m) { return m.first == key; });
+}
+inline const JsonValue& JsonValue::at(const std::string& key) const {
+    for (const auto& [k, v] : members)
+        if (k == key) return v;
+    throw std::runtime_error("JSON: no member '" + key + "'");
+}
+inline std::vector<std::string> JsonValue::keys() const {
+    std::vector<std::string> out;
+    for (const auto& m : members) out.push_back(m.first);
+    return out;
+}
 
 class JsonParser {
   public:
@@ -178,7 +191,7 @@ class JsonParser {
                 skip();
                 std::string key = string_value();
                 expect(':');
-                v.members.emplace_back(std::move(key), value());
+                v.members.push_back(JsonMember{std::move(key), value()});
             } while (accept(','));
             expect('}');
         } else if (c == '[') {

@@ -29,8 +29,15 @@ namespace bbob = pride::continuous::bbob;
 // Counts the allocations of this thread while `counting` is set: evaluate() must not allocate.
 // Not under AddressSanitizer, which owns operator new (its own nothrow and array forms would meet
 // this file's delete); the normal build runs the check.
+// (GCC says so with __SANITIZE_ADDRESS__, clang with __has_feature.)
 #if defined(__SANITIZE_ADDRESS__)
 #define PRIDE_COUNT_ALLOCATIONS 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PRIDE_COUNT_ALLOCATIONS 0
+#else
+#define PRIDE_COUNT_ALLOCATIONS 1
+#endif
 #else
 #define PRIDE_COUNT_ALLOCATIONS 1
 #endif
