@@ -135,7 +135,7 @@ class AStar {
             last_ = 0;
             size_ = 0;
         }
-        void push(Node n) {
+        [[gnu::always_inline]] void push(Node n) {
             const std::size_t b = bucket(n.key);
             buckets_[b].push_back(n);
             if (b > 0) used_ |= std::uint64_t{1} << (b - 1);
