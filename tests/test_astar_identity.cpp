@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
@@ -92,4 +93,22 @@ TEST_CASE("A* on random maps with windows and corner cutting is that of 8834815"
     }
     CHECK(astar.expansions() == 27175);
     CHECK(d.h == 0x19c33dba23825683ull);
+}
+
+TEST_CASE("A*'s key rounding equals std::llround where the keys need it", "[grid][astar]") {
+    // round_half_up replaced std::llround in the keys; it must agree on 0 and [0.5, 2^52): at the
+    // half-integers, one ulp either side of them, at binade edges, and on random values.
+    std::vector<double> xs{0.0, 0.5, 1.0, 1.5, 2.5, 0x1p51, 0x1p51 + 0.5, 0x1p52 - 0.5, 0x1p52 - 1.0};
+    for (double k = 0.0; k < 64.0; k += 1.0) {
+        const double half = k + 0.5, edge = std::ldexp(1.0, static_cast<int>(k) % 52);
+        for (const double x : {half, std::nextafter(half, 0.0), std::nextafter(half, 1e300), edge,
+                               std::nextafter(edge, 0.0), edge - 0.5, std::nextafter(edge - 0.5, 0.0)})
+            if (x == 0.0 || (x >= 0.5 && x < 0x1p52)) xs.push_back(x);
+    }
+    pride::Rng rng(2);
+    for (int i = 0; i < 100000; ++i) xs.push_back(0.5 + std::ldexp(rng.uniform(), static_cast<int>(rng.below(52))));
+    for (const double x : xs) {
+        INFO(x);
+        CHECK(round_half_up(x) == static_cast<std::uint64_t>(std::llround(x)));
+    }
 }

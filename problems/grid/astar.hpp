@@ -26,7 +26,8 @@ namespace pride::grid {
 /// 0 or at least 1), without the libm call: there x + 0.5 rounds, if at all, to no other integer
 /// part, and truncation is floor. (Below 0.5 it is wrong only at 0.5 - 2^-54, which rounds to 1.)
 [[gnu::always_inline]] inline std::uint64_t round_half_up(double x) noexcept {
-    return static_cast<std::uint64_t>(x + 0.5);
+    // Through int64_t: one cvttsd2si, where a direct conversion to uint64_t tests for 2^63 first.
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(x + 0.5));
 }
 
 /// A rectangle of cells, both corners included; searches may be confined to one.
