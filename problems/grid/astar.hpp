@@ -17,9 +17,17 @@
 namespace pride::grid {
 
 /// The octile distance: the shortest 8-connected length on an empty grid.
-inline double octile(Cell a, Cell b) noexcept {
+[[gnu::always_inline]] inline double octile(Cell a, Cell b) noexcept {
     const int dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
     return std::max(dx, dy) + (kSqrt2 - 1.0) * std::min(dx, dy);
+}
+
+/// std::llround(x) bit for bit for x == 0 and 0.5 <= x < 2^52 (f * 2^20 and g in A*'s keys are
+/// 0 or at least 1), without the libm call: there x + 0.5 rounds, if at all, to no other integer
+/// part, and truncation is floor. (Below 0.5 it is wrong only at 0.5 - 2^-54, which rounds to 1.)
+[[gnu::always_inline]] inline std::uint64_t round_half_up(double x) noexcept {
+    // Through int64_t: one cvttsd2si, where a direct conversion to uint64_t tests for 2^63 first.
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(x + 0.5));
 }
 
 /// A rectangle of cells, both corners included; searches may be confined to one.
@@ -42,6 +50,13 @@ class AStar {
         const auto start = static_cast<std::uint32_t>(map.index(s));
         const auto goal = static_cast<std::uint32_t>(map.index(g));
         open(start, 0.0, key(octile(s, g), 0.0), start);
+        // Loop invariants in locals (the compiler cannot keep them in registers across the
+        // vector stores otherwise): index offsets of the 8 steps, the goal, the stamps.
+        const auto width = static_cast<std::uint32_t>(map.width());
+        std::ptrdiff_t offsets[8];
+        for (int d = 0; d < 8; ++d) offsets[d] = map.offset(d);
+        Record* const rec = arrays_.records.data();
+        const std::uint32_t seen = arrays_.open, closed = arrays_.closed();
         while (!heap_.empty() || !level_.empty()) {
             std::uint32_t index;
             std::uint64_t current;
@@ -54,34 +69,36 @@ class AStar {
                 index = node.index;
                 current = node.key;
             }
-            if (arrays_.closed[index] == arrays_.generation) continue;  // a stale entry
-            arrays_.closed[index] = arrays_.generation;
+            if (rec[index].stamp == closed) continue;  // a stale entry
+            rec[index].stamp = closed;
             ++expansions_;
-            const double gi = arrays_.g[index];
+            const double gi = rec[index].g;
             if (index == goal) {
                 if (out) trace(map, start, goal, *out);
                 return gi;
             }
-            const Cell c = map.cell(index);
+            // 32-bit division: indices fit in 32 bits (they are stored so), and it is the cheaper one.
+            const std::uint32_t cy = index / width;
+            const Cell c{static_cast<int>(index - cy * width), static_cast<int>(cy)};
             for (unsigned m = map.moves(index, corner_cutting); m != 0; m &= m - 1) {
                 const int d = std::countr_zero(m);
                 const Cell n{c.x + kDx[d], c.y + kDy[d]};
                 if (window && !w.contains(n)) continue;
-                const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + map.offset(d));
-                if (arrays_.closed[ni] == arrays_.generation) continue;
+                const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + offsets[d]);
+                Record& r = rec[ni];
+                if (r.stamp == closed) continue;
                 const double ng = gi + (is_diagonal(d) ? kSqrt2 : 1.0);
-                if (arrays_.seen[ni] == arrays_.generation && arrays_.g[ni] <= ng) continue;
+                if (r.stamp == seen && r.g <= ng) continue;
                 const std::uint64_t k = key(ng + octile(n, g), ng);
+                r.stamp = seen;
+                r.g = ng;
+                r.parent = index;
                 // Same f as the node expanded (or, by rounding, a hair below it: a consistent
                 // heuristic never truly lowers f): expanded next, without heap work.
-                if ((k >> kTieBits) <= (current >> kTieBits)) {
-                    arrays_.seen[ni] = arrays_.generation;
-                    arrays_.g[ni] = ng;
-                    arrays_.parent[ni] = index;
+                if ((k >> kTieBits) <= (current >> kTieBits))
                     level_.push_back({k, ni});
-                } else {
-                    open(ni, ng, k, index);
-                }
+                else
+                    heap_.push({k, ni});
             }
         }
         return -1.0;
@@ -97,8 +114,8 @@ class AStar {
     /// 2^-20, so the order by f is exact; f must stay below 2^25.
     static constexpr int kTieBits = 19;
     static std::uint64_t key(double f, double g) noexcept {
-        const auto fq = static_cast<std::uint64_t>(std::llround(f * 1048576.0));
-        const auto gq = std::min<std::uint64_t>(static_cast<std::uint64_t>(std::llround(g)), (1u << kTieBits) - 1);
+        const auto fq = round_half_up(f * 1048576.0);
+        const auto gq = std::min<std::uint64_t>(round_half_up(g), (1u << kTieBits) - 1);
         return (fq << kTieBits) | ((1u << kTieBits) - 1 - gq);
     }
     struct Node {
@@ -119,7 +136,7 @@ class AStar {
             last_ = 0;
             size_ = 0;
         }
-        void push(Node n) {
+        [[gnu::always_inline]] void push(Node n) {
             const std::size_t b = bucket(n.key);
             buckets_[b].push_back(n);
             if (b > 0) used_ |= std::uint64_t{1} << (b - 1);
@@ -163,22 +180,21 @@ class AStar {
     }
 
     void open(std::uint32_t index, double g, std::uint64_t key, std::uint32_t parent) {
-        arrays_.seen[index] = arrays_.generation;
-        arrays_.g[index] = g;
-        arrays_.parent[index] = parent;
+        arrays_.records[index] = {g, parent, arrays_.open};
         heap_.push({key, index});
     }
 
     void trace(const GridMap& map, std::uint32_t start, std::uint32_t goal, Path& out) const {
         out.clear();
-        for (std::uint32_t i = goal;; i = arrays_.parent[i]) {
+        for (std::uint32_t i = goal;; i = arrays_.records[i].parent) {
             out.push_back(map.cell(i));
             if (i == start) break;
         }
         std::reverse(out.begin(), out.end());
     }
 
-    SearchArrays arrays_;
+    using Record = PackedSearchArrays::Record;
+    PackedSearchArrays arrays_;
     RadixHeap heap_;
     std::vector<Node> level_;  // nodes with the f of the node being expanded, taken before the heap
     std::int64_t expansions_ = 0;

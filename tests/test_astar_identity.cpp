@@ -1,0 +1,114 @@
+// A* must stay bit for bit what it was when it was made faster (issue 15): the same paths (so the
+// same tie-breaking), the same lengths to the last bit and the same number of expansions, on the
+// Moving AI scenarios and on random maps with windows and corner cutting. The reference digests
+// were taken with the A* of main at 8834815, before the speed work.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "framework/random.hpp"
+#include "problems/grid/astar.hpp"
+#include "problems/grid/map.hpp"
+#include "problems/grid/map_io.hpp"
+#include "problems/grid/path.hpp"
+
+using namespace pride::grid;
+
+namespace {
+
+/// FNV-1a over 64-bit words.
+struct Digest {
+    std::uint64_t h = 14695981039346656037ull;
+    void add(std::uint64_t v) noexcept {
+        for (int i = 0; i < 8; ++i) {
+            h ^= (v >> (8 * i)) & 0xff;
+            h *= 1099511628211ull;
+        }
+    }
+};
+
+/// One query into the digest: its length's bits, its path cell by cell, its expansions.
+void record(Digest& d, AStar& astar, const GridMap& map, Cell s, Cell g, const Window* window, bool cc) {
+    Path path;
+    const std::int64_t before = astar.expansions();
+    const double length = astar.search(map, s, g, &path, window, cc);
+    d.add(std::bit_cast<std::uint64_t>(length));
+    d.add(path.size());
+    for (const Cell c : path) d.add(static_cast<std::uint64_t>(c.y) << 32 | static_cast<std::uint32_t>(c.x));
+    d.add(static_cast<std::uint64_t>(astar.expansions() - before));
+}
+
+}  // namespace
+
+TEST_CASE("A* paths, lengths and expansions on the Moving AI scenarios are those of 8834815", "[grid][astar]") {
+    // Every 10th line of every scenario file (lines 0, 10, 20, ...), files in name order, one
+    // AStar for all (the generation stamps carry over between maps of different sizes).
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(PRIDE_SHARED_DATA) / "movingai";
+    std::vector<fs::path> scenarios;
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().extension() == ".scen") scenarios.push_back(entry.path());
+    std::sort(scenarios.begin(), scenarios.end());
+    REQUIRE(scenarios.size() == 16);
+    AStar astar;
+    Digest d;
+    std::size_t queries = 0;
+    for (const auto& scen : scenarios) {
+        const auto entries = read_scenario(scen.string());
+        const GridMap map = read_map((dir / entries.front().map).string());
+        for (std::size_t i = 0; i < entries.size(); i += 10, ++queries)
+            record(d, astar, map, entries[i].start, entries[i].goal, nullptr, false);
+    }
+    CHECK(queries == 810);
+    CHECK(astar.expansions() == 2875910);
+    CHECK(d.h == 0xcf68f81b36f6ed14ull);
+}
+
+TEST_CASE("A* on random maps with windows and corner cutting is that of 8834815", "[grid][astar]") {
+    // 400 maps from 1 x 1 to 40 x 40 cells with 0 to 45 % obstacles; per map 6 queries: strict
+    // and corner cutting, whole map and a random window (which may leave out either end).
+    pride::Rng rng(15);
+    AStar astar;
+    Digest d;
+    for (int m = 0; m < 400; ++m) {
+        const int w = 1 + static_cast<int>(rng.below(40)), h = 1 + static_cast<int>(rng.below(40));
+        const double density = 0.45 * rng.uniform();
+        std::vector<std::uint8_t> blocked(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+        for (auto& b : blocked) b = rng.uniform() < density ? 1 : 0;
+        const GridMap map(w, h, std::move(blocked), "random");
+        for (int q = 0; q < 6; ++q) {
+            const auto cell = [&] {
+                return Cell{static_cast<int>(rng.below(static_cast<std::uint64_t>(w))),
+                            static_cast<int>(rng.below(static_cast<std::uint64_t>(h)))};
+            };
+            const Cell s = cell(), g = cell(), a = cell(), b = cell();
+            const Window window{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+            record(d, astar, map, s, g, q >= 4 ? &window : nullptr, q % 2 == 1);
+        }
+    }
+    CHECK(astar.expansions() == 27175);
+    CHECK(d.h == 0x19c33dba23825683ull);
+}
+
+TEST_CASE("A*'s key rounding equals std::llround where the keys need it", "[grid][astar]") {
+    // round_half_up replaced std::llround in the keys; it must agree on 0 and [0.5, 2^52): at the
+    // half-integers, one ulp either side of them, at binade edges, and on random values.
+    std::vector<double> xs{0.0, 0.5, 1.0, 1.5, 2.5, 0x1p51, 0x1p51 + 0.5, 0x1p52 - 0.5, 0x1p52 - 1.0};
+    for (double k = 0.0; k < 64.0; k += 1.0) {
+        const double half = k + 0.5, edge = std::ldexp(1.0, static_cast<int>(k) % 52);
+        for (const double x : {half, std::nextafter(half, 0.0), std::nextafter(half, 1e300), edge,
+                               std::nextafter(edge, 0.0), edge - 0.5, std::nextafter(edge - 0.5, 0.0)})
+            if (x == 0.0 || (x >= 0.5 && x < 0x1p52)) xs.push_back(x);
+    }
+    pride::Rng rng(2);
+    for (int i = 0; i < 100000; ++i) xs.push_back(0.5 + std::ldexp(rng.uniform(), static_cast<int>(rng.below(52))));
+    for (const double x : xs) {
+        INFO(x);
+        CHECK(round_half_up(x) == static_cast<std::uint64_t>(std::llround(x)));
+    }
+}
