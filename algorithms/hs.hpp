@@ -65,15 +65,17 @@ class HarmonySearch {
         Matrix& x = run.x;
         std::vector<double>& fx = run.fx;
         std::vector<double> y(run.dim);
+        // The worst member changes only when it is replaced: it is looked for again only then.
+        std::size_t w = whale::worst(fx);
         while (!state.done()) {
             for (Eigen::Index k = 0; k < x.cols() && !state.exhausted(); ++k) {
                 whale::improvise(x, lo, hi, rates, rng, std::span<double>(y));  // (1)
                 bounds(std::span<double>(y), lo, hi);                           // (2)
                 const double f = state.evaluate(problem, std::span<const double>(y));
-                const std::size_t w = whale::worst(fx);
                 if (f < fx[w]) {  // (3)
                     std::copy(y.begin(), y.end(), x.col(static_cast<Eigen::Index>(w)).data());
                     fx[w] = f;
+                    w = whale::worst(fx);
                 }
             }
             state.end_iteration(observer, x, fx);

@@ -28,8 +28,13 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "algorithms/parts/run_setup.hpp"
 #include "algorithms/parts/velocity.hpp"
@@ -43,6 +48,51 @@
 #include "framework/termination.hpp"
 
 namespace pride {
+namespace detail {
+
+/// Eqs. (1)-(3) for the coordinates of one particle two at a time (SSE2), returning how many were
+/// moved (the rest, an odd last one, the caller moves). Bit-identical to the scalar loop: each lane
+/// performs the scalar loop's operations in its order, no contraction; r1 and r2 are the high and
+/// low 32 bits of one step each, converted exactly (2^52 + k, less 2^52, times 2^-32); the clamps
+/// are minpd/maxpd with std::min and std::max's operand order (and so their NaN rule); with
+/// `clamp`, the Clamp policy's max(lo, min(x, hi)) follows on each coordinate. Always inlined, so
+/// that the caller's local generator stays in registers.
+template <bool clamp>
+[[gnu::always_inline]] inline std::size_t move_pairs(
+    [[maybe_unused]] Rng& rng, [[maybe_unused]] double a, [[maybe_unused]] double b1, [[maybe_unused]] double b2,
+    [[maybe_unused]] double* x, [[maybe_unused]] double* v, [[maybe_unused]] const double* p,
+    [[maybe_unused]] const double* g, [[maybe_unused]] const double* vmax, [[maybe_unused]] const double* lo,
+    [[maybe_unused]] const double* hi, [[maybe_unused]] std::size_t dim) noexcept {
+#if defined(__SSE2__)
+    const __m128i low32 = _mm_set1_epi64x(0xFFFFFFFF), magic = _mm_set1_epi64x(0x4330000000000000);
+    const __m128d two52 = _mm_set1_pd(0x1.0p52), scale = _mm_set1_pd(0x1.0p-32), sign = _mm_set1_pd(-0.0);
+    const __m128d av = _mm_set1_pd(a), b1v = _mm_set1_pd(b1), b2v = _mm_set1_pd(b2);
+    std::size_t d = 0;
+    for (; d + 2 <= dim; d += 2) {
+        const auto first = static_cast<long long>(rng()), second = static_cast<long long>(rng());
+        const __m128i bits = _mm_set_epi64x(second, first);
+        const __m128d r1 =
+            _mm_mul_pd(_mm_sub_pd(_mm_castsi128_pd(_mm_or_si128(_mm_srli_epi64(bits, 32), magic)), two52), scale);
+        const __m128d r2 =
+            _mm_mul_pd(_mm_sub_pd(_mm_castsi128_pd(_mm_or_si128(_mm_and_si128(bits, low32), magic)), two52), scale);
+        const __m128d xd = _mm_loadu_pd(x + d), limit = _mm_loadu_pd(vmax + d);
+        const __m128d vd = _mm_add_pd(_mm_add_pd(_mm_mul_pd(av, _mm_loadu_pd(v + d)),
+                                                 _mm_mul_pd(_mm_mul_pd(b1v, r1), _mm_sub_pd(_mm_loadu_pd(p + d), xd))),
+                                      _mm_mul_pd(_mm_mul_pd(b2v, r2), _mm_sub_pd(_mm_loadu_pd(g + d), xd)));  // (1)
+        // (2): std::max(-vmax, std::min(vd, vmax))
+        const __m128d vn = _mm_max_pd(_mm_min_pd(limit, vd), _mm_xor_pd(limit, sign));
+        _mm_storeu_pd(v + d, vn);
+        __m128d xn = _mm_add_pd(xd, vn);  // (3)
+        if constexpr (clamp) xn = _mm_max_pd(_mm_min_pd(_mm_loadu_pd(hi + d), xn), _mm_loadu_pd(lo + d));
+        _mm_storeu_pd(x + d, xn);
+    }
+    return d;
+#else
+    return 0;
+#endif
+}
+
+}  // namespace detail
 
 template <class Velocity = InertiaVelocity<LinearInertia>, class VelocityClamp = RangeVelocityClamp,
           class Bounds = Clamp, class Init = UniformInit>
@@ -77,7 +127,7 @@ class Pso {
         const auto n = x.cols();
 
         Matrix v(x.rows(), n), p = x;
-        std::vector<double> fp = fx, vmax(dim), g(dim), r1(dim), r2(dim);
+        std::vector<double> fp = fx, vmax(dim), g(dim);
         for (std::size_t d = 0; d < dim; ++d) vmax[d] = velocity_clamp.limit(lo[d], hi[d]);
         for (Eigen::Index i = 0; i < n; ++i)
             for (std::size_t d = 0; d < dim; ++d) v(static_cast<Eigen::Index>(d), i) = rng.uniform(-vmax[d], vmax[d]);
@@ -92,18 +142,29 @@ class Pso {
             // Every particle moves (1)-(3), then the swarm is evaluated in one batch; g is fixed
             // within an iteration, so this is the same run as evaluating particle by particle.
             const auto moving = std::min<Eigen::Index>(n, static_cast<Eigen::Index>(state.remaining()));
+            // Drawn from a local copy of the generator, put back after the sweep: its state stays
+            // in registers (the same draws in the same order).
+            Rng local = rng;
             for (Eigen::Index i = 0; i < moving; ++i) {
                 double* xi = x.col(i).data();
                 double* vi = v.col(i).data();
                 const double* pi = p.col(i).data();
-                rng.fill_uniform_pairs(r1, r2);
-                for (std::size_t d = 0; d < dim; ++d) {
-                    const double vd = a * vi[d] + b1 * r1[d] * (pi[d] - xi[d]) + b2 * r2[d] * (g[d] - xi[d]);  // (1)
-                    vi[d] = std::max(-vmax[d], std::min(vd, vmax[d]));  // (2), branch-free
-                    xi[d] += vi[d];                                     // (3)
+                constexpr bool clamp = std::is_same_v<Bounds, Clamp>;
+                std::size_t d = detail::move_pairs<clamp>(local, a, b1, b2, xi, vi, pi, g.data(), vmax.data(),
+                                                          lo.data(), hi.data(), dim);
+                for (; d < dim; ++d) {
+                    // r1, r2 from the high and low 32 bits of one step, as Rng::fill_uniform_pairs.
+                    const std::uint64_t bits = local();
+                    const double r1 = static_cast<double>(static_cast<std::int64_t>(bits >> 32)) * 0x1.0p-32;
+                    const double r2 = static_cast<double>(static_cast<std::int64_t>(bits & 0xFFFFFFFFu)) * 0x1.0p-32;
+                    const double vd = a * vi[d] + b1 * r1 * (pi[d] - xi[d]) + b2 * r2 * (g[d] - xi[d]);  // (1)
+                    vi[d] = std::max(-vmax[d], std::min(vd, vmax[d]));                     // (2), branch-free
+                    xi[d] += vi[d];                                                        // (3)
+                    if constexpr (clamp) xi[d] = std::max(lo[d], std::min(xi[d], hi[d]));  // Clamp's own formula
                 }
-                bounds(column(x, i), lo, hi);
+                if constexpr (!clamp) bounds(column(x, i), lo, hi);
             }
+            rng = local;
             state.evaluate_columns(problem, x.leftCols(moving),
                                    std::span<double>(fx).first(static_cast<std::size_t>(moving)));
             for (Eigen::Index i = 0; i < moving; ++i) {

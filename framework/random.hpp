@@ -37,10 +37,13 @@ class Rng {
     static constexpr result_type min() noexcept { return 0; }
     static constexpr result_type max() noexcept { return std::numeric_limits<result_type>::max(); }
 
-    result_type operator()() noexcept { return step(s_[0], s_[1], s_[2], s_[3]); }
+    // The steps are always inlined (so is below): a loop drawing from a local copy of the generator
+    // then keeps its state in registers; GCC at -O2 otherwise leaves some calls, which force it
+    // into memory.
+    [[gnu::always_inline]] result_type operator()() noexcept { return step(s_[0], s_[1], s_[2], s_[3]); }
 
     /// U[0, 1) with 53 random bits.
-    double uniform() noexcept { return to_unit((*this)()); }
+    [[gnu::always_inline]] double uniform() noexcept { return to_unit((*this)()); }
 
     /// Fills `out` with U[0, 1) draws: the same numbers, in the same order, as out.size() calls
     /// of uniform(), but with the state held in registers, so hot loops can draw in bulk first
@@ -58,10 +61,10 @@ class Rng {
     double uniform(double a, double b) noexcept { return a + (b - a) * uniform(); }
 
     /// Uniform integer in [0, n), unbiased (Lemire 2019), n > 0.
-    std::uint64_t below(std::uint64_t n) noexcept {
+    [[gnu::always_inline]] std::uint64_t below(std::uint64_t n) noexcept {
         uint128 m = static_cast<uint128>((*this)()) * n;
         auto low = static_cast<std::uint64_t>(m);
-        if (low < n) {
+        if (low < n) [[unlikely]] {  // rare for small n: the fast path stays small enough to inline
             const std::uint64_t threshold = (0 - n) % n;
             while (low < threshold) {
                 m = static_cast<uint128>((*this)()) * n;
@@ -110,12 +113,12 @@ class Rng {
 
   private:
     // Through int64: the value fits, and a signed conversion is one instruction.
-    static double to_unit(std::uint64_t bits) noexcept {
+    [[gnu::always_inline]] static double to_unit(std::uint64_t bits) noexcept {
         return static_cast<double>(static_cast<std::int64_t>(bits >> 11)) * 0x1.0p-53;
     }
 
     /// One xoshiro256++ step on the state words given.
-    static std::uint64_t step(std::uint64_t& s0, std::uint64_t& s1, std::uint64_t& s2, std::uint64_t& s3) noexcept {
+    [[gnu::always_inline]] static std::uint64_t step(std::uint64_t& s0, std::uint64_t& s1, std::uint64_t& s2, std::uint64_t& s3) noexcept {
         const std::uint64_t result = std::rotl(s0 + s3, 23) + s0;
         const std::uint64_t t = s1 << 17;
         s2 ^= s0;

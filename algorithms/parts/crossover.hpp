@@ -53,7 +53,10 @@ class SbxCrossover::Prepared {
     /// The crossover itself, without the test of `probability` (for policies that decide it
     /// otherwise, as IAGA's adaptive pc: adaptive_rates.hpp).
     void cross(std::span<double> a, std::span<double> b, std::span<const double> lo, std::span<const double> hi,
-               Rng& rng) const {
+               Rng& run_rng) const {
+        // Drawn from a local copy, put back at the end: its state stays in registers (the same draws
+        // in the same order), where the run's would be loaded and stored at every step.
+        Rng rng = run_rng;
         // Coordinates go in blocks of 64: one 64-bit draw gives the block's "cross this
         // coordinate?" coins, a second its "swap the children?" coins; the roots of a block are
         // then taken in one pass (see FixedPower::apply).
@@ -91,6 +94,7 @@ class SbxCrossover::Prepared {
                 b[i] = swapped ? c1 : c2;
             }
         }
+        run_rng = rng;
     }
 
   private:

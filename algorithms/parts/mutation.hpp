@@ -52,9 +52,12 @@ class PolynomialMutation {
         }
 
       private:
-        void mutate(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng,
+        void mutate(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& run_rng,
                     std::uint64_t threshold) const {
             if (threshold == 0) return;
+            // Drawn from a local copy, put back at the end: its state stays in registers (the same
+            // draws in the same order), where the run's would be loaded and stored at every step.
+            Rng rng = run_rng;
             std::uint64_t bits = 0;
             for (std::size_t i = 0; i < x.size(); ++i) {
                 bits = i % 2 == 0 ? rng() : bits >> 32;
@@ -73,6 +76,7 @@ class PolynomialMutation {
                 }
                 x[i] = std::clamp(y + dq * width, lo[i], hi[i]);
             }
+            run_rng = rng;
         }
 
         std::uint64_t threshold_;  // pm 2^32; 2^32 when pm = 1
@@ -115,8 +119,10 @@ class SimplePolynomialMutation {
         Prepared(double eta, double pm)
             : threshold_(static_cast<std::uint64_t>(std::ldexp(pm, 32))), root_(1.0 / (eta + 1.0)) {}
 
-        void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi, Rng& rng) const {
+        void operator()(std::span<double> x, std::span<const double> lo, std::span<const double> hi,
+                        Rng& run_rng) const {
             if (threshold_ == 0) return;
+            Rng rng = run_rng;  // a local copy, as PolynomialMutation's
             std::uint64_t bits = 0;
             for (std::size_t i = 0; i < x.size(); ++i) {
                 bits = i % 2 == 0 ? rng() : bits >> 32;
@@ -128,6 +134,7 @@ class SimplePolynomialMutation {
                                               : y + (1.0 - root_(2.0 * (1.0 - u))) * (hi[i] - y);
                 x[i] = std::clamp(moved, lo[i], hi[i]);
             }
+            run_rng = rng;
         }
 
       private:

@@ -8,9 +8,11 @@
 #include <cstdint>
 #include <numbers>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "framework/problem.hpp"
+#include "framework/random.hpp"
 
 namespace pride {
 /// The move eqs. 1-7 make of a whale (the Mode policies of woa.hpp choose it).
@@ -70,14 +72,11 @@ struct HarmonyRates {
     double bw = 0.01;
 };
 
-/// One improvisation (Geem et al. 2001), continuous form: per variable d, with probability HMCR
-/// the value of a random memory member (one member drawn per variable), then with probability PAR
-/// moved by U(-1, 1) BW (high_d - low_d); otherwise uniform in [low_d, high_d]. Draw order per
-/// variable: consider; member (considered) or value (not); pitch; adjustment (pitched).
-/// The result may leave the box by the pitch adjustment: the caller applies its Bounds policy.
+namespace detail {
 template <class Draws>
-void improvise(const Matrix& memory, std::span<const double> lo, std::span<const double> hi, const HarmonyRates& rates,
-               Draws& u, std::span<double> out) {
+[[gnu::always_inline]] inline void improvise_with(const Matrix& memory, std::span<const double> lo,
+                                                  std::span<const double> hi, const HarmonyRates& rates, Draws& u,
+                                                  std::span<double> out) {
     const auto n = static_cast<std::uint64_t>(memory.cols());
     for (std::size_t d = 0; d < out.size(); ++d) {
         if (u.uniform() < rates.hmcr) {
@@ -88,6 +87,28 @@ void improvise(const Matrix& memory, std::span<const double> lo, std::span<const
         } else {
             out[d] = lo[d] + u.uniform() * (hi[d] - lo[d]);
         }
+    }
+}
+
+}  // namespace detail
+
+/// One improvisation (Geem et al. 2001), continuous form: per variable d, with probability HMCR
+/// the value of a random memory member (one member drawn per variable), then with probability PAR
+/// moved by U(-1, 1) BW (high_d - low_d); otherwise uniform in [low_d, high_d]. Draw order per
+/// variable: consider; member (considered) or value (not); pitch; adjustment (pitched).
+/// The result may leave the box by the pitch adjustment: the caller applies its Bounds policy.
+/// For the run's Rng the loop draws from a local copy, put back afterwards: a copy whose address
+/// does not escape keeps the generator state in registers (the same draws in the same order),
+/// where the member's state would be loaded and stored at every draw.
+template <class Draws>
+void improvise(const Matrix& memory, std::span<const double> lo, std::span<const double> hi, const HarmonyRates& rates,
+               Draws& u, std::span<double> out) {
+    if constexpr (std::is_same_v<Draws, Rng>) {
+        Rng local = u;
+        detail::improvise_with(memory, lo, hi, rates, local, out);
+        u = local;
+    } else {
+        detail::improvise_with(memory, lo, hi, rates, u, out);
     }
 }
 

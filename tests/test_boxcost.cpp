@@ -1,0 +1,139 @@
+// Issue 15 (framework cost per evaluation): the faster forms of PSO's move, harmony search's
+// improvisation and FixedPower's powers of two give the same bits as the plain forms they replace.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <tuple>
+#include <vector>
+
+#include "algorithms/parts/power.hpp"
+#include "algorithms/parts/whale_moves.hpp"
+#include "algorithms/pso.hpp"
+#include "framework/bounds.hpp"
+#include "framework/random.hpp"
+
+namespace {
+
+bool same_bits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (!same_bits(a[i], b[i])) return false;
+    return true;
+}
+
+/// FixedPower's integer loop as it was before the squares form (repeated squaring).
+double squaring_loop(double x, int n, bool negative) {
+    double result = 1.0, base = x;
+    for (; n > 0; n >>= 1) {
+        if (n & 1) result *= base;
+        base *= base;
+    }
+    return negative ? 1.0 / result : result;
+}
+
+/// Eqs. (1)-(3) of pso.hpp on one coordinate, as the scalar loop computes them, then Clamp.
+void move_scalar(std::uint64_t bits, double a, double b1, double b2, double& x, double& v, double p, double g,
+                 double vmax, double lo, double hi) {
+    const double r1 = static_cast<double>(static_cast<std::int64_t>(bits >> 32)) * 0x1.0p-32;
+    const double r2 = static_cast<double>(static_cast<std::int64_t>(bits & 0xFFFFFFFFu)) * 0x1.0p-32;
+    const double vd = a * v + b1 * r1 * (p - x) + b2 * r2 * (g - x);
+    v = std::max(-vmax, std::min(vd, vmax));
+    x += v;
+    x = std::max(lo, std::min(x, hi));
+}
+
+/// Forwards to an Rng held by reference: improvise takes its generic path (no local copy).
+struct Forward {
+    pride::Rng* rng;
+    double uniform() { return rng->uniform(); }
+    std::uint64_t below(std::uint64_t n) { return rng->below(n); }
+};
+
+}  // namespace
+
+TEST_CASE("FixedPower: powers of two by squarings give the squaring loop's bits", "[operators][boxcost]") {
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> xs{0.0,
+                           -0.0,
+                           1.0,
+                           -1.0,
+                           2.0,
+                           0.5,
+                           1e-300,
+                           -1e-300,
+                           1e300,
+                           4.9e-324,
+                           inf,
+                           -inf,
+                           std::numeric_limits<double>::quiet_NaN()};
+    pride::Rng rng(11);
+    for (int k = 0; k < 2000; ++k) xs.push_back(rng.uniform(-3.0, 3.0));
+    for (const int n : {1, 2, 4, 8, 16, 32, 64}) {
+        for (const bool negative : {false, true}) {
+            const pride::FixedPower power(negative ? -n : n);
+            for (const double x : xs) {
+                INFO("x = " << x << ", exponent " << (negative ? -n : n));
+                CHECK(same_bits(power(x), squaring_loop(x, n, negative)));
+            }
+        }
+    }
+}
+
+TEST_CASE("PSO's two-lane move equals the scalar loop bit for bit", "[pso][boxcost]") {
+    pride::Rng data(5);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const std::size_t dim : {1u, 2u, 3u, 8u, 30u, 31u}) {
+        std::vector<double> x(dim), v(dim), p(dim), g(dim), vmax(dim), lo(dim), hi(dim);
+        for (std::size_t d = 0; d < dim; ++d) {
+            lo[d] = data.uniform(-10.0, 0.0);
+            hi[d] = lo[d] + data.uniform(0.5, 20.0);
+            vmax[d] = 0.2 * (hi[d] - lo[d]);
+            x[d] = data.uniform(lo[d] - 1.0, hi[d] + 1.0);  // some outside the box
+            v[d] = data.uniform(-2.0 * vmax[d], 2.0 * vmax[d]);
+            p[d] = data.uniform(lo[d], hi[d]);
+            g[d] = data.uniform(lo[d], hi[d]);
+        }
+        if (dim > 2) x[1] = nan, p[2] = nan;  // NaN goes where the scalar min and max send it
+        for (const auto& [a, b1, b2] : {std::tuple{0.9, 2.0, 2.0}, std::tuple{0.7298, 0.7298 * 2.05, 0.7298 * 2.05}}) {
+            auto xs = x, vs = v, xv = x, vv = v;
+            pride::Rng scalar(42), vector(42);
+            for (std::size_t d = 0; d < dim; ++d)
+                move_scalar(scalar(), a, b1, b2, xs[d], vs[d], p[d], g[d], vmax[d], lo[d], hi[d]);
+            const std::size_t moved = pride::detail::move_pairs<true>(vector, a, b1, b2, xv.data(), vv.data(), p.data(),
+                                                                      g.data(), vmax.data(), lo.data(), hi.data(), dim);
+            CHECK(moved <= dim);
+            for (std::size_t d = moved; d < dim; ++d)
+                move_scalar(vector(), a, b1, b2, xv[d], vv[d], p[d], g[d], vmax[d], lo[d], hi[d]);
+            INFO("dim " << dim << ", a " << a);
+            CHECK(same_bits(xs, xv));
+            CHECK(same_bits(vs, vv));
+            CHECK(scalar() == vector());  // the same number of steps
+        }
+    }
+}
+
+TEST_CASE("harmony search: the improvisation from a local copy draws as from the run's Rng", "[hs][boxcost]") {
+    pride::Rng data(3);
+    pride::Matrix memory(7, 30);
+    for (Eigen::Index i = 0; i < memory.size(); ++i) memory.data()[i] = data.uniform(-5.0, 5.0);
+    const std::vector<double> lo(7, -5.0), hi(7, 5.0);
+    const pride::whale::HarmonyRates rates{0.9, 0.3, 0.01};
+    pride::Rng direct(9), forwarded(9);
+    Forward f{&forwarded};
+    std::vector<double> a(7), b(7);
+    for (int k = 0; k < 200; ++k) {
+        pride::whale::improvise(memory, lo, hi, rates, direct, std::span<double>(a));
+        pride::whale::improvise(memory, lo, hi, rates, f, std::span<double>(b));
+        REQUIRE(same_bits(a, b));
+    }
+    CHECK(direct() == forwarded());  // the run's generator is left where the draws ended
+}
