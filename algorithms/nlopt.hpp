@@ -42,6 +42,15 @@ inline bool nlopt_needs_gradient(const std::string& name) {
     return name.size() > 3 && name[1] == 'D' && name[2] == '_';
 }
 
+/// NLopt's algorithm of that name, or -1. Not nlopt_algorithm_from_string: it answers an unknown
+/// name with (nlopt_algorithm)-1, a value outside the enumeration (undefined behaviour to load,
+/// which clang's UBSan reports).
+inline int nlopt_algorithm_index(const std::string& name) {
+    for (int a = 0; a < NLOPT_NUM_ALGORITHMS; ++a)
+        if (name == nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(a))) return a;
+    return -1;
+}
+
 /// Every NLopt algorithm of this NLopt build that needs no gradient, by NLopt's name ("LN_SBPLX",
 /// "GN_CRS2_LM", ...); algorithms the build left out ("NOT COMPILED") are not listed.
 inline std::vector<std::string> nlopt_derivative_free_names() {
@@ -71,8 +80,9 @@ class Nlopt {
     std::string name() const { return "nlopt:" + algorithm_; }
 
     void validate() const {
-        const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm_.c_str());
-        require(static_cast<int>(a) >= 0, "algo", "unknown NLopt algorithm '" + algorithm_ + "'");
+        const int index = nlopt_algorithm_index(algorithm_);
+        require(index >= 0, "algo", "unknown NLopt algorithm '" + algorithm_ + "'");
+        const auto a = static_cast<nlopt_algorithm>(index);
         require(std::string(nlopt_algorithm_name(a)).find("NOT COMPILED") == std::string::npos, name(),
                 "is not compiled into this NLopt build");
         require(!nlopt_needs_gradient(algorithm_), name(),
