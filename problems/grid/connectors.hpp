@@ -38,21 +38,32 @@ class PenaltyConnector {
 /// The straight line when it is a legal join; otherwise the shortest legal detour between the two
 /// ends, found by A* inside a window around the join that doubles its margin until a detour is
 /// found (the whole map at last). Both ends must be reachable from each other, which the
-/// encodings guarantee by snapping waypoints to cells connected to the start. A detour depends
-/// only on its two ends, so each is searched once per run and then remembered: a swarm that
-/// converges asks for the same joins again and again.
+/// encodings guarantee by snapping waypoints to cells connected to the start. A join (line or
+/// detour) depends only on its two ends, so each is walked or searched once per run and then
+/// remembered: a swarm that converges asks for the same joins again and again.
 class RepairConnector {
   public:
     static constexpr const char* name = "repair";
     int initial_margin = 2;
 
-    /// The join's cells as map indices (valid until the next call). A remembered detour is looked
-    /// up before the line is walked, which changes nothing: only joins whose line is not free are
-    /// remembered.
+    /// The join's cells as map indices (valid until the next call): a remembered join, or one
+    /// worked out now and remembered (not when its ends are not connected: then the penalty line,
+    /// with its violations, every time).
     std::span<const std::uint32_t> segment(const GridMap& map, Cell a, Cell b, int& violations, bool corner_cutting) {
         const std::uint64_t key = (static_cast<std::uint64_t>(map.index(a)) << 32) | map.index(b);
         if (const Slice* hit = store_.find(key)) return {store_.cells.data() + hit->first, hit->length};
-        if (free_line(map, a, b, corner_cutting)) return cells_;
+        return first_time(map, a, b, key, violations, corner_cutting);
+    }
+
+  private:
+    /// A join not met before: its line when free, else a search; out of line, so that the lookup
+    /// above stays small enough to inline.
+    [[gnu::noinline]] std::span<const std::uint32_t> first_time(const GridMap& map, Cell a, Cell b, std::uint64_t key,
+                                                                int& violations, bool corner_cutting) {
+        if (free_line(map, a, b, corner_cutting)) {
+            store_.insert(key, cells_);  // remembered too: the next time costs a lookup, not a walk
+            return cells_;
+        }
         cells_.clear();
         for (int margin = initial_margin;; margin *= 2) {
             const Window w{std::max(0, std::min(a.x, b.x) - margin), std::max(0, std::min(a.y, b.y) - margin),
@@ -69,7 +80,6 @@ class RepairConnector {
         return penalty_.segment(map, a, b, violations, corner_cutting);  // unreachable ends: not remembered
     }
 
-  private:
     /// True when the straight line from a to b is a legal join (line_is_free), writing its cells
     /// after a to cells_ as it goes.
     bool free_line(const GridMap& map, Cell a, Cell b, bool corner_cutting) {

@@ -184,8 +184,8 @@ class LineEncoding {
     std::shared_ptr<const std::vector<int>> snap_;  // [line k][coordinate] -> snapped coordinate
     std::vector<double> lower_, upper_;
     Connector connector_{};
-    DecodedPath out_;                 // scratch: the decoded chain, valid until the next decode
-    LoopFreeChain chain_;             // scratch: the chain as it grows
+    DecodedPath out_;      // scratch: the decoded chain, valid until the next decode
+    LoopFreeChain chain_;  // scratch: the chain as it grows
 };
 
 /// `free`: 2K genes, K waypoints (x, y) anywhere on the map. Decoding rounds each, snaps it to the

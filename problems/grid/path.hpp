@@ -132,7 +132,14 @@ class LoopFreeChain {
         }
         std::uint32_t* const position = position_.data();
         const std::uint32_t* const chain = chain_.data();
-        for (std::size_t j = 0; j < size_; ++j) position[chain[j]] = kAbsent;
+        std::size_t j = 0;
+        for (; j + 4 <= size_; j += 4) {
+            position[chain[j]] = kAbsent;
+            position[chain[j + 1]] = kAbsent;
+            position[chain[j + 2]] = kAbsent;
+            position[chain[j + 3]] = kAbsent;
+        }
+        for (; j < size_; ++j) position[chain[j]] = kAbsent;
         chain_[0] = start;
         position_[start] = 0;
         size_ = 1;
@@ -157,7 +164,7 @@ class LoopFreeChain {
             lowest = std::min(lowest, std::min(std::min(p0, p1), std::min(p2, p3)));
         }
         for (; i < n; ++i) lowest = std::min(lowest, position[s[i]]);
-        std::size_t from = 0;  // the first segment cell kept: the one after the cell at `lowest`
+        std::size_t from = 0;     // the first segment cell kept: the one after the cell at `lowest`
         if (lowest != kAbsent) {  // cut back to the segment cell's earlier visit, which stays
             from = static_cast<std::size_t>(std::find(s, s + n, chain[lowest]) - s) + 1;
             std::size_t j = lowest + 1;
@@ -195,7 +202,14 @@ class LoopFreeChain {
         Cell* const o = out.data();
         const Cell* const cell_of = cell_of_.data();
         const std::uint32_t* const chain = chain_.data();
-        for (std::size_t j = 0; j < size_; ++j) o[j] = cell_of[chain[j]];
+        std::size_t j = 0;
+        for (; j + 4 <= size_; j += 4) {
+            o[j] = cell_of[chain[j]];
+            o[j + 1] = cell_of[chain[j + 1]];
+            o[j + 2] = cell_of[chain[j + 2]];
+            o[j + 3] = cell_of[chain[j + 3]];
+        }
+        for (; j < size_; ++j) o[j] = cell_of[chain[j]];
     }
 
   private:
