@@ -19,7 +19,8 @@
 //   7. With --init-table only: file 002's table 2, 30 SITP and 30 random-walk initial paths on
 //      each bundled file002 map (longest, shortest, mean length, share of legal paths).
 // Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp | --pareto | --whales | --init-table | --decode |
-//        --astar] [--rounds N] (--decode: only part 2; --astar: only part 1; --rounds: decode rounds, for callgrind)
+//        --astar] [--rounds N] [--decode-map NAME] (--decode: only part 2; --astar: only part 1; --rounds: decode
+//        rounds, for callgrind; --decode-map: only the decode figures of that map)
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -92,6 +93,7 @@ Bundled bundled(const std::string& maps, const std::string& name) {
 
 /// Decode + evaluate of random `line` genotypes by `encoded` (a copy per call, fresh detour memory).
 int g_decode_rounds = 2000;  // --rounds: fewer for instruction counts under callgrind
+std::string g_decode_map;    // --decode-map: only the decode figures whose map name holds this
 
 template <class E>
 double decode_ns(E encoded) {
@@ -113,6 +115,7 @@ double decode_ns(E encoded) {
 /// weights, the connector chosen at run time) beside the fixed types (CellsObjective,
 /// RepairConnector): the run-time choices must cost nothing measurable.
 void bench_decode(const std::string& label, std::shared_ptr<const GridMap> map, Cell s, Cell g) {
+    if (label.find(g_decode_map) == std::string::npos) return;
     const GridProblem<CellsObjective> fixed(map, s, g);
     const double fixed_ns = decode_ns(Encoded<GridProblem<CellsObjective>, LineEncoding<RepairConnector>>(
         fixed, LineEncoding<RepairConnector>(fixed)));
@@ -298,6 +301,8 @@ int main(int argc, char** argv) {
     app.add_flag("--astar", astar_only, "only the A* part (the --scen files)");
     app.add_option("--rounds", g_decode_rounds, "rounds of 64 genotypes per decode figure (default 2000)")
         ->check(CLI::PositiveNumber);
+    app.add_option("--decode-map", g_decode_map,
+                   "only the decode figures of the maps whose name holds this (file002, random)");
     app.add_flag("--sitp", sitp, "only: the time to make N = 40 SITP paths on the bundled 40x40 map");
     app.add_flag("--pareto", pareto, "only the exact Pareto fronts (20x20, 40x40, random 100x100)");
     app.add_flag("--whales", whales, "only: HS-WOA and WOA, N = 20, 50 iterations, on the bundled 50x50 map");

@@ -22,23 +22,25 @@
 namespace pride::grid {
 
 namespace detail {
-/// Joins start, the waypoints waypoint(0..count-1) and goal with the connector into `out`, cuts
-/// loops, and recounts violations that a cut loop may have held (cutting only removes steps).
+/// Joins start, the waypoints waypoint(0..count-1) and goal with the connector into `out`,
+/// cutting loops as the chain grows (LoopFreeChain: the same cells as cut_loops on the whole raw
+/// chain, without storing it), and recounts violations that a cut loop may have held (cutting only
+/// removes steps). No allocation once the scratch has grown to the map.
 template <class Objective, class Connector, class Waypoint>
 void join_waypoints(const GridProblem<Objective>& p, int count, Waypoint&& waypoint, Connector& connector,
-                    DecodedPath& out, std::vector<std::int32_t>& seen) {
-    out.path.clear();
+                    DecodedPath& out, LoopFreeChain& chain) {
+    const GridMap& map = p.map();
     out.violations = 0;
-    out.path.push_back(p.start());
+    chain.begin(map, static_cast<std::uint32_t>(map.index(p.start())));
     Cell previous = p.start();
     for (int k = 0; k < count; ++k) {
         const Cell w = waypoint(k);
-        connector.join(p.map(), previous, w, out.path, out.violations, p.corner_cutting());
+        chain.append(connector.segment(map, previous, w, out.violations, p.corner_cutting()));
         previous = w;
     }
-    connector.join(p.map(), previous, p.goal(), out.path, out.violations, p.corner_cutting());
-    cut_loops(out.path, p.map(), seen);
-    if (out.violations > 0) out.violations = count_violations(p.map(), out.path, 1, p.corner_cutting());
+    chain.append(connector.segment(map, previous, p.goal(), out.violations, p.corner_cutting()));
+    chain.to_path(out.path);
+    if (out.violations > 0) out.violations = count_violations(map, out.path, 1, p.corner_cutting());
 }
 
 /// Builds what the problem's walks need before any run starts: file 000's rule book is built once
@@ -153,7 +155,7 @@ class LineEncoding {
     template <class Objective>
     const DecodedPath& decode(const GridProblem<Objective>& p, std::span<const double> genotype) {
         detail::join_waypoints(
-            p, count_, [&](int k) { return waypoint(genotype, k); }, connector_, out_, seen_);
+            p, count_, [&](int k) { return waypoint(genotype, k); }, connector_, out_, chain_);
         return out_;
     }
 
@@ -182,8 +184,8 @@ class LineEncoding {
     std::shared_ptr<const std::vector<int>> snap_;  // [line k][coordinate] -> snapped coordinate
     std::vector<double> lower_, upper_;
     Connector connector_{};
-    DecodedPath out_;                 // scratch: the decoded chain, valid until the next decode
-    std::vector<std::int32_t> seen_;  // scratch for cut_loops
+    DecodedPath out_;      // scratch: the decoded chain, valid until the next decode
+    LoopFreeChain chain_;  // scratch: the chain as it grows
 };
 
 /// `free`: 2K genes, K waypoints (x, y) anywhere on the map. Decoding rounds each, snaps it to the
@@ -248,7 +250,7 @@ class FreeEncoding {
     template <class Objective>
     const DecodedPath& decode(const GridProblem<Objective>& p, std::span<const double> genotype) {
         detail::join_waypoints(
-            p, k_, [&](int k) { return waypoint(p, genotype, k); }, connector_, out_, seen_);
+            p, k_, [&](int k) { return waypoint(p, genotype, k); }, connector_, out_, chain_);
         return out_;
     }
 
@@ -272,7 +274,7 @@ class FreeEncoding {
     std::vector<double> lower_, upper_;
     Connector connector_{};
     DecodedPath out_;
-    std::vector<std::int32_t> seen_;
+    LoopFreeChain chain_;
 };
 
 }  // namespace pride::grid

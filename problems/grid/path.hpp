@@ -3,8 +3,10 @@
 // one legal step apart; their five metrics; loop cutting; and the straight 8-connected cell line
 // that joins two distant cells.
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -105,6 +107,119 @@ inline void cut_loops(Path& path, const GridMap& map, std::vector<std::int32_t>&
     }
     path.resize(out);
 }
+
+/// A chain of cells, as map indices, built from segments and cut of its loops as it grows: after
+/// begin(start) and append(s1), append(s2), ..., it holds exactly what cut_loops leaves of the raw
+/// chain start + s1 + s2 + ..., cell for cell. Each segment must hold no cell twice (a straight
+/// line or a shortest path does not). Then the cut of one segment needs no writes for the cells
+/// it drops: cutting the raw chain cell by cell, a segment cell can only meet a cell of the chain
+/// as it was before the segment, each meeting cuts back to a position below the previous one, so
+/// the chain ends cut back to the lowest position any segment cell holds, followed by the segment
+/// cells after that one. The cost is one position lookup per raw cell and one write per kept cell,
+/// with no hashing and no allocation once sized for a map (the decoders keep one per copy).
+class LoopFreeChain {
+  public:
+    /// A new chain holding only `start`: the marks of the previous chain are cleared (as many writes
+    /// as it had cells), the scratch is sized once per map.
+    void begin(const GridMap& map, std::uint32_t start) {
+        if (position_.size() != map.size() || width_ != map.width()) {
+            position_.assign(map.size(), kAbsent);
+            chain_.assign(map.size(), 0);
+            cell_of_.resize(map.size());
+            for (std::size_t i = 0; i < map.size(); ++i) cell_of_[i] = map.cell(i);
+            width_ = map.width();
+            size_ = 0;
+        }
+        std::uint32_t* const position = position_.data();
+        const std::uint32_t* const chain = chain_.data();
+        std::size_t j = 0;
+        for (; j + 4 <= size_; j += 4) {
+            position[chain[j]] = kAbsent;
+            position[chain[j + 1]] = kAbsent;
+            position[chain[j + 2]] = kAbsent;
+            position[chain[j + 3]] = kAbsent;
+        }
+        for (; j < size_; ++j) position[chain[j]] = kAbsent;
+        chain_[0] = start;
+        position_[start] = 0;
+        size_ = 1;
+    }
+
+    /// Appends a segment (cells after the chain's last, none twice) and cuts the loops it closes.
+    void append(std::span<const std::uint32_t> segment) {
+        // Raw pointers and a local size: stores through them could otherwise alias the members
+        // and force reloads in the loops below (they run once per raw cell).
+        const std::uint32_t* const s = segment.data();
+        const std::size_t n = segment.size();
+        std::uint32_t* const position = position_.data();
+        std::uint32_t* const chain = chain_.data();
+        std::size_t size = size_;
+        // The lowest position a segment cell holds (branch-free: in a retrace, where the segment
+        // walks back along the chain, almost every cell lowers it).
+        std::uint32_t lowest = kAbsent;
+        std::size_t i = 0;
+        for (; i + 4 <= n; i += 4) {
+            const std::uint32_t p0 = position[s[i]], p1 = position[s[i + 1]];
+            const std::uint32_t p2 = position[s[i + 2]], p3 = position[s[i + 3]];
+            lowest = std::min(lowest, std::min(std::min(p0, p1), std::min(p2, p3)));
+        }
+        for (; i < n; ++i) lowest = std::min(lowest, position[s[i]]);
+        std::size_t from = 0;     // the first segment cell kept: the one after the cell at `lowest`
+        if (lowest != kAbsent) {  // cut back to the segment cell's earlier visit, which stays
+            from = static_cast<std::size_t>(std::find(s, s + n, chain[lowest]) - s) + 1;
+            std::size_t j = lowest + 1;
+            for (; j + 4 <= size; j += 4) {
+                position[chain[j]] = kAbsent;
+                position[chain[j + 1]] = kAbsent;
+                position[chain[j + 2]] = kAbsent;
+                position[chain[j + 3]] = kAbsent;
+            }
+            for (; j < size; ++j) position[chain[j]] = kAbsent;
+            size = lowest + 1;
+        }
+        // The chain holds no cell twice, so it never outgrows the map (a segment breaking the
+        // precondition would show here first).
+        assert(size + (n - from) <= chain_.size());
+        std::copy(s + from, s + n, chain + size);
+        auto at = static_cast<std::uint32_t>(size);
+        std::size_t k = from;
+        for (; k + 4 <= n; k += 4, at += 4) {
+            position[s[k]] = at;
+            position[s[k + 1]] = at + 1;
+            position[s[k + 2]] = at + 2;
+            position[s[k + 3]] = at + 3;
+        }
+        for (; k < n; ++k) position[s[k]] = at++;
+        size_ = at;
+    }
+
+    std::size_t size() const noexcept { return size_; }
+    std::span<const std::uint32_t> cells() const noexcept { return {chain_.data(), size_}; }
+
+    /// The chain as cells (the map must be the one of the last begin()).
+    void to_path(Path& out) const {
+        out.resize(size_);
+        Cell* const o = out.data();
+        const Cell* const cell_of = cell_of_.data();
+        const std::uint32_t* const chain = chain_.data();
+        std::size_t j = 0;
+        for (; j + 4 <= size_; j += 4) {
+            o[j] = cell_of[chain[j]];
+            o[j + 1] = cell_of[chain[j + 1]];
+            o[j + 2] = cell_of[chain[j + 2]];
+            o[j + 3] = cell_of[chain[j + 3]];
+        }
+        for (; j < size_; ++j) o[j] = cell_of[chain[j]];
+    }
+
+  private:
+    static constexpr std::uint32_t kAbsent = 0xffffffffu;
+    std::vector<std::uint32_t> chain_;     // the chain's cells in chain_[0, size_)
+    std::vector<std::uint32_t> position_;  // per map cell: its position in the chain, or kAbsent
+    std::vector<Cell> cell_of_;            // per map cell: the cell (GridMap::cell divides)
+    std::size_t size_ = 0;
+    int width_ = 0;
+};
 
 /// The cells of the straight 8-connected line from a to b (Bresenham), one step at a time:
 /// `for (LineSteps line(a, b); !line.done();) { Cell next = line.next(); ... }` visits the cells
