@@ -118,7 +118,8 @@ class Rng {
     }
 
     /// One xoshiro256++ step on the state words given.
-    [[gnu::always_inline]] static std::uint64_t step(std::uint64_t& s0, std::uint64_t& s1, std::uint64_t& s2, std::uint64_t& s3) noexcept {
+    [[gnu::always_inline]] static std::uint64_t step(std::uint64_t& s0, std::uint64_t& s1, std::uint64_t& s2,
+                                                     std::uint64_t& s3) noexcept {
         const std::uint64_t result = std::rotl(s0 + s3, 23) + s0;
         const std::uint64_t t = s1 << 17;
         s2 ^= s0;

@@ -11,7 +11,8 @@ void register_nlopt(AlgorithmRegistry& registry) {
         const std::string name = "nlopt:" + nlopt_name;
         auto e = box_algorithm(
             name, "nlopt",
-            std::string("NLopt: ") + nlopt_algorithm_name(static_cast<nlopt_algorithm>(nlopt_algorithm_index(nlopt_name))),
+            std::string("NLopt: ") +
+                nlopt_algorithm_name(static_cast<nlopt_algorithm>(nlopt_algorithm_index(nlopt_name))),
             {population_param(50, 1, "evaluations per recorded iteration (NLopt has no iterations)"),
              flag("restart", true, "restart from a new uniform point when NLopt stops before the budget is spent")},
             [name](const Params& p) {
