@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <deque>
 #include <exception>
+#include <list>
 #include <map>
 #include <mutex>
 #include <set>
@@ -207,9 +208,13 @@ class Ledger {
 };
 
 #ifdef PRIDE_HAVE_MPI
-/// A rank other than 0: `jobs` threads, each slot asking rank 0 for a run and sending back its
-/// record (which asks for the next) until rank 0 answers "no more" (-1). Only this thread calls
-/// MPI.
+/// Slots per thread of a rank other than 0: each slot holds one run asked for, so with two a
+/// thread finds its next run waiting instead of idling for a message round trip.
+constexpr std::int64_t kSlotsPerThread = 2;
+
+/// A rank other than 0: `jobs` threads fed by `jobs * kSlotsPerThread` slots, each slot asking
+/// rank 0 for a run and sending back its record (which asks for the next) until rank 0 answers
+/// "no more" (-1). Only this thread calls MPI.
 void mpi_worker(const Campaign& c, std::int64_t jobs) {
     const std::vector<Task> tasks = all_tasks(c);
     std::mutex mutex;
@@ -243,8 +248,10 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
     };
     std::vector<std::thread> pool;
     for (std::int64_t j = 0; j < jobs; ++j) pool.emplace_back(worker);
-    std::int64_t open = jobs;  // slots that have not been told "no more"
-    for (std::int64_t j = 0; j < jobs; ++j) MPI_Send(nullptr, 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+    std::list<std::string> sending;              // records being sent, in order
+    std::vector<MPI_Request> requests;           // their sends
+    std::int64_t open = jobs * kSlotsPerThread;  // slots that have not been told "no more"
+    for (std::int64_t j = 0; j < open; ++j) MPI_Send(nullptr, 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
     while (open > 0) {
         for (int flag = 1; flag;) {
             MPI_Iprobe(0, kTagTask, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
@@ -267,9 +274,24 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             to_main.wait_for(lock, std::chrono::milliseconds(1), [&] { return !results.empty(); });
             ready.swap(results);
         }
-        for (const auto& payload : ready)
-            MPI_Send(payload.data(), static_cast<int>(payload.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+        // Non-blocking: a record over Open MPI's eager limit (a few KB) waits for rank 0 to take it,
+        // and a blocking send spent that wait polling, on a core the runs need. The payloads stay
+        // alive (a list: no moves) until their sends complete.
+        for (auto& payload : ready) {
+            sending.push_back(std::move(payload));
+            requests.emplace_back();
+            MPI_Isend(sending.back().data(), static_cast<int>(sending.back().size()), MPI_CHAR, 0, kTagResult,
+                      MPI_COMM_WORLD, &requests.back());
+        }
+        while (!requests.empty()) {  // the finished sends, oldest first
+            int complete = 0;
+            MPI_Test(&requests.front(), &complete, MPI_STATUS_IGNORE);
+            if (!complete) break;
+            requests.erase(requests.begin());
+            sending.pop_front();
+        }
     }
+    if (!requests.empty()) MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
     {
         const std::lock_guard lock(mutex);
         done = true;
@@ -283,7 +305,8 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
 class Remotes {
   public:
     Remotes(int size, std::int64_t jobs)
-        : active_(static_cast<std::int64_t>(size - 1) * jobs), idle_(static_cast<std::size_t>(size), 0) {}
+        : active_(static_cast<std::int64_t>(size - 1) * jobs * kSlotsPerThread),
+          idle_(static_cast<std::size_t>(size), 0) {}
 
     /// Reads the messages waiting; the records go to `finished`, the slots asking for work to the
     /// idle counts. A failure on a rank is thrown.
