@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers shared by the grid tests: hand-drawn maps, bounded random integers, and the
 // bundled and random (map, start, goal) instances the property tests run over.
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -21,6 +22,16 @@ inline grid::GridMap map_of(const std::vector<std::string>& rows) {
         for (const char ch : r) blocked.push_back(ch == '@' ? 1 : 0);
     return grid::GridMap(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), std::move(blocked),
                          "hand");
+}
+
+/// The Moving AI scenario files of the shared data (PRIDE_SHARED_DATA/movingai/*.scen), in name order.
+inline std::vector<std::filesystem::path> movingai_scenarios() {
+    namespace fs = std::filesystem;
+    std::vector<fs::path> scenarios;
+    for (const auto& entry : fs::directory_iterator(fs::path(PRIDE_SHARED_DATA) / "movingai"))
+        if (entry.path().extension() == ".scen") scenarios.push_back(entry.path());
+    std::sort(scenarios.begin(), scenarios.end());
+    return scenarios;
 }
 
 /// A uniform integer in [0, n), n > 0.

@@ -16,6 +16,7 @@
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/path.hpp"
+#include "tests/grid_support.hpp"
 
 using namespace pride::grid;
 
@@ -50,10 +51,7 @@ TEST_CASE("A* paths, lengths and expansions on the Moving AI scenarios are those
     // AStar for all (the generation stamps carry over between maps of different sizes).
     namespace fs = std::filesystem;
     const fs::path dir = fs::path(PRIDE_SHARED_DATA) / "movingai";
-    std::vector<fs::path> scenarios;
-    for (const auto& entry : fs::directory_iterator(dir))
-        if (entry.path().extension() == ".scen") scenarios.push_back(entry.path());
-    std::sort(scenarios.begin(), scenarios.end());
+    const std::vector<fs::path> scenarios = pride::test::movingai_scenarios();
     REQUIRE(scenarios.size() == 16);
     AStar astar;
     Digest d;

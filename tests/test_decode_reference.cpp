@@ -29,24 +29,6 @@ using pride::test::below;
 namespace {
 namespace reference {
 
-/// cut_loops as it was when the decoders used it.
-void reference_cut_loops(Path& path, const GridMap& map, std::vector<std::int32_t>& seen) {
-    if (seen.size() != map.size()) seen.assign(map.size(), -1);
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < path.size(); ++i) {
-        const Cell c = path[i];
-        const std::size_t key = map.index(c);
-        const std::int32_t at = seen[key];
-        if (at >= 0 && static_cast<std::size_t>(at) < out && path[static_cast<std::size_t>(at)] == c) {
-            out = static_cast<std::size_t>(at) + 1;
-        } else {
-            seen[key] = static_cast<std::int32_t>(out);
-            path[out++] = c;
-        }
-    }
-    path.resize(out);
-}
-
 struct PenaltyConnector {
     void join(const GridMap& map, Cell a, Cell b, Path& path, int& violations, bool corner_cutting) {
         const std::size_t first = path.size();
@@ -110,7 +92,8 @@ DecodedPath decode(const GridProblem<Objective>& p, int count, Waypoint&& waypoi
         previous = w;
     }
     connector.join(p.map(), previous, p.goal(), out.path, out.violations, p.corner_cutting());
-    reference_cut_loops(out.path, p.map(), seen);
+    // cut_loops itself is unchanged (the chain operators still use it), so the live one serves.
+    cut_loops(out.path, p.map(), seen);
     if (out.violations > 0) out.violations = count_violations(p.map(), out.path, 1, p.corner_cutting());
     return out;
 }
@@ -297,7 +280,7 @@ TEST_CASE("LoopFreeChain gives cut_loops' result on random chains of random segm
             }
             chain.append(cells);
         }
-        reference::reference_cut_loops(raw, map, seen);
+        cut_loops(raw, map, seen);
         Path got;
         chain.to_path(got);
         REQUIRE(got == raw);

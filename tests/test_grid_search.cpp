@@ -207,10 +207,7 @@ TEST_CASE("A* returns the optimal lengths recorded in the Moving AI scenario fil
     // of the small maps and every 10th line of the larger ones.
     namespace fs = std::filesystem;
     const fs::path dir = fs::path(PRIDE_SHARED_DATA) / "movingai";
-    std::vector<fs::path> scenarios;
-    for (const auto& entry : fs::directory_iterator(dir))
-        if (entry.path().extension() == ".scen") scenarios.push_back(entry.path());
-    std::sort(scenarios.begin(), scenarios.end());
+    const std::vector<fs::path> scenarios = pride::test::movingai_scenarios();
     REQUIRE(scenarios.size() >= 16);
 
     AStar astar;
