@@ -25,7 +25,7 @@ class PenaltyConnector {
         cells_.clear();
         for (LineSteps line(a, b); !line.done();) {
             const Cell c = line.current(), n = line.next();
-            violations += !((map.moves(map.index(c), corner_cutting) >> direction(c, n)) & 1u);
+            violations += !map.legal_move(c, n, corner_cutting);
             cells_.push_back(static_cast<std::uint32_t>(map.index(n)));
         }
         return cells_;
@@ -87,7 +87,7 @@ class RepairConnector {
         if (!map.free(a)) return false;
         for (LineSteps line(a, b); !line.done();) {
             const Cell c = line.current(), n = line.next();
-            if (!((map.moves(map.index(c), corner_cutting) >> direction(c, n)) & 1u)) return false;
+            if (!map.legal_move(c, n, corner_cutting)) return false;
             cells_.push_back(static_cast<std::uint32_t>(map.index(n)));
         }
         return true;

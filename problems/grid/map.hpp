@@ -93,6 +93,11 @@ class GridMap {
     std::uint8_t moves(std::size_t index, bool corner_cutting = false) const noexcept {
         return corner_cutting ? moves_cutting_[index] : moves_[index];
     }
+    /// Whether the one-cell step from a to its neighbour b is legal, read from a's step mask
+    /// (legal_step's answer in one byte test).
+    bool legal_move(Cell a, Cell b, bool corner_cutting = false) const noexcept {
+        return (moves(index(a), corner_cutting) >> direction(a, b)) & 1u;
+    }
     /// The index offset of a step in direction d.
     std::ptrdiff_t offset(int d) const noexcept { return static_cast<std::ptrdiff_t>(kDy[d]) * width_ + kDx[d]; }
 

@@ -264,7 +264,7 @@ inline bool line_is_free(const GridMap& map, Cell a, Cell b, bool corner_cutting
     if (!map.free(a)) return false;
     for (LineSteps line(a, b); !line.done();) {
         const Cell c = line.current();
-        if (!((map.moves(map.index(c), corner_cutting) >> direction(c, line.next())) & 1u)) return false;
+        if (!map.legal_move(c, line.next(), corner_cutting)) return false;
     }
     return true;
 }
