@@ -155,8 +155,7 @@ class Pso {
                 for (; d < dim; ++d) {
                     // r1, r2 from the high and low 32 bits of one step, as Rng::fill_uniform_pairs.
                     const std::uint64_t bits = local();
-                    const double r1 = static_cast<double>(static_cast<std::int64_t>(bits >> 32)) * 0x1.0p-32;
-                    const double r2 = static_cast<double>(static_cast<std::int64_t>(bits & 0xFFFFFFFFu)) * 0x1.0p-32;
+                    const double r1 = Rng::high_unit(bits), r2 = Rng::low_unit(bits);
                     const double vd = a * vi[d] + b1 * r1 * (pi[d] - xi[d]) + b2 * r2 * (g[d] - xi[d]);  // (1)
                     vi[d] = std::max(-vmax[d], std::min(vd, vmax[d]));                     // (2), branch-free
                     xi[d] += vi[d];                                                        // (3)

@@ -95,6 +95,15 @@ class Rng {
         return u * factor;
     }
 
+    /// U[0, 1) with 32 bits: from the high and from the low half of one step's bits (the pair
+    /// fill_uniform_pairs makes; for loops that draw the step themselves, as PSO's).
+    [[gnu::always_inline]] static double high_unit(std::uint64_t bits) noexcept {
+        return static_cast<double>(static_cast<std::int64_t>(bits >> 32)) * 0x1.0p-32;
+    }
+    [[gnu::always_inline]] static double low_unit(std::uint64_t bits) noexcept {
+        return static_cast<double>(static_cast<std::int64_t>(bits & 0xFFFFFFFFu)) * 0x1.0p-32;
+    }
+
     /// Fills `a` and `b` (same size) with U[0, 1) draws of 32 random bits each, a[i] from the high
     /// and b[i] from the low half of one generator step: half the cost of two uniform() calls,
     /// for random weights where a resolution of 2^-32 is plenty (PSO's r1, r2).
@@ -102,8 +111,8 @@ class Rng {
         std::uint64_t s0 = s_[0], s1 = s_[1], s2 = s_[2], s3 = s_[3];
         for (std::size_t i = 0; i < a.size(); ++i) {
             const std::uint64_t bits = step(s0, s1, s2, s3);
-            a[i] = static_cast<double>(static_cast<std::int64_t>(bits >> 32)) * 0x1.0p-32;
-            b[i] = static_cast<double>(static_cast<std::int64_t>(bits & 0xFFFFFFFFu)) * 0x1.0p-32;
+            a[i] = high_unit(bits);
+            b[i] = low_unit(bits);
         }
         s_[0] = s0;
         s_[1] = s1;
