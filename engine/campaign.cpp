@@ -208,25 +208,33 @@ class Ledger {
 };
 
 #ifdef PRIDE_HAVE_MPI
-/// Slots per thread of a rank other than 0: each slot holds one run asked for, so with two a
-/// thread finds its next run waiting instead of idling for a message round trip.
+/// Runs asked for per thread of a rank other than 0, at first: with two a thread finds its next
+/// run waiting instead of idling for a message round trip.
 constexpr std::int64_t kSlotsPerThread = 2;
+/// At most this many per thread: a rank whose threads still run dry (runs shorter than a round
+/// trip, which is up to two 1 ms polls) asks for one more run each time, up to here.
+constexpr std::int64_t kMaxSlotsPerThread = 32;
 
-/// A rank other than 0: `jobs` threads fed by `jobs * kSlotsPerThread` slots, each slot asking
-/// rank 0 for a run and sending back its record (which asks for the next) until rank 0 answers
-/// "no more" (-1). Only this thread calls MPI.
+/// A rank other than 0: `jobs` threads fed by slots, each slot asking rank 0 for a run and sending
+/// back its record (which asks for the next) until rank 0 answers "no more" (-1). A thread that
+/// finds no run waiting, after its first, adds a slot. Only this thread calls MPI.
 void mpi_worker(const Campaign& c, std::int64_t jobs) {
     const std::vector<Task> tasks = all_tasks(c);
     std::mutex mutex;
     std::condition_variable to_workers, to_main;
     std::deque<long long> work;
     std::deque<std::string> results;  // "!..." a failure; else a record
+    std::int64_t ran_dry = 0;         // times a thread, after its first run, found no run waiting
     bool done = false;
     auto worker = [&] {
-        for (;;) {
+        for (bool first = true;; first = false) {
             long long index = -1;
             {
                 std::unique_lock lock(mutex);
+                if (work.empty() && !done && !first) {
+                    ++ran_dry;
+                    to_main.notify_one();
+                }
                 to_workers.wait(lock, [&] { return done || !work.empty(); });
                 if (work.empty()) return;
                 index = work.front();
@@ -248,10 +256,16 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
     };
     std::vector<std::thread> pool;
     for (std::int64_t j = 0; j < jobs; ++j) pool.emplace_back(worker);
-    std::list<std::string> sending;              // records being sent, in order
-    std::vector<MPI_Request> requests;           // their sends
-    std::int64_t open = jobs * kSlotsPerThread;  // slots that have not been told "no more"
-    for (std::int64_t j = 0; j < open; ++j) MPI_Send(nullptr, 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+    std::list<std::string> sending;               // records being sent, in order
+    std::vector<MPI_Request> requests;            // their sends
+    std::int64_t slots = jobs * kSlotsPerThread;  // asked for so far
+    std::int64_t open = 0;                        // slots that have not been told "no more"
+    bool finishing = false;                       // rank 0 has said "no more" to a slot
+    const auto ask = [&] {
+        MPI_Send(nullptr, 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+        ++open;
+    };
+    for (std::int64_t j = 0; j < slots; ++j) ask();
     while (open > 0) {
         for (int flag = 1; flag;) {
             MPI_Iprobe(0, kTagTask, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
@@ -260,6 +274,10 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             if (index < 0) {
                 --open;
+                if (!finishing) {  // no slot is added after this, as rank 0 learns from it
+                    MPI_Send("#", 1, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+                    finishing = true;
+                }
                 continue;
             }
             {
@@ -269,11 +287,14 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             to_workers.notify_one();
         }
         std::deque<std::string> ready;
+        std::int64_t dry = 0;
         {
             std::unique_lock lock(mutex);
-            to_main.wait_for(lock, std::chrono::milliseconds(1), [&] { return !results.empty(); });
+            to_main.wait_for(lock, std::chrono::milliseconds(1), [&] { return !results.empty() || ran_dry > 0; });
             ready.swap(results);
+            std::swap(dry, ran_dry);
         }
+        for (; dry > 0 && !finishing && slots < jobs * kMaxSlotsPerThread; --dry, ++slots) ask();
         // Non-blocking: a record over Open MPI's eager limit (a few KB) waits for rank 0 to take it,
         // and a blocking send spent that wait polling, on a core the runs need. The payloads stay
         // alive (a list: no moves) until their sends complete.
@@ -300,31 +321,49 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
     for (auto& t : pool) t.join();
 }
 
-/// Rank 0's view of the other ranks: each has `jobs` slots; a slot asks for a run, gets one, and
-/// sends its record back, which asks for the next.
+/// Rank 0's view of the other ranks: each has slots; a slot asks for a run, gets one, and sends its
+/// record back, which asks for the next. An empty message is a slot asking, so a rank may add
+/// slots; rank 0 counts them as they arrive.
 class Remotes {
   public:
-    Remotes(int size, std::int64_t jobs)
-        : active_(static_cast<std::int64_t>(size - 1) * jobs * kSlotsPerThread),
-          idle_(static_cast<std::size_t>(size), 0) {}
+    explicit Remotes(int size)
+        : idle_(static_cast<std::size_t>(size), 0),
+          open_(static_cast<std::size_t>(size), 0),
+          closed_(static_cast<std::size_t>(size), false) {}
 
     /// Reads the messages waiting; the records go to `finished`, the slots asking for work to the
-    /// idle counts. A failure on a rank is thrown.
+    /// idle counts. A failure on a rank is thrown. Receives are non-blocking: a record over the
+    /// eager limit needs its sender to act, and a blocking receive would poll a core meanwhile.
     void poll(std::vector<RunRecord>& finished) {
         for (;;) {
             int flag = 0;
+            MPI_Message message;
             MPI_Status status;
-            MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &status);
-            if (!flag) return;
+            MPI_Improbe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &message, &status);
+            if (!flag) break;
             int length = 0;
             MPI_Get_count(&status, MPI_CHAR, &length);
-            std::string payload(static_cast<std::size_t>(length), '\0');
-            MPI_Recv(payload.data(), length, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD,
-                     MPI_STATUS_IGNORE);
-            ++idle_[static_cast<std::size_t>(status.MPI_SOURCE)];
-            if (payload.empty()) continue;
-            if (payload.front() == '!') throw InputError(payload.substr(1));
-            finished.push_back(deserialise(payload));
+            receiving_.push_back({std::string(static_cast<std::size_t>(length), '\0'), status.MPI_SOURCE});
+            requests_.emplace_back();
+            MPI_Imrecv(receiving_.back().payload.data(), length, MPI_CHAR, &message, &requests_.back());
+        }
+        while (!requests_.empty()) {  // the finished receives, oldest first
+            int complete = 0;
+            MPI_Test(&requests_.front(), &complete, MPI_STATUS_IGNORE);
+            if (!complete) break;
+            Received got = std::move(receiving_.front());
+            requests_.erase(requests_.begin());
+            receiving_.pop_front();
+            const auto r = static_cast<std::size_t>(got.source);
+            if (got.payload == "#") {  // the rank's last slot has asked already (messages keep their order)
+                closed_[r] = true;
+                continue;
+            }
+            if (got.payload.empty()) ++open_[r];  // a new slot; a record frees its slot for the next run
+            ++idle_[r];
+            if (got.payload.empty()) continue;
+            if (got.payload.front() == '!') throw InputError(got.payload.substr(1));
+            finished.push_back(deserialise(got.payload));
         }
     }
     /// The number of slots waiting for a run.
@@ -341,17 +380,21 @@ class Remotes {
                 return;
             }
     }
-    /// Sends "no more" to every slot, waiting for the ones still running (their records dropped).
+    /// Sends "no more" to every slot, waiting for the ones still running (their records dropped),
+    /// until every rank has said it adds no slot ("#", sent on its first "no more") and has had
+    /// "no more" for each slot it asked for.
     void release_all() {
         std::vector<RunRecord> ignored;
-        while (active_ > 0) {
+        for (;;) {
             for (std::size_t r = 1; r < idle_.size(); ++r)
                 for (; idle_[r] > 0; --idle_[r]) {
                     const long long none = -1;
                     MPI_Send(&none, 1, MPI_LONG_LONG, static_cast<int>(r), kTagTask, MPI_COMM_WORLD);
-                    --active_;
+                    --open_[r];
                 }
-            if (active_ == 0) break;
+            bool any_open = false;
+            for (std::size_t r = 1; r < open_.size(); ++r) any_open = any_open || open_[r] > 0 || !closed_[r];
+            if (!any_open && requests_.empty()) break;
             try {
                 poll(ignored);
             } catch (...) {
@@ -361,8 +404,15 @@ class Remotes {
     }
 
   private:
-    std::int64_t active_;
-    std::vector<std::int64_t> idle_;
+    struct Received {
+        std::string payload;
+        int source;
+    };
+    std::vector<std::int64_t> idle_;  // per rank, slots waiting for a run
+    std::vector<std::int64_t> open_;  // per rank, slots not yet told "no more"
+    std::vector<bool> closed_;        // per rank, "#" received: it asks for no more slots
+    std::list<Received> receiving_;   // receives under way, in order (a list: the buffers stay put)
+    std::vector<MPI_Request> requests_;
 };
 #else
 class Remotes {
@@ -675,7 +725,7 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
                 return none;
             }
             Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size));
-            Remotes remotes(size, jobs);
+            Remotes remotes(size);
             BenchSummary s = run_local(ledger, jobs, progress, stop, &remotes);
             s.ranks = size;
             return s;

@@ -78,4 +78,31 @@ TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[benc
     CHECK(rows(dir / "mpi-jobs.sqlite") == a);
     fs::remove_all(dir);
 }
+
+TEST_CASE("bench: mpirun -np 3 on many short runs (the ranks add slots) stores each run once", "[bench][mpi]") {
+    // Runs far shorter than a message round trip make the other ranks' threads run dry, so they ask
+    // for more slots while rank 0 hands out runs and then says "no more": every run is stored once,
+    // with the values of a threaded run, and every rank exits.
+    const fs::path dir = fs::temp_directory_path() / ("pride-mpi3-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        std::ofstream f(dir / "c.toml");
+        f << "name = \"short\"\nseeds = 300\n[budget]\nevaluations = 40\n"
+             "[[problem]]\nid = \"sphere\"\ntype = \"sphere\"\ndim = 3\n"
+             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n"
+             "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n";
+    }
+    const std::string config = (dir / "c.toml").string();
+    REQUIRE(pride::test::run_pride("bench '" + config + "' --jobs 2 --out '" + (dir / "threads.sqlite").string() + "'")
+                .status == 0);
+    const std::string mpi = std::string("ASAN_OPTIONS=detect_leaks=0 '") + PRIDE_MPIEXEC +
+                            "' --allow-run-as-root --oversubscribe -np 3 '" + PRIDE_EXE + "' bench '" + config +
+                            "' --out '" + (dir / "mpi.sqlite").string() + "' > '" + (dir / "out").string() + "' 2>&1";
+    REQUIRE(std::system(mpi.c_str()) == 0);
+    const auto a = rows(dir / "threads.sqlite"), b = rows(dir / "mpi.sqlite");
+    CHECK(a.size() == 600);
+    CHECK(a == b);
+    fs::remove_all(dir);
+}
 #endif
