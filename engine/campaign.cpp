@@ -522,6 +522,19 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
                 }
                 if (exhausted && spare.empty()) no_more = true;
             }
+            if (remotes && exhausted && spare.empty()) {
+                // The last runs: a rank waiting for one takes this process's queued runs (the last
+                // queued first), which the threads here would start only after their present ones.
+                std::vector<std::size_t> moved;
+                {
+                    const std::lock_guard lock(mutex);
+                    for (std::size_t k = remotes->idle(); k > 0 && !work.empty(); --k) {
+                        moved.push_back(work.back());
+                        work.pop_back();
+                    }
+                }
+                for (const std::size_t task : moved) remotes->give(static_cast<long long>(task));
+            }
             to_workers.notify_all();
             {
                 std::unique_lock lock(mutex);
