@@ -717,6 +717,13 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
         int initialised = 0;
         MPI_Initialized(&initialised);
         if (!initialised) {
+            // On one machine (every rank local) and with no PML chosen, Open MPI's start-up first
+            // opens its cm PML, which probes network layers (PSM, PSM2) for 0.2 s before it settles
+            // on ob1 over shared memory; asking for ob1 directly saves that in every rank. A PML
+            // the user names (mpirun --mca pml X, or OMPI_MCA_pml) is left as it is.
+            const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+            const char* world = std::getenv("OMPI_COMM_WORLD_SIZE");
+            if (local && world && std::string(local) == world) ::setenv("OMPI_MCA_pml", "ob1", 0);
             int provided = 0;  // only the main thread calls MPI; the others only run
             MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
         }
