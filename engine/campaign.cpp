@@ -439,21 +439,27 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
     std::exception_ptr failure;
     const std::size_t width = static_cast<std::size_t>(jobs);
     // The main thread shares the cores with the runs, so the threads wake it only when it has
-    // something to do: the queue below `width` runs (it keeps 4 per thread), `kBatch` records
-    // waiting, the last runs or a failure; else it wakes every 20 ms to commit. (Waking it per
-    // run cost 14 % more CPU at --jobs 2 on runs of 1 ms: bench/campaign_scaling.toml.)
+    // something to do: the queue below half its length, `kBatch` records waiting, the last runs
+    // or a failure; else it wakes every 20 ms to commit. (Waking it per run cost 14 % more CPU at
+    // --jobs 2 on runs of 1 ms: bench/campaign_scaling.toml.) The queue keeps 4 runs per thread,
+    // and a thread that finds it empty lengthens it by one run per thread, up to 64: the main
+    // thread is late when a commit waits for the disk (a checkpoint's syncs, 10-20 ms, idled
+    // both threads of a campaign of 1 ms runs) or when other processes hold the cores.
     constexpr std::size_t kBatch = 16;
-    const std::size_t queue_length = 4 * width;
+    std::size_t queue_length = 4 * width;  // guarded by `mutex`
+    const std::size_t longest_queue = 64 * width;
     auto worker = [&] {
-        for (;;) {
+        for (bool first = true;; first = false) {
             std::size_t i = 0;
             {
                 std::unique_lock lock(mutex);
+                if (work.empty() && !no_more && !quit && !first)
+                    queue_length = std::min(longest_queue, queue_length + width);
                 to_workers.wait(lock, [&] { return quit || !work.empty() || no_more; });
                 if (quit || work.empty()) return;
                 i = work.front();
                 work.pop_front();
-                if (work.size() < width && !no_more) to_main.notify_one();  // the main thread claims more
+                if (2 * work.size() < queue_length && !no_more) to_main.notify_one();  // the main thread claims more
             }
             bool wake = true;
             try {
@@ -495,13 +501,14 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
         for (;;) {
             std::vector<RunRecord> batch;
             if (remotes) remotes->poll(batch);
-            // Keep `jobs` runs queued for the threads and one for each idle rank.
-            std::size_t queued = 0;
+            // Keep the queue full for the threads, and a run for each idle slot of a rank.
+            std::size_t queued = 0, length = 0;
             {
                 const std::lock_guard lock(mutex);
                 queued = work.size();
+                length = queue_length;
             }
-            const std::size_t wanted_here = pool.empty() ? 0 : (queued < queue_length ? queue_length - queued : 0);
+            const std::size_t wanted_here = pool.empty() ? 0 : (queued < length ? length - queued : 0);
             const std::size_t wanted_there = remotes ? remotes->idle() : 0;
             while (!exhausted && spare.size() < wanted_here + wanted_there) {
                 const auto got = ledger.take();
@@ -541,7 +548,7 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
                 // Ranks are polled every millisecond; threads wake this one themselves.
                 to_main.wait_for(lock, remotes ? std::chrono::milliseconds(1) : std::chrono::milliseconds(20), [&] {
                     return finished.size() >= kBatch || failure || (no_more && work.empty() && !finished.empty()) ||
-                           (!exhausted && work.size() < width && !pool.empty());
+                           (!exhausted && 2 * work.size() < queue_length && !pool.empty());
                 });
                 for (auto& r : finished) batch.push_back(std::move(r));
                 finished.clear();
