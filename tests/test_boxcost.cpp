@@ -90,6 +90,28 @@ TEST_CASE("FixedPower: powers of two by squarings give the squaring loop's bits"
     }
 }
 
+TEST_CASE("FixedPower: the roots of apply (four lanes where AVX is) give the scalar roots' bits",
+          "[operators][boxcost]") {
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> specials{
+        0.0, -0.0, 1.0, 4.9e-324, 2.2e-308, 1e-300, 1e300, inf, -1.0, -inf, std::numeric_limits<double>::quiet_NaN()};
+    pride::Rng rng(13);
+    for (const int k : {1, 2, 4, 6}) {
+        const pride::FixedPower root(1.0 / static_cast<double>(1 << k));
+        // Every length from 0 to 70 (the AVX loop's tail of 0-3 lanes), specials at varying places.
+        for (std::size_t n = 0; n <= 70; ++n) {
+            std::vector<double> v(n);
+            for (std::size_t i = 0; i < n; ++i)
+                v[i] = i % 7 == 3 ? specials[(i + n) % specials.size()] : rng.uniform(0.0, 1e6);
+            std::vector<double> expected(n);
+            for (std::size_t i = 0; i < n; ++i) expected[i] = root(v[i]);  // k calls of std::sqrt
+            root.apply(std::span<double>(v));
+            INFO("1/2^" << k << ", n = " << n);
+            REQUIRE(same_bits(v, expected));
+        }
+    }
+}
+
 TEST_CASE("PSO's two-lane move equals the scalar loop bit for bit", "[pso][boxcost]") {
     pride::Rng data(5);
     const double nan = std::numeric_limits<double>::quiet_NaN();
