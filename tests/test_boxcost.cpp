@@ -152,7 +152,7 @@ TEST_CASE("harmony search: the improvisation from a local copy draws as from the
     const std::vector<pride::whale::HarmonyRates> all_rates{{0.9, 0.3, 0.01}, {0.8, 0.3, 0.01}, {1.0, 1.0, 0.5},
                                                             {0.0, 0.3, 0.01}, {1.0, 0.0, 0.01}, {0.5, 0.5, 1.0}};
     for (const auto& rates : all_rates)
-        for (const auto [dim, members] : {std::pair{7, 30}, std::pair{30, 50}, std::pair{1, 1}, std::pair{31, 2}}) {
+        for (const auto& [dim, members] : {std::pair{7, 30}, std::pair{30, 50}, std::pair{1, 1}, std::pair{31, 2}}) {
             pride::Rng data(3);
             pride::Matrix memory(dim, members);
             for (Eigen::Index i = 0; i < memory.size(); ++i) memory.data()[i] = data.uniform(-5.0, 5.0);
