@@ -62,7 +62,11 @@ class BoxPod {
 
     template <class D, class M>
     void sweep(const D& d, const M& m, double a, double a2, double balance) {
-        woa_.sweep(d, m, run_.x, leader_, a, a2, balance, run_.rng);
+        // From a local copy of the run's Rng, put back afterwards (the same draws): its state can
+        // stay in registers, where the member's is loaded and stored at every draw.
+        Rng rng = run_.rng;
+        woa_.sweep(d, m, run_.x, leader_, a, a2, balance, rng);
+        run_.rng = rng;
     }
     void evaluate_pod() {
         for (Eigen::Index i = 0; i < run_.x.cols(); ++i) woa_.bounds(column(run_.x, i), run_.lo, run_.hi);
