@@ -31,7 +31,8 @@ namespace detail {
     }
 }
 inline bool roots_avx_supported() noexcept {
-    static const bool yes = __builtin_cpu_supports("avx");
+    // __builtin_cpu_init first: the test may run before libgcc's own initialiser (static set-up).
+    static const bool yes = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
     return yes;
 }
 }  // namespace detail
