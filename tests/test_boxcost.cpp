@@ -1,5 +1,6 @@
 // Issue 15 (framework cost per evaluation): the faster forms of PSO's move, harmony search's
-// improvisation and FixedPower's powers of two give the same bits as the plain forms they replace.
+// improvisation (and its integer coin tests), SBX's selects and FixedPower's powers of two give
+// the same bits as the plain forms they replace.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <limits>
 #include <span>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "algorithms/parts/power.hpp"
@@ -88,6 +90,28 @@ TEST_CASE("FixedPower: powers of two by squarings give the squaring loop's bits"
     }
 }
 
+TEST_CASE("FixedPower: the roots of apply (four lanes where AVX is) give the scalar roots' bits",
+          "[operators][boxcost]") {
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> specials{
+        0.0, -0.0, 1.0, 4.9e-324, 2.2e-308, 1e-300, 1e300, inf, -1.0, -inf, std::numeric_limits<double>::quiet_NaN()};
+    pride::Rng rng(13);
+    for (const int k : {1, 2, 4, 6}) {
+        const pride::FixedPower root(1.0 / static_cast<double>(1 << k));
+        // Every length from 0 to 70 (the AVX loop's tail of 0-3 lanes), specials at varying places.
+        for (std::size_t n = 0; n <= 70; ++n) {
+            std::vector<double> v(n);
+            for (std::size_t i = 0; i < n; ++i)
+                v[i] = i % 7 == 3 ? specials[(i + n) % specials.size()] : rng.uniform(0.0, 1e6);
+            std::vector<double> expected(n);
+            for (std::size_t i = 0; i < n; ++i) expected[i] = root(v[i]);  // k calls of std::sqrt
+            root.apply(std::span<double>(v));
+            INFO("1/2^" << k << ", n = " << n);
+            REQUIRE(same_bits(v, expected));
+        }
+    }
+}
+
 TEST_CASE("PSO's two-lane move equals the scalar loop bit for bit", "[pso][boxcost]") {
     pride::Rng data(5);
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -122,18 +146,66 @@ TEST_CASE("PSO's two-lane move equals the scalar loop bit for bit", "[pso][boxco
 }
 
 TEST_CASE("harmony search: the improvisation from a local copy draws as from the run's Rng", "[hs][boxcost]") {
-    pride::Rng data(3);
-    pride::Matrix memory(7, 30);
-    for (Eigen::Index i = 0; i < memory.size(); ++i) memory.data()[i] = data.uniform(-5.0, 5.0);
-    const std::vector<double> lo(7, -5.0), hi(7, 5.0);
-    const pride::whale::HarmonyRates rates{0.9, 0.3, 0.01};
-    pride::Rng direct(9), forwarded(9);
-    Forward f{&forwarded};
-    std::vector<double> a(7), b(7);
-    for (int k = 0; k < 200; ++k) {
-        pride::whale::improvise(memory, lo, hi, rates, direct, std::span<double>(a));
-        pride::whale::improvise(memory, lo, hi, rates, f, std::span<double>(b));
-        REQUIRE(same_bits(a, b));
+    // The Rng path (detail::improvise_rng: integer coin tests) against the generic path through a
+    // forwarding draw source, for the rates of hs and hswoa and the edge rates 0 and 1, several
+    // memory sizes and dimensions.
+    const std::vector<pride::whale::HarmonyRates> all_rates{{0.9, 0.3, 0.01}, {0.8, 0.3, 0.01}, {1.0, 1.0, 0.5},
+                                                            {0.0, 0.3, 0.01}, {1.0, 0.0, 0.01}, {0.5, 0.5, 1.0}};
+    for (const auto& rates : all_rates)
+        for (const auto& [dim, members] : {std::pair{7, 30}, std::pair{30, 50}, std::pair{1, 1}, std::pair{31, 2}}) {
+            pride::Rng data(3);
+            pride::Matrix memory(dim, members);
+            for (Eigen::Index i = 0; i < memory.size(); ++i) memory.data()[i] = data.uniform(-5.0, 5.0);
+            std::vector<double> lo(static_cast<std::size_t>(dim)), hi(lo.size());
+            for (std::size_t d = 0; d < lo.size(); ++d) {
+                lo[d] = -5.0 - static_cast<double>(d);
+                hi[d] = 5.0 + 0.5 * static_cast<double>(d);
+            }
+            pride::Rng direct(9), forwarded(9);
+            Forward f{&forwarded};
+            std::vector<double> a(lo.size()), b(lo.size());
+            for (int k = 0; k < 200; ++k) {
+                pride::whale::improvise(memory, lo, hi, rates, direct, std::span<double>(a));
+                pride::whale::improvise(memory, lo, hi, rates, f, std::span<double>(b));
+                REQUIRE(same_bits(a, b));
+            }
+            CHECK(direct() == forwarded());  // the run's generator is left where the draws ended
+        }
+}
+
+TEST_CASE("harmony search: the integer coin test decides as uniform() < p", "[hs][boxcost]") {
+    const double tiny = std::numeric_limits<double>::denorm_min(), inf = std::numeric_limits<double>::infinity();
+    const std::vector<double> ps{0.0,
+                                 tiny,
+                                 0x1.0p-53,
+                                 0x1.8p-53,
+                                 0.3,
+                                 0.5,
+                                 std::nextafter(0.5, 1.0),
+                                 0.8,
+                                 0.9,
+                                 std::nextafter(1.0, 0.0),
+                                 1.0,
+                                 1.5,
+                                 inf,
+                                 -0.3,
+                                 -inf,
+                                 std::numeric_limits<double>::quiet_NaN()};
+    pride::Rng rng(5);
+    for (const double p : ps) {
+        const std::uint64_t t = pride::whale::detail::unit_threshold(p);
+        // The steps whose 53 bits are next to the threshold, the extremes, and random ones.
+        std::vector<std::uint64_t> ks{0, 1, (std::uint64_t{1} << 53) - 1};
+        for (std::uint64_t dk = 0; dk < 3; ++dk)
+            for (const std::uint64_t k : {t - 1 + dk, t + dk - 2})
+                if (k < (std::uint64_t{1} << 53)) ks.push_back(k);
+        for (int r = 0; r < 1000; ++r) ks.push_back(rng() >> 11);
+        for (const std::uint64_t k : ks)
+            for (const std::uint64_t low : {std::uint64_t{0}, std::uint64_t{0x7FF}}) {
+                const std::uint64_t bits = (k << 11) | low;
+                const double u = static_cast<double>(static_cast<std::int64_t>(bits >> 11)) * 0x1.0p-53;  // uniform()
+                INFO("p = " << p << ", k = " << k);
+                REQUIRE(((bits >> 11) < t) == (u < p));
+            }
     }
-    CHECK(direct() == forwarded());  // the run's generator is left where the draws ended
 }

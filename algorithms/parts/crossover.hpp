@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "algorithms/parts/branchless.hpp"
 #include "algorithms/parts/power.hpp"
 #include "framework/error.hpp"
 #include "framework/random.hpp"
@@ -90,8 +91,8 @@ class SbxCrossover::Prepared {
                 const double c1 = std::clamp(0.5 * ((y1[k] + y2[k]) - arg[k] * (y2[k] - y1[k])), lo[i], hi[i]);
                 const double c2 = std::clamp(0.5 * ((y1[k] + y2[k]) + arg[m + k] * (y2[k] - y1[k])), lo[i], hi[i]);
                 const bool swapped = (swap & 1u) != 0;  // selects, not a branch: a coin flip mispredicts
-                a[i] = swapped ? c2 : c1;
-                b[i] = swapped ? c1 : c2;
+                a[i] = detail::select(swapped, c2, c1);
+                b[i] = detail::select(swapped, c1, c2);
             }
         }
         run_rng = rng;
@@ -106,7 +107,7 @@ class SbxCrossover::Prepared {
         if (!(big < 1e300)) return u <= 0.5 ? 2.0 * u : 1.0 / (2.0 - 2.0 * u);  // beta^-(eta+1) = 0: alpha = 2
         const double t = u * (2.0 * big - 1.0);
         const bool near = t <= big;  // selects, then one division: the test is a coin flip
-        return (near ? t : big) / (near ? big : 2.0 * big - t);
+        return detail::select(near, t, big) / detail::select(near, big, 2.0 * big - t);
     }
 
     double probability_;

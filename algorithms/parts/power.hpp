@@ -7,9 +7,36 @@
 #include <Eigen/Core>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <span>
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define PRIDE_ROOTS_AVX 1
+#endif
+
 namespace pride {
+
+#ifdef PRIDE_ROOTS_AVX
+namespace detail {
+/// `times` square roots of each of v[0..n), four lanes per instruction: the build targets
+/// baseline x86-64 (two lanes), and the GA's roots are bound by the square-root unit's throughput,
+/// which AVX doubles. Square roots are correctly rounded, so the bits are those of the two-lane
+/// and of the scalar form. Called only where the processor has AVX (roots_avx_supported).
+[[gnu::target("avx")]] inline void roots_avx(double* v, std::size_t n, int times) noexcept {
+    const std::size_t wide = n - n % 4;
+    for (int k = 0; k < times; ++k) {
+        for (std::size_t i = 0; i < wide; i += 4) _mm256_storeu_pd(v + i, _mm256_sqrt_pd(_mm256_loadu_pd(v + i)));
+        for (std::size_t i = wide; i < n; ++i) _mm_store_sd(v + i, _mm_sqrt_sd(_mm_setzero_pd(), _mm_load_sd(v + i)));
+    }
+}
+inline bool roots_avx_supported() noexcept {
+    // __builtin_cpu_init first: the test may run before libgcc's own initialiser (static set-up).
+    static const bool yes = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
+    return yes;
+}
+}  // namespace detail
+#endif
 
 class FixedPower {
   public:
@@ -56,10 +83,13 @@ class FixedPower {
     }
 
     /// Raises every element of `values` in place. Repeated square roots run over the whole array
-    /// at once (Eigen's packet sqrt: two or more lanes per instruction), which is where the real-
-    /// coded GA spends most of its own time.
+    /// at once (four lanes per instruction where the processor has AVX, else Eigen's packet sqrt:
+    /// two lanes), which is where the real-coded GA spends most of its own time.
     void apply(std::span<double> values) const noexcept {
         if (kind_ == Kind::roots) {
+#ifdef PRIDE_ROOTS_AVX
+            if (detail::roots_avx_supported()) return detail::roots_avx(values.data(), values.size(), n_);
+#endif
             Eigen::Map<Eigen::ArrayXd> a(values.data(), static_cast<Eigen::Index>(values.size()));
             for (int k = 0; k < n_; ++k) a = a.sqrt();
         } else {

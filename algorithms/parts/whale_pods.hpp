@@ -62,11 +62,16 @@ class BoxPod {
 
     template <class D, class M>
     void sweep(const D& d, const M& m, double a, double a2, double balance) {
-        woa_.sweep(d, m, run_.x, leader_, a, a2, balance, run_.rng);
+        // From a local copy of the run's Rng, put back afterwards (the same draws): its state can
+        // stay in registers, where the member's is loaded and stored at every draw.
+        Rng rng = run_.rng;
+        woa_.sweep(d, m, run_.x, leader_, a, a2, balance, rng);
+        run_.rng = rng;
     }
     void evaluate_pod() {
         for (Eigen::Index i = 0; i < run_.x.cols(); ++i) woa_.bounds(column(run_.x, i), run_.lo, run_.hi);
         consider_pod(0, run_.state.evaluate_columns(problem_, run_.x, run_.fx));
+        worst_ = kUnknown;
     }
     /// Eq. 8: whale i towards X* (to_leader) or towards whale `other`, by the fraction r.
     void toward(std::size_t i, bool to_leader, std::size_t other, double r) {
@@ -75,15 +80,17 @@ class BoxPod {
         for (std::size_t d = 0; d < run_.dim; ++d) xi[d] = whale::toward(xi[d], target[d], r);
     }
     /// One improvisation from the pod, evaluated; it replaces the worst whale when strictly better.
+    /// The worst whale is looked for only when the fitness has changed since (as in hs.hpp).
     void improvise(const HarmonyRates& rates) {
         whale::improvise(run_.x, run_.lo, run_.hi, rates, run_.rng, std::span<double>(y_));
         woa_.bounds(std::span<double>(y_), run_.lo, run_.hi);
         const double f = run_.state.evaluate(problem_, std::span<const double>(y_));
         consider(y_, f);
-        const std::size_t w = worst(run_.fx);
-        if (f < run_.fx[w]) {
-            std::copy(y_.begin(), y_.end(), run_.x.col(index(w)).data());
-            run_.fx[w] = f;
+        if (worst_ == kUnknown) worst_ = worst(run_.fx);
+        if (f < run_.fx[worst_]) {
+            std::copy(y_.begin(), y_.end(), run_.x.col(index(worst_)).data());
+            run_.fx[worst_] = f;
+            worst_ = kUnknown;
         }
     }
     /// The whales order[0..keep) first, the rest uniform in the box, then Bounds; those evaluated.
@@ -103,6 +110,7 @@ class BoxPod {
         const auto done =
             run_.state.evaluate_columns(problem_, x.rightCols(n - k), std::span<double>(run_.fx).subspan(keep));
         consider_pod(k, done);
+        worst_ = kUnknown;
     }
     template <class O>
     void end_iteration(O& observer) {
@@ -123,12 +131,15 @@ class BoxPod {
             consider(column(std::as_const(run_.x), i), run_.fx[static_cast<std::size_t>(i)]);
     }
 
+    static constexpr std::size_t kUnknown = static_cast<std::size_t>(-1);
+
     const Algorithm& woa_;
     P& problem_;
     BoxRun run_;
     std::vector<double> leader_, y_;
     double leader_f_ = kInf;
-    Matrix kept_;  // the reconstruction's copy of the kept whales
+    std::size_t worst_ = kUnknown;  // the worst whale, kUnknown once the fitness has changed
+    Matrix kept_;                   // the reconstruction's copy of the kept whales
     std::vector<double> kept_f_;
 };
 
