@@ -1,7 +1,7 @@
 #pragma once
 // Connector policies (shared/spec/grid.md): how the `line` and `free` encodings join two
 // consecutive waypoints. Each gives the cells after `a` up to and including `b` as map indices
-// (a segment for LoopFreeChain), none twice: a straight line or a shortest path.
+// (a segment for LoopFreeChain): a straight line or a shortest path.
 #include <algorithm>
 #include <cstdint>
 #include <span>

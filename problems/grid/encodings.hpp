@@ -23,9 +23,9 @@ namespace pride::grid {
 
 namespace detail {
 /// Joins start, the waypoints waypoint(0..count-1) and goal with the connector into `out`,
-/// cutting loops as the chain grows (LoopFreeChain: the same cells as cut_loops on the whole raw
-/// chain, without storing it), and recounts violations that a cut loop may have held (cutting only
-/// removes steps). No allocation once the scratch has grown to the map.
+/// cutting loops (LoopFreeChain: the same cells as cut_loops on the whole raw chain, without a
+/// lookup per raw cell), and recounts violations that a cut loop may have held (cutting only
+/// removes steps). No allocation once the scratch has grown to the map and the raw chain.
 template <class Objective, class Connector, class Waypoint>
 void join_waypoints(const GridProblem<Objective>& p, int count, Waypoint&& waypoint, Connector& connector,
                     DecodedPath& out, LoopFreeChain& chain) {
@@ -185,7 +185,7 @@ class LineEncoding {
     std::vector<double> lower_, upper_;
     Connector connector_{};
     DecodedPath out_;      // scratch: the decoded chain, valid until the next decode
-    LoopFreeChain chain_;  // scratch: the chain as it grows
+    LoopFreeChain chain_;  // scratch: the raw chain and its loop cut
 };
 
 /// `free`: 2K genes, K waypoints (x, y) anywhere on the map. Decoding rounds each, snaps it to the
