@@ -6,6 +6,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <string>
 #include <vector>
@@ -143,20 +144,25 @@ class LoopFreeChain {
         if (n >= kMaxRaw - size_) [[unlikely]]
             too_long();
         if (size_ + n > raw_.size()) raw_.resize(std::max(2 * raw_.size(), size_ + n));
-        std::copy(segment.begin(), segment.end(), raw_.begin() + static_cast<std::ptrdiff_t>(size_));
-        // A raw pointer and a local position: stores through the members could otherwise alias and
-        // force reloads in the loop (it runs once per raw cell).
+        // Raw pointers and a local position: stores through the members could otherwise alias and
+        // force reloads in the loop (it runs once per raw cell). The copy goes 16 bytes at a time in
+        // the same loop: a memmove call per join cost 20 instructions more.
         const std::uint32_t* const s = segment.data();
+        std::uint32_t* const raw = raw_.data() + size_;
         std::uint32_t* const last = last_.data();
         auto at = static_cast<std::uint32_t>(size_);
         std::size_t i = 0;
         for (; i + 4 <= n; i += 4, at += 4) {
+            std::memcpy(raw + i, s + i, 16);
             last[s[i]] = at;
             last[s[i + 1]] = at + 1;
             last[s[i + 2]] = at + 2;
             last[s[i + 3]] = at + 3;
         }
-        for (; i < n; ++i, ++at) last[s[i]] = at;
+        for (; i < n; ++i, ++at) {
+            raw[i] = s[i];
+            last[s[i]] = at;
+        }
         size_ += n;
     }
 
