@@ -254,17 +254,20 @@ TEST_CASE("line and free decoders give the reference decoder's chains on 100x100
 }
 
 TEST_CASE("LoopFreeChain gives cut_loops' result on random chains of random segments", "[grid][path]") {
-    // Segments are random walks that never repeat a cell within themselves (the precondition), so
-    // they close loops with the chain in every way: back to the start, over several segments,
-    // nested.
+    // Segments are random walks, so they close loops with the chain in every way: back to the
+    // start, over several segments, nested; every other round they may also revisit their own
+    // cells (LoopFreeChain does not need segments without repeats), and some are empty.
     Rng rng(15017);
-    for (int round = 0; round < 400; ++round) {
+    LoopFreeChain reused;  // one chain for every round too: nothing of a round may leak into the next
+    for (int round = 0; round < 600; ++round) {
         const int w = 3 + below(rng, 12), h = 1 + below(rng, 12);
         const GridMap map(w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h, 0), "open");
+        const bool repeats = round % 2 == 1;
         Cell c{below(rng, w), below(rng, h)};
         Path raw{c};
         LoopFreeChain chain;
         chain.begin(map, static_cast<std::uint32_t>(map.index(c)));
+        reused.begin(map, static_cast<std::uint32_t>(map.index(c)));
         std::vector<std::int32_t> seen;
         for (int seg = 0, n = 1 + below(rng, 12); seg < n; ++seg) {
             std::vector<std::uint32_t> cells;
@@ -272,22 +275,39 @@ TEST_CASE("LoopFreeChain gives cut_loops' result on random chains of random segm
             for (int step = 0, len = below(rng, 3 * w); step < len; ++step) {
                 const int d = below(rng, 8);
                 const Cell next{c.x + kDx[d], c.y + kDy[d]};
-                if (!map.inside(next) || used[map.index(next)]) continue;
+                if (!map.inside(next) || (!repeats && used[map.index(next)])) continue;
                 used[map.index(next)] = 1;
                 cells.push_back(static_cast<std::uint32_t>(map.index(next)));
                 raw.push_back(next);
                 c = next;
             }
             chain.append(cells);
+            reused.append(cells);
         }
         cut_loops(raw, map, seen);
         Path got;
         chain.to_path(got);
         REQUIRE(got == raw);
-        REQUIRE(chain.size() == raw.size());
+        reused.to_path(got);
+        REQUIRE(got == raw);
         // Reused for a second chain without clearing by hand.
         chain.begin(map, static_cast<std::uint32_t>(map.index(raw.back())));
         chain.to_path(got);
         CHECK(got == Path{raw.back()});
     }
+}
+
+TEST_CASE("LoopFreeChain: a chain that comes back to its start keeps only the start", "[grid][path]") {
+    const GridMap map(4, 4, std::vector<std::uint8_t>(16, 0), "open");
+    LoopFreeChain chain;
+    chain.begin(map, 5);
+    const std::vector<std::uint32_t> out{6, 10, 9}, back{5}, on{6, 7};
+    chain.append(out);
+    chain.append(back);
+    Path got;
+    chain.to_path(got);
+    CHECK(got == Path{{1, 1}});
+    chain.append(on);
+    chain.to_path(got);  // to_path does not end the chain: appending goes on
+    CHECK(got == (Path{{1, 1}, {2, 1}, {3, 1}}));
 }

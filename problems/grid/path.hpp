@@ -6,10 +6,12 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "framework/error.hpp"
 #include "problems/grid/map.hpp"
 
 namespace pride::grid {
@@ -108,113 +110,104 @@ inline void cut_loops(Path& path, const GridMap& map, std::vector<std::int32_t>&
     path.resize(out);
 }
 
-/// A chain of cells, as map indices, built from segments and cut of its loops as it grows: after
-/// begin(start) and append(s1), append(s2), ..., it holds exactly what cut_loops leaves of the raw
-/// chain start + s1 + s2 + ..., cell for cell. Each segment must hold no cell twice (a straight
-/// line or a shortest path does not). Then the cut of one segment needs no writes for the cells
-/// it drops: cutting the raw chain cell by cell, a segment cell can only meet a cell of the chain
-/// as it was before the segment, each meeting cuts back to a position below the previous one, so
-/// the chain ends cut back to the lowest position any segment cell holds, followed by the segment
-/// cells after that one. The cost is one position lookup per raw cell and one write per kept cell,
-/// with no hashing and no allocation once sized for a map (the decoders keep one per copy).
+/// A chain of cells, as map indices, built from segments and cut of its loops: after begin(start)
+/// and append(s1), append(s2), ..., to_path gives exactly what cut_loops leaves of the raw chain
+/// start + s1 + s2 + ..., cell for cell. It uses the other form of that cut (chronological loop
+/// erasure, Lawler): the kept chain is raw[j0], raw[j1], ... with j0 the last visit of raw[0] and
+/// j(k+1) the last visit of raw[jk + 1], ending at the last raw cell. So append only stores the raw
+/// cells and, per map cell, the position of its latest visit: one write each, no lookup, and no
+/// clearing, because to_path reads the visits only of cells this chain wrote. (Cutting as the chain
+/// grew cost a lookup per raw cell, and a write and a clear for each cell a later join took back.)
+/// Segments may hold a cell twice. No allocation once grown to a map and a raw length (the
+/// decoders keep one per copy).
 class LoopFreeChain {
   public:
-    /// A new chain holding only `start`: the marks of the previous chain are cleared (as many writes
-    /// as it had cells), the scratch is sized once per map.
+    /// A new chain holding only `start`; the scratch is sized once per map.
     void begin(const GridMap& map, std::uint32_t start) {
-        if (position_.size() != map.size() || width_ != map.width()) {
-            position_.assign(map.size(), kAbsent);
-            chain_.assign(map.size(), 0);
+        if (last_.size() != map.size() || width_ != map.width()) {
+            last_.assign(map.size(), 0);
             cell_of_.resize(map.size());
             for (std::size_t i = 0; i < map.size(); ++i) cell_of_[i] = map.cell(i);
+            kept_.resize(map.size());
             width_ = map.width();
-            size_ = 0;
         }
-        forget(position_.data(), chain_.data(), 0, size_);
-        chain_[0] = start;
-        position_[start] = 0;
+        if (raw_.empty()) raw_.resize(map.size());
+        raw_[0] = start;
+        last_[start] = 0;
         size_ = 1;
     }
 
-    /// Appends a segment (cells after the chain's last, none twice) and cuts the loops it closes.
-    void append(std::span<const std::uint32_t> segment) {
-        // Raw pointers and a local size: stores through them could otherwise alias the members
-        // and force reloads in the loops below (they run once per raw cell).
-        const std::uint32_t* const s = segment.data();
+    /// Appends a segment (the cells after the chain's last, map indices of begin()'s map). Inlined
+    /// into the decoders' loop over joins, where a call cost 12 instructions more per join.
+    [[gnu::always_inline]] void append(std::span<const std::uint32_t> segment) {
         const std::size_t n = segment.size();
-        std::uint32_t* const position = position_.data();
-        std::uint32_t* const chain = chain_.data();
-        std::size_t size = size_;
-        // The lowest position a segment cell holds (branch-free: in a retrace, where the segment
-        // walks back along the chain, almost every cell lowers it).
-        std::uint32_t lowest = kAbsent;
+        if (n >= kMaxRaw - size_) [[unlikely]]
+            too_long();
+        if (size_ + n > raw_.size()) raw_.resize(std::max(2 * raw_.size(), size_ + n));
+        // Raw pointers and a local position: stores through the members could otherwise alias and
+        // force reloads in the loop (it runs once per raw cell). The copy goes 16 bytes at a time in
+        // the same loop: a memmove call per join cost 20 instructions more.
+        const std::uint32_t* const s = segment.data();
+        std::uint32_t* const raw = raw_.data() + size_;
+        std::uint32_t* const last = last_.data();
+        auto at = static_cast<std::uint32_t>(size_);
         std::size_t i = 0;
-        for (; i + 4 <= n; i += 4) {
-            const std::uint32_t p0 = position[s[i]], p1 = position[s[i + 1]];
-            const std::uint32_t p2 = position[s[i + 2]], p3 = position[s[i + 3]];
-            lowest = std::min(lowest, std::min(std::min(p0, p1), std::min(p2, p3)));
+        for (; i + 4 <= n; i += 4, at += 4) {
+            std::memcpy(raw + i, s + i, 16);
+            last[s[i]] = at;
+            last[s[i + 1]] = at + 1;
+            last[s[i + 2]] = at + 2;
+            last[s[i + 3]] = at + 3;
         }
-        for (; i < n; ++i) lowest = std::min(lowest, position[s[i]]);
-        std::size_t from = 0;     // the first segment cell kept: the one after the cell at `lowest`
-        if (lowest != kAbsent) {  // cut back to the segment cell's earlier visit, which stays
-            from = static_cast<std::size_t>(std::find(s, s + n, chain[lowest]) - s) + 1;
-            forget(position, chain, lowest + 1, size);
-            size = lowest + 1;
+        for (; i < n; ++i, ++at) {
+            raw[i] = s[i];
+            last[s[i]] = at;
         }
-        // The chain holds no cell twice, so it never outgrows the map (a segment breaking the
-        // precondition would show here first).
-        assert(size + (n - from) <= chain_.size());
-        std::copy(s + from, s + n, chain + size);
-        auto at = static_cast<std::uint32_t>(size);
-        std::size_t k = from;
-        for (; k + 4 <= n; k += 4, at += 4) {
-            position[s[k]] = at;
-            position[s[k + 1]] = at + 1;
-            position[s[k + 2]] = at + 2;
-            position[s[k + 3]] = at + 3;
-        }
-        for (; k < n; ++k) position[s[k]] = at++;
-        size_ = at;
+        size_ += n;
     }
 
-    std::size_t size() const noexcept { return size_; }
-    std::span<const std::uint32_t> cells() const noexcept { return {chain_.data(), size_}; }
-
-    /// The chain as cells (the map must be the one of the last begin()).
-    void to_path(Path& out) const {
-        out.resize(size_);
-        Cell* const o = out.data();
-        const Cell* const cell_of = cell_of_.data();
-        const std::uint32_t* const chain = chain_.data();
-        std::size_t j = 0;
-        for (; j + 4 <= size_; j += 4) {
-            o[j] = cell_of[chain[j]];
-            o[j + 1] = cell_of[chain[j + 1]];
-            o[j + 2] = cell_of[chain[j + 2]];
-            o[j + 3] = cell_of[chain[j + 3]];
+    /// The chain cut of its loops, as cells (the map must be the one of the last begin()).
+    void to_path(Path& out) {
+        if (size_ == 0) {  // no begin() yet
+            out.clear();
+            return;
         }
-        for (; j < size_; ++j) o[j] = cell_of[chain[j]];
+        const std::uint32_t* const raw = raw_.data();
+        const std::uint32_t* const last = last_.data();
+        const Cell* const cell_of = cell_of_.data();
+        Cell* const kept = kept_.data();
+        const std::size_t end = size_ - 1;  // the walk ends on the last raw cell
+        std::size_t i = 0, k = 0;
+        for (;;) {
+            const std::uint32_t c = raw[i];
+            kept[k++] = cell_of[c];
+            const std::size_t j = last[c];
+            // Most cells are not visited again (j == i), so step on from i and branch on j: the
+            // next cell's loads then need not wait for this one's. GCC folds the branch into
+            // i = j (the same value), which chains every step on two loads; the empty asm hides
+            // that i equals j on the common path.
+            if (j != i) [[unlikely]]
+                i = j;
+            else
+                asm("" : "+r"(i));
+            if (i == end) break;
+            ++i;
+        }
+        out.assign(kept, kept + k);
     }
 
   private:
-    static constexpr std::uint32_t kAbsent = 0xffffffffu;
+    static constexpr std::size_t kMaxRaw = 0xffffffffu;
 
-    /// Marks the cells chain[from..to) absent (unrolled by 4: it runs once per dropped cell).
-    [[gnu::always_inline]] static void forget(std::uint32_t* position, const std::uint32_t* chain, std::size_t from,
-                                              std::size_t to) {
-        std::size_t j = from;
-        for (; j + 4 <= to; j += 4) {
-            position[chain[j]] = kAbsent;
-            position[chain[j + 1]] = kAbsent;
-            position[chain[j + 2]] = kAbsent;
-            position[chain[j + 3]] = kAbsent;
-        }
-        for (; j < to; ++j) position[chain[j]] = kAbsent;
+    /// Positions are 32 bits: a raw chain of 2^32 cells (16 GB of them) is refused, not wrapped.
+    [[noreturn, gnu::cold, gnu::noinline]] static void too_long() {
+        throw InputError("decode", "the raw chain of joins exceeds 2^32 - 1 cells");
     }
 
-    std::vector<std::uint32_t> chain_;     // the chain's cells in chain_[0, size_)
-    std::vector<std::uint32_t> position_;  // per map cell: its position in the chain, or kAbsent
-    std::vector<Cell> cell_of_;            // per map cell: the cell (GridMap::cell divides)
+    std::vector<std::uint32_t> raw_;   // the raw chain in raw_[0, size_); grows, never shrinks
+    std::vector<std::uint32_t> last_;  // per map cell: the position of its latest visit in raw_
+    std::vector<Cell> cell_of_;        // per map cell: the cell (GridMap::cell divides)
+    std::vector<Cell> kept_;           // scratch: the kept chain (no cell twice, so at most the map)
     std::size_t size_ = 0;
     int width_ = 0;
 };
