@@ -84,7 +84,7 @@ class OpenList {
         place(n);
     }
     OpenNode pop() {
-        std::vector<OpenNode>* b = &slots_[lo_ & kMask];
+        Bucket* b = &slots_[lo_ & kMask];
         if (b->empty()) b = advance();
         const OpenNode n = b->back();
         b->pop_back();
@@ -97,6 +97,30 @@ class OpenList {
     std::size_t rebuilds() const noexcept { return rebuilds_; }
 
   private:
+    /// One bucket: a vector used up to `size`, so that the push is a store (std::vector's
+    /// push_back was a call per node: its growth path kept it out of line).
+    struct Bucket {
+        std::vector<OpenNode> nodes;
+        std::size_t size = 0;
+        bool empty() const noexcept { return size == 0; }
+        OpenNode* begin() noexcept { return nodes.data(); }
+        OpenNode* end() noexcept { return nodes.data() + size; }
+        [[gnu::always_inline]] void push_back(const OpenNode& n) {
+            if (size == nodes.size()) [[unlikely]]
+                grow();
+            nodes[size++] = n;
+        }
+        [[gnu::noinline]] void grow() { nodes.resize(std::max<std::size_t>(16, 2 * nodes.size())); }
+        OpenNode& back() noexcept { return nodes[size - 1]; }
+        void pop_back() noexcept { --size; }
+        void clear() noexcept { size = 0; }
+        void insert(OpenNode* at, const OpenNode& n) {
+            const std::size_t i = static_cast<std::size_t>(at - begin());
+            push_back(n);
+            std::copy_backward(begin() + i, end() - 1, end());
+            nodes[i] = n;
+        }
+    };
     static constexpr std::size_t kMask = kSlots - 1, kWords = kSlots / 64;
     static bool before(const OpenNode& a, const OpenNode& b) noexcept {  // a is popped after b
         return a.key > b.key || (a.key == b.key && a.seq < b.seq);
@@ -123,13 +147,13 @@ class OpenList {
             }
             lo_ = a;  // every bucket below the old cursor is empty, this one too
         }
-        std::vector<OpenNode>& b = slots_[a & kMask];  // the cursor's bucket: insert in order
+        Bucket& b = slots_[a & kMask];  // the cursor's bucket: insert in order
         b.insert(std::partition_point(b.begin(), b.end(), [&](const OpenNode& o) { return before(o, n); }), n);
         bits_[(a & kMask) / 64] |= std::uint64_t{1} << (a & 63);
     }
     /// The cursor's bucket is empty: move to the next nonempty one (refilling the ring from the
     /// overflow when it is empty) and sort it.
-    std::vector<OpenNode>* advance() {
+    Bucket* advance() {
         const std::size_t d = next_distance(lo_ & kMask);
         if (d < kSlots) {
             lo_ += d;
@@ -143,20 +167,21 @@ class OpenList {
             waiting.swap(overflow_);
             for (const OpenNode& n : waiting) place(n);  // in push order; the cursor's bucket in order
         }
-        std::vector<OpenNode>& b = slots_[lo_ & kMask];
+        Bucket& b = slots_[lo_ & kMask];
         sort(b);
         return &b;
     }
-    static void sort(std::vector<OpenNode>& b) {
-        if (b.size() > 24) {
+    static void sort(Bucket& b) {
+        if (b.size > 24) {
             std::sort(b.begin(), b.end(), before);
             return;
         }
-        for (std::size_t i = 1; i < b.size(); ++i) {
-            const OpenNode x = b[i];
+        OpenNode* const v = b.begin();
+        for (std::size_t i = 1; i < b.size; ++i) {
+            const OpenNode x = v[i];
             std::size_t j = i;
-            for (; j > 0 && before(x, b[j - 1]); --j) b[j] = b[j - 1];
-            b[j] = x;
+            for (; j > 0 && before(x, v[j - 1]); --j) v[j] = v[j - 1];
+            v[j] = x;
         }
     }
     /// A key below the ring's reach: the ring restarts at its bucket, every node placed again in
@@ -167,7 +192,7 @@ class OpenList {
         all.swap(overflow_);
         for (std::size_t w = 0; w < kWords; ++w)
             for (std::uint64_t m = bits_[w]; m != 0; m &= m - 1) {
-                std::vector<OpenNode>& b = slots_[w * 64 + std::countr_zero(m)];
+                Bucket& b = slots_[w * 64 + std::countr_zero(m)];
                 all.insert(all.end(), b.begin(), b.end());
                 b.clear();
             }
@@ -194,7 +219,7 @@ class OpenList {
         return kSlots;
     }
 
-    std::vector<OpenNode> slots_[kSlots];
+    Bucket slots_[kSlots];
     std::uint64_t bits_[kWords] = {};  // bit a % kSlots: bucket a holds nodes
     std::vector<OpenNode> overflow_;   // keys at or beyond limit_, in push order
     std::uint64_t lo_ = 0;             // the cursor: the bucket of the last pop (or the least)
