@@ -62,8 +62,8 @@ struct OpenNode {
 /// a key below the ring's reach rebuilds the ring below it from all nodes in push order.
 class OpenList {
   public:
-    static constexpr int kShift = kTieBits + 13;  // bucket of a key: f in units of 2^-7
-    static constexpr std::size_t kSlots = 512;
+    static constexpr int kShift = kTieBits + 14;  // bucket of a key: f in units of 2^-6
+    static constexpr std::size_t kSlots = 256;
 
     bool empty() const noexcept { return size_ == 0; }
     std::size_t size() const noexcept { return size_; }
