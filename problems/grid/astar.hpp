@@ -114,17 +114,16 @@ class OpenList {
         OpenNode& back() noexcept { return nodes[size - 1]; }
         void pop_back() noexcept { --size; }
         void clear() noexcept { size = 0; }
-        void insert(OpenNode* at, const OpenNode& n) {
-            const std::size_t i = static_cast<std::size_t>(at - begin());
-            push_back(n);
-            std::copy_backward(begin() + i, end() - 1, end());
-            nodes[i] = n;
-        }
     };
     static constexpr std::size_t kMask = kSlots - 1, kWords = kSlots / 64;
-    static bool before(const OpenNode& a, const OpenNode& b) noexcept {  // a is popped after b
-        return a.key > b.key || (a.key == b.key && a.seq < b.seq);
+    /// a is popped after b. Without branches (their outcome is data, mispredicted half the
+    /// time) and inline (std::sort called it through a pointer).
+    [[gnu::always_inline]] static bool before(const OpenNode& a, const OpenNode& b) noexcept {
+        return (a.key > b.key) | ((a.key == b.key) & (a.seq < b.seq));
     }
+    struct Before {
+        bool operator()(const OpenNode& a, const OpenNode& b) const noexcept { return before(a, b); }
+    };
     [[gnu::always_inline]] void place(const OpenNode& n) {
         const std::uint64_t a = n.key >> kShift;
         if (a > lo_ && a < limit_) [[likely]] {
@@ -148,7 +147,11 @@ class OpenList {
             lo_ = a;  // every bucket below the old cursor is empty, this one too
         }
         Bucket& b = slots_[a & kMask];  // the cursor's bucket: insert in order
-        b.insert(std::partition_point(b.begin(), b.end(), [&](const OpenNode& o) { return before(o, n); }), n);
+        b.push_back(n);                 // then moved to its place, from the back (a short way: the bucket is small)
+        OpenNode* const v = b.begin();
+        std::size_t j = b.size - 1;
+        for (; j > 0 && n.key > v[j - 1].key; --j) v[j] = v[j - 1];  // n is the latest push
+        v[j] = n;
         bits_[(a & kMask) / 64] |= std::uint64_t{1} << (a & 63);
     }
     /// The cursor's bucket is empty: move to the next nonempty one (refilling the ring from the
@@ -171,16 +174,19 @@ class OpenList {
         sort(b);
         return &b;
     }
+    /// Into the cursor's order (key descending, then push order). The insertion sort compares keys
+    /// only: it is stable, and a bucket holds equal keys in push order (nodes are appended in push
+    /// order, to a bucket that is either unsorted or, when the cursor was there before, sorted).
     static void sort(Bucket& b) {
         if (b.size > 24) {
-            std::sort(b.begin(), b.end(), before);
+            std::sort(b.begin(), b.end(), Before{});
             return;
         }
         OpenNode* const v = b.begin();
         for (std::size_t i = 1; i < b.size; ++i) {
             const OpenNode x = v[i];
             std::size_t j = i;
-            for (; j > 0 && before(x, v[j - 1]); --j) v[j] = v[j - 1];
+            for (; j > 0 && x.key > v[j - 1].key; --j) v[j] = v[j - 1];
             v[j] = x;
         }
     }
