@@ -249,6 +249,19 @@ class AStar {
         const auto start = static_cast<std::uint32_t>(map.index(s));
         const auto goal = static_cast<std::uint32_t>(map.index(g));
         open(start, 0.0, key(octile(s, g), 0.0), start);
+        // Two copies of the loop, so that the search of a whole map tests no window per neighbour.
+        return window ? expand<true>(map, start, goal, g, w, out, corner_cutting)
+                      : expand<false>(map, start, goal, g, w, out, corner_cutting);
+    }
+
+    /// Nodes expanded (taken off the open list) since construction.
+    std::int64_t expansions() const noexcept { return expansions_; }
+
+  private:
+    /// The search from the opened start to the goal; with Windowed, only in w.
+    template <bool Windowed>
+    double expand(const GridMap& map, std::uint32_t start, std::uint32_t goal, Cell g, const Window& w, Path* out,
+                  bool corner_cutting) {
         // Loop invariants in locals (the compiler cannot keep them in registers across the
         // vector stores otherwise): index offsets of the 8 steps, the goal, the stamps.
         const auto width = static_cast<std::uint32_t>(map.width());
@@ -281,13 +294,13 @@ class AStar {
             const Cell c{static_cast<int>(index - cy * width), static_cast<int>(cy)};
             for (unsigned m = map.moves(index, corner_cutting); m != 0; m &= m - 1) {
                 const int d = std::countr_zero(m);
-                const Cell n{c.x + kDx[d], c.y + kDy[d]};
-                if (window && !w.contains(n)) continue;
+                if (Windowed && !w.contains(Cell{c.x + kDx[d], c.y + kDy[d]})) continue;
                 const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + offsets[d]);
                 Record& r = rec[ni];
                 if (r.stamp == closed) continue;
                 const double ng = gi + (is_diagonal(d) ? kSqrt2 : 1.0);
                 if (r.stamp == seen && r.g <= ng) continue;
+                const Cell n{c.x + kDx[d], c.y + kDy[d]};  // only here: most neighbours stop above
                 const std::uint64_t k = key(ng + octile(n, g), ng);
                 r.stamp = seen;
                 r.g = ng;
@@ -303,10 +316,6 @@ class AStar {
         return -1.0;
     }
 
-    /// Nodes expanded (taken off the open list) since construction.
-    std::int64_t expansions() const noexcept { return expansions_; }
-
-  private:
     /// The priority as one integer: f in units of 2^-20 above kTieBits bits that put the larger g
     /// first among equal f (deeper nodes first expand fewer nodes on open ground). Distinct octile
     /// lengths a + b sqrt(2) on maps below a few thousand cells a side differ by far more than
