@@ -266,7 +266,11 @@ class AStar {
         // vector stores otherwise): index offsets of the 8 steps, the goal, the stamps.
         const auto width = static_cast<std::uint32_t>(map.width());
         std::ptrdiff_t offsets[8];
-        for (int d = 0; d < 8; ++d) offsets[d] = map.offset(d);
+        double cost[8];  // the step lengths, so that a step's g is one load and add
+        for (int d = 0; d < 8; ++d) {
+            offsets[d] = map.offset(d);
+            cost[d] = is_diagonal(d) ? kSqrt2 : 1.0;
+        }
         Record* const rec = arrays_.records.data();
         const std::uint32_t seen = arrays_.open, closed = arrays_.closed();
         while (!heap_.empty() || !level_.empty()) {
@@ -298,7 +302,7 @@ class AStar {
                 const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + offsets[d]);
                 Record& r = rec[ni];
                 if (r.stamp == closed) continue;
-                const double ng = gi + (is_diagonal(d) ? kSqrt2 : 1.0);
+                const double ng = gi + cost[d];
                 if (r.stamp == seen && r.g <= ng) continue;
                 const Cell n{c.x + kDx[d], c.y + kDy[d]};  // only here: most neighbours stop above
                 const std::uint64_t k = key(ng + octile(n, g), ng);
