@@ -50,16 +50,17 @@ struct OpenNode {
 /// A*'s open list: pops the least key and, among equal keys, the node pushed last, for any
 /// sequence of keys (this order is A*'s tie-breaking, and the results depend on it bit for bit).
 ///
-/// A bucket queue on f: bucket a holds the keys with key >> kShift == a (f in steps of 2^-7), in a
+/// A bucket queue on f: bucket a holds the keys with key >> kShift == a (f in steps of 2^-6), in a
 /// ring of kSlots buckets from the cursor `lo_` (no nonempty bucket lies below it). A consistent
 /// heuristic keeps the open f within 2 sqrt(2) of the least, so the ring (4 units of f) holds them
 /// all and a node is stored once and never moved, where the radix heap before it moved each node
 /// about 7 times. Only the cursor's bucket is kept sorted (key descending, then push order, so its
 /// back is the next node); a bucket is sorted when the cursor reaches it, and a push into the
-/// cursor's bucket is inserted in place. The exact fallbacks, for keys no consistent heuristic
-/// makes but A*'s rounding could: keys beyond the ring wait in `overflow_` (in push order; the ring
-/// stops advancing meanwhile, so that no bucket receives a key before an older overflowed one), and
-/// a key below the ring's reach rebuilds the ring below it from all nodes in push order.
+/// cursor's bucket is inserted in place (a key below the last pop too). The exact fallbacks, for
+/// keys A* with a consistent heuristic never makes (beyond the ring) or hardly ever (below the
+/// cursor's bucket, through the equal-f stack and rounding): keys beyond the ring wait in `overflow_` (in push order;
+/// the ring stops advancing meanwhile, so that no bucket receives a key before an older overflowed one), and a key
+/// below the ring's reach rebuilds the ring below it from all nodes in push order.
 class OpenList {
   public:
     static constexpr int kShift = kTieBits + 14;  // bucket of a key: f in units of 2^-6
