@@ -110,3 +110,138 @@ TEST_CASE("A*'s key rounding equals std::llround where the keys need it", "[grid
         CHECK(round_half_up(x) == static_cast<std::uint64_t>(std::llround(x)));
     }
 }
+
+namespace {
+
+/// The radix heap A* used before OpenList (session 6), kept as the reference for monotone keys
+/// (no key below the last popped), where its order is "least key, then the last push".
+class OldRadixHeap {
+  public:
+    bool empty() const noexcept { return size_ == 0; }
+    void push(OpenNode n) {
+        const std::size_t b = bucket(n.key);
+        buckets_[b].push_back(n);
+        if (b > 0) used_ |= std::uint64_t{1} << (b - 1);
+        ++size_;
+    }
+    OpenNode pop() {
+        if (buckets_[0].empty()) {
+            const std::size_t i = 1 + static_cast<std::size_t>(std::countr_zero(used_));
+            std::uint64_t least = buckets_[i].front().key;
+            for (const OpenNode& n : buckets_[i]) least = std::min(least, n.key);
+            last_ = least;
+            used_ &= ~(std::uint64_t{1} << (i - 1));
+            std::vector<OpenNode> moved;
+            moved.swap(buckets_[i]);
+            for (const OpenNode& n : moved) {
+                const std::size_t b = bucket(n.key);
+                buckets_[b].push_back(n);
+                if (b > 0) used_ |= std::uint64_t{1} << (b - 1);
+            }
+        }
+        const OpenNode n = buckets_[0].back();
+        buckets_[0].pop_back();
+        --size_;
+        return n;
+    }
+
+  private:
+    std::size_t bucket(std::uint64_t key) const noexcept {
+        return key == last_ ? 0 : 64 - static_cast<std::size_t>(std::countl_zero(key ^ last_));
+    }
+    std::vector<OpenNode> buckets_[65];
+    std::uint64_t used_ = 0, last_ = 0;
+    std::size_t size_ = 0;
+};
+
+/// The order OpenList must keep, by definition: least key, then the node pushed last.
+class ExactOrder {
+  public:
+    bool empty() const noexcept { return nodes_.empty(); }
+    void push(OpenNode n) { nodes_.push_back(n); }
+    OpenNode pop() {
+        std::size_t best = 0;
+        for (std::size_t i = 1; i < nodes_.size(); ++i)
+            if (nodes_[i].key <= nodes_[best].key) best = i;  // later pushes win ties
+        const OpenNode n = nodes_[best];
+        nodes_.erase(nodes_.begin() + static_cast<std::ptrdiff_t>(best));
+        return n;
+    }
+
+  private:
+    std::vector<OpenNode> nodes_;
+};
+
+constexpr std::uint64_t kBucket = std::uint64_t{1} << OpenList::kShift;  // keys per bucket
+
+/// A key near `base`: mostly a few buckets above (A*'s case), with many equal keys, and with the
+/// given odds a key below `base` (by a hair or by many buckets) or far beyond the ring.
+std::uint64_t draw_key(pride::Rng& rng, std::uint64_t base, double below, double beyond) {
+    const double u = rng.uniform();
+    if (u < below) {
+        const std::uint64_t drop = rng.uniform() < 0.5 ? rng.below(4) : rng.below(2000) * kBucket;
+        return base > drop ? base - drop : 0;
+    }
+    if (u < below + beyond) return base + (OpenList::kSlots + rng.below(3 * OpenList::kSlots)) * kBucket;
+    const std::uint64_t up = rng.below(8) == 0 ? 0 : rng.below(4 * kBucket);
+    return base + (up & ~static_cast<std::uint64_t>(rng.below(2) == 0 ? 0xff : 0));  // coarse steps make ties
+}
+
+/// Pushes and pops interleaved on `list` and `ref`, the keys drawn near the last popped; every pop
+/// must give the same node (its index names its push).
+template <class Ref>
+void compare(pride::Rng& rng, OpenList& list, Ref& ref, double below, double beyond, int steps) {
+    std::uint32_t pushed = 0;
+    std::uint64_t last = 1ull << 40;
+    for (int i = 0; i < steps; ++i) {
+        if (list.empty() || rng.uniform() < 0.55) {
+            const OpenNode n{draw_key(rng, last, below, beyond), pushed++};
+            list.push(n);
+            ref.push(n);
+        } else {
+            const OpenNode a = list.pop(), b = ref.pop();
+            REQUIRE(a.index == b.index);
+            REQUIRE(a.key == b.key);
+            last = a.key;
+        }
+    }
+    while (!list.empty()) {
+        REQUIRE(!ref.empty());
+        const OpenNode a = list.pop(), b = ref.pop();
+        REQUIRE(a.index == b.index);
+    }
+    CHECK(ref.empty());
+}
+
+}  // namespace
+
+TEST_CASE("OpenList pops what the old radix heap popped when no key falls below the last pop", "[grid][astar]") {
+    pride::Rng rng(7);
+    for (int round = 0; round < 20; ++round) {
+        OpenList list;
+        OldRadixHeap old;
+        compare(rng, list, old, 0.0, round % 2 == 0 ? 0.0 : 0.02, 20000);
+        if (round % 2 == 1) CHECK(list.overflowed() > 0);
+    }
+}
+
+TEST_CASE("OpenList keeps least key then last push for any keys, its fallbacks included", "[grid][astar]") {
+    // Keys below the last pop (into the cursor's bucket, below it within the ring, and so far below
+    // that the ring is rebuilt) and beyond the ring (the overflow), checked against the definition.
+    pride::Rng rng(8);
+    std::size_t overflowed = 0, rebuilds = 0;
+    for (int round = 0; round < 30; ++round) {
+        OpenList list;
+        ExactOrder exact;
+        compare(rng, list, exact, 0.05, 0.03, 4000);
+        overflowed += list.overflowed();
+        rebuilds += list.rebuilds();
+        // Reused after clear() with nodes left in it, as A* does per query.
+        for (std::uint32_t i = 0; i < 50; ++i) list.push({draw_key(rng, 1ull << 40, 0.1, 0.1), i});
+        list.clear();
+        ExactOrder again;
+        compare(rng, list, again, 0.02, 0.01, 1000);
+    }
+    CHECK(overflowed > 100);
+    CHECK(rebuilds > 100);
+}

@@ -1,12 +1,13 @@
 #pragma once
 // A* with the octile heuristic on a GridMap: 8-connected, step costs 1 and sqrt(2), no corner
 // cutting by default (the rule behind the Moving AI optimal lengths). Flat arrays indexed by cell,
-// a radix heap with lazy deletion, and generation stamps, so one AStar serves many queries on one
+// a bucket queue on f with lazy deletion (OpenList), and generation stamps, so one AStar serves many queries on one
 // map (or on several, resizing once) without clearing or allocating per node.
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -36,6 +37,207 @@ struct Window {
     bool contains(Cell c) const noexcept { return c.x >= x0 && c.x <= x1 && c.y >= y0 && c.y <= y1; }
 };
 
+/// Bits of an A* key below f (they order equal f by g, larger g first).
+inline constexpr int kTieBits = 19;
+
+/// An entry of A*'s open list: its priority key, its cell and the order of its push.
+struct OpenNode {
+    std::uint64_t key;
+    std::uint32_t index;
+    std::uint32_t seq = 0;  // set by OpenList::push: ties between equal keys go to the later push
+};
+
+/// A*'s open list: pops the least key and, among equal keys, the node pushed last, for any
+/// sequence of keys (this order is A*'s tie-breaking, and the results depend on it bit for bit).
+///
+/// A bucket queue on f: bucket a holds the keys with key >> kShift == a (f in steps of 2^-6), in a
+/// ring of kSlots buckets from the cursor `lo_` (no nonempty bucket lies below it). A consistent
+/// heuristic keeps the open f within 2 sqrt(2) of the least, so the ring (4 units of f) holds them
+/// all and a node is stored once and never moved, where the radix heap before it moved each node
+/// about 7 times. Only the cursor's bucket is kept sorted (key descending, then push order, so its
+/// back is the next node); a bucket is sorted when the cursor reaches it, and a push into the
+/// cursor's bucket is inserted in place (a key below the last pop too). A key in a bucket below
+/// the cursor (in A*: when the list ran empty, the cursor restarts at the next push, and the
+/// equal-f stack's nodes push lower keys after it) moves the cursor down when the ring's limit
+/// allows, and otherwise rebuilds the ring below it from all nodes in push order (on the small
+/// scenario files up to 5 % of the instructions; none on the large ones). Keys beyond the ring
+/// (which a consistent heuristic never makes) wait in `overflow_` in push order; the ring stops
+/// advancing meanwhile, so that no bucket receives a key before an older overflowed one.
+class OpenList {
+  public:
+    static constexpr int kShift = kTieBits + 14;  // bucket of a key: f in units of 2^-6
+    static constexpr std::size_t kSlots = 256;
+
+    bool empty() const noexcept { return size_ == 0; }
+    std::size_t size() const noexcept { return size_; }
+    void clear() noexcept {
+        for (std::size_t w = 0; w < kWords; ++w)
+            for (std::uint64_t m = bits_[w]; m != 0; m &= m - 1) slots_[w * 64 + std::countr_zero(m)].clear();
+        std::fill(std::begin(bits_), std::end(bits_), 0);
+        overflow_.clear();
+        size_ = 0;
+        seq_ = 0;
+    }
+    [[gnu::always_inline]] void push(OpenNode n) {
+        n.seq = seq_++;
+        if (size_++ == 0) {  // empty: the ring starts at this key's bucket
+            lo_ = n.key >> kShift;
+            limit_ = lo_ + kSlots;
+        }
+        place(n);
+    }
+    OpenNode pop() {
+        Bucket* b = &slots_[lo_ & kMask];
+        if (b->empty()) b = advance();
+        const OpenNode n = b->back();
+        b->pop_back();
+        if (b->empty()) bits_[(lo_ & kMask) / 64] &= ~(std::uint64_t{1} << (lo_ & 63));
+        --size_;
+        return n;
+    }
+    /// Times the exact fallbacks ran (for the tests): keys overflowed, rebuilds below the ring.
+    std::size_t overflowed() const noexcept { return overflowed_; }
+    std::size_t rebuilds() const noexcept { return rebuilds_; }
+
+  private:
+    /// One bucket: a vector used up to `size`, so that the push is a store (std::vector's
+    /// push_back was a call per node: its growth path kept it out of line).
+    struct Bucket {
+        std::vector<OpenNode> nodes;
+        std::size_t size = 0;
+        bool empty() const noexcept { return size == 0; }
+        OpenNode* begin() noexcept { return nodes.data(); }
+        OpenNode* end() noexcept { return nodes.data() + size; }
+        [[gnu::always_inline]] void push_back(const OpenNode& n) {
+            if (size == nodes.size()) [[unlikely]]
+                grow();
+            nodes[size++] = n;
+        }
+        [[gnu::noinline]] void grow() { nodes.resize(std::max<std::size_t>(16, 2 * nodes.size())); }
+        OpenNode& back() noexcept { return nodes[size - 1]; }
+        void pop_back() noexcept { --size; }
+        void clear() noexcept { size = 0; }
+    };
+    static constexpr std::size_t kMask = kSlots - 1, kWords = kSlots / 64;
+    /// a is popped after b; a type, so that std::sort inlines it (a function pointer it called).
+    struct Before {
+        bool operator()(const OpenNode& a, const OpenNode& b) const noexcept {
+            return a.key != b.key ? a.key > b.key : a.seq < b.seq;
+        }
+    };
+    [[gnu::always_inline]] void place(const OpenNode& n) {
+        const std::uint64_t a = n.key >> kShift;
+        if (a > lo_ && a < limit_) [[likely]] {
+            slots_[a & kMask].push_back(n);
+            bits_[(a & kMask) / 64] |= std::uint64_t{1} << (a & 63);
+        } else {
+            place_rare(n, a);
+        }
+    }
+    void place_rare(const OpenNode& n, std::uint64_t a) {
+        if (a >= limit_) {
+            overflow_.push_back(n);
+            ++overflowed_;
+            return;
+        }
+        if (a < lo_) {
+            if (limit_ - a > kSlots) {
+                rebuild(n, a);
+                return;
+            }
+            lo_ = a;  // every bucket below the old cursor is empty, this one too
+        }
+        // The cursor's bucket: n in its place, after every key at least its own (n is the latest
+        // push). Found by bisection: on open ground the bucket holds thousands of nodes.
+        Bucket& b = slots_[a & kMask];
+        const auto at = static_cast<std::size_t>(
+            std::partition_point(b.begin(), b.end(), [&](const OpenNode& o) { return o.key >= n.key; }) - b.begin());
+        b.push_back(n);
+        std::copy_backward(b.begin() + at, b.end() - 1, b.end());
+        b.begin()[at] = n;
+        bits_[(a & kMask) / 64] |= std::uint64_t{1} << (a & 63);
+    }
+    /// The cursor's bucket is empty: move to the next nonempty one (refilling the ring from the
+    /// overflow when it is empty) and sort it.
+    Bucket* advance() {
+        const std::size_t d = next_distance(lo_ & kMask);
+        if (d < kSlots) {
+            lo_ += d;
+            if (overflow_.empty()) limit_ = lo_ + kSlots;
+        } else {  // the ring is empty; the overflow is not (size_ > 0)
+            std::uint64_t least = overflow_.front().key;
+            for (const OpenNode& n : overflow_) least = std::min(least, n.key);
+            lo_ = least >> kShift;
+            limit_ = lo_ + kSlots;
+            std::vector<OpenNode> waiting;
+            waiting.swap(overflow_);
+            for (const OpenNode& n : waiting) place(n);  // in push order; the cursor's bucket in order
+        }
+        Bucket& b = slots_[lo_ & kMask];
+        sort(b);
+        return &b;
+    }
+    /// Into the cursor's order (key descending, then push order). The insertion sort compares keys
+    /// only: it is stable, and a bucket holds equal keys in push order (nodes are appended in push
+    /// order, to a bucket that is either unsorted or, when the cursor was there before, sorted).
+    static void sort(Bucket& b) {
+        if (b.size > 24) {
+            std::sort(b.begin(), b.end(), Before{});
+            return;
+        }
+        OpenNode* const v = b.begin();
+        for (std::size_t i = 1; i < b.size; ++i) {
+            const OpenNode x = v[i];
+            std::size_t j = i;
+            for (; j > 0 && x.key > v[j - 1].key; --j) v[j] = v[j - 1];
+            v[j] = x;
+        }
+    }
+    /// A key below the ring's reach: the ring restarts at its bucket, every node placed again in
+    /// push order (buckets then hold their nodes in push order, as if pushed into this ring).
+    void rebuild(const OpenNode& n, std::uint64_t a) {
+        ++rebuilds_;
+        std::vector<OpenNode> all;
+        all.swap(overflow_);
+        for (std::size_t w = 0; w < kWords; ++w)
+            for (std::uint64_t m = bits_[w]; m != 0; m &= m - 1) {
+                Bucket& b = slots_[w * 64 + std::countr_zero(m)];
+                all.insert(all.end(), b.begin(), b.end());
+                b.clear();
+            }
+        std::fill(std::begin(bits_), std::end(bits_), 0);
+        all.push_back(n);
+        std::sort(all.begin(), all.end(), [](const OpenNode& x, const OpenNode& y) { return x.seq < y.seq; });
+        lo_ = a;
+        limit_ = a + kSlots;
+        for (const OpenNode& m : all) place(m);
+    }
+    /// The distance from slot s to the next slot (cyclically, s itself last) whose bucket is
+    /// nonempty, or kSlots when there is none.
+    std::size_t next_distance(std::size_t s) const noexcept {
+        const std::size_t w0 = s / 64, bit = s % 64;
+        const std::uint64_t above = bit == 63 ? 0 : bits_[w0] & (~std::uint64_t{0} << (bit + 1));
+        if (above != 0) return static_cast<std::size_t>(std::countr_zero(above)) - bit;
+        for (std::size_t k = 1; k <= kWords; ++k) {
+            const std::size_t w = (w0 + k) % kWords;
+            if (bits_[w] != 0) {
+                const std::size_t slot = w * 64 + static_cast<std::size_t>(std::countr_zero(bits_[w]));
+                return (slot + kSlots - s) % kSlots == 0 ? kSlots : (slot + kSlots - s) % kSlots;
+            }
+        }
+        return kSlots;
+    }
+
+    Bucket slots_[kSlots];
+    std::uint64_t bits_[kWords] = {};  // bit a % kSlots: bucket a holds nodes
+    std::vector<OpenNode> overflow_;   // keys at or beyond limit_, in push order
+    std::uint64_t lo_ = 0;             // the cursor: the bucket of the last pop (or the least)
+    std::uint64_t limit_ = 0;          // buckets below it are in the ring; lo_ < limit_ <= lo_ + kSlots
+    std::size_t size_ = 0;
+    std::uint32_t seq_ = 0;
+    std::size_t overflowed_ = 0, rebuilds_ = 0;
+};
+
 class AStar {
   public:
     /// The optimal length from s to g, or -1 when g cannot be reached (inside `window` when given).
@@ -50,11 +252,28 @@ class AStar {
         const auto start = static_cast<std::uint32_t>(map.index(s));
         const auto goal = static_cast<std::uint32_t>(map.index(g));
         open(start, 0.0, key(octile(s, g), 0.0), start);
+        // Two copies of the loop, so that the search of a whole map tests no window per neighbour.
+        return window ? expand<true>(map, start, goal, g, w, out, corner_cutting)
+                      : expand<false>(map, start, goal, g, w, out, corner_cutting);
+    }
+
+    /// Nodes expanded (taken off the open list) since construction.
+    std::int64_t expansions() const noexcept { return expansions_; }
+
+  private:
+    /// The search from the opened start to the goal; with Windowed, only in w.
+    template <bool Windowed>
+    double expand(const GridMap& map, std::uint32_t start, std::uint32_t goal, Cell g, const Window& w, Path* out,
+                  bool corner_cutting) {
         // Loop invariants in locals (the compiler cannot keep them in registers across the
         // vector stores otherwise): index offsets of the 8 steps, the goal, the stamps.
         const auto width = static_cast<std::uint32_t>(map.width());
         std::ptrdiff_t offsets[8];
-        for (int d = 0; d < 8; ++d) offsets[d] = map.offset(d);
+        double cost[8];  // the step lengths, so that a step's g is one load and add
+        for (int d = 0; d < 8; ++d) {
+            offsets[d] = map.offset(d);
+            cost[d] = is_diagonal(d) ? kSqrt2 : 1.0;
+        }
         Record* const rec = arrays_.records.data();
         const std::uint32_t seen = arrays_.open, closed = arrays_.closed();
         while (!heap_.empty() || !level_.empty()) {
@@ -82,13 +301,13 @@ class AStar {
             const Cell c{static_cast<int>(index - cy * width), static_cast<int>(cy)};
             for (unsigned m = map.moves(index, corner_cutting); m != 0; m &= m - 1) {
                 const int d = std::countr_zero(m);
-                const Cell n{c.x + kDx[d], c.y + kDy[d]};
-                if (window && !w.contains(n)) continue;
+                if (Windowed && !w.contains(Cell{c.x + kDx[d], c.y + kDy[d]})) continue;
                 const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + offsets[d]);
                 Record& r = rec[ni];
                 if (r.stamp == closed) continue;
-                const double ng = gi + (is_diagonal(d) ? kSqrt2 : 1.0);
+                const double ng = gi + cost[d];
                 if (r.stamp == seen && r.g <= ng) continue;
+                const Cell n{c.x + kDx[d], c.y + kDy[d]};  // only here: most neighbours stop above
                 const std::uint64_t k = key(ng + octile(n, g), ng);
                 r.stamp = seen;
                 r.g = ng;
@@ -104,74 +323,16 @@ class AStar {
         return -1.0;
     }
 
-    /// Nodes expanded (taken off the open list) since construction.
-    std::int64_t expansions() const noexcept { return expansions_; }
-
-  private:
     /// The priority as one integer: f in units of 2^-20 above kTieBits bits that put the larger g
     /// first among equal f (deeper nodes first expand fewer nodes on open ground). Distinct octile
     /// lengths a + b sqrt(2) on maps below a few thousand cells a side differ by far more than
     /// 2^-20, so the order by f is exact; f must stay below 2^25.
-    static constexpr int kTieBits = 19;
     static std::uint64_t key(double f, double g) noexcept {
         const auto fq = round_half_up(f * 1048576.0);
         const auto gq = std::min<std::uint64_t>(round_half_up(g), (1u << kTieBits) - 1);
         return (fq << kTieBits) | ((1u << kTieBits) - 1 - gq);
     }
-    struct Node {
-        std::uint64_t key;
-        std::uint32_t index;
-    };
-
-    /// A radix heap (Ahuja, Mehlhorn, Orlin and Tarjan 1990): for monotone integer keys, which A*
-    /// with a consistent heuristic pops here (equal-f nodes bypass it through level_), pushes are
-    /// O(1) and each node moves down at most 64 buckets.
-    class RadixHeap {
-      public:
-        bool empty() const noexcept { return size_ == 0; }
-        void clear() noexcept {
-            buckets_[0].clear();
-            for (std::uint64_t m = used_; m != 0; m &= m - 1) buckets_[1 + std::countr_zero(m)].clear();
-            used_ = 0;
-            last_ = 0;
-            size_ = 0;
-        }
-        [[gnu::always_inline]] void push(Node n) {
-            const std::size_t b = bucket(n.key);
-            buckets_[b].push_back(n);
-            if (b > 0) used_ |= std::uint64_t{1} << (b - 1);
-            ++size_;
-        }
-        Node pop() {
-            if (buckets_[0].empty()) {  // refill bucket 0 from the first non-empty bucket
-                const std::size_t i = 1 + static_cast<std::size_t>(std::countr_zero(used_));
-                std::uint64_t least = buckets_[i].front().key;
-                for (const Node& n : buckets_[i]) least = std::min(least, n.key);
-                last_ = least;
-                used_ &= ~(std::uint64_t{1} << (i - 1));
-                for (const Node& n : buckets_[i]) push_moved(n);
-                buckets_[i].clear();
-            }
-            const Node n = buckets_[0].back();
-            buckets_[0].pop_back();
-            --size_;
-            return n;
-        }
-
-      private:
-        std::size_t bucket(std::uint64_t key) const noexcept {
-            return key == last_ ? 0 : 64 - static_cast<std::size_t>(std::countl_zero(key ^ last_));
-        }
-        void push_moved(Node n) {
-            const std::size_t b = bucket(n.key);
-            buckets_[b].push_back(n);
-            if (b > 0) used_ |= std::uint64_t{1} << (b - 1);
-        }
-        std::vector<Node> buckets_[65];
-        std::uint64_t used_ = 0;  // bit b - 1: bucket b (1..64) holds nodes
-        std::uint64_t last_ = 0;
-        std::size_t size_ = 0;
-    };
+    using Node = OpenNode;
 
     void prepare(std::size_t cells) {
         arrays_.prepare(cells);
@@ -195,7 +356,7 @@ class AStar {
 
     using Record = PackedSearchArrays::Record;
     PackedSearchArrays arrays_;
-    RadixHeap heap_;
+    OpenList heap_;
     std::vector<Node> level_;  // nodes with the f of the node being expanded, taken before the heap
     std::int64_t expansions_ = 0;
 };
