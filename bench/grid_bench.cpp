@@ -342,7 +342,8 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (!decode_only && !astar_only) bench_rule_book();
-        if (!decode_only) fmt::print("part,what,queries,expansions,expansions_per_s,ms_per_query,max_diff,warm_expansions_per_s\n");
+        if (!decode_only)
+            fmt::print("part,what,queries,expansions,expansions_per_s,ms_per_query,max_diff,warm_expansions_per_s\n");
         if (!decode_only)
             for (const auto& s : scens) bench_astar(s);
         if (astar_only) return 0;
