@@ -31,6 +31,18 @@ std::vector<std::string> rows(const fs::path& store) {
     sqlite3_close(db);
     return out;
 }
+
+/// `pride bench CONFIG ARGS --out STORE` on `ranks` local MPI ranks, its output in `log`; the exit
+/// status. Open MPI leaks in its own libraries at exit, which LeakSanitizer (sanitizer builds)
+/// reports: leak checking is off for the ranks, and only for them.
+int mpi_bench(int ranks, const std::string& config, const std::string& args, const fs::path& store,
+              const fs::path& log) {
+    const std::string command = std::string("ASAN_OPTIONS=detect_leaks=0 '") + PRIDE_MPIEXEC +
+                                "' --allow-run-as-root --oversubscribe -np " + std::to_string(ranks) + " '" +
+                                PRIDE_EXE + "' bench '" + config + "' " + args + " --out '" + store.string() + "' > '" +
+                                log.string() + "' 2>&1";
+    return std::system(command.c_str());
+}
 }  // namespace
 
 TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[bench][mpi]") {
@@ -51,12 +63,7 @@ TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[benc
     const std::string config = (dir / "c.toml").string();
     REQUIRE(pride::test::run_pride("bench '" + config + "' --jobs 2 --out '" + (dir / "threads.sqlite").string() + "'")
                 .status == 0);
-    // Open MPI leaks in its own libraries at exit, which LeakSanitizer (sanitizer builds) reports:
-    // leak checking is off for the ranks, and only for them.
-    const std::string mpi = std::string("ASAN_OPTIONS=detect_leaks=0 '") + PRIDE_MPIEXEC +
-                            "' --allow-run-as-root --oversubscribe -np 2 '" + PRIDE_EXE + "' bench '" + config +
-                            "' --out '" + (dir / "mpi.sqlite").string() + "' > '" + (dir / "out").string() + "' 2>&1";
-    REQUIRE(std::system(mpi.c_str()) == 0);
+    REQUIRE(mpi_bench(2, config, "", dir / "mpi.sqlite", dir / "out") == 0);
     const auto a = rows(dir / "threads.sqlite"), b = rows(dir / "mpi.sqlite");
     CHECK(a.size() == 12);
     CHECK(a == b);
@@ -70,11 +77,7 @@ TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[benc
         CHECK(text.find("0 runs stored") == std::string::npos);
     }
     // Every rank runs --jobs threads (rank 0 beside handing runs out): the same values again.
-    const std::string threaded = std::string("ASAN_OPTIONS=detect_leaks=0 '") + PRIDE_MPIEXEC +
-                                 "' --allow-run-as-root --oversubscribe -np 2 '" + PRIDE_EXE + "' bench '" + config +
-                                 "' --jobs 2 --out '" + (dir / "mpi-jobs.sqlite").string() + "' > '" +
-                                 (dir / "out2").string() + "' 2>&1";
-    REQUIRE(std::system(threaded.c_str()) == 0);
+    REQUIRE(mpi_bench(2, config, "--jobs 2", dir / "mpi-jobs.sqlite", dir / "out2") == 0);
     CHECK(rows(dir / "mpi-jobs.sqlite") == a);
     fs::remove_all(dir);
 }
@@ -96,10 +99,7 @@ TEST_CASE("bench: mpirun -np 3 on many short runs (the ranks add slots) stores e
     const std::string config = (dir / "c.toml").string();
     REQUIRE(pride::test::run_pride("bench '" + config + "' --jobs 2 --out '" + (dir / "threads.sqlite").string() + "'")
                 .status == 0);
-    const std::string mpi = std::string("ASAN_OPTIONS=detect_leaks=0 '") + PRIDE_MPIEXEC +
-                            "' --allow-run-as-root --oversubscribe -np 3 '" + PRIDE_EXE + "' bench '" + config +
-                            "' --out '" + (dir / "mpi.sqlite").string() + "' > '" + (dir / "out").string() + "' 2>&1";
-    REQUIRE(std::system(mpi.c_str()) == 0);
+    REQUIRE(mpi_bench(3, config, "", dir / "mpi.sqlite", dir / "out") == 0);
     const auto a = rows(dir / "threads.sqlite"), b = rows(dir / "mpi.sqlite");
     CHECK(a.size() == 600);
     CHECK(a == b);
