@@ -1,6 +1,6 @@
 // Issue 15 (framework cost per evaluation): the faster forms of PSO's move, harmony search's
-// improvisation (and its integer coin tests), SBX's selects and FixedPower's powers of two give
-// the same bits as the plain forms they replace.
+// improvisation (and its integer coin tests), SBX's selects and vector passes and FixedPower's
+// powers of two give the same bits as the plain forms they replace.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/parts/crossover.hpp"
 #include "algorithms/parts/power.hpp"
 #include "algorithms/parts/whale_moves.hpp"
 #include "algorithms/pso.hpp"
@@ -108,6 +109,91 @@ TEST_CASE("FixedPower: the roots of apply (four lanes where AVX is) give the sca
             root.apply(std::span<double>(v));
             INFO("1/2^" << k << ", n = " << n);
             REQUIRE(same_bits(v, expected));
+        }
+    }
+}
+
+namespace {
+
+/// SBX as it was written before its vector passes: coordinate by coordinate, in increasing order
+/// (SbxCrossover::Prepared::cross, without the test of its probability).
+void sbx_by_coordinate(double eta, std::vector<double>& a, std::vector<double>& b, const std::vector<double>& lo,
+                       const std::vector<double>& hi, pride::Rng& rng) {
+    const pride::FixedPower power(eta + 1.0), root(1.0 / (eta + 1.0));
+    const auto argument = [&](double u, double beta) {
+        const double big = power(beta);
+        if (!(big < 1e300)) return u <= 0.5 ? 2.0 * u : 1.0 / (2.0 - 2.0 * u);
+        const double t = u * (2.0 * big - 1.0);
+        return t <= big ? t / big : big / (2.0 * big - t);
+    };
+    for (std::size_t start = 0; start < a.size(); start += 64) {
+        const std::size_t width = std::min<std::size_t>(64, a.size() - start);
+        std::uint64_t cross = rng(), swap = rng();
+        for (std::size_t j = 0; j < width; ++j) {
+            if (!(cross >> j & 1)) continue;
+            const std::size_t i = start + j;
+            if (std::abs(a[i] - b[i]) <= 1e-14) continue;
+            const double y1 = std::min(a[i], b[i]), y2 = std::max(a[i], b[i]);
+            const double inv_gap = 1.0 / (y2 - y1);
+            const double u = rng.uniform();
+            const double q1 = root(argument(u, 1.0 + 2.0 * (y1 - lo[i]) * inv_gap));
+            const double q2 = root(argument(u, 1.0 + 2.0 * (hi[i] - y2) * inv_gap));
+            const double c1 = std::clamp(0.5 * ((y1 + y2) - q1 * (y2 - y1)), lo[i], hi[i]);
+            const double c2 = std::clamp(0.5 * ((y1 + y2) + q2 * (y2 - y1)), lo[i], hi[i]);
+            const bool swapped = (swap & 1u) != 0;  // one swap coin per crossed coordinate
+            swap >>= 1;
+            a[i] = swapped ? c2 : c1;
+            b[i] = swapped ? c1 : c2;
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("SBX: the vector passes (four lanes where AVX is) give the bits of coordinate by coordinate",
+          "[operators][sbx][boxcost]") {
+    // eta 15, 1 and 0: beta^(eta+1) by squarings (the vector form); 3: an integer power (x^4 is
+    // squarings too), 2.5: std::pow. Lengths 1-70 cover the lanes' tails and a second block of 64;
+    // some coordinates are equal or nearly equal (not crossed), some pairs are so close near a
+    // face that beta^(eta+1) passes 1e300 (the overflow form), some parents sit on a face.
+    for (const double eta : {15.0, 1.0, 0.0, 3.0, 2.5}) {
+        pride::SbxCrossover::Prepared sbx = pride::SbxCrossover{eta, 1.0}.prepare(0);
+        pride::Rng data(11);
+        for (std::size_t n = 1; n <= 70; ++n) {
+            std::vector<double> lo(n), hi(n), a(n), b(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                lo[i] = data.uniform(-1e6, 0.0);
+                hi[i] = lo[i] + data.uniform(1.0, 2e6);
+                a[i] = data.uniform(lo[i], hi[i]);
+                b[i] = data.uniform(lo[i], hi[i]);
+                switch (i % 9) {
+                    case 2:
+                        b[i] = a[i];
+                        break;  // equal
+                    case 4:
+                        b[i] = a[i] + 5e-15;
+                        break;  // within 1e-14
+                    case 5:     // 2e-13 apart, far above lo: beta 1e19 or 1e21, beta^16 beyond 1e300 or inf
+                        lo[i] = n % 2 ? -1e6 : -1e8, hi[i] = 1.0, a[i] = 0.5, b[i] = 0.5 + 2e-13;
+                        break;
+                    case 7:
+                        a[i] = lo[i];
+                        break;  // on a face
+                    default:
+                        break;
+                }
+                b[i] = std::clamp(b[i], lo[i], hi[i]);
+            }
+            for (int call = 0; call < 20; ++call) {
+                auto av = a, bv = b, as = a, bs = b;
+                pride::Rng vector(100 + call), scalar(100 + call);
+                sbx.cross(av, bv, lo, hi, vector);
+                sbx_by_coordinate(eta, as, bs, lo, hi, scalar);
+                INFO("eta " << eta << ", n " << n << ", call " << call);
+                REQUIRE(same_bits(av, as));
+                REQUIRE(same_bits(bv, bs));
+                REQUIRE(vector() == scalar());  // the same number of draws
+            }
         }
     }
 }

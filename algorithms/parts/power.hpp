@@ -82,6 +82,10 @@ class FixedPower {
         }
     }
 
+    /// k when the power is x^(2^k) by k squarings (SBX's eta 15: 4), else -1: for callers that
+    /// work out such powers in their own vector loop (SbxCrossover), with the same bits.
+    int squarings() const noexcept { return kind_ == Kind::squares && !negative_ ? squares_ : -1; }
+
     /// Raises every element of `values` in place. Repeated square roots run over the whole array
     /// at once (four lanes per instruction where the processor has AVX, else Eigen's packet sqrt:
     /// two lanes), which is where the real-coded GA spends most of its own time.
