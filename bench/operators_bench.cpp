@@ -4,9 +4,10 @@
 // repetitions. Prints CSV `what,dim,ns` (per call for an operator, per evaluation for a run).
 //   sbx: SbxCrossover::Prepared::cross (eta 15, every pair crossed) on two 30-coordinate parents
 //   polynomial-mutation: PolynomialMutation (eta 20, pm 1/D) on one child
-//   pso / ga / iaga / icga on sphere: the typed Pso<>, Ga<> and the Ga of iaga (adaptive pc and pm)
-//     and icga (the catastrophe hook), registry defaults, for 100,000 evaluations: their ratios to
-//     pso's figure are issue 15's "within 2x of PSO" with sphere's few ns included
+//   pso / ga / iaga / icga / woa / hs / hswoa on sphere: the typed Pso<>, Ga<> and the Ga of iaga
+//     (adaptive pc and pm) and icga (the catastrophe hook), Woa<>, HarmonySearch<> and the Woa of
+//     hswoa (balance factor and harmony second step), registry defaults, for 100,000 evaluations:
+//     their ratios to pso's figure are issue 15's "within 2x of PSO" with sphere's few ns included
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -16,7 +17,9 @@
 #include <vector>
 
 #include "algorithms/ga.hpp"
+#include "algorithms/hs.hpp"
 #include "algorithms/pso.hpp"
+#include "algorithms/woa.hpp"
 #include "problems/continuous/functions.hpp"
 
 namespace {
@@ -93,6 +96,9 @@ int main(int argc, char** argv) {
     on_sphere("iaga", Ga<TournamentSelection, AdaptiveSbxCrossover, AdaptivePolynomialMutation>{});
     on_sphere("icga", Ga<TournamentSelection, SbxCrossover, PolynomialMutation, Clamp, UniformInit, ElitistReplacement,
                          CatastropheHook>{});
+    on_sphere("woa", Woa<>{});
+    on_sphere("hs", HarmonySearch<>{});
+    on_sphere("hswoa", Woa<PerWhaleDraws, BalanceMode, HarmonySecondStep>{});
     if (sink == 42.0) fmt::print(stderr, "\n");  // keeps the work
     return 0;
 }
