@@ -2,7 +2,7 @@
 // 15): where continuous_bench subtracts a function's time from a whole run (and is noisy by the
 // function's share), this times what the framework itself does, each figure the least of many
 // repetitions. Prints CSV `what,dim,ns` (per call for an operator, per evaluation for a run).
-//   sbx: SbxCrossover::Prepared::cross (eta 15, every pair crossed) on two 30-coordinate parents
+//   sbx: SbxCrossover::Prepared::cross (eta 15, every pair crossed) on two parents of --dim (30)
 //   polynomial-mutation: PolynomialMutation (eta 20, pm 1/D) on one child
 //   pso / ga / iaga / icga / woa / hs / hswoa on sphere: the typed Pso<>, Ga<> and the Ga of iaga
 //     (adaptive pc and pm) and icga (the catastrophe hook), Woa<>, HarmonySearch<> and the Woa of
