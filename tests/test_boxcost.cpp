@@ -167,18 +167,18 @@ TEST_CASE("SBX: the vector passes (four lanes where AVX is) give the bits of coo
                 a[i] = data.uniform(lo[i], hi[i]);
                 b[i] = data.uniform(lo[i], hi[i]);
                 switch (i % 9) {
-                    case 2:
+                    case 2:  // equal
                         b[i] = a[i];
-                        break;  // equal
-                    case 4:
+                        break;
+                    case 4:  // within 1e-14
                         b[i] = a[i] + 5e-15;
-                        break;  // within 1e-14
-                    case 5:     // 2e-13 apart, far above lo: beta 1e19 or 1e21, beta^16 beyond 1e300 or inf
+                        break;
+                    case 5:  // 2e-13 apart, far above lo: beta 1e19 or 1e21, beta^16 beyond 1e300 or inf
                         lo[i] = n % 2 ? -1e6 : -1e8, hi[i] = 1.0, a[i] = 0.5, b[i] = 0.5 + 2e-13;
                         break;
-                    case 7:
+                    case 7:  // on a face
                         a[i] = lo[i];
-                        break;  // on a face
+                        break;
                     default:
                         break;
                 }
