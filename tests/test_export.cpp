@@ -1,7 +1,6 @@
 // `pride export STORE --ioh DIR`: IOHprofiler .info/.dat files from a real campaign store.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,9 +13,8 @@ namespace fs = std::filesystem;
 using pride::test::slurp;
 
 TEST_CASE("export: IOHprofiler files, one folder per algorithm, one block per run", "[export]") {
-    const fs::path dir = fs::temp_directory_path() / ("pride-ioh-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const pride::test::TempDir tmp("pride-ioh");  // removed with its files at the end of the test
+    const fs::path& dir = tmp.path();
     {
         std::ofstream f(dir / "c.toml");
         f << "name = \"ioh\"\nseeds = 3\n[budget]\nevaluations = 200\n"
@@ -73,5 +71,4 @@ TEST_CASE("export: IOHprofiler files, one folder per algorithm, one block per ru
     const auto missing =
         pride::test::run_pride("export '" + (dir / "none.sqlite").string() + "' --ioh '" + (dir / "x").string() + "'");
     CHECK(missing.status == 2);
-    fs::remove_all(dir);
 }

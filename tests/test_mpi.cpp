@@ -2,7 +2,6 @@
 // each, store the same values as a threaded run. Compiled only into MPI builds.
 #ifdef PRIDE_HAVE_MPI
 #include <sqlite3.h>
-#include <unistd.h>
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "tests/cli_runner.hpp"
+#include "tests/test_support.hpp"
 
 namespace fs = std::filesystem;
 
@@ -46,9 +46,8 @@ int mpi_bench(int ranks, const std::string& config, const std::string& args, con
 }  // namespace
 
 TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[bench][mpi]") {
-    const fs::path dir = fs::temp_directory_path() / ("pride-mpi-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const pride::test::TempDir tmp("pride-mpi");  // removed with its files at the end of the test
+    const fs::path& dir = tmp.path();
     const fs::path maps = fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
     {
         std::ofstream f(dir / "c.toml");
@@ -79,16 +78,14 @@ TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[benc
     // Every rank runs --jobs threads (rank 0 beside handing runs out): the same values again.
     REQUIRE(mpi_bench(2, config, "--jobs 2", dir / "mpi-jobs.sqlite", dir / "out2") == 0);
     CHECK(rows(dir / "mpi-jobs.sqlite") == a);
-    fs::remove_all(dir);
 }
 
 TEST_CASE("bench: mpirun -np 3 on many short runs (the ranks add slots) stores each run once", "[bench][mpi]") {
     // Runs far shorter than a message round trip make the other ranks' threads run dry, so they ask
     // for more slots while rank 0 hands out runs and then says "no more": every run is stored once,
     // with the values of a threaded run, and every rank exits.
-    const fs::path dir = fs::temp_directory_path() / ("pride-mpi3-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const pride::test::TempDir tmp("pride-mpi3");  // removed with its files at the end of the test
+    const fs::path& dir = tmp.path();
     {
         std::ofstream f(dir / "c.toml");
         f << "name = \"short\"\nseeds = 300\n[budget]\nevaluations = 40\n"
@@ -103,6 +100,5 @@ TEST_CASE("bench: mpirun -np 3 on many short runs (the ranks add slots) stores e
     const auto a = rows(dir / "threads.sqlite"), b = rows(dir / "mpi.sqlite");
     CHECK(a.size() == 600);
     CHECK(a == b);
-    fs::remove_all(dir);
 }
 #endif

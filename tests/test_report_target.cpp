@@ -3,7 +3,6 @@
 #include <sqlite3.h>
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -15,13 +14,13 @@
 
 #include "tests/cli_runner.hpp"
 #include "tests/json_reader.hpp"
+#include "tests/test_support.hpp"
 
 namespace fs = std::filesystem;
 
 TEST_CASE("report: evaluations to reach the campaign's target", "[report][target]") {
-    const fs::path dir = fs::temp_directory_path() / ("pride-target-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const pride::test::TempDir tmp("pride-target");  // removed with its files at the end of the test
+    const fs::path& dir = tmp.path();
     {
         std::ofstream f(dir / "c.toml");
         f << "name = \"target\"\nseeds = 4\n[budget]\nevaluations = 3000\ntarget = 1e-3\n"
@@ -105,5 +104,4 @@ TEST_CASE("report: evaluations to reach the campaign's target", "[report][target
     const auto md = pride::test::run_pride("report '" + (dir / "c.sqlite").string() + "'");
     CHECK(md.out.find("| evals to target |") != std::string::npos);
     CHECK(md.out.find("(4/4) |") != std::string::npos);
-    fs::remove_all(dir);
 }
