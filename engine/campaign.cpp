@@ -359,9 +359,11 @@ class Remotes {
                 closed_[r] = true;
                 continue;
             }
-            if (got.payload.empty()) ++open_[r];  // a new slot; a record frees its slot for the next run
-            ++idle_[r];
-            if (got.payload.empty()) continue;
+            ++idle_[r];  // a new slot asking, or a record, which frees its slot for the next run
+            if (got.payload.empty()) {
+                ++open_[r];
+                continue;
+            }
             if (got.payload.front() == '!') throw InputError(got.payload.substr(1));
             finished.push_back(deserialise(got.payload));
         }

@@ -71,9 +71,7 @@ class OpenList {
     bool empty() const noexcept { return size_ == 0; }
     std::size_t size() const noexcept { return size_; }
     void clear() noexcept {
-        for (std::size_t w = 0; w < kWords; ++w)
-            for (std::uint64_t m = bits_[w]; m != 0; m &= m - 1) slots_[w * 64 + std::countr_zero(m)].clear();
-        std::fill(std::begin(bits_), std::end(bits_), 0);
+        empty_buckets([](const Bucket&) {});
         overflow_.clear();
         size_ = 0;
         seq_ = 0;
@@ -129,7 +127,7 @@ class OpenList {
         const std::uint64_t a = n.key >> kShift;
         if (a > lo_ && a < limit_) [[likely]] {
             slots_[a & kMask].push_back(n);
-            bits_[(a & kMask) / 64] |= std::uint64_t{1} << (a & 63);
+            mark(a);
         } else {
             place_rare(n, a);
         }
@@ -155,7 +153,7 @@ class OpenList {
         b.push_back(n);
         std::copy_backward(b.begin() + at, b.end() - 1, b.end());
         b.begin()[at] = n;
-        bits_[(a & kMask) / 64] |= std::uint64_t{1} << (a & 63);
+        mark(a);
     }
     /// The cursor's bucket is empty: move to the next nonempty one (refilling the ring from the
     /// overflow when it is empty) and sort it.
@@ -199,18 +197,25 @@ class OpenList {
         ++rebuilds_;
         std::vector<OpenNode> all;
         all.swap(overflow_);
-        for (std::size_t w = 0; w < kWords; ++w)
-            for (std::uint64_t m = bits_[w]; m != 0; m &= m - 1) {
-                Bucket& b = slots_[w * 64 + std::countr_zero(m)];
-                all.insert(all.end(), b.begin(), b.end());
-                b.clear();
-            }
-        std::fill(std::begin(bits_), std::end(bits_), 0);
+        empty_buckets([&](Bucket& b) { all.insert(all.end(), b.begin(), b.end()); });
         all.push_back(n);
         std::sort(all.begin(), all.end(), [](const OpenNode& x, const OpenNode& y) { return x.seq < y.seq; });
         lo_ = a;
         limit_ = a + kSlots;
         for (const OpenNode& m : all) place(m);
+    }
+    /// Bucket a holds nodes.
+    void mark(std::uint64_t a) noexcept { bits_[(a & kMask) / 64] |= std::uint64_t{1} << (a & 63); }
+    /// Every nonempty bucket, in slot order, to `f` and then emptied; no bucket is marked after.
+    template <class F>
+    void empty_buckets(F&& f) {
+        for (std::size_t w = 0; w < kWords; ++w)
+            for (std::uint64_t m = bits_[w]; m != 0; m &= m - 1) {
+                Bucket& b = slots_[w * 64 + static_cast<std::size_t>(std::countr_zero(m))];
+                f(b);
+                b.clear();
+            }
+        std::fill(std::begin(bits_), std::end(bits_), 0);
     }
     /// The distance from slot s to the next slot (cyclically, s itself last) whose bucket is
     /// nonempty, or kSlots when there is none.
@@ -222,7 +227,8 @@ class OpenList {
             const std::size_t w = (w0 + k) % kWords;
             if (bits_[w] != 0) {
                 const std::size_t slot = w * 64 + static_cast<std::size_t>(std::countr_zero(bits_[w]));
-                return (slot + kSlots - s) % kSlots == 0 ? kSlots : (slot + kSlots - s) % kSlots;
+                const std::size_t d = (slot + kSlots - s) % kSlots;
+                return d == 0 ? kSlots : d;
             }
         }
         return kSlots;
