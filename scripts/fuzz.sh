@@ -7,7 +7,7 @@
 # Usage: scripts/fuzz.sh SECONDS [TARGET...]     (targets: map scenario roughset campaign store cli)
 # Environment: PRIDE_FUZZ_BUILD (build folder, default build-fuzz), PRIDE_FUZZ_JOBS (targets run at
 # once, default 1), PRIDE_FUZZ_RSS_MB (default 1024), PRIDE_DATA (extra seeds, default
-# ../shared/data when it exists), PRIDE_FUZZ_MAX_LEN (largest input, default 16384 bytes).
+# reference-data/), PRIDE_FUZZ_MAX_LEN (largest input, default 16384 bytes).
 # Exit status 1 when any target found something.
 #
 # Seeds: fuzz/corpus/TARGET/ (checked in) plus, collected at run time, the maps and scenarios of
@@ -28,7 +28,7 @@ rss=${PRIDE_FUZZ_RSS_MB:-1024}
 # Inputs up to 16 KiB (and seeds no larger): every format's structure fits, and one input stays far
 # below the 1 s hang limit even on a loaded machine (a 37 KB map took 0.5 s there under ASan).
 max_len=${PRIDE_FUZZ_MAX_LEN:-16384}
-data=${PRIDE_DATA:-$root/../shared/data}
+data=${PRIDE_DATA:-$root/reference-data}
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)

@@ -75,8 +75,8 @@ paths += [
     f"{base} --algo pso --corner-cutting --oracle --seed 11 --json",
     f"{base} --algo astar --corner-cutting --json",
     f"{base} --algo exact --objective length --corner-cutting --json",
-    "path --map ../shared/data/movingai/den312d.map --start 35,29 --goal 38,55 --algo ga --inflate 1 --oracle --seed 12 --json",
-    "path --map ../shared/data/movingai/den312d.map --start 38,55 --goal 23,65 --algo pso --encoding free --inflate 1 --oracle --seed 3 --json",
+    "path --map reference-data/movingai/den312d.map --start 35,29 --goal 38,55 --algo ga --inflate 1 --oracle --seed 12 --json",
+    "path --map reference-data/movingai/den312d.map --start 38,55 --goal 23,65 --algo pso --encoding free --inflate 1 --oracle --seed 3 --json",
     f"{base} --algo pso --evals 777 --pop 13 --seed 13 --json",
     f"{base} --algo pso-constriction --param walk_init=1 --seed 14 --json",
 ]
@@ -85,8 +85,8 @@ base = f"path --map {m} --start {s} --goal {g}"
 paths += [
     f"{base} --algo ilso --encoding free --waypoints 4 --objective length --oracle --seed 2 --json",
     f"{base} --algo ga --encoding chain --objective iqga --pop 40 --iters 20 --seed 3 --json",
-    "path --map ../shared/data/movingai/random-32-32-20.map --start 1,1 --goal 30,30 --algo pso --encoding free --objective length --oracle --seed 1 --json",
-    "path --map ../shared/data/movingai/maze-32-32-4.map --start 1,1 --goal 29,29 --algo ga --encoding chain --objective length --oracle --seed 2 --json",
+    "path --map reference-data/movingai/random-32-32-20.map --start 1,1 --goal 30,30 --algo pso --encoding free --objective length --oracle --seed 1 --json",
+    "path --map reference-data/movingai/maze-32-32-4.map --start 1,1 --goal 29,29 --algo ga --encoding chain --objective length --oracle --seed 2 --json",
 ]
 # Added with the suites and the new algorithms (session 4: issues 10-12); appended, so that the
 # lines above keep their numbers.

@@ -24,11 +24,11 @@ inline grid::GridMap map_of(const std::vector<std::string>& rows) {
                          "hand");
 }
 
-/// The Moving AI scenario files of the shared data (PRIDE_SHARED_DATA/movingai/*.scen), in name order.
+/// The Moving AI scenario files of the shared data (PRIDE_REFERENCE_DATA/movingai/*.scen), in name order.
 inline std::vector<std::filesystem::path> movingai_scenarios() {
     namespace fs = std::filesystem;
     std::vector<fs::path> scenarios;
-    for (const auto& entry : fs::directory_iterator(fs::path(PRIDE_SHARED_DATA) / "movingai"))
+    for (const auto& entry : fs::directory_iterator(fs::path(PRIDE_REFERENCE_DATA) / "movingai"))
         if (entry.path().extension() == ".scen") scenarios.push_back(entry.path());
     std::sort(scenarios.begin(), scenarios.end());
     return scenarios;

@@ -1,5 +1,5 @@
 // Tests of the BBOB functions (problems/continuous/bbob/) against COCO's own values:
-// shared/data/bbob/ holds, for instances 1-2 in dimensions 2, 5 and 10, COCO's f at uniform points
+// reference-data/bbob/ holds, for instances 1-2 in dimensions 2, 5 and 10, COCO's f at uniform points
 // and near x_opt, and COCO's f_opt and x_opt (README.md there). Every row is checked, to 1e-12
 // relative (1e-10 for f16, f19 and f23, sums of many trigonometric terms), though this
 // implementation follows COCO's order of operations and is bit-identical at every row.
@@ -106,7 +106,7 @@ std::vector<double> parse_vector(const std::string& s) {
 
 /// The rows of a tab-separated file, split into fields, without its header line.
 std::vector<std::vector<std::string>> read_tsv(const std::string& name) {
-    std::ifstream in(std::filesystem::path(PRIDE_SHARED_DATA) / "bbob" / name);
+    std::ifstream in(std::filesystem::path(PRIDE_REFERENCE_DATA) / "bbob" / name);
     REQUIRE(in.good());
     std::vector<std::vector<std::string>> rows;
     std::string line;

@@ -43,7 +43,7 @@ fs::path bundled_dir() {
     return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
 }
 fs::path movingai_dir() {
-    return fs::path(PRIDE_SHARED_DATA) / "movingai";
+    return fs::path(PRIDE_REFERENCE_DATA) / "movingai";
 }
 
 /// Shell quoting for run_pride's command line.

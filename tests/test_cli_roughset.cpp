@@ -19,7 +19,7 @@ using pride::test::lines_of;
 using pride::test::parse_json;
 using pride::test::run_pride;
 
-const std::string p72 = std::string("'") + PRIDE_SHARED_DATA + "/roughset/pawlak1991_p72.csv'";
+const std::string p72 = std::string("'") + PRIDE_REFERENCE_DATA + "/roughset/pawlak1991_p72.csv'";
 
 std::vector<std::string> strings(const JsonValue& array) {
     REQUIRE(array.kind == JsonValue::Kind::array);

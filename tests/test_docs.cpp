@@ -1,7 +1,8 @@
 // The docs are checked like code: docs/adding-an-algorithm.md's example is tests/example_algorithm.cpp
 // (compiled into this binary, registered as "example-es") and runs as the doc says; docs/cli.md's
 // generated tables are what `pride list --markdown` prints, and each command it shows in a `sh`
-// block prints what the doc shows under it (bar timings).
+// block prints what the doc shows under it (bar timings); every command the README shows runs as
+// written, in a folder that holds only the clone's files it names and the build.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -243,4 +244,53 @@ TEST_CASE("docs: every command cli.md shows prints what it shows", "[docs]") {
         }
     }
     CHECK(checked >= 30);
+}
+
+TEST_CASE("docs: every command the README shows runs as written", "[docs][readme]") {
+    // A folder laid out as the top of a clone (examples/, reference-data/, scripts/ linked from the
+    // source; build/ holding links to this build's programs), so that the README's paths resolve
+    // as written and what its commands write (build/...) stays out of the checkout.
+    namespace fs = std::filesystem;
+    const pride::test::TempDir top("pride-readme");
+    for (const char* name : {"examples", "reference-data", "scripts"})
+        fs::create_directory_symlink(fs::path(kSource) / name, top.path() / name);
+    fs::create_directory(top.path() / "build");
+    const bool python = fs::exists(fs::path(PRIDE_BUILD_DIR) / "python" / "pride");
+    for (const char* name : {"cli", "examples", "python"})
+        if (fs::exists(fs::path(PRIDE_BUILD_DIR) / name))
+            fs::create_directory_symlink(fs::path(PRIDE_BUILD_DIR) / name, top.path() / "build" / name);
+    std::size_t run = 0;
+    for (const auto& block : blocks_of(slurp(kSource + "/README.md"))) {
+        if (block.fence != "```sh") continue;
+        for (std::size_t i = 0; i < block.lines.size(); ++i) {
+            std::string line = block.lines[i];
+            while (!line.empty() && line.back() == '\\' && i + 1 < block.lines.size())
+                line = line.substr(0, line.size() - 1) + block.lines[++i];
+            // The set-up steps (install, configure, build, ctest) are this build's own: the rest of
+            // a command line runs as written.
+            std::string command;
+            std::size_t from = 0;
+            while (from <= line.size()) {
+                const std::size_t to = std::min(line.find(" && ", from), line.size());
+                const std::string part = line.substr(from, to - from);
+                const bool setup = part.rfind("bash scripts/deps.sh", 0) == 0 || part.rfind("cmake ", 0) == 0 ||
+                                   part.rfind("ctest ", 0) == 0;
+                if (!setup) command += (command.empty() ? "" : " && ") + part;
+                from = to + 4;
+            }
+            if (command.empty()) continue;
+            if (command.find("build/python") != std::string::npos && !python) continue;  // sanitized builds
+            INFO("README: " << command);
+            const std::string script = top.write("command.sh", command + "\n");
+            const std::string shell = "cd '" + top.path().string() + "' && sh '" + script + "' >'" +
+                                      top.file("out") + "' 2>&1 </dev/null";
+            const int status = std::system(shell.c_str());
+            INFO(slurp(top.file("out")));
+            CHECK(status == 0);
+            ++run;
+        }
+    }
+    CHECK(run >= 17);
+    CHECK(fs::exists(top.path() / "build" / "continuous.sqlite"));
+    CHECK(fs::exists(top.path() / "build" / "path.png"));
 }

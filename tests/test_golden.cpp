@@ -41,7 +41,7 @@ void check_golden_part(std::size_t part, std::size_t parts) {
     std::size_t differ = 0, checked = 0;
     for (std::size_t i = part; i < commands.size(); i += parts) {
         ++checked;
-        // The commands name maps relative to the top of the checkout (and ../shared beside it).
+        // The commands name maps relative to the top of the checkout (reference-data/ among them).
         const auto r = pride::test::run_pride_in(PRIDE_SOURCE_DIR, commands[i]);
         const std::string got = without_wall_time(r.out);
         if (r.status != 0 || got != expected[i]) {

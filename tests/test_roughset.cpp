@@ -1,5 +1,5 @@
 // Tests of the rough-set module (roughset/): every result published for the reference
-// tables in shared/data/roughset/README.md, properties on random tables checked against brute
+// tables in reference-data/roughset/README.md, properties on random tables checked against brute
 // force, and the CSV reader's edge cases and error messages.
 #include <catch2/catch.hpp>
 
@@ -18,7 +18,7 @@ using namespace pride::roughset;
 
 namespace {
 
-const std::string data_dir = std::string(PRIDE_SHARED_DATA) + "/roughset/";
+const std::string data_dir = std::string(PRIDE_REFERENCE_DATA) + "/roughset/";
 
 DecisionTable pawlak72() {
     return read_csv(data_dir + "pawlak1991_p72.csv");

@@ -1,4 +1,4 @@
-"""Shared fixtures: the command line (results are compared with its JSON), the shared data."""
+"""Shared fixtures: the command line (results are compared with its JSON), the reference data."""
 import json
 import os
 import pathlib
@@ -16,8 +16,9 @@ def pride_exe():
     return exe
 
 
-def shared_data():
-    return pathlib.Path(os.environ.get("PRIDE_SHARED_DATA", str(REPO.parent / "shared" / "data")))
+def reference_data():
+    """The repository's reference-data/ (public data by others, shipped with pride)."""
+    return pathlib.Path(os.environ.get("PRIDE_REFERENCE_DATA", str(REPO / "reference-data")))
 
 
 def cli(*args, check=True):
@@ -29,7 +30,7 @@ def cli(*args, check=True):
     return json.loads(p.stdout) if "--json" in args else p
 
 
-ROUGHSET_TABLES = ["pawlak1991_p72.csv", "pawlak_8obj.csv"]  # the shared decision tables
+ROUGHSET_TABLES = ["pawlak1991_p72.csv", "pawlak_8obj.csv"]  # the reference decision tables
 
 
 def roughset_as_cli(result):
@@ -41,11 +42,9 @@ def roughset_as_cli(result):
     return out
 
 
-def shared_roughset(name):
-    """A shared decision table's path and `pride roughset --json`'s answer on it (as roughset_as_cli)."""
-    path = shared_data() / "roughset" / name
-    if not path.exists():
-        pytest.skip("no shared data")
+def reference_roughset(name):
+    """A reference decision table's path and `pride roughset --json`'s answer on it (as roughset_as_cli)."""
+    path = reference_data() / "roughset" / name
     return path, roughset_as_cli(cli("roughset", path, "--json"))
 
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import pride
-from conftest import ROUGHSET_TABLES as TABLES, cli, roughset_as_cli as strip, shared_roughset
+from conftest import ROUGHSET_TABLES as TABLES, cli, roughset_as_cli as strip, reference_roughset
 
 pd = pytest.importorskip("pandas")
 
@@ -71,7 +71,7 @@ def test_report_dataframe_equals_the_list_and_the_cli_csv(store):
 
 @pytest.mark.parametrize("name", TABLES)
 def test_roughset_from_a_dataframe_equals_the_cli(name):
-    path, want = shared_roughset(name)
+    path, want = reference_roughset(name)
     codes = pd.read_csv(path)  # integer columns: codes
     assert strip(pride.roughset(codes)) == want
     labels = pd.read_csv(path, dtype=str)  # text columns: labels

@@ -1,16 +1,16 @@
-"""Rough sets on the shared tables: the command line's analysis, from files, arrays and labels."""
+"""Rough sets on the reference tables: the command line's analysis, from files, arrays and labels."""
 import csv
 
 import numpy as np
 import pytest
 
 import pride
-from conftest import ROUGHSET_TABLES as TABLES, roughset_as_cli as strip, shared_data, shared_roughset
+from conftest import ROUGHSET_TABLES as TABLES, roughset_as_cli as strip, reference_data, reference_roughset
 
 
 @pytest.mark.parametrize("name", TABLES)
-def test_shared_tables_equal_cli(name):
-    path, want = shared_roughset(name)
+def test_reference_tables_equal_cli(name):
+    path, want = reference_roughset(name)
     assert strip(pride.roughset(str(path))) == want
     with open(path) as f:
         rows = list(csv.reader(f))
@@ -21,9 +21,7 @@ def test_shared_tables_equal_cli(name):
 
 
 def test_pawlak_p72_known_answer():
-    path = shared_data() / "roughset" / "pawlak1991_p72.csv"
-    if not path.exists():
-        pytest.skip("no shared data")
+    path = reference_data() / "roughset" / "pawlak1991_p72.csv"
     r = pride.roughset(str(path))
     assert r["core"] == ["a", "b", "d"] and r["reducts"] == [["a", "b", "d"]] and r["consistent"]
     for rule in r["rules"]:
