@@ -119,12 +119,18 @@ int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out) {
 namespace {
 
 std::string json_param(const engine::ParamSpec& p) {
+    // A choice parameter's default is its name, and its names are listed.
+    std::string choices;
+    for (const auto& c : p.choices) choices += (choices.empty() ? "" : ", ") + json_string(c);
+    const std::string default_value = !p.default_value                      ? "null"
+                                      : p.type == engine::ParamType::choice ? json_string(p.default_text())
+                                                                            : json_number(*p.default_value);
     return fmt::format(
         "{{\"name\": {}, \"type\": {}, \"default\": {}, \"min\": {}, \"max\": {}, \"min_open\": {}, \"max_open\": {}, "
-        "\"range\": {}, \"doc\": {}}}",
-        json_string(p.name), json_string(engine::to_string(p.type)),
-        p.default_value ? json_number(*p.default_value) : "null", json_number(p.min), json_number(p.max),
-        p.min_open ? "true" : "false", p.max_open ? "true" : "false", json_string(p.range()), json_string(p.doc));
+        "\"range\": {}, \"doc\": {}{}}}",
+        json_string(p.name), json_string(engine::to_string(p.type)), default_value, json_number(p.min),
+        json_number(p.max), p.min_open ? "true" : "false", p.max_open ? "true" : "false", json_string(p.range()),
+        json_string(p.doc), p.choices.empty() ? "" : ", \"choices\": [" + choices + "]");
 }
 
 /// Text for a markdown table cell: a '|' would end the cell.
@@ -138,7 +144,8 @@ bool same_params(const std::vector<engine::ParamSpec>& a, const std::vector<engi
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i)
         if (a[i].name != b[i].name || a[i].type != b[i].type || a[i].default_value != b[i].default_value ||
-            a[i].range() != b[i].range() || a[i].doc != b[i].doc)
+            a[i].range() != b[i].range() || a[i].doc != b[i].doc || a[i].box_only != b[i].box_only ||
+            a[i].chain_only != b[i].chain_only)
             return false;
     return true;
 }
@@ -173,9 +180,8 @@ std::string markdown_algorithms(const std::vector<engine::AlgorithmEntry>& algor
         }
         text += "| parameter | type | default | range | meaning |\n|---|---|---|---|---|\n";
         for (const auto& p : algorithms[i].params)
-            text +=
-                fmt::format("| `{}` | {} | {} | {} | {} |\n", p.name, engine::to_string(p.type),
-                            p.default_value ? fmt::format("{}", *p.default_value) : "none", p.range(), md_cell(p.doc));
+            text += fmt::format("| `{}` | {} | {} | {} | {} |\n", p.name, engine::to_string(p.type), p.default_text(),
+                                p.range(), md_cell(p.doc));
     }
     return text;
 }

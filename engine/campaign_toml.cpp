@@ -11,6 +11,7 @@
 #include <iterator>
 #include <set>
 
+#include "engine/registry.hpp"
 #include "engine/run.hpp"
 #include "framework/error.hpp"
 #include "framework/read_file.hpp"
@@ -200,7 +201,14 @@ CampaignAlgorithm read_algorithm(const std::string& file, const toml::table& t) 
     for (auto&& [key, value] : t) {
         const std::string k(key.str());
         if (k == "id" || k == "type") continue;
-        a.spec.params.set(k, need_number(file, value, k));
+        // A name is a value only for a choice parameter; every other value is a number (a name
+        // given to a number is refused here, where the file's line and column are known).
+        const AlgorithmEntry* entry = algorithms().find(a.spec.name);
+        const ParamSpec* spec = entry ? entry->param(k) : nullptr;
+        if (value.is_string() && spec && spec->type == ParamType::choice)
+            a.spec.params.set_name(k, std::string(**value.as_string()));
+        else
+            a.spec.params.set(k, need_number(file, value, k));
     }
     return a;
 }

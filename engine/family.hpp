@@ -72,14 +72,61 @@ AlgorithmEntry box_algorithm(std::string name, std::string family, std::string s
     return e;
 }
 
-/// Adds running on chains to an entry: `configure(params)` returns the typed algorithm for chains.
+/// An algorithm's defaults for the settings of the chain space it plans on (its paper's).
+struct ChainSpaceDefaults {
+    std::string shortcut = "none";  // none, line, elbow
+    std::string walks = "octile";   // eq10, octile
+};
+
+/// The chain space's settings (problems/grid/chain.hpp) as parameters of an algorithm that plans
+/// on chains: the same names, choices and meaning for every such algorithm, refused on boxes.
+inline std::vector<ParamSpec> chain_space_params(const ChainSpaceDefaults& d) {
+    return {choice("shortcut", {"none", "line", "elbow"}, d.shortcut,
+                   "the chain space's shortcut on every chain an operator makes, at no evaluation: line of sight "
+                   "(file 003), or one-turn elbows first (this project's)")
+                .only_on_chains(),
+            flag("shortcut_keep", false,
+                 "keep a shortcut only when the objective does not rise (two counted evaluations per changed chain)")
+                .only_on_chains(),
+            choice("walks", {"eq10", "octile"}, d.walks,
+                   "random walks' roulette: file 003's eq. 10 (D - distance to the goal) or exp(-2 x octile change)")
+                .only_on_chains(),
+            choice("sitp_column", {"random", "midpoint"}, "random",
+                   "SITP's transition column: random between start and goal (file 002's text) or eq. 3's midpoint")
+                .only_on_chains(),
+            choice("sitp_score", {"objective", "length"}, "objective",
+                   "SITP keeps the best of N/8 walks by the objective (counted evaluations) or by length")
+                .only_on_chains()};
+}
+
+/// A run's copy of the chain space with the algorithm's settings.
+template <class Space>
+void configure_space(Space& space, const Params& p) {
+    const std::string& shortcut = p.choice("shortcut");
+    space.set_shortcut(shortcut == "line"    ? grid::Shortcut::line
+                       : shortcut == "elbow" ? grid::Shortcut::elbow
+                                             : grid::Shortcut::none,
+                       p.flag("shortcut_keep"));
+    space.set_walks(p.choice("walks") == "eq10" ? grid::GoalBias::eq10 : grid::GoalBias::octile_exp);
+    space.set_sitp(p.choice("sitp_column") == "midpoint",
+                   p.choice("sitp_score") == "length" ? grid::SitpScore::length : grid::SitpScore::objective);
+}
+
+/// Adds running on chains to an entry: `configure(params)` returns the typed algorithm for chains;
+/// the entry gets the chain space's settings as parameters, with `defaults`.
 template <class Configure>
-void add_chain_runner(AlgorithmEntry& e, Configure configure) {
+void add_chain_runner(AlgorithmEntry& e, Configure configure, const ChainSpaceDefaults& defaults = {}) {
+    for (auto& spec : chain_space_params(defaults)) e.params.push_back(std::move(spec));
     e.run_chain = [configure](const Params& p, const ChainTarget& target, const Termination& termination,
                               std::uint64_t seed) -> ChainResult {
         const auto algorithm = configure(p);
-        return std::visit([&](const auto& problem) -> ChainResult { return algorithm.run(problem, termination, seed); },
-                          target.problem);
+        return std::visit(
+            [&](const auto& problem) -> ChainResult {
+                auto space = problem;
+                configure_space(space, p);
+                return algorithm.run(std::move(space), termination, seed);
+            },
+            target.problem);
     };
 }
 

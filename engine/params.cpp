@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -17,6 +19,8 @@ std::string_view to_string(ParamType t) {
             return "real";
         case ParamType::flag:
             return "flag";
+        case ParamType::choice:
+            return "choice";
     }
     return "real";
 }
@@ -29,10 +33,30 @@ std::string number(double v) {
 
 std::string ParamSpec::range() const {
     if (type == ParamType::flag) return "0 or 1";
+    if (type == ParamType::choice) {
+        std::string out;
+        for (std::size_t i = 0; i < choices.size(); ++i)
+            out += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
+        return out;
+    }
     return fmt::format("{}{}, {}{}", min_open ? "(" : "[", number(min), number(max), max_open ? ")" : "]");
 }
 
+std::string ParamSpec::default_text() const {
+    if (!default_value) return "none";
+    if (type == ParamType::choice) return choices.at(static_cast<std::size_t>(*default_value));
+    return number(*default_value);
+}
+
+double ParamSpec::choice_index(const std::string& value, const std::string& where) const {
+    for (std::size_t i = 0; i < choices.size(); ++i)
+        if (choices[i] == value) return static_cast<double>(i);
+    throw InputError(where, fmt::format("{} must be {} ({}), got '{}'", name, range(), doc, value));
+}
+
 void ParamSpec::check(double v, const std::string& where) const {
+    require(type != ParamType::choice, where,
+            fmt::format("{} takes a name: {} ({}), got the number {}", name, range(), doc, number(v)));
     require(std::isfinite(v), where, fmt::format("{} must be a finite number in {}, got {}", name, range(), number(v)));
     const bool integral = v == std::floor(v) && std::abs(v) < 9.0e15;
     if (type != ParamType::real)
@@ -45,17 +69,40 @@ void ParamSpec::check(double v, const std::string& where) const {
             fmt::format("{} must be in {} ({}), got {}", name, range(), doc, number(v)));
 }
 
+namespace {
+ParamSpec spec(std::string name, ParamType type, std::optional<double> default_value, double min, double max,
+               std::string doc) {
+    ParamSpec s;
+    s.name = std::move(name);
+    s.type = type;
+    s.default_value = default_value;
+    s.min = min;
+    s.max = max;
+    s.doc = std::move(doc);
+    return s;
+}
+}  // namespace
+
 ParamSpec integer(std::string name, std::int64_t default_value, std::int64_t min, std::int64_t max, std::string doc) {
-    return {std::move(name),          ParamType::integer,       static_cast<double>(default_value),
-            static_cast<double>(min), static_cast<double>(max), std::move(doc)};
+    return spec(std::move(name), ParamType::integer, static_cast<double>(default_value), static_cast<double>(min),
+                static_cast<double>(max), std::move(doc));
 }
 
 ParamSpec real(std::string name, double default_value, double min, double max, std::string doc) {
-    return {std::move(name), ParamType::real, default_value, min, max, std::move(doc)};
+    return spec(std::move(name), ParamType::real, default_value, min, max, std::move(doc));
 }
 
 ParamSpec flag(std::string name, bool default_value, std::string doc) {
-    return {std::move(name), ParamType::flag, default_value ? 1.0 : 0.0, 0.0, 1.0, std::move(doc)};
+    return spec(std::move(name), ParamType::flag, default_value ? 1.0 : 0.0, 0.0, 1.0, std::move(doc));
+}
+
+ParamSpec choice(std::string name, std::vector<std::string> choices, const std::string& default_value,
+                 std::string doc) {
+    ParamSpec s =
+        spec(std::move(name), ParamType::choice, 0.0, 0.0, static_cast<double>(choices.size()) - 1.0, std::move(doc));
+    s.choices = std::move(choices);
+    s.default_value = s.choice_index(default_value, "choice");  // a registration bug otherwise
+    return s;
 }
 
 void ParamValues::set_from_string(std::string_view assignment) {
@@ -71,12 +118,22 @@ void ParamValues::set_from_string(std::string_view assignment) {
     } catch (const std::exception&) {
         used = 0;
     }
+    // A name (for a choice parameter, which Params checks) starts with a letter; anything else must
+    // be a finite number. inf and nan are no names: they are numbers that are not finite.
+    auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
+    const bool is_name = !text.empty() && std::isalpha(static_cast<unsigned char>(text[0])) &&
+                         std::all_of(text.begin(), text.end(), name_char) && used == 0;
+    if (is_name) {
+        set_name(name, text);
+        return;
+    }
     require(used == text.size() && !text.empty() && std::isfinite(value), "parameter " + name,
             "'" + text + "' is not a finite number");
     set(name, value);
 }
 
 std::optional<double> ParamValues::find(const std::string& name) const {
+    if (names_.count(name) != 0) return std::nullopt;
     const auto it = values_.find(name);
     if (it == values_.end()) return std::nullopt;
     return it->second;
@@ -84,19 +141,26 @@ std::optional<double> ParamValues::find(const std::string& name) const {
 
 Params::Params(const std::string& algorithm, const std::vector<ParamSpec>& specs, const ParamValues& given)
     : algorithm_(algorithm) {
-    for (const auto& [name, value] : given.values()) {
-        const ParamSpec* spec = nullptr;
+    auto declared = [&](const std::string& name) {
         for (const auto& s : specs)
-            if (s.name == name) spec = &s;
-        if (!spec) {
-            std::string known;
-            for (const auto& s : specs) known += (known.empty() ? "" : ", ") + s.name;
-            throw InputError(algorithm + ": unknown parameter '" + name + "' (" +
-                             (known.empty() ? std::string("it takes none") : "parameters: " + known) + ")");
-        }
-        spec->check(value, algorithm);
+            if (s.name == name) return &s;
+        std::string known;
+        for (const auto& s : specs) known += (known.empty() ? "" : ", ") + s.name;
+        throw InputError(algorithm + ": unknown parameter '" + name + "' (" +
+                         (known.empty() ? std::string("it takes none") : "parameters: " + known) + ")");
+    };
+    for (const auto& [name, value] : given.values()) {
+        declared(name)->check(value, algorithm);
         given_[name] = value;
     }
+    for (const auto& [name, text] : given.names()) {
+        const ParamSpec* spec = declared(name);
+        require(spec->type == ParamType::choice, algorithm,
+                fmt::format("{} must be a finite number in {}, got '{}'", name, spec->range(), text));
+        given_[name] = spec->choice_index(text, algorithm);
+    }
+    for (const auto& s : specs)
+        if (s.type == ParamType::choice) choices_[s.name] = s.choices;
     for (const auto& s : specs) {
         const auto it = given_.find(s.name);
         values_[s.name] = it != given_.end() ? std::optional<double>(it->second) : s.default_value;
@@ -121,6 +185,12 @@ std::int64_t Params::integer(const std::string& name) const {
 
 bool Params::flag(const std::string& name) const {
     return real(name) != 0.0;
+}
+
+const std::string& Params::choice(const std::string& name) const {
+    const auto it = choices_.find(name);
+    if (it == choices_.end()) throw std::logic_error(algorithm_ + ": parameter '" + name + "' is not a choice");
+    return it->second.at(static_cast<std::size_t>(real(name)));
 }
 
 std::optional<double> Params::optional(const std::string& name) const {

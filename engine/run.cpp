@@ -159,7 +159,8 @@ void require_oracle(const GridSpec& g, const GridTarget& target) {
 
 template <class Objective>
 void prepare_grid(Prepared& out, const GridSpec& g, Objective objective) {
-    const grid::GridProblem<Objective> problem(g.map, g.start, g.goal, objective, g.corner_cutting);
+    grid::GridProblem<Objective> problem(g.map, g.start, g.goal, objective, g.corner_cutting);
+    problem.count_calls(g.objective_calls);
     out.grid = GridTarget{problem};
     if (g.oracle) require_oracle(g, *out.grid);
     try {
@@ -250,8 +251,14 @@ ParamValues effective_params(const AlgorithmEntry& entry, const Prepared& p, con
 Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSpec& a) {
     const Params params(entry.name, entry.params, effective_params(entry, p, a.params));
     const auto* g = std::get_if<GridSpec>(&p.spec);
+    auto refuse_chain_settings = [&](const std::string& space) {
+        for (const auto& spec : entry.params)
+            require(!spec.chain_only || !params.given(spec.name), entry.name,
+                    spec.name + " is a setting of the chain space (the chain encoding); it has no meaning on " + space);
+    };
     if (!g) {
         require(static_cast<bool>(entry.run_box), "algo", entry.name + " works on grid problems only");
+        refuse_chain_settings("a box");
         return params;
     }
     if (entry.solve_grid) {
@@ -274,6 +281,7 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
                     spec.name + " has no meaning on chains (the chain encoding)");
     } else {
         require(static_cast<bool>(entry.run_box), "algo", entry.name + " does not run on a box");
+        refuse_chain_settings("the " + g->encoding + " encoding");
     }
     return params;
 }
@@ -308,8 +316,9 @@ void copy_run(RunResult& out, R&& r) {
     out.target_hits = std::move(r.target_hits);
 }
 
+/// The reported value of a finished result's path (not an evaluation: GridProblem::result_value).
 double grid_value(const GridTarget& target, const grid::Path& path) {
-    return std::visit([&](const auto& g) { return g.evaluate(path); }, target.problem);
+    return std::visit([&](const auto& g) { return g.result_value(path); }, target.problem);
 }
 
 /// The candidate is the result only when it is legal (grid.md: an infeasible candidate is never

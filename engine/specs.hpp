@@ -2,6 +2,7 @@
 // Problems, algorithms and budgets as plain structs: what every front end (command line, campaign
 // files, Python) fills in, and what the engine runs. Names are checked by the engine, with errors
 // naming the field ("start", "encoding", "dim"), never a front end's flag.
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -43,6 +44,9 @@ struct GridSpec {
     std::string init;
     bool corner_cutting = false;
     bool oracle = false;  // also compute the exact optimum (additive objectives)
+    // When set, counts every evaluation of the objective by every run of the problem (a check of
+    // the runs' `evaluations` from outside: tests, pride path --count-calls).
+    std::shared_ptr<std::atomic<std::int64_t>> objective_calls;
 };
 
 /// A user function on a box: type erasure at this edge only. `batch`, when set, evaluates every

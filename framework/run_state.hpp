@@ -60,6 +60,17 @@ class BasicRunState {
         return f;
     }
 
+    /// One counted evaluation of a partial solution (a segment an operator scores while it builds a
+    /// chain): counted and within the budget like any other, but never the best (it is not a
+    /// solution). Partial scoring never spends the budget's last evaluation, so that a run always
+    /// evaluates at least one whole solution: +inf without a call when one or none is left.
+    template <class P, class X>
+    double evaluate_partial(const P& problem, const X& x) {
+        if (progress_.evaluations + 1 >= limit_) return kInf;
+        ++progress_.evaluations;
+        return sanitize(problem.evaluate(x));
+    }
+
     /// Evaluates the first min(points.cols(), remaining()) columns into `values` and returns how
     /// many; columns past the budget get +inf. Uses the problem's batch evaluation when it has one.
     template <BoxProblem P>

@@ -14,6 +14,7 @@
 #include "engine/params.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "framework/error.hpp"
 #include "problems/continuous/functions.hpp"
 #include "tests/test_support.hpp"
 
@@ -41,6 +42,46 @@ std::string map_file() {
 
 }  // namespace
 
+TEST_CASE("engine: choice parameters take one of their names, nothing else", "[engine][params]") {
+    const std::vector<engine::ParamSpec> specs{
+        engine::choice("shortcut", {"none", "line", "elbow"}, "line", "a shortcut"),
+        engine::real("pc", 0.9, 0.0, 1.0, "crossover")};
+    CHECK(specs[0].type == engine::ParamType::choice);
+    CHECK(specs[0].range() == "none, line or elbow");
+    CHECK(specs[0].default_text() == "line");
+    CHECK(engine::Params("algo", specs, {}).choice("shortcut") == "line");  // the default
+    engine::ParamValues v;
+    v.set_from_string("shortcut=elbow");
+    CHECK(engine::Params("algo", specs, v).choice("shortcut") == "elbow");
+    v.set("shortcut", 1.0);  // a later set wins, and a number is no name
+    CHECK_THAT(input_error_message([&] { engine::Params("algo", specs, v); }),
+               Contains("shortcut takes a name: none, line or elbow"));
+    v.set_name("shortcut", "zigzag");
+    CHECK_THAT(input_error_message([&] { engine::Params("algo", specs, v); }),
+               Contains("algo: shortcut must be none, line or elbow (a shortcut), got 'zigzag'"));
+    engine::ParamValues w;
+    w.set_name("pc", "high");
+    CHECK_THAT(input_error_message([&] { engine::Params("algo", specs, w); }),
+               Contains("pc must be a finite number in [0, 1], got 'high'"));
+    CHECK_THROWS_AS(engine::choice("x", {"a", "b"}, "c", "a default not among the choices"), pride::InputError);
+    // Every registered choice parameter's default is one of its names, and every chain-space
+    // setting is declared alike by every algorithm that plans on chains.
+    for (const auto& e : engine::algorithms().entries()) {
+        for (const auto& p : e.params)
+            if (p.type == engine::ParamType::choice) {
+                INFO(e.name << " " << p.name);
+                REQUIRE(p.default_value.has_value());
+                CHECK(*p.default_value < static_cast<double>(p.choices.size()));
+            }
+        if (!e.run_chain) continue;
+        for (const char* name : {"shortcut", "shortcut_keep", "walks", "sitp_column", "sitp_score"}) {
+            INFO(e.name << " " << name);
+            REQUIRE(e.param(name) != nullptr);
+            CHECK(e.param(name)->chain_only);
+        }
+    }
+}
+
 TEST_CASE("engine: parameter values parse NAME=VALUE strictly", "[engine][params]") {
     engine::ParamValues v;
     v.set_from_string("a=1.5");
@@ -49,7 +90,12 @@ TEST_CASE("engine: parameter values parse NAME=VALUE strictly", "[engine][params
     CHECK(v.find("a") == 7.0);
     CHECK(v.find("b") == -2e-3);
     CHECK_FALSE(v.contains("c"));
-    for (const char* bad : {"a", "=1", "a=x", "a=inf", "a=-inf", "a=nan", "a=", "a=1.5x", "a=1e999", ""}) {
+    // A value that is not a number is a name (for a choice parameter, checked against its choices
+    // by Params): it starts with a letter and holds letters, digits, '_' and '-' only.
+    v.set_from_string("shortcut=line");
+    CHECK(v.names().at("shortcut") == "line");
+    CHECK_FALSE(v.find("shortcut"));
+    for (const char* bad : {"a", "=1", "a=inf", "a=-inf", "a=nan", "a=", "a=1.5x", "a=1e999", "a=-x", "a=x y", ""}) {
         INFO("'" << bad << "'");
         engine::ParamValues q;
         const auto msg = input_error_message([&] { q.set_from_string(bad); });

@@ -35,6 +35,7 @@
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/path.hpp"
+#include "tests/counting_space.hpp"
 
 namespace {
 
@@ -97,19 +98,8 @@ struct CountedRastrigin {
     }
 };
 
-/// The chain space, counting its evaluations.
-struct CountedChains {
-    Chains space;
-    std::shared_ptr<std::int64_t> count = std::make_shared<std::int64_t>(0);
-    using chain_type = Chains::chain_type;
-    void random_chain(Rng& rng, chain_type& out) { space.random_chain(rng, out); }
-    bool crossover(chain_type& a, chain_type& b, Rng& rng) { return space.crossover(a, b, rng); }
-    void mutate(chain_type& c, Rng& rng) { space.mutate(c, rng); }
-    double evaluate(const chain_type& c) const {
-        ++*count;
-        return space.evaluate(c);
-    }
-};
+/// The chain space, counting every call of its objective (tests/counting_space.hpp).
+using CountingChains = test::CountingSpace<Chains>;
 
 bool is_simple(const grid::Path& p) {
     std::set<std::pair<int, int>> seen;
@@ -165,7 +155,7 @@ TEST_CASE("IAGA: Srinivas-Patnaik probabilities at their end points, by hand", "
     CHECK(pc(6.5, 2.0, 6.0) == 0.6);                         // worse than the mean: k3
     // The authors' constants: k2 = k4 = 0.5 for pm, k1 = k3 = 1 for pc, pm never below 0.005.
     const auto pm = kSrinivasPatnaikMutation;
-    CHECK(pm(2.0, 2.0, 6.0) == 0.005);                         // the best: the floor, not 0
+    CHECK(pm(2.0, 2.0, 6.0) == 0.005);                          // the best: the floor, not 0
     CHECK(pm(2.02, 2.0, 6.0) == Approx(0.005).epsilon(1e-12));  // 0.5 * 0.005 = 0.0025 < 0.005
     CHECK(pm(2.4, 2.0, 6.0) == Approx(0.05).epsilon(1e-12));    // 0.5 * 0.1, above the floor
     CHECK(pm(6.0, 2.0, 6.0) == 0.5);
@@ -194,7 +184,7 @@ TEST_CASE("IAGA: Srinivas-Patnaik probabilities at their end points, by hand", "
     c.child = 0;  // the copy of member 0, the best: pm = the floor 0.005
     CHECK(pm.for_child(c) == 0.005);
     CHECK(AdaptiveProbability{0.5, 0.5}.for_child(c) == 0.0);  // no floor: 0
-    c.child = 1;  // the copy of member 3, below the mean: k4
+    c.child = 1;                                               // the copy of member 3, below the mean: k4
     CHECK(pm.for_child(c) == 0.5);
 }
 
@@ -640,7 +630,7 @@ TEST_CASE("GA variants: budgets are exact and results valid, on boxes and on cha
     auto on_chain = [&](const auto& ga, const std::string& label) {
         for (const std::int64_t budget : {1, 7, 12, 13, 250, 601}) {
             INFO(label << " budget " << budget);
-            CountedChains problem{Chains(grid_problem)};
+            CountingChains problem{Chains(grid_problem)};
             const auto r = ga.run(problem, max_evaluations(budget), 5, chain_checker);
             CHECK(*problem.count == budget);
             CHECK(r.evaluations == budget);

@@ -42,6 +42,7 @@
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/path.hpp"
 #include "problems/grid/walk.hpp"
+#include "tests/counting_space.hpp"
 #include "tests/grid_support.hpp"
 
 namespace {
@@ -104,24 +105,8 @@ struct LegalityChecker {
     }
 };
 
-/// A chain space that counts evaluations and forwards the IQGA capabilities.
-struct CountedSpace {
-    Space space;
-    std::shared_ptr<std::int64_t> count = std::make_shared<std::int64_t>(0);
-    using chain_type = Space::chain_type;
-    void random_chain(Rng& rng, chain_type& out) { space.random_chain(rng, out); }
-    bool crossover(chain_type& a, chain_type& b, Rng& rng) { return space.crossover(a, b, rng); }
-    void mutate(chain_type& c, Rng& rng) { space.mutate(c, rng); }
-    double evaluate(const chain_type& c) const {
-        ++*count;
-        return space.evaluate(c);
-    }
-    std::size_t region_count() const { return space.region_count(); }
-    std::size_t region(const chain_type& c) const { return space.region(c); }
-    bool crossover_two_point(chain_type& a, chain_type& b, Rng& rng) { return space.crossover_two_point(a, b, rng); }
-    std::size_t mutation_count() const { return space.mutation_count(); }
-    void mutate(std::size_t k, chain_type& c, Rng& rng, double badness = 0.0) { space.mutate(k, c, rng, badness); }
-};
+/// The chain space, counting every call of its objective (tests/counting_space.hpp).
+using CountedSpace = test::CountingSpace<Space>;
 
 Instance file002_40() {
     auto map = std::make_shared<const grid::GridMap>(grid::read_map((bundled_maps() / "file002-40x40.map").string()));
@@ -337,8 +322,8 @@ TEST_CASE("iqga: every pair holds an elite member, EliteCrossover refuses a pair
     Space space = space_of(in);
     Rng rng(9);
     grid::Path p, q;
-    space.random_chain(rng, p);
-    space.random_chain(rng, q);
+    space.random_chain(rng, p, test::uncounted_score(space));
+    space.random_chain(rng, q, test::uncounted_score(space));
     std::vector<double> f{-3.0, -2.0, -1.0, -0.5};  // elite: member 0 and 1
     GenerationContext c;
     c.describe(0, f, -3.0);
@@ -359,8 +344,8 @@ TEST_CASE("iqga: every pair holds an elite member, EliteCrossover refuses a pair
     // An elite member in the pair: crossed (fig. 7) whenever the two share two cells.
     int crossed = 0;
     for (int k = 0; k < 50; ++k) {
-        space.random_chain(rng, p);
-        space.random_chain(rng, q);
+        space.random_chain(rng, p, test::uncounted_score(space));
+        space.random_chain(rng, q, test::uncounted_score(space));
         a = p;
         b = q;
         c.parents = {3, 0};
@@ -512,13 +497,21 @@ TEST_CASE("iqga: budgets are exact", "[iqga]") {
         CHECK(std::isfinite(r.best_f));
         CHECK(*checker.bad == 0);
     }
-    // Iterations: N + G (N - 1) evaluations.
+    // Iterations: N + G (N - 1) whole chains, plus the SITP segments ranked by the objective (ten
+    // walks per SITP path: two segments of N/8 = 5), every one counted.
     IqgaGa ga;
     ga.population = 40;
     CountedSpace problem{space_of(in)};
     const auto r = ga.run(problem, max_iterations(12), 5);
     CHECK(r.iterations == 12);
-    CHECK(*problem.count == 40 + 12 * 39);
+    CHECK(*problem.count == r.evaluations);
+    CHECK(r.evaluations >= 40 + 12 * 39 + 40 * 10);  // the initial SITP paths' segments at least
+    // Ranked by length, SITP evaluates nothing: N + G (N - 1) evaluations.
+    CountedSpace by_length{space_of(in)};
+    by_length.space.set_sitp(false, grid::SitpScore::length);
+    const auto l = ga.run(by_length, max_iterations(12), 5);
+    CHECK(*by_length.count == 40 + 12 * 39);
+    CHECK(l.evaluations == 40 + 12 * 39);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -552,8 +545,15 @@ TEST_CASE("iqga: registry entry, defaults, N = 40 on grids, SITP by default, cha
     const auto plain = engine::run({"iqga", {}}, engine::Problem(g), budget, 2);
     REQUIRE(plain.grid.has_value());
     CHECK(plain.grid->feasible);
-    CHECK(plain.history_evaluations.front() == 40);  // N = 40 on grids
-    CHECK(plain.evaluations == 40 + 10 * 39);
+    // N = 40 on grids, each SITP path's two segments the best of 5 walks by the objective: 10
+    // counted evaluations per path before the path's own.
+    CHECK(plain.history_evaluations.front() == 40 + 40 * 10);
+    CHECK(plain.evaluations > 40 + 10 * 39);
+    engine::AlgorithmSpec by_length{"iqga", {}};
+    by_length.params.set_name("sitp_score", "length");
+    const auto ranked_by_length = engine::run(by_length, engine::Problem(g), budget, 2);
+    CHECK(ranked_by_length.history_evaluations.front() == 40);
+    CHECK(ranked_by_length.evaluations == 40 + 10 * 39);
     CHECK(plain.history == engine::run({"iqga", {}}, engine::Problem(g), budget, 2).history);
     // SITP by default: the same run as init = "sitp", not the same as random-walk chains.
     g.init = "sitp";
@@ -571,6 +571,7 @@ TEST_CASE("iqga: registry entry, defaults, N = 40 on grids, SITP by default, cha
     // A population given is kept.
     engine::AlgorithmSpec small{"iqga", {}};
     small.params.set("pop", 12);
+    small.params.set_name("sitp_score", "length");
     CHECK(engine::run(small, engine::Problem(g), budget, 2).history_evaluations.front() == 12);
     // Ranges; boxes are refused.
     engine::AlgorithmSpec bad{"iqga", {}};
@@ -698,8 +699,8 @@ TEST_CASE("iqga: the ablation flags each remove one change, and only that one", 
         int crossed = 0;
         for (int k = 0; k < 30; ++k) {
             grid::Path p, q;
-            space.random_chain(rng, p);
-            space.random_chain(rng, q);
+            space.random_chain(rng, p, test::uncounted_score(space));
+            space.random_chain(rng, q, test::uncounted_score(space));
             grid::Path a = p, b = q;
             x(space, a, b, rng, c);
             crossed += a != p || b != q;
@@ -745,7 +746,8 @@ TEST_CASE("iqga: the ablation flags through the engine: defaults, legal results,
         REQUIRE(r.grid.has_value());
         CHECK(r.grid->feasible);
         CHECK(grid::path_violation(*g.map, r.grid->path, g.start, g.goal).empty());
-        CHECK(r.evaluations == full.evaluations);
+        // SITP's segment scores are evaluations: the count follows how many mutations regenerate.
+        if (std::string(name) == "sitp") CHECK(r.evaluations < full.evaluations);
         // On this map every path of these runs lies in the middle region, so eq. 16 sends all N
         // tournaments there and regions = 0 draws the same: the policy test above tells them apart.
         if (std::string(name) != "regions") CHECK(r.history != full.history);

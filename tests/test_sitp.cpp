@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -30,6 +31,7 @@
 #include "problems/grid/path.hpp"
 #include "problems/grid/sitp.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/counting_space.hpp"
 #include "tests/grid_support.hpp"
 
 using namespace pride::grid;
@@ -186,6 +188,7 @@ TEST_CASE("sitp: three bands of rows between start and goal, transition points o
     CHECK(sitp_band(map, {1, 19}, {12, 19}, 2).last == 19);
 
     SitpWalker w;
+    w.midpoint_column = true;  // eq. 3's formula; the text's random column is checked below
     Rng rng(3);
     const auto all = [&](Cell c) { return map.free(c); };
     for (int band = 0; band < 3; ++band) {
@@ -226,6 +229,29 @@ TEST_CASE("sitp: three bands of rows between start and goal, transition points o
     Cell t;
     CHECK_FALSE(w.transition_point(
         map, s, g, 0, rng, [](Cell) { return false; }, t));
+
+    // The default, as the text under eq. 3 reads: x_r a random integer between the start's and the
+    // goal's columns, both included, each about equally often; the row still in the band.
+    SitpWalker text;
+    std::map<int, int> columns;
+    for (int k = 0; k < 4000; ++k) {
+        Cell r;
+        REQUIRE(text.transition_point(map, {3, 19}, {12, 0}, 1, rng, all, r));
+        CHECK(r.x >= 3);
+        CHECK(r.x <= 12);
+        CHECK(r.y >= sitp_band(map, {3, 19}, {12, 0}, 1).first);
+        CHECK(r.y <= sitp_band(map, {3, 19}, {12, 0}, 1).last);
+        ++columns[r.x];
+    }
+    REQUIRE(columns.size() == 10);
+    for (const auto& [x, n] : columns) CHECK(std::abs(n - 400) < 100);  // 400 expected, sd 19
+    // Goal left of the start: the same columns.
+    for (int k = 0; k < 200; ++k) {
+        Cell r;
+        REQUIRE(text.transition_point(map, {12, 0}, {3, 19}, 0, rng, all, r));
+        CHECK(r.x >= 3);
+        CHECK(r.x <= 12);
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -312,8 +338,8 @@ TEST_CASE("sitp: walks are legal simple paths, reproducible from the seed, on ra
         Rng r1(seed), r2(seed);
         for (int k = 0; k < 4; ++k) {
             Path a, b;
-            space.random_chain(r1, a);
-            again.random_chain(r2, b);
+            space.random_chain(r1, a, pride::test::uncounted_score(space));
+            again.random_chain(r2, b, pride::test::uncounted_score(again));
             REQUIRE(chain_problem(in, a) == "");
             CHECK(a == b);
         }
@@ -334,10 +360,11 @@ TEST_CASE("sitp: the transition point's band cycles and the path passes through 
     const Cell s{0, 29}, g{29, 0};
     ChainSpace<LengthObjective> space(GridProblem<LengthObjective>(map, s, g));
     space.set_init(Walks::sitp);
+    space.set_sitp(true, SitpScore::objective);  // eq. 3's midpoint column: x_r = 14
     Rng rng(4);
     for (int k = 0; k < 60; ++k) {
         Path p;
-        space.random_chain(rng, p);
+        space.random_chain(rng, p, pride::test::uncounted_score(space));
         REQUIRE(path_violation(*map, p, s, g) == "");
         const RowBand rows = sitp_band(*map, s, g, k % 3);
         bool in_band = false;
@@ -422,8 +449,8 @@ TEST_CASE("sitp: crossover keeps paths legal and simple on random and bundled ma
         auto space = sitp_space<LinearObjective>(in);
         for (int k = 0; k < 6; ++k) {
             Path a, b;
-            space.random_chain(rng, a);
-            space.random_chain(rng, b);
+            space.random_chain(rng, a, pride::test::uncounted_score(space));
+            space.random_chain(rng, b, pride::test::uncounted_score(space));
             const Path pa = a, pb = b;
             const bool share = share_interior_cell(a, b);
             INFO(describe(in));
@@ -450,17 +477,17 @@ TEST_CASE("sitp: every mutation operator and regeneration keeps paths legal and 
         auto space = sitp_space(in);
         REQUIRE(space.mutation_count() == 3);
         Path c;
-        space.random_chain(rng, c);
+        space.random_chain(rng, c, pride::test::uncounted_score(space));
         for (int step = 0; step < 24; ++step) {
             const std::size_t k = static_cast<std::size_t>(step % 3);
             const Path before = c;
-            space.mutate(k, c, rng, rng.uniform());
+            space.mutate(k, c, rng, rng.uniform(), pride::test::uncounted_score(space));
             INFO(describe(in) << " operator " << k << " step " << step);
             REQUIRE(chain_problem(in, c) == "");
             changed[k] += !(c == before);
             if (c.size() >= 3 && step % 4 == 0) {
                 const std::size_t i = rng.below(c.size() - 1), j = i + 1 + rng.below(c.size() - 1 - i);
-                REQUIRE(space.regenerate(c, i, j, rng));
+                REQUIRE(space.regenerate(c, i, j, rng, pride::test::uncounted_score(space)));
                 REQUIRE(chain_problem(in, c) == "");
             }
         }
@@ -486,7 +513,7 @@ TEST_CASE("sitp: a straight path has no turning point and no operator changes it
     for (std::size_t k = 0; k < 3; ++k)
         for (int r = 0; r < 20; ++r) {
             Path c = line;
-            space.mutate(k, c, rng);
+            space.mutate(k, c, rng, 0.0, pride::test::uncounted_score(space));
             CHECK(c == line);
         }
 }
@@ -507,7 +534,7 @@ TEST_CASE("sitp: the mutation rules on paths whose regeneration is forced", "[si
         for (std::size_t k = 0; k < 3; ++k)
             for (int r = 0; r < 20; ++r) {
                 Path c = l;
-                space.mutate(k, c, rng);
+                space.mutate(k, c, rng, 0.0, pride::test::uncounted_score(space));
                 CHECK(c == l);
             }
     }
@@ -517,7 +544,7 @@ TEST_CASE("sitp: the mutation rules on paths whose regeneration is forced", "[si
         for (std::size_t k = 0; k < 3; ++k)
             for (int r = 0; r < 20; ++r) {
                 Path c = l;
-                space.mutate(k, c, rng);
+                space.mutate(k, c, rng, 0.0, pride::test::uncounted_score(space));
                 REQUIRE(chain_problem(*map, {0, 0}, {3, 3}, true, c) == "");
                 cut += c.size() == l.size() - 1;  // (3,0) went: (2,0) -> (3,1) diagonally
             }

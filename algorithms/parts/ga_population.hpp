@@ -20,6 +20,7 @@
 #include "algorithms/parts/generation_context.hpp"
 #include "algorithms/parts/run_setup.hpp"
 #include "framework/chain.hpp"
+#include "framework/counted_chain.hpp"
 #include "framework/problem.hpp"
 #include "framework/random.hpp"
 #include "framework/result.hpp"
@@ -155,7 +156,7 @@ class ChainPopulation {
           fy_(kids_),
           cross_(detail::prepared(ga.crossover, 0)),
           mutate_(detail::prepared(ga.mutation, 0)) {
-        for (auto& c : x_) problem_.random_chain(run_.rng, c);
+        for (auto& c : x_) counted().random_chain(run_.rng, c);
         for (std::size_t i = 0; i < x_.size() && !run_.state.exhausted(); ++i)
             fx_[i] = run_.state.evaluate(problem_, x_[i]);
         run_.state.end_iteration(observer, x_, fx_);
@@ -200,9 +201,13 @@ class ChainPopulation {
         detail::begin_generation(mutate_, context, run_.rng);
     }
     void cross(Chain& a, Chain& b, const GenerationContext& context) {
-        with_context(cross_, context, problem_, a, b, run_.rng);
+        auto problem = counted();
+        with_context(cross_, context, problem, a, b, run_.rng);
     }
-    void mutate(Chain& c, const GenerationContext& context) { with_context(mutate_, context, problem_, c, run_.rng); }
+    void mutate(Chain& c, const GenerationContext& context) {
+        auto problem = counted();
+        with_context(mutate_, context, problem, c, run_.rng);
+    }
     void repair(Chain&) const noexcept {}  // the chain operators keep every chain feasible
 
     void evaluate_children() {
@@ -228,11 +233,14 @@ class ChainPopulation {
 
     /// Replaces the members `which` by new random chains, made first, then evaluated in order.
     void renew(std::span<const std::size_t> which, Rng& rng) {
-        for (const std::size_t i : which) problem_.random_chain(rng, x_[i]);
+        for (const std::size_t i : which) counted().random_chain(rng, x_[i]);
         for (const std::size_t i : which) fx_[i] = run_.state.exhausted() ? kInf : run_.state.evaluate(problem_, x_[i]);
     }
 
   private:
+    /// The space's operators through the run's evaluation guard (framework/counted_chain.hpp).
+    CountedChains<P, BasicRunState<Chain>> counted() noexcept { return {problem_, run_.state}; }
+
     const Algorithm& ga_;
     P& problem_;
     RunStart<Chain> run_;

@@ -12,8 +12,11 @@
 // search (eqs. 1-2, 6-7) 1 / (1 + |A|), for the spiral (eq. 5) 1 / (1 + |e^{bl} cos(2 pi l)|) (the
 // closer the equation puts the whale to its target, the larger the share; C has no part), for
 // eq. 8 its U(0,1) fraction r. A harmony on chains is a memory member (HMCR), pitch-adjusted (PAR)
-// by a perturbation of a share BW of its own course, or else a new random chain. New chains, and
-// every moved chain, are shortened when the space offers Shortening.
+// by a perturbation of a share BW of its own course, or else a new random chain; a member taken
+// as it is (no pitch adjustment) is a copy whose value is known, so it is not evaluated again.
+// Shortcuts are the space's (its `shortcut` setting, applied inside its operators), not the pod's.
+// Every operator is called through CountedChains (framework/counted_chain.hpp), so whatever an
+// operator scores is counted in the run's budget.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -25,6 +28,7 @@
 #include "algorithms/parts/run_setup.hpp"
 #include "algorithms/parts/whale_moves.hpp"
 #include "framework/chain.hpp"
+#include "framework/counted_chain.hpp"
 #include "framework/problem.hpp"
 #include "framework/random.hpp"
 #include "framework/result.hpp"
@@ -209,13 +213,19 @@ class ChainPod {
     }
     void improvise(const HarmonyRates& rates) {
         Rng& u = run_.rng;
+        std::optional<double> known;  // a member taken as it is: its value
         if (u.uniform() < rates.hmcr) {
-            y_ = x_[static_cast<std::size_t>(u.below(x_.size()))];
-            if (u.uniform() < rates.par) move(y_, y_, rates.bw);
+            const auto k = static_cast<std::size_t>(u.below(x_.size()));
+            y_ = x_[k];
+            if (u.uniform() < rates.par)
+                move(y_, y_, rates.bw);
+            else
+                known = fx_[k];
         } else {
             fresh(y_);
         }
-        const double f = run_.state.evaluate(problem_, y_);
+        if (!known && run_.state.exhausted()) return;
+        const double f = known ? *known : run_.state.evaluate(problem_, y_);
         consider(y_, f);
         const std::size_t w = worst(fx_);
         if (f < fx_[w]) {
@@ -242,14 +252,9 @@ class ChainPod {
     BasicResult<Chain> finish() { return run_.state.finish(); }
 
   private:
-    void fresh(Chain& c) {
-        problem_.random_chain(run_.rng, c);
-        if constexpr (Shortening<P>) problem_.shorten(c);
-    }
-    void move(Chain& c, const Chain& target, double share) {
-        problem_.toward(c, target, share, run_.rng);
-        if constexpr (Shortening<P>) problem_.shorten(c);
-    }
+    CountedChains<P, BasicRunState<Chain>> counted() noexcept { return {problem_, run_.state}; }
+    void fresh(Chain& c) { counted().random_chain(run_.rng, c); }
+    void move(Chain& c, const Chain& target, double share) { counted().toward(c, target, share, run_.rng); }
     void consider(const Chain& c, double f) {
         if (f < leader_f_) {
             leader_f_ = f;

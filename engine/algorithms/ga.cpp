@@ -241,8 +241,8 @@ void add_iqga(AlgorithmRegistry& registry) {
              "region-partitioned tournaments (eqs. 14-16); false: all N tournaments over the whole population"),
         flag("elite_crossover", true,
              "elite pairing rule and elite-only crossover (section 2.4.2); false: any pair, crossed with pc"),
-        flag("qlearning", true,
-             "Q-learning chooses the mutation probabilities (eq. 19); false: fixed 1/3 each")};
+        flag("qlearning", true, "Q-learning chooses the mutation probabilities (eq. 19); false: fixed 1/3 each")};
+    for (auto& spec : chain_space_params({})) e.params.push_back(std::move(spec));
     e.grid_population = 40;
     e.run_chain = [](const Params& p, const ChainTarget& target, const Termination& termination,
                      std::uint64_t seed) -> ChainResult {
@@ -250,8 +250,8 @@ void add_iqga(AlgorithmRegistry& registry) {
         return std::visit(
             [&](const auto& problem) -> ChainResult {
                 auto space = problem;
-                if constexpr (requires { space.set_init(grid::Walks::sitp); })
-                    if (p.flag("sitp")) space.set_init(grid::Walks::sitp);
+                configure_space(space, p);
+                if (p.flag("sitp")) space.set_init(grid::Walks::sitp);
                 return algorithm.run(std::move(space), termination, seed);
             },
             target.problem);

@@ -60,7 +60,8 @@ void add(AlgorithmRegistry& registry, const std::string& name, const std::string
          bool balanced) {
     auto e = box_algorithm(name, "woa", summary, whale_params(harmony, balanced), configure(name, harmony, balanced));
     // On chains the same configuration runs the chain pod (algorithms/parts/whale_pods.hpp).
-    add_chain_runner(e, configure(name, harmony, balanced));
+    // File 003 plans on chains from eq. 10's walks, shortened by the line of sight.
+    add_chain_runner(e, configure(name, harmony, balanced), {"line", "eq10"});
     e.memory = population_memory(2);  // the pod and the reconstruction's copy
     registry.add(std::move(e));
 }

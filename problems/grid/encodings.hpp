@@ -68,7 +68,10 @@ void read_walks(const GridProblem<Objective>& p, Rng& rng, Matrix& out, Read&& r
         for (Eigen::Index j = 0; j < out.cols(); ++j) {
             sitp.walk(
                 p.map(), p.start(), p.goal(), rng, walk, p.corner_cutting(), static_cast<int>(j % 3),
-                [&](Cell c) { return p.reachable(c); }, [&](const Path& s) { return p.evaluate(s); });
+                // Ranked by length, not by the objective: seeding a box population has no route to
+                // the run's evaluation guard, and an uncounted objective call would be a free
+                // evaluation (the chain space ranks by the counted objective).
+                [&](Cell c) { return p.reachable(c); }, [](const Path& s) { return metrics(s, false).length; });
             read(walk, j);
         }
     } else if (p.walks() == Walks::rules)

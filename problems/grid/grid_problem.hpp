@@ -2,6 +2,8 @@
 // The grid path-planning problem: a map, a start, a goal and an objective. It scores paths; it
 // knows nothing of any algorithm. Encodings (encodings.hpp) turn it into a BoxProblem for them.
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -89,18 +91,31 @@ class GridProblem {
             return 10.0 * cells;
     }
 
-    /// The objective of a legal path.
+    /// The objective of a legal path: one evaluation. Algorithms reach it only through their run's
+    /// evaluation guard (framework/run_state.hpp), which counts it against the budget.
     double evaluate(const Path& path) const {
+        if (calls_) calls_->fetch_add(1, std::memory_order_relaxed);
+        return value(path);
+    }
+    /// The value a finished result is reported with (A*'s path, a decoded best point): the
+    /// objective, but no evaluation, since no search decision depends on it.
+    double result_value(const Path& path) const { return value(path); }
+    /// Counts every evaluation from here on in `calls` (shared by the problem's copies), so that a
+    /// test or a user can check a run's `evaluations` against the objective's own count.
+    void count_calls(std::shared_ptr<std::atomic<std::int64_t>> calls) noexcept { calls_ = std::move(calls); }
+    /// A decoded chain: its objective plus M per violation (so any violation marks it infeasible).
+    double evaluate(const DecodedPath& d) const { return evaluate(d.path) + penalty() * d.violations; }
+
+  private:
+    double value(const Path& path) const {
         if constexpr (requires { objective_.of_path(path); })
             return objective_.of_path(path);
         else
             return objective_(metrics(path));
     }
-    /// A decoded chain: its objective plus M per violation (so any violation marks it infeasible).
-    double evaluate(const DecodedPath& d) const { return evaluate(d.path) + penalty() * d.violations; }
 
-  private:
-    std::shared_ptr<const GridMap> map_;  // shared: problems are copied per run
+    std::shared_ptr<const GridMap> map_;                // shared: problems are copied per run
+    std::shared_ptr<std::atomic<std::int64_t>> calls_;  // empty unless counted (count_calls)
     Cell start_, goal_;
     Objective objective_;
     bool corner_cutting_;

@@ -100,13 +100,14 @@ class IqgaMoves {
     SitpWalker sitp;
 
     /// The part of `c` between positions i < j (both kept) replaced by an SITP walk between the
-    /// two cells (band drawn); loops cut. False, c unchanged, unless i < j < c.size().
-    template <class Objective>
-    bool regenerate(const GridProblem<Objective>& p, Path& c, std::size_t i, std::size_t j, Rng& rng) {
+    /// two cells (band drawn), its segments' walks ranked by `score` (the chain space passes the
+    /// run's counted objective, or the length); loops cut. False, c unchanged, unless
+    /// i < j < c.size().
+    template <class Objective, class Score>
+    bool regenerate(const GridProblem<Objective>& p, Path& c, std::size_t i, std::size_t j, Rng& rng, Score&& score) {
         if (!(i < j && j < c.size())) return false;
         const bool ok = sitp.walk(
-            p.map(), c[i], c[j], rng, segment_, p.corner_cutting(), -1, [&](Cell x) { return p.reachable(x); },
-            [&](const Path& s) { return p.evaluate(s); });
+            p.map(), c[i], c[j], rng, segment_, p.corner_cutting(), -1, [&](Cell x) { return p.reachable(x); }, score);
         if (!ok) return false;  // cannot happen: c[i] and c[j] lie on one legal chain
         tail_.assign(c.begin() + static_cast<std::ptrdiff_t>(j) + 1, c.end());
         c.resize(i);
@@ -164,9 +165,10 @@ class IqgaMoves {
         return true;
     }
 
-    /// Mutation operator k (0 deletion, 1 mid-point, 2 turning point; k >= 3: no change) on c.
-    template <class Objective>
-    void mutate(const GridProblem<Objective>& p, std::size_t k, Path& c, Rng& rng, double badness = 0.0) {
+    /// Mutation operator k (0 deletion, 1 mid-point, 2 turning point; k >= 3: no change) on c; the
+    /// regeneration's walks are ranked by `score`.
+    template <class Objective, class Score>
+    void mutate(const GridProblem<Objective>& p, std::size_t k, Path& c, Rng& rng, double badness, Score&& score) {
         if (k >= kMutations || c.size() < 3) return;
         // Every operator first regenerates d_{i-1} .. d_{j+1} for two random turning points.
         turning_points(c, turns_);
@@ -177,7 +179,7 @@ class IqgaMoves {
                 if (v >= u) ++v;
             }
             const std::size_t i = std::min(turns_[u], turns_[v]), j = std::max(turns_[u], turns_[v]);
-            regenerate(p, c, i - 1, j + 1, rng);
+            regenerate(p, c, i - 1, j + 1, rng, score);
         }
         if (c.size() < 3) return;
         // The nodes d_k, processed from the goal's end so that earlier positions stay valid.

@@ -1,7 +1,10 @@
 #pragma once
 // SITP, file 002's "segmented intermediate transition point" initialisation (section 2.2, eqs.
 // 3-7; shared/spec/algorithms.md "IQGA"): a path from s to g through a transition point on the
-// column x_r = floor((x_s + x_g) / 2), drawn in one of three bands of rows. Each half (s to the
+// column x_r, drawn in one of three bands of rows. x_r is "a random integer between the start's
+// and the end's x" as the text under eq. 3 says (随机整数; the spec follows the text): uniform
+// over the columns from min(x_s, x_g) to max(x_s, x_g), both included; eq. 3's own formula,
+// floor((x_s + x_g) / 2), is the option `midpoint_column`. Each half (s to the
 // transition point, the transition point to g) is the best of `walks_per_segment` angle walks; the
 // two halves are joined and loops cut.
 //
@@ -85,14 +88,21 @@ class SitpWalker {
   public:
     /// Angle walks per segment, of which the best is kept: N / 8 with the paper's N = 40.
     int walks_per_segment = 5;
+    /// The transition column: eq. 3's midpoint instead of the text's random column.
+    bool midpoint_column = false;
 
     /// The transition point of a segment from s to g in band `band` (0..2): a uniform draw among
-    /// the cells of column floor((s.x + g.x) / 2) in the band for which `reachable(cell)` holds,
-    /// else the reachable cell of the column nearest to the band; false when the column has none.
+    /// the cells of the transition column (random, or floor((s.x + g.x) / 2) with midpoint_column)
+    /// in the band for which `reachable(cell)` holds, else the reachable cell of the column
+    /// nearest to the band; false when the column has none. The random column is drawn first.
     template <class Reachable>
     bool transition_point(const GridMap& map, Cell s, Cell g, int band, Rng& rng, Reachable&& reachable,
                           Cell& out) const {
-        const int x = (s.x + g.x) / 2;  // coordinates are >= 0: division is the floor
+        const int lo = std::min(s.x, g.x), hi = std::max(s.x, g.x);
+        // Coordinates are >= 0: the division is the floor. Every path from s to g crosses every
+        // column from lo to hi, so the column has a reachable cell whenever g is reachable.
+        const int x = midpoint_column ? (s.x + g.x) / 2
+                                      : lo + static_cast<int>(rng.below(static_cast<std::uint64_t>(hi - lo + 1)));
         const RowBand rows = sitp_band(map, s, g, band);
         int count = 0;
         for (int y = rows.first; y <= rows.last; ++y) count += reachable(Cell{x, y}) ? 1 : 0;

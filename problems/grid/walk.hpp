@@ -70,14 +70,29 @@ class TabooRouletteWalk {
     double weights_[8];
 };
 
+/// How a random walk weighs the neighbours it draws from.
+///   eq10:       file 003's eq. 10 as this project reads it (the text around the equation is lost;
+///               the spec says only "biased towards the goal"): the fitness of a neighbour n is
+///               D - dist(n, goal), D the map's diagonal sqrt(W^2 + H^2) and dist the Euclidean
+///               distance, used as its roulette weight (always > 0: no cell is D from another);
+///   octile_exp: this project's earlier stand-in, exp(-bias * (the change of the octile distance
+///               to the goal)), a much stronger pull (a step away weighs e^-4 of one towards).
+enum class GoalBias { eq10, octile_exp };
+
 class RandomWalker {
   public:
-    /// Goal bias: a neighbour's weight is exp(-bias * (how much the step changes the octile
-    /// distance to the goal)); 0 walks blindly.
+    GoalBias rule = GoalBias::octile_exp;
+    /// octile_exp's bias: 0 walks blindly.
     double bias = 2.0;
 
     /// A legal path from s to g in `out` (no cell twice), or false when g cannot be reached.
     bool walk(const GridMap& map, Cell s, Cell g, Rng& rng, Path& out, bool corner_cutting = false) {
+        if (rule == GoalBias::eq10) {
+            const double diagonal = std::hypot(static_cast<double>(map.width()), static_cast<double>(map.height()));
+            return walk_.walk(map, s, g, rng, out, corner_cutting, [&](Cell) {
+                return [&](Cell n, int) { return diagonal - std::hypot(n.x - g.x, n.y - g.y); };
+            });
+        }
         return walk_.walk(map, s, g, rng, out, corner_cutting, [&](Cell c) {
             const double here = octile(c, g);
             return [&, here](Cell n, int) { return std::exp(-bias * (octile(n, g) - here)); };

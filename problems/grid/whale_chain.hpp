@@ -2,12 +2,12 @@
 // File 003's whale moves on chains (shared/spec/algorithms.md, HS-WOA on grids): the operators
 // behind framework/chain.hpp's TowardMoves and Shortening capabilities, which ChainSpace offers.
 //   shortcut(c)          the line-of-sight shortcut: scan from the start and join each cell to the
-//                        farthest later cell it can reach by a legal shortest join, then cut
-//                        loops. The join is an octile elbow (diagonal run then straight run, or
-//                        the other way round: at most one turn) when one is legal, else grid.md's
-//                        straight cell line (decided here: all three are as short, and the
-//                        straight line of a slope other than 0, 1 or infinity is a staircase of
-//                        turns, which the hswoa objective counts);
+//                        farthest later cell it can reach by a legal join, then cut loops. The
+//                        join is grid.md's straight cell line (file 003's line of sight); with
+//                        `elbows` (this project's addition) an octile elbow (diagonal run then
+//                        straight run, or the other way round: at most one turn) is tried first
+//                        (all three are as short, and the straight line of a slope other than 0,
+//                        1 or infinity is a staircase of turns, which the hswoa objective counts);
 //   toward(c, t, w, rng) moving whale c towards whale t: a section of relative length w is chosen
 //                        at one random position, the same share of both chains (positions
 //                        floor/ceil of [u (1 - w), u (1 - w) + w] times the chain's last index,
@@ -40,8 +40,9 @@ class WhaleChainMoves {
     double bias = 2.0;  // goal bias of the walks, as RandomWalker's
 
     /// The line-of-sight shortcut of `c` into `out` (c unchanged); `out` is a legal chain with the
-    /// same ends, no cell twice, and never longer than c.
-    void shortcut(const GridMap& map, const Path& c, Path& out, bool corner_cutting) {
+    /// same ends, no cell twice, and never longer than c. `elbows`: try the one-turn elbows before
+    /// the straight line.
+    void shortcut(const GridMap& map, const Path& c, Path& out, bool corner_cutting, bool elbows = true) {
         out.clear();
         if (c.empty()) return;
         out.push_back(c.front());
@@ -49,7 +50,9 @@ class WhaleChainMoves {
         while (i + 1 < c.size()) {
             std::size_t j = c.size() - 1;
             for (; j > i + 1; --j)
-                if (join(map, c[i], c[j], out, corner_cutting)) break;
+                if (elbows ? join(map, c[i], c[j], out, corner_cutting)
+                           : straight(map, c[i], c[j], out, corner_cutting))
+                    break;
             if (j == i + 1) out.push_back(c[j]);
             i = j;
         }
@@ -62,6 +65,10 @@ class WhaleChainMoves {
     static bool join(const GridMap& map, Cell a, Cell b, Path& out, bool corner_cutting) {
         for (const bool diagonal_first : {true, false})
             if (elbow(map, a, b, diagonal_first, out, corner_cutting)) return true;
+        return straight(map, a, b, out, corner_cutting);
+    }
+    /// Appends grid.md's straight cell line from a (not appended) to b when it is free and legal.
+    static bool straight(const GridMap& map, Cell a, Cell b, Path& out, bool corner_cutting) {
         if (!line_is_free(map, a, b, corner_cutting)) return false;
         append_line(a, b, out);
         return true;

@@ -116,7 +116,7 @@ engine::CampaignAlgorithm algorithm(const py::handle& item, std::size_t index) {
             params[k] = v;
         }
     }
-    a.spec.params = param_values(params);
+    a.spec.params = param_values(*algo, params);
     return a;
 }
 

@@ -48,7 +48,8 @@ struct UserError {
 };
 
 /// Keyword arguments `**params` as the engine's ParamValues: numbers and bools only.
-engine::ParamValues param_values(const py::dict& params);
+/// The keyword parameters of algorithm `algo`: numbers, or names for its choice parameters.
+engine::ParamValues param_values(const std::string& algo, const py::dict& params);
 
 /// A user function as a CallbackSpec on [lower, upper]: called with the GIL held, a copy of each
 /// point (scalar: x of shape (dim,); vectorized: X of shape (n, dim), one point per row).

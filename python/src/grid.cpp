@@ -70,7 +70,7 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     spec.map = g.map;
     spec.start = cell(start, "start");
     spec.goal = cell(goal, "goal");
-    const engine::AlgorithmSpec algorithm{algo, param_values(params)};
+    const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     std::optional<engine::Problem> problem;
     {
         py::gil_scoped_release release;  // reachability and the encodings' tables

@@ -48,6 +48,8 @@ py::dict param_dict(const engine::ParamSpec& p) {
             d["default"] = static_cast<std::int64_t>(*p.default_value);
         else if (p.type == engine::ParamType::flag)
             d["default"] = *p.default_value != 0.0;
+        else if (p.type == engine::ParamType::choice)
+            d["default"] = p.default_text();
         else
             d["default"] = *p.default_value;
     } else {
@@ -59,6 +61,7 @@ py::dict param_dict(const engine::ParamSpec& p) {
     d["max_open"] = p.max_open;
     d["range"] = p.range();
     d["doc"] = p.doc;
+    if (p.type == engine::ParamType::choice) d["choices"] = p.choices;
     return d;
 }
 
@@ -142,7 +145,7 @@ py::dict minimize(const std::string& algo, const py::object& problem, std::optio
                   std::optional<std::int64_t> instance, const py::object& callback, bool vectorized,
                   const py::dict& params) {
     auto errors = std::make_shared<UserError>();
-    const engine::AlgorithmSpec algorithm{algo, param_values(params)};
+    const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     std::optional<engine::Problem> prepared;
     prepared.emplace(problem_spec(problem, dim, bounds, instance, vectorized, errors));
     const engine::Budget b = budget(evals, iters, target, wall_ms);
@@ -162,7 +165,7 @@ class Optimizer {
               std::optional<double> wall_ms, std::int64_t seed, const py::dict& params) {
         require(!bounds.is_none(), "bounds", "the Optimizer needs bounds=(lower, upper)");
         auto [lower, upper] = parse_bounds(bounds, dim);
-        engine::AlgorithmSpec algorithm{algo, param_values(params)};
+        engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
         const auto b = budget(evals, iters, target, wall_ms);
         const auto s = checked_seed(seed);
         py::gil_scoped_release release;
@@ -225,10 +228,22 @@ class Optimizer {
 
 }  // namespace
 
-engine::ParamValues param_values(const py::dict& params) {
+engine::ParamValues param_values(const std::string& algo, const py::dict& params) {
     engine::ParamValues v;
+    const engine::AlgorithmEntry* entry = engine::algorithms().find(algo);
     for (const auto& [key, value] : params) {
         const auto name = py::str(key).cast<std::string>();
+        // A choice parameter takes a name (a str), every other parameter a number.
+        const engine::ParamSpec* spec = entry ? entry->param(name) : nullptr;
+        const bool choice = spec && spec->type == engine::ParamType::choice;
+        const std::string type = py::str(py::type::of(value).attr("__name__")).cast<std::string>();
+        if (choice) {
+            if (!py::isinstance<py::str>(value))
+                throw py::type_error("parameter " + name + ": expected one of " + spec->range() + " (a str), got " +
+                                     type);
+            v.set_name(name, value.cast<std::string>());
+            continue;
+        }
         if (PyBool_Check(value.ptr())) {
             v.set(name, value.cast<bool>() ? 1.0 : 0.0);
         } else if (PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr()) ||

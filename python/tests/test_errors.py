@@ -50,7 +50,7 @@ def test_messages_as_the_command_line(kwargs, args):
 def test_type_errors():
     with pytest.raises(TypeError):
         pride.minimize("pso", 42, dim=2)
-    with pytest.raises(TypeError):
+    with pytest.raises(TypeError, match="^parameter pop: expected a number, got str$"):
         pride.minimize("pso", "sphere", dim=2, pop="many")
     with pytest.raises(TypeError):
         pride.minimize("pso", lambda x: "not a number", bounds=([0, 0], [1, 1]), evals=10)
@@ -183,3 +183,16 @@ def test_ctrl_c_ends_a_run_of_a_python_function():
     with pytest.raises(KeyboardInterrupt):
         pride.minimize("pso", f, bounds=([-1.0] * 2, [1.0] * 2), evals=100_000)
     assert calls["n"] < 10
+
+
+def test_choice_parameters():
+    """A choice parameter takes one of its names as a str; its names are listed."""
+    ga = next(a for a in pride.algorithms() if a["name"] == "ga")
+    shortcut = next(p for p in ga["params"] if p["name"] == "shortcut")
+    assert shortcut["type"] == "choice"
+    assert shortcut["choices"] == ["none", "line", "elbow"]
+    assert shortcut["default"] == "none"
+    with pytest.raises(TypeError, match=r"^parameter shortcut: expected one of none, line or elbow \(a str\), got int$"):
+        pride.minimize("ga", "sphere", dim=2, evals=10, shortcut=1)
+    with pytest.raises(ValueError, match="^ga: shortcut is a setting of the chain space"):
+        pride.minimize("ga", "sphere", dim=2, evals=10, shortcut="line")

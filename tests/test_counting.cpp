@@ -1,0 +1,142 @@
+// Every call of an objective is an evaluation (shared/spec/architecture.md): counted from outside,
+// by the objective itself, for every registered algorithm on every space and encoding it runs on
+// and every grid objective, the calls must equal the result's `evaluations` and stay within the
+// budget. Iterated over the registry, so that an algorithm registered tomorrow is covered.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/registry.hpp"
+#include "engine/run.hpp"
+
+namespace {
+
+using namespace pride;
+
+struct Space {
+    std::string encoding, connector;
+};
+
+/// The spaces of a grid `entry` plans on: the box encodings with each connector, and chains.
+std::vector<Space> grid_spaces(const engine::AlgorithmEntry& entry) {
+    std::vector<Space> out;
+    if (entry.run_box)
+        for (const char* encoding : {"line", "free"})
+            for (const char* connector : {"repair", "penalty"}) out.push_back({encoding, connector});
+    if (entry.run_chain) out.push_back({"chain", "repair"});
+    return out;
+}
+
+/// One run on file 002's 20 x 20 map (obstacles on the way, where SITP, shortcuts and repairs all
+/// have work), the objective counting its calls.
+engine::RunResult counted_run(const std::string& algo, const Space& s, const std::string& objective,
+                              engine::Budget budget, std::int64_t& calls) {
+    engine::GridSpec g;
+    g.map = engine::load_map((std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/file002-20x20.map").string());
+    g.start = {0, 19};
+    g.goal = {19, 0};
+    g.objective = objective;
+    g.encoding = s.encoding;
+    g.connector = s.connector;
+    g.objective_calls = std::make_shared<std::atomic<std::int64_t>>(0);
+    engine::AlgorithmSpec a{algo, {}};
+    if (const auto* e = engine::algorithms().find(algo); e && e->param("pop")) a.params.set("pop", 8);
+    const auto r = engine::run(a, engine::Problem(g), budget, 7);
+    calls = g.objective_calls->load();
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("counting: every grid algorithm's objective calls are its evaluations, within the budget",
+          "[counting][grid]") {
+    int covered = 0;
+    for (const auto& entry : engine::algorithms().entries()) {
+        if (entry.solve_grid) continue;  // A*, the exact optimum: no objective evaluations
+        if (entry.name.rfind("nlopt:", 0) == 0 && entry.name != "nlopt:LN_SBPLX" && entry.name != "nlopt:GN_CRS2_LM")
+            continue;  // one adapter for every NLopt algorithm: two of them stand for the rest
+        for (const Space& s : grid_spaces(entry))
+            for (const std::string objective : {"cells", "length", "weighted", "hswoa", "iqga"}) {
+                INFO(entry.name << " on " << s.encoding << " (" << s.connector << "), objective " << objective);
+                ++covered;
+                for (const std::int64_t n : {1, 97, 400}) {
+                    INFO("--evals " << n);
+                    engine::Budget b;
+                    b.evaluations = n;
+                    std::int64_t calls = 0;
+                    const auto r = counted_run(entry.name, s, objective, b, calls);
+                    CHECK(calls == r.evaluations);
+                    CHECK(r.evaluations == n);
+                }
+                engine::Budget b;
+                b.iterations = 2;
+                std::int64_t calls = 0;
+                const auto r = counted_run(entry.name, s, objective, b, calls);
+                INFO("--iters 2");
+                CHECK(calls == r.evaluations);
+                CHECK(r.evaluations > 0);
+            }
+    }
+    CHECK(covered >= 100);
+}
+
+TEST_CASE("counting: the chain space's scoring settings spend counted evaluations only", "[counting][grid]") {
+    // SITP ranked by the objective, and shortcuts kept only when not worse, cost evaluations; each
+    // is counted, and ranked by length / kept unconditionally they cost none beyond the chains'.
+    for (const std::string algo : {"iqga", "ga", "hswoa"}) {
+        for (const std::string setting :
+             {"sitp_score=objective", "sitp_score=length", "shortcut_keep=1", "shortcut=elbow", "walks=eq10"}) {
+            INFO(algo << " " << setting);
+            engine::GridSpec g;
+            g.map = engine::load_map(
+                (std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/file002-20x20.map").string());
+            g.start = {0, 19};
+            g.goal = {19, 0};
+            g.objective = algo == "iqga" ? "iqga" : "hswoa";
+            g.encoding = "chain";
+            g.init = algo == "ga" ? "sitp" : "";
+            g.objective_calls = std::make_shared<std::atomic<std::int64_t>>(0);
+            engine::AlgorithmSpec a{algo, {}};
+            a.params.set_from_string(setting);
+            if (setting == "shortcut_keep=1") a.params.set_name("shortcut", "line");
+            engine::Budget b;
+            b.evaluations = 333;
+            const auto r = engine::run(a, engine::Problem(g), b, 3);
+            CHECK(g.objective_calls->load() == 333);
+            CHECK(r.evaluations == 333);
+            REQUIRE(r.grid.has_value());
+            CHECK(r.grid->feasible);
+        }
+    }
+}
+
+TEST_CASE("counting: every box algorithm's calls of a user function are its evaluations", "[counting][box]") {
+    int covered = 0;
+    for (const auto& entry : engine::algorithms().entries()) {
+        if (!entry.run_box) continue;
+        INFO(entry.name);
+        ++covered;
+        for (const std::int64_t n : {1, 61, 300}) {
+            auto calls = std::make_shared<std::int64_t>(0);
+            engine::CallbackSpec cb;
+            cb.lower = {-2.0, -2.0, -2.0};
+            cb.upper = {2.0, 2.0, 2.0};
+            cb.scalar = [calls](std::span<const double> x) {
+                ++*calls;
+                return x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+            };
+            engine::Budget b;
+            b.evaluations = n;
+            const auto r = engine::run({entry.name, {}}, engine::Problem(cb), b, 5);
+            CHECK(*calls == r.evaluations);
+            CHECK(r.evaluations <= n);
+        }
+    }
+    CHECK(covered >= 14);
+}
