@@ -103,8 +103,12 @@ void require_memory(double bytes, const std::string& where, const std::string& w
 }  // namespace
 
 void check_grid_names(const GridSpec& g) {
-    require(known(grid_objectives(), g.objective), "objective",
+    // "user": a user's objective on paths, given as GridSpec::path_objective (Python: a callable).
+    require(g.objective == "user" || known(grid_objectives(), g.objective), "objective",
             "unknown objective '" + g.objective + "' (" + choices(grid_objectives()) + ")");
+    require((g.objective == "user") == (g.path_objective && g.path_objective->value), "objective",
+            g.objective == "user" ? "user needs the objective's function (a callable on paths)"
+                                  : "a function on paths comes with the objective user, not " + g.objective);
     // No encoding: each run plans on its algorithm's own, or its native one (planned_grid).
     require(g.encoding.empty() || known(grid_encodings(), g.encoding), "encoding",
             "unknown encoding '" + g.encoding + "' (" + choices(grid_encodings()) + ")");
@@ -155,9 +159,14 @@ grid::LinearObjective linear_objective(const GridSpec& g) {
     return grid::LinearObjective::of(h);
 }
 
+/// Why the objective has no exact optimum.
+std::string no_optimum(const GridSpec& g) {
+    return g.objective == "user" ? "the user objective has no per-step costs (step_cost)"
+                                 : "the " + g.objective + " objective is not a sum of step and turn costs";
+}
+
 void require_oracle(const GridSpec& g, const GridTarget& target) {
-    require(target.has_optimum(), "oracle",
-            "the " + g.objective + " objective is not a sum of step and turn costs, so it has no exact oracle");
+    require(target.has_optimum(), "oracle", no_optimum(g) + ", so it has no exact oracle");
 }
 
 template <class Objective>
@@ -215,8 +224,10 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
     } else if (const auto* g = std::get_if<GridSpec>(&spec)) {
         check_grid_spec(*g);
         out->name = "grid";
-        if (g->objective == "iqga")
-            prepare_grid(*out, *g, grid::IqgaObjective{});
+        if (g->objective == "user")
+            prepare_grid(*out, *g, OtherObjective{g->path_objective});
+        else if (g->objective == "iqga")
+            prepare_grid(*out, *g, OtherObjective::iqga());
         else
             prepare_grid(*out, *g, linear_objective(*g));
     } else {
@@ -233,8 +244,10 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
 void prepare_plan(Prepared& v, const GridSpec& plan) {
     check_grid_spec(plan);
     const GridTarget grid = *v.grid;
-    if (plan.objective == "iqga")
-        prepare_grid(v, plan, grid::IqgaObjective{});
+    if (plan.objective == "user")
+        prepare_grid(v, plan, OtherObjective{plan.path_objective});
+    else if (plan.objective == "iqga")
+        prepare_grid(v, plan, OtherObjective::iqga());
     else
         prepare_grid(v, plan, linear_objective(plan));
     v.grid = grid;
@@ -282,8 +295,7 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
     }
     if (entry.solve_grid) {
         require(!entry.needs_optimum || p.grid->has_optimum(), "objective",
-                "the " + g->objective + " objective is not a sum of step and turn costs, so " + entry.name +
-                    " has no optimum to find");
+                no_optimum(*g) + ", so " + entry.name + " has no optimum to find");
         return params;
     }
     if (p.encoding_error) throw *p.encoding_error;
@@ -341,8 +353,10 @@ double grid_value(const GridTarget& target, const grid::Path& path) {
 }
 
 /// The candidate is the result only when it is legal (grid.md: an infeasible candidate is never
-/// returned as a result).
-void record_path(GridOutcome& o, const GridTarget& target, const grid::Path& candidate, bool no_violations) {
+/// returned as a result). `value` is its objective, known from the run's own evaluation: the
+/// objective is not called again to report it (a user counting its calls sees the run's only).
+void record_path(GridOutcome& o, const GridTarget& target, const grid::Path& candidate, bool no_violations,
+                 double value) {
     std::visit(
         [&](const auto& g) {
             o.feasible = no_violations &&
@@ -351,7 +365,7 @@ void record_path(GridOutcome& o, const GridTarget& target, const grid::Path& can
         target.problem);
     if (o.feasible) {
         o.path = candidate;
-        o.value = grid_value(target, candidate);
+        o.value = value;
     }
 }
 
@@ -359,9 +373,27 @@ void record_path(GridOutcome& o, const GridTarget& target, const grid::Path& can
 
 double grid_optimum(const GridTarget& target, grid::Path* out) {
     if (!target.additive()) {
+        const auto& g = std::get<grid::GridProblem<OtherObjective>>(target.problem);
+        if (g.objective().user) {  // a user's objective: the oracle on its per-step costs
+            require(g.objective().has_steps(), "objective",
+                    "a user's objective without per-step costs (step_cost) has no exact optimum");
+            grid::Oracle oracle;
+            grid::Path path;
+            const double optimum = oracle.solve(g.map(), g.start(), g.goal(), UserSteps{g.objective().user.get()},
+                                                &path, g.corner_cutting());
+            if (optimum >= 0.0) {
+                // The two forms must agree, or the optimum is of another objective than the runs'.
+                const double value = g.result_value(path);
+                require(std::abs(value - optimum) <= 1e-9 * std::max(1.0, std::abs(optimum)), "step_cost",
+                        fmt::format("the per-step costs sum to {} on the optimal path, the objective gives {}: they "
+                                    "must agree on every path",
+                                    optimum, value));
+            }
+            if (out && optimum >= 0.0) *out = std::move(path);
+            return optimum;
+        }
         FrontOptimum& cached = *target.front_optimum;
         std::call_once(cached.once, [&] {
-            const auto& g = std::get<grid::GridProblem<grid::IqgaObjective>>(target.problem);
             cached.value = grid::iqga_optimum(g.map(), g.start(), g.goal(), g.corner_cutting(), &cached.path);
         });
         if (!cached.value) return -1.0;
@@ -643,7 +675,7 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
     } else if (p.chain) {
         o.encoding = "chain";
         ChainResult r = entry.run_chain(params, *p.chain, termination, seed);
-        record_path(o, *p.grid, r.best_x, true);
+        record_path(o, *p.grid, r.best_x, true, r.best_f);
         copy_run(out, r);
     } else {
         o.encoding = g.encoding;
@@ -654,7 +686,7 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
                 if constexpr (requires(Target & t) { t.decode(std::span<const double>{}).violations; }) {
                     auto fresh = target;  // decoding uses scratch; the prepared problem stays untouched
                     const grid::DecodedPath& best = fresh.decode(r.best_x);
-                    record_path(o, *p.grid, best.path, best.violations == 0);
+                    record_path(o, *p.grid, best.path, best.violations == 0, r.best_f);
                 }
             },
             p.box->problem);

@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "engine/other_objective.hpp"
 #include "engine/params.hpp"
 #include "framework/problem.hpp"
 #include "framework/termination.hpp"
@@ -33,7 +34,10 @@ struct GridSpec {
     std::shared_ptr<const grid::GridMap> map;
     grid::Cell start{};
     grid::Cell goal{};
-    std::string objective = "cells";   // cells, length, weighted, iqga, hswoa (see objectives())
+    std::string objective = "cells";  // cells, length, weighted, iqga, hswoa (see objectives()); user
+    // A user's objective on paths (objective "user"): its value, and optionally its per-step
+    // costs for the exact optimum (engine/other_objective.hpp).
+    std::shared_ptr<const UserPathObjective> path_objective;
     std::vector<double> weights;       // weighted: {w_len, w_turn, w_angle}; empty: the defaults
     std::optional<double> lambda;      // hswoa: the turn weight; empty: the default
     std::string encoding;              // line, free, chain (see encodings()); empty: each algorithm's native one

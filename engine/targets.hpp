@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "engine/callback.hpp"
+#include "engine/other_objective.hpp"
 #include "framework/encoding.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/grid/chain.hpp"
@@ -26,10 +27,12 @@ using GridFree = Encoded<grid::GridProblem<Objective>, grid::FreeEncoding<grid::
 
 // Every continuous function is one type (continuous::Function: dispatch once per batch), so an
 // algorithm is compiled once for all of them.
-using BoxVariant = std::variant<continuous::Function, GridLine<grid::LinearObjective>, GridLine<grid::IqgaObjective>,
-                                GridFree<grid::LinearObjective>, GridFree<grid::IqgaObjective>, CallbackProblem>;
-using ChainVariant = std::variant<grid::ChainSpace<grid::LinearObjective>, grid::ChainSpace<grid::IqgaObjective>>;
-using GridVariant = std::variant<grid::GridProblem<grid::LinearObjective>, grid::GridProblem<grid::IqgaObjective>>;
+// The grid's objectives are two types: the linear ones (cells, length, weighted, hswoa) and the
+// others (iqga, a user's: other_objective.hpp).
+using BoxVariant = std::variant<continuous::Function, GridLine<grid::LinearObjective>, GridLine<OtherObjective>,
+                                GridFree<grid::LinearObjective>, GridFree<OtherObjective>, CallbackProblem>;
+using ChainVariant = std::variant<grid::ChainSpace<grid::LinearObjective>, grid::ChainSpace<OtherObjective>>;
+using GridVariant = std::variant<grid::GridProblem<grid::LinearObjective>, grid::GridProblem<OtherObjective>>;
 
 /// A problem an algorithm searches as a box of reals. Each run copies the alternative it holds.
 struct BoxTarget {
@@ -54,9 +57,14 @@ struct GridTarget {
     bool additive() const {
         return std::visit([](const auto& p) { return std::decay_t<decltype(p.objective())>::additive; }, problem);
     }
-    /// Every objective has an exact optimum: the additive ones through the oracle (oracle.hpp),
-    /// iqga through the 3-D Pareto front (pareto.hpp).
-    bool has_optimum() const { return true; }
+    /// The objective has an exact optimum: the additive ones through the oracle (oracle.hpp),
+    /// iqga through the 3-D Pareto front (pareto.hpp), a user's through the oracle on its per-step
+    /// form when it gives one.
+    bool has_optimum() const {
+        if (const auto* o = std::get_if<grid::GridProblem<OtherObjective>>(&problem))
+            return !o->objective().user || o->objective().has_steps();
+        return true;
+    }
 };
 
 /// The exact optimum of the target's objective and one optimal path (into `out` when given), or

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -14,6 +15,8 @@
 
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "problems/grid/path.hpp"
+#include "tests/test_support.hpp"
 
 namespace {
 
@@ -139,4 +142,80 @@ TEST_CASE("counting: every box algorithm's calls of a user function are its eval
         }
     }
     CHECK(covered >= 14);
+}
+
+TEST_CASE("counting: a user's objective on paths runs with every grid algorithm, each call an evaluation",
+          "[counting][grid][user]") {
+    // The length of a path, by the user's own function, counting its calls; its per-step form:
+    // 1 orthogonal, sqrt(2) diagonal, whatever the previous step.
+    auto calls = std::make_shared<std::int64_t>(0);
+    auto user = std::make_shared<engine::UserPathObjective>();
+    user->value = [calls](const grid::Path& p) {
+        ++*calls;
+        return grid::metrics(p, false).length;
+    };
+    user->step_cost = [](int, int d) { return d % 2 == 0 ? 1.0 : std::sqrt(2.0); };
+    engine::GridSpec g;
+    g.map = engine::load_map((std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/file002-20x20.map").string());
+    g.start = {0, 19};
+    g.goal = {19, 0};
+    g.objective = "user";
+    g.path_objective = user;
+    const engine::Problem problem(g);
+    int covered = 0;
+    for (const auto& entry : engine::algorithms().entries()) {
+        if (entry.solve_grid || (entry.name.rfind("nlopt:", 0) == 0 && entry.name != "nlopt:LN_SBPLX")) continue;
+        for (const std::string& encoding : entry.encodings()) {
+            INFO(entry.name << " on " << encoding);
+            ++covered;
+            engine::AlgorithmSpec a{entry.name, {}};
+            a.params.set_name("encoding", encoding);
+            engine::Budget b;
+            b.evaluations = 150;
+            *calls = 0;
+            const auto r = engine::run(a, problem, b, 2);
+            CHECK(*calls == r.evaluations);  // the reported value is the run's own, not a new call
+            CHECK(r.evaluations == 150);
+            REQUIRE(r.grid.has_value());
+            if (r.grid->feasible) CHECK(r.grid->value == grid::metrics(r.grid->path, false).length);
+        }
+    }
+    CHECK(covered >= 30);
+    // exact: the oracle on the per-step costs, the same optimum as the length objective's.
+    engine::GridSpec length = g;
+    length.objective = "length";
+    length.path_objective = nullptr;
+    const auto by_user = engine::run({"exact", {}}, problem, {}, 1);
+    const auto by_length = engine::run({"exact", {}}, engine::Problem(length), {}, 1);
+    REQUIRE(by_user.grid->optimum.has_value());
+    CHECK(*by_user.grid->optimum == Approx(*by_length.grid->optimum).epsilon(1e-12));
+    CHECK(by_user.grid->value == Approx(*by_length.grid->optimum).epsilon(1e-12));
+    // Per-step costs that do not sum to the objective are refused, and so are negative ones.
+    auto wrong = std::make_shared<engine::UserPathObjective>(*user);
+    wrong->step_cost = [](int, int) { return 1.0; };
+    engine::GridSpec w = g;
+    w.path_objective = wrong;
+    CHECK_THAT(test::input_error_message([&] {
+                   engine::run({"exact", {}}, engine::Problem(w), {}, 1);
+               }),
+               Catch::Contains("step_cost: the per-step costs sum to"));
+    auto negative = std::make_shared<engine::UserPathObjective>(*user);
+    negative->step_cost = [](int, int) { return -1.0; };
+    w.path_objective = negative;
+    CHECK_THAT(test::input_error_message([&] {
+                   engine::run({"exact", {}}, engine::Problem(w), {}, 1);
+               }),
+               Catch::Contains("step_cost: must be a finite number >= 0"));
+    // Without per-step costs there is no exact optimum, said so.
+    auto plain = std::make_shared<engine::UserPathObjective>();
+    plain->value = user->value;
+    w.path_objective = plain;
+    CHECK_THAT(test::input_error_message([&] {
+                   engine::run({"exact", {}}, engine::Problem(w), {}, 1);
+               }),
+               Catch::Contains("the user objective has no per-step costs (step_cost), so exact has no optimum"));
+    // The objective user comes with a function, and a function with the objective user.
+    engine::GridSpec missing = g;
+    missing.path_objective = nullptr;
+    CHECK_THAT(test::input_error_message([&] { engine::Problem{missing}; }), Catch::Contains("user needs"));
 }

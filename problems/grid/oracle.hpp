@@ -7,6 +7,10 @@
 // legal steps of map.hpp (8-connected, no corner cutting unless asked); a step in direction e from
 // a state whose last direction is d != e adds turn_cost(turn_steps(d, e)).
 //
+// An objective may instead give the cost of each step from the previous direction, edge_cost(previous,
+// d) with previous -1 for the first step (a user's per-step cost): the same search over the same
+// states, with that cost on each edge.
+//
 // The search is A* over those states with a consistent heuristic that ignores turns (the cheapest
 // way to cover the remaining dx, dy with the objective's cheapest orthogonal and diagonal steps),
 // which is Dijkstra when `use_heuristic` is false; both return the same optimum. Flat arrays
@@ -48,14 +52,26 @@ class Oracle {
                                                Path* out = nullptr, bool corner_cutting = false) {
         if (!map.free(s) || !map.free(g)) return -1.0;
         prepare(map.size());
-        double step[8];
-        for (int d = 0; d < 8; ++d) step[d] = objective.step_cost(d);
-        double turn[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
-        for (int k = 1; k <= 4; ++k) turn[k] = objective.turn_cost(k);
-        // Heuristic: orthogonal steps cost at least a, diagonal ones at least b; turns cost >= 0.
-        double a = step[0], b = step[1];
-        for (int d = 0; d < 8; d += 2) a = std::min(a, step[d]);
-        for (int d = 1; d < 8; d += 2) b = std::min(b, step[d]);
+        constexpr bool per_edge = requires {
+            objective.edge_cost(-1, 0);
+        };
+        double step[8] = {}, turn[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, edge[kDirs][8] = {};
+        if constexpr (per_edge) {
+            for (std::uint32_t last = 0; last < kDirs; ++last)
+                for (int d = 0; d < 8; ++d)
+                    edge[last][d] = objective.edge_cost(last == kNone ? -1 : static_cast<int>(last), d);
+        } else {
+            for (int d = 0; d < 8; ++d) step[d] = objective.step_cost(d);
+            for (int k = 1; k <= 4; ++k) turn[k] = objective.turn_cost(k);
+        }
+        // Heuristic: orthogonal steps cost at least a, diagonal ones at least b; turns cost >= 0
+        // (with per-edge costs: the least of each kind over every previous direction).
+        double a = per_edge ? edge[0][0] : step[0], b = per_edge ? edge[0][1] : step[1];
+        for (int d = 0; d < 8; ++d)
+            for (std::uint32_t last = 0; last < (per_edge ? kDirs : 1); ++last) {
+                const double c = per_edge ? edge[last][d] : step[d];
+                (d % 2 == 0 ? a : b) = std::min(d % 2 == 0 ? a : b, c);
+            }
         const double per_minor = std::min(b, 2.0 * a), per_excess = std::min(a, b);
         const bool guided = use_heuristic && per_minor > 0.0 && per_excess > 0.0;
         const auto h = [&](Cell c) {
@@ -87,8 +103,13 @@ class Oracle {
                 const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + map.offset(d));
                 const std::uint32_t next = ni * kDirs + static_cast<std::uint32_t>(d);
                 if (arrays_.closed[next] == arrays_.generation) continue;
-                double ng = cost + step[d];
-                if (last != kNone && last != d) ng += turn[turn_steps(last, d)];
+                double ng = 0.0;
+                if constexpr (per_edge) {
+                    ng = cost + edge[last][d];
+                } else {
+                    ng = cost + step[d];
+                    if (last != kNone && last != d) ng += turn[turn_steps(last, d)];
+                }
                 if (arrays_.seen[next] == arrays_.generation && arrays_.g[next] <= ng) continue;
                 open(next, ng, ng + h(Cell{c.x + kDx[d], c.y + kDy[d]}), node.state);
             }

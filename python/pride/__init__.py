@@ -141,18 +141,28 @@ class Optimizer:
         self.close()
 
 
-def plan(grid, start, goal, *, algo="pso", objective="cells", encoding="", connector="repair", init="",
-         waypoints=3, weights=None, lambda_=None, corner_cutting=False, oracle=False, evals=None, iters=None,
+def plan(grid, start, goal, *, algo="pso", objective="cells", step_cost=None, encoding="", connector="repair",
+         init="", waypoints=3, weights=None, lambda_=None, corner_cutting=False, oracle=False, evals=None, iters=None,
          seed=0, callback=None, **params):
     """A path on ``grid`` (a ``pride.Grid``) from ``start`` to ``goal`` ((x, y), x the column from
     the left, y the row from the top) by any grid algorithm, as ``pride path`` plans it: the
     result's ``path`` is an (n, 2) array of (x, y), with ``metrics`` and ``objective_value``;
     ``oracle=True`` adds the exact ``optimum`` and the ``gap``. Without evals or iters, 50
     iterations. Without ``encoding`` the algorithm plans on its native space (chain for iqga, iaga,
-    icga and the woa family, line for the others); an encoding it cannot use is a ValueError."""
+    icga and the woa family, line for the others); an encoding it cannot use is a ValueError.
+
+    ``objective`` may be a function of the path instead of a name: ``objective(cells)`` gets the
+    path's cells as an (n, 2) int array of (x, y) and returns a number to minimise; every call is
+    one evaluation, counted in ``evaluations`` and within the budget, with every algorithm and
+    encoding. With ``step_cost(previous, direction)`` (the cost of a step in direction 0..7 after
+    one in direction ``previous``, -1 for the first; directions (dx, dy) = (1,0) (1,1) (0,1)
+    (-1,1) (-1,0) (-1,-1) (0,-1) (1,-1); >= 0; summing to ``objective`` on every path), ``exact``
+    and ``oracle=True`` find its exact optimum; their calls of it are their own work, not
+    evaluations."""
     if not isinstance(grid, Grid):
         raise TypeError(f"grid: expected a pride.Grid, got {type(grid).__name__}")
-    return Result(_pride.plan(grid, start, goal, _str("algo", algo), _str("objective", objective),
+    return Result(_pride.plan(grid, start, goal, _str("algo", algo),
+                              objective if callable(objective) else _str("objective", objective), step_cost,
                               _str("encoding", encoding), _str("connector", connector), _str("init", init),
                               _int("waypoints", waypoints, False),
                               None if weights is None else [_real("weights", w) for w in weights], _real("lambda_", lambda_),

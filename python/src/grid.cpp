@@ -50,14 +50,66 @@ grid::Cell cell(const py::object& o, const char* where) {
     return {coordinate(s[0]), coordinate(s[1])};
 }
 
+/// A Python objective on paths: fn(cells), cells an (n, 2) array of int (x, y) that the function
+/// may keep (each call gets its own), returning one number; with step_cost(previous, direction)
+/// (previous -1 for the first step) its per-step form for the exact optimum. Each call holds the
+/// GIL; what it raises is remembered and raised again from plan().
+std::shared_ptr<const engine::UserPathObjective> user_objective(const py::object& fn, const py::object& step_cost,
+                                                                const std::shared_ptr<UserError>& errors) {
+    auto value = std::make_shared<py::object>(fn);
+    auto user = std::make_shared<engine::UserPathObjective>();
+    auto number = [](const py::object& v, const char* what) {
+        const double f = PyFloat_AsDouble(v.ptr());
+        if (f == -1.0 && PyErr_Occurred()) {
+            PyErr_Clear();
+            throw py::type_error(std::string(what) + ": the function must return one number, got " +
+                                 py::str(py::type::of(v).attr("__name__")).cast<std::string>());
+        }
+        return f;
+    };
+    user->value = [value, errors, number](const grid::Path& path) -> double {
+        py::gil_scoped_acquire gil;
+        try {
+            return number((*value)(path_array(path)), "objective");
+        } catch (...) {
+            errors->remember(std::current_exception());
+            throw;
+        }
+    };
+    if (!step_cost.is_none()) {
+        if (!PyCallable_Check(step_cost.ptr())) throw py::type_error("step_cost: expected a callable");
+        auto step = std::make_shared<py::object>(step_cost);
+        user->step_cost = [step, errors, number](int previous, int direction) -> double {
+            py::gil_scoped_acquire gil;
+            try {
+                return number((*step)(previous, direction), "step_cost");
+            } catch (...) {
+                errors->remember(std::current_exception());
+                throw;
+            }
+        };
+    }
+    return user;
+}
+
 py::dict plan(const Grid& g, const py::object& start, const py::object& goal, const std::string& algo,
-              const std::string& objective, const std::string& encoding, const std::string& connector,
-              const std::string& init, std::int64_t waypoints, const std::optional<std::vector<double>>& weights,
-              std::optional<double> lambda, bool corner_cutting, bool oracle, std::optional<std::int64_t> evals,
-              std::optional<std::int64_t> iters, std::int64_t seed, const py::object& callback,
-              const py::dict& params) {
+              const py::object& objective, const py::object& step_cost, const std::string& encoding,
+              const std::string& connector, const std::string& init, std::int64_t waypoints,
+              const std::optional<std::vector<double>>& weights, std::optional<double> lambda, bool corner_cutting,
+              bool oracle, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::int64_t seed,
+              const py::object& callback, const py::dict& params) {
     engine::GridSpec spec;
-    spec.objective = objective;
+    auto errors = std::make_shared<UserError>();
+    if (py::isinstance<py::str>(objective)) {
+        spec.objective = objective.cast<std::string>();
+        if (!step_cost.is_none()) throw py::type_error("step_cost: only with an objective that is a function");
+    } else if (PyCallable_Check(objective.ptr())) {
+        spec.objective = "user";
+        spec.path_objective = user_objective(objective, step_cost, errors);
+    } else {
+        throw py::type_error("objective: expected a name or a function of the path's cells, got " +
+                             py::str(py::type::of(objective).attr("__name__")).cast<std::string>());
+    }
     spec.encoding = encoding;
     spec.connector = connector;
     spec.init = init;
@@ -79,10 +131,9 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     const engine::Budget b = budget(evals, iters, std::nullopt, std::nullopt);
     engine::check(algorithm, *problem, b);
     const auto s = checked_seed(seed);
-    auto errors = std::make_shared<UserError>();
     const engine::RunResult r = run_released(algorithm, *problem, b, s, callback, errors);
     py::dict d = result_dict(r);
-    d["objective"] = objective;
+    d["objective"] = spec.objective;
     d["seed"] = seed;
     const auto& run = *r.grid;
     if (run.optimum && run.feasible) {
@@ -162,9 +213,9 @@ void bind_grid(py::module_& m) {
             },
             py::arg("x"), py::arg("y"));
     m.def("plan", &plan, py::arg("grid"), py::arg("start"), py::arg("goal"), py::arg("algo"), py::arg("objective"),
-          py::arg("encoding"), py::arg("connector"), py::arg("init"), py::arg("waypoints"), py::arg("weights"),
-          py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"), py::arg("evals"), py::arg("iters"),
-          py::arg("seed"), py::arg("callback"), py::arg("params"));
+          py::arg("step_cost"), py::arg("encoding"), py::arg("connector"), py::arg("init"), py::arg("waypoints"),
+          py::arg("weights"), py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"), py::arg("evals"),
+          py::arg("iters"), py::arg("seed"), py::arg("callback"), py::arg("params"));
     m.def("pareto", &pareto, py::arg("grid"), py::arg("start"), py::arg("goal"), py::arg("objectives"),
           py::arg("corner_cutting"));
 }

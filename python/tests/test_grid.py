@@ -154,3 +154,41 @@ def test_plan_uses_the_algorithms_native_space():
         pride.plan(g, START, GOAL, algo="hswoa", evals=60, shortcut=1)
     r = pride.plan(g, START, GOAL, algo="hswoa", evals=60, seed=1, shortcut="elbow", walks="octile")
     assert r.feasible and r.evaluations == 60
+
+
+def test_a_function_as_the_objective_every_call_counted():
+    """A callable on the path's cells is the objective: every call an evaluation, for every grid
+    algorithm and encoding; with its per-step form, exact finds its optimum."""
+    g = pride.Grid(ARRAY)
+    calls = []
+    kept = []
+
+    def length(cells):
+        calls.append(len(cells))
+        kept.append(cells)  # the arrays are the function's to keep
+        steps = np.abs(np.diff(cells, axis=0)).sum(axis=1)
+        return float((steps == 1).sum() + np.sqrt(2) * (steps == 2).sum())
+
+    for a in ALGOS:
+        if "grid" in a["spaces"] or a["name"].startswith("nlopt:") and a["name"] != "nlopt:LN_SBPLX":
+            continue
+        encodings = (["line", "free"] if "box" in a["spaces"] else []) + (["chain"] if "chain" in a["spaces"] else [])
+        for encoding in encodings:
+            calls.clear()
+            r = pride.plan(g, START, GOAL, algo=a["name"], objective=length, encoding=encoding, evals=90, seed=2)
+            assert len(calls) == r.evaluations == 90, (a["name"], encoding)
+            if r.feasible:
+                assert r.objective_value == pytest.approx(r.metrics["length"], abs=1e-12)
+    assert all(k.dtype.kind == "i" and k.shape[1] == 2 for k in kept)
+    step = lambda previous, direction: 1.0 if direction % 2 == 0 else float(np.sqrt(2))
+    exact = pride.plan(g, START, GOAL, algo="exact", objective=length, step_cost=step)
+    by_name = pride.plan(g, START, GOAL, algo="exact", objective="length")
+    assert exact.optimum == pytest.approx(by_name.optimum, rel=1e-12)
+    with pytest.raises(ValueError, match="no per-step costs"):
+        pride.plan(g, START, GOAL, algo="exact", objective=length)
+    with pytest.raises(TypeError, match="^objective: the function must return one number, got str$"):
+        pride.plan(g, START, GOAL, algo="pso", objective=lambda cells: "short", evals=10)
+    with pytest.raises(TypeError, match="^step_cost: only with an objective that is a function$"):
+        pride.plan(g, START, GOAL, algo="exact", objective="length", step_cost=step)
+    with pytest.raises(ZeroDivisionError):
+        pride.plan(g, START, GOAL, algo="ga", objective=lambda cells: 1 / 0, evals=10)
