@@ -78,6 +78,7 @@ def claims_tests(equal, generations):
                      rp.rs_row(f"{m}: IQGA fewer turns than ICGA?", g, pid, "iqga", "icga", "turns", budget),
                      rp.rs_row(f"{m}: IAGA better than GA?", g, pid, "iaga", "ga", "best", budget),
                      rp.rs_row(f"{m}: ICGA better than IAGA?", g, pid, "icga", "iaga", "best", budget),
+                     rp.rs_row(f"{m}: ICGA better than GA?", g, pid, "icga", "ga", "best", budget),
                      rp.rs_row(f"{m}: IQGA converges earlier than GA?", g, pid, "iqga", "ga", "conv_iter", budget),
                      rp.rs_row(f"{m}: IQGA converges earlier than GA?", g, pid, "iqga", "ga", "conv_evals", budget)]
     return rp.tests_table(rows)

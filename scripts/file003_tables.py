@@ -157,6 +157,8 @@ def references_table(meta):
 
 def cpu_table(meta):
     c = meta["cpu"]
+    ratio = {b: [c["ms"][p][f"hswoa {b}"] / c["ms"][p][f"woa {b}"] for p in PROBLEMS]
+             for b in ("--iters 50", "--evals 1020")}
     rows = []
     for pid in PROBLEMS:
         cells = [f"{c['ms'][pid][k]:.1f}" for k in c["columns"]]
@@ -169,7 +171,10 @@ def cpu_table(meta):
             f"1..{CPU_RUNS + 1} less that over seed 1, divided by {CPU_RUNS} (start-up and the exact optimum "
             f"cancel out); one process at a time; the load average (1 min) while "
             f"they ran: {c['load'][0]:.2f}-{c['load'][1]:.2f}"
-            f"{' (measured under load: another job shared the 2 cores)' if c['load'][1] > 1.5 else ''}.")
+            f"{' (measured under load: another job shared the 2 cores)' if c['load'][1] > 1.5 else ''}. "
+            f"An HS-WOA run takes {min(ratio['--iters 50']):.1f} to {max(ratio['--iters 50']):.1f} times a WOA "
+            f"run's processor time at 50 iterations, {min(ratio['--evals 1020']):.1f} to "
+            f"{max(ratio['--evals 1020']):.1f} times at 1,020 evaluations.")
 
 
 def blocks(campaigns, meta):
