@@ -530,7 +530,9 @@ def timed_cpu(cmd, **kw):
 def git_commit():
     try:
         c = run(["git", "-C", REPO, "rev-parse", "--short=12", "HEAD"]).strip()
-        dirty = run(["git", "-C", REPO, "status", "--porcelain", "--untracked-files=no"]).strip()
+        # the pages' own outputs (docs/results) do not count: the command rewrites them
+        dirty = run(["git", "-C", REPO, "status", "--porcelain", "--untracked-files=no", "--", ".",
+                     ":(exclude)docs/results"]).strip()
         return c + (" with uncommitted changes" if dirty else "")
     except SystemExit:
         return "unknown"
@@ -546,11 +548,11 @@ def regenerate(pages, build, jobs):
     DATA.mkdir(parents=True, exist_ok=True)
     IMG.mkdir(parents=True, exist_ok=True)
     sys.path.insert(0, str(REPO / "scripts"))
-    metas = {}
+    metas, commit = {}, git_commit()
     for page in pages:
         t_page = time.monotonic()
         module = __import__(PAGES[page]["module"])
-        meta = {"commit": git_commit(), "jobs": jobs, "cores": os.cpu_count(), "campaigns": {}}
+        meta = {"commit": commit, "jobs": jobs, "cores": os.cpu_count(), "campaigns": {}}
         for c in PAGES[page]["campaigns"]:
             store = stores / f"{c}.sqlite"
             for suffix in ("", "-wal", "-shm"):
