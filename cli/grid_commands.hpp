@@ -17,7 +17,7 @@ struct PathOptions {
     std::string goal;
     std::string algo;
     std::string objective = "cells";
-    std::string encoding = "line";
+    std::string encoding;  // empty: the algorithm's native one
     std::string connector = "repair";
     // uniform, walk (random feasible walks) or rules (file 000's rough-set rule walks); empty: the
     // algorithm's own choice (rules for ilso, uniform for the others)

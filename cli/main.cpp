@@ -120,7 +120,9 @@ int run_main(int argc, char** argv) {
     path_cmd->add_option("--goal", path.goal, "goal cell X,Y")->required();
     path_cmd->add_option("--algo", path.algo, all_names + " or nlopt:NAME (see 'pride list')")->required();
     path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
-    path_cmd->add_option("--encoding", path.encoding, "line (default), free or chain");
+    path_cmd->add_option("--encoding", path.encoding,
+                         "line, free or chain (default: the algorithm's native one: chain for iqga, iaga, icga and the "
+                         "woa family, line for the others)");
     path_cmd->add_option("--connector", path.connector, "repair (default) or penalty");
     path_cmd->add_option(
         "--init", path.init,

@@ -52,6 +52,7 @@ std::string describe(const Campaign& c) {
     for (const auto& a : c.algorithms) {
         s += "algorithm " + json_string(a.id) + ": " + a.spec.name;
         for (const auto& [k, v] : a.spec.params.values()) s += " " + k + "=" + json_number(v);
+        for (const auto& [k, v] : a.spec.params.names()) s += " " + k + "=" + json_string(v);
         s += "\n";
     }
     return s;

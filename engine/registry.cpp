@@ -1,5 +1,6 @@
 #include "engine/registry.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "framework/error.hpp"
@@ -16,6 +17,13 @@ std::vector<std::string> AlgorithmEntry::spaces() const {
     return out;
 }
 
+std::vector<std::string> AlgorithmEntry::encodings() const {
+    std::vector<std::string> out;
+    if (run_box) out.insert(out.end(), {"line", "free"});
+    if (run_chain) out.emplace_back("chain");
+    return out;
+}
+
 const ParamSpec* AlgorithmEntry::param(std::string_view wanted) const {
     for (const auto& p : params)
         if (p.name == wanted) return &p;
@@ -27,6 +35,30 @@ void AlgorithmRegistry::add(AlgorithmEntry entry) {
     if (find(entry.name)) throw std::logic_error("algorithm '" + entry.name + "' is registered twice");
     if (!entry.run_box && !entry.run_chain && !entry.solve_grid)
         throw std::logic_error("algorithm '" + entry.name + "' is registered without a runner");
+    // How it plans on a grid, the same three names for every algorithm that plans through an
+    // encoding (none of them has a default: the run's value is the problem's, else the native one).
+    if (entry.run_box || entry.run_chain) {
+        const auto encodings = entry.encodings();
+        if (entry.native_encoding.empty()) entry.native_encoding = encodings.front();
+        if (std::find(encodings.begin(), encodings.end(), entry.native_encoding) == encodings.end())
+            throw std::logic_error("algorithm '" + entry.name + "' plans natively on " + entry.native_encoding +
+                                   ", which it cannot run on");
+        auto grid_choice = [](std::string name, std::vector<std::string> choices, std::string doc) {
+            ParamSpec s = choice(std::move(name), choices, choices.front(), std::move(doc)).only_on_grids();
+            s.no_default();
+            return s;
+        };
+        entry.params.push_back(grid_choice("encoding", encodings,
+                                           "grids: the encoding it plans through (default: the problem's, else " +
+                                               entry.native_encoding + ", its native one)"));
+        if (entry.run_box)
+            entry.params.push_back(grid_choice("connector", {"repair", "penalty"},
+                                               "grids, line and free: how waypoints are joined (default: the "
+                                               "problem's, else repair)"));
+        entry.params.push_back(
+            grid_choice("init", {"uniform", "walk", "rules", "sitp"},
+                        "grids: its initial points or chains (default: the problem's, else its own)"));
+    }
     for (std::size_t i = 0; i < entry.params.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (entry.params[i].name == entry.params[j].name)

@@ -66,8 +66,19 @@ struct AlgorithmEntry {
     /// against the machine's memory before anything is allocated.
     std::function<double(const Params&, std::size_t dimension)> memory;
 
+    /// The grid encoding it plans on when neither the run nor the problem names one: the one its
+    /// paper plans on (`chain` for file 002's and file 003's planners; `line` for PSO, LSO, ILSO
+    /// and the GA, as file 000 plans with them, and for every box algorithm). Filled in by the
+    /// registry when left empty; whole-map algorithms (A*, exact) plan on the grid itself.
+    std::string native_encoding;
+
     /// "box", "chain", "grid": the spaces it runs on.
     std::vector<std::string> spaces() const;
+    /// The grid encodings it can plan through: line and free with a box runner, chain with a chain one.
+    std::vector<std::string> encodings() const;
+    /// False for whole-map planners (A*, exact), which do not evaluate the objective: they have no
+    /// evaluation budget, and comparisons at equal evaluations exempt them.
+    bool evaluates() const { return !solve_grid; }
     const ParamSpec* param(std::string_view name) const;
 };
 

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <sys/resource.h>
 #include <unistd.h>
+#include <map>
+#include <mutex>
 
 #include <atomic>
 #include <chrono>
@@ -103,7 +105,8 @@ void require_memory(double bytes, const std::string& where, const std::string& w
 void check_grid_names(const GridSpec& g) {
     require(known(grid_objectives(), g.objective), "objective",
             "unknown objective '" + g.objective + "' (" + choices(grid_objectives()) + ")");
-    require(known(grid_encodings(), g.encoding), "encoding",
+    // No encoding: each run plans on its algorithm's own, or its native one (planned_grid).
+    require(g.encoding.empty() || known(grid_encodings(), g.encoding), "encoding",
             "unknown encoding '" + g.encoding + "' (" + choices(grid_encodings()) + ")");
     require(known(grid_connectors(), g.connector), "connector",
             "unknown connector '" + g.connector + "' (" + choices(grid_connectors()) + ")");
@@ -113,7 +116,7 @@ void check_grid_names(const GridSpec& g) {
             "must be in [1, 1000], got " + std::to_string(g.waypoints));
     require(g.init.empty() || known(grid_inits(), g.init), "init",
             "expected uniform, walk, rules or sitp, got '" + g.init + "'");
-    require(g.init != "rules" || g.encoding == "line" || g.encoding == "free", "init " + g.init,
+    require(g.init != "rules" || g.encoding != "chain", "init " + g.init,
             "only for the line and free encodings (chains start from random walks, or SITP walks with init sitp)");
     require(g.weights.empty() || g.objective == "weighted", "weights", "only for the weighted objective");
     require(!g.lambda || g.objective == "hswoa", "lambda", "only for the hswoa objective");
@@ -163,6 +166,7 @@ void prepare_grid(Prepared& out, const GridSpec& g, Objective objective) {
     problem.count_calls(g.objective_calls);
     out.grid = GridTarget{problem};
     if (g.oracle) require_oracle(g, *out.grid);
+    if (g.encoding.empty()) return;  // planned per run (planned_grid): A* and exact need none
     try {
         if (g.encoding == "chain") {
             grid::ChainSpace<Objective> space(problem);
@@ -224,6 +228,18 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
     return out;
 }
 
+/// A grid problem's variant planned on another encoding, connector or init (Problem::planned_for):
+/// the same grid target (its tables and its cached optimum), the encoding's target built anew.
+void prepare_plan(Prepared& v, const GridSpec& plan) {
+    check_grid_spec(plan);
+    const GridTarget grid = *v.grid;
+    if (plan.objective == "iqga")
+        prepare_grid(v, plan, grid::IqgaObjective{});
+    else
+        prepare_grid(v, plan, linear_objective(plan));
+    v.grid = grid;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Running
 
@@ -234,7 +250,7 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
 ParamValues effective_params(const AlgorithmEntry& entry, const Prepared& p, const ParamValues& given) {
     ParamValues v = given;
     const auto* g = std::get_if<GridSpec>(&p.spec);
-    if (!g) return v;
+    if (!g || entry.solve_grid) return v;
     if (entry.param("pop") && !v.contains("pop")) v.set("pop", static_cast<double>(entry.grid_population));
     if (!g->init.empty() && g->encoding == "chain" && entry.param("sitp") && !v.contains("sitp"))
         v.set("sitp", g->init == "sitp" ? 1.0 : 0.0);
@@ -259,6 +275,9 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
     if (!g) {
         require(static_cast<bool>(entry.run_box), "algo", entry.name + " works on grid problems only");
         refuse_chain_settings("a box");
+        for (const auto& spec : entry.params)
+            require(!spec.grid_only || !params.given(spec.name), entry.name,
+                    spec.name + " says how a grid is planned on; it has no meaning on " + p.name);
         return params;
     }
     if (entry.solve_grid) {
@@ -361,7 +380,75 @@ double grid_optimum(const GridTarget& target, grid::Path* out) {
         target.problem);
 }
 
-Problem::Problem(const ProblemSpec& spec) : prepared_(prepare(spec)) {}
+/// The prepared variants of one grid problem, by how a run plans on it (encoding, connector,
+/// init), shared by the problem's copies and built once each.
+struct Problem::Variants {
+    std::mutex mutex;
+    std::map<std::string, std::shared_ptr<const Prepared>> by_plan;
+};
+
+Problem::Problem(const ProblemSpec& spec) : Problem(prepare(spec)) {}
+Problem::Problem(std::shared_ptr<const Prepared> prepared)
+    : prepared_(std::move(prepared)), variants_(std::make_shared<Variants>()) {}
+
+namespace {
+
+/// The grid a run of `entry` plans on: the encoding, connector and init the run names (its
+/// parameters), else the problem's, else the algorithm's native encoding (its paper's space).
+/// A space the algorithm cannot use is refused, naming the ones it can.
+GridSpec planned_grid(const AlgorithmEntry& entry, const GridSpec& g, const ParamValues& given) {
+    GridSpec out = g;
+    if (entry.solve_grid) return out;
+    auto named = [&](const char* key) -> const std::string* {
+        const auto it = given.names().find(key);
+        if (it == given.names().end()) return nullptr;
+        // A name among no choice is refused here; an encoding the algorithm cannot use, below,
+        // with the ones it can.
+        const bool encoding = std::string_view(key) == "encoding" && known(grid_encodings(), it->second);
+        if (const ParamSpec* spec = entry.param(key); spec && !encoding) spec->choice_index(it->second, entry.name);
+        return &it->second;
+    };
+    const std::string* encoding = named("encoding");
+    if (encoding) out.encoding = *encoding;
+    if (out.encoding.empty()) out.encoding = entry.native_encoding;
+    if (const std::string* c = named("connector")) out.connector = *c;
+    if (const std::string* i = named("init")) out.init = *i;
+    if (out.encoding == "chain") out.connector = "repair";  // chains need none: the problem's is for line and free
+    const auto can = entry.encodings();
+    if (std::find(can.begin(), can.end(), out.encoding) == can.end()) {
+        std::string list;
+        for (std::size_t k = 0; k < can.size(); ++k)
+            list += (k == 0 ? "" : k + 1 == can.size() ? " or " : ", ") + can[k];
+        throw InputError("encoding " + out.encoding, entry.name + " runs on " + list + ", not on " + out.encoding +
+                                                         ": name no encoding (" + entry.name + "'s own is " +
+                                                         entry.native_encoding + ") or choose another algorithm");
+    }
+    return out;
+}
+
+}  // namespace
+
+std::shared_ptr<const Prepared> Problem::planned_for(const AlgorithmSpec& algorithm) const {
+    const auto* g = std::get_if<GridSpec>(&prepared_->spec);
+    if (!g) return prepared_;
+    const AlgorithmEntry& entry = algorithms().at(algorithm.name);
+    const GridSpec plan = planned_grid(entry, *g, algorithm.params);
+    if (plan.encoding == g->encoding && plan.connector == g->connector && plan.init == g->init) return prepared_;
+    const std::string key = plan.encoding + "|" + plan.connector + "|" + plan.init;
+    const std::lock_guard lock(variants_->mutex);
+    auto& variant = variants_->by_plan[key];
+    if (!variant) {
+        auto v = std::make_shared<Prepared>(*prepared_);
+        v->spec = plan;
+        v->box.reset();
+        v->chain.reset();
+        v->encoding_error.reset();
+        v->dimension = 0;
+        prepare_plan(*v, plan);
+        variant = std::move(v);
+    }
+    return variant;
+}
 
 bool Problem::is_grid() const {
     return prepared_->grid.has_value();
@@ -498,7 +585,7 @@ CheckedRun checked_run(const AlgorithmSpec& algorithm, const Prepared& p, const 
 }  // namespace
 
 void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget) {
-    checked_run(algorithm, problem.prepared(), budget);
+    checked_run(algorithm, *problem.planned_for(algorithm), budget);
 }
 
 namespace {
@@ -518,7 +605,8 @@ Result run_box(const AlgorithmEntry& entry, const Params& params, const BoxTarge
 
 RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed,
                        const IterationObserver* observer) {
-    const Prepared& p = problem.prepared();
+    const std::shared_ptr<const Prepared> planned = problem.planned_for(algorithm);
+    const Prepared& p = *planned;
     const auto [entry, params, termination] = checked_run(algorithm, p, budget);
 
     RunResult out;

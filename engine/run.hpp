@@ -50,10 +50,17 @@ class Problem {
     std::optional<double> optimum_value() const;
 
     const Prepared& prepared() const { return *prepared_; }
+    /// What a run of `algorithm` plans on: on a grid, the encoding, connector and init the run
+    /// names, else the problem's, else the algorithm's native encoding (built once per plan and
+    /// shared by the problem's copies); the problem itself otherwise. InputError for a space the
+    /// algorithm cannot use.
+    std::shared_ptr<const Prepared> planned_for(const AlgorithmSpec& algorithm) const;
 
   private:
-    explicit Problem(std::shared_ptr<const Prepared> prepared) : prepared_(std::move(prepared)) {}
+    struct Variants;
+    explicit Problem(std::shared_ptr<const Prepared> prepared);
     std::shared_ptr<const Prepared> prepared_;
+    std::shared_ptr<Variants> variants_;
 };
 
 /// What a grid run found, beside the search's own result.

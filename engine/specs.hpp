@@ -36,7 +36,7 @@ struct GridSpec {
     std::string objective = "cells";   // cells, length, weighted, iqga, hswoa (see objectives())
     std::vector<double> weights;       // weighted: {w_len, w_turn, w_angle}; empty: the defaults
     std::optional<double> lambda;      // hswoa: the turn weight; empty: the default
-    std::string encoding = "line";     // line, free, chain (see encodings())
+    std::string encoding;              // line, free, chain (see encodings()); empty: each algorithm's native one
     std::string connector = "repair";  // repair, penalty (line and free)
     std::int64_t waypoints = 3;        // free
     // uniform, walk (random feasible walks) or rules (file 000's rough-set rule walks); empty: the

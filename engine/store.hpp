@@ -24,6 +24,7 @@
 
 #include "engine/campaign.hpp"
 #include "engine/json.hpp"
+#include "engine/registry.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 
@@ -130,6 +131,12 @@ class Store {
             exec(
                 "CREATE TABLE IF NOT EXISTS problems (id TEXT PRIMARY KEY, type TEXT NOT NULL, dim INTEGER NOT NULL, "
                 "map TEXT, start TEXT, goal TEXT)");
+            // The campaign's algorithms (issue 23): their registered type, and whether they evaluate
+            // the objective (whole-map planners such as A* do not), for the equal-evaluation check
+            // of reports. Stores from before it have none, and their reports check every algorithm.
+            exec(
+                "CREATE TABLE IF NOT EXISTS algorithms (id TEXT PRIMARY KEY, type TEXT NOT NULL, evaluates INTEGER NOT "
+                "NULL)");
             // The runs a pride bench has taken and not yet stored, so that two processes on one
             // store share the work; the claims of a process that died are taken over.
             exec(
@@ -193,7 +200,7 @@ class Store {
                 if (runs > 0 || live_claims() > 0)
                     throw InputError(path_ + ": holds the results of another campaign ('" + name +
                                      "', or an edited version of this file); choose another store file");
-                exec("DELETE FROM campaign; DELETE FROM problems; DELETE FROM claims");
+                exec("DELETE FROM campaign; DELETE FROM problems; DELETE FROM algorithms; DELETE FROM claims");
             } else {
                 sqlite3_finalize(s);
                 if (rc != SQLITE_DONE) fail("cannot read the store");
@@ -346,6 +353,14 @@ class Store {
         const std::string precisions = json_array(coco_precisions());
         sqlite3_bind_text(s, 4, precisions.c_str(), -1, SQLITE_TRANSIENT);
         step_done(s, "cannot write the store");
+        for (const auto& a : c.algorithms) {
+            s = prepare("INSERT INTO algorithms (id, type, evaluates) VALUES (?, ?, ?)");
+            const AlgorithmEntry* entry = algorithms().find(a.spec.name);
+            sqlite3_bind_text(s, 1, a.id.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 2, a.spec.name.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_int(s, 3, !entry || entry->evaluates() ? 1 : 0);
+            step_done(s, "cannot write the store");
+        }
         // The problems as resolved here (map paths made absolute), for reports and plots.
         for (const auto& p : c.problems) {
             s = prepare(

@@ -109,7 +109,12 @@ TEST_CASE("docs: the example algorithm is listed with its declared parameters", 
     REQUIRE(es != nullptr);
     CHECK(es->family == "es");
     CHECK(es->spaces() == std::vector<std::string>{"box"});
-    REQUIRE(es->params.size() == 2);
+    // Its two, then the three every algorithm that plans on grids gets from the registry.
+    REQUIRE(es->params.size() == 5);
+    CHECK(es->params[2].name == "encoding");
+    CHECK(es->params[3].name == "connector");
+    CHECK(es->params[4].name == "init");
+    CHECK(es->native_encoding == "line");
 
     const engine::ParamSpec& sigma0 = es->params[0];
     CHECK(sigma0.name == "sigma0");
@@ -174,7 +179,8 @@ TEST_CASE("docs: the example's parameters are checked against their declared ran
     // The messages docs/adding-an-algorithm.md quotes.
     CHECK(refused({{"sigma0", 2.0}}) ==
           "example-es: sigma0 must be in (0, 1] (initial step, as a fraction of each coordinate's range), got 2");
-    CHECK(refused({{"sigma", 0.1}}) == "example-es: unknown parameter 'sigma' (parameters: sigma0, window)");
+    CHECK(refused({{"sigma", 0.1}}) ==
+          "example-es: unknown parameter 'sigma' (parameters: sigma0, window, encoding, connector, init)");
     CHECK_THAT(refused({{"sigma0", 0.0}}), Catch::Contains("sigma0 must be in (0, 1]"));
     CHECK_THAT(refused({{"window", 0.0}}), Catch::Contains("window must be in [1, 1000]"));
     CHECK_THAT(refused({{"window", 2.5}}), Catch::Contains("window must be an integer"));
@@ -282,8 +288,8 @@ TEST_CASE("docs: every command the README shows runs as written", "[docs][readme
             if (command.find("build/python") != std::string::npos && !python) continue;  // sanitized builds
             INFO("README: " << command);
             const std::string script = top.write("command.sh", command + "\n");
-            const std::string shell = "cd '" + top.path().string() + "' && sh '" + script + "' >'" +
-                                      top.file("out") + "' 2>&1 </dev/null";
+            const std::string shell =
+                "cd '" + top.path().string() + "' && sh '" + script + "' >'" + top.file("out") + "' 2>&1 </dev/null";
             const int status = std::system(shell.c_str());
             INFO(slurp(top.file("out")));
             CHECK(status == 0);

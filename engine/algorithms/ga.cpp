@@ -115,6 +115,7 @@ void add_iaga(AlgorithmRegistry& registry) {
         return a;
     });
     e.memory = population_memory(3);
+    e.native_encoding = "chain";  // file 002 compares them with IQGA on paths
     registry.add(std::move(e));
 }
 
@@ -157,6 +158,7 @@ void add_icga(AlgorithmRegistry& registry) {
         return a;
     });
     e.memory = population_memory(4);  // parents, next generation, children, re-seeded members
+    e.native_encoding = "chain";      // file 002 compares them with IQGA on paths
     registry.add(std::move(e));
 }
 

@@ -63,6 +63,7 @@ void add(AlgorithmRegistry& registry, const std::string& name, const std::string
     // File 003 plans on chains from eq. 10's walks, shortened by the line of sight.
     add_chain_runner(e, configure(name, harmony, balanced), {"line", "eq10"});
     e.memory = population_memory(2);  // the pod and the reconstruction's copy
+    e.native_encoding = "chain";      // file 003 plans on paths
     registry.add(std::move(e));
 }
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <set>
 
 #include "framework/error.hpp"
 
@@ -141,6 +142,7 @@ std::string render_table(const ReportData& report, bool md) {
         text += line(cols);
     }
     if (!md) text += "\\hline\n\\end{tabular}\n";
+    for (const auto& note : report.notes) text += (md ? std::string("\n") : std::string("\n% ")) + note + "\n";
     if (const auto& f = report.friedman) {
         text += md ? "\nFriedman average ranks over " : "\n% Friedman average ranks over ";
         text += fmt::format("{} problems (1 = best; median values):", f->problems);
@@ -229,6 +231,42 @@ std::string render_ert(const coco::Analysis& a, bool md) {
 
 }  // namespace
 
+/// Comparisons are made at equal evaluations: the notes of one problem when its compared
+/// algorithms' mean evaluation counts lie more than 5 % apart, and the whole-map planners exempt.
+template <class Cells>
+void equal_evaluations_note(ReportData& report, const CampaignStore& store, const std::string& problem,
+                            const Cells& by_algorithm) {
+    std::vector<std::string> exempt;
+    std::vector<std::pair<std::string, double>> counted;
+    for (const auto& [algorithm, c] : by_algorithm) {
+        if (store.whole_map_algorithms.count(algorithm))
+            exempt.push_back(algorithm);
+        else
+            counted.emplace_back(algorithm, mean_of(c.evaluations));
+    }
+    if (counted.size() >= 2) {
+        double lo = inf, hi = 0;
+        for (const auto& [a, e] : counted) lo = std::min(lo, e), hi = std::max(hi, e);
+        if (hi > 1.05 * lo) {
+            std::string list;
+            for (const auto& [a, e] : counted) list += (list.empty() ? "" : ", ") + fmt::format("{} {:.0f}", a, e);
+            report.notes.push_back(fmt::format(
+                "Warning: on {} the algorithms compared used different numbers of evaluations (mean: {}; more than "
+                "5 % apart), so their values are not compared at equal evaluations; give the campaign an evaluation "
+                "budget ([budget] evaluations).",
+                problem, list));
+        }
+    }
+    if (!exempt.empty()) {
+        std::string list;
+        for (const auto& a : exempt) list += (list.empty() ? "" : ", ") + a;
+        report.notes.push_back(fmt::format(
+            "On {}, {} {} on the whole map and {} no objective (the evaluations of such a planner count "
+            "its own work): exempt from the equal-evaluation comparison.",
+            problem, list, exempt.size() == 1 ? "plans" : "plan", exempt.size() == 1 ? "evaluates" : "evaluate"));
+    }
+}
+
 ReportData make_report(const CampaignStore& store) {
     ReportData report;
     report.campaign = store.name;
@@ -302,6 +340,7 @@ ReportData make_report(const CampaignStore& store) {
         }
         const auto adjusted = stats::holm(p_values);
         for (std::size_t i = 0; i < tested.size(); ++i) rows[tested[i]].p_holm = adjusted[i];
+        equal_evaluations_note(report, store, problem, by_algorithm);
     }
 
     // Friedman over the problems, on the median best value, for the algorithms run on all of them.

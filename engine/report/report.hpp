@@ -45,6 +45,10 @@ struct ReportData {
     // With the campaign's target precisions: ERT per function, dimension and algorithm, and the
     // ECDF curves (engine/report/coco.hpp); rendered after the table.
     std::optional<coco::Analysis> coco;
+    // What the reader must know before comparing the rows, one sentence each: problems whose
+    // compared runs used evaluation counts more than 5 % apart, and the whole-map planners exempt
+    // from that comparison (they evaluate no objective). Rendered after the table.
+    std::vector<std::string> notes;
 };
 
 /// The report of the runs of `store` (no rows when it holds none).

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <string_view>
 #include <type_traits>
 
@@ -301,6 +302,16 @@ CampaignStore read_store(const std::string& path) {
     };
 
     CampaignStore store;
+    if (tables.count("algorithms")) {
+        columns("algorithms", {"id", "evaluates"});
+        Query q(db, "SELECT rowid, id, evaluates FROM algorithms ORDER BY rowid");
+        while (q.next()) {
+            q.where = fmt::format("algorithms row with rowid {}",
+                                  q.integer(0, "rowid", std::numeric_limits<std::int64_t>::min()));
+            const std::string id = q.text(1, "id");
+            if (q.integer(2, "evaluates", 0) == 0) store.whole_map_algorithms.insert(id);
+        }
+    }
     {
         Query q(db, fmt::format("SELECT name, {}, {} FROM campaign WHERE id = 1", has_target ? "target" : "NULL",
                                 has_precisions ? "precisions" : "NULL")

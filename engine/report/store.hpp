@@ -6,6 +6,7 @@
 // what pride bench writes.
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,9 @@ struct CampaignStore {
     // In the campaign's order; empty optional for stores from before the problems table.
     std::optional<std::vector<StoredProblem>> problems;
     std::vector<StoredRun> runs;  // ordered by problem, algorithm, seed
+    // The ids of the campaign's algorithms that evaluate no objective (whole-map planners: A*,
+    // exact), from its algorithms table; empty for stores from before it.
+    std::set<std::string> whole_map_algorithms;
 };
 
 /// Reads and checks the whole store at `path` (read-only). Throws InputError when the file is

@@ -141,14 +141,15 @@ class Optimizer:
         self.close()
 
 
-def plan(grid, start, goal, *, algo="pso", objective="cells", encoding="line", connector="repair", init="",
+def plan(grid, start, goal, *, algo="pso", objective="cells", encoding="", connector="repair", init="",
          waypoints=3, weights=None, lambda_=None, corner_cutting=False, oracle=False, evals=None, iters=None,
          seed=0, callback=None, **params):
     """A path on ``grid`` (a ``pride.Grid``) from ``start`` to ``goal`` ((x, y), x the column from
     the left, y the row from the top) by any grid algorithm, as ``pride path`` plans it: the
     result's ``path`` is an (n, 2) array of (x, y), with ``metrics`` and ``objective_value``;
     ``oracle=True`` adds the exact ``optimum`` and the ``gap``. Without evals or iters, 50
-    iterations."""
+    iterations. Without ``encoding`` the algorithm plans on its native space (chain for iqga, iaga,
+    icga and the woa family, line for the others); an encoding it cannot use is a ValueError."""
     if not isinstance(grid, Grid):
         raise TypeError(f"grid: expected a pride.Grid, got {type(grid).__name__}")
     return Result(_pride.plan(grid, start, goal, _str("algo", algo), _str("objective", objective),

@@ -139,3 +139,18 @@ def test_plan_observer_on_boxes_refused_on_chains():
         pride.plan(g, START, GOAL, algo="ga", encoding="chain", iters=2, callback=lambda *a: None)
     with pytest.raises(ValueError, match="observer"):
         pride.plan(g, START, GOAL, algo="astar", callback=lambda *a: None)
+
+
+def test_plan_uses_the_algorithms_native_space():
+    """Without an encoding each algorithm plans on its paper's space; one it cannot use is refused."""
+    g = pride.Grid(ARRAY)
+    assert pride.plan(g, START, GOAL, algo="pso", evals=60, seed=1).encoding == "line"
+    assert pride.plan(g, START, GOAL, algo="iqga", objective="iqga", evals=200, seed=1).encoding == "chain"
+    assert pride.plan(g, START, GOAL, algo="hswoa", objective="hswoa", evals=60, seed=1).encoding == "chain"
+    assert pride.plan(g, START, GOAL, algo="ga", encoding="chain", evals=60, seed=1).encoding == "chain"
+    with pytest.raises(ValueError, match="^encoding line: iqga runs on chain, not on line"):
+        pride.plan(g, START, GOAL, algo="iqga", encoding="line", evals=60)
+    with pytest.raises(TypeError, match=r"^parameter shortcut: expected one of none, line or elbow \(a str\), got int$"):
+        pride.plan(g, START, GOAL, algo="hswoa", evals=60, shortcut=1)
+    r = pride.plan(g, START, GOAL, algo="hswoa", evals=60, seed=1, shortcut="elbow", walks="octile")
+    assert r.feasible and r.evaluations == 60
