@@ -180,7 +180,7 @@ def cpu_table(meta):
 def blocks(campaigns, meta):
     gs, gsi = group(campaigns["file003-sweep"]), group(campaigns["file003-sweep-iterations"])
     ga, gai = group(campaigns["file003-ablation"]), group(campaigns["file003-ablation-iterations"])
-    ge = group(campaigns["file003-envs-chain"], campaigns["file003-envs-line"])
+    ge = group(campaigns["file003-envs"])
     gei = group(campaigns["file003-envs-iterations"])
     return {
         "file003-regeneration": regeneration_table(meta),
@@ -230,7 +230,7 @@ def extras(pride, stores, img):
                 ms[pid][col] = round(1000.0 * (cpu[1] - cpu[0]) / CPU_RUNS, 2)
     cpu = {"columns": columns, "ms": ms, "load": watch.stop()}
     with tempfile.TemporaryDirectory() as tmp:
-        rp.run([pride, "report", stores / "file003-envs-chain.sqlite", "--plots", tmp])
+        rp.run([pride, "report", stores / "file003-envs.sqlite", "--plots", tmp])
         for pid in ("env1", "env2", "env3"):
             for kind in ("convergence", "paths"):
                 shutil.copyfile(pathlib.Path(tmp) / f"{pid}-{kind}.png", img / f"file003-{pid}-{kind}.png")

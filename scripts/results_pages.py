@@ -57,7 +57,7 @@ PAGES = {
     "file003": {
         "page": "docs/results/file003.md",
         "campaigns": ["file003-sweep", "file003-sweep-iterations", "file003-ablation", "file003-ablation-iterations",
-                      "file003-envs-chain", "file003-envs-iterations", "file003-envs-line"],
+                      "file003-envs", "file003-envs-iterations"],
         "module": "file003_tables",
     },
 }

@@ -94,7 +94,7 @@ def test_the_same_run_in_two_stores_is_the_same():
              (("file003-sweep", "thr2"), ("file003-ablation", "hswoa")),
              (("file003-sweep-iterations", "thr2"), ("file003-ablation-iterations", "hswoa")),
              (("file003-ablation", "woa"), ("file003-ablation-iterations", "woa")),  # 1,020 evaluations = 50 iterations
-             (("file003-envs-chain", "woa"), ("file003-envs-iterations", "woa"))]
+             (("file003-envs", "woa"), ("file003-envs-iterations", "woa"))]
     for a, b in pairs:
         x, y = runs(*a), runs(*b)
         assert x and x == y, (a, b)
