@@ -115,7 +115,7 @@ def stats_table(runs):
             r = rep[pid][a]
             rows.append([pid, a, f"{r['mean']:.6g}", f"{r['median']:.6g}", f"{r['min']:.6g}", rp.pct(r["success"]),
                          "best" if r["best"] else rp.star(r["p_holm"])])
-    return rp.table(["map", "algorithm", "mean", "median", "best", "optimal runs", "p (Holm) vs best median"], rows)
+    return rp.table(["map", "algorithm", "mean", "median", "min (best run)", "optimal runs", "p (Holm) vs best median"], rows)
 
 
 def variants_table(runs, meta):
