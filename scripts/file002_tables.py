@@ -186,11 +186,15 @@ def budgets(name):
 
 
 def regeneration_table(meta):
-    rows = [[f"`examples/campaigns/{c}.toml`", budgets(c), f"{m['runs']:,}", f"{m['seconds']:.1f}",
-             f"{m['load'][0]:.2f}-{m['load'][1]:.2f}"] for c, m in meta["campaigns"].items()]
+    def watch(m):
+        return [f"{m['load'][0]:.2f}-{m['load'][1]:.2f}", rp.pct(m["other"])]
+
+    rows = [[f"`examples/campaigns/{c}.toml`", budgets(c), f"{m['runs']:,}", f"{m['seconds']:.1f}"] + watch(m)
+            for c, m in meta["campaigns"].items()]
     rows.append(["references, figures" + (", processor times" if "cpu" in meta else ""), "", "",
-                 f"{meta['extras_seconds']:.1f}", f"{meta['extras_load'][0]:.2f}-{meta['extras_load'][1]:.2f}"])
-    return (rp.table(["campaign", "budget", "runs", "seconds", "load average (1 min), least-most"], rows, "lllrl") +
+                 f"{meta['extras_seconds']:.1f}"] + watch(meta["extras_watch"]))
+    return (rp.table(["campaign", "budget", "runs", "seconds", "load average (1 min), least-most",
+                      "other processes' share of the cores"], rows, "lllrlr") +
             f"\n\nThis page: {meta['page_seconds']:.1f} s; the whole command "
             f"({' and '.join(meta['command_pages'])}): {meta['command_seconds']:.1f} s, with `--jobs {meta['jobs']}` "
             f"on {meta['cores']} cores, at commit {meta['commit']}.")

@@ -38,8 +38,8 @@ SWEEP = ["thr0", "thr1", "thr2", "thr3", "thr4", "thr6", "balance0.5", "balance0
 ABLATION = ["woa", "woa-hs", "woa-balance", "hswoa"]
 ENVS = ["astar", "woa", "hswoa", "ga", "iqga", "pso", "ilso", "ga-line", "iqga-line", "woa-octile", "hswoa-octile",
         "woa-elbow", "hswoa-elbow"]
-CPU_ALGOS = [("astar", []), ("woa", ["--evals", "1020"]), ("hswoa", ["--evals", "1020"]), ("woa", ["--iters", "50"]),
-             ("hswoa", ["--iters", "50"])]
+CPU_ALGOS = [("astar", []), ("woa", ["--evals", "1020"]), ("hswoa", ["--evals", "1020"]), ("hswoa", ["--iters", "50"])]
+CPU_REPEATS = 3
 CPU_RUNS = 20
 
 
@@ -157,21 +157,20 @@ def references_table(meta):
 
 def cpu_table(meta):
     c = meta["cpu"]
-    ratio = {b: [c["ms"][p][f"hswoa {b}"] / c["ms"][p][f"woa {b}"] for p in PROBLEMS]
-             for b in ("--iters 50", "--evals 1020")}
-    rows = []
-    for pid in PROBLEMS:
-        cells = [f"{c['ms'][pid][k]:.1f}" for k in c["columns"]]
-        rows.append([pid] + cells + [f"{c['ms'][pid]['hswoa --iters 50'] / c['ms'][pid]['woa --iters 50']:.2f}",
-                                     f"{c['ms'][pid]['hswoa --evals 1020'] / c['ms'][pid]['woa --evals 1020']:.2f}"])
-    return (rp.table(["map"] + [f"`{k}`" for k in c["columns"]] + ["hswoa / woa, 50 iterations",
-                                                                    "hswoa / woa, 1,020 evaluations"], rows,
-                     "l" + "r" * (len(c["columns"]) + 2)) +
+    ms = c["ms"]
+    ratio = {b: [ms[p][f"hswoa {b}"] / ms[p]["woa --evals 1020"] for p in PROBLEMS] for b in ("--iters 50", "--evals 1020")}
+    rows = [[pid] + [f"{ms[pid][k]:.1f}" for k in c["columns"]] +
+            [f"{ms[pid]['hswoa --iters 50'] / ms[pid]['woa --evals 1020']:.2f}",
+             f"{ms[pid]['hswoa --evals 1020'] / ms[pid]['woa --evals 1020']:.2f}"] for pid in PROBLEMS]
+    head = ["`astar`", "`woa`, 1,020 evaluations (= 50 iterations)", "`hswoa`, 1,020 evaluations", "`hswoa`, 50 iterations"]
+    return (rp.table(["map"] + head + ["hswoa / woa, 50 iterations", "hswoa / woa, 1,020 evaluations"], rows,
+                     "l" + "r" * (len(head) + 2)) +
             f"\n\nProcessor time (user + system) of one run, ms: that of `pride bench --jobs 1` over seeds "
             f"1..{CPU_RUNS + 1} less that over seed 1, divided by {CPU_RUNS} (start-up and the exact optimum "
-            f"cancel out); one process at a time; the load average (1 min) while "
-            f"they ran: {c['load'][0]:.2f}-{c['load'][1]:.2f}"
-            f"{' (measured under load: another job shared the 2 cores)' if c['load'][1] > 1.5 else ''}. "
+            f"cancel out), each the least of {CPU_REPEATS} repetitions; one process at a time; while they ran, "
+            f"other processes took {rp.pct(c['watch']['other'])} of the machine's cores (load average "
+            f"{c['watch']['load'][0]:.2f}-{c['watch']['load'][1]:.2f})"
+            f"{': measured under load' if c['watch']['other'] > 0.05 else ': an unloaded machine'}. "
             f"An HS-WOA run takes {min(ratio['--iters 50']):.1f} to {max(ratio['--iters 50']):.1f} times a WOA "
             f"run's processor time at 50 iterations, {min(ratio['--evals 1020']):.1f} to "
             f"{max(ratio['--evals 1020']):.1f} times at 1,020 evaluations.")
@@ -219,16 +218,20 @@ def extras(pride, stores, img):
     with tempfile.TemporaryDirectory() as tmp:
         for pid, (m, s, g) in PROBLEMS.items():
             ms[pid] = {}
-            for (a, args), col in zip(CPU_ALGOS, columns):
-                # the marginal processor time of a run: a campaign of 1 + CPU_RUNS seeds less one of 1
+            for k, ((a, args), col) in enumerate(zip(CPU_ALGOS, columns)):
+                # the marginal processor time of a run: a campaign of 1 + CPU_RUNS seeds less one of 1,
+                # each the least of CPU_REPEATS repetitions (a fresh store each time)
                 cpu = []
                 for seeds in (1, 1 + CPU_RUNS):
-                    f = pathlib.Path(tmp) / f"{pid}-{a}-{seeds}.toml"
+                    f = pathlib.Path(tmp) / f"{pid}-{k}-{seeds}.toml"
                     f.write_text(cpu_campaign(pid, m, s, g, a, args, seeds))
-                    store = pathlib.Path(tmp) / f"{pid}-{a}-{seeds}-{len(ms[pid])}.sqlite"
-                    cpu.append(rp.timed_cpu([pride, "bench", f, "--jobs", 1, "--out", store])[0])
+                    times = []
+                    for rep in range(CPU_REPEATS):
+                        store = pathlib.Path(tmp) / f"{pid}-{k}-{seeds}-{rep}.sqlite"
+                        times.append(rp.timed_cpu([pride, "bench", f, "--jobs", 1, "--out", store])[0])
+                    cpu.append(min(times))
                 ms[pid][col] = round(1000.0 * (cpu[1] - cpu[0]) / CPU_RUNS, 2)
-    cpu = {"columns": columns, "ms": ms, "load": watch.stop()}
+    cpu = {"columns": columns, "ms": ms, "watch": watch.stop()}
     with tempfile.TemporaryDirectory() as tmp:
         rp.run([pride, "report", stores / "file003-envs.sqlite", "--plots", tmp])
         for pid in ("env1", "env2", "env3"):

@@ -493,10 +493,13 @@ def write_page(page):
 # Regeneration
 
 class LoadWatch:
-    """Samples the 1-minute load average every second while it runs (os.getloadavg)."""
+    """What else ran while it ran: the 1-minute load average, sampled every second
+    (os.getloadavg), and the processor time the other processes of the machine took, as a share of
+    all its cores: the busy time /proc/stat counts less this process's and its waited children's."""
 
     def __init__(self):
         self.samples, self._stop = [os.getloadavg()[0]], threading.Event()
+        self._t0, self._busy0, self._own0 = time.monotonic(), _busy_seconds(), _own_seconds()
         self._thread = threading.Thread(target=self._run, daemon=True)
         self._thread.start()
 
@@ -505,10 +508,29 @@ class LoadWatch:
             self.samples.append(os.getloadavg()[0])
 
     def stop(self):
+        """{"load": [least, most], "other": share of the cores used by other processes}"""
         self._stop.set()
         self._thread.join()
         self.samples.append(os.getloadavg()[0])
-        return [round(min(self.samples), 2), round(max(self.samples), 2)]
+        wall = time.monotonic() - self._t0
+        other = (_busy_seconds() - self._busy0) - (_own_seconds() - self._own0)
+        return {"load": [round(min(self.samples), 2), round(max(self.samples), 2)],
+                "other": round(max(0.0, other) / (wall * (os.cpu_count() or 1)), 3) if wall > 0 else 0.0}
+
+
+def _busy_seconds():
+    with open("/proc/stat") as f:
+        v = [int(x) for x in f.readline().split()[1:]]
+    return (v[0] + v[1] + v[2] + v[5] + v[6] + (v[7] if len(v) > 7 else 0)) / os.sysconf("SC_CLK_TCK")
+
+
+def _own_seconds():
+    import resource
+    total = 0.0
+    for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN):
+        u = resource.getrusage(who)
+        total += u.ru_utime + u.ru_stime
+    return total
 
 
 def run(cmd, **kw):
@@ -563,12 +585,13 @@ def regenerate(pages, build, jobs):
             export_store(store, DATA / f"{c}.csv")
             runs = read_campaign(c)
             cross_check(run([pride, "report", store, "--format", "csv"]), runs, c)
-            meta["campaigns"][c] = {"runs": len(runs), "seconds": round(seconds, 1), "load": load}
-            print(f"{c}: {len(runs)} runs in {seconds:.1f} s (load {load[0]}-{load[1]})", flush=True)
+            meta["campaigns"][c] = {"runs": len(runs), "seconds": round(seconds, 1), **load}
+            print(f"{c}: {len(runs)} runs in {seconds:.1f} s (load average {load['load'][0]}-{load['load'][1]}, "
+                  f"other processes {100 * load['other']:.0f} % of the cores)", flush=True)
         watch, t0 = LoadWatch(), time.monotonic()
         meta.update(module.extras(pride, stores, IMG))
         meta["extras_seconds"] = round(time.monotonic() - t0, 1)
-        meta["extras_load"] = watch.stop()
+        meta["extras_watch"] = watch.stop()
         meta["page_seconds"] = round(time.monotonic() - t_page, 1)
         metas[page] = meta
         (DATA / f"{page}-meta.json").write_text(json.dumps(meta, indent=1, sort_keys=True) + "\n")
