@@ -13,7 +13,7 @@ population), and the evaluations spent by then; optimal: the share of runs whose
 optimum of the `iqga` objective (within 1e-9, as pride report); gap = (best - optimum) / |optimum|;
 on front: the share of runs whose final path is a point of the exact (length, turns) Pareto front;
 dL = the run's length minus the shortest front length with at most the run's turns (0 on the
-front); wall ms: the run's wall time under the load the regeneration block states.
+front); wall ms: the run's wall time, under what else ran as the regeneration block states.
 """
 import json
 import pathlib

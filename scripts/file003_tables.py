@@ -13,7 +13,7 @@ shortest length: the share whose length is the exact shortest length of the map 
 exact --objective length`); conv. iter.: the first iteration whose best equals the run's final best
 (0: the initial population), and conv. evals the evaluations spent by then; evaluations: mean (and
 range) of the objective calls (A* does not call the objective: its node expansions are shown);
-wall ms: the run's wall time under the load the regeneration block states; p: the two-sided
+wall ms: the run's wall time, under what else ran as the regeneration block states; p: two-sided
 Wilcoxon rank-sum test of the final values against the table's reference row, Holm-corrected over
 the other rows of that map's table, `*` below 0.05.
 """
