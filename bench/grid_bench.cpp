@@ -190,7 +190,9 @@ void bench_sitp(const std::string& maps, int repeats = 51) {
             space.set_init(init);
             Rng rng(static_cast<std::uint64_t>(r) + 1);
             const auto t = Clock::now();
-            for (auto& c : pop) space.random_chain(rng, c);
+            // Outside a run: SITP ranks its walks by the objective, called here directly.
+            const auto score = [&](const Path& x) { return space.evaluate(x); };
+            for (auto& c : pop) space.random_chain(rng, c, score);
             ms.push_back(ms_since(t));
             for (const auto& c : pop) {
                 cells += static_cast<double>(c.size());
@@ -251,8 +253,10 @@ void bench_init_table(const std::string& maps) {
             double longest = 0.0, shortest = 1e300, sum = 0.0;
             int legal = 0;
             Path c;
+            // Outside a run: SITP ranks its walks by the objective, called here directly.
+            const auto score = [&](const Path& x) { return space.evaluate(x); };
             for (int k = 0; k < 30; ++k) {
-                space.random_chain(rng, c);
+                space.random_chain(rng, c, score);
                 const double l = metrics(c, false).length;
                 longest = std::max(longest, l);
                 shortest = std::min(shortest, l);
