@@ -41,6 +41,26 @@ engine::RunResult run(const std::string& algo, const engine::Problem& p, const s
     return engine::run(a, p, b, 1);
 }
 
+/// A campaign file on file 002's 20 x 20 map with `objective`, A* first among its algorithms, then
+/// `algorithms` (TOML [[algorithm]] tables), under `budget` (the [budget] table's lines).
+std::string campaign_toml(const std::string& name, const std::string& budget, const std::string& objective,
+                          const std::string& algorithms) {
+    return "name = \"" + name + "\"\nseeds = 2\n[budget]\n" + budget + R"(
+[[problem]]
+id = "f002"
+type = "grid"
+map = ")" + kMap +
+           R"("
+start = [0, 19]
+goal = [19, 0]
+objective = ")" +
+           objective + R"("
+[[algorithm]]
+id = "astar"
+type = "astar"
+)" + algorithms;
+}
+
 }  // namespace
 
 TEST_CASE("planning spaces: every algorithm declares its native encoding, its papers' one", "[grid][spaces]") {
@@ -121,21 +141,8 @@ TEST_CASE("planning spaces: pride path plans on the native space and refuses oth
 
 TEST_CASE("planning spaces: one campaign holds A*, PSO on line and the GA family on chains", "[grid][spaces][bench]") {
     const test::TempDir dir("pride-spaces");
-    const std::string toml = dir.write("mixed.toml", R"(name = "mixed"
-seeds = 2
-[budget]
-evaluations = 400
-[[problem]]
-id = "f002"
-type = "grid"
-map = ")" + kMap + R"("
-start = [0, 19]
-goal = [19, 0]
-objective = "length"
-[[algorithm]]
-id = "astar"
-type = "astar"
-[[algorithm]]
+    const std::string toml =
+        dir.write("mixed.toml", campaign_toml("mixed", "evaluations = 400", "length", R"([[algorithm]]
 id = "pso-line"
 type = "pso"
 [[algorithm]]
@@ -150,7 +157,7 @@ type = "iqga"
 id = "hswoa"
 type = "hswoa"
 init = "walk"
-)");
+)"));
     const engine::Campaign c = engine::read_campaign(toml);
     REQUIRE(c.algorithms.size() == 5);
     for (const auto& a : c.algorithms)
@@ -170,18 +177,7 @@ TEST_CASE("planning spaces: pride report warns when compared runs used evaluatio
           "[grid][spaces][report]") {
     const test::TempDir dir("pride-equal");
     auto campaign = [&](const std::string& name, const std::string& budget) {
-        return dir.write(name + ".toml", "name = \"" + name + "\"\nseeds = 2\n[budget]\n" + budget + R"(
-[[problem]]
-id = "f002"
-type = "grid"
-map = ")" + kMap + R"("
-start = [0, 19]
-goal = [19, 0]
-objective = "iqga"
-[[algorithm]]
-id = "astar"
-type = "astar"
-[[algorithm]]
+        return dir.write(name + ".toml", campaign_toml(name, budget, "iqga", R"([[algorithm]]
 id = "ga"
 type = "ga"
 encoding = "chain"
@@ -190,7 +186,7 @@ pop = 10
 id = "iqga"
 type = "iqga"
 pop = 10
-)");
+)"));
     };
     // Equal iterations: IQGA's SITP scores are evaluations too, so it spends far more than the GA.
     const std::string iterations = campaign("iterations", "iterations = 5");
