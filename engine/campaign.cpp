@@ -81,10 +81,11 @@ constexpr int kTagResult = 1, kTagTask = 2;
 constexpr char kSep = '\x1f';
 
 std::string serialise(const RunRecord& r) {
-    return fmt::format("{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}{0}{13}",
-                       kSep, r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations,
-                       r.wall_ms, r.optimum ? fmt::format("{:.17g}", *r.optimum) : "", r.solution, r.history,
-                       r.history_evaluations, r.target_hits);
+    return fmt::format(
+        "{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}{0}{13}{0}{14}", kSep,
+        r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations, r.wall_ms,
+        r.optimum ? fmt::format("{:.17g}", *r.optimum) : "", r.solution, r.history, r.history_evaluations,
+        r.target_hits, r.encoding);
 }
 
 RunRecord deserialise(const std::string& text) {
@@ -95,7 +96,7 @@ RunRecord deserialise(const std::string& text) {
         if (end == std::string::npos) break;
         start = end + 1;
     }
-    if (f.size() != 13) throw std::runtime_error("MPI: a malformed run record");
+    if (f.size() != 14) throw std::runtime_error("MPI: a malformed run record");
     RunRecord r;
     r.problem = f[0];
     r.algorithm = f[1];
@@ -110,6 +111,7 @@ RunRecord deserialise(const std::string& text) {
     r.history = f[10];
     r.history_evaluations = f[11];
     r.target_hits = f[12];
+    r.encoding = f[13];
     return r;
 }
 
@@ -693,6 +695,7 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
         r.best = r.feasible ? result.grid->value : std::numeric_limits<double>::infinity();
         r.optimum = result.grid->optimum;
         r.solution = json_cells(result.grid->path);
+        r.encoding = result.grid->encoding;
     } else {
         r.best = result.best_f;
         r.feasible = std::isfinite(result.best_f);

@@ -75,6 +75,7 @@ struct RunRecord {
     // JSON: one entry per coco_precisions() value, the evaluations after which best <= f_opt +
     // precision first held, or null; "[]" for problems without a known optimum.
     std::string target_hits = "[]";
+    std::string encoding;  // grid runs: what the run planned on (line, free, chain; none for A*, exact)
 };
 
 /// Runs one (problem, algorithm, seed) of a prepared campaign; the same inputs give the same

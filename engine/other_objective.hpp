@@ -10,6 +10,7 @@
 
 #include "framework/error.hpp"
 
+#include "problems/grid/map.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/path.hpp"
 
@@ -47,6 +48,18 @@ struct UserSteps {
                 "must be a finite number >= 0, got " + std::to_string(c) + " for a step in direction " +
                     std::to_string(direction) + " after " + std::to_string(previous));
         return c;
+    }
+    /// The value of a legal path as the sum of its steps' costs: what whole-map planners report,
+    /// so that they never call the user's objective (every call of it is some run's evaluation).
+    double of_path(const grid::Path& path) const {
+        double sum = start_cost();
+        int previous = -1;
+        for (std::size_t i = 1; i < path.size(); ++i) {
+            const int d = grid::direction(path[i - 1], path[i]);
+            sum += edge_cost(previous, d);
+            previous = d;
+        }
+        return sum;
     }
 };
 

@@ -150,6 +150,9 @@ class Store {
             add_column("problems", "suite", "TEXT");
             add_column("problems", "fid", "INTEGER");
             add_column("runs", "target_hits", "TEXT NOT NULL DEFAULT '[]'");
+            // What a grid run planned on (issue 23: one campaign may mix encodings); '' for boxes
+            // and for runs stored before it.
+            add_column("runs", "encoding", "TEXT NOT NULL DEFAULT ''");
             exec("COMMIT");
             exec("PRAGMA synchronous=NORMAL");
         } catch (...) {
@@ -414,8 +417,8 @@ class Store {
         sqlite3_stmt* s = cached(
             insert_,
             "INSERT OR IGNORE INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, "
-            "optimum, solution, history, history_evaluations, target_hits) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-            "?, ?)");
+            "optimum, solution, history, history_evaluations, target_hits, encoding) VALUES (?, ?, ?, ?, ?, ?, ?, ?, "
+            "?, ?, ?, ?, ?, ?)");
         sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_int64(s, 3, r.seed);
@@ -436,6 +439,7 @@ class Store {
         sqlite3_bind_text(s, 11, r.history.c_str(), -1, SQLITE_STATIC);
         sqlite3_bind_text(s, 12, r.history_evaluations.c_str(), -1, SQLITE_STATIC);
         sqlite3_bind_text(s, 13, r.target_hits.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 14, r.encoding.c_str(), -1, SQLITE_STATIC);
         step_cached(s, "cannot write the store");
         const std::size_t added = static_cast<std::size_t>(sqlite3_changes(db_));
         s = cached(unclaim_, "DELETE FROM claims WHERE problem = ? AND algorithm = ? AND seed = ?");

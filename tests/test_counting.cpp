@@ -185,20 +185,32 @@ TEST_CASE("counting: a user's objective on paths runs with every grid algorithm,
     engine::GridSpec length = g;
     length.objective = "length";
     length.path_objective = nullptr;
+    // Whole-map planners value their path by the step costs: no call of the objective.
+    *calls = 0;
     const auto by_user = engine::run({"exact", {}}, problem, {}, 1);
+    const auto astar = engine::run({"astar", {}}, problem, {}, 1);
+    CHECK(*calls == 0);
     const auto by_length = engine::run({"exact", {}}, engine::Problem(length), {}, 1);
     REQUIRE(by_user.grid->optimum.has_value());
     CHECK(*by_user.grid->optimum == Approx(*by_length.grid->optimum).epsilon(1e-12));
     CHECK(by_user.grid->value == Approx(*by_length.grid->optimum).epsilon(1e-12));
-    // Per-step costs that do not sum to the objective are refused, and so are negative ones.
+    CHECK(astar.grid->value == Approx(*by_length.grid->optimum).epsilon(1e-12));
+    // Per-step costs that do not sum to the objective show when a run beats their optimum: refused.
+    // So are negative ones.
     auto wrong = std::make_shared<engine::UserPathObjective>(*user);
-    wrong->step_cost = [](int, int) { return 1.0; };
+    wrong->step_cost = [](int, int) { return 10.0; };
     engine::GridSpec w = g;
     w.path_objective = wrong;
+    w.oracle = true;
+    engine::AlgorithmSpec ga{"ga", {}};
+    ga.params.set_name("encoding", "chain");
     CHECK_THAT(test::input_error_message([&] {
-                   engine::run({"exact", {}}, engine::Problem(w), {}, 1);
+                   engine::Budget b;
+                   b.evaluations = 60;
+                   engine::run(ga, engine::Problem(w), b, 1);
                }),
-               Catch::Contains("step_cost: the per-step costs sum to"));
+               Catch::Contains("step_cost: the per-step costs give an optimum of"));
+    w.oracle = false;
     auto negative = std::make_shared<engine::UserPathObjective>(*user);
     negative->step_cost = [](int, int) { return -1.0; };
     w.path_objective = negative;

@@ -288,9 +288,9 @@ CampaignStore read_store(const std::string& path) {
     const auto campaign_columns = columns("campaign", {"id", "name"});
     const bool has_target = campaign_columns.count("target") > 0;
     const bool has_precisions = campaign_columns.count("precisions") > 0;
-    const bool has_hits = columns("runs", {"problem", "algorithm", "seed", "best", "evaluations", "wall_ms", "optimum",
-                                           "history", "history_evaluations"})
-                              .count("target_hits") > 0;
+    const auto run_columns = columns(
+        "runs", {"problem", "algorithm", "seed", "best", "evaluations", "wall_ms", "optimum", "history", "history_evaluations"});
+    const bool has_hits = run_columns.count("target_hits") > 0;
     // Stores written before the problems table existed are still read: the report needs none of
     // it; the IOH export asks for it.
     const bool has_problems = tables.count("problems") > 0;
@@ -355,8 +355,8 @@ CampaignStore read_store(const std::string& path) {
         }
     }
     Query q(db, fmt::format("SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, "
-                            "history_evaluations, {} FROM runs ORDER BY problem, algorithm, seed",
-                            has_hits ? "target_hits" : "NULL")
+                            "history_evaluations, {}, {} FROM runs ORDER BY problem, algorithm, seed",
+                            has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"))
                     .c_str());
     while (q.next()) {
         // Named by rowid until its key is read, then by the key.
@@ -391,6 +391,7 @@ CampaignStore read_store(const std::string& path) {
                     q.fail("target_hits",
                            fmt::format("expected at most the run's {} evaluations, got {}", r.evaluations, *hit));
         }
+        if (!q.is_null(11)) r.encoding = q.text(11, "encoding");
         // The analysis of target hits (engine/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.
         if (store.precisions && has_problems && !problem_ids.count(r.problem))

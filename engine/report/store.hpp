@@ -36,6 +36,7 @@ struct StoredRun {
     // which best - f_opt <= precision first held, empty where never. Empty when the run records
     // no hits (column absent, NULL or []).
     std::vector<std::optional<std::int64_t>> target_hits;
+    std::string encoding;  // grid runs: what the run planned on; empty for boxes and older stores
 };
 
 struct StoredProblem {

@@ -20,7 +20,10 @@
 // Decided here where the spec is open: the section is at least two steps of c; "inside a window
 // when possible" weights a step leaving the window 1e-9 times one that stays (so the walk, a
 // complete depth-first search, still always arrives, and leaves the window only when it must);
-// within the window the steps are biased towards the leg's end as RandomWalker's are (bias 2).
+// within the window the steps are biased towards the leg's end as RandomWalker's octile rule is
+// (bias 2), whatever rule makes new chains (`walks`): eq. 10's weak pull wanders inside the window,
+// and measured on file 003's env1-env3 (docs/results/file003.md's campaigns) it made the whales
+// 5-15x slower and rarer to find the shortest length (env1, woa: 56 % of runs to 10 %).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

@@ -27,7 +27,7 @@ struct PyCampaign {
 const std::set<std::string> problem_keys{"id",       "problem",        "dim",      "instance",  "grid",
                                          "map",      "inflate",        "start",    "goal",      "objective",
                                          "encoding", "connector",      "init",     "waypoints", "weights",
-                                         "lambda",   "corner_cutting", "function", "bounds",    "vectorized"};
+                                         "lambda",   "corner_cutting", "function", "bounds",    "vectorized", "step_cost"};
 
 template <class T>
 std::optional<T> get(const py::dict& d, const char* key) {
@@ -80,7 +80,13 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
         };
         g.start = cell("start");
         g.goal = cell("goal");
-        g.objective = get<std::string>(d, "objective").value_or(g.objective);
+        if (d.contains("objective") && !d["objective"].is_none()) {
+            const py::object step_cost = d.contains("step_cost") ? py::object(d["step_cost"]) : py::object(py::none());
+            set_path_objective(g, d["objective"], step_cost, c.errors, where + ": ");
+            c.python_functions = c.python_functions || g.objective == "user";
+        } else {
+            require(!d.contains("step_cost"), where, "step_cost: only with an objective that is a function");
+        }
         g.encoding = get<std::string>(d, "encoding").value_or(g.encoding);
         g.connector = get<std::string>(d, "connector").value_or(g.connector);
         g.init = get<std::string>(d, "init").value_or(g.init);
@@ -187,7 +193,8 @@ py::dict read_store(const std::string& path) {
                              py::arg("seed") = r.seed, py::arg("best") = optional_number(r.best),
                              py::arg("evaluations") = r.evaluations, py::arg("wall_ms") = r.wall_ms,
                              py::arg("optimum") = optional_number(r.optimum),
-                             py::arg("history") = vector_array(r.history), py::arg("history_evaluations") = he));
+                             py::arg("history") = vector_array(r.history), py::arg("history_evaluations") = he,
+                             py::arg("encoding") = r.encoding));
     }
     py::list problems;
     if (s.problems)

@@ -91,6 +91,12 @@ py::dict result_dict(const engine::RunResult& r);
 py::array_t<double> vector_array(const std::vector<double>& v);
 py::array_t<int> path_array(const grid::Path& path);
 
+/// A grid problem's objective from Python: a name, or a function of the path's cells (an (n, 2)
+/// int array) with an optional step_cost(previous, direction) for the exact optimum. `where`
+/// prefixes messages ("problems[2]: "). Errors the functions raise go to `errors`.
+void set_path_objective(engine::GridSpec& spec, const py::object& objective, const py::object& step_cost,
+                        const std::shared_ptr<UserError>& errors, const std::string& where);
+
 void bind_grid(py::module_& m);
 void bind_roughset(py::module_& m);
 void bind_campaign(py::module_& m);

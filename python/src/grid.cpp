@@ -50,12 +50,15 @@ grid::Cell cell(const py::object& o, const char* where) {
     return {coordinate(s[0]), coordinate(s[1])};
 }
 
+}  // namespace
+
 /// A Python objective on paths: fn(cells), cells an (n, 2) array of int (x, y) that the function
 /// may keep (each call gets its own), returning one number; with step_cost(previous, direction)
 /// (previous -1 for the first step) its per-step form for the exact optimum. Each call holds the
-/// GIL; what it raises is remembered and raised again from plan().
+/// GIL; what it raises is remembered and raised again from plan() or Campaign.run().
 std::shared_ptr<const engine::UserPathObjective> user_objective(const py::object& fn, const py::object& step_cost,
-                                                                const std::shared_ptr<UserError>& errors) {
+                                                                const std::shared_ptr<UserError>& errors,
+                                                                const std::string& where) {
     auto value = std::make_shared<py::object>(fn);
     auto user = std::make_shared<engine::UserPathObjective>();
     auto number = [](const py::object& v, const char* what) {
@@ -77,7 +80,7 @@ std::shared_ptr<const engine::UserPathObjective> user_objective(const py::object
         }
     };
     if (!step_cost.is_none()) {
-        if (!PyCallable_Check(step_cost.ptr())) throw py::type_error("step_cost: expected a callable");
+        if (!PyCallable_Check(step_cost.ptr())) throw py::type_error(where + "step_cost: expected a callable");
         auto step = std::make_shared<py::object>(step_cost);
         user->step_cost = [step, errors, number](int previous, int direction) -> double {
             py::gil_scoped_acquire gil;
@@ -92,6 +95,22 @@ std::shared_ptr<const engine::UserPathObjective> user_objective(const py::object
     return user;
 }
 
+void set_path_objective(engine::GridSpec& spec, const py::object& objective, const py::object& step_cost,
+                        const std::shared_ptr<UserError>& errors, const std::string& where) {
+    if (py::isinstance<py::str>(objective)) {
+        spec.objective = objective.cast<std::string>();
+        if (!step_cost.is_none()) throw py::type_error(where + "step_cost: only with an objective that is a function");
+    } else if (PyCallable_Check(objective.ptr())) {
+        spec.objective = "user";
+        spec.path_objective = user_objective(objective, step_cost, errors, where);
+    } else {
+        throw py::type_error(where + "objective: expected a name or a function of the path's cells, got " +
+                             py::str(py::type::of(objective).attr("__name__")).cast<std::string>());
+    }
+}
+
+namespace {
+
 py::dict plan(const Grid& g, const py::object& start, const py::object& goal, const std::string& algo,
               const py::object& objective, const py::object& step_cost, const std::string& encoding,
               const std::string& connector, const std::string& init, std::int64_t waypoints,
@@ -100,16 +119,7 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
               const py::object& callback, const py::dict& params) {
     engine::GridSpec spec;
     auto errors = std::make_shared<UserError>();
-    if (py::isinstance<py::str>(objective)) {
-        spec.objective = objective.cast<std::string>();
-        if (!step_cost.is_none()) throw py::type_error("step_cost: only with an objective that is a function");
-    } else if (PyCallable_Check(objective.ptr())) {
-        spec.objective = "user";
-        spec.path_objective = user_objective(objective, step_cost, errors);
-    } else {
-        throw py::type_error("objective: expected a name or a function of the path's cells, got " +
-                             py::str(py::type::of(objective).attr("__name__")).cast<std::string>());
-    }
+    set_path_objective(spec, objective, step_cost, errors, "");
     spec.encoding = encoding;
     spec.connector = connector;
     spec.init = init;

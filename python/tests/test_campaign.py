@@ -57,6 +57,44 @@ def test_campaign_grid_and_toml(tmp_path):
     assert len(pride.read_store(tmp_path / "t.sqlite", dataframe=False)) == 2
 
 
+def test_campaign_with_a_path_objective_counts_every_call(tmp_path):
+    """A function of the path as a grid problem's objective in a campaign: mixed encodings, every
+    call an evaluation of some stored run, the exact optimum from its step costs; what each run
+    planned on is stored."""
+    g = pride.Grid(ARRAY)
+    calls = {"n": 0}
+
+    def length(cells):
+        calls["n"] += 1
+        steps = np.abs(np.diff(cells, axis=0)).sum(axis=1)
+        return float((steps == 1).sum() + np.sqrt(2) * (steps == 2).sum())
+
+    step = lambda previous, direction: 1.0 if direction % 2 == 0 else float(np.sqrt(2))
+    c = pride.Campaign(
+        "user", seeds=2, evals=120,
+        problems=[{"id": "g", "grid": g, "start": (0, 5), "goal": (5, 0), "objective": length, "step_cost": step}],
+        algorithms=["pso", "iqga", "hswoa", {"id": "ga-chain", "algo": "ga", "encoding": "chain"}, "astar"])
+    c.run(tmp_path / "u.sqlite", jobs=2)
+    runs = pride.read_store(tmp_path / "u.sqlite", dataframe=False)
+    assert len(runs) == 10
+    # A* evaluates nothing (its evaluations are node expansions; its value is its step costs' sum).
+    assert calls["n"] == sum(r["evaluations"] for r in runs if r["algorithm"] != "astar") == 8 * 120
+    encodings = {r["algorithm"]: r["encoding"] for r in runs}
+    assert encodings == {"pso": "line", "iqga": "chain", "hswoa": "chain", "ga-chain": "chain", "astar": "none"}
+    exact = pride.exact(g, (0, 5), (5, 0), objective="length").objective_value
+    assert all(r["optimum"] == pytest.approx(exact, rel=1e-12) for r in runs)
+    with pytest.raises(ValueError, match="no per-step costs"):
+        pride.Campaign("u", seeds=1, evals=10, algorithms=["exact"],
+                       problems=[{"id": "g", "grid": g, "start": (0, 5), "goal": (5, 0), "objective": length}])
+    with pytest.raises(TypeError, match=r"^problems\[0\]: step_cost: only with an objective that is a function$"):
+        pride.Campaign("u", seeds=1, evals=10, algorithms=["pso"],
+                       problems=[{"id": "g", "grid": g, "start": (0, 5), "goal": (5, 0), "objective": "length",
+                                  "step_cost": step}])
+    with pytest.raises(TypeError, match=r"^problems\[0\]: objective: expected a name or a function"):
+        pride.Campaign("u", seeds=1, evals=10, algorithms=["pso"],
+                       problems=[{"id": "g", "grid": g, "start": (0, 5), "goal": (5, 0), "objective": 3}])
+
+
 def test_campaign_errors(tmp_path):
     with pytest.raises(ValueError, match="unknown algorithm"):
         pride.Campaign("x", seeds=1, evals=10, problems=[{"id": "s", "problem": "sphere", "dim": 2}],

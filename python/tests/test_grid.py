@@ -181,9 +181,18 @@ def test_a_function_as_the_objective_every_call_counted():
                 assert r.objective_value == pytest.approx(r.metrics["length"], abs=1e-12)
     assert all(k.dtype.kind == "i" and k.shape[1] == 2 for k in kept)
     step = lambda previous, direction: 1.0 if direction % 2 == 0 else float(np.sqrt(2))
+    calls.clear()
     exact = pride.plan(g, START, GOAL, algo="exact", objective=length, step_cost=step)
+    astar = pride.plan(g, START, GOAL, algo="astar", objective=length, step_cost=step)
     by_name = pride.plan(g, START, GOAL, algo="exact", objective="length")
     assert exact.optimum == pytest.approx(by_name.optimum, rel=1e-12)
+    assert astar.objective_value == pytest.approx(by_name.optimum, rel=1e-12)
+    with_oracle = pride.plan(g, START, GOAL, algo="ga", objective=length, step_cost=step, oracle=True, evals=90)
+    assert with_oracle.gap >= 0
+    assert len(calls) == 90  # the planners and the oracle use the step costs: no call of the objective
+    with pytest.raises(ValueError, match="^step_cost: the per-step costs give an optimum of 1[0-9.]*, but a run "
+                                         "found a path the objective values at [0-9.]*: the two must agree"):
+        pride.plan(g, START, GOAL, algo="ga", objective=length, step_cost=lambda p, d: 10.0, oracle=True, evals=90)
     with pytest.raises(ValueError, match="no per-step costs"):
         pride.plan(g, START, GOAL, algo="exact", objective=length)
     with pytest.raises(TypeError, match="^objective: the function must return one number, got str$"):
