@@ -288,8 +288,8 @@ CampaignStore read_store(const std::string& path) {
     const auto campaign_columns = columns("campaign", {"id", "name"});
     const bool has_target = campaign_columns.count("target") > 0;
     const bool has_precisions = campaign_columns.count("precisions") > 0;
-    const auto run_columns = columns(
-        "runs", {"problem", "algorithm", "seed", "best", "evaluations", "wall_ms", "optimum", "history", "history_evaluations"});
+    const auto run_columns = columns("runs", {"problem", "algorithm", "seed", "best", "evaluations", "wall_ms",
+                                              "optimum", "history", "history_evaluations"});
     const bool has_hits = run_columns.count("target_hits") > 0;
     // Stores written before the problems table existed are still read: the report needs none of
     // it; the IOH export asks for it.

@@ -24,10 +24,10 @@ struct PyCampaign {
     bool python_functions = false;
 };
 
-const std::set<std::string> problem_keys{"id",       "problem",        "dim",      "instance",  "grid",
-                                         "map",      "inflate",        "start",    "goal",      "objective",
-                                         "encoding", "connector",      "init",     "waypoints", "weights",
-                                         "lambda",   "corner_cutting", "function", "bounds",    "vectorized", "step_cost"};
+const std::set<std::string> problem_keys{
+    "id",        "problem",    "dim",       "instance", "grid",      "map",     "inflate", "start",          "goal",
+    "objective", "encoding",   "connector", "init",     "waypoints", "weights", "lambda",  "corner_cutting", "function",
+    "bounds",    "vectorized", "step_cost"};
 
 template <class T>
 std::optional<T> get(const py::dict& d, const char* key) {
