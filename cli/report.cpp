@@ -62,7 +62,9 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
     const std::string check = "'" + python + "' -c 'import matplotlib' >/dev/null 2>&1";
     require(std::system(check.c_str()) == 0, "--plots",
             "needs python3 with matplotlib (apt-get install python3-matplotlib)");
-    run_script(python, script, {store, folder}, folder);
+    std::vector<std::string> args{store, folder};
+    if (data.raw) args.push_back("--raw");
+    run_script(python, script, args, folder);
     if (!data.coco || data.coco->curves.empty()) return;
     const std::string ecdf_script = std::string(PRIDE_SCRIPTS_DIR) + "/plot_ecdf.py";
     require(std::filesystem::exists(ecdf_script), "--plots", ecdf_script + " is missing");
@@ -82,7 +84,7 @@ int report_command(const ReportOptions& o, std::ostream& out) {
     require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv", "--format",
             "expected md, csv, latex or ert-csv, got '" + o.format + "'");
     // The whole store is read and checked before any figure is drawn from it.
-    const report::ReportData data = report::load_report(o.store);
+    const report::ReportData data = report::load_report(o.store, report::ReportOptions{o.raw});
     require(o.format != "ert-csv" || data.coco, "--format ert-csv",
             o.store + ": records no target hits (no precisions, or no run on a problem with a known optimum)");
     const std::string text = o.format == "csv"       ? report::render_csv(data)

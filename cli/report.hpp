@@ -9,6 +9,7 @@ struct ReportOptions {
     std::string store;
     std::string format = "md";  // md, csv or latex
     std::string plots;          // a folder for the figures (python3-matplotlib), or empty
+    bool raw = false;           // values f rather than precisions f - f_opt
 };
 int report_command(const ReportOptions& o, std::ostream& out);
 

@@ -35,7 +35,9 @@ std::string describe(const Campaign& c) {
     std::string s = fmt::format("name = {}\nseeds = {}\n", json_string(c.name), c.seeds);
     if (c.budget.evaluations) s += fmt::format("evaluations = {}\n", *c.budget.evaluations);
     if (c.budget.iterations) s += fmt::format("iterations = {}\n", *c.budget.iterations);
+    if (c.evaluations_per_dim) s += fmt::format("evaluations_per_dim = {}\n", *c.evaluations_per_dim);
     if (c.target) s += fmt::format("target = {}\n", json_number(*c.target));
+    if (c.target_precision) s += fmt::format("precision = {}\n", json_number(*c.target_precision));
     for (const auto& p : c.problems) {
         s += "problem " + json_string(p.id) + ": ";
         if (const auto* f = std::get_if<ContinuousSpec>(&p.spec)) {
@@ -56,6 +58,13 @@ std::string describe(const Campaign& c) {
         s += "\n";
     }
     return s;
+}
+
+/// The budget of one problem's runs: the campaign's, with its evaluations per dimension resolved.
+Budget budget_of(const Budget& budget, const CampaignProblem& p) {
+    Budget b = budget;
+    if (p.evaluations) b.evaluations = p.evaluations;
+    return b;
 }
 
 struct Task {
@@ -620,7 +629,10 @@ void prepare(Campaign& c) {
     const std::string file = c.file.empty() ? std::string("campaign") : c.file;
     require(!c.name.empty(), file, "missing key 'name'");
     require(c.seeds >= 1, file, "missing key 'seeds'");
-    require(c.budget.evaluations || c.budget.iterations, file, "missing [budget] with 'evaluations' or 'iterations'");
+    require(c.budget.evaluations || c.budget.iterations || c.evaluations_per_dim, file,
+            "missing [budget] with 'evaluations', 'evaluations_per_dim' or 'iterations'");
+    require(!(c.budget.evaluations && c.evaluations_per_dim), file,
+            "[budget]: give evaluations or evaluations_per_dim, not both");
     require(!c.problems.empty(), file, "no [[problem]]");
     require(!c.algorithms.empty(), file, "no [[algorithm]]");
     // The list of runs is made before any starts: a task and a stored key per run.
@@ -663,6 +675,16 @@ void prepare(Campaign& c) {
             } else {
                 p.problem = std::make_shared<const Problem>(p.spec);
             }
+            if (c.evaluations_per_dim) {
+                require(!std::holds_alternative<GridSpec>(p.spec), "evaluations_per_dim",
+                        "a grid problem has no dimension; give the campaign an absolute budget (evaluations)");
+                const double n =
+                    static_cast<double>(*c.evaluations_per_dim) * static_cast<double>(p.problem->dimension());
+                require(n <= 1e15, "evaluations_per_dim",
+                        fmt::format("{} x {} dimensions is more than 10^15 evaluations", *c.evaluations_per_dim,
+                                    p.problem->dimension()));
+                p.evaluations = *c.evaluations_per_dim * static_cast<std::int64_t>(p.problem->dimension());
+            }
         } catch (const InputError& e) {
             throw InputError(where, "problem '" + p.id + "': " + e.what());
         }
@@ -671,7 +693,7 @@ void prepare(Campaign& c) {
         const std::string where = where_of(c, a.line, "algorithm '" + a.id + "'");
         for (const auto& p : c.problems) {
             try {
-                check(a.spec, *p.problem, c.budget);
+                check(a.spec, *p.problem, budget_of(c.budget, p));
             } catch (const InputError& e) {
                 throw InputError(where, "algorithm '" + a.id + "' on problem '" + p.id + "': " + e.what());
             }
@@ -686,7 +708,7 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     r.algorithm = a.id;
     r.seed = seed;
     const std::optional<double> optimum = p.problem->optimum_value();
-    Budget with_targets = budget;
+    Budget with_targets = budget_of(budget, p);
     if (optimum)
         for (const double precision : coco_precisions()) with_targets.recorded_targets.push_back(*optimum + precision);
     const RunResult result = run(a.spec, *p.problem, with_targets, static_cast<std::uint64_t>(seed));

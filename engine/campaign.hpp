@@ -25,6 +25,8 @@ struct CampaignProblem {
     int line = 0;                            // where it stands in the campaign file (0: not from a file)
     std::string suite;                       // "bbob", "classic" when it came from a suite, else empty
     std::shared_ptr<const Problem> problem;  // built by prepare()
+    // The evaluations of each run when the campaign budgets per dimension (set by prepare()).
+    std::optional<std::int64_t> evaluations;
 };
 
 /// COCO's target precisions: a continuous problem with a known optimum f_opt records in every run
@@ -47,9 +49,15 @@ struct Campaign {
     std::string text;  // stored with the results, so a store never mixes two campaigns; empty:
                        // prepare() writes a canonical description
     std::string name;
-    std::int64_t seeds = 0;        // seeds 1..seeds
-    Budget budget;                 // evaluations and/or iterations
+    std::int64_t seeds = 0;  // seeds 1..seeds
+    Budget budget;           // evaluations and/or iterations
+    // Or evaluations per dimension: each continuous problem's runs get this times its dimension
+    // (COCO's budgets; excludes budget.evaluations; grids have no dimension and refuse it).
+    std::optional<std::int64_t> evaluations_per_dim;
     std::optional<double> target;  // a threshold for reports (evaluations to reach it); runs do not stop there
+    // The same as a precision: the threshold f_opt + precision of each problem with a known
+    // optimum (the other problems have none). At most one of target and target_precision.
+    std::optional<double> target_precision;
     std::vector<CampaignProblem> problems;
     std::vector<CampaignAlgorithm> algorithms;
 };

@@ -260,10 +260,29 @@ Campaign read_campaign(const std::string& path) {
                     c.target = need_number(path, bv, kk);
                     if (!std::isfinite(*c.target))
                         fail(at(path, bv), fmt::format("'target' must be a finite number, got {}", *c.target));
+                } else if (kk == "evaluations_per_dim") {
+                    c.evaluations_per_dim = need_integer(path, bv, kk);
+                    if (*c.evaluations_per_dim < 1 || *c.evaluations_per_dim > max_budget)
+                        fail(at(path, bv), fmt::format("'evaluations_per_dim' must be in [1, {}], got {}", max_budget,
+                                                       *c.evaluations_per_dim));
+                } else if (kk == "precision") {
+                    c.target_precision = need_number(path, bv, kk);
+                    if (!std::isfinite(*c.target_precision) || *c.target_precision <= 0)
+                        fail(at(path, bv), fmt::format("'precision' must be a finite number > 0 (a target f_opt + "
+                                                       "precision), got {}",
+                                                       *c.target_precision));
                 } else {
-                    fail(at(path, bv), "unknown key '" + kk + "' in [budget] (evaluations, iterations, target)");
+                    fail(at(path, bv),
+                         "unknown key '" + kk +
+                             "' in [budget] (evaluations, evaluations_per_dim, iterations, target, precision)");
                 }
             }
+            if (c.budget.evaluations && c.evaluations_per_dim)
+                fail(at(path, value), "[budget]: give evaluations or evaluations_per_dim, not both");
+            if (c.target && c.target_precision)
+                fail(at(path, value),
+                     "[budget]: give target (an absolute value) or precision (f_opt + precision), "
+                     "not both");
         } else if (k == "threads") {  // evaluation threads per run (Budget::threads; results unchanged)
             c.budget.threads = need_integer(path, value, k);
             if (c.budget.threads < 1 || c.budget.threads > 256) fail(at(path, value), "'threads' must be in [1, 256]");

@@ -144,6 +144,7 @@ class Store {
                 "NULL, owner TEXT NOT NULL, UNIQUE (problem, algorithm, seed))");
             // Columns added with the suites (issue 10); a store from before gains them, empty.
             add_column("campaign", "precisions", "TEXT");
+            add_column("campaign", "target_precision", "REAL");  // [budget] precision (issue 24)
             add_column("problems", "function", "TEXT");
             add_column("problems", "instance", "INTEGER NOT NULL DEFAULT 0");
             add_column("problems", "f_opt", "REAL");
@@ -346,7 +347,8 @@ class Store {
     }
 
     void record(const Campaign& c) {
-        sqlite3_stmt* s = prepare("INSERT INTO campaign (id, name, text, target, precisions) VALUES (1, ?, ?, ?, ?)");
+        sqlite3_stmt* s = prepare(
+            "INSERT INTO campaign (id, name, text, target, precisions, target_precision) VALUES (1, ?, ?, ?, ?, ?)");
         sqlite3_bind_text(s, 1, c.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, c.text.c_str(), -1, SQLITE_TRANSIENT);
         if (c.target)
@@ -355,6 +357,10 @@ class Store {
             sqlite3_bind_null(s, 3);
         const std::string precisions = json_array(coco_precisions());
         sqlite3_bind_text(s, 4, precisions.c_str(), -1, SQLITE_TRANSIENT);
+        if (c.target_precision)
+            sqlite3_bind_double(s, 5, *c.target_precision);
+        else
+            sqlite3_bind_null(s, 5);
         step_done(s, "cannot write the store");
         for (const auto& a : c.algorithms) {
             s = prepare("INSERT INTO algorithms (id, type, evaluates) VALUES (?, ?, ?)");

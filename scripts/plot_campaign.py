@@ -2,11 +2,15 @@
 """Plots of a campaign store written by `pride bench` (called by `pride report --plots DIR`).
 
 For every problem: the convergence of each algorithm (median and interquartile band over the
-seeds of the best value after each iteration, against evaluations when recorded), boxplots of
-the final values, and for grid problems the best path of each algorithm on the map. Each figure
-is written as PNG and SVG.
+seeds of the best value after each iteration, against evaluations when every curve of the figure
+records them, else against iterations), boxplots of the final values, and for grid problems the
+best path of each algorithm on the map. Where the problem's optimum f_opt is known (continuous
+problems), values are precisions f - f_opt on a log axis (precisions below 1e-12, 0 included, are
+drawn at 1e-12, and the axis says so), unless --raw. Whole-map planners (A*, exact: no history)
+appear in the convergence figure as a horizontal line at their value. Each figure is written as
+PNG and SVG.
 
-Usage: plot_campaign.py STORE DIR
+Usage: plot_campaign.py STORE DIR [--raw]
 """
 import json
 import os
@@ -65,11 +69,14 @@ def valid_solution(v):
 
 
 def main():
-    if len(sys.argv) != 3:
-        sys.exit("usage: plot_campaign.py STORE DIR")
+    if len(sys.argv) not in (3, 4) or (len(sys.argv) == 4 and sys.argv[3] != "--raw"):
+        sys.exit("usage: plot_campaign.py STORE DIR [--raw]")
     store, folder = sys.argv[1], sys.argv[2]
+    raw = len(sys.argv) == 4
     db = sqlite3.connect(f"file:{store}?mode=ro", uri=True)
-    problems = {row[0]: row[1:] for row in db.execute("SELECT id, type, map, start, goal FROM problems")}
+    columns = {row[1] for row in db.execute("PRAGMA table_info(problems)")}
+    f_opt_column = "f_opt" if "f_opt" in columns else "NULL"
+    problems = {row[0]: row[1:] for row in db.execute(f"SELECT id, type, map, start, goal, {f_opt_column} FROM problems")}
     runs = db.execute(
         "SELECT problem, algorithm, seed, best, solution, history, history_evaluations FROM runs "
         "ORDER BY problem, algorithm, seed").fetchall()
@@ -89,41 +96,71 @@ def main():
         if best is not None and not isinstance(best, (int, float)):
             raise Damaged(f"{store}: damaged store: {row}, column best: not a number")
         by_problem.setdefault(problem, {}).setdefault(algorithm, []).append((seed, best, *parsed))
+    floor = 1e-12
     for problem, algorithms in by_problem.items():
         stem = safe(problem)
-        # Convergence: median and interquartile band of the best value after each iteration.
+        info = problems.get(problem)
+        f_opt = info[4] if info and isinstance(info[4], (int, float)) and np.isfinite(info[4]) else None
+        precision = f_opt is not None and not raw
+
+        def shown(v):
+            """A value as drawn: its precision (floored for the log axis) where f_opt is known."""
+            if v is None:
+                return np.inf
+            return max(v - f_opt, floor) if precision else v
+
+        # Convergence: median and interquartile band of the best value after each iteration; x in
+        # evaluations only when every curve records them (else iterations for all, never mixed).
         fig, ax = plt.subplots(figsize=(6.4, 4.2))
-        positive, smallest, largest = True, np.inf, 0.0
+        positive, smallest, largest, floored = True, np.inf, 0.0, False
         # Line styles cycle as well as colours, so that algorithms with equal curves stay visible.
         styles = ["-", "--", ":", "-."]
+        curves = {a: rs for a, rs in algorithms.items() if all(r[3] for r in rs)}
+        by_evaluations = bool(curves) and all(all(r[4] for r in rs) for rs in curves.values())
         for index, (algorithm, rs) in enumerate(sorted(algorithms.items())):
+            style = styles[index % len(styles)]
+            if algorithm not in curves:  # a whole-map planner: its value, as a line
+                finals = [shown(r[1]) for r in rs]
+                if finals and np.all(np.isfinite(finals)):
+                    value = float(np.median(finals))
+                    floored = floored or (precision and value <= floor)
+                    ax.axhline(value, linestyle=style, color="grey", linewidth=1.2, label=f"{algorithm} (whole map)")
+                    positive = positive and value > 0
+                    smallest, largest = min(smallest, value), max(largest, value)
+                continue
             length = min(len(r[3]) for r in rs)
-            values = np.array([[np.inf if v is None else v for v in r[3][:length]] for r in rs], dtype=float)
-            x = np.array(rs[0][4][:length], dtype=float) if rs[0][4] else np.arange(length)
+            values = np.array([[shown(v) for v in r[3][:length]] for r in rs], dtype=float)
+            x = np.array(rs[0][4][:length], dtype=float) if by_evaluations else np.arange(length)
             median = np.median(values, axis=0)
             low, high = np.percentile(values, 25, axis=0), np.percentile(values, 75, axis=0)
             finite = values[np.isfinite(values)]
             positive = positive and bool(np.all(finite > 0))
+            floored = floored or (precision and bool(np.any(finite <= floor)))
             if finite.size:
                 smallest, largest = min(smallest, finite.min()), max(largest, finite.max())
-            ax.plot(x, median, label=algorithm, linestyle=styles[index % len(styles)], linewidth=1.8)
+            ax.plot(x, median, label=algorithm, linestyle=style, linewidth=1.8)
             ax.fill_between(x, low, high, alpha=0.25)
-        ax.set_xlabel("evaluations" if all(rs[0][4] for rs in algorithms.values()) else "iteration")
-        ax.set_ylabel("best value (median, IQR band)")
-        if positive and largest > 10 * smallest:  # a log scale only where values span decades
+        ax.set_xlabel("evaluations" if by_evaluations else "iteration")
+        what = "precision f - f_opt" if precision else "best value"
+        ax.set_ylabel(f"{what} (median, IQR band)")
+        # Precisions always on a log axis; raw values where they are positive and span decades.
+        if precision or (positive and largest > 10 * smallest):
             ax.set_yscale("log")
-        ax.set_title(problem)
+        ax.set_title(problem + (f" (precisions <= {floor:g} drawn at {floor:g})" if floored else ""),
+                     fontsize="medium")
         ax.legend()
         save(fig, folder, f"{stem}-convergence")
         # Final values.
         fig, ax = plt.subplots(figsize=(6.4, 4.2))
         names = sorted(algorithms)
-        ax.boxplot([[r[1] for r in algorithms[a] if r[1] is not None] or [np.nan] for a in names], labels=names)
-        ax.set_ylabel("final best value")
+        finals = [[shown(r[1]) for r in algorithms[a] if r[1] is not None] or [np.nan] for a in names]
+        ax.boxplot(finals, labels=names)
+        ax.set_ylabel(f"final {what}")
+        if precision:
+            ax.set_yscale("log")
         ax.set_title(problem)
         save(fig, folder, f"{stem}-final")
         # Grid problems: each algorithm's best path on the map.
-        info = problems.get(problem)
         if info and info[0] == "grid" and info[1] and os.path.exists(info[1]):
             blocked = read_map(info[1])
             fig, ax = plt.subplots(figsize=(6.4, 6.4 * blocked.shape[0] / blocked.shape[1]))

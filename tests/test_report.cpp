@@ -368,9 +368,15 @@ std::string report(const std::string& store, const std::string& format) {
     return r.out;
 }
 
-const std::vector<std::string> kCsvHeader = {
-    "problem",          "algorithm", "runs",     "min",     "mean",           "std", "median", "max", "mean_wall_ms",
-    "mean_evaluations", "optimum",   "mean_gap", "success", "p_holm_vs_best", "best"};
+const std::vector<std::string> kCsvHeader = {"problem",      "algorithm",
+                                             "runs",         "min",
+                                             "mean",         "std",
+                                             "median",       "max",
+                                             "mean_wall_ms", "mean_evaluations",
+                                             "optimum",      "mean_gap",
+                                             "success",      "p_holm_vs_best",
+                                             "best",         "f_opt",
+                                             "measure"};
 
 /// The CSV as rows of cells (the header checked and dropped).
 std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
@@ -477,7 +483,7 @@ TEST_CASE("report: csv columns equal values computed independently", "[report][c
     // grid10 ga {12,12,14,13,12}, optimum 12: mean 12.6, std sqrt(3.2/4), gaps 0,0,2/12,1/12,0 -> 0.05; 3 of 5 at it.
     auto r = row("grid10", "ga");
     CHECK(r == std::vector<std::string>{"grid10", "ga", "5", "12", "12.6", r[5], "12", "14", "1", "440", "12", "0.05",
-                                        "0.6", r[13], "0"});
+                                        "0.6", r[13], "0", "", "value"});
     check_close(r[5], std::sqrt(0.8));
     check_close(r[13], 0.17971249487899985);
     // grid10 pso {15,12,18,12(1+1e-11),13.5}: median 13.5, mean 14.1 + 2.4e-11 (the CSV keeps every
@@ -492,7 +498,7 @@ TEST_CASE("report: csv columns equal values computed independently", "[report][c
     check_close(r[13], 2 * 0.02536985982205372);
     r = row("grid10", "nlopt_sbplx");
     CHECK(r == std::vector<std::string>{"grid10", "nlopt_sbplx", "5", "12", "12", "0", "12", "12", "0.05", "120", "12",
-                                        "0", "1", "", "1"});
+                                        "0", "1", "", "1", "", "value"});
     // rastrigin: pso is best (median 3 like ga, mean 2.8 < 3).
     CHECK(row("rastrigin", "pso")[14] == "1");
     CHECK(row("rastrigin", "ga")[14] == "0");
@@ -692,9 +698,14 @@ TEST_CASE("report: pride bench then pride report on a tiny campaign", "[report][
         INFO(c[0] << ", " << c[1]);
         seen.emplace(c[0], c[1]);
         CHECK(c[2] == "3");
-        CHECK(c[10].empty());  // continuous: no optimum, gap or success
-        CHECK(c[11].empty());
-        CHECK(c[12].empty());
+        // Continuous with f_opt = 0: no grid optimum; values are precisions, gap their mean and
+        // optimal the share within 1e-8 of f_opt.
+        CHECK(c[10].empty());
+        CHECK(c[15] == "0");
+        CHECK(c[16] == "precision");
+        CHECK(std::strtod(c[11].c_str(), nullptr) == Approx(std::strtod(c[4].c_str(), nullptr)).epsilon(1e-12));
+        const double solved = std::strtod(c[12].c_str(), nullptr);
+        CHECK((solved >= 0 && solved <= 1));
         const double evaluations = std::strtod(c[9].c_str(), nullptr);
         CHECK(evaluations > 0);
         CHECK(evaluations <= 500);

@@ -119,7 +119,11 @@ std::optional<Analysis> analyse(const CampaignStore& store) {
         const auto it = problems.find(r.problem);
         if (it == problems.end()) continue;  // read_store refuses such runs when precisions are recorded
         const StoredProblem& p = *it->second;
-        const std::string function = p.function.value_or(p.id);
+        // Instances are pooled only within one family: BBOB's (all >= 1), or a function's seeded
+        // instances k >= 1 (shifted and rotated alike); instance 0, the function as defined (its
+        // optimum often at the origin), is a problem of its own.
+        std::string function = p.function.value_or(p.id);
+        if (p.suite != "bbob" && p.instance >= 1) function += " (instances k >= 1)";
         Cell& c = cells[Key{p.fid.value_or(std::numeric_limits<std::int64_t>::max()), function, p.dim, r.algorithm}];
         c.problem = &p;
         c.function = function;

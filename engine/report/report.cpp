@@ -21,6 +21,7 @@ struct Cell {                  // one (problem, algorithm): its runs
     std::vector<double> wall_ms, evaluations;
     std::optional<double> optimum;
     std::vector<std::optional<double>> to_target;  // evaluations when the best first reached the target
+    std::optional<double> f_opt;                   // continuous problems with a known optimum
 };
 
 /// The evaluations at which a run's best value first reached `target` (from its history).
@@ -104,16 +105,33 @@ std::string render_table(const ReportData& report, bool md) {
         for (std::size_t i = 0; i < cols.size(); ++i) s += (i ? sep : "") + (md ? markdown(cols[i]) : latex(cols[i]));
         return s + end;
     };
-    std::vector<std::string> head{"problem", "algorithm", "runs",    "min", "mean",    "std",
-                                  "median",  "max",       "mean ms", "gap", "optimal", "p (Holm)"};
-    if (report.target) head.push_back("evals to target");
+    const bool precisions =
+        std::any_of(report.rows.begin(), report.rows.end(), [](const ReportRow& r) { return r.precision; });
+    const bool f_opts =
+        std::any_of(report.rows.begin(), report.rows.end(), [](const ReportRow& r) { return r.f_opt.has_value(); });
+    std::vector<std::string> head{"problem", "algorithm", "runs"};
+    if (f_opts) head.push_back("f_opt");
+    for (const char* h : {"min", "mean", "std", "median", "max", "mean ms", "gap", "optimal", "p (Holm)"})
+        head.push_back(h);
+    const bool has_target = report.target || report.target_precision;
+    if (has_target) head.push_back("evals to target");
     std::string text;
     if (md) {
         text += fmt::format(
             "Campaign `{}`. Per problem, `best` marks the algorithm with the lowest median; "
             "p (Holm) is the Wilcoxon rank-sum test of each other algorithm against it, Holm-corrected "
-            "over the problem's algorithms, with `*` where p < 0.05.\n\n",
+            "over the problem's algorithms, with `*` where p < 0.05.",
             report.campaign);
+        if (precisions)
+            text +=
+                " Where f_opt is known, min to max are precisions f - f_opt (`--raw`: the values f), gap is "
+                "their mean and optimal the share of runs within 1e-8 of f_opt.";
+        else if (f_opts)
+            text +=
+                " Values are f as run (raw); gap is the mean of f - f_opt and optimal the share of runs within "
+                "1e-8 of f_opt.";
+        if (report.target_precision) text += fmt::format(" Target: f_opt + {}.", num(*report.target_precision));
+        text += "\n\n";
         text += line(head) + "|";
         for (std::size_t i = 0; i < head.size(); ++i) text += i < 2 ? "---|" : "---:|";
         text += "\n";
@@ -123,19 +141,16 @@ std::string render_table(const ReportData& report, bool md) {
     for (const auto& r : report.rows) {
         const std::string p =
             r.best ? "best" : (r.p_holm ? fmt::format("{:.3g}{}", *r.p_holm, *r.p_holm < 0.05 ? "*" : "") : "");
-        std::vector<std::string> cols{r.problem,
-                                      r.algorithm,
-                                      std::to_string(r.runs),
-                                      num(r.min),
-                                      num(r.mean),
-                                      num(r.std),
-                                      num(r.median),
-                                      num(r.max),
-                                      fmt::format("{:.3f}", r.mean_wall_ms),
-                                      r.mean_gap ? fmt::format("{:.2f} %", 100 * *r.mean_gap) : "-",
-                                      r.success ? fmt::format("{:.0f} %", 100 * *r.success) : "-",
-                                      p};
-        if (report.target)  // mean over the runs that reached it, and how many did
+        std::vector<std::string> cols{r.problem, r.algorithm, std::to_string(r.runs)};
+        if (f_opts) cols.push_back(r.f_opt ? num(*r.f_opt) : "-");
+        const std::string gap = !r.mean_gap ? "-"
+                                : r.f_opt   ? num(*r.mean_gap)  // a precision, not a share
+                                            : fmt::format("{:.2f} %", 100 * *r.mean_gap);
+        for (const std::string& s :
+             {num(r.min), num(r.mean), num(r.std), num(r.median), num(r.max), fmt::format("{:.3f}", r.mean_wall_ms),
+              gap, r.success ? fmt::format("{:.0f} %", 100 * *r.success) : std::string("-"), p})
+            cols.push_back(s);
+        if (has_target)  // mean over the runs that reached it, and how many did
             cols.push_back(r.mean_evaluations_to_target
                                ? fmt::format("{} ({}/{})", num(*r.mean_evaluations_to_target), r.reached_target, r.runs)
                                : fmt::format("- (0/{})", r.runs));
@@ -267,19 +282,34 @@ void equal_evaluations_note(ReportData& report, const CampaignStore& store, cons
     }
 }
 
-ReportData make_report(const CampaignStore& store) {
+ReportData make_report(const CampaignStore& store, const ReportOptions& options) {
     ReportData report;
     report.campaign = store.name;
     report.target = store.target;
+    report.target_precision = store.target_precision;
+    report.raw = options.raw;
     report.coco = coco::analyse(store);
+    std::map<std::string, std::optional<double>> f_opt;  // continuous problems with a known optimum
+    if (store.problems)
+        for (const StoredProblem& p : *store.problems)
+            if (p.f_opt && std::isfinite(*p.f_opt)) f_opt[p.id] = p.f_opt;
+    const bool has_target = store.target || store.target_precision;
     std::map<std::string, std::map<std::string, Cell>> cells;
     for (const StoredRun& run : store.runs) {
         Cell& c = cells[run.problem][run.algorithm];
-        c.best.push_back(run.best.value_or(inf));
+        const auto optimum = f_opt.count(run.problem) ? f_opt.at(run.problem) : std::nullopt;
+        // f - f_opt: exact for the values near f_opt that precisions are about (Sterbenz).
+        const double f = run.best.value_or(inf);
+        c.best.push_back(optimum && !options.raw ? f - *optimum : f);
         c.wall_ms.push_back(run.wall_ms);
         c.evaluations.push_back(static_cast<double>(run.evaluations));
         if (run.optimum) c.optimum = run.optimum;
-        if (store.target) c.to_target.push_back(evaluations_to(*store.target, run));
+        if (optimum) c.f_opt = optimum;
+        // The threshold on the runs' own values (their histories are of f).
+        if (store.target)
+            c.to_target.push_back(evaluations_to(*store.target, run));
+        else if (store.target_precision)
+            c.to_target.push_back(optimum ? evaluations_to(*optimum + *store.target_precision, run) : std::nullopt);
     }
 
     auto& rows = report.rows;
@@ -310,7 +340,7 @@ ReportData make_report(const CampaignStore& store) {
             r.mean_wall_ms = mean_of(c.wall_ms);
             r.mean_evaluations = mean_of(c.evaluations);
             r.best = algorithm == best;
-            if (store.target) {
+            if (has_target) {
                 double sum = 0.0;
                 for (const auto& e : c.to_target)
                     if (e) {
@@ -319,7 +349,18 @@ ReportData make_report(const CampaignStore& store) {
                     }
                 if (r.reached_target) r.mean_evaluations_to_target = sum / static_cast<double>(r.reached_target);
             }
-            if (c.optimum) {
+            if (c.f_opt) {
+                r.f_opt = c.f_opt;
+                r.precision = !options.raw;
+                double sum = 0, solved = 0;
+                for (const double v : c.best) {
+                    const double precision = options.raw ? v - *c.f_opt : v;
+                    sum += precision;
+                    solved += precision <= solved_precision ? 1.0 : 0.0;
+                }
+                r.mean_gap = sum / static_cast<double>(r.runs);
+                r.success = solved / static_cast<double>(r.runs);
+            } else if (c.optimum) {
                 r.optimum = c.optimum;
                 double gap = 0, success = 0;
                 for (double v : c.best) {
@@ -362,10 +403,10 @@ ReportData make_report(const CampaignStore& store) {
     return report;
 }
 
-ReportData load_report(const std::string& path) {
+ReportData load_report(const std::string& path, const ReportOptions& options) {
     const CampaignStore store = read_store(path);
     require(!store.runs.empty(), path, "holds no runs yet (run pride bench first)");
-    return make_report(store);
+    return make_report(store, options);
 }
 
 std::string render_markdown(const ReportData& report) {
@@ -379,18 +420,28 @@ std::string render_latex(const ReportData& report) {
 std::string render_csv(const ReportData& report) {
     std::string text =
         "problem,algorithm,runs,min,mean,std,median,max,mean_wall_ms,mean_evaluations,optimum,mean_gap,success,"
-        "p_holm_vs_best,best";
-    // Only campaigns with a target have its columns.
-    text += report.target ? ",target,reached_target,mean_evaluations_to_target\n" : "\n";
+        "p_holm_vs_best,best,f_opt,measure";
+    // Only campaigns with a target have its columns (target: the absolute threshold, or empty with
+    // target_precision, the threshold then f_opt + it).
+    const bool has_target = report.target || report.target_precision;
+    text += report.target_precision ? ",target,target_precision,reached_target,mean_evaluations_to_target\n"
+            : report.target         ? ",target,reached_target,mean_evaluations_to_target\n"
+                                    : "\n";
     const auto optional = [](const std::optional<double>& v) { return v ? exact(*v) : std::string(); };
     for (const auto& r : report.rows) {
-        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm), r.runs,
-                            exact(r.min), exact(r.mean), exact(r.std), exact(r.median), exact(r.max),
-                            exact(r.mean_wall_ms), exact(r.mean_evaluations), optional(r.optimum), optional(r.mean_gap),
-                            optional(r.success), optional(r.p_holm), r.best ? 1 : 0);
-        text += report.target ? fmt::format(",{},{},{}\n", exact(*report.target), r.reached_target,
-                                            optional(r.mean_evaluations_to_target))
-                              : "\n";
+        text +=
+            fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm), r.runs,
+                        exact(r.min), exact(r.mean), exact(r.std), exact(r.median), exact(r.max), exact(r.mean_wall_ms),
+                        exact(r.mean_evaluations), optional(r.optimum), optional(r.mean_gap), optional(r.success),
+                        optional(r.p_holm), r.best ? 1 : 0, optional(r.f_opt), r.precision ? "precision" : "value");
+        if (report.target_precision)
+            text +=
+                fmt::format(",{},{},{},{}\n", r.f_opt ? exact(*r.f_opt + *report.target_precision) : "",
+                            exact(*report.target_precision), r.reached_target, optional(r.mean_evaluations_to_target));
+        else
+            text += has_target ? fmt::format(",{},{},{}\n", exact(*report.target), r.reached_target,
+                                             optional(r.mean_evaluations_to_target))
+                               : "\n";
     }
     return text;
 }

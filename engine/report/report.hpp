@@ -21,10 +21,15 @@ struct ReportRow {
     double min = 0, mean = 0, std = 0, median = 0, max = 0;  // std: sample (n - 1); +inf if a value is
     double mean_wall_ms = 0, mean_evaluations = 0;
     std::optional<double> optimum;   // grid problems: the exact optimum, and then
-    std::optional<double> mean_gap;  // the mean of (value - optimum) / |optimum| (0 at the optimum)
-    std::optional<double> success;   // the share of runs at the optimum
-    bool best = false;               // the lowest median of the problem (ties: the lowest mean)
-    std::optional<double> p_holm;    // against the best; empty for the best itself
+    std::optional<double> mean_gap;  // the mean of (value - optimum) / |optimum| (0 at the optimum);
+                                     // precision rows: the mean precision f - f_opt
+    std::optional<double> success;   // the share of runs at the optimum (precision rows: f - f_opt <= 1e-8)
+    // Continuous problems with a known optimum f_opt: min ... max are precisions f - f_opt
+    // (`precision`), unless the report is raw (ReportOptions::raw).
+    std::optional<double> f_opt;
+    bool precision = false;
+    bool best = false;             // the lowest median of the problem (ties: the lowest mean)
+    std::optional<double> p_holm;  // against the best; empty for the best itself
     // With a campaign target: the runs whose best reached it, and their mean evaluations to do so.
     std::size_t reached_target = 0;
     std::optional<double> mean_evaluations_to_target;
@@ -37,9 +42,19 @@ struct FriedmanSummary {
     stats::FriedmanTest test;  // average_ranks in the order of `algorithms`
 };
 
+/// How a report reads the runs.
+struct ReportOptions {
+    bool raw = false;  // the values f as run, also where f_opt is known (default: precisions f - f_opt)
+};
+
+/// COCO's final target precision: a run whose f - f_opt is at most this has solved the problem.
+inline constexpr double solved_precision = 1e-8;
+
 struct ReportData {
     std::string campaign;
     std::optional<double> target;
+    std::optional<double> target_precision;  // [budget] precision: the target is f_opt + it per problem
+    bool raw = false;
     std::vector<ReportRow> rows;              // sorted by problem, then algorithm
     std::optional<FriedmanSummary> friedman;  // with two algorithms on two problems or more
     // With the campaign's target precisions: ERT per function, dimension and algorithm, and the
@@ -52,9 +67,9 @@ struct ReportData {
 };
 
 /// The report of the runs of `store` (no rows when it holds none).
-ReportData make_report(const CampaignStore& store);
+ReportData make_report(const CampaignStore& store, const ReportOptions& options = {});
 /// make_report(read_store(path)); InputError when the store holds no runs yet.
-ReportData load_report(const std::string& path);
+ReportData load_report(const std::string& path, const ReportOptions& options = {});
 
 std::string render_markdown(const ReportData& report);
 /// A header line, then one line per row; each number in the shortest form that reads back as

@@ -288,6 +288,7 @@ CampaignStore read_store(const std::string& path) {
     const auto campaign_columns = columns("campaign", {"id", "name"});
     const bool has_target = campaign_columns.count("target") > 0;
     const bool has_precisions = campaign_columns.count("precisions") > 0;
+    const bool has_target_precision = campaign_columns.count("target_precision") > 0;
     const auto run_columns = columns("runs", {"problem", "algorithm", "seed", "best", "evaluations", "wall_ms",
                                               "optimum", "history", "history_evaluations"});
     const bool has_hits = run_columns.count("target_hits") > 0;
@@ -313,13 +314,17 @@ CampaignStore read_store(const std::string& path) {
         }
     }
     {
-        Query q(db, fmt::format("SELECT name, {}, {} FROM campaign WHERE id = 1", has_target ? "target" : "NULL",
-                                has_precisions ? "precisions" : "NULL")
-                        .c_str());
+        Query q(db,
+                fmt::format("SELECT name, {}, {}, {} FROM campaign WHERE id = 1", has_target ? "target" : "NULL",
+                            has_precisions ? "precisions" : "NULL", has_target_precision ? "target_precision" : "NULL")
+                    .c_str());
         q.where = "the campaign row";
         if (!q.next()) throw DamagedStore(path, "table campaign has no row with id 1");
         store.name = q.text(0, "name");
         store.target = q.optional_number(1, "target");
+        store.target_precision = q.optional_number(3, "target_precision");
+        if (store.target_precision && !(*store.target_precision > 0))
+            q.fail("target_precision", fmt::format("expected a number > 0, got {}", *store.target_precision));
         if (!q.is_null(2)) {
             // A JSON list of finite numbers, each at least 0 (null would read as +inf).
             auto precisions = q.list<double>(2, "precisions");

@@ -51,7 +51,8 @@ struct StoredProblem {
 
 struct CampaignStore {
     std::string name;
-    std::optional<double> target;  // [budget] target; stores from before targets have none
+    std::optional<double> target;            // [budget] target; stores from before targets have none
+    std::optional<double> target_precision;  // [budget] precision: f_opt + it, per problem
     // The target precisions (f - f_opt) the runs' target_hits refer to; empty optional for a
     // campaign that records none (NULL, or a store from before them).
     std::optional<std::vector<double>> precisions;

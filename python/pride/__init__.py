@@ -84,7 +84,7 @@ class Result:
 
 
 def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, target=None, wall_ms=None,
-             seed=0, instance=None, callback=None, vectorized=False, **params):
+             seed=1, instance=None, callback=None, vectorized=False, **params):
     """One run of ``algo`` on ``problem``: a registered problem's name (with ``dim``, and
     ``instance``) or a Python function with ``bounds=(lower, upper)``, called as ``f(x)`` with x
     of shape (dim,), or, with ``vectorized=True``, as ``f(X)`` with X of shape (n, dim) returning n
@@ -105,7 +105,7 @@ class Optimizer:
     ``minimize``. The run is the one ``minimize`` makes with the same function and seed, bit for
     bit. Closing (or dropping) an optimizer mid-run stops its run."""
 
-    def __init__(self, algo, *, bounds, dim=None, evals=None, iters=None, target=None, wall_ms=None, seed=0,
+    def __init__(self, algo, *, bounds, dim=None, evals=None, iters=None, target=None, wall_ms=None, seed=1,
                  **params):
         self._run = _pride.Optimizer(_str("algo", algo), bounds, _int("dim", dim), _int("evals", evals),
                                      _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
@@ -143,7 +143,7 @@ class Optimizer:
 
 def plan(grid, start, goal, *, algo="pso", objective="cells", step_cost=None, encoding="", connector="repair",
          init="", waypoints=3, weights=None, lambda_=None, corner_cutting=False, oracle=False, evals=None, iters=None,
-         seed=0, callback=None, **params):
+         seed=1, callback=None, **params):
     """A path on ``grid`` (a ``pride.Grid``) from ``start`` to ``goal`` ((x, y), x the column from
     the left, y the row from the top) by any grid algorithm, as ``pride path`` plans it: the
     result's ``path`` is an (n, 2) array of (x, y), with ``metrics`` and ``objective_value``;
@@ -233,10 +233,14 @@ class Campaign:
                        algorithms=["pso", {"id": "ga", "algo": "ga", "pop": 40}])
 
     or from a TOML file (``pride bench``'s format) with ``Campaign.load(path)``. Python functions
-    are called with the GIL held, one at a time, whatever the number of jobs."""
+    are called with the GIL held, one at a time, whatever the number of jobs. The budget: ``evals``,
+    or ``evals_per_dim`` (times each problem's dimension, as COCO budgets), and/or ``iters``; a
+    report target: ``target`` (an absolute value) or ``precision`` (f_opt + precision per problem)."""
 
-    def __init__(self, name, *, seeds, problems, algorithms, evals=None, iters=None, target=None):
-        self._c = _pride.campaign_from_data(name, seeds, evals, iters, target, list(problems), list(algorithms))
+    def __init__(self, name, *, seeds, problems, algorithms, evals=None, evals_per_dim=None, iters=None, target=None,
+                 precision=None):
+        self._c = _pride.campaign_from_data(name, seeds, evals, evals_per_dim, iters, target, precision,
+                                            list(problems), list(algorithms))
 
     @classmethod
     def load(cls, path):
@@ -268,11 +272,13 @@ def read_store(path, *, dataframe=None):
     return store["runs"]
 
 
-def report(path, *, dataframe=None):
+def report(path, *, raw=False, dataframe=None):
     """The report of a campaign store (``pride report``): ``rows`` (per problem and algorithm:
-    min, mean, std, median, max, best, p_holm, ...) as a DataFrame when pandas is present,
-    ``friedman`` and the rendered ``markdown`` and ``csv``, as a dict."""
-    r = _pride.report(str(path))
+    min, mean, std, median, max, best, p_holm, f_opt, precision, ...) as a DataFrame when pandas
+    is present, ``friedman`` and the rendered ``markdown`` and ``csv``, as a dict. Where a
+    problem's optimum f_opt is known, min to max are precisions f - f_opt (``precision`` True),
+    unless ``raw=True`` (``pride report --raw``)."""
+    r = _pride.report(str(path), bool(raw))
     pd = _pandas()
     if dataframe or (dataframe is None and pd is not None):
         if pd is None:

@@ -127,18 +127,28 @@ engine::CampaignAlgorithm algorithm(const py::handle& item, std::size_t index) {
 }
 
 std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seeds, std::optional<std::int64_t> evals,
-                                      std::optional<std::int64_t> iters, std::optional<double> target,
+                                      std::optional<std::int64_t> evals_per_dim, std::optional<std::int64_t> iters,
+                                      std::optional<double> target, std::optional<double> precision,
                                       const py::list& problems, const py::list& algorithms) {
     auto c = std::make_shared<PyCampaign>();
     auto& k = c->campaign;
     require(!name.empty(), "name", "a campaign needs a name");
     require(seeds >= 1 && seeds <= 1'000'000, "seeds", "must be in [1, 1000000], got " + std::to_string(seeds));
-    require(evals || iters, "campaign", "give evals or iters (the budget of every run)");
+    require(evals || evals_per_dim || iters, "campaign",
+            "give evals, evals_per_dim or iters (the budget of every run)");
+    require(!(evals && evals_per_dim), "evals_per_dim", "give evals or evals_per_dim, not both");
+    require(!evals_per_dim || (*evals_per_dim >= 1 && *evals_per_dim <= engine::max_budget), "evals_per_dim",
+            "must be in [1, 1000000000000000], got " + std::to_string(evals_per_dim.value_or(0)));
+    require(!(target && precision), "precision", "give target (an absolute value) or precision, not both");
+    require(!precision || (std::isfinite(*precision) && *precision > 0), "precision",
+            "must be a finite number > 0 (a target f_opt + precision)");
     k.name = name;
     k.seeds = seeds;
     k.budget.evaluations = evals;
+    k.evaluations_per_dim = evals_per_dim;
     k.budget.iterations = iters;
     k.target = target;
+    k.target_precision = precision;
     require(py::len(problems) > 0, "problems", "a campaign needs at least one problem");
     require(py::len(algorithms) > 0, "algorithms", "a campaign needs at least one algorithm");
     std::size_t i = 0;
@@ -206,11 +216,11 @@ py::dict read_store(const std::string& path) {
                     py::arg("problems") = problems, py::arg("runs") = runs);
 }
 
-py::dict report_data(const std::string& path) {
+py::dict report_data(const std::string& path, bool raw) {
     report::ReportData r;
     {
         py::gil_scoped_release release;
-        r = report::load_report(path);
+        r = report::load_report(path, report::ReportOptions{raw});
     }
     py::list rows;
     for (const auto& x : r.rows)
@@ -222,7 +232,8 @@ py::dict report_data(const std::string& path) {
                      py::arg("mean_gap") = optional_number(x.mean_gap), py::arg("success") = optional_number(x.success),
                      py::arg("best") = x.best, py::arg("p_holm") = optional_number(x.p_holm),
                      py::arg("reached_target") = x.reached_target,
-                     py::arg("mean_evaluations_to_target") = optional_number(x.mean_evaluations_to_target)));
+                     py::arg("mean_evaluations_to_target") = optional_number(x.mean_evaluations_to_target),
+                     py::arg("f_opt") = optional_number(x.f_opt), py::arg("precision") = x.precision));
     py::object friedman = py::none();
     if (r.friedman)
         friedman =
@@ -257,12 +268,13 @@ void bind_campaign(py::module_& m) {
             for (const auto& a : c.campaign.algorithms) ids.push_back(a.id);
             return ids;
         });
-    m.def("campaign_from_data", &from_data, py::arg("name"), py::arg("seeds"), py::arg("evals"), py::arg("iters"),
-          py::arg("target"), py::arg("problems"), py::arg("algorithms"));
+    m.def("campaign_from_data", &from_data, py::arg("name"), py::arg("seeds"), py::arg("evals"),
+          py::arg("evals_per_dim"), py::arg("iters"), py::arg("target"), py::arg("precision"), py::arg("problems"),
+          py::arg("algorithms"));
     m.def("campaign_from_file", &from_file, py::arg("path"));
     m.def("campaign_run", &run, py::arg("campaign"), py::arg("store"), py::arg("jobs"));
     m.def("read_store", &read_store, py::arg("path"));
-    m.def("report", &report_data, py::arg("path"));
+    m.def("report", &report_data, py::arg("path"), py::arg("raw") = false);
 }
 
 }  // namespace pride::python

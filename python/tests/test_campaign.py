@@ -95,6 +95,31 @@ def test_campaign_with_a_path_objective_counts_every_call(tmp_path):
                        problems=[{"id": "g", "grid": g, "start": (0, 5), "goal": (5, 0), "objective": 3}])
 
 
+def test_campaign_budget_per_dimension_and_precision_target(tmp_path):
+    c = pride.Campaign("d", seeds=2, evals_per_dim=50, precision=1e-2, algorithms=["pso"],
+                       problems=[{"id": "s2", "problem": "sphere", "dim": 2},
+                                 {"id": "f1", "problem": "bbob-f1", "dim": 4, "instance": 1}])
+    c.run(tmp_path / "d.sqlite")
+    runs = pride.read_store(tmp_path / "d.sqlite", dataframe=False)
+    assert {r["problem"]: r["evaluations"] for r in runs} == {"s2": 100, "f1": 200}
+    rows = pride.report(tmp_path / "d.sqlite", dataframe=False)["rows"]
+    f1 = next(r for r in rows if r["problem"] == "f1")
+    assert f1["f_opt"] == 79.48 and f1["precision"]
+    best = [r["best"] for r in runs if r["problem"] == "f1"]
+    assert f1["min"] == min(best) - 79.48
+    raw = next(r for r in pride.report(tmp_path / "d.sqlite", raw=True, dataframe=False)["rows"] if r["problem"] == "f1")
+    assert raw["min"] == min(best) and not raw["precision"]
+    with pytest.raises(ValueError, match="^evals_per_dim: give evals or evals_per_dim, not both$"):
+        pride.Campaign("d", seeds=1, evals=10, evals_per_dim=5, algorithms=["pso"],
+                       problems=[{"id": "s", "problem": "sphere", "dim": 2}])
+    with pytest.raises(ValueError, match="^precision: give target"):
+        pride.Campaign("d", seeds=1, evals=10, target=1, precision=1e-8, algorithms=["pso"],
+                       problems=[{"id": "s", "problem": "sphere", "dim": 2}])
+    with pytest.raises(ValueError, match="^precision: must be a finite number > 0"):
+        pride.Campaign("d", seeds=1, evals=10, precision=0, algorithms=["pso"],
+                       problems=[{"id": "s", "problem": "sphere", "dim": 2}])
+
+
 def test_campaign_errors(tmp_path):
     with pytest.raises(ValueError, match="unknown algorithm"):
         pride.Campaign("x", seeds=1, evals=10, problems=[{"id": "s", "problem": "sphere", "dim": 2}],
