@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <deque>
 #include <exception>
+#include <filesystem>
 #include <list>
 #include <map>
 #include <mutex>
@@ -59,6 +60,44 @@ std::string describe(const Campaign& c) {
     }
     return s;
 }
+
+}  // namespace
+
+std::string budget_definition(const Campaign& c) {
+    std::string s;
+    if (c.budget.evaluations) s += fmt::format("evaluations = {}; ", *c.budget.evaluations);
+    if (c.evaluations_per_dim) s += fmt::format("evaluations_per_dim = {}; ", *c.evaluations_per_dim);
+    if (c.budget.iterations) s += fmt::format("iterations = {}; ", *c.budget.iterations);
+    return s.empty() ? s : s.substr(0, s.size() - 2);
+}
+
+std::string problem_definition(const CampaignProblem& p) {
+    if (const auto* f = std::get_if<ContinuousSpec>(&p.spec))
+        return fmt::format("{} dim {} instance {}", f->function, f->dim,
+                           p.problem ? p.problem->instance() : f->instance.value_or(0));
+    if (const auto* g = std::get_if<GridSpec>(&p.spec)) {
+        const std::string map = p.map_file.empty() ? std::string("(a map given in code)")
+                                                   : std::filesystem::absolute(p.map_file).string();
+        std::string s = fmt::format(
+            "grid {} inflate {} start ({},{}) goal ({},{}) objective {} encoding {} connector {} waypoints {} init {} "
+            "corner_cutting {} weights {}",
+            json_string(map), p.inflate, g->start.x, g->start.y, g->goal.x, g->goal.y, g->objective,
+            g->encoding.empty() ? "(native)" : g->encoding, g->connector, g->waypoints,
+            g->init.empty() ? "(default)" : g->init, g->corner_cutting, json_array(g->weights));
+        if (g->lambda) s += " lambda " + json_number(*g->lambda);
+        return s;
+    }
+    return "function (a callback: known by its id alone)";
+}
+
+std::string algorithm_definition(const CampaignAlgorithm& a) {
+    std::string s = a.spec.name;
+    for (const auto& [k, v] : a.spec.params.values()) s += " " + k + "=" + json_number(v);
+    for (const auto& [k, v] : a.spec.params.names()) s += " " + k + "=" + json_string(v);
+    return s;
+}
+
+namespace {
 
 /// The budget of one problem's runs: the campaign's, with its evaluations per dimension resolved.
 Budget budget_of(const Budget& budget, const CampaignProblem& p) {
@@ -134,11 +173,15 @@ class Ledger {
         : tasks_(all_tasks(c)), budget_(c.budget), batch_(std::max<std::size_t>(batch, 1)) {
         store_.emplace(path);
         store_->claim(c);
+        // The campaign's runs the store holds (a grown store may hold runs of other seeds,
+        // problems or algorithms too: they stay, and are not this campaign's).
         const auto done = store_->done();
-        already_ = done.size();
         for (std::size_t i = 0; i < tasks_.size(); ++i) {
             RunKey key{tasks_[i].problem->id, tasks_[i].algorithm->id, tasks_[i].seed};
-            if (done.count(key)) continue;
+            if (done.count(key)) {
+                ++already_;
+                continue;
+            }
             todo_.push_back(i);
             keys_.push_back(std::move(key));
         }

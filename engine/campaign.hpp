@@ -62,6 +62,14 @@ struct Campaign {
     std::vector<CampaignAlgorithm> algorithms;
 };
 
+/// What identifies a campaign's runs beside their seeds (a campaign grows by seeds, problems and
+/// algorithms; these must not change under a stored id): its budget, each problem's definition
+/// (function, dimension and instance, or map, ends and grid settings) and each algorithm's
+/// (registered name and parameters), as canonical one-line texts.
+std::string budget_definition(const Campaign& c);
+std::string problem_definition(const CampaignProblem& p);
+std::string algorithm_definition(const CampaignAlgorithm& a);
+
 /// Checks the campaign and builds every problem once (each map read once): a missing or duplicate
 /// id, a bad problem, an unknown algorithm, a bad parameter, an algorithm that cannot run on a
 /// problem, or a run that would not fit in memory is an InputError naming the file and line (or
@@ -92,7 +100,7 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
 
 struct BenchSummary {
     std::size_t stored = 0;   // runs stored by this call
-    std::size_t already = 0;  // runs the store held before
+    std::size_t already = 0;  // runs of the campaign the store held before
     std::size_t total = 0;    // runs of the campaign
     std::size_t others = 0;   // runs left to another pride bench that is running them on the same store
     int ranks = 1;            // MPI ranks (1: threads only; 0: an MPI rank other than 0, which reports nothing)

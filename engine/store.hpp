@@ -16,7 +16,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <iterator>
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -145,6 +148,12 @@ class Store {
             // Columns added with the suites (issue 10); a store from before gains them, empty.
             add_column("campaign", "precisions", "TEXT");
             add_column("campaign", "target_precision", "REAL");  // [budget] precision (issue 24)
+            // What identifies the runs (issue 24: a campaign grows by seeds, problems and
+            // algorithms): the budget, and each problem's and algorithm's definition. NULL in
+            // stores from before, which then take only their own campaign file.
+            add_column("campaign", "budget", "TEXT");
+            add_column("problems", "definition", "TEXT");
+            add_column("algorithms", "definition", "TEXT");
             add_column("problems", "function", "TEXT");
             add_column("problems", "instance", "INTEGER NOT NULL DEFAULT 0");
             add_column("problems", "f_opt", "REAL");
@@ -201,9 +210,11 @@ class Store {
                     exec("COMMIT");
                     return;
                 }
-                if (runs > 0 || live_claims() > 0)
-                    throw InputError(path_ + ": holds the results of another campaign ('" + name +
-                                     "', or an edited version of this file); choose another store file");
+                if (runs > 0 || live_claims() > 0) {
+                    grow(c, name);
+                    exec("COMMIT");
+                    return;
+                }
                 exec("DELETE FROM campaign; DELETE FROM problems; DELETE FROM algorithms; DELETE FROM claims");
             } else {
                 sqlite3_finalize(s);
@@ -346,9 +357,73 @@ class Store {
         return n;
     }
 
+    /// The stored definitions of one table's ids (NULL: a store from before definitions).
+    std::map<std::string, std::optional<std::string>> definitions(const char* table) {
+        std::map<std::string, std::optional<std::string>> out;
+        sqlite3_stmt* s = prepare((std::string("SELECT id, definition FROM ") + table).c_str());
+        while (sqlite3_step(s) == SQLITE_ROW)
+            out[reinterpret_cast<const char*>(sqlite3_column_text(s, 0))] =
+                sqlite3_column_type(s, 1) == SQLITE_NULL
+                    ? std::nullopt
+                    : std::optional<std::string>(reinterpret_cast<const char*>(sqlite3_column_text(s, 1)));
+        sqlite3_finalize(s);
+        return out;
+    }
+
+    /// A store that holds runs takes a campaign that only adds to it: the same name and budget,
+    /// every stored problem and algorithm id defined as before; new seeds, problems and algorithms
+    /// are new runs. The campaign's text and report target become the new file's; the problems
+    /// and algorithms it adds are recorded. Anything else is refused, naming what differs.
+    void grow(const Campaign& c, const std::string& stored_name) {
+        const std::string refuse = "; a campaign grows by seeds, problems and algorithms only (choose another store file)";
+        if (stored_name != c.name)
+            throw InputError(path_ + ": holds the results of another campaign ('" + stored_name + "', not '" + c.name +
+                             "'); choose another store file");
+        sqlite3_stmt* s = prepare("SELECT budget FROM campaign WHERE id = 1");
+        std::optional<std::string> budget;
+        if (sqlite3_step(s) == SQLITE_ROW && sqlite3_column_type(s, 0) != SQLITE_NULL)
+            budget = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
+        sqlite3_finalize(s);
+        const auto problems = definitions("problems"), algorithms = definitions("algorithms");
+        const bool old = !budget || std::any_of(problems.begin(), problems.end(), [](const auto& p) { return !p.second; }) ||
+                         std::any_of(algorithms.begin(), algorithms.end(), [](const auto& a) { return !a.second; });
+        if (old)
+            throw InputError(path_ + ": holds the results of another campaign ('" + stored_name +
+                             "', or an edited version of this file; the store was written before campaigns could "
+                             "grow); choose another store file");
+        if (*budget != budget_definition(c))
+            throw InputError(path_ + ": its runs have the budget '" + *budget + "', this campaign '" +
+                             budget_definition(c) + "'" + refuse);
+        for (const auto& p : c.problems)
+            if (const auto it = problems.find(p.id); it != problems.end() && *it->second != problem_definition(p))
+                throw InputError(path_ + ": problem '" + p.id + "' is stored as " + *it->second + ", here it is " +
+                                 problem_definition(p) + refuse);
+        for (const auto& a : c.algorithms)
+            if (const auto it = algorithms.find(a.id); it != algorithms.end() && *it->second != algorithm_definition(a))
+                throw InputError(path_ + ": algorithm '" + a.id + "' is stored as " + *it->second + ", here it is " +
+                                 algorithm_definition(a) + refuse);
+        s = prepare("UPDATE campaign SET text = ?, target = ?, target_precision = ? WHERE id = 1");
+        sqlite3_bind_text(s, 1, c.text.c_str(), -1, SQLITE_TRANSIENT);
+        bind_optional(s, 2, c.target);
+        bind_optional(s, 3, c.target_precision);
+        step_done(s, "cannot write the store");
+        for (const auto& a : c.algorithms)
+            if (!algorithms.count(a.id)) record_algorithm(a);
+        for (const auto& p : c.problems)
+            if (!problems.count(p.id)) record_problem(p);
+    }
+
+    static void bind_optional(sqlite3_stmt* s, int i, const std::optional<double>& v) {
+        if (v)
+            sqlite3_bind_double(s, i, *v);
+        else
+            sqlite3_bind_null(s, i);
+    }
+
     void record(const Campaign& c) {
         sqlite3_stmt* s = prepare(
-            "INSERT INTO campaign (id, name, text, target, precisions, target_precision) VALUES (1, ?, ?, ?, ?, ?)");
+            "INSERT INTO campaign (id, name, text, target, precisions, target_precision, budget) VALUES (1, ?, ?, ?, ?, "
+            "?, ?)");
         sqlite3_bind_text(s, 1, c.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, c.text.c_str(), -1, SQLITE_TRANSIENT);
         if (c.target)
@@ -357,24 +432,31 @@ class Store {
             sqlite3_bind_null(s, 3);
         const std::string precisions = json_array(coco_precisions());
         sqlite3_bind_text(s, 4, precisions.c_str(), -1, SQLITE_TRANSIENT);
-        if (c.target_precision)
-            sqlite3_bind_double(s, 5, *c.target_precision);
-        else
-            sqlite3_bind_null(s, 5);
+        bind_optional(s, 5, c.target_precision);
+        const std::string budget = budget_definition(c);
+        sqlite3_bind_text(s, 6, budget.c_str(), -1, SQLITE_TRANSIENT);
         step_done(s, "cannot write the store");
-        for (const auto& a : c.algorithms) {
-            s = prepare("INSERT INTO algorithms (id, type, evaluates) VALUES (?, ?, ?)");
-            const AlgorithmEntry* entry = algorithms().find(a.spec.name);
-            sqlite3_bind_text(s, 1, a.id.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_text(s, 2, a.spec.name.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_int(s, 3, !entry || entry->evaluates() ? 1 : 0);
-            step_done(s, "cannot write the store");
-        }
-        // The problems as resolved here (map paths made absolute), for reports and plots.
-        for (const auto& p : c.problems) {
-            s = prepare(
-                "INSERT INTO problems (id, type, dim, map, start, goal, function, instance, f_opt, suite, fid) "
-                "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        for (const auto& a : c.algorithms) record_algorithm(a);
+        for (const auto& p : c.problems) record_problem(p);
+    }
+
+    void record_algorithm(const CampaignAlgorithm& a) {
+        sqlite3_stmt* s = prepare("INSERT INTO algorithms (id, type, evaluates, definition) VALUES (?, ?, ?, ?)");
+        const AlgorithmEntry* entry = algorithms().find(a.spec.name);
+        const std::string definition = algorithm_definition(a);
+        sqlite3_bind_text(s, 1, a.id.c_str(), -1, SQLITE_TRANSIENT);
+        sqlite3_bind_text(s, 2, a.spec.name.c_str(), -1, SQLITE_TRANSIENT);
+        sqlite3_bind_int(s, 3, !entry || entry->evaluates() ? 1 : 0);
+        sqlite3_bind_text(s, 4, definition.c_str(), -1, SQLITE_TRANSIENT);
+        step_done(s, "cannot write the store");
+    }
+
+    /// A problem as resolved here (map paths made absolute), for reports and plots.
+    void record_problem(const CampaignProblem& p) {
+        {
+            sqlite3_stmt* s = prepare(
+                "INSERT INTO problems (id, type, dim, map, start, goal, function, instance, f_opt, suite, fid, "
+                "definition) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
             const std::string map = p.map_file.empty() ? "" : std::filesystem::absolute(p.map_file).string();
             const auto* g = std::get_if<GridSpec>(&p.spec);
             const auto* f = std::get_if<ContinuousSpec>(&p.spec);
@@ -402,6 +484,8 @@ class Store {
                 sqlite3_bind_text(s, 10, suite.c_str(), -1, SQLITE_TRANSIENT);
                 sqlite3_bind_int64(s, 11, item->entry.number);
             }
+            const std::string definition = problem_definition(p);
+            sqlite3_bind_text(s, 12, definition.c_str(), -1, SQLITE_TRANSIENT);
             step_done(s, "cannot write the store");
         }
     }

@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <tuple>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -873,18 +874,23 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
     const auto before = runs_of(store, true);
     const std::string bytes = slurp(store);
 
-    const std::vector<std::pair<std::string, std::string>> others{
-        {"one byte changed in a comment", replace(kSmallContinuous, "# a small", "# A small")},
-        {"one byte added at the end", kSmallContinuous + "\n"},
-        {"another budget", replace(kSmallContinuous, "evaluations = 2000", "evaluations = 2001")},
-        {"another campaign", kContinuous},
+    // What changes a stored run's definition, or the campaign, is refused, naming it.
+    const std::vector<std::tuple<std::string, std::string, std::string>> others{
+        {"another budget", replace(kSmallContinuous, "evaluations = 2000", "evaluations = 2001"),
+         "the budget 'evaluations = 2000', this campaign 'evaluations = 2001'"},
+        {"a problem redefined", replace(kSmallContinuous, "dim = 4", "dim = 5"),
+         "problem 'sphere-4' is stored as sphere dim 4 instance 0, here it is sphere dim 5 instance 0"},
+        {"an algorithm redefined", replace(kSmallContinuous, "pop = 12\n[[algorithm]]\nid = \"ga\"",
+                                           "pop = 13\n[[algorithm]]\nid = \"ga\""),
+         "algorithm 'pso' is stored as pso pop=12, here it is pso pop=13"},
+        {"another campaign", kContinuous, "another campaign"},
     };
-    for (const auto& [what, text] : others) {
+    for (const auto& [what, text, words] : others) {
         INFO(what);
         const std::string other = dir.write("other.toml", text);
         const auto entries = dir.entries();
         const Outcome r = run({"bench", other, "--jobs", "2", "--out", store});
-        check_input_error(r, {store});
+        check_input_error(r, {store, words});
         CHECK(slurp(store) == bytes);
         CHECK(dir.entries() == entries);  // no journal left behind either
         check_same_runs(runs_of(store, true), before);
@@ -898,6 +904,36 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
     // The campaign itself still finds its store intact: nothing to do.
     check_summary(bench_ok({"bench", config, "--jobs", "1", "--out", store}), 0, kSmallContinuousRuns,
                   kSmallContinuousRuns, store);
+}
+
+TEST_CASE("bench: a campaign grows by seeds, algorithms and problems; only the new runs run", "[cli][bench]") {
+    const TempDir dir;
+    const std::string store = dir.file("c.sqlite");
+    const std::string base = "name = \"grow\"\nseeds = 2\n[budget]\nevaluations = 300\n"
+                             "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 3\n"
+                             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";
+    check_summary(bench_ok({"bench", dir.write("a.toml", base), "--jobs", "1", "--out", store}), 2, 0, 2, store);
+    const auto before = runs_of(store, true);  // wall times included: rows never rewritten
+    // A comment, three seeds, one more algorithm and one more problem: 3 x 2 x 2 runs, 2 stored.
+    const std::string grown = "# grown\n" + replace(base, "seeds = 2", "seeds = 3") +
+                              "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n"
+                              "[[problem]]\nid = \"r\"\ntype = \"rastrigin\"\ndim = 2\ninstance = 1\n";
+    check_summary(bench_ok({"bench", dir.write("b.toml", grown), "--jobs", "2", "--out", store}), 10, 2, 12, store);
+    const auto after = runs_of(store, true);
+    REQUIRE(after.size() == 12);
+    for (const auto& row : before) CHECK(std::find(after.begin(), after.end(), row) != after.end());
+    // The grown store equals a fresh run of the grown campaign (bar wall times).
+    const std::string fresh = dir.file("fresh.sqlite");
+    bench_ok({"bench", dir.file("b.toml"), "--jobs", "1", "--out", fresh});
+    check_same_runs(runs_of(store), runs_of(fresh));
+    // Back to the first file: nothing to run, nothing lost.
+    check_summary(bench_ok({"bench", dir.file("a.toml"), "--jobs", "1", "--out", store}), 0, 2, 2, store);
+    CHECK(runs_of(store).size() == 12);
+    // The problems and algorithms the growth added are recorded with their definitions.
+    Db db(store);
+    const auto defined = db.query("SELECT id, definition FROM algorithms ORDER BY id");
+    REQUIRE(defined);
+    CHECK(*defined == std::vector<std::vector<std::string>>{{"t:ga", "t:ga pop=10"}, {"t:pso", "t:pso pop=10"}});
 }
 
 TEST_CASE("bench: grid options that only a run would reject are refused up front", "[cli][bench][errors]") {
@@ -1078,8 +1114,8 @@ TEST_CASE("bench: a store of a campaign that stored no run takes the corrected c
         dir.write("d.toml", replace(kSmallContinuous, "evaluations = 2000", "evaluations = 2001"));
     check_summary(bench_ok({"bench", corrected, "--jobs", "1", "--out", store}), kSmallContinuousRuns, 0,
                   kSmallContinuousRuns, store);
-    // Once it holds runs, another campaign is refused again.
-    check_input_error(run({"bench", first, "--jobs", "1", "--out", store}), {store, "another campaign"});
+    // Once it holds runs, another budget is refused again.
+    check_input_error(run({"bench", first, "--jobs", "1", "--out", store}), {store, "the budget"});
 }
 
 TEST_CASE("bench: a folder or an endless stream as the campaign file is one clear line", "[cli][bench][faults]") {
