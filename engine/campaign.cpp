@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <condition_variable>
 #include <cstdlib>
@@ -15,6 +16,7 @@
 #include <set>
 #include <thread>
 
+#include "engine/file_name.hpp"
 #include "engine/json.hpp"
 #include "engine/store.hpp"
 #include "framework/error.hpp"
@@ -694,6 +696,21 @@ void prepare(Campaign& c) {
     for (const auto& a : c.algorithms)
         if (!ids.insert(a.id).second)
             throw InputError(where_of(c, a.line, "algorithm '" + a.id + "'"), "duplicate algorithm id '" + a.id + "'");
+    // Ids that would name the same file (figures, exports), also on a file system that ignores case.
+    const auto same_file = [&](const auto& items, const char* kind) {
+        std::map<std::string, std::string> seen;  // lower-case file name -> id
+        for (const auto& item : items) {
+            std::string name = file_name(item.id);
+            for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+            const auto [it, fresh] = seen.emplace(name, item.id);
+            if (!fresh)
+                throw InputError(where_of(c, item.line, std::string(kind) + " '" + item.id + "'"),
+                                 fmt::format("{} ids '{}' and '{}' would name the same file ('{}'); rename one", kind,
+                                             it->second, item.id, file_name(item.id)));
+        }
+    };
+    same_file(c.problems, "problem");
+    same_file(c.algorithms, "algorithm");
 
     // Each map is read once, whatever number of problems use it.
     std::map<std::pair<std::string, std::int64_t>, std::shared_ptr<const grid::GridMap>> maps;

@@ -14,7 +14,6 @@ Usage: plot_campaign.py STORE DIR [--raw]
 """
 import json
 import os
-import re
 import sqlite3
 import sys
 import warnings
@@ -39,7 +38,10 @@ def read_map(path):
 
 
 def safe(name):
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name)
+    """An id as a file name, as engine/campaign.hpp's file_name(): per character, and a leading '.'."""
+    keep = set(b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789.-")
+    s = "".join(chr(b) if b in keep else "_" for b in (name or "_").encode())  # per byte, as C++
+    return "_" + s[1:] if s.startswith(".") else s
 
 
 def save(fig, folder, stem):

@@ -906,7 +906,7 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
                   kSmallContinuousRuns, store);
 }
 
-TEST_CASE("bench: a campaign grows by seeds, algorithms and problems; only the new runs run", "[cli][bench]") {
+TEST_CASE("bench: a campaign grows by seeds, algorithms and problems, and only the new runs run", "[cli][bench]") {
     const TempDir dir;
     const std::string store = dir.file("c.sqlite");
     const std::string base = "name = \"grow\"\nseeds = 2\n[budget]\nevaluations = 300\n"

@@ -156,7 +156,8 @@ TEST_CASE("path: pictures onto devices are written directly, never renamed over 
 
 TEST_CASE("export: algorithm ids that are not file names get safe folders of their own", "[export][faults]") {
     const TempDir dir("pride-ids");
-    const std::vector<std::string> ids{"..", "a/b", "a_b", ".hidden", "x y"};
+    // (Ids with one file name, such as a/b and a_b, are refused by the campaign: test_report_precision.cpp.)
+    const std::vector<std::string> ids{"..", "a/b", "b_c", ".hidden", "x y"};
     const std::string store = small_store(dir, ids);
     fs::create_directories(dir.path() / "out");
     const std::string out = dir.file("out/ioh");
@@ -179,7 +180,7 @@ TEST_CASE("export: algorithm ids that are not file names get safe folders of the
         folders.push_back(e.path().filename().string());
     }
     CHECK(folders.size() == ids.size());                                             // one each, none shared
-    CHECK(std::set<std::string>(folders.begin(), folders.end()).count("a_b") == 1);  // a safe id keeps its name
+    CHECK(std::set<std::string>(folders.begin(), folders.end()).count("b_c") == 1);  // a safe id keeps its name
     for (const auto& f : folders) {
         INFO(f);
         CHECK(f.front() != '.');

@@ -266,3 +266,22 @@ TEST_CASE("report: ERT pools a function's seeded instances, never its instance 0
     CHECK(runs == std::map<std::string, std::string>{
                       {"rastrigin", "2"}, {"rastrigin (instances k >= 1)", "4"}, {"bbob-f3", "4"}});
 }
+
+TEST_CASE("campaign: ids that would name the same file are refused when the campaign is read", "[campaign]") {
+    const pride::test::TempDir tmp("pride-file-names");
+    auto refused = [&](const std::string& ids) {
+        const std::string file = tmp.write("c.toml", "name = \"f\"\nseeds = 1\n[budget]\nevaluations = 10\n" + ids);
+        const auto r = pride::test::run_pride("bench '" + file + "' --out '" + tmp.file("c.sqlite") + "'");
+        CHECK(r.status == 2);
+        CHECK(!fs::exists(tmp.file("c.sqlite")));
+        return r.err;
+    };
+    const std::string pso = "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n";
+    CHECK_THAT(refused("[[problem]]\nid = \"x/y\"\ntype = \"sphere\"\ndim = 2\n"
+                       "[[problem]]\nid = \"x_y\"\ntype = \"sphere\"\ndim = 3\n" +
+                       pso),
+               Catch::Contains("problem ids 'x/y' and 'x_y' would name the same file ('x_y'); rename one"));
+    CHECK_THAT(refused("[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n" + pso +
+                       "[[algorithm]]\nid = \"PSO\"\ntype = \"pso\"\npop = 10\n"),
+               Catch::Contains("algorithm ids 'pso' and 'PSO' would name the same file ('PSO')"));
+}

@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "engine/file_name.hpp"
 #include "engine/report/store.hpp"
 #include "framework/error.hpp"
 
@@ -21,11 +22,7 @@ namespace {
 /// A name as a file name: anything but letters, digits, '-' and '.' becomes '_', and a leading
 /// '.' too (no "..", no hidden file).
 std::string safe(const std::string& name) {
-    std::string s = name.empty() ? std::string("_") : name;
-    for (char& c : s)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
-    if (s.front() == '.') s.front() = '_';
-    return s;
+    return engine::file_name(name);
 }
 
 /// One folder name per algorithm id, each a safe file name, no two alike: an id that is a safe
