@@ -27,6 +27,7 @@
 
 #include "engine/campaign.hpp"
 #include "engine/json.hpp"
+#include "engine/store_schema.hpp"
 #include "engine/registry.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
@@ -114,6 +115,13 @@ class Store {
             throw InputError(
                 path + ": is not a pride store (an SQLite database with other tables); choose another store file");
         }
+        if (const int version = user_version(); version > store_schema) {
+            sqlite3_close(db_);
+            db_ = nullptr;
+            throw InputError(fmt::format("{}: was written by a newer pride (store schema {}; this pride knows 0 to "
+                                         "{}); use that pride, or another store file",
+                                         path, version, store_schema));
+        }
         // A new store is made without waiting for the disk (five syncs, 15-30 ms that every
         // campaign paid before its first run): a kill cannot hurt it either way, and a power cut
         // meanwhile would lose a store that holds nothing yet. Runs are then written with
@@ -154,6 +162,7 @@ class Store {
             add_column("campaign", "budget", "TEXT");
             add_column("problems", "definition", "TEXT");
             add_column("algorithms", "definition", "TEXT");
+            exec(fmt::format("PRAGMA user_version = {}", store_schema).c_str());
             add_column("problems", "function", "TEXT");
             add_column("problems", "instance", "INTEGER NOT NULL DEFAULT 0");
             add_column("problems", "f_opt", "REAL");
@@ -355,6 +364,13 @@ class Store {
         const std::int64_t n = sqlite3_step(s) == SQLITE_ROW ? sqlite3_column_int64(s, 0) : 0;
         sqlite3_finalize(s);
         return n;
+    }
+
+    int user_version() {
+        sqlite3_stmt* s = prepare("PRAGMA user_version");
+        const int v = sqlite3_step(s) == SQLITE_ROW ? sqlite3_column_int(s, 0) : 0;
+        sqlite3_finalize(s);
+        return v;
     }
 
     /// The stored definitions of one table's ids (NULL: a store from before definitions).

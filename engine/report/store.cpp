@@ -14,6 +14,8 @@
 #include <string_view>
 #include <type_traits>
 
+#include "engine/store_schema.hpp"
+
 namespace pride::report {
 namespace {
 
@@ -277,6 +279,15 @@ CampaignStore read_store(const std::string& path) {
     const auto tables = names(db, "SELECT name FROM sqlite_master WHERE type = 'table'");
     if (!tables.count("campaign") && !tables.count("runs"))
         throw InputError(path + ": not a campaign store (it has no campaign and no runs table)");
+    {
+        Query q(db, "PRAGMA user_version");
+        q.where = "the store's schema version";
+        const std::int64_t version = q.next() ? q.integer(0, "user_version", std::numeric_limits<std::int64_t>::min()) : 0;
+        if (version > engine::store_schema)
+            throw InputError(fmt::format("{}: was written by a newer pride (store schema {}; this pride knows 0 to {}); "
+                                         "use that pride",
+                                         path, version, engine::store_schema));
+    }
     for (const char* table : {"campaign", "runs"})
         if (!tables.count(table)) throw DamagedStore(path, fmt::format("it has no table {}", table));
     const auto columns = [&](const char* table, std::initializer_list<const char*> wanted) {

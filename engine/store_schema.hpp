@@ -1,0 +1,12 @@
+#pragma once
+// The version of the campaign store's schema, kept in SQLite's user_version: pride bench writes
+// it when it creates or migrates a store (adding the columns a store from before lacks), and
+// pride bench, report and export refuse a store that a newer pride wrote, rather than misread it.
+//   0: stores from before the version was recorded (migrated on the next pride bench)
+//   1: runs.encoding, campaign.target_precision, campaign.budget and the problems' and
+//      algorithms' definitions (issues 23 and 24)
+namespace pride::engine {
+
+inline constexpr int store_schema = 1;
+
+}  // namespace pride::engine
