@@ -162,7 +162,9 @@ class Store {
             add_column("campaign", "budget", "TEXT");
             add_column("problems", "definition", "TEXT");
             add_column("algorithms", "definition", "TEXT");
-            exec(fmt::format("PRAGMA user_version = {}", store_schema).c_str());
+            // Written only when it changes: a store that needs nothing is not touched (its bytes stay).
+            if (user_version() != store_schema)
+                exec(fmt::format("PRAGMA user_version = {}", store_schema).c_str());
             add_column("problems", "function", "TEXT");
             add_column("problems", "instance", "INTEGER NOT NULL DEFAULT 0");
             add_column("problems", "f_opt", "REAL");

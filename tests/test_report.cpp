@@ -376,7 +376,7 @@ const std::vector<std::string> kCsvHeader = {"problem",      "algorithm",
                                              "optimum",      "mean_gap",
                                              "success",      "p_holm_vs_best",
                                              "best",         "f_opt",
-                                             "measure"};
+                                             "measure",      "a12_vs_best"};
 
 /// The CSV as rows of cells (the header checked and dropped).
 std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
@@ -406,8 +406,8 @@ std::vector<std::vector<std::string>> table_rows(const std::vector<std::string>&
     return rows;
 }
 
-const std::vector<std::string> kTableHeader = {"problem", "algorithm", "runs",    "min", "mean",    "std",
-                                               "median",  "max",       "mean ms", "gap", "optimal", "p (Holm)"};
+const std::vector<std::string> kTableHeader = {"problem", "algorithm", "runs",    "min",     "mean",     "std", "median",
+                                               "max",     "mean ms",   "gap",  "optimal", "p (Holm)", "A12"};
 
 }  // namespace
 
@@ -483,7 +483,7 @@ TEST_CASE("report: csv columns equal values computed independently", "[report][c
     // grid10 ga {12,12,14,13,12}, optimum 12: mean 12.6, std sqrt(3.2/4), gaps 0,0,2/12,1/12,0 -> 0.05; 3 of 5 at it.
     auto r = row("grid10", "ga");
     CHECK(r == std::vector<std::string>{"grid10", "ga", "5", "12", "12.6", r[5], "12", "14", "1", "440", "12", "0.05",
-                                        "0.6", r[13], "0", "", "value"});
+                                        "0.6", r[13], "0", "", "value", "0.3"});
     check_close(r[5], std::sqrt(0.8));
     check_close(r[13], 0.17971249487899985);
     // grid10 pso {15,12,18,12(1+1e-11),13.5}: median 13.5, mean 14.1 + 2.4e-11 (the CSV keeps every
@@ -498,7 +498,7 @@ TEST_CASE("report: csv columns equal values computed independently", "[report][c
     check_close(r[13], 2 * 0.02536985982205372);
     r = row("grid10", "nlopt_sbplx");
     CHECK(r == std::vector<std::string>{"grid10", "nlopt_sbplx", "5", "12", "12", "0", "12", "12", "0.05", "120", "12",
-                                        "0", "1", "", "1", "", "value"});
+                                        "0", "1", "", "1", "", "value", ""});
     // rastrigin: pso is best (median 3 like ga, mean 2.8 < 3).
     CHECK(row("rastrigin", "pso")[14] == "1");
     CHECK(row("rastrigin", "ga")[14] == "0");
@@ -531,7 +531,8 @@ TEST_CASE("report: md table with best and star markers and the Friedman ranks", 
     const auto rows = table_rows(lines, " | ");
     REQUIRE(rows.size() == 10);  // header and 9 rows
     CHECK(rows[0] == kTableHeader);
-    CHECK(std::count(lines.begin(), lines.end(), "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|") == 1);
+    CHECK(std::count(lines.begin(), lines.end(), "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|") ==
+          1);
 
     const auto expected = expected_report(kRuns);
     for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -552,6 +553,7 @@ TEST_CASE("report: md table with best and star markers and the Friedman ranks", 
         CHECK(c[10] == (e.success ? g("%.0f %%", 100 * *e.success) : "-"));
         if (e.best) {
             CHECK(c[11] == "best");
+            CHECK(c[12] == "-");
         } else {
             REQUIRE(e.p_holm);
             CHECK(c[11] == g("%.3g", *e.p_holm) + (*e.p_holm < 0.05 ? "*" : ""));
@@ -565,6 +567,10 @@ TEST_CASE("report: md table with best and star markers and the Friedman ranks", 
     };
     CHECK(p_of("grid10", "nlopt_sbplx") == "best");
     CHECK(p_of("grid10", "ga") == "0.18");
+    // A12 of grid10 ga {12,12,14,13,12} against nlopt_sbplx's five 12s: no pair better, 3 x 5 ties
+    // at half: 7.5 / 25.
+    for (std::size_t i = 1; i < rows.size(); ++i)
+        if (rows[i][0] == "grid10" && rows[i][1] == "ga") CHECK(rows[i][12] == "0.30");
     CHECK(p_of("grid10", "pso") == "0.0507");  // raw 0.0254 < 0.05, Holm-corrected not: no star
     CHECK(p_of("rastrigin", "pso") == "best");
     CHECK(p_of("rastrigin", "ga") == "0.916");
@@ -600,7 +606,7 @@ TEST_CASE("report: latex tabular with escaped percent and underscore", "[report]
     INFO(text);
     const auto lines = lines_of(text);
     REQUIRE(lines.size() >= 14);
-    CHECK(lines[0] == "\\begin{tabular}{llrrrrrrrrrr}");
+    CHECK(lines[0] == "\\begin{tabular}{llrrrrrrrrrrr}");
     CHECK(lines[1] == "\\hline");
     const auto end = std::find(lines.begin(), lines.end(), "\\end{tabular}");
     REQUIRE(end != lines.end());
@@ -619,7 +625,7 @@ TEST_CASE("report: latex tabular with escaped percent and underscore", "[report]
                 CHECK(line[k - 1] == '\\');
             }
     CHECK(rows[1] == std::vector<std::string>{"grid10", "ga", "5", "12", "12.6", g("%.6g", std::sqrt(0.8)), "12", "14",
-                                              "1.000", "5.00 \\%", "60 \\%", "0.18"});
+                                              "1.000", "5.00 \\%", "60 \\%", "0.18", "0.30"});
     CHECK(rows[2][1] == "nlopt\\_sbplx");
     CHECK(rows[2][11] == "best");
     CHECK(rows[5][1] == "nlopt\\_sbplx");

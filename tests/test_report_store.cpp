@@ -116,7 +116,7 @@ TEST_CASE("report: csv numbers read back as the stored doubles", "[report][csv][
     REQUIRE(lines.size() == 7);  // the header and 3 problems x 2 algorithms
     CHECK(lines[0] ==
           "problem,algorithm,runs,min,mean,std,median,max,mean_wall_ms,mean_evaluations,optimum,mean_gap,success,"
-          "p_holm_vs_best,best,f_opt,measure,target,reached_target,mean_evaluations_to_target");
+          "p_holm_vs_best,best,f_opt,measure,a12_vs_best,target,reached_target,mean_evaluations_to_target");
 
     // The store, read here: per (problem, algorithm) the best values (+inf for NULL) and
     // evaluations in seed order, and the optimum.
@@ -160,7 +160,7 @@ TEST_CASE("report: csv numbers read back as the stored doubles", "[report][csv][
         const auto c = split(lines[i + 1]);
         const pride::report::ReportRow& row = data.rows[i];
         INFO(lines[i + 1]);
-        REQUIRE(c.size() == 20);
+        REQUIRE(c.size() == 21);
         CHECK(c[0] == row.problem);
         CHECK(c[1] == row.algorithm);
         const Stored& s = stored.at({row.problem, row.algorithm});
@@ -173,7 +173,7 @@ TEST_CASE("report: csv numbers read back as the stored doubles", "[report][csv][
         check_exact("median", c[6], sorted[1]);
         check_exact("max", c[7], sorted[2]);
         check_exact("optimum", c[10], s.optimum);
-        check_exact("target", c[17], target);
+        check_exact("target", c[18], target);
         // Means of the stored values, summed in seed order.
         check_exact("mean", c[4], (s.best[0] + s.best[1] + s.best[2]) / 3);
         check_exact("mean_evaluations", c[9], s.evaluations / 3);
@@ -192,8 +192,9 @@ TEST_CASE("report: csv numbers read back as the stored doubles", "[report][csv][
         CHECK(c[14] == (row.best ? "1" : "0"));
         check_exact("f_opt", c[15], row.f_opt);
         CHECK(c[16] == (row.precision ? "precision" : "value"));
-        CHECK(c[18] == std::to_string(row.reached_target));
-        check_exact("mean_evaluations_to_target", c[19], row.mean_evaluations_to_target);
+        check_exact("a12_vs_best", c[17], row.a12);
+        CHECK(c[19] == std::to_string(row.reached_target));
+        check_exact("mean_evaluations_to_target", c[20], row.mean_evaluations_to_target);
         for (const double v : {row.min, row.mean, row.std, row.median, row.max, row.mean_wall_ms})
             if (std::isfinite(v) && fmt::format("{}", v) != fmt::format("{:.6g}", v)) ++longer;
     }

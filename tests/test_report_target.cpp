@@ -40,7 +40,7 @@ TEST_CASE("report: evaluations to reach the campaign's target", "[report][target
     std::istringstream in(r.out);
     std::string line;
     std::getline(in, line);
-    const std::string tail = "best,f_opt,measure,target,reached_target,mean_evaluations_to_target";
+    const std::string tail = "best,f_opt,measure,a12_vs_best,target,reached_target,mean_evaluations_to_target";
     REQUIRE(line.size() > tail.size());
     CHECK(line.substr(line.size() - tail.size()) == tail);
     // The same figures computed here from the stored histories: per (problem, algorithm), the
@@ -72,20 +72,20 @@ TEST_CASE("report: evaluations to reach the campaign's target", "[report][target
         std::stringstream cells(line);
         for (std::string c; std::getline(cells, c, ',');) f.push_back(c);
         if (line.back() == ',') f.push_back("");
-        REQUIRE(f.size() == 20);
+        REQUIRE(f.size() == 21);
         ++rows;
         INFO(line);
-        CHECK(f[17] == "0.001");
-        const int reached = std::stoi(f[18]);
+        CHECK(f[18] == "0.001");
+        const int reached = std::stoi(f[19]);
         CHECK(reached >= 0);
         CHECK(reached <= 4);
         if (f[0] == "sphere") {  // both reach 1e-3 on a 4-D sphere within 3000 evaluations
             CHECK(reached == 4);
-            const double mean = std::stod(f[19]);
+            const double mean = std::stod(f[20]);
             CHECK(mean > 0);
             CHECK(mean <= 3000);
         }
-        if (reached == 0) CHECK(f[19].empty());
+        if (reached == 0) CHECK(f[20].empty());
         const auto& runs = hits[{f[0], f[1]}];
         REQUIRE(runs.size() == 4);
         int count = 0;
@@ -96,7 +96,7 @@ TEST_CASE("report: evaluations to reach the campaign's target", "[report][target
                 sum += *h;
             }
         CHECK(reached == count);
-        if (count > 0) CHECK(std::stod(f[19]) == Approx(sum / count).epsilon(1e-12));
+        if (count > 0) CHECK(std::stod(f[20]) == Approx(sum / count).epsilon(1e-12));
         partial += count > 0 && count < 4;
     }
     CHECK(rows == 6);

@@ -2,6 +2,7 @@
 // fixed data; scripts/statistics_reference.py prints the values hard-coded here.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <vector>
 
 #include "engine/report/statistics.hpp"
@@ -80,4 +81,19 @@ TEST_CASE("statistics: Friedman test equals scipy's friedmanchisquare", "[statis
     CHECK(f.average_ranks[3] == Approx(3.5));
     const std::vector<std::vector<double>> ragged{{1, 2}, {1}};
     CHECK_THROWS_AS(pride::stats::friedman(ragged), pride::InputError);
+}
+
+TEST_CASE("statistics: Vargha-Delaney A from scipy's Mann-Whitney U and by hand", "[statistics]") {
+    using pride::stats::vargha_delaney_a;
+    // scipy.stats.mannwhitneyu(x, y).statistic = U_x = the pairs with x > y plus half the ties
+    // (20 and 34 above), so the chance that x is the smaller is 1 - U_x / (n m).
+    CHECK(vargha_delaney_a(x, y) == Approx(1.0 - 20.0 / 100.0).epsilon(1e-15));
+    CHECK(vargha_delaney_a(t1, t2) == Approx(1.0 - 34.0 / 120.0).epsilon(1e-15));
+    CHECK(vargha_delaney_a(y, x) + vargha_delaney_a(x, y) == Approx(1.0).epsilon(1e-15));
+    CHECK(vargha_delaney_a(t2, t1) + vargha_delaney_a(t1, t2) == Approx(1.0).epsilon(1e-15));
+    // By hand: {1,2,3} against {2,2,4}: 1 < 2, 1 < 2, 1 < 4, 2 < 4, 3 < 4 and two ties: 6 / 9.
+    CHECK(vargha_delaney_a(std::vector<double>{1, 2, 3}, std::vector<double>{2, 2, 4}) == Approx(6.0 / 9.0));
+    CHECK(vargha_delaney_a(std::vector<double>{5, 5}, std::vector<double>{5}) == 0.5);  // no effect
+    CHECK(vargha_delaney_a(std::vector<double>{0}, std::vector<double>{1, 2}) == 1.0);
+    CHECK(std::isnan(vargha_delaney_a(std::vector<double>{}, std::vector<double>{1})));
 }

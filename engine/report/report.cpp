@@ -111,7 +111,7 @@ std::string render_table(const ReportData& report, bool md) {
         std::any_of(report.rows.begin(), report.rows.end(), [](const ReportRow& r) { return r.f_opt.has_value(); });
     std::vector<std::string> head{"problem", "algorithm", "runs"};
     if (f_opts) head.push_back("f_opt");
-    for (const char* h : {"min", "mean", "std", "median", "max", "mean ms", "gap", "optimal", "p (Holm)"})
+    for (const char* h : {"min", "mean", "std", "median", "max", "mean ms", "gap", "optimal", "p (Holm)", "A12"})
         head.push_back(h);
     const bool has_target = report.target || report.target_precision;
     if (has_target) head.push_back("evals to target");
@@ -120,7 +120,8 @@ std::string render_table(const ReportData& report, bool md) {
         text += fmt::format(
             "Campaign `{}`. Per problem, `best` marks the algorithm with the lowest median; "
             "p (Holm) is the Wilcoxon rank-sum test of each other algorithm against it, Holm-corrected "
-            "over the problem's algorithms, with `*` where p < 0.05.",
+            "over the problem's algorithms, with `*` where p < 0.05, and A12 its effect size (Vargha-Delaney: the "
+            "chance that a run of the algorithm ends better than one of the best, ties half; 0.5 is none).",
             report.campaign);
         if (precisions)
             text +=
@@ -148,7 +149,8 @@ std::string render_table(const ReportData& report, bool md) {
                                             : fmt::format("{:.2f} %", 100 * *r.mean_gap);
         for (const std::string& s :
              {num(r.min), num(r.mean), num(r.std), num(r.median), num(r.max), fmt::format("{:.3f}", r.mean_wall_ms),
-              gap, r.success ? fmt::format("{:.0f} %", 100 * *r.success) : std::string("-"), p})
+              gap, r.success ? fmt::format("{:.0f} %", 100 * *r.success) : std::string("-"), p,
+              r.a12 ? fmt::format("{:.2f}", *r.a12) : std::string("-")})
             cols.push_back(s);
         if (has_target)  // mean over the runs that reached it, and how many did
             cols.push_back(r.mean_evaluations_to_target
@@ -374,6 +376,7 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
                 r.success = success / static_cast<double>(r.runs);
             }
             if (!r.best) {
+                r.a12 = stats::vargha_delaney_a(c.best, by_algorithm.at(best).best);
                 p_values.push_back(stats::rank_sum_test(c.best, by_algorithm.at(best).best).p_value);
                 tested.push_back(rows.size());
             }
@@ -420,7 +423,7 @@ std::string render_latex(const ReportData& report) {
 std::string render_csv(const ReportData& report) {
     std::string text =
         "problem,algorithm,runs,min,mean,std,median,max,mean_wall_ms,mean_evaluations,optimum,mean_gap,success,"
-        "p_holm_vs_best,best,f_opt,measure";
+        "p_holm_vs_best,best,f_opt,measure,a12_vs_best";
     // Only campaigns with a target have its columns (target: the absolute threshold, or empty with
     // target_precision, the threshold then f_opt + it).
     const bool has_target = report.target || report.target_precision;
@@ -430,10 +433,11 @@ std::string render_csv(const ReportData& report) {
     const auto optional = [](const std::optional<double>& v) { return v ? exact(*v) : std::string(); };
     for (const auto& r : report.rows) {
         text +=
-            fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm), r.runs,
+            fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm), r.runs,
                         exact(r.min), exact(r.mean), exact(r.std), exact(r.median), exact(r.max), exact(r.mean_wall_ms),
                         exact(r.mean_evaluations), optional(r.optimum), optional(r.mean_gap), optional(r.success),
-                        optional(r.p_holm), r.best ? 1 : 0, optional(r.f_opt), r.precision ? "precision" : "value");
+                        optional(r.p_holm), r.best ? 1 : 0, optional(r.f_opt), r.precision ? "precision" : "value",
+                        optional(r.a12));
         if (report.target_precision)
             text +=
                 fmt::format(",{},{},{},{}\n", r.f_opt ? exact(*r.f_opt + *report.target_precision) : "",

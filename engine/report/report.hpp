@@ -30,6 +30,7 @@ struct ReportRow {
     bool precision = false;
     bool best = false;             // the lowest median of the problem (ties: the lowest mean)
     std::optional<double> p_holm;  // against the best; empty for the best itself
+    std::optional<double> a12;     // Vargha-Delaney A against the best: P(this run better), ties half
     // With a campaign target: the runs whose best reached it, and their mean evaluations to do so.
     std::size_t reached_target = 0;
     std::optional<double> mean_evaluations_to_target;

@@ -233,7 +233,8 @@ py::dict report_data(const std::string& path, bool raw) {
                      py::arg("best") = x.best, py::arg("p_holm") = optional_number(x.p_holm),
                      py::arg("reached_target") = x.reached_target,
                      py::arg("mean_evaluations_to_target") = optional_number(x.mean_evaluations_to_target),
-                     py::arg("f_opt") = optional_number(x.f_opt), py::arg("precision") = x.precision));
+                     py::arg("f_opt") = optional_number(x.f_opt), py::arg("precision") = x.precision,
+                     py::arg("a12") = optional_number(x.a12)));
     py::object friedman = py::none();
     if (r.friedman)
         friedman =
