@@ -19,6 +19,7 @@
 #include "cli/grid_commands.hpp"
 #include "cli/pareto.hpp"
 #include "cli/report.hpp"
+#include "engine/merge.hpp"
 #include "cli/roughset.hpp"
 #include "engine/registry.hpp"
 #include "framework/error.hpp"
@@ -199,6 +200,12 @@ int run_main(int argc, char** argv) {
     export_cmd->add_option("store", exporting.store, "the SQLite store written by pride bench")->required();
     export_cmd->add_option("--ioh", exporting.ioh, "the folder to write")->required();
 
+    std::vector<std::string> merge_inputs;
+    std::string merge_out;
+    auto* merge_cmd = app.add_subcommand("merge", "join the runs of compatible campaign stores into a new store");
+    merge_cmd->add_option("stores", merge_inputs, "two stores or more, written by pride bench")->required();
+    merge_cmd->add_option("--out", merge_out, "the new store to write (it must not exist)")->required();
+
     bool list_json = false, list_markdown = false;
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
     auto* list_json_flag = list_cmd->add_flag("--json", list_json, "print one JSON object");
@@ -222,7 +229,7 @@ int run_main(int argc, char** argv) {
         if (argc > 1 && argv[1][0] != '-' && !known)
             throw pride::InputError(
                 std::string("unknown subcommand '") + argv[1] +
-                "' (expected run, eval, list, path, pareto, scen, roughset, bench, report or export)");
+                "' (expected run, eval, list, path, pareto, scen, roughset, bench, report, merge or export)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
@@ -238,6 +245,13 @@ int run_main(int argc, char** argv) {
         if (*bench_cmd) return bench_command(bench, std::cout);
         if (*report_cmd) return report_command(report, std::cout);
         if (*export_cmd) return export_command(exporting, std::cout);
+        if (*merge_cmd) {
+            const auto s = pride::engine::merge_stores(merge_inputs, merge_out);
+            std::cout << fmt::format("merged {} stores into {}: {} runs ({} found in more than one store, equal, kept "
+                                     "once)\n",
+                                     merge_inputs.size(), merge_out, s.runs, s.shared);
+            return 0;
+        }
         return 2;
     } catch (const CLI::Success& e) {
         return app.exit(e);

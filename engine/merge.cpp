@@ -1,0 +1,202 @@
+#include "engine/merge.hpp"
+
+#include <fmt/format.h>
+#include <sqlite3.h>
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "engine/store_schema.hpp"
+#include "framework/error.hpp"
+
+namespace pride::engine {
+namespace {
+
+/// One SQLite connection, closed on every path.
+class Db {
+  public:
+    Db(const std::string& path, int flags) : path_(path) {
+        if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
+            const std::string why = db_ ? sqlite3_errmsg(db_) : "out of memory";
+            sqlite3_close(db_);
+            throw InputError(path + ": cannot open the store: " + why);
+        }
+        sqlite3_busy_timeout(db_, 30000);
+    }
+    ~Db() { sqlite3_close(db_); }
+    Db(const Db&) = delete;
+    Db& operator=(const Db&) = delete;
+
+    void exec(const std::string& sql) {
+        char* error = nullptr;
+        if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &error) != SQLITE_OK) {
+            const std::string why = error ? error : sqlite3_errmsg(db_);
+            sqlite3_free(error);
+            throw InputError(path_ + ": " + why);
+        }
+    }
+    /// Rows of text (NULL as nullopt).
+    std::vector<std::vector<std::optional<std::string>>> rows(const std::string& sql) {
+        sqlite3_stmt* s = nullptr;
+        if (sqlite3_prepare_v2(db_, sql.c_str(), -1, &s, nullptr) != SQLITE_OK)
+            throw InputError(path_ + ": " + sqlite3_errmsg(db_));
+        std::vector<std::vector<std::optional<std::string>>> out;
+        int rc;
+        while ((rc = sqlite3_step(s)) == SQLITE_ROW) {
+            auto& row = out.emplace_back();
+            for (int i = 0; i < sqlite3_column_count(s); ++i)
+                row.push_back(sqlite3_column_type(s, i) == SQLITE_NULL
+                                  ? std::nullopt
+                                  : std::optional<std::string>(reinterpret_cast<const char*>(sqlite3_column_text(s, i))));
+        }
+        sqlite3_finalize(s);
+        if (rc != SQLITE_DONE) throw InputError(path_ + ": " + sqlite3_errmsg(db_));
+        return out;
+    }
+    sqlite3* get() { return db_; }
+
+  private:
+    std::string path_;
+    sqlite3* db_ = nullptr;
+};
+
+std::string text(const std::optional<std::string>& v) {
+    return v.value_or("NULL");
+}
+
+std::string quoted(const std::string& s) {
+    std::string out = "'";
+    for (const char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+    return out + "'";
+}
+
+/// The columns of `table` in schema `schema` (main, or an attached input), in order.
+std::vector<std::string> columns(Db& db, const std::string& schema, const std::string& table) {
+    std::vector<std::string> out;
+    for (const auto& row : db.rows("SELECT name FROM " + schema + ".pragma_table_info(" + quoted(table) + ")"))
+        out.push_back(*row[0]);
+    return out;
+}
+
+std::string joined(const std::vector<std::string>& names, const std::string& prefix = "") {
+    std::string s;
+    for (const auto& n : names) s += (s.empty() ? "" : ", ") + prefix + n;
+    return s;
+}
+
+}  // namespace
+
+MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::string& out) {
+    require(inputs.size() >= 2, "merge", "give two stores or more to merge");
+    require(!std::filesystem::exists(out), out, "exists already; merge writes a new store (choose another --out)");
+    for (const auto& in : inputs) require(std::filesystem::is_regular_file(in), in, "no such store");
+    // Each input at the current schema (pride bench migrates a store when it opens it).
+    for (const auto& in : inputs) {
+        Db db(in, SQLITE_OPEN_READONLY);
+        const auto v = db.rows("PRAGMA user_version");
+        const int version = v.empty() ? 0 : std::stoi(*v[0][0]);
+        if (db.rows("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'campaign'").empty())
+            throw InputError(in + ": not a campaign store (it has no campaign table)");
+        require(version == store_schema, in,
+                fmt::format("has store schema {}, merge reads schema {} (run its campaign with pride bench once to "
+                            "migrate it{})",
+                            version, store_schema, version > store_schema ? "; or use the newer pride" : ""));
+    }
+    const std::string part = out + ".part";
+    std::filesystem::remove(part);
+    MergeSummary summary;
+    try {
+        {
+            // The first input, copied whole (SQLite's backup: a consistent copy, WAL included).
+            Db source(inputs[0], SQLITE_OPEN_READONLY);
+            Db target(part, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+            sqlite3_backup* b = sqlite3_backup_init(target.get(), "main", source.get(), "main");
+            if (!b) throw InputError(part + ": cannot write the store: " + sqlite3_errmsg(target.get()));
+            const int rc = sqlite3_backup_step(b, -1);
+            sqlite3_backup_finish(b);
+            if (rc != SQLITE_DONE) throw InputError(part + ": cannot write the store: " + sqlite3_errstr(rc));
+        }
+        Db db(part, SQLITE_OPEN_READWRITE);
+        db.exec("DELETE FROM claims");  // runs another process had taken: not results
+        const auto campaign = db.rows("SELECT budget, precisions FROM campaign WHERE id = 1");
+        require(!campaign.empty(), inputs[0], "has no campaign row");
+        const auto run_columns = columns(db, "main", "runs");
+        std::vector<std::string> compared;  // every column of a run but its key and its wall time
+        for (const auto& c : run_columns)
+            if (c != "problem" && c != "algorithm" && c != "seed" && c != "wall_ms") compared.push_back(c);
+        std::set<std::string> keys_seen;
+        for (const auto& row : db.rows("SELECT problem, algorithm, seed FROM runs"))
+            keys_seen.insert(*row[0] + '\x1f' + *row[1] + '\x1f' + *row[2]);
+        for (std::size_t k = 1; k < inputs.size(); ++k) {
+            const std::string& in = inputs[k];
+            db.exec("ATTACH DATABASE " + quoted(in) + " AS b");
+            try {
+                const auto other = db.rows("SELECT budget, precisions FROM b.campaign WHERE id = 1");
+                require(!other.empty(), in, "has no campaign row");
+                if (other[0][0] != campaign[0][0])
+                    throw InputError(fmt::format("{}: its runs have the budget '{}', those of {} '{}'; runs of "
+                                                 "different budgets are not merged",
+                                                 in, text(other[0][0]), inputs[0], text(campaign[0][0])));
+                if (other[0][1] != campaign[0][1])
+                    throw InputError(fmt::format("{}: records the target precisions {}, {} records {}", in,
+                                                 text(other[0][1]), inputs[0], text(campaign[0][1])));
+                for (const char* table : {"problems", "algorithms"}) {
+                    const auto differ = db.rows(fmt::format(
+                        "SELECT o.id, o.definition, m.definition FROM b.{0} o JOIN main.{0} m ON o.id = m.id "
+                        "WHERE o.definition IS NOT m.definition OR o.definition IS NULL LIMIT 1",
+                        table));
+                    if (!differ.empty())
+                        throw InputError(fmt::format("{}: {} '{}' is defined as {} there and as {} in {}; stores "
+                                                     "whose runs differ in definition are not merged",
+                                                     in, table == std::string("problems") ? "problem" : "algorithm",
+                                                     text(differ[0][0]), text(differ[0][1]), text(differ[0][2]),
+                                                     inputs[0]));
+                    const auto cols = columns(db, "main", table);
+                    db.exec(fmt::format("INSERT INTO main.{0} ({1}) SELECT {1} FROM b.{0} WHERE id NOT IN (SELECT id "
+                                        "FROM main.{0})",
+                                        table, joined(cols)));
+                }
+                // A run in both must be the same run: every column but the wall time, bit for bit.
+                std::string unequal;
+                for (const auto& c : compared) unequal += (unequal.empty() ? "" : " OR ") + ("o." + c + " IS NOT m." + c);
+                const auto differ = db.rows("SELECT o.problem, o.algorithm, o.seed FROM b.runs o JOIN main.runs m ON "
+                                            "o.problem = m.problem AND o.algorithm = m.algorithm AND o.seed = m.seed "
+                                            "WHERE " +
+                                            unequal + " ORDER BY o.problem, o.algorithm, o.seed LIMIT 1");
+                if (!differ.empty())
+                    throw InputError(fmt::format("{}: run (problem '{}', algorithm '{}', seed {}) differs from the "
+                                                 "same run in {}; stores whose runs differ are not merged",
+                                                 in, text(differ[0][0]), text(differ[0][1]), text(differ[0][2]),
+                                                 inputs[0]));
+                for (const auto& row : db.rows("SELECT problem, algorithm, seed FROM b.runs"))
+                    if (!keys_seen.insert(*row[0] + '\x1f' + *row[1] + '\x1f' + *row[2]).second) ++summary.shared;
+                db.exec(fmt::format("INSERT INTO main.runs ({0}) SELECT {1} FROM b.runs o WHERE NOT EXISTS (SELECT 1 "
+                                    "FROM main.runs m WHERE m.problem = o.problem AND m.algorithm = o.algorithm AND "
+                                    "m.seed = o.seed)",
+                                    joined(run_columns), joined(run_columns, "o.")));
+            } catch (...) {
+                db.exec("DETACH DATABASE b");
+                throw;
+            }
+            db.exec("DETACH DATABASE b");
+        }
+        summary.runs = keys_seen.size();
+        db.exec("PRAGMA wal_checkpoint(TRUNCATE)");
+    } catch (...) {
+        std::error_code ec;
+        for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(part + suffix, ec);
+        throw;
+    }
+    std::error_code ec;
+    std::filesystem::rename(part, out, ec);
+    if (ec) {
+        for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(part + suffix, ec);
+        throw InputError(out + ": cannot write the store: " + ec.message());
+    }
+    for (const char* suffix : {"-wal", "-shm"}) std::filesystem::remove(part + suffix, ec);
+    return summary;
+}
+
+}  // namespace pride::engine
