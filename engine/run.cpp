@@ -232,6 +232,7 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
             prepare_grid(*out, *g, linear_objective(*g));
     } else {
         const auto& cb = std::get<CallbackSpec>(spec);
+        require(!cb.f_opt || std::isfinite(*cb.f_opt), "f_opt", "must be a finite number");
         out->name = cb.name;
         out->dimension = cb.lower.size();
         out->box = BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch, cb.thread_safe)};
@@ -523,6 +524,7 @@ std::int64_t Problem::instance() const {
     return f ? f->instance() : 0;
 }
 std::optional<double> Problem::optimum_value() const {
+    if (const auto* cb = std::get_if<CallbackSpec>(&prepared_->spec)) return cb->f_opt;
     const auto* f = prepared_->box ? std::get_if<continuous::Function>(&prepared_->box->problem) : nullptr;
     if (!f) return std::nullopt;
     const double v = f->optimum_value();

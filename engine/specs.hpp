@@ -64,6 +64,9 @@ struct CallbackSpec {
     /// threads asks for it and refuses a callback without it (Python functions hold the GIL: leave
     /// it false for them).
     bool thread_safe = false;
+    /// The function's minimum, when the user knows it: reports then give precisions f - f_opt,
+    /// and campaigns record when runs reach f_opt + 10^k (ERT, ECDF), as for the catalog's.
+    std::optional<double> f_opt = std::nullopt;
 };
 
 using ProblemSpec = std::variant<ContinuousSpec, GridSpec, CallbackSpec>;

@@ -27,7 +27,7 @@ struct PyCampaign {
 const std::set<std::string> problem_keys{
     "id",        "problem",    "dim",       "instance", "grid",      "map",     "inflate", "start",          "goal",
     "objective", "encoding",   "connector", "init",     "waypoints", "weights", "lambda",  "corner_cutting", "function",
-    "bounds",    "vectorized", "step_cost"};
+    "bounds",    "vectorized", "step_cost", "f_opt"};
 
 template <class T>
 std::optional<T> get(const py::dict& d, const char* key) {
@@ -47,6 +47,8 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
     const int kinds =
         int(d.contains("problem")) + int(d.contains("grid") || d.contains("map")) + int(d.contains("function"));
     require(kinds == 1, where, "give exactly one of problem (a registered name), grid (a map) or function");
+    require(!d.contains("f_opt") || d.contains("function"), where,
+            "f_opt is for a function (registered problems know their own)");
     if (d.contains("problem")) {
         const auto dim = get<std::int64_t>(d, "dim");
         require(dim.has_value(), where, "problem '" + p.id + "' needs dim");
@@ -56,8 +58,17 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
         if (!PyCallable_Check(fn.ptr())) throw py::type_error(where + ": function must be callable");
         require(d.contains("bounds"), where, "a function needs bounds=(lower, upper)");
         auto [lower, upper] = parse_bounds(d["bounds"], get<std::int64_t>(d, "dim"));
-        p.spec = callback_spec(fn, get<bool>(d, "vectorized").value_or(false), std::move(lower), std::move(upper),
-                               c.errors, p.id);
+        auto spec = callback_spec(fn, get<bool>(d, "vectorized").value_or(false), std::move(lower), std::move(upper),
+                                  c.errors, p.id);
+        if (d.contains("f_opt") && !d["f_opt"].is_none()) {
+            const py::object v = d["f_opt"];
+            if (PyBool_Check(v.ptr()) || (!py::isinstance<py::float_>(v) && !py::isinstance<py::int_>(v)))
+                throw py::type_error(where + ": f_opt must be a number, got " +
+                                     py::str(py::type::of(v).attr("__name__")).cast<std::string>());
+            spec.f_opt = v.cast<double>();
+            require(std::isfinite(*spec.f_opt), where, "f_opt must be a finite number");
+        }
+        p.spec = std::move(spec);
         c.python_functions = true;
     } else {
         engine::GridSpec g;

@@ -120,6 +120,28 @@ def test_campaign_budget_per_dimension_and_precision_target(tmp_path):
                        problems=[{"id": "s", "problem": "sphere", "dim": 2}])
 
 
+def test_a_function_with_its_optimum_is_reported_in_precision(tmp_path):
+    shifted = lambda x: float(np.sum((x - 0.5) ** 2)) + 3.0
+    c = pride.Campaign("fo", seeds=3, evals=400, algorithms=["pso", "nlopt:LN_SBPLX"],
+                       problems=[{"id": "mine", "function": shifted, "bounds": (-2, 2), "dim": 3, "f_opt": 3}])
+    c.run(tmp_path / "fo.sqlite")
+    store = pride.read_store(tmp_path / "fo.sqlite", dataframe=False)
+    rep = pride.report(tmp_path / "fo.sqlite", dataframe=False)
+    for row in rep["rows"]:
+        best = [r["best"] for r in store if r["algorithm"] == row["algorithm"]]
+        assert row["precision"] and row["f_opt"] == 3.0 and row["min"] == min(best) - 3.0
+    assert "Expected running time" in rep["markdown"]  # target hits recorded, as for the catalog's
+    with pytest.raises(ValueError, match=r"^problems\[0\]: f_opt is for a function"):
+        pride.Campaign("fo", seeds=1, evals=10, algorithms=["pso"],
+                       problems=[{"id": "s", "problem": "sphere", "dim": 2, "f_opt": 0}])
+    with pytest.raises(TypeError, match=r"^problems\[0\]: f_opt must be a number, got str$"):
+        pride.Campaign("fo", seeds=1, evals=10, algorithms=["pso"],
+                       problems=[{"id": "m", "function": shifted, "bounds": (-1, 1), "dim": 2, "f_opt": "3"}])
+    with pytest.raises(ValueError, match=r"^problems\[0\]: f_opt must be a finite number$"):
+        pride.Campaign("fo", seeds=1, evals=10, algorithms=["pso"],
+                       problems=[{"id": "m", "function": shifted, "bounds": (-1, 1), "dim": 2, "f_opt": float("nan")}])
+
+
 def test_campaign_errors(tmp_path):
     with pytest.raises(ValueError, match="unknown algorithm"):
         pride.Campaign("x", seeds=1, evals=10, problems=[{"id": "s", "problem": "sphere", "dim": 2}],
