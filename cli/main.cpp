@@ -188,7 +188,8 @@ int run_main(int argc, char** argv) {
 
     ReportOptions report;
     auto* report_cmd = app.add_subcommand("report", "comparison tables and statistics from a campaign store");
-    report_cmd->add_option("store", report.store, "the SQLite store written by pride bench")->required();
+    report_cmd->add_option("stores", report.stores, "the SQLite store written by pride bench (or several, read as one)")
+        ->required();
     report_cmd->add_option("--format", report.format,
                            "md (default), csv, latex, or ert-csv (the ERT of a campaign with target precisions)");
     report_cmd->add_option("--plots", report.plots, "write convergence, final-value and path figures (PNG, SVG) here");

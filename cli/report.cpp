@@ -84,14 +84,16 @@ int report_command(const ReportOptions& o, std::ostream& out) {
     require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv", "--format",
             "expected md, csv, latex or ert-csv, got '" + o.format + "'");
     // The whole store is read and checked before any figure is drawn from it.
-    const report::ReportData data = report::load_report(o.store, report::ReportOptions{o.raw});
+    require(o.plots.empty() || o.stores.size() == 1, "--plots",
+            "draws one store; join several into one with pride merge first");
+    const report::ReportData data = report::load_report(o.stores, report::ReportOptions{o.raw});
     require(o.format != "ert-csv" || data.coco, "--format ert-csv",
-            o.store + ": records no target hits (no precisions, or no run on a problem with a known optimum)");
+            o.stores.front() + ": records no target hits (no precisions, or no run on a problem with a known optimum)");
     const std::string text = o.format == "csv"       ? report::render_csv(data)
                              : o.format == "ert-csv" ? report::render_ert_csv(data)
                              : o.format == "md"      ? report::render_markdown(data)
                                                      : report::render_latex(data);
-    if (!o.plots.empty()) plot(o.store, o.plots, data);
+    if (!o.plots.empty()) plot(o.stores.front(), o.plots, data);
     out << text;
     return 0;
 }

@@ -2,11 +2,12 @@
 // `pride report`: the comparison tables a paper needs, from a campaign store (campaign.hpp).
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace pride::cli {
 
 struct ReportOptions {
-    std::string store;
+    std::vector<std::string> stores;  // one, or several read as one (a campaign run in parts)
     std::string format = "md";  // md, csv or latex
     std::string plots;          // a folder for the figures (python3-matplotlib), or empty
     bool raw = false;           // values f rather than precisions f - f_opt

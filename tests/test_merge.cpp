@@ -74,8 +74,15 @@ TEST_CASE("merge: stores of one campaign run in parts equal the whole campaign's
     CHECK(runs(a) == a_runs);  // inputs untouched
     CHECK(runs(b) == b_runs);
     CHECK(!fs::exists(dir.file("m.sqlite.part")));
-    // The merged store reports, and grows like any other.
-    CHECK(pride::test::run_pride("report '" + dir.file("m.sqlite") + "'").status == 0);
+    // The merged store reports as the parts read together do, and grows like any other store.
+    const auto merged = pride::test::run_pride("report '" + dir.file("m.sqlite") + "' --format csv");
+    const auto parts = pride::test::run_pride("report '" + a + "' '" + b + "' --format csv");
+    REQUIRE(merged.status == 0);
+    REQUIRE(parts.status == 0);
+    CHECK(parts.out == merged.out);
+    const auto plots = pride::test::run_pride("report '" + a + "' '" + b + "' --plots '" + dir.file("figs") + "'");
+    CHECK(plots.status == 2);
+    CHECK_THAT(plots.err, Catch::Contains("--plots: draws one store; join several into one with pride merge first"));
     const auto grown = pride::test::run_pride("bench '" + dir.write("g.toml", campaign(4, kPso + kGa)) + "' --out '" +
                                               dir.file("m.sqlite") + "'");
     INFO(grown.err);
@@ -109,6 +116,9 @@ TEST_CASE("merge: what cannot be merged is refused, naming it, and nothing is wr
         sqlite3_close(db);
     }
     refused(d, "run (problem 's', algorithm 'pso', seed 2) differs from the same run in " + a);
+    const auto report = pride::test::run_pride("report '" + a + "' '" + d + "'");
+    CHECK(report.status == 2);
+    CHECK_THAT(report.err, Catch::Contains("run (problem 's', algorithm 'pso', seed 2) differs between the stores"));
     refused(dir.write("notes.sqlite", "not a database"), "notes.sqlite");
     refused(dir.file("missing.sqlite"), "missing.sqlite: no such store");
     const auto exists = pride::test::run_pride("merge '" + a + "' '" + a + "' --out '" + a + "'");

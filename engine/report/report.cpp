@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <tuple>
 #include <numeric>
 #include <set>
 
@@ -410,6 +411,60 @@ ReportData load_report(const std::string& path, const ReportOptions& options) {
     const CampaignStore store = read_store(path);
     require(!store.runs.empty(), path, "holds no runs yet (run pride bench first)");
     return make_report(store, options);
+}
+
+ReportData load_report(const std::vector<std::string>& paths, const ReportOptions& options) {
+    require(!paths.empty(), "report", "give a store");
+    if (paths.size() == 1) return load_report(paths.front(), options);
+    CampaignStore all = read_store(paths.front());
+    std::map<std::string, StoredProblem> problems;
+    if (all.problems)
+        for (const auto& p : *all.problems) problems.emplace(p.id, p);
+    std::map<std::tuple<std::string, std::string, std::int64_t>, const StoredRun*> seen;
+    std::vector<CampaignStore> others;
+    for (std::size_t i = 1; i < paths.size(); ++i) others.push_back(read_store(paths[i]));
+    for (std::size_t i = 0; i < others.size(); ++i) {
+        const CampaignStore& s = others[i];
+        const std::string& path = paths[i + 1];
+        if (s.name != all.name && all.name.find(" + " + s.name) == std::string::npos) all.name += " + " + s.name;
+        require(s.precisions == all.precisions, path,
+                "records other target precisions than " + paths.front() + "; its runs cannot be reported with them");
+        require(s.target == all.target && s.target_precision == all.target_precision, path,
+                "has another report target than " + paths.front());
+        if (s.problems)
+            for (const auto& p : *s.problems) {
+                const auto [it, fresh] = problems.emplace(p.id, p);
+                const StoredProblem& q = it->second;
+                require(fresh || (q.dim == p.dim && q.function == p.function && q.instance == p.instance &&
+                                  q.f_opt == p.f_opt),
+                        path, "problem '" + p.id + "' is another problem in " + paths.front());
+            }
+        all.whole_map_algorithms.insert(s.whole_map_algorithms.begin(), s.whole_map_algorithms.end());
+    }
+    // Runs: each once; a run in two stores must be the same run (its values, not its wall time).
+    std::vector<StoredRun> runs = std::move(all.runs);
+    for (auto& s : others)
+        for (auto& r : s.runs) runs.push_back(std::move(r));
+    std::vector<StoredRun> kept;
+    for (const StoredRun& r : runs) {
+        const auto [it, fresh] = seen.emplace(std::make_tuple(r.problem, r.algorithm, r.seed), &r);
+        if (fresh) continue;
+        const StoredRun& o = *it->second;
+        require(o.best == r.best && o.evaluations == r.evaluations && o.history == r.history &&
+                    o.history_evaluations == r.history_evaluations && o.target_hits == r.target_hits,
+                "report",
+                fmt::format("run (problem '{}', algorithm '{}', seed {}) differs between the stores; they cannot be "
+                            "reported as one",
+                            r.problem, r.algorithm, r.seed));
+    }
+    for (const auto& [key, r] : seen) kept.push_back(*r);  // in key order
+    all.runs = std::move(kept);
+    if (all.problems) {
+        all.problems->clear();
+        for (auto& [id, p] : problems) all.problems->push_back(p);
+    }
+    require(!all.runs.empty(), "report", "the stores hold no runs yet (run pride bench first)");
+    return make_report(all, options);
 }
 
 std::string render_markdown(const ReportData& report) {

@@ -71,6 +71,11 @@ struct ReportData {
 ReportData make_report(const CampaignStore& store, const ReportOptions& options = {});
 /// make_report(read_store(path)); InputError when the store holds no runs yet.
 ReportData load_report(const std::string& path, const ReportOptions& options = {});
+/// The report of several stores read as one (a campaign run in parts): their runs together, a run
+/// found in several kept once when equal; InputError naming the stores when they cannot be read
+/// as one (other target precisions or report targets, a problem id of two definitions, a run
+/// that differs).
+ReportData load_report(const std::vector<std::string>& paths, const ReportOptions& options = {});
 
 std::string render_markdown(const ReportData& report);
 /// A header line, then one line per row; each number in the shortest form that reads back as

@@ -277,8 +277,10 @@ def report(path, *, raw=False, dataframe=None):
     min, mean, std, median, max, best, p_holm, f_opt, precision, ...) as a DataFrame when pandas
     is present, ``friedman`` and the rendered ``markdown`` and ``csv``, as a dict. Where a
     problem's optimum f_opt is known, min to max are precisions f - f_opt (``precision`` True),
-    unless ``raw=True`` (``pride report --raw``)."""
-    r = _pride.report(str(path), bool(raw))
+    unless ``raw=True`` (``pride report --raw``). ``path`` may be a list of stores of one campaign
+    run in parts, read as one (``pride report A B``)."""
+    paths = [str(p) for p in path] if isinstance(path, (list, tuple)) else [str(path)]
+    r = _pride.report(paths, bool(raw))
     pd = _pandas()
     if dataframe or (dataframe is None and pd is not None):
         if pd is None:

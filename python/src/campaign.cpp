@@ -227,11 +227,11 @@ py::dict read_store(const std::string& path) {
                     py::arg("problems") = problems, py::arg("runs") = runs);
 }
 
-py::dict report_data(const std::string& path, bool raw) {
+py::dict report_data(const std::vector<std::string>& paths, bool raw) {
     report::ReportData r;
     {
         py::gil_scoped_release release;
-        r = report::load_report(path, report::ReportOptions{raw});
+        r = report::load_report(paths, report::ReportOptions{raw});
     }
     py::list rows;
     for (const auto& x : r.rows)
@@ -286,7 +286,7 @@ void bind_campaign(py::module_& m) {
     m.def("campaign_from_file", &from_file, py::arg("path"));
     m.def("campaign_run", &run, py::arg("campaign"), py::arg("store"), py::arg("jobs"));
     m.def("read_store", &read_store, py::arg("path"));
-    m.def("report", &report_data, py::arg("path"), py::arg("raw") = false);
+    m.def("report", &report_data, py::arg("paths"), py::arg("raw") = false);
 }
 
 }  // namespace pride::python
