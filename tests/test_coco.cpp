@@ -473,29 +473,28 @@ TEST_CASE("coco: the IOH export names bbob problems by fid and instance", "[repo
     // Per algorithm: bbob-f1 (one .info, one .dat: both instances), bbob-f20, ras3 (f4: its place).
     CHECK(r.out == "12 IOHprofiler files written under " + out + "\n");
     const std::filesystem::path a = std::filesystem::path(out) / "a";
-    const std::string info = slurp(a / "IOHprofiler_f1_bbob-f1.info");
+    // BBOB functions by IOHexperimenter's names and ids.
+    const std::string info = slurp(a / "IOHprofiler_f1_Sphere.info");
     CHECK(info ==
-          "suite = \"BBOB\", funcId = 1, funcName = \"bbob-f1\", DIM = 2, maximization = \"F\", algId = \"a\", "
-          "algInfo = \"campaign suite\"\n%\ndata_f1_bbob-f1/IOHprofiler_f1_DIM2.dat, 1:100|79.5, 1:100|82, "
+          "suite = \"BBOB\", funcId = 1, funcName = \"Sphere\", DIM = 2, maximization = \"F\", algId = \"a\", "
+          "algInfo = \"campaign suite\"\n%\ndata_f1_Sphere/IOHprofiler_f1_DIM2.dat, 1:100|79.5, 1:100|82, "
           "2:100|-209.80000000000001, 2:100|-150\n");
-    const std::string dat = slurp(a / "data_f1_bbob-f1" / "IOHprofiler_f1_DIM2.dat");
+    const std::string dat = slurp(a / "data_f1_Sphere" / "IOHprofiler_f1_DIM2.dat");
     const std::string header =
         "\"function evaluation\" \"current f(x)\" \"best-so-far f(x)\" \"current af(x)+b\" \"best af(x)+b\"\n";
     CHECK(dat.rfind(header + "50 85 85 85 85\n100 79.5 79.5 79.5 79.5\n" + header, 0) == 0);
     std::size_t blocks = 0;
     for (auto at = dat.find(header); at != std::string::npos; at = dat.find(header, at + 1)) ++blocks;
     CHECK(blocks == 4);  // 2 instances x 2 seeds
-    CHECK(slurp(a / "IOHprofiler_f20_bbob-f20.info").find("funcId = 20, funcName = \"bbob-f20\", DIM = 2") !=
+    CHECK(slurp(a / "IOHprofiler_f20_Schwefel.info").find("funcId = 20, funcName = \"Schwefel\", DIM = 2") !=
           std::string::npos);
-    CHECK(std::filesystem::exists(a / "data_f20_bbob-f20" / "IOHprofiler_f20_DIM2.dat"));
-    // Outside a suite numbering: its place in the campaign, runs by seed; no value yet: None.
-    CHECK(
-        slurp(a / "IOHprofiler_f4_ras3.info").rfind("suite = \"pride\", funcId = 4, funcName = \"ras3\", DIM = 3", 0) ==
-        0);
-    CHECK(slurp(a / "data_f4_ras3" / "IOHprofiler_f4_DIM3.dat") ==
-          header +
-              "150 None None None None\n300 0.050000000000000003 0.050000000000000003 0.050000000000000003 "
-              "0.050000000000000003\n");
+    CHECK(std::filesystem::exists(a / "data_f20_Schwefel" / "IOHprofiler_f20_DIM2.dat"));
+    // Outside a suite: 1000 + its place in the campaign (never a BBOB id), runs by seed; the rows
+    // start at the first feasible value (IOHanalyzer reads every row as a value reached).
+    CHECK(slurp(a / "IOHprofiler_f1004_ras3.info")
+              .rfind("suite = \"pride\", funcId = 1004, funcName = \"ras3\", DIM = 3", 0) == 0);
+    CHECK(slurp(a / "data_f1004_ras3" / "IOHprofiler_f1004_DIM3.dat") ==
+          header + "300 0.050000000000000003 0.050000000000000003 0.050000000000000003 0.050000000000000003\n");
     CHECK(!std::filesystem::exists(a / "IOHprofiler_f2_f1-i2.info"));
 }
 
@@ -630,19 +629,19 @@ TEST_CASE("coco: a bbob [[suite]] campaign from pride bench to tables, figures a
     const std::string out = dir.file("ioh");
     REQUIRE(run_pride("export " + quote(store) + " --ioh " + quote(out)).status == 0);
     const std::filesystem::path a = std::filesystem::path(out) / "pso";
-    const std::string info = slurp(a / "IOHprofiler_f20_bbob-f20.info");
-    CHECK(info.rfind("suite = \"BBOB\", funcId = 20, funcName = \"bbob-f20\", DIM = 2, maximization = \"F\", "
+    const std::string info = slurp(a / "IOHprofiler_f20_Schwefel.info");
+    CHECK(info.rfind("suite = \"BBOB\", funcId = 20, funcName = \"Schwefel\", DIM = 2, maximization = \"F\", "
                      "algId = \"pso\", algInfo = \"campaign bbob-small\"\n%\n"
-                     "data_f20_bbob-f20/IOHprofiler_f20_DIM2.dat, 1:400|",
+                     "data_f20_Schwefel/IOHprofiler_f20_DIM2.dat, 1:400|",
                      0) == 0);
     CHECK(info.find(", 2:400|") != std::string::npos);
     CHECK(std::count(info.begin(), info.end(), ':') == 4);
-    const std::string dat = slurp(a / "data_f20_bbob-f20" / "IOHprofiler_f20_DIM2.dat");
+    const std::string dat = slurp(a / "data_f20_Schwefel" / "IOHprofiler_f20_DIM2.dat");
     std::size_t blocks = 0;
     for (auto at = dat.find("\"function evaluation\""); at != std::string::npos;
          at = dat.find("\"function evaluation\"", at + 1))
         ++blocks;
     CHECK(blocks == 4);
-    CHECK(std::filesystem::exists(a / "IOHprofiler_f1_bbob-f1.info"));
+    CHECK(std::filesystem::exists(a / "IOHprofiler_f1_Sphere.info"));
     CHECK(std::distance(std::filesystem::directory_iterator(a), std::filesystem::directory_iterator()) == 4);
 }

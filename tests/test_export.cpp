@@ -32,14 +32,14 @@ TEST_CASE("export: IOHprofiler files, one folder per algorithm, one block per ru
     CHECK(r.out.find("8 IOHprofiler files") != std::string::npos);
     for (const char* algorithm : {"pso", "ga"}) {
         const fs::path a = dir / "ioh" / algorithm;
-        const std::string info = slurp(a / "IOHprofiler_f1_sphere5.info");
+        const std::string info = slurp(a / "IOHprofiler_f1001_sphere5.info");
         // As IOHexperimenter's Analyzer writes them: double quotes.
-        CHECK(info.find("suite = \"pride\", funcId = 1, funcName = \"sphere5\", DIM = 5, maximization = \"F\", "
+        CHECK(info.find("suite = \"pride\", funcId = 1001, funcName = \"sphere5\", DIM = 5, maximization = \"F\", "
                         "algId = \"" +
                         std::string(algorithm) + "\"") != std::string::npos);
-        CHECK(info.find("data_f1_sphere5/IOHprofiler_f1_DIM5.dat, 1:200|") != std::string::npos);
+        CHECK(info.find("data_f1001_sphere5/IOHprofiler_f1001_DIM5.dat, 1:200|") != std::string::npos);
         CHECK(info.find(", 3:200|") != std::string::npos);
-        const std::string dat = slurp(a / "data_f1_sphere5" / "IOHprofiler_f1_DIM5.dat");
+        const std::string dat = slurp(a / "data_f1001_sphere5" / "IOHprofiler_f1001_DIM5.dat");
         std::size_t headers = 0;
         for (std::size_t at = dat.find("\"function evaluation\""); at != std::string::npos;
              at = dat.find("\"function evaluation\"", at + 1))
@@ -65,10 +65,26 @@ TEST_CASE("export: IOHprofiler files, one folder per algorithm, one block per ru
             last_evals = evals;
             last_best = best;
         }
-        CHECK(fs::exists(a / "IOHprofiler_f2_ackley3.info"));
-        CHECK(fs::exists(a / "data_f2_ackley3" / "IOHprofiler_f2_DIM3.dat"));
+        CHECK(fs::exists(a / "IOHprofiler_f1002_ackley3.info"));
+        CHECK(fs::exists(a / "data_f1002_ackley3" / "IOHprofiler_f1002_DIM3.dat"));
     }
     const auto missing =
         pride::test::run_pride("export '" + (dir / "none.sqlite").string() + "' --ioh '" + (dir / "x").string() + "'");
     CHECK(missing.status == 2);
+}
+
+TEST_CASE("export: BBOB's f1 and the classic suite's F1 are two IOH functions", "[export]") {
+    const pride::test::TempDir tmp("pride-ioh-ids");
+    const std::string file = tmp.write("c.toml",
+                                       "name = \"ids\"\nseeds = 1\n[budget]\nevaluations = 100\n"
+                                       "[[problem]]\nid = \"b\"\ntype = \"bbob-f1\"\ndim = 2\n"
+                                       "[[problem]]\nid = \"y\"\ntype = \"yao-f1\"\ndim = 2\n"
+                                       "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n");
+    REQUIRE(pride::test::run_pride("bench '" + file + "' --out '" + tmp.file("c.sqlite") + "'").status == 0);
+    REQUIRE(pride::test::run_pride("export '" + tmp.file("c.sqlite") + "' --ioh '" + tmp.file("ioh") + "'").status ==
+            0);
+    const fs::path a = fs::path(tmp.file("ioh")) / "pso";
+    CHECK(slurp(a / "IOHprofiler_f1_Sphere.info").rfind("suite = \"BBOB\", funcId = 1, funcName = \"Sphere\"", 0) == 0);
+    CHECK(slurp(a / "IOHprofiler_f101_yao-f1.info")
+              .rfind("suite = \"classic\", funcId = 101, funcName = \"yao-f1\"", 0) == 0);
 }

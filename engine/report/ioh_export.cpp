@@ -66,6 +66,23 @@ std::string value(double v) {
     return std::isfinite(v) ? fmt::format("{:.17g}", v) : "None";
 }
 
+/// IOHexperimenter's names of the BBOB functions, by fid (include/ioh/problem/bbob/*.hpp, the
+/// name each class passes to its problem), so that IOHanalyzer shows them as it shows its own.
+const char* ioh_bbob_name(std::int64_t fid) {
+    static const char* const names[] = {
+        "Sphere",           "Ellipsoid",     "Rastrigin",     "BuecheRastrigin",    "LinearSlope",
+        "AttractiveSector", "StepEllipsoid", "Rosenbrock",    "RosenbrockRotated",  "EllipsoidRotated",
+        "Discus",           "BentCigar",     "SharpRidge",    "DifferentPowers",    "RastriginRotated",
+        "Weierstrass",      "Schaffers10",   "Schaffers1000", "GriewankRosenbrock", "Schwefel",
+        "Gallagher101",     "Gallagher21",   "Katsuura",      "LunacekBiRastrigin"};
+    return fid >= 1 && fid <= 24 ? names[fid - 1] : nullptr;
+}
+
+/// The function ids, disjoint across kinds so that no two problems share one in IOHanalyzer (which
+/// tells functions apart by id): BBOB's fid (1-24, IOH's own), 100 + N for the classic suite's F_N
+/// (Yao's F1 is not BBOB's f1), 1000 + the position in the campaign for any other problem.
+constexpr std::int64_t classic_ids = 100, other_ids = 1000;
+
 /// One IOHprofiler function: a .info file and, per dimension, a .dat file.
 struct Function {
     std::int64_t id = 0;
@@ -103,8 +120,11 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
             const auto it = by_problem.find(p.id);
             if (it == by_problem.end()) continue;
             const bool in_suite = p.suite && p.fid;
-            const std::int64_t id = in_suite ? *p.fid : static_cast<std::int64_t>(f + 1);
-            const std::string name = in_suite ? p.function.value_or(p.id) : p.id;
+            const bool bbob = in_suite && *p.suite == "bbob" && ioh_bbob_name(*p.fid);
+            const std::int64_t id = bbob       ? *p.fid
+                                    : in_suite ? classic_ids + *p.fid
+                                               : other_ids + static_cast<std::int64_t>(f + 1);
+            const std::string name = bbob ? ioh_bbob_name(*p.fid) : in_suite ? p.function.value_or(p.id) : p.id;
             Function& fn = functions[{in_suite ? 0 : 1, id, name}];
             fn.id = id;
             fn.name = name;
@@ -141,7 +161,10 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
                     // transformation here: af(x)+b = f(x)).
                     d << "\"function evaluation\" \"current f(x)\" \"best-so-far f(x)\" \"current af(x)+b\" "
                          "\"best af(x)+b\"\n";
+                    // Rows start at the first finite value: IOHanalyzer reads a row as a value reached,
+                    // and before a feasible one there is none (a run with none writes no row).
                     for (std::size_t k = 0; k < r->history.size() && k < r->history_evaluations.size(); ++k) {
+                        if (!std::isfinite(r->history[k])) continue;
                         const std::string v = value(r->history[k]);
                         d << fmt::format("{} {} {} {} {}\n", r->history_evaluations[k], v, v, v, v);
                     }
