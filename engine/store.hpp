@@ -218,6 +218,7 @@ class Store {
                 const std::int64_t runs = sqlite3_column_int64(s, 2);
                 sqlite3_finalize(s);
                 if (text == c.text) {
+                    fill_definitions(c);  // a store from before definitions, resumed with its own file
                     exec("COMMIT");
                     return;
                 }
@@ -429,6 +430,36 @@ class Store {
             if (!algorithms.count(a.id)) record_algorithm(a);
         for (const auto& p : c.problems)
             if (!problems.count(p.id)) record_problem(p);
+    }
+
+    /// A store written before definitions were kept, resumed with its very campaign: the
+    /// definitions are this campaign's, recorded where missing, so that it can grow from now on.
+    /// Nothing is written when none is missing (the store's bytes stay).
+    void fill_definitions(const Campaign& c) {
+        sqlite3_stmt* s = prepare(
+            "SELECT (SELECT COUNT(*) FROM campaign WHERE budget IS NULL) + (SELECT COUNT(*) FROM problems WHERE "
+            "definition IS NULL) + (SELECT COUNT(*) FROM algorithms WHERE definition IS NULL)");
+        const bool missing = sqlite3_step(s) == SQLITE_ROW && sqlite3_column_int64(s, 0) > 0;
+        sqlite3_finalize(s);
+        if (!missing) return;
+        const std::string budget = budget_definition(c);
+        s = prepare("UPDATE campaign SET budget = ? WHERE budget IS NULL");
+        sqlite3_bind_text(s, 1, budget.c_str(), -1, SQLITE_TRANSIENT);
+        step_done(s, "cannot write the store");
+        for (const auto& p : c.problems) {
+            const std::string d = problem_definition(p);
+            s = prepare("UPDATE problems SET definition = ? WHERE id = ? AND definition IS NULL");
+            sqlite3_bind_text(s, 1, d.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 2, p.id.c_str(), -1, SQLITE_TRANSIENT);
+            step_done(s, "cannot write the store");
+        }
+        for (const auto& a : c.algorithms) {
+            const std::string d = algorithm_definition(a);
+            s = prepare("UPDATE algorithms SET definition = ? WHERE id = ? AND definition IS NULL");
+            sqlite3_bind_text(s, 1, d.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 2, a.id.c_str(), -1, SQLITE_TRANSIENT);
+            step_done(s, "cannot write the store");
+        }
     }
 
     static void bind_optional(sqlite3_stmt* s, int i, const std::optional<double>& v) {

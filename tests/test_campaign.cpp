@@ -936,6 +936,25 @@ TEST_CASE("bench: a campaign grows by seeds, algorithms and problems, and only t
     CHECK(*defined == std::vector<std::vector<std::string>>{{"t:ga", "t:ga pop=10"}, {"t:pso", "t:pso pop=10"}});
 }
 
+TEST_CASE("bench: a store from before definitions grows after one resume with its own file", "[cli][bench]") {
+    const TempDir dir;
+    const std::string store = dir.file("c.sqlite");
+    const std::string base = "name = \"old\"\nseeds = 1\n[budget]\nevaluations = 100\n"
+                             "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
+                             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";
+    const std::string a = dir.write("a.toml", base);
+    bench_ok({"bench", a, "--jobs", "1", "--out", store});
+    {  // as a store written before definitions were kept
+        Db db(store);
+        REQUIRE(db.query("UPDATE campaign SET budget = NULL; UPDATE problems SET definition = NULL; "
+                         "UPDATE algorithms SET definition = NULL"));
+    }
+    const std::string grown = dir.write("b.toml", replace(base, "seeds = 1", "seeds = 2"));
+    check_input_error(run({"bench", grown, "--jobs", "1", "--out", store}), {store, "before campaigns could grow"});
+    check_summary(bench_ok({"bench", a, "--jobs", "1", "--out", store}), 0, 1, 1, store);  // fills them in
+    check_summary(bench_ok({"bench", grown, "--jobs", "1", "--out", store}), 1, 1, 2, store);
+}
+
 TEST_CASE("bench: grid options that only a run would reject are refused up front", "[cli][bench][errors]") {
     const std::string g = grid_base();
     auto with = [&](const std::string& lines) { return replace(g, "goal = [9, 9]\n", "goal = [9, 9]\n" + lines); };
