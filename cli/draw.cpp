@@ -11,6 +11,8 @@
 
 #include <unistd.h>
 
+#include <fmt/format.h>
+
 #include "framework/error.hpp"
 
 namespace pride::cli {
@@ -62,17 +64,58 @@ void paint_ends(cairo_t* cr, grid::Cell start, grid::Cell goal, double cell) {
     cairo_fill(cr);
 }
 
+constexpr double kLegendLine = 18.0, kLegendPad = 6.0;
+
+struct Rgba {
+    double r, g, b, a;
+};
+const Rgba kStart{0.05, 0.6, 0.15, 1}, kGoal{0.85, 0.1, 0.1, 1}, kFound{0.1, 0.3, 0.9, 1},
+    kOptimal{0.1, 0.65, 0.25, 0.45};
+
+/// A legend entry: a dot (start, goal) or a line swatch, and its words.
+struct Entry {
+    Rgba colour;
+    bool dot;
+    std::string words;
+};
+
+/// The legend under the map (from y = top): one line per entry.
+void paint_legend(cairo_t* cr, const std::vector<Entry>& entries, double top, double width) {
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_rectangle(cr, 0, top, width, legend_height(entries.size()));
+    cairo_fill(cr);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 12.0);
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const Entry& e = entries[i];
+        const double y = top + kLegendPad + kLegendLine * (static_cast<double>(i) + 0.5);
+        cairo_set_source_rgba(cr, e.colour.r, e.colour.g, e.colour.b, e.colour.a);
+        if (e.dot) {
+            cairo_arc(cr, 18, y, 5, 0, 6.283185307179586);
+            cairo_fill(cr);
+        } else {
+            cairo_set_line_width(cr, 4);
+            cairo_move_to(cr, 8, y);
+            cairo_line_to(cr, 28, y);
+            cairo_stroke(cr);
+        }
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        cairo_move_to(cr, 36, y + 4);
+        cairo_show_text(cr, e.words.c_str());
+    }
+}
+
 void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
            const grid::Path* optimal, double cell) {
     paint_map(cr, map, cell);
     if (optimal && !optimal->empty()) {  // underneath, wide and pale, so the found path stays visible
-        cairo_set_source_rgba(cr, 0.1, 0.65, 0.25, 0.45);
+        cairo_set_source_rgba(cr, kOptimal.r, kOptimal.g, kOptimal.b, kOptimal.a);
         cairo_set_line_width(cr, std::max(3.0, cell * 0.55));
         trace_path(cr, *optimal, cell);
         cairo_stroke(cr);
     }
     if (path && !path->empty()) {
-        cairo_set_source_rgb(cr, 0.1, 0.3, 0.9);
+        cairo_set_source_rgb(cr, kFound.r, kFound.g, kFound.b);
         cairo_set_line_width(cr, std::max(1.5, cell * 0.2));
         trace_path(cr, *path, cell);
         cairo_stroke(cr);
@@ -80,15 +123,20 @@ void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell g
     paint_ends(cr, start, goal, cell);
 }
 
+/// The colour of path i of n in a picture of several: from blue (the first) to red (the last).
+Rgba hue(std::size_t i, std::size_t n) {
+    const double t = static_cast<double>(i) / static_cast<double>(std::max<std::size_t>(n, 2) - 1);
+    return {0.1 + 0.8 * t, 0.3 * (1.0 - std::abs(2.0 * t - 1.0)) + 0.1, 0.9 - 0.8 * t, 0.6};
+}
+
 /// Several paths, each in its own hue (from blue for the first to red for the last), half
 /// transparent so that shared stretches show as darker.
 void paint_many(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal,
                 const std::vector<grid::Path>& paths, double cell) {
     paint_map(cr, map, cell);
-    const double n = static_cast<double>(std::max<std::size_t>(paths.size(), 2) - 1);
     for (std::size_t i = 0; i < paths.size(); ++i) {
-        const double t = static_cast<double>(i) / n;
-        cairo_set_source_rgba(cr, 0.1 + 0.8 * t, 0.3 * (1.0 - std::abs(2.0 * t - 1.0)) + 0.1, 0.9 - 0.8 * t, 0.6);
+        const Rgba c = hue(i, paths.size());
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
         cairo_set_line_width(cr, std::max(1.5, cell * 0.18));
         trace_path(cr, paths[i], cell);
         cairo_stroke(cr);
@@ -97,17 +145,26 @@ void paint_many(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::C
 }
 
 template <class Paint>
-void draw(const grid::GridMap& map, const std::string& file, const std::string& shown_as, PictureFormat format,
-          Paint paint_with) {
-    // About 800 pixels on the longer side, cells between 2 and 40 pixels.
+void draw(const grid::GridMap& map, const std::vector<Entry>& legend, const std::string& file,
+          const std::string& shown_as, PictureFormat format, Paint paint_with) {
+    // About 800 pixels on the longer side, cells between 2 and 40 pixels; the legend below, at
+    // least 240 pixels wide so that its words fit beside a small map.
     const double cell = std::clamp(800.0 / std::max(map.width(), map.height()), 2.0, 40.0);
-    const double w = map.width() * cell, h = map.height() * cell;
-    cairo_surface_t* surface =
-        format == PictureFormat::svg
-            ? cairo_svg_surface_create(file.c_str(), w, h)
-            : cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(w), static_cast<int>(h));
+    const double map_w = map.width() * cell, map_h = map.height() * cell;
+    const double w = std::max(map_w, 240.0), h = map_h + legend_height(legend.size());
+    cairo_surface_t* surface = format == PictureFormat::svg
+                                   ? cairo_svg_surface_create(file.c_str(), w, h)
+                                   : cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(std::ceil(w)),
+                                                                static_cast<int>(std::ceil(h)));
     cairo_t* cr = cairo_create(surface);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_save(cr);
+    cairo_rectangle(cr, 0, 0, map_w, map_h);
+    cairo_clip(cr);
     paint_with(cr, cell);
+    cairo_restore(cr);
+    paint_legend(cr, legend, map_h, w);
     cairo_destroy(cr);
     cairo_status_t status = cairo_surface_status(surface);
     if (format == PictureFormat::png && status == CAIRO_STATUS_SUCCESS)
@@ -121,15 +178,36 @@ void draw(const grid::GridMap& map, const std::string& file, const std::string& 
 
 }  // namespace
 
+double legend_height(std::size_t entries) {
+    return entries == 0 ? 0.0 : 2 * kLegendPad + kLegendLine * static_cast<double>(entries);
+}
+
 void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
-               const grid::Path* optimal, const std::string& file, const std::string& shown_as, PictureFormat format) {
-    draw(map, file, shown_as, format,
+               const grid::Path* optimal, const PathLabels& labels, const std::string& file,
+               const std::string& shown_as, PictureFormat format) {
+    std::vector<Entry> legend{{kStart, true, "start"}, {kGoal, true, "goal"}};
+    if (path && !path->empty()) legend.push_back({kFound, false, labels.path});
+    if (optimal && !optimal->empty())
+        legend.push_back({{kOptimal.r, kOptimal.g, kOptimal.b, 0.6}, false, labels.optimal});
+    draw(map, legend, file, shown_as, format,
          [&](cairo_t* cr, double cell) { paint(cr, map, start, goal, path, optimal, cell); });
 }
 
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
-                     const std::string& file, const std::string& shown_as, PictureFormat format) {
-    draw(map, file, shown_as, format, [&](cairo_t* cr, double cell) { paint_many(cr, map, start, goal, paths, cell); });
+                     const std::vector<std::string>& labels, const std::string& file, const std::string& shown_as,
+                     PictureFormat format) {
+    std::vector<Entry> legend{{kStart, true, "start"}, {kGoal, true, "goal"}};
+    // A long front: its first and last paths named, the rest said in one line (colours run in order).
+    const std::size_t n = paths.size(), shown = n > 10 ? 4 : n;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i == shown && n > 10) {
+            legend.push_back({{0, 0, 0, 0}, false, fmt::format("... {} more, their colours in order", n - 2 * shown)});
+            i = n - shown;
+        }
+        legend.push_back({hue(i, n), false, i < labels.size() ? labels[i] : std::string()});
+    }
+    draw(map, legend, file, shown_as, format,
+         [&](cairo_t* cr, double cell) { paint_many(cr, map, start, goal, paths, cell); });
 }
 
 void write_pictures(

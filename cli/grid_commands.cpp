@@ -89,8 +89,11 @@ int path_command(const PathOptions& o, std::ostream& out) {
     if (!o.svg.empty()) pictures.emplace_back(o.svg, PictureFormat::svg);
     if (!o.png.empty()) pictures.emplace_back(o.png, PictureFormat::png);
     write_pictures(pictures, [&](const std::string& file, const std::string& shown_as, PictureFormat format) {
+        PathLabels labels;
+        labels.path = fmt::format("{} ({}): {} {:.6g}", o.algo, run.encoding, spec.objective, run.value);
+        if (run.optimum) labels.optimal = fmt::format("exact optimum: {} {:.6g}", spec.objective, *run.optimum);
         draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.path : nullptr,
-                  o.oracle ? &run.optimal_path : nullptr, file, shown_as, format);
+                  o.oracle ? &run.optimal_path : nullptr, labels, file, shown_as, format);
     });
 
     if (o.json) {

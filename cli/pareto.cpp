@@ -47,9 +47,18 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
     if (!o.svg.empty()) pictures.emplace_back(o.svg, PictureFormat::svg);
     if (!o.png.empty()) pictures.emplace_back(o.png, PictureFormat::png);
     std::vector<grid::Path> paths;
-    for (const auto& p : front) paths.push_back(p.path);
+    std::vector<std::string> labels;  // the point's objectives, as asked for
+    for (const auto& p : front) {
+        paths.push_back(p.path);
+        std::string words;
+        for (const auto& n : names)
+            words += (words.empty() ? "" : ", ") + (n == "length"  ? fmt::format("length {:.6g}", p.length)
+                                                    : n == "turns" ? fmt::format("turns {}", p.turns)
+                                                                   : fmt::format("angle penalty {}", p.angle_penalty));
+        labels.push_back(words);
+    }
     write_pictures(pictures, [&](const std::string& file, const std::string& shown_as, PictureFormat format) {
-        draw_grid_paths(*map, start, goal, paths, file, shown_as, format);
+        draw_grid_paths(*map, start, goal, paths, labels, file, shown_as, format);
     });
 
     std::string text;

@@ -945,3 +945,37 @@ TEST_CASE("cli grid: an unwritable picture is an input error that writes nothing
         CHECK(fs::is_empty(dir.path() / "folder"));
     }
 }
+
+TEST_CASE("cli grid: pictures carry a legend under the map", "[cli][grid][draw]") {
+    // The PNG's size from its IHDR chunk (big-endian width and height at bytes 16 and 20).
+    auto size = [](const std::string& png) {
+        REQUIRE(png.size() > 24);
+        auto be32 = [&](std::size_t at) {
+            return (static_cast<unsigned>(static_cast<unsigned char>(png[at])) << 24) |
+                   (static_cast<unsigned>(static_cast<unsigned char>(png[at + 1])) << 16) |
+                   (static_cast<unsigned>(static_cast<unsigned char>(png[at + 2])) << 8) |
+                   static_cast<unsigned>(static_cast<unsigned char>(png[at + 3]));
+        };
+        return std::make_pair(be32(16), be32(20));
+    };
+    const TempDir dir;
+    // A 40 x 40 map at 20 pixels a cell (800 x 800), then the legend: start, goal, the path and
+    // the optimum, 18 pixels a line and 6 above and below: 84.
+    REQUIRE(run_pride("path --map " PRIDE_SOURCE_DIR "/examples/maps/file002-40x40.map --start 1,38 --goal 38,1 "
+                      "--algo ga --encoding chain --objective length --oracle --png " +
+                      dir.file("p.png"))
+                .status == 0);
+    CHECK(size(slurp(dir.file("p.png"))) == std::make_pair(800u, 884u));
+    // Without --oracle, no optimum line: 66.
+    REQUIRE(run_pride("path --map " PRIDE_SOURCE_DIR "/examples/maps/file002-40x40.map --start 1,38 --goal 38,1 "
+                      "--algo astar --png " +
+                      dir.file("a.png"))
+                .status == 0);
+    CHECK(size(slurp(dir.file("a.png"))) == std::make_pair(800u, 866u));
+    // A Pareto front of 5 points on a 20 x 20 map: start, goal and one line per point.
+    REQUIRE(run_pride("pareto --map " PRIDE_SOURCE_DIR "/examples/maps/file002-20x20.map --start 0,19 --goal 19,0 "
+                      "--objectives length,turns --png " +
+                      dir.file("f.png"))
+                .status == 0);
+    CHECK(size(slurp(dir.file("f.png"))) == std::make_pair(800u, 800u + 12u + 18u * 7u));
+}
