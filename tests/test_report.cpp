@@ -593,6 +593,11 @@ TEST_CASE("report: md table with best and star markers and the Friedman ranks", 
         "Friedman average ranks over 3 problems (1 = best; median values): ga 2, nlopt_sbplx 1.83, pso 2.17; "
         "chi-squared 0.2, p = 0.905";
     CHECK(std::count(lines.begin(), lines.end(), friedman) == 1);
+    // The pairs: se = sqrt(3 x 4 / (6 x 3)) = 0.8165; |z| = 0.204, 0.204, 0.408 (p = 0.838, 0.838,
+    // 0.683), all Holm-corrected to 1.
+    CHECK(std::count(lines.begin(), lines.end(),
+                     "Pairs (z-test on the average ranks, Holm over 3 pairs; Demsar 2006): ga vs nlopt_sbplx p = 1; "
+                     "ga vs pso p = 1; nlopt_sbplx vs pso p = 1") == 1);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -97,3 +97,22 @@ TEST_CASE("statistics: Vargha-Delaney A from scipy's Mann-Whitney U and by hand"
     CHECK(vargha_delaney_a(std::vector<double>{0}, std::vector<double>{1, 2}) == 1.0);
     CHECK(std::isnan(vargha_delaney_a(std::vector<double>{}, std::vector<double>{1})));
 }
+
+TEST_CASE("statistics: Friedman post-hoc pairs, by hand and against scipy's normal", "[statistics]") {
+    // k = 3 over N = 10 blocks: se = sqrt(3 x 4 / 60) = sqrt(0.2). Ranks 1.5, 2, 2.5: z = -1.118,
+    // -2.236, -1.118; scipy.stats.norm.sf gives p = 0.2635524772829727 and 0.025347318677468252.
+    const std::vector<double> ranks{1.5, 2.0, 2.5};
+    const auto pairs = pride::stats::friedman_pairs(ranks, 10);
+    REQUIRE(pairs.size() == 3);
+    CHECK(pairs[0].a == 0);
+    CHECK(pairs[0].b == 1);
+    CHECK(pairs[1].b == 2);
+    CHECK(pairs[1].z == Approx(-2.23606797749979).epsilon(1e-12));
+    CHECK(pairs[0].p == Approx(0.2635524772829727).epsilon(1e-12));
+    CHECK(pairs[1].p == Approx(0.025347318677468252).epsilon(1e-12));
+    CHECK(pairs[2].p == Approx(0.2635524772829727).epsilon(1e-12));
+    // Holm over 3: 3 x 0.02535 = 0.07604; then 2 x 0.26355 = 0.5271 for both others.
+    CHECK(pairs[1].p_holm == Approx(3 * 0.025347318677468252).epsilon(1e-12));
+    CHECK(pairs[0].p_holm == Approx(2 * 0.2635524772829727).epsilon(1e-12));
+    CHECK(pairs[2].p_holm == Approx(2 * 0.2635524772829727).epsilon(1e-12));
+}

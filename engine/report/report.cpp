@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <tuple>
 #include <numeric>
 #include <set>
+#include <tuple>
 
 #include "framework/error.hpp"
 
@@ -168,6 +168,15 @@ std::string render_table(const ReportData& report, bool md) {
             text += fmt::format(" {} {:.3g}{}", f->algorithms[j], f->test.average_ranks[j],
                                 j + 1 < f->algorithms.size() ? "," : "");
         text += fmt::format("; chi-squared {:.4g}, p = {:.3g}\n", f->test.statistic, f->test.p_value);
+        text += md ? "\nPairs (z-test on the average ranks, Holm over "
+                   : "% Pairs (z-test on the average ranks, Holm over ";
+        text += fmt::format("{} pairs; Demsar 2006):", f->pairs.size());
+        for (std::size_t i = 0; i < f->pairs.size(); ++i) {
+            const auto& q = f->pairs[i];
+            text += fmt::format(" {} vs {} p = {:.3g}{}{}", f->algorithms[q.a], f->algorithms[q.b], q.p_holm,
+                                q.p_holm < 0.05 ? "*" : "", i + 1 < f->pairs.size() ? ";" : "");
+        }
+        text += "\n";
     }
     if (report.coco) text += render_ert(*report.coco, md);
     return text;
@@ -402,7 +411,8 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
             for (const auto& a : algorithms) block.push_back(median_of(by_algorithm.at(a).best));
             blocks.push_back(block);
         }
-        report.friedman = FriedmanSummary{algorithms, cells.size(), stats::friedman(blocks)};
+        report.friedman = FriedmanSummary{algorithms, cells.size(), stats::friedman(blocks), {}};
+        report.friedman->pairs = stats::friedman_pairs(report.friedman->test.average_ranks, cells.size());
     }
     return report;
 }
@@ -487,12 +497,11 @@ std::string render_csv(const ReportData& report) {
                                     : "\n";
     const auto optional = [](const std::optional<double>& v) { return v ? exact(*v) : std::string(); };
     for (const auto& r : report.rows) {
-        text +=
-            fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm), r.runs,
-                        exact(r.min), exact(r.mean), exact(r.std), exact(r.median), exact(r.max), exact(r.mean_wall_ms),
-                        exact(r.mean_evaluations), optional(r.optimum), optional(r.mean_gap), optional(r.success),
-                        optional(r.p_holm), r.best ? 1 : 0, optional(r.f_opt), r.precision ? "precision" : "value",
-                        optional(r.a12));
+        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm),
+                            r.runs, exact(r.min), exact(r.mean), exact(r.std), exact(r.median), exact(r.max),
+                            exact(r.mean_wall_ms), exact(r.mean_evaluations), optional(r.optimum), optional(r.mean_gap),
+                            optional(r.success), optional(r.p_holm), r.best ? 1 : 0, optional(r.f_opt),
+                            r.precision ? "precision" : "value", optional(r.a12));
         if (report.target_precision)
             text +=
                 fmt::format(",{},{},{},{}\n", r.f_opt ? exact(*r.f_opt + *report.target_precision) : "",

@@ -40,7 +40,8 @@ struct ReportRow {
 struct FriedmanSummary {
     std::vector<std::string> algorithms;
     std::size_t problems = 0;
-    stats::FriedmanTest test;  // average_ranks in the order of `algorithms`
+    stats::FriedmanTest test;            // average_ranks in the order of `algorithms`
+    std::vector<stats::RankPair> pairs;  // every pair's post-hoc test (Demsar 2006), Holm-corrected
 };
 
 /// How a report reads the runs.

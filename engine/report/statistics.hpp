@@ -148,4 +148,35 @@ inline FriedmanTest friedman(const std::vector<std::vector<double>>& blocks) {
     return result;
 }
 
+/// One pair of treatments after Friedman's test: the z statistic of their average ranks' difference
+/// and its two-sided p-value, raw and Holm-corrected over all pairs.
+struct RankPair {
+    std::size_t a = 0, b = 0;  // a < b, indices of the treatments
+    double z = 0, p = 1, p_holm = 1;
+};
+
+/// The post-hoc comparison of every pair after Friedman's test (Demsar 2006, "Statistical
+/// comparisons of classifiers over multiple data sets", JMLR 7, section 3.2.2; Garcia and Herrera
+/// 2008): z = (R_a - R_b) / sqrt(k (k + 1) / (6 N)) for k treatments over N blocks, p from the
+/// normal distribution, Holm's correction over the k (k - 1) / 2 pairs.
+inline std::vector<RankPair> friedman_pairs(std::span<const double> average_ranks, std::size_t blocks) {
+    const std::size_t k = average_ranks.size();
+    require(k >= 2 && blocks >= 1, "Friedman post-hoc", "needs two treatments and a block");
+    const double kk = static_cast<double>(k);
+    const double se = std::sqrt(kk * (kk + 1.0) / (6.0 * static_cast<double>(blocks)));
+    const boost::math::normal normal;
+    std::vector<RankPair> pairs;
+    std::vector<double> p;
+    for (std::size_t a = 0; a < k; ++a)
+        for (std::size_t b = a + 1; b < k; ++b) {
+            RankPair r{a, b, (average_ranks[a] - average_ranks[b]) / se, 1, 1};
+            r.p = std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(normal, std::abs(r.z))));
+            pairs.push_back(r);
+            p.push_back(r.p);
+        }
+    const auto adjusted = holm(p);
+    for (std::size_t i = 0; i < pairs.size(); ++i) pairs[i].p_holm = adjusted[i];
+    return pairs;
+}
+
 }  // namespace pride::stats

@@ -247,11 +247,17 @@ py::dict report_data(const std::vector<std::string>& paths, bool raw) {
                      py::arg("f_opt") = optional_number(x.f_opt), py::arg("precision") = x.precision,
                      py::arg("a12") = optional_number(x.a12)));
     py::object friedman = py::none();
-    if (r.friedman)
-        friedman =
-            py::dict(py::arg("algorithms") = r.friedman->algorithms, py::arg("problems") = r.friedman->problems,
-                     py::arg("average_ranks") = r.friedman->test.average_ranks,
-                     py::arg("statistic") = r.friedman->test.statistic, py::arg("p_value") = r.friedman->test.p_value);
+    if (r.friedman) {
+        py::list pairs;
+        for (const auto& q : r.friedman->pairs)
+            pairs.append(py::dict(py::arg("a") = r.friedman->algorithms[q.a],
+                                  py::arg("b") = r.friedman->algorithms[q.b], py::arg("z") = q.z, py::arg("p") = q.p,
+                                  py::arg("p_holm") = q.p_holm));
+        friedman = py::dict(py::arg("algorithms") = r.friedman->algorithms, py::arg("problems") = r.friedman->problems,
+                            py::arg("average_ranks") = r.friedman->test.average_ranks,
+                            py::arg("statistic") = r.friedman->test.statistic,
+                            py::arg("p_value") = r.friedman->test.p_value, py::arg("pairs") = pairs);
+    }
     return py::dict(py::arg("campaign") = r.campaign, py::arg("target") = optional_number(r.target),
                     py::arg("rows") = rows, py::arg("friedman") = friedman,
                     py::arg("markdown") = report::render_markdown(r), py::arg("csv") = report::render_csv(r));
