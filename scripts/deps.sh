@@ -3,7 +3,7 @@
 # Idempotent: when everything is present it runs no apt command and returns at once.
 # Usage: scripts/deps.sh [--bench]   (--bench adds libpagmo-dev for the side-by-side benchmark)
 set -euo pipefail
-packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libnlopt-cxx-dev catch2 libfmt-dev libcli11-dev libcairo2-dev libboost-dev libtomlplusplus-dev libsqlite3-dev sqlite3 python3-matplotlib libopenmpi-dev openmpi-bin python3-dev pybind11-dev python3-numpy python3-pytest python3-pandas)
+packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libnlopt-cxx-dev catch2 libfmt-dev libcli11-dev libcairo2-dev libfontconfig-dev libboost-dev libtomlplusplus-dev libsqlite3-dev sqlite3 python3-matplotlib libopenmpi-dev openmpi-bin python3-dev pybind11-dev python3-numpy python3-pytest python3-pandas)
 # The libFuzzer targets (fuzz/, scripts/fuzz.sh, .ci/run): clang with its libFuzzer runtime.
 packages+=(clang libfuzzer-14-dev)
 [[ "${1:-}" == "--bench" ]] && packages+=(libpagmo-dev)
