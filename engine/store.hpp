@@ -10,13 +10,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <algorithm>
 #include <iterator>
 #include <map>
 #include <optional>
@@ -27,8 +27,8 @@
 
 #include "engine/campaign.hpp"
 #include "engine/json.hpp"
-#include "engine/store_schema.hpp"
 #include "engine/registry.hpp"
+#include "engine/store_schema.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 
@@ -118,9 +118,10 @@ class Store {
         if (const int version = user_version(); version > store_schema) {
             sqlite3_close(db_);
             db_ = nullptr;
-            throw InputError(fmt::format("{}: was written by a newer pride (store schema {}; this pride knows 0 to "
-                                         "{}); use that pride, or another store file",
-                                         path, version, store_schema));
+            throw InputError(
+                fmt::format("{}: was written by a newer pride (store schema {}; this pride knows 0 to "
+                            "{}); use that pride, or another store file",
+                            path, version, store_schema));
         }
         // A new store is made without waiting for the disk (five syncs, 15-30 ms that every
         // campaign paid before its first run): a kill cannot hurt it either way, and a power cut
@@ -163,8 +164,7 @@ class Store {
             add_column("problems", "definition", "TEXT");
             add_column("algorithms", "definition", "TEXT");
             // Written only when it changes: a store that needs nothing is not touched (its bytes stay).
-            if (user_version() != store_schema)
-                exec(fmt::format("PRAGMA user_version = {}", store_schema).c_str());
+            if (user_version() != store_schema) exec(fmt::format("PRAGMA user_version = {}", store_schema).c_str());
             add_column("problems", "function", "TEXT");
             add_column("problems", "instance", "INTEGER NOT NULL DEFAULT 0");
             add_column("problems", "f_opt", "REAL");
@@ -394,7 +394,8 @@ class Store {
     /// are new runs. The campaign's text and report target become the new file's; the problems
     /// and algorithms it adds are recorded. Anything else is refused, naming what differs.
     void grow(const Campaign& c, const std::string& stored_name) {
-        const std::string refuse = "; a campaign grows by seeds, problems and algorithms only (choose another store file)";
+        const std::string refuse =
+            "; a campaign grows by seeds, problems and algorithms only (choose another store file)";
         if (stored_name != c.name)
             throw InputError(path_ + ": holds the results of another campaign ('" + stored_name + "', not '" + c.name +
                              "'); choose another store file");
@@ -404,7 +405,8 @@ class Store {
             budget = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
         sqlite3_finalize(s);
         const auto problems = definitions("problems"), algorithms = definitions("algorithms");
-        const bool old = !budget || std::any_of(problems.begin(), problems.end(), [](const auto& p) { return !p.second; }) ||
+        const bool old = !budget ||
+                         std::any_of(problems.begin(), problems.end(), [](const auto& p) { return !p.second; }) ||
                          std::any_of(algorithms.begin(), algorithms.end(), [](const auto& a) { return !a.second; });
         if (old)
             throw InputError(path_ + ": holds the results of another campaign ('" + stored_name +
@@ -446,20 +448,15 @@ class Store {
         s = prepare("UPDATE campaign SET budget = ? WHERE budget IS NULL");
         sqlite3_bind_text(s, 1, budget.c_str(), -1, SQLITE_TRANSIENT);
         step_done(s, "cannot write the store");
-        for (const auto& p : c.problems) {
-            const std::string d = problem_definition(p);
-            s = prepare("UPDATE problems SET definition = ? WHERE id = ? AND definition IS NULL");
-            sqlite3_bind_text(s, 1, d.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_text(s, 2, p.id.c_str(), -1, SQLITE_TRANSIENT);
-            step_done(s, "cannot write the store");
-        }
-        for (const auto& a : c.algorithms) {
-            const std::string d = algorithm_definition(a);
-            s = prepare("UPDATE algorithms SET definition = ? WHERE id = ? AND definition IS NULL");
-            sqlite3_bind_text(s, 1, d.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_text(s, 2, a.id.c_str(), -1, SQLITE_TRANSIENT);
-            step_done(s, "cannot write the store");
-        }
+        const auto define = [&](const char* table, const std::string& id, const std::string& definition) {
+            sqlite3_stmt* u = prepare(
+                (std::string("UPDATE ") + table + " SET definition = ? WHERE id = ? AND definition IS NULL").c_str());
+            sqlite3_bind_text(u, 1, definition.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(u, 2, id.c_str(), -1, SQLITE_TRANSIENT);
+            step_done(u, "cannot write the store");
+        };
+        for (const auto& p : c.problems) define("problems", p.id, problem_definition(p));
+        for (const auto& a : c.algorithms) define("algorithms", a.id, algorithm_definition(a));
     }
 
     static void bind_optional(sqlite3_stmt* s, int i, const std::optional<double>& v) {
@@ -471,14 +468,12 @@ class Store {
 
     void record(const Campaign& c) {
         sqlite3_stmt* s = prepare(
-            "INSERT INTO campaign (id, name, text, target, precisions, target_precision, budget) VALUES (1, ?, ?, ?, ?, "
+            "INSERT INTO campaign (id, name, text, target, precisions, target_precision, budget) VALUES (1, ?, ?, ?, "
+            "?, "
             "?, ?)");
         sqlite3_bind_text(s, 1, c.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, c.text.c_str(), -1, SQLITE_TRANSIENT);
-        if (c.target)
-            sqlite3_bind_double(s, 3, *c.target);
-        else
-            sqlite3_bind_null(s, 3);
+        bind_optional(s, 3, c.target);
         const std::string precisions = json_array(coco_precisions());
         sqlite3_bind_text(s, 4, precisions.c_str(), -1, SQLITE_TRANSIENT);
         bind_optional(s, 5, c.target_precision);
@@ -569,10 +564,7 @@ class Store {
         sqlite3_bind_int64(s, 6, r.evaluations);
         sqlite3_bind_int64(s, 7, r.iterations);
         sqlite3_bind_double(s, 8, r.wall_ms);
-        if (r.optimum)
-            sqlite3_bind_double(s, 9, *r.optimum);
-        else
-            sqlite3_bind_null(s, 9);
+        bind_optional(s, 9, r.optimum);
         // SQLITE_STATIC: the record outlives the step (no copy of the long JSON texts).
         sqlite3_bind_text(s, 10, r.solution.c_str(), -1, SQLITE_STATIC);
         sqlite3_bind_text(s, 11, r.history.c_str(), -1, SQLITE_STATIC);

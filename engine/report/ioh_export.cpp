@@ -19,12 +19,6 @@
 namespace pride::report {
 namespace {
 
-/// A name as a file name: anything but letters, digits, '-' and '.' becomes '_', and a leading
-/// '.' too (no "..", no hidden file).
-std::string safe(const std::string& name) {
-    return engine::file_name(name);
-}
-
 /// One folder name per algorithm id, each a safe file name, no two alike: an id that is a safe
 /// name already keeps it; one that had to change gets a hash of the id (FNV-1a) after it, so
 /// that "a/b" and "a_b" never share a folder; a clash left over (or the same name in another
@@ -38,16 +32,16 @@ std::map<std::string, std::string> folder_names(const std::vector<std::string>& 
     std::set<std::string> used;  // lower case
     std::vector<std::string> changed;
     for (const auto& id : ids)
-        if (safe(id) == id && used.insert(lower(id)).second)
+        if (engine::file_name(id) == id && used.insert(lower(id)).second)
             out[id] = id;
         else
             changed.push_back(id);
     for (const auto& id : changed) {
         std::uint64_t h = 1469598103934665603ull;
         for (const unsigned char c : id) h = (h ^ c) * 1099511628211ull;
-        std::string name = fmt::format("{}-{:08x}", safe(id), static_cast<std::uint32_t>(h ^ (h >> 32)));
+        std::string name = fmt::format("{}-{:08x}", engine::file_name(id), static_cast<std::uint32_t>(h ^ (h >> 32)));
         for (int k = 2; !used.insert(lower(name)).second; ++k)
-            name = fmt::format("{}-{:08x}-{}", safe(id), static_cast<std::uint32_t>(h ^ (h >> 32)), k);
+            name = fmt::format("{}-{:08x}-{}", engine::file_name(id), static_cast<std::uint32_t>(h ^ (h >> 32)), k);
         out[id] = name;
     }
     return out;
@@ -138,7 +132,7 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
         std::filesystem::create_directories(dir, ec);
         require(!ec, dir.string(), "cannot create the folder");
         for (const auto& [key, fn] : functions) {
-            const std::string stem = fmt::format("f{}_{}", fn.id, safe(fn.name));
+            const std::string stem = fmt::format("f{}_{}", fn.id, engine::file_name(fn.name));
             const std::string data_folder = "data_" + stem;
             std::filesystem::create_directories(dir / data_folder, ec);
             require(!ec, (dir / data_folder).string(), "cannot create the folder");
