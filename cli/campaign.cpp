@@ -12,8 +12,8 @@
 #include <ostream>
 #include <thread>
 
-#include "engine/campaign.hpp"
-#include "engine/campaign_toml.hpp"
+#include "experiment/campaign.hpp"
+#include "experiment/campaign_toml.hpp"
 
 namespace pride::cli {
 namespace {

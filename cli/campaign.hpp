@@ -1,6 +1,6 @@
 #pragma once
 // `pride bench CONFIG.toml [--jobs N] [--out STORE]`: a campaign file run into an SQLite store by
-// the engine (engine/campaign.hpp); this is only the command's parsing and printing.
+// the engine (experiment/campaign.hpp); this is only the command's parsing and printing.
 #include <cstdint>
 #include <iosfwd>
 #include <optional>

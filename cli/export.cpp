@@ -4,7 +4,7 @@
 
 #include <ostream>
 
-#include "engine/report/ioh_export.hpp"
+#include "experiment/report/ioh_export.hpp"
 #include "framework/error.hpp"
 
 namespace pride::cli {

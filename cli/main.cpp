@@ -19,7 +19,7 @@
 #include "cli/grid_commands.hpp"
 #include "cli/pareto.hpp"
 #include "cli/report.hpp"
-#include "engine/merge.hpp"
+#include "experiment/merge.hpp"
 #include "cli/roughset.hpp"
 #include "engine/registry.hpp"
 #include "framework/error.hpp"

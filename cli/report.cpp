@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/report/report.hpp"
+#include "experiment/report/report.hpp"
 #include "framework/error.hpp"
 
 namespace pride::cli {
@@ -22,7 +22,7 @@ std::string shell_quote(const std::string& text) {
 
 /// Runs scripts/plot_campaign.py with Debian's python3 (the one python3-matplotlib serves), and
 /// with the campaign's precisions scripts/plot_ecdf.py on the ECDF curves computed here
-/// (engine/report/coco.hpp), written to DIR/ecdf.json, so the plots and the tables share one
+/// (experiment/report/coco.hpp), written to DIR/ecdf.json, so the plots and the tables share one
 /// definition.
 /// Runs `python script args...`, its standard error kept aside: nothing of it is shown on
 /// success (library warnings), its last line on failure (the scripts print one line).
@@ -50,7 +50,7 @@ void run_script(const std::string& python, const std::string& script, const std:
 
 /// Runs scripts/plot_campaign.py with Debian's python3 (the one python3-matplotlib serves), and
 /// with the campaign's precisions scripts/plot_ecdf.py on the ECDF curves computed here
-/// (engine/report/coco.hpp), written to DIR/ecdf.json, so the plots and the tables share one
+/// (experiment/report/coco.hpp), written to DIR/ecdf.json, so the plots and the tables share one
 /// definition.
 void plot(const std::string& store, const std::string& folder, const report::ReportData& data) {
     std::error_code ec;

@@ -1,6 +1,6 @@
 # `cmake --install`: the headers under include/pride/ (paths as in the tree, so "engine/run.hpp"
 # reads the same inside and outside), the static libraries, the `pride` command, and a CMake
-# package: find_package(pride) gives pride::engine, pride::framework, pride::algorithms,
+# package: find_package(pride) gives pride::engine, pride::experiment (campaigns), pride::framework, pride::algorithms,
 # pride::problems, pride::grid, pride::bbob, pride::roughset (and pride::report or pride::statistics, whichever
 # this tree has). pride_cli_lib is the command's own code, not a library for others: not exported.
 include(GNUInstallDirs)
@@ -9,7 +9,7 @@ include(CMakePackageConfigHelpers)
 set(PRIDE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/pride)
 
 set(pride_exported pride_framework pride_roughset pride_bbob pride_continuous pride_problems pride_grid pride_algorithms
-                   pride_engine)
+                   pride_engine pride_experiment)
 set(PRIDE_NEEDS_BOOST OFF)
 foreach(t IN ITEMS pride_report pride_statistics)
   if(TARGET ${t})
@@ -38,11 +38,11 @@ install(TARGETS pride RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # Headers only (engine/algorithms/ holds registration sources, nothing to include). The prefix is
 # include/pride, as the targets' $<INSTALL_INTERFACE:include/pride> says.
-install(DIRECTORY framework roughset problems algorithms engine
+install(DIRECTORY framework roughset problems algorithms engine experiment
         DESTINATION include/pride
         FILES_MATCHING PATTERN "*.hpp"
         REGEX "/engine/algorithms$" EXCLUDE
-        REGEX "/engine/store.hpp$" EXCLUDE)  # the campaign runner's own, not an interface
+        REGEX "/experiment/store.hpp$" EXCLUDE)  # the campaign runner's own, not an interface
 
 set(PRIDE_CONFIG_MPI OFF)  # MPI is a dependency only when pride_engine was built with it
 if(PRIDE_MPI)

@@ -1,11 +1,11 @@
-// Campaign files through the whole campaign check of `pride bench` (engine/campaign_toml.hpp:
+// Campaign files through the whole campaign check of `pride bench` (experiment/campaign_toml.hpp:
 // read_campaign, which parses the TOML, checks every key and prepares every problem and
 // algorithm), not only toml++. The file is written to SCRATCH/campaigns/, beside a copy of the
 // bundled maps in SCRATCH/maps/, so that the examples' `map = "../maps/..."` resolve and the grid
 // problems of the seeds are prepared too.
 #include <filesystem>
 
-#include "engine/campaign_toml.hpp"
+#include "experiment/campaign_toml.hpp"
 #include "engine/registry.hpp"
 #include "fuzz/fuzz_support.hpp"
 #include "problems/grid/rough_rules.hpp"

@@ -1,11 +1,11 @@
-// Campaign stores as `pride report` and `pride export --ioh` read them (engine/report): the input
+// Campaign stores as `pride report` and `pride export --ioh` read them (experiment/report): the input
 // bytes are the SQLite file, so tampered, truncated and foreign databases all come through here.
 // Each is loaded and checked (report::load_report), rendered in every format the report has, and
 // exported to IOHprofiler files in the scratch folder.
 #include <filesystem>
 
-#include "engine/report/ioh_export.hpp"
-#include "engine/report/report.hpp"
+#include "experiment/report/ioh_export.hpp"
+#include "experiment/report/report.hpp"
 #include "fuzz/fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

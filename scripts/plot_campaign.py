@@ -38,7 +38,7 @@ def read_map(path):
 
 
 def safe(name):
-    """An id as a file name, as engine/campaign.hpp's file_name(): per character, and a leading '.'."""
+    """An id as a file name, as experiment/campaign.hpp's file_name(): per character, and a leading '.'."""
     keep = set(b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789.-")
     s = "".join(chr(b) if b in keep else "_" for b in (name or "_").encode())  # per byte, as C++
     return "_" + s[1:] if s.startswith(".") else s

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """ECDF plots of runtimes, COCO style (called by `pride report --plots DIR`, docs/analysis.md).
 
-Reads the ECDF curves that pride computed (engine/report/coco.hpp, written as DIR/ecdf.json, so
+Reads the ECDF curves that pride computed (experiment/report/coco.hpp, written as DIR/ecdf.json, so
 that the plots and the ERT tables share one definition) and draws, per group ("all", then each
 BBOB function group present), one line per algorithm: the fraction of (run, target) pairs
 reached against log10(evaluations / dimension), with a cross at the largest budget of the runs.

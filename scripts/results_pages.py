@@ -26,7 +26,7 @@ y the row from the top). CAMPAIGN.csv is written from the SQLite store `pride be
 every statistic computed here from it is checked against `pride report --format csv` of that store
 before anything is written.
 
-Statistics (the same formulas as engine/report/statistics.hpp, which tests/test_statistics.cpp
+Statistics (the same formulas as experiment/report/statistics.hpp, which tests/test_statistics.cpp
 checks against scipy): the two-sided Wilcoxon rank-sum test (Mann-Whitney U, normal approximation
 with tie and continuity corrections), Holm's step-down correction, Kruskal-Wallis's H (tie-corrected,
 chi-squared with k - 1 degrees of freedom) and Fisher's exact test (two-sided, 2 x 2).
@@ -189,7 +189,7 @@ def _ids(text, table):
 
 
 # ---------------------------------------------------------------------------------------------
-# Statistics (engine/report/statistics.hpp's formulas)
+# Statistics (experiment/report/statistics.hpp's formulas)
 
 def mean(xs):
     xs = list(xs)
@@ -342,7 +342,7 @@ def star(p):
 def report_rows(runs):
     """pride report's statistics per (problem, algorithm): mean, median, std, min, optimal share and
     the Holm-corrected rank-sum p against the algorithm with the lowest median (ties: lowest mean;
-    then the first by name), as engine/report/report.cpp computes them. {problem: {algorithm: dict}}"""
+    then the first by name), as experiment/report/report.cpp computes them. {problem: {algorithm: dict}}"""
     cells = {}
     for r in runs:
         cells.setdefault(r.problem, {}).setdefault(r.algorithm, []).append(r)

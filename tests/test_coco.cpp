@@ -1,4 +1,4 @@
-// COCO-style analysis (engine/report/coco.hpp, docs/analysis.md): ERT and runtime ECDFs worked by
+// COCO-style analysis (experiment/report/coco.hpp, docs/analysis.md): ERT and runtime ECDFs worked by
 // hand; stores with the suite columns (campaign.precisions; problems.function, instance, f_opt,
 // suite, fid; runs.target_hits) written here with sqlite3 and read back, rendered by `pride
 // report` (md, csv, latex) and plotted by `pride report --plots`; stores without them; the
@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/report/coco.hpp"
-#include "engine/report/report.hpp"
-#include "engine/report/store.hpp"
+#include "experiment/report/coco.hpp"
+#include "experiment/report/report.hpp"
+#include "experiment/report/store.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 

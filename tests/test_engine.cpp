@@ -10,7 +10,7 @@
 
 #include "algorithms/ga.hpp"
 #include "algorithms/pso.hpp"
-#include "engine/campaign.hpp"
+#include "experiment/campaign.hpp"
 #include "engine/params.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"

@@ -9,10 +9,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/numbers.hpp"
-#include "engine/campaign_toml.hpp"
+#include "experiment/campaign_toml.hpp"
 #include "engine/params.hpp"
-#include "engine/report/ioh_export.hpp"
-#include "engine/report/report.hpp"
+#include "experiment/report/ioh_export.hpp"
+#include "experiment/report/report.hpp"
 #include "problems/grid/map_io.hpp"
 #include "roughset/roughset.hpp"
 #include "tests/test_support.hpp"

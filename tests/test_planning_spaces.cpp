@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/campaign.hpp"
-#include "engine/campaign_toml.hpp"
+#include "experiment/campaign.hpp"
+#include "experiment/campaign_toml.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
 #include "framework/error.hpp"

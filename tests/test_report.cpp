@@ -1,4 +1,4 @@
-// Tests of `pride report STORE [--format md|csv|latex]` (cli/report.cpp over engine/report/) as a
+// Tests of `pride report STORE [--format md|csv|latex]` (cli/report.cpp over experiment/report/) as a
 // user runs it: a store written here with sqlite3 (the schema of cli/campaign.cpp) and hand-chosen
 // values, every CSV column checked against values computed independently below; the markdown and
 // LaTeX tables; the errors; and `pride bench` followed by `pride report` end to end.
@@ -192,8 +192,8 @@ const std::vector<StoredRun> kRuns = {
 };
 
 // ---------------------------------------------------------------------------------------------
-// The expected report, computed here independently of engine/report/report.cpp and
-// engine/report/statistics.hpp
+// The expected report, computed here independently of experiment/report/report.cpp and
+// experiment/report/statistics.hpp
 
 double mean(const std::vector<double>& v) {
     double s = 0;

@@ -1,4 +1,4 @@
-// Campaign stores read back by engine/report: the CSV of `pride report` holds every number as the
+// Campaign stores read back by experiment/report: the CSV of `pride report` holds every number as the
 // double it is (checked against the store read here with sqlite3, and against the library's
 // ReportData), and a damaged store (malformed JSON, values of the wrong kind, missing tables or
 // columns, corrupt pages) is bad input for `pride report` and `pride export`: exit 2, one line.
@@ -19,8 +19,8 @@
 #include <utility>
 #include <vector>
 
-#include "engine/report/report.hpp"
-#include "engine/report/store.hpp"
+#include "experiment/report/report.hpp"
+#include "experiment/report/store.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 

@@ -1,11 +1,11 @@
-// The statistics of engine/report/statistics.hpp against scipy 1.10.1 (Debian's python3-scipy) on
+// The statistics of experiment/report/statistics.hpp against scipy 1.10.1 (Debian's python3-scipy) on
 // fixed data; scripts/statistics_reference.py prints the values hard-coded here.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <vector>
 
-#include "engine/report/statistics.hpp"
+#include "experiment/report/statistics.hpp"
 #include "framework/error.hpp"
 
 namespace {

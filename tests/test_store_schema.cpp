@@ -1,11 +1,11 @@
-// The store's schema version (engine/store_schema.hpp): written by pride bench, and a store from a
+// The store's schema version (experiment/store_schema.hpp): written by pride bench, and a store from a
 // newer pride refused by bench, report and export alike, one line naming the store and both versions.
 #include <sqlite3.h>
 #include <catch2/catch.hpp>
 
 #include <string>
 
-#include "engine/store_schema.hpp"
+#include "experiment/store_schema.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/campaign.hpp"
-#include "engine/campaign_toml.hpp"
+#include "experiment/campaign.hpp"
+#include "experiment/campaign_toml.hpp"
 #include "tests/test_support.hpp"
 
 using Catch::Matchers::Contains;

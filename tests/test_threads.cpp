@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "engine/campaign_toml.hpp"
+#include "experiment/campaign_toml.hpp"
 #include "engine/run.hpp"
 #include "framework/parallel.hpp"
 #include "tests/cli_runner.hpp"

@@ -8,10 +8,10 @@
 #include <set>
 
 #include "common.hpp"
-#include "engine/campaign.hpp"
-#include "engine/campaign_toml.hpp"
-#include "engine/report/report.hpp"
-#include "engine/report/store.hpp"
+#include "experiment/campaign.hpp"
+#include "experiment/campaign_toml.hpp"
+#include "experiment/report/report.hpp"
+#include "experiment/report/store.hpp"
 
 namespace pride::python {
 

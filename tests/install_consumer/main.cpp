@@ -6,6 +6,7 @@
 
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "experiment/campaign.hpp"
 #include "framework/error.hpp"
 
 namespace {
@@ -39,6 +40,13 @@ int main() {
                     static_cast<long long>(result.evaluations));
         expect(result.evaluations == 2000, "exactly 2000 evaluations");
         expect(std::isfinite(result.best_f) && result.best_f < 1.0, "a finite best value below 1");
+
+        // The experiment layer (pride::experiment): a campaign's budget as the store identifies it.
+        pride::engine::Campaign campaign;
+        campaign.budget.evaluations = 2000;
+        const std::string budget_text = pride::engine::budget_definition(campaign);
+        std::printf("campaign budget: %s\n", budget_text.c_str());
+        expect(budget_text.find("2000") != std::string::npos, "the campaign's budget names its 2000 evaluations");
 
         pride::engine::AlgorithmSpec bad = pso;
         bad.params.set("no_such_parameter", 1.0);

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/report/store.hpp"
+#include "experiment/report/store.hpp"
 
 namespace pride::report::coco {
 

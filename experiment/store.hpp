@@ -1,5 +1,5 @@
 #pragma once
-// The SQLite store of a campaign as run_campaign writes it (internal to engine/campaign.cpp; the
+// The SQLite store of a campaign as run_campaign writes it (internal to experiment/campaign.cpp; the
 // report code reads it): the campaign itself, its problems, one row per finished run (committed
 // in batches: a finished run is never lost once its batch returns), and the claims by which
 // several processes on one store share its runs.
@@ -25,10 +25,10 @@
 #include <string>
 #include <tuple>
 
-#include "engine/campaign.hpp"
+#include "experiment/campaign.hpp"
 #include "engine/json.hpp"
 #include "engine/registry.hpp"
-#include "engine/store_schema.hpp"
+#include "experiment/store_schema.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/report/coco.hpp"
-#include "engine/report/statistics.hpp"
-#include "engine/report/store.hpp"
+#include "experiment/report/coco.hpp"
+#include "experiment/report/statistics.hpp"
+#include "experiment/report/store.hpp"
 
 namespace pride::report {
 
@@ -60,7 +60,7 @@ struct ReportData {
     std::vector<ReportRow> rows;              // sorted by problem, then algorithm
     std::optional<FriedmanSummary> friedman;  // with two algorithms on two problems or more
     // With the campaign's target precisions: ERT per function, dimension and algorithm, and the
-    // ECDF curves (engine/report/coco.hpp); rendered after the table.
+    // ECDF curves (experiment/report/coco.hpp); rendered after the table.
     std::optional<coco::Analysis> coco;
     // What the reader must know before comparing the rows, one sentence each: problems whose
     // compared runs used evaluation counts more than 5 % apart, and the whole-map planners exempt

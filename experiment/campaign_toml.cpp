@@ -1,4 +1,4 @@
-#include "engine/campaign_toml.hpp"
+#include "experiment/campaign_toml.hpp"
 
 #include <fmt/format.h>
 

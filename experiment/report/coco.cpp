@@ -1,4 +1,4 @@
-#include "engine/report/coco.hpp"
+#include "experiment/report/coco.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

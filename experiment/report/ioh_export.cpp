@@ -1,4 +1,4 @@
-#include "engine/report/ioh_export.hpp"
+#include "experiment/report/ioh_export.hpp"
 
 #include <fmt/format.h>
 
@@ -12,8 +12,8 @@
 #include <tuple>
 #include <vector>
 
-#include "engine/file_name.hpp"
-#include "engine/report/store.hpp"
+#include "experiment/file_name.hpp"
+#include "experiment/report/store.hpp"
 #include "framework/error.hpp"
 
 namespace pride::report {

@@ -2,7 +2,7 @@
 // An id as a file name, as every figure, export and page names files after problems and
 // algorithms (scripts/plot_campaign.py's safe() is the same rule): anything but ASCII letters,
 // digits, '-' and '.' becomes '_' (byte by byte), and a leading '.' too (no "..", no hidden file).
-// Campaigns refuse two ids with one file name (engine/campaign.cpp), case ignored.
+// Campaigns refuse two ids with one file name (experiment/campaign.cpp), case ignored.
 #include <cctype>
 #include <string>
 

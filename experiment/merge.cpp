@@ -1,4 +1,4 @@
-#include "engine/merge.hpp"
+#include "experiment/merge.hpp"
 
 #include <fmt/format.h>
 #include <sqlite3.h>
@@ -8,7 +8,7 @@
 #include <optional>
 #include <set>
 
-#include "engine/store_schema.hpp"
+#include "experiment/store_schema.hpp"
 #include "framework/error.hpp"
 
 namespace pride::engine {

@@ -1,4 +1,4 @@
-#include "engine/campaign.hpp"
+#include "experiment/campaign.hpp"
 
 #include <fmt/format.h>
 
@@ -16,9 +16,9 @@
 #include <set>
 #include <thread>
 
-#include "engine/file_name.hpp"
+#include "experiment/file_name.hpp"
 #include "engine/json.hpp"
-#include "engine/store.hpp"
+#include "experiment/store.hpp"
 #include "framework/error.hpp"
 
 #ifdef PRIDE_HAVE_MPI

@@ -4,7 +4,7 @@
 // InputErrors naming the file, line and key. docs/campaigns.md describes the format.
 #include <string>
 
-#include "engine/campaign.hpp"
+#include "experiment/campaign.hpp"
 
 namespace pride::engine {
 

@@ -1,4 +1,4 @@
-#include "engine/report/store.hpp"
+#include "experiment/report/store.hpp"
 
 #include <fmt/format.h>
 #include <sqlite3.h>
@@ -14,7 +14,7 @@
 #include <string_view>
 #include <type_traits>
 
-#include "engine/store_schema.hpp"
+#include "experiment/store_schema.hpp"
 
 namespace pride::report {
 namespace {
@@ -408,7 +408,7 @@ CampaignStore read_store(const std::string& path) {
                            fmt::format("expected at most the run's {} evaluations, got {}", r.evaluations, *hit));
         }
         if (!q.is_null(11)) r.encoding = q.text(11, "encoding");
-        // The analysis of target hits (engine/report/coco.hpp) needs each run's function and
+        // The analysis of target hits (experiment/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.
         if (store.precisions && has_problems && !problem_ids.count(r.problem))
             q.fail("problem", fmt::format("'{}' is not in table problems (the analysis of target hits needs its "

@@ -1,4 +1,4 @@
-#include "engine/report/report.hpp"
+#include "experiment/report/report.hpp"
 
 #include <fmt/format.h>
 
