@@ -1,6 +1,6 @@
 // The critical-difference statistics of experiment/report/critical_difference.hpp against
 // J. Demsar, "Statistical comparisons of classifiers over multiple data sets", JMLR 7:1-30 (2006):
-// his table 5a and his worked example (section 3.2.4, the four variants of C4.5), and against
+// his table 5a and his worked example (sections 3.2.2 and 3.2.4, the four variants of C4.5), and against
 // scipy 1.10.1's studentized_range (Debian's python3-scipy): scripts/critical_difference_reference.py
 // prints the values hard-coded here.
 #include <catch2/catch.hpp>
@@ -74,7 +74,7 @@ TEST_CASE("critical difference: two treatments reduce to the normal quantile", "
 
 TEST_CASE("critical difference: Demsar's worked example, four variants of C4.5 on 14 data sets",
           "[statistics][critical-difference]") {
-    // Demsar 2006, section 3.2.4: average ranks of C4.5, C4.5+m, C4.5+cf, C4.5+m+cf; "CD = 2.569
+    // Demsar 2006, section 3.2.2: average ranks of C4.5, C4.5+m, C4.5+cf, C4.5+m+cf; "CD = 2.569
     // sqrt(4 * 5 / (6 * 14)) = 1.25" at alpha = 0.05 and 1.12 at alpha = 0.10, where C4.5+m+cf is
     // better than C4.5 (3.143 - 1.964 = 1.179 > 1.12) and no other pair differs.
     const std::vector<double> ranks{3.143, 2.000, 2.893, 1.964};
