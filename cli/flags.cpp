@@ -33,7 +33,8 @@ std::string user_message(const InputError& e) {
                                                           {"jobs", "--jobs"},
                                                           {"threads", "--threads"},
                                                           {"instance", "--instance"},
-                                                          {"objectives", "--objectives"}};
+                                                          {"objectives", "--objectives"},
+                                                          {"html", "--html"}};
     const std::string& where = e.where();
     if (where.empty()) return printable(e.what());
     const auto space = where.find(' ');

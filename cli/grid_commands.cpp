@@ -9,10 +9,10 @@
 #include <ostream>
 
 #include "cli/commands.hpp"
-#include "cli/draw.hpp"
 #include "cli/numbers.hpp"
 #include "engine/run.hpp"
 #include "engine/scenarios.hpp"
+#include "experiment/html/draw.hpp"
 #include "framework/error.hpp"
 #include "problems/grid/astar.hpp"
 #include "problems/grid/grid_problem.hpp"
@@ -85,16 +85,17 @@ int path_command(const PathOptions& o, std::ostream& out) {
     }
     // The pictures first: they are the only output that can fail now. Both are drawn to temporary
     // files and renamed only when both succeeded, so a failure leaves no picture and prints nothing.
-    std::vector<std::pair<std::string, PictureFormat>> pictures;
-    if (!o.svg.empty()) pictures.emplace_back(o.svg, PictureFormat::svg);
-    if (!o.png.empty()) pictures.emplace_back(o.png, PictureFormat::png);
-    write_pictures(pictures, [&](const std::string& file, const std::string& shown_as, PictureFormat format) {
-        PathLabels labels;
-        labels.path = fmt::format("{} ({}): {} {:.6g}", o.algo, run.encoding, spec.objective, run.value);
-        if (run.optimum) labels.optimal = fmt::format("exact optimum: {} {:.6g}", spec.objective, *run.optimum);
-        draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.path : nullptr,
-                  o.oracle ? &run.optimal_path : nullptr, labels, file, shown_as, format);
-    });
+    std::vector<std::pair<std::string, html::PictureFormat>> pictures;
+    if (!o.svg.empty()) pictures.emplace_back(o.svg, html::PictureFormat::svg);
+    if (!o.png.empty()) pictures.emplace_back(o.png, html::PictureFormat::png);
+    html::write_pictures(
+        pictures, [&](const std::string& file, const std::string& shown_as, html::PictureFormat format) {
+            html::PathLabels labels;
+            labels.path = fmt::format("{} ({}): {} {:.6g}", o.algo, run.encoding, spec.objective, run.value);
+            if (run.optimum) labels.optimal = fmt::format("exact optimum: {} {:.6g}", spec.objective, *run.optimum);
+            html::draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.path : nullptr,
+                            o.oracle ? &run.optimal_path : nullptr, labels, file, shown_as, format);
+        });
 
     if (o.json) {
         std::string text = fmt::format(

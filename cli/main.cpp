@@ -193,6 +193,8 @@ int run_main(int argc, char** argv) {
     report_cmd->add_option("--format", report.format,
                            "md (default), csv, latex, or ert-csv (the ERT of a campaign with target precisions)");
     report_cmd->add_option("--plots", report.plots, "write convergence, final-value and path figures (PNG, SVG) here");
+    report_cmd->add_option("--html", report.html,
+                           "write the report as one HTML page (index.html, SVG figures beside it) into this folder");
     report_cmd->add_flag("--raw", report.raw,
                          "the values f as run, also where f_opt is known (default there: the precision f - f_opt)");
 

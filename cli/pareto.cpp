@@ -6,10 +6,10 @@
 #include <ostream>
 #include <vector>
 
-#include "cli/draw.hpp"
 #include "cli/grid_commands.hpp"
 #include "cli/numbers.hpp"
 #include "engine/run.hpp"
+#include "experiment/html/draw.hpp"
 #include "framework/error.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/objectives.hpp"
@@ -43,9 +43,9 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
         std::min(options.max_labels, static_cast<std::size_t>(std::max(1.0, (0.8 * memory - lists) / 68.0)));
     const auto front = grid::pareto_front(*map, start, goal, criteria, options);
 
-    std::vector<std::pair<std::string, PictureFormat>> pictures;
-    if (!o.svg.empty()) pictures.emplace_back(o.svg, PictureFormat::svg);
-    if (!o.png.empty()) pictures.emplace_back(o.png, PictureFormat::png);
+    std::vector<std::pair<std::string, html::PictureFormat>> pictures;
+    if (!o.svg.empty()) pictures.emplace_back(o.svg, html::PictureFormat::svg);
+    if (!o.png.empty()) pictures.emplace_back(o.png, html::PictureFormat::png);
     std::vector<grid::Path> paths;
     std::vector<std::string> labels;  // the point's objectives, as asked for
     for (const auto& p : front) {
@@ -57,9 +57,10 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
                                                                    : fmt::format("angle penalty {}", p.angle_penalty));
         labels.push_back(words);
     }
-    write_pictures(pictures, [&](const std::string& file, const std::string& shown_as, PictureFormat format) {
-        draw_grid_paths(*map, start, goal, paths, labels, file, shown_as, format);
-    });
+    html::write_pictures(pictures,
+                         [&](const std::string& file, const std::string& shown_as, html::PictureFormat format) {
+                             html::draw_grid_paths(*map, start, goal, paths, labels, file, shown_as, format);
+                         });
 
     std::string text;
     if (o.json) {

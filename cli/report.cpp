@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "experiment/html/report_page.hpp"
 #include "experiment/report/report.hpp"
 #include "framework/error.hpp"
 
@@ -83,6 +84,15 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
 int report_command(const ReportOptions& o, std::ostream& out) {
     require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv", "--format",
             "expected md, csv, latex or ert-csv, got '" + o.format + "'");
+    if (!o.html.empty()) {
+        // The page holds the tables itself; what is printed is where it is.
+        require(o.format == "md", "--format", o.format + " is printed without --html; --html writes the page alone");
+        require(o.stores.size() == 1, "--html", "draws one store; join several into one with pride merge first");
+        require(o.plots.empty(), "--plots", "give --plots or --html, not both (the page has its own figures)");
+        const html::PageSummary page = html::write_report_page(o.stores.front(), o.html, report::ReportOptions{o.raw});
+        out << page.index << ": the report, with " << page.figures << " figures\n";
+        return 0;
+    }
     // The whole store is read and checked before any figure is drawn from it.
     require(o.plots.empty() || o.stores.size() == 1, "--plots",
             "draws one store; join several into one with pride merge first");

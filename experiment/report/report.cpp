@@ -182,8 +182,8 @@ std::string render_table(const ReportData& report, bool md) {
     return text;
 }
 
-/// The precisions an ERT table shows: of COCO's 1e1, 1e-1, 1e-3, 1e-5, 1e-7, 1e-8 those the
-/// campaign records, else all of the campaign's; as indices into its precisions.
+}  // namespace
+
 std::vector<std::size_t> shown_precisions(const std::vector<double>& precisions) {
     std::vector<std::size_t> shown;
     for (const double want : {1e1, 1e-1, 1e-3, 1e-5, 1e-7, 1e-8})
@@ -197,7 +197,6 @@ std::vector<std::size_t> shown_precisions(const std::vector<double>& precisions)
     return shown;
 }
 
-/// A precision as a column title: 1e-3 for a power of ten, else 6 significant digits.
 std::string precision_label(double p) {
     if (p > 0) {
         const double k = std::round(std::log10(p));
@@ -205,6 +204,8 @@ std::string precision_label(double p) {
     }
     return fmt::format("{:.6g}", p);
 }
+
+namespace {
 
 /// The ERT tables, one per function and dimension: rows the algorithms, columns the shown
 /// precisions and #succ (the runs that reached the campaign's smallest precision, of all).

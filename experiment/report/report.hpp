@@ -89,4 +89,11 @@ std::string render_ert_csv(const ReportData& report);
 /// A `tabular` with the markdown's columns, then Friedman's ranks as a comment.
 std::string render_latex(const ReportData& report);
 
+/// The precisions an ERT table shows (every rendering, the HTML page's too): of COCO's 1e1, 1e-1,
+/// 1e-3, 1e-5, 1e-7, 1e-8 those the campaign records, else all of the campaign's; as indices into
+/// `precisions`.
+std::vector<std::size_t> shown_precisions(const std::vector<double>& precisions);
+/// A precision as a column title: 1e-3 for a power of ten, else 6 significant digits.
+std::string precision_label(double p);
+
 }  // namespace pride::report

@@ -12,6 +12,7 @@ this module takes::
 from __future__ import annotations
 
 import numbers as _numbers
+import os as _os
 
 import numpy as _np
 
@@ -272,15 +273,29 @@ def read_store(path, *, dataframe=None):
     return store["runs"]
 
 
-def report(path, *, raw=False, dataframe=None):
+def report(path, *, raw=False, dataframe=None, html=None):
     """The report of a campaign store (``pride report``): ``rows`` (per problem and algorithm:
     min, mean, std, median, max, best, p_holm, f_opt, precision, ...) as a DataFrame when pandas
     is present, ``friedman`` and the rendered ``markdown`` and ``csv``, as a dict. Where a
     problem's optimum f_opt is known, min to max are precisions f - f_opt (``precision`` True),
     unless ``raw=True`` (``pride report --raw``). ``path`` may be a list of stores of one campaign
-    run in parts, read as one (``pride report A B``)."""
+    run in parts, read as one (``pride report A B``). ``html=DIR`` also writes the HTML report
+    of one store into the folder DIR (``pride report --html DIR``) and gives its index.html as
+    ``html``."""
     paths = [str(p) for p in path] if isinstance(path, (list, tuple)) else [str(path)]
+    if html is not None:
+        if not isinstance(html, (str, _os.PathLike)):
+            raise TypeError(f"html: expected a folder (str or os.PathLike), got {type(html).__name__}")
+        html = _os.fspath(html)
+        if not isinstance(html, str):
+            raise TypeError(f"html: expected a folder (str or os.PathLike), got {type(html).__name__}")
+        if not html:
+            raise ValueError("html: expected a folder, got ''")
+        if len(paths) != 1:
+            raise ValueError("html: draws one store; join several into one with pride merge first")
     r = _pride.report(paths, bool(raw))
+    if html is not None:
+        r["html"] = _pride.report_html(paths[0], html, bool(raw))["index"]
     pd = _pandas()
     if dataframe or (dataframe is None and pd is not None):
         if pd is None:

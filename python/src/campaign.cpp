@@ -10,6 +10,7 @@
 #include "common.hpp"
 #include "experiment/campaign.hpp"
 #include "experiment/campaign_toml.hpp"
+#include "experiment/html/report_page.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/report/store.hpp"
 
@@ -263,6 +264,16 @@ py::dict report_data(const std::vector<std::string>& paths, bool raw) {
                     py::arg("markdown") = report::render_markdown(r), py::arg("csv") = report::render_csv(r));
 }
 
+/// The HTML report of one store (experiment/html/report_page.hpp): DIR/index.html and its figures.
+py::dict report_html(const std::string& path, const std::string& dir, bool raw) {
+    html::PageSummary page;
+    {
+        py::gil_scoped_release release;
+        page = html::write_report_page(path, dir, report::ReportOptions{raw});
+    }
+    return py::dict(py::arg("index") = page.index, py::arg("figures") = page.figures);
+}
+
 }  // namespace
 
 void bind_campaign(py::module_& m) {
@@ -293,6 +304,7 @@ void bind_campaign(py::module_& m) {
     m.def("campaign_run", &run, py::arg("campaign"), py::arg("store"), py::arg("jobs"));
     m.def("read_store", &read_store, py::arg("path"));
     m.def("report", &report_data, py::arg("paths"), py::arg("raw") = false);
+    m.def("report_html", &report_html, py::arg("path"), py::arg("dir"), py::arg("raw") = false);
 }
 
 }  // namespace pride::python

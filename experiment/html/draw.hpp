@@ -1,15 +1,18 @@
 #pragma once
 // Pictures of a grid run: the map, start, goal, the path found and (optionally) the optimal path,
-// or every path of a Pareto front, as SVG or PNG, drawn once with cairo (Debian's libcairo2) for both formats.
+// or several paths (a Pareto front, the best path of each algorithm of a campaign), as SVG or PNG,
+// drawn once with cairo (Debian's libcairo2) for both formats; for `pride path`, `pride pareto` and
+// the HTML report alike.
 #include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "experiment/html/colour.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 
-namespace pride::cli {
+namespace pride::html {
 
 enum class PictureFormat { svg, png };
 
@@ -27,10 +30,11 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
                const std::string& shown_as, PictureFormat format);
 
 /// The map with several paths (a Pareto front), each in its own colour, from blue (the first) to
-/// red (the last), and a legend naming each (`labels`, one per path).
+/// red (the last), or `colours[i]` for path i when given (one per path), and a legend naming each
+/// (`labels`, one per path).
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
                      const std::vector<std::string>& labels, const std::string& file, const std::string& shown_as,
-                     PictureFormat format);
+                     PictureFormat format, const std::vector<Rgb>& colours = {});
 
 /// The height in pixels of a legend of `entries` lines under a map drawn `width` pixels wide.
 double legend_height(std::size_t entries);
@@ -43,4 +47,4 @@ void write_pictures(
     const std::vector<std::pair<std::string, PictureFormat>>& pictures,
     const std::function<void(const std::string& file, const std::string& shown_as, PictureFormat)>& draw_one);
 
-}  // namespace pride::cli
+}  // namespace pride::html

@@ -1,8 +1,7 @@
-#include "cli/draw.hpp"
+#include "experiment/html/draw.hpp"
 
 #include <cairo-svg.h>
 #include <cairo.h>
-#include <fontconfig/fontconfig.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +13,10 @@
 
 #include <fmt/format.h>
 
+#include "experiment/html/font_session.hpp"
 #include "framework/error.hpp"
 
-namespace pride::cli {
+namespace pride::html {
 namespace {
 
 void trace_path(cairo_t* cr, const grid::Path& path, double cell) {
@@ -130,13 +130,19 @@ Rgba hue(std::size_t i, std::size_t n) {
     return {0.1 + 0.8 * t, 0.3 * (1.0 - std::abs(2.0 * t - 1.0)) + 0.1, 0.9 - 0.8 * t, 0.6};
 }
 
-/// Several paths, each in its own hue (from blue for the first to red for the last), half
-/// transparent so that shared stretches show as darker.
+/// The colour of path i of n: `colours[i]` when given, else its hue, half transparent.
+Rgba colour_of(std::size_t i, std::size_t n, const std::vector<Rgb>& colours) {
+    if (i < colours.size()) return {colours[i].r, colours[i].g, colours[i].b, 0.6};
+    return hue(i, n);
+}
+
+/// Several paths, each in its own colour (by default from blue for the first to red for the last),
+/// half transparent so that shared stretches show as darker.
 void paint_many(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal,
-                const std::vector<grid::Path>& paths, double cell) {
+                const std::vector<grid::Path>& paths, const std::vector<Rgb>& colours, double cell) {
     paint_map(cr, map, cell);
     for (std::size_t i = 0; i < paths.size(); ++i) {
-        const Rgba c = hue(i, paths.size());
+        const Rgba c = colour_of(i, paths.size(), colours);
         cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
         cairo_set_line_width(cr, std::max(1.5, cell * 0.18));
         trace_path(cr, paths[i], cell);
@@ -153,6 +159,7 @@ void draw(const grid::GridMap& map, const std::vector<Entry>& legend, const std:
     const double cell = std::clamp(800.0 / std::max(map.width(), map.height()), 2.0, 40.0);
     const double map_w = map.width() * cell, map_h = map.height() * cell;
     const double w = std::max(map_w, 240.0), h = map_h + legend_height(legend.size());
+    const FontSession fonts;  // the legend's text
     cairo_surface_t* surface = format == PictureFormat::svg
                                    ? cairo_svg_surface_create(file.c_str(), w, h)
                                    : cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(std::ceil(w)),
@@ -173,10 +180,6 @@ void draw(const grid::GridMap& map, const std::vector<Entry>& legend, const std:
     cairo_surface_finish(surface);  // flushes the SVG
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
     cairo_surface_destroy(surface);
-    // The legend's text made cairo and fontconfig cache fonts for the process: released here, with
-    // no cairo object left, so that a picture leaves nothing allocated behind (LeakSanitizer).
-    cairo_debug_reset_static_data();
-    FcFini();
     if (status != CAIRO_STATUS_SUCCESS)
         throw InputError(shown_as + ": cannot write the picture: " + cairo_status_to_string(status));
 }
@@ -200,7 +203,7 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
 
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
                      const std::vector<std::string>& labels, const std::string& file, const std::string& shown_as,
-                     PictureFormat format) {
+                     PictureFormat format, const std::vector<Rgb>& colours) {
     std::vector<Entry> legend{{kStart, true, "start"}, {kGoal, true, "goal"}};
     // A long front: its first and last paths named, the rest said in one line (colours run in order).
     const std::size_t n = paths.size(), shown = n > 10 ? 4 : n;
@@ -209,10 +212,10 @@ void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal
             legend.push_back({{0, 0, 0, 0}, false, fmt::format("... {} more, their colours in order", n - 2 * shown)});
             i = n - shown;
         }
-        legend.push_back({hue(i, n), false, i < labels.size() ? labels[i] : std::string()});
+        legend.push_back({colour_of(i, n, colours), false, i < labels.size() ? labels[i] : std::string()});
     }
     draw(map, legend, file, shown_as, format,
-         [&](cairo_t* cr, double cell) { paint_many(cr, map, start, goal, paths, cell); });
+         [&](cairo_t* cr, double cell) { paint_many(cr, map, start, goal, paths, colours, cell); });
 }
 
 void write_pictures(
@@ -256,4 +259,4 @@ void write_pictures(
     }
 }
 
-}  // namespace pride::cli
+}  // namespace pride::html

@@ -1,0 +1,144 @@
+#include "experiment/html/page_store.hpp"
+
+#include <sqlite3.h>
+
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "experiment/report/store.hpp"
+#include "framework/error.hpp"
+
+namespace pride::html {
+namespace {
+
+class Reader {
+  public:
+    explicit Reader(const std::string& path) : path_(path) {
+        if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+            sqlite3_close(db_);
+            throw InputError(path + ": cannot open the store");
+        }
+    }
+    ~Reader() { sqlite3_close(db_); }
+    Reader(const Reader&) = delete;
+    Reader& operator=(const Reader&) = delete;
+
+    /// A statement; SQLite's reason as bad input when it cannot be prepared or stepped.
+    class Statement {
+      public:
+        Statement(const Reader& r, const std::string& sql) : r_(r) {
+            if (sqlite3_prepare_v2(r.db_, sql.c_str(), -1, &s_, nullptr) != SQLITE_OK) r.fail("");
+        }
+        ~Statement() { sqlite3_finalize(s_); }
+        Statement(const Statement&) = delete;
+        Statement& operator=(const Statement&) = delete;
+        /// The next row; false at the end. `where` names the row for a failure (malformed JSON).
+        bool step(const std::string& where = "") {
+            const int rc = sqlite3_step(s_);
+            if (rc == SQLITE_ROW) return true;
+            if (rc != SQLITE_DONE) r_.fail(where);
+            return false;
+        }
+        sqlite3_stmt* get() const { return s_; }
+        std::string text(int i) const {
+            const auto* t = sqlite3_column_text(s_, i);
+            return t ? reinterpret_cast<const char*>(t) : std::string();
+        }
+        bool null(int i) const { return sqlite3_column_type(s_, i) == SQLITE_NULL; }
+
+      private:
+        const Reader& r_;
+        sqlite3_stmt* s_ = nullptr;
+    };
+
+    [[noreturn]] void fail(const std::string& where) const {
+        const std::string why = sqlite3_errmsg(db_);
+        if (!where.empty()) throw report::DamagedStore(path_, where + ": " + why);
+        throw InputError(path_ + ": cannot read the store (" + why + ")");
+    }
+    bool has_column(const std::string& table, const std::string& column) const {
+        Statement s(*this, "SELECT 1 FROM pragma_table_info('" + table + "') WHERE name = '" + column + "'");
+        return s.step();
+    }
+    const std::string& path() const { return path_; }
+
+  private:
+    std::string path_;
+    sqlite3* db_ = nullptr;
+};
+
+grid::Cell parse_cell(const std::string& text, const std::string& store, const std::string& where) {
+    static const std::regex cell(R"((-?\d{1,9}),(-?\d{1,9}))");
+    std::smatch m;
+    if (!std::regex_match(text, m, cell))
+        throw report::DamagedStore(store, where + ": expected x,y, got '" + text + "'");
+    return {std::stoi(m[1].str()), std::stoi(m[2].str())};
+}
+
+}  // namespace
+
+PageStore read_page_store(const std::string& path) {
+    Reader db(path);
+    PageStore out;
+    {
+        Reader::Statement s(db, "SELECT text FROM campaign WHERE id = 1");
+        if (s.step()) out.text = s.text(0);
+    }
+    const bool definitions = db.has_column("problems", "definition");
+    {
+        Reader::Statement s(db, std::string("SELECT id, map, start, goal, ") + (definitions ? "definition" : "NULL") +
+                                    " FROM problems WHERE type = 'grid' ORDER BY rowid");
+        while (s.step()) {
+            GridProblemInfo g;
+            g.id = s.text(0);
+            g.map = s.text(1);
+            const std::string row = "problems row '" + g.id + "'";
+            g.start = parse_cell(s.text(2), path, row + ", column start");
+            g.goal = parse_cell(s.text(3), path, row + ", column goal");
+            // The definition pride bench writes (experiment/campaign.cpp, problem_definition):
+            // "grid MAP inflate N start (x,y) goal (x,y) objective ... corner_cutting true ...".
+            const std::string definition = s.text(4);
+            std::smatch m;
+            if (std::regex_search(definition, m, std::regex(R"( inflate (\d{1,9}) )"))) g.inflate = std::stoll(m[1]);
+            g.corner_cutting = definition.find(" corner_cutting true") != std::string::npos;
+            out.grids.push_back(g);
+        }
+    }
+    Reader::Statement best(db,
+                           "SELECT r.problem, r.algorithm, r.seed, r.best, r.optimum, r.solution FROM runs r JOIN "
+                           "problems p ON p.id = r.problem WHERE p.type = 'grid' AND r.feasible = 1 AND r.best IS NOT "
+                           "NULL ORDER BY r.problem, r.algorithm, r.best, r.seed");
+    while (best.step()) {
+        BestPath b;
+        b.problem = best.text(0);
+        b.algorithm = best.text(1);
+        if (!out.best_paths.empty() && out.best_paths.back().problem == b.problem &&
+            out.best_paths.back().algorithm == b.algorithm)
+            continue;  // a worse run of the same algorithm
+        b.seed = sqlite3_column_int64(best.get(), 2);
+        b.value = sqlite3_column_double(best.get(), 3);
+        if (!best.null(4)) b.optimum = sqlite3_column_double(best.get(), 4);
+        const std::string row = fmt::format("runs row (problem '{}', algorithm '{}', seed {}), column solution",
+                                            b.problem, b.algorithm, b.seed);
+        // The path is a JSON list of [x, y] cells; SQLite's JSON functions read it.
+        Reader::Statement cells(db,
+                                "SELECT json_type(value), json_array_length(value), json_type(value, '$[0]'), "
+                                "json_type(value, '$[1]'), json_extract(value, '$[0]'), json_extract(value, '$[1]') "
+                                "FROM json_each(?1)");
+        const std::string solution = best.text(5);
+        sqlite3_bind_text(cells.get(), 1, solution.c_str(), -1, SQLITE_TRANSIENT);
+        while (cells.step(row)) {
+            const bool ok = cells.text(0) == "array" && sqlite3_column_int64(cells.get(), 1) == 2 &&
+                            cells.text(2) == "integer" && cells.text(3) == "integer";
+            const std::int64_t x = sqlite3_column_int64(cells.get(), 4), y = sqlite3_column_int64(cells.get(), 5);
+            if (!ok || x < -(1 << 30) || x > (1 << 30) || y < -(1 << 30) || y > (1 << 30))
+                throw report::DamagedStore(path, row + ": expected a JSON list of [x, y] cells");
+            b.path.push_back({static_cast<int>(x), static_cast<int>(y)});
+        }
+        out.best_paths.push_back(std::move(b));
+    }
+    return out;
+}
+
+}  // namespace pride::html

@@ -1,0 +1,44 @@
+#pragma once
+// What the HTML report reads from a campaign store beyond report::read_store (which it reads
+// first, so the store is known to be sound): the campaign file's text, where each grid problem's
+// map is, and each algorithm's best path on it.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "problems/grid/map.hpp"
+#include "problems/grid/path.hpp"
+
+namespace pride::html {
+
+struct GridProblemInfo {
+    std::string id;
+    std::string map;  // the map file as pride bench resolved it (absolute); empty for a map given in code
+    grid::Cell start, goal;
+    std::int64_t inflate = 0;     // from the problem's definition (0 in stores from before definitions)
+    bool corner_cutting = false;  // likewise
+};
+
+/// The best run of one algorithm on one grid problem: the lowest feasible value (ties: the
+/// lowest seed) and its path.
+struct BestPath {
+    std::string problem, algorithm;
+    std::int64_t seed = 0;
+    double value = 0;
+    std::optional<double> optimum;  // the exact optimum, when the campaign had it computed
+    grid::Path path;
+};
+
+struct PageStore {
+    std::string text;  // the campaign file as stored (the newest, for a campaign that grew)
+    std::vector<GridProblemInfo> grids;
+    std::vector<BestPath> best_paths;  // by problem, then algorithm
+};
+
+/// Reads them, read-only. InputError when the file cannot be read, report::DamagedStore when a
+/// value is not what pride bench writes (a solution that is not a list of [x, y] cells, a start
+/// that is not "x,y").
+PageStore read_page_store(const std::string& path);
+
+}  // namespace pride::html
