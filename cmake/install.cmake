@@ -42,6 +42,7 @@ install(DIRECTORY framework roughset problems algorithms engine experiment
         DESTINATION include/pride
         FILES_MATCHING PATTERN "*.hpp"
         REGEX "/engine/algorithms$" EXCLUDE
+        REGEX "/experiment/html$" EXCLUDE  # pride_html (the report page, cairo) is the command's and Python's
         REGEX "/experiment/store.hpp$" EXCLUDE)  # the campaign runner's own, not an interface
 
 set(PRIDE_CONFIG_MPI OFF)  # MPI is a dependency only when pride_engine was built with it
