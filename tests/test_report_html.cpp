@@ -243,7 +243,8 @@ TEST_CASE("report --html: bad folders, options and stores are one line, exit 2, 
     CHECK(no_staging(existing));
 }
 
-TEST_CASE("report --html: a map that is gone is said on the page, the rest is drawn", "[report][html]") {
+TEST_CASE("report --html: a map that is gone, or a store from before maps were stored, leaves the paths out",
+          "[report][html]") {
     const TempDir dir("pride-html-nomap");
     const std::string store = small_campaign(dir.path());
     const std::string moved = tampered(dir, store, "moved", "UPDATE problems SET map = '/nonexistent/m.map'");
@@ -254,6 +255,14 @@ TEST_CASE("report --html: a map that is gone is said on the page, the rest is dr
     CHECK(html.find("No picture of the paths: /nonexistent/m.map") != std::string::npos);
     CHECK(html.find("paths-map.svg") == std::string::npos);
     CHECK(fs::exists(dir.path() / "page" / "convergence-map.svg"));
+
+    // A store from before the problems table: reported, without precisions or pictures of maps.
+    const std::string old = tampered(dir, store, "old", "DROP TABLE problems");
+    const auto o = run_pride("report " + quote(old) + " --html " + quote(dir.file("old-page")));
+    INFO(o.err);
+    REQUIRE(o.status == 0);
+    CHECK(fs::exists(dir.path() / "old-page" / "convergence-map.svg"));
+    CHECK(!fs::exists(dir.path() / "old-page" / "paths-map.svg"));
 }
 
 TEST_CASE("report --html: whole-map planners as lines, x in iterations when runs record no evaluations",

@@ -153,9 +153,9 @@ double quantile(const std::vector<double>& sorted, double p) {
     const double h = p * static_cast<double>(sorted.size() - 1);
     const auto i = static_cast<std::size_t>(std::floor(h));
     if (i + 1 >= sorted.size()) return sorted.back();
-    const double a = sorted[i], b = sorted[i + 1];
-    // a + (b - a) * f would give NaN for a = b = +inf (the runs without a value yet).
-    return a == b ? a : a + (h - static_cast<double>(i)) * (b - a);
+    const double a = sorted[i], b = sorted[i + 1], f = h - static_cast<double>(i);
+    // a + f (b - a) would be NaN for b = +inf (a run without a value yet) with f = 0 or a = b.
+    return f == 0 || a == b ? a : a + f * (b - a);
 }
 
 BoxStats box_stats(std::vector<double> values) {

@@ -57,6 +57,10 @@ class Reader {
         if (!where.empty()) throw report::DamagedStore(path_, where + ": " + why);
         throw InputError(path_ + ": cannot read the store (" + why + ")");
     }
+    bool has_table(const std::string& table) const {
+        Statement s(*this, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = '" + table + "'");
+        return s.step();
+    }
     bool has_column(const std::string& table, const std::string& column) const {
         Statement s(*this, "SELECT 1 FROM pragma_table_info('" + table + "') WHERE name = '" + column + "'");
         return s.step();
@@ -85,6 +89,8 @@ PageStore read_page_store(const std::string& path) {
         Reader::Statement s(db, "SELECT text FROM campaign WHERE id = 1");
         if (s.step()) out.text = s.text(0);
     }
+    // Stores from before the problems table are reported too: without pictures of grids.
+    if (!db.has_table("problems")) return out;
     const bool definitions = db.has_column("problems", "definition");
     {
         Reader::Statement s(db, std::string("SELECT id, map, start, goal, ") + (definitions ? "definition" : "NULL") +

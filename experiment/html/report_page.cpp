@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -593,7 +594,9 @@ PageSummary write_report_page(const std::string& store, const std::string& dir, 
     const bool exists = fs::exists(target, ec);
     if (exists && !fs::is_directory(target, ec)) throw InputError("html", dir + ": exists and is not a folder");
     // Staged in a new folder: inside the existing one, or beside the new one (then renamed).
-    const std::string stage = ".pride-html-" + std::to_string(::getpid());
+    // Unique per call, also between threads of one process (Python releases the GIL here).
+    static std::atomic<unsigned> calls{0};
+    const std::string stage = ".pride-html-" + std::to_string(::getpid()) + "-" + std::to_string(calls++);
     fs::path staging;
     if (exists) {
         staging = target / stage;
