@@ -509,9 +509,11 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
     draw_grid_paths(*map, info->start, info->goal, paths, labels, (page.folder / paths_file).string(),
                     (page.shown / paths_file).string(), PictureFormat::svg, colours);
     std::string none;
-    for (const auto& [a, rs] : by_algorithm)
+    for (const auto& entry : by_algorithm) {
+        const std::string& a = entry.first;  // (clang 14 captures no structured binding)
         if (std::none_of(best.begin(), best.end(), [&](const BestPath* b) { return b->algorithm == a; }))
             none += " " + escape(a) + " found no feasible path.";
+    }
     page.put(paths_file, problem + ": best paths",
              fmt::format("The best path of each algorithm on {} (its lowest value over the seeds), with the exact "
                          "optimum of the objective where the campaign computed it; start green, goal red.{}",
