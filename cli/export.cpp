@@ -4,13 +4,23 @@
 
 #include <ostream>
 
+#include "experiment/report/coco_export.hpp"
 #include "experiment/report/ioh_export.hpp"
 #include "framework/error.hpp"
 
 namespace pride::cli {
 
 int export_command(const ExportOptions& o, std::ostream& out) {
-    require(!o.ioh.empty(), "--ioh", "name the folder to write");
+    require(!o.ioh.empty() || !o.coco.empty(), "export", "name the folder to write: --ioh DIR or --coco DIR");
+    if (!o.coco.empty()) {
+        const report::CocoExportSummary c = report::export_coco(o.store, o.coco);
+        out << fmt::format("{} runs of {} algorithm{} written as COCO data ({} files) under {}\n", c.runs, c.algorithms,
+                           c.algorithms == 1 ? "" : "s", c.files, c.folder);
+        if (c.skipped)
+            out << fmt::format("{} run{} on problems outside the bbob suite not written (not COCO's data)\n", c.skipped,
+                               c.skipped == 1 ? "" : "s");
+        return 0;
+    }
     const report::ExportSummary written = report::export_ioh(o.store, o.ioh);
     out << fmt::format("{} IOHprofiler files written under {}\n", written.files, written.folder);
     return 0;

@@ -1,6 +1,7 @@
 #pragma once
 // `pride export STORE --ioh DIR`: a campaign store as IOHprofiler files (the COCO-style `.info`
-// and `.dat` files IOHanalyzer reads), one folder per algorithm.
+// and `.dat` files IOHanalyzer reads); `--coco DIR`: its bbob runs as COCO's own data files
+// (cocopp). One folder per algorithm.
 #include <iosfwd>
 #include <string>
 
@@ -8,7 +9,8 @@ namespace pride::cli {
 
 struct ExportOptions {
     std::string store;
-    std::string ioh;  // the folder to write
+    std::string ioh;   // the folder to write IOHprofiler files to
+    std::string coco;  // or COCO's data files
 };
 int export_command(const ExportOptions& o, std::ostream& out);
 

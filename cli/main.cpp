@@ -19,9 +19,9 @@
 #include "cli/grid_commands.hpp"
 #include "cli/pareto.hpp"
 #include "cli/report.hpp"
-#include "experiment/merge.hpp"
 #include "cli/roughset.hpp"
 #include "engine/registry.hpp"
+#include "experiment/merge.hpp"
 #include "framework/error.hpp"
 
 namespace {
@@ -199,9 +199,12 @@ int run_main(int argc, char** argv) {
                          "the values f as run, also where f_opt is known (default there: the precision f - f_opt)");
 
     ExportOptions exporting;
-    auto* export_cmd = app.add_subcommand("export", "a campaign store as IOHprofiler files (IOHanalyzer)");
+    auto* export_cmd =
+        app.add_subcommand("export", "a campaign store as IOHprofiler files (IOHanalyzer) or COCO's data (cocopp)");
     export_cmd->add_option("store", exporting.store, "the SQLite store written by pride bench")->required();
-    export_cmd->add_option("--ioh", exporting.ioh, "the folder to write")->required();
+    auto* ioh_option = export_cmd->add_option("--ioh", exporting.ioh, "the folder to write IOHprofiler files to");
+    export_cmd->add_option("--coco", exporting.coco, "the folder to write COCO's bbob data (.info, .dat, .tdat) to")
+        ->excludes(ioh_option);
 
     std::vector<std::string> merge_inputs;
     std::string merge_out;
@@ -250,9 +253,10 @@ int run_main(int argc, char** argv) {
         if (*export_cmd) return export_command(exporting, std::cout);
         if (*merge_cmd) {
             const auto s = pride::engine::merge_stores(merge_inputs, merge_out);
-            std::cout << fmt::format("merged {} stores into {}: {} runs ({} found in more than one store, equal, kept "
-                                     "once)\n",
-                                     merge_inputs.size(), merge_out, s.runs, s.shared);
+            std::cout << fmt::format(
+                "merged {} stores into {}: {} runs ({} found in more than one store, equal, kept "
+                "once)\n",
+                merge_inputs.size(), merge_out, s.runs, s.shared);
             return 0;
         }
         return 2;

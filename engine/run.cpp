@@ -346,6 +346,8 @@ void copy_run(RunResult& out, R&& r) {
     out.history = std::move(r.history);
     out.history_evaluations = std::move(r.history_evaluations);
     out.target_hits = std::move(r.target_hits);
+    out.trace_targets = std::move(r.trace_targets);
+    out.trace_evaluations = std::move(r.trace_evaluations);
 }
 
 /// The reported value of a whole-map planner's path (not an evaluation: GridProblem::result_value);
@@ -523,12 +525,18 @@ std::int64_t Problem::instance() const {
     const auto* f = prepared_->box ? std::get_if<continuous::Function>(&prepared_->box->problem) : nullptr;
     return f ? f->instance() : 0;
 }
-std::optional<double> Problem::optimum_value() const {
-    if (const auto* cb = std::get_if<CallbackSpec>(&prepared_->spec)) return cb->f_opt;
-    const auto* f = prepared_->box ? std::get_if<continuous::Function>(&prepared_->box->problem) : nullptr;
+namespace {
+std::optional<double> optimum_of(const Prepared& p) {
+    if (const auto* cb = std::get_if<CallbackSpec>(&p.spec)) return cb->f_opt;
+    const auto* f = p.box ? std::get_if<continuous::Function>(&p.box->problem) : nullptr;
     if (!f) return std::nullopt;
     const double v = f->optimum_value();
     return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+}  // namespace
+
+std::optional<double> Problem::optimum_value() const {
+    return optimum_of(*prepared_);
 }
 
 Termination Budget::termination(std::size_t dimension, bool grid) const {
@@ -623,6 +631,7 @@ CheckedRun checked_run(const AlgorithmSpec& algorithm, const Prepared& p, const 
     check_threads(p, budget);
     const AlgorithmEntry& entry = algorithms().at(algorithm.name);
     CheckedRun c{entry, checked(entry, p, algorithm), budget.termination(p.dimension, p.grid.has_value())};
+    c.termination.optimum = optimum_of(p);  // the reference of the run's COCO trace
     if (!entry.solve_grid) check_run_memory(entry, c.params, p, c.termination);
     return c;
 }

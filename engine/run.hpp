@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/specs.hpp"
+#include "framework/coco_trace.hpp"
 #include "framework/observer.hpp"
 #include "problems/grid/path.hpp"
 
@@ -83,6 +84,9 @@ struct RunResult {
     std::vector<double> history;  // best value after each iteration (0: the initial population)
     std::vector<std::int64_t> history_evaluations;
     std::vector<std::int64_t> target_hits;  // Budget::recorded_targets reached: evaluations at each
+    // (evaluations, best so far) at COCO's target and evaluation triggers (framework/coco_trace.hpp),
+    // the reference being the problem's f_opt when known: what COCO's .dat and .tdat files hold.
+    std::vector<TracePoint> trace_targets, trace_evaluations;
     std::optional<GridOutcome> grid;
 };
 

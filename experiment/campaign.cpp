@@ -16,8 +16,8 @@
 #include <set>
 #include <thread>
 
-#include "experiment/file_name.hpp"
 #include "engine/json.hpp"
+#include "experiment/file_name.hpp"
 #include "experiment/store.hpp"
 #include "framework/error.hpp"
 
@@ -78,8 +78,8 @@ std::string problem_definition(const CampaignProblem& p) {
         return fmt::format("{} dim {} instance {}", f->function, f->dim,
                            p.problem ? p.problem->instance() : f->instance.value_or(0));
     if (const auto* g = std::get_if<GridSpec>(&p.spec)) {
-        const std::string map = p.map_file.empty() ? std::string("(a map given in code)")
-                                                   : std::filesystem::absolute(p.map_file).string();
+        const std::string map =
+            p.map_file.empty() ? std::string("(a map given in code)") : std::filesystem::absolute(p.map_file).string();
         std::string s = fmt::format(
             "grid {} inflate {} start ({},{}) goal ({},{}) objective {} encoding {} connector {} waypoints {} init {} "
             "corner_cutting {} weights {}",
@@ -132,10 +132,11 @@ constexpr char kSep = '\x1f';
 
 std::string serialise(const RunRecord& r) {
     return fmt::format(
-        "{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}{0}{13}{0}{14}", kSep,
-        r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations, r.wall_ms,
+        "{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}{0}{13}{0}{14}{0}{15}{0}{"
+        "16}",
+        kSep, r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations, r.wall_ms,
         r.optimum ? fmt::format("{:.17g}", *r.optimum) : "", r.solution, r.history, r.history_evaluations,
-        r.target_hits, r.encoding);
+        r.target_hits, r.encoding, r.trace_targets, r.trace_evaluations);
 }
 
 RunRecord deserialise(const std::string& text) {
@@ -146,7 +147,7 @@ RunRecord deserialise(const std::string& text) {
         if (end == std::string::npos) break;
         start = end + 1;
     }
-    if (f.size() != 14) throw std::runtime_error("MPI: a malformed run record");
+    if (f.size() != 16) throw std::runtime_error("MPI: a malformed run record");
     RunRecord r;
     r.problem = f[0];
     r.algorithm = f[1];
@@ -162,6 +163,8 @@ RunRecord deserialise(const std::string& text) {
     r.history_evaluations = f[11];
     r.target_hits = f[12];
     r.encoding = f[13];
+    r.trace_targets = f[14];
+    r.trace_evaluations = f[15];
     return r;
 }
 
@@ -762,6 +765,16 @@ void prepare(Campaign& c) {
     if (c.text.empty()) c.text = describe(c);
 }
 
+namespace {
+/// A trace as RunRecord keeps it: [e0, f0, e1, f1, ...], null for +inf.
+std::string json_trace(const std::vector<TracePoint>& trace) {
+    std::string text = "[";
+    for (const auto& t : trace)
+        text += fmt::format("{}{}, {}", text.size() > 1 ? ", " : "", t.evaluations, json_number(t.best));
+    return text + "]";
+}
+}  // namespace
+
 RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Budget& budget, std::int64_t seed) {
     RunRecord r;
     r.problem = p.id;
@@ -788,6 +801,8 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     r.wall_ms = result.wall_ms;
     r.history = json_array(result.history);
     r.history_evaluations = json_integers(result.history_evaluations);
+    r.trace_targets = json_trace(result.trace_targets);
+    r.trace_evaluations = json_trace(result.trace_evaluations);
     if (optimum) {
         r.target_hits = "[";
         for (std::size_t k = 0; k < coco_precisions().size(); ++k)

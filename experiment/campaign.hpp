@@ -4,6 +4,7 @@
 // into an SQLite store (store.hpp) that commits finished runs as they come, so an interrupted
 // campaign resumes with no run lost or run twice.
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -29,12 +30,16 @@ struct CampaignProblem {
     std::optional<std::int64_t> evaluations;
 };
 
-/// COCO's target precisions: a continuous problem with a known optimum f_opt records in every run
-/// the evaluations after which the best value first reached f_opt + 10^k, k = 2, 1, ..., -8
-/// (Hansen et al. 2021, "COCO: a platform for comparing continuous optimizers in a black-box
-/// setting", section 4).
+/// COCO's 51 target precisions: a continuous problem with a known optimum f_opt records in every
+/// run the evaluations after which the best value first reached f_opt + 10^k, k = 2, 1.8, ...,
+/// -8 (Hansen et al. 2022, "COCO: performance assessment", the runtime ECDFs' targets; cocopp's
+/// 10**np.arange(2, -8.1, -0.2)).
 inline const std::vector<double>& coco_precisions() {
-    static const std::vector<double> p{1e2, 1e1, 1e0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+    static const std::vector<double> p = [] {
+        std::vector<double> v;
+        for (int k = 0; k <= 50; ++k) v.push_back(std::pow(10.0, (10 - k) / 5.0));
+        return v;
+    }();
     return p;
 }
 
@@ -92,6 +97,9 @@ struct RunRecord {
     // precision first held, or null; "[]" for problems without a known optimum.
     std::string target_hits = "[]";
     std::string encoding;  // grid runs: what the run planned on (line, free, chain; none for A*, exact)
+    // JSON [e0, f0, e1, f1, ...]: (evaluations, best so far) at COCO's target triggers and at its
+    // evaluation triggers (RunResult::trace_targets, trace_evaluations), null for +inf.
+    std::string trace_targets = "[]", trace_evaluations = "[]";
 };
 
 /// Runs one (problem, algorithm, seed) of a prepared campaign; the same inputs give the same

@@ -25,9 +25,9 @@
 #include <string>
 #include <tuple>
 
-#include "experiment/campaign.hpp"
 #include "engine/json.hpp"
 #include "engine/registry.hpp"
+#include "experiment/campaign.hpp"
 #include "experiment/store_schema.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
@@ -174,6 +174,10 @@ class Store {
             // What a grid run planned on (issue 23: one campaign may mix encodings); '' for boxes
             // and for runs stored before it.
             add_column("runs", "encoding", "TEXT NOT NULL DEFAULT ''");
+            // COCO's trace of each run (issue 24: what its .dat and .tdat files hold); '[]' for runs
+            // stored before it.
+            add_column("runs", "trace_targets", "TEXT NOT NULL DEFAULT '[]'");
+            add_column("runs", "trace_evaluations", "TEXT NOT NULL DEFAULT '[]'");
             exec("COMMIT");
             exec("PRAGMA synchronous=NORMAL");
         } catch (...) {
@@ -210,13 +214,30 @@ class Store {
     void claim(const Campaign& c) {
         exec("BEGIN IMMEDIATE");
         try {
-            sqlite3_stmt* s = prepare("SELECT name, text, (SELECT COUNT(*) FROM runs) FROM campaign WHERE id = 1");
+            sqlite3_stmt* s =
+                prepare("SELECT name, text, (SELECT COUNT(*) FROM runs), precisions FROM campaign WHERE id = 1");
             const int rc = sqlite3_step(s);
             if (rc == SQLITE_ROW) {
                 const std::string name = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
                 const std::string text = reinterpret_cast<const char*>(sqlite3_column_text(s, 1));
                 const std::int64_t runs = sqlite3_column_int64(s, 2);
+                const std::optional<std::string> precisions =
+                    sqlite3_column_type(s, 3) == SQLITE_NULL
+                        ? std::nullopt
+                        : std::optional<std::string>(reinterpret_cast<const char*>(sqlite3_column_text(s, 3)));
                 sqlite3_finalize(s);
+                // Every run of a store records hits of the same targets (issue 24 went from COCO's
+                // 11 precisions to its 51): new runs cannot join runs that recorded others. A store
+                // from before precisions (its runs record none) takes today's.
+                const std::string current = json_array(coco_precisions());
+                if (!precisions) {
+                    sqlite3_stmt* u = prepare("UPDATE campaign SET precisions = ? WHERE id = 1");
+                    sqlite3_bind_text(u, 1, current.c_str(), -1, SQLITE_TRANSIENT);
+                    step_done(u, "cannot write the store");
+                } else if ((runs > 0 || live_claims() > 0) && *precisions != current)
+                    throw InputError(path_ + ": its runs record the target precisions " + *precisions +
+                                     ", this pride records COCO's 51 (10^2 ... 10^-8); report it as it is, or run the "
+                                     "campaign into a new store");
                 if (text == c.text) {
                     fill_definitions(c);  // a store from before definitions, resumed with its own file
                     exec("COMMIT");
@@ -551,8 +572,8 @@ class Store {
         sqlite3_stmt* s = cached(
             insert_,
             "INSERT OR IGNORE INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, "
-            "optimum, solution, history, history_evaluations, target_hits, encoding) VALUES (?, ?, ?, ?, ?, ?, ?, ?, "
-            "?, ?, ?, ?, ?, ?)");
+            "optimum, solution, history, history_evaluations, target_hits, encoding, trace_targets, trace_evaluations) "
+            "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
         sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_int64(s, 3, r.seed);
@@ -571,6 +592,8 @@ class Store {
         sqlite3_bind_text(s, 12, r.history_evaluations.c_str(), -1, SQLITE_STATIC);
         sqlite3_bind_text(s, 13, r.target_hits.c_str(), -1, SQLITE_STATIC);
         sqlite3_bind_text(s, 14, r.encoding.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 15, r.trace_targets.c_str(), -1, SQLITE_STATIC);
+        sqlite3_bind_text(s, 16, r.trace_evaluations.c_str(), -1, SQLITE_STATIC);
         step_cached(s, "cannot write the store");
         const std::size_t added = static_cast<std::size_t>(sqlite3_changes(db_));
         s = cached(unclaim_, "DELETE FROM claims WHERE problem = ? AND algorithm = ? AND seed = ?");

@@ -5,8 +5,9 @@
 //   0: stores from before the version was recorded (migrated on the next pride bench)
 //   1: runs.encoding, campaign.target_precision, campaign.budget and the problems' and
 //      algorithms' definitions (issues 23 and 24)
+//   2: runs.trace_targets and runs.trace_evaluations, COCO's trace of each run (issue 24)
 namespace pride::engine {
 
-inline constexpr int store_schema = 1;
+inline constexpr int store_schema = 2;
 
 }  // namespace pride::engine

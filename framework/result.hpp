@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "framework/coco_trace.hpp"
+
 namespace pride {
 
 /// `Solution` is what the algorithm searched: a point of the box (the default) or, for algorithms
@@ -22,6 +24,9 @@ struct BasicResult {
     /// target_hits[k]: the evaluations after which the best value first was <= the k-th of
     /// Termination::recorded_targets, for the targets reached (a prefix: they decrease).
     std::vector<std::int64_t> target_hits;
+    /// (evaluations, best so far) at COCO's target triggers and at its evaluation triggers
+    /// (framework/coco_trace.hpp): what COCO's .dat and .tdat files hold.
+    std::vector<TracePoint> trace_targets, trace_evaluations;
     double wall_ms = 0.0;  // from population set-up to the end of the run
 };
 

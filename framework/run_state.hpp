@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "framework/coco_trace.hpp"
 #include "framework/observer.hpp"
 #include "framework/problem.hpp"
 #include "framework/result.hpp"
@@ -37,7 +38,8 @@ class BasicRunState {
     /// `dimension`: the length of a point, for box problems (the best point is allocated once).
     explicit BasicRunState(const Termination& termination, std::size_t dimension = 0)
         : termination_(termination),
-          limit_(termination.max_evaluations.value_or(std::numeric_limits<std::int64_t>::max())) {
+          limit_(termination.max_evaluations.value_or(std::numeric_limits<std::int64_t>::max())),
+          trace_(termination.optimum.value_or(0.0), dimension) {
         if constexpr (is_point) best_x_.assign(dimension, std::numeric_limits<double>::quiet_NaN());
         target_hits_.reserve(termination.recorded_targets.size());
         progress_.start = Clock::now();
@@ -50,13 +52,15 @@ class BasicRunState {
         if (progress_.evaluations >= limit_) throw std::logic_error("evaluation budget overspent");
         const double f = sanitize(problem.evaluate(x));
         ++progress_.evaluations;
-        if (f < progress_.best) {
+        const bool better = f < progress_.best;
+        if (better) {
             improved(f);
             if constexpr (is_point)
                 std::copy(x.begin(), x.end(), best_x_.begin());
             else
                 best_x_ = x;
         }
+        trace_.record(progress_.evaluations, progress_.best, better);
         return f;
     }
 
@@ -68,7 +72,9 @@ class BasicRunState {
     double evaluate_partial(const P& problem, const X& x) {
         if (progress_.evaluations + 1 >= limit_) return kInf;
         ++progress_.evaluations;
-        return sanitize(problem.evaluate(x));
+        const double f = sanitize(problem.evaluate(x));
+        trace_.record(progress_.evaluations, progress_.best, false);
+        return f;
     }
 
     /// Evaluates the first min(points.cols(), remaining()) columns into `values` and returns how
@@ -82,10 +88,12 @@ class BasicRunState {
                 auto& f = values[static_cast<std::size_t>(j)];
                 f = sanitize(f);
                 ++progress_.evaluations;
-                if (f < progress_.best) {
+                const bool better = f < progress_.best;
+                if (better) {
                     improved(f);
                     std::copy_n(points.col(j).data(), points.rows(), best_x_.begin());
                 }
+                trace_.record(progress_.evaluations, progress_.best, better);
             }
         } else {
             for (Eigen::Index j = 0; j < n; ++j)
@@ -133,6 +141,8 @@ class BasicRunState {
         r.history = std::move(history_);
         r.history_evaluations = std::move(history_evaluations_);
         r.target_hits = std::move(target_hits_);
+        r.trace_targets = std::move(trace_.targets());
+        r.trace_evaluations = std::move(trace_.evaluations());
         return r;
     }
 
@@ -152,6 +162,7 @@ class BasicRunState {
     std::vector<double> history_;
     std::vector<std::int64_t> history_evaluations_;
     std::vector<std::int64_t> target_hits_;
+    CocoTrace trace_;
     bool started_ = false;
 };
 

@@ -35,6 +35,9 @@ class Termination {
     // Not a stopping rule: values, in decreasing order, whose first reaching the evaluation guard
     // records as an exact evaluation count (COCO's targets f_opt + 10^k: Result::target_hits).
     std::vector<double> recorded_targets;
+    // Not a stopping rule: f_opt when known, the reference of the run's COCO trace
+    // (Result::trace_targets); without it the trace's triggers follow the values themselves.
+    std::optional<double> optimum;
     // Not a limit: a flag set from outside the run's loop (an observer asking to stop, a front end
     // cancelling), read with the other rules once per iteration; unset costs one test.
     std::shared_ptr<const std::atomic<bool>> stop;
@@ -85,6 +88,7 @@ class Termination {
         tighter(a.target, b.target, max);
         tighter(a.wall_time, b.wall_time, min);
         if (a.recorded_targets.empty()) a.recorded_targets = b.recorded_targets;
+        if (!a.optimum) a.optimum = b.optimum;
         if (!a.stop) a.stop = b.stop;
         return a;
     }

@@ -539,7 +539,13 @@ TEST_CASE("coco: a store written by pride bench, read back and checked against i
     REQUIRE(bench.status == 0);
     const auto s = pride::report::read_store(store);
     REQUIRE(s.precisions);
-    CHECK(*s.precisions == std::vector<double>{1e2, 1e1, 1e0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8});
+    // COCO's 51 targets 10^2, 10^1.8, ..., 10^-8 (every fifth a power of ten, exactly).
+    REQUIRE(s.precisions->size() == 51);
+    for (std::size_t k = 0; k < 51; ++k)
+        CHECK_THAT((*s.precisions)[k], WithinRel(std::pow(10.0, 2.0 - 0.2 * static_cast<double>(k)), 1e-14));
+    for (std::size_t k = 0; k < 51; k += 5)
+        CHECK((*s.precisions)[k] == std::stod("1e" + std::to_string(2 - int(k) / 5)));
+    constexpr std::size_t n = 51;
     const auto& sphere = (*s.problems)[0];
     REQUIRE(sphere.f_opt);
     std::map<std::string, std::vector<std::vector<coco::TargetRun>>> by_algorithm;  // sphere runs, per precision
@@ -548,10 +554,26 @@ TEST_CASE("coco: a store written by pride bench, read back and checked against i
             CHECK(r.target_hits.empty());  // no known optimum: no hits
             continue;
         }
-        REQUIRE(r.target_hits.size() == 11);
+        REQUIRE(r.target_hits.size() == n);
         auto& per = by_algorithm[r.algorithm];
-        per.resize(11);
-        for (std::size_t k = 0; k < 11; ++k) {
+        per.resize(n);
+        // COCO's trace: its target triggers (20 per decade) include the 51 targets (5 per decade),
+        // so the first trace point at or below a target is the exact hit.
+        REQUIRE(!r.trace_targets.empty());
+        CHECK(r.trace_targets.front().evaluations == 1);
+        CHECK(r.trace_targets.back().best >= *r.best);  // improvements within a trigger are not kept
+        REQUIRE(!r.trace_evaluations.empty());
+        CHECK(r.trace_evaluations.front().evaluations == 1);
+        for (std::size_t k = 0; k < n; ++k) {
+            std::optional<std::int64_t> traced;
+            for (const auto& t : r.trace_targets)
+                if (t.best <= *sphere.f_opt + (*s.precisions)[k]) {
+                    traced = t.evaluations;
+                    break;
+                }
+            CHECK(traced == r.target_hits[k]);
+        }
+        for (std::size_t k = 0; k < n; ++k) {
             INFO(r.algorithm << " seed " << r.seed << " precision " << (*s.precisions)[k]);
             per[k].push_back({r.evaluations, r.target_hits[k], sphere.dim});
             // The exact hit lies within the first iteration whose best value reached the target.
@@ -574,7 +596,7 @@ TEST_CASE("coco: a store written by pride bench, read back and checked against i
         CHECK(row.function == "sphere");
         CHECK(row.dim == 4);
         CHECK(row.runs == 3);
-        for (std::size_t k = 0; k < 11; ++k) {
+        for (std::size_t k = 0; k < n; ++k) {
             const coco::Ert e = coco::ert(by_algorithm.at(row.algorithm)[k]);
             CHECK(row.ert[k].value == e.value);
             CHECK(row.ert[k].successes == e.successes);
@@ -587,7 +609,7 @@ TEST_CASE("coco: a store written by pride bench, read back and checked against i
           std::string::npos);
     const auto ert_csv = run_pride("report " + quote(store) + " --format ert-csv");
     REQUIRE(ert_csv.status == 0);
-    CHECK(std::count(ert_csv.out.begin(), ert_csv.out.end(), '\n') == 1 + 2 * 11);
+    CHECK(std::count(ert_csv.out.begin(), ert_csv.out.end(), '\n') == 1 + 2 * 51);
 }
 
 TEST_CASE("coco: a bbob [[suite]] campaign from pride bench to tables, figures and IOH files",

@@ -146,7 +146,11 @@ TEST_CASE("suites: a suite campaign stores f_opt, instance, suite, COCO's precis
     CHECK(summary.stored == 15 * 2);
 
     const auto precisions = rows(store, "SELECT precisions FROM campaign");
-    CHECK(precisions.at(0).at(0) == "[100, 10, 1, 0.1, 0.01, 0.001, 0.0001, 1e-05, 1e-06, 1e-07, 1e-08]");
+    // Shortest round-trip decimals: 10^1.8 = 63.09573444801933, ..., 1e-08 last.
+    CHECK(precisions.at(0).at(0).rfind("[100, 63.09573444801933, 39.810717055349734, ", 0) == 0);
+    CHECK(precisions.at(0).at(0).find(", 10, ") != std::string::npos);
+    CHECK(precisions.at(0).at(0).size() > 300);
+    CHECK(precisions.at(0).at(0).substr(precisions.at(0).at(0).size() - 6) == "1e-08]");
 
     const auto problems = rows(store, "SELECT id, function, instance, f_opt, suite, fid FROM problems ORDER BY rowid");
     REQUIRE(problems.size() == 15);
@@ -157,21 +161,22 @@ TEST_CASE("suites: a suite campaign stores f_opt, instance, suite, COCO's precis
           std::vector<std::string>{"yao-f16-i0-d2", "yao-f16", "0", "-1.0316284534898774", "classic", "16"});
     CHECK(problems[14] == std::vector<std::string>{"sph-i5", "sphere", "5", "0", "null", "null"});
 
-    // Each run's hits: 11 entries, an integer or null, non-decreasing, within the run's evaluations,
+    // Each run's hits: 51 entries (COCO's targets), an integer or null, non-decreasing, within the run's evaluations,
     // and agreeing with the best value stored (reached iff best <= f_opt + precision).
     const auto runs = rows(store,
                            "SELECT r.target_hits, r.best, r.evaluations, p.f_opt FROM runs r JOIN problems p ON "
                            "p.id = r.problem");
     REQUIRE(runs.size() == 30);
-    const std::vector<double> p{1e2, 1e1, 1e0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+    const std::vector<double>& p = pride::engine::coco_precisions();
+    REQUIRE(p.size() == 51);
     for (const auto& r : runs) {
         INFO(r[0]);
         const auto parsed = pride::test::parse_json(r[0]);
-        REQUIRE(parsed.items.size() == 11);
+        REQUIRE(parsed.items.size() == 51);
         const double best = std::stod(r[1]), f_opt = std::stod(r[3]);
         const long long evaluations = std::stoll(r[2]);
         long long last = 0;
-        for (std::size_t k = 0; k < 11; ++k) {
+        for (std::size_t k = 0; k < 51; ++k) {
             const auto& hit = parsed.items[k];
             CHECK((hit.kind == pride::test::JsonValue::Kind::null) == !(best <= f_opt + p[k]));
             if ((hit.kind == pride::test::JsonValue::Kind::null)) continue;

@@ -19,34 +19,6 @@
 namespace pride::report {
 namespace {
 
-/// One folder name per algorithm id, each a safe file name, no two alike: an id that is a safe
-/// name already keeps it; one that had to change gets a hash of the id (FNV-1a) after it, so
-/// that "a/b" and "a_b" never share a folder; a clash left over (or the same name in another
-/// case, for case-insensitive file systems) is numbered.
-std::map<std::string, std::string> folder_names(const std::vector<std::string>& ids) {
-    const auto lower = [](std::string s) {
-        for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return s;
-    };
-    std::map<std::string, std::string> out;
-    std::set<std::string> used;  // lower case
-    std::vector<std::string> changed;
-    for (const auto& id : ids)
-        if (engine::file_name(id) == id && used.insert(lower(id)).second)
-            out[id] = id;
-        else
-            changed.push_back(id);
-    for (const auto& id : changed) {
-        std::uint64_t h = 1469598103934665603ull;
-        for (const unsigned char c : id) h = (h ^ c) * 1099511628211ull;
-        std::string name = fmt::format("{}-{:08x}", engine::file_name(id), static_cast<std::uint32_t>(h ^ (h >> 32)));
-        for (int k = 2; !used.insert(lower(name)).second; ++k)
-            name = fmt::format("{}-{:08x}-{}", engine::file_name(id), static_cast<std::uint32_t>(h ^ (h >> 32)), k);
-        out[id] = name;
-    }
-    return out;
-}
-
 /// A name inside the .info file's double quotes.
 std::string quoted(const std::string& name) {
     std::string s;
@@ -102,7 +74,7 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
     summary.algorithms = runs.size();
     std::vector<std::string> ids;
     for (const auto& entry : runs) ids.push_back(entry.first);
-    const auto folders = folder_names(ids);
+    const auto folders = engine::unique_file_names(ids);
     for (const auto& [algorithm, by_problem] : runs) {
         // Suite problems (a suite and a fid, e.g. bbob) as IOHexperimenter writes them: one
         // function per fid (file IOHprofiler_f<fid>_<function>), all its instances and seeds as

@@ -272,6 +272,30 @@ void check_length(const std::string& path) {
 
 }  // namespace
 
+namespace {
+/// A trace column, [e0, f0, e1, f1, ...] (null: +inf): evaluations whole, increasing, within the
+/// run's; the best values never increasing. NULL reads as no trace.
+std::vector<TracePoint> trace(const Query& q, int i, const char* column, std::int64_t run_evaluations) {
+    std::vector<TracePoint> out;
+    if (q.is_null(i)) return out;
+    const auto flat = q.list<double>(i, column);
+    if (flat.size() % 2 != 0)
+        q.fail(column, fmt::format("expected pairs of evaluations and values, got {} numbers", flat.size()));
+    for (std::size_t k = 0; k < flat.size(); k += 2) {
+        const double e = flat[k];
+        if (!(e >= 1 && e <= static_cast<double>(run_evaluations) && e == std::floor(e)))
+            q.fail(column, fmt::format("expected evaluations in [1, {}] (the run's), got {}", run_evaluations, e));
+        const TracePoint t{static_cast<std::int64_t>(e), flat[k + 1]};
+        if (!out.empty() && (t.evaluations <= out.back().evaluations || t.best > out.back().best))
+            q.fail(column, fmt::format("expected increasing evaluations and values that never increase, got ({}, {}) "
+                                       "after ({}, {})",
+                                       t.evaluations, t.best, out.back().evaluations, out.back().best));
+        out.push_back(t);
+    }
+    return out;
+}
+}  // namespace
+
 CampaignStore read_store(const std::string& path) {
     require(std::filesystem::is_regular_file(path), path, "no such store");
     check_length(path);
@@ -282,11 +306,13 @@ CampaignStore read_store(const std::string& path) {
     {
         Query q(db, "PRAGMA user_version");
         q.where = "the store's schema version";
-        const std::int64_t version = q.next() ? q.integer(0, "user_version", std::numeric_limits<std::int64_t>::min()) : 0;
+        const std::int64_t version =
+            q.next() ? q.integer(0, "user_version", std::numeric_limits<std::int64_t>::min()) : 0;
         if (version > engine::store_schema)
-            throw InputError(fmt::format("{}: was written by a newer pride (store schema {}; this pride knows 0 to {}); "
-                                         "use that pride",
-                                         path, version, engine::store_schema));
+            throw InputError(
+                fmt::format("{}: was written by a newer pride (store schema {}; this pride knows 0 to {}); "
+                            "use that pride",
+                            path, version, engine::store_schema));
     }
     for (const char* table : {"campaign", "runs"})
         if (!tables.count(table)) throw DamagedStore(path, fmt::format("it has no table {}", table));
@@ -371,8 +397,10 @@ CampaignStore read_store(const std::string& path) {
         }
     }
     Query q(db, fmt::format("SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, "
-                            "history_evaluations, {}, {} FROM runs ORDER BY problem, algorithm, seed",
-                            has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"))
+                            "history_evaluations, {}, {}, {}, {} FROM runs ORDER BY problem, algorithm, seed",
+                            has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"),
+                            optional_column(run_columns, "trace_targets"),
+                            optional_column(run_columns, "trace_evaluations"))
                     .c_str());
     while (q.next()) {
         // Named by rowid until its key is read, then by the key.
@@ -408,6 +436,8 @@ CampaignStore read_store(const std::string& path) {
                            fmt::format("expected at most the run's {} evaluations, got {}", r.evaluations, *hit));
         }
         if (!q.is_null(11)) r.encoding = q.text(11, "encoding");
+        r.trace_targets = trace(q, 12, "trace_targets", r.evaluations);
+        r.trace_evaluations = trace(q, 13, "trace_evaluations", r.evaluations);
         // The analysis of target hits (experiment/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.
         if (store.precisions && has_problems && !problem_ids.count(r.problem))

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/coco_trace.hpp"
 #include "framework/error.hpp"
 
 namespace pride::report {
@@ -37,6 +38,9 @@ struct StoredRun {
     // no hits (column absent, NULL or []).
     std::vector<std::optional<std::int64_t>> target_hits;
     std::string encoding;  // grid runs: what the run planned on; empty for boxes and older stores
+    // COCO's trace (framework/coco_trace.hpp): (evaluations, best so far, +inf before a finite
+    // value) at its target and at its evaluation triggers; empty for runs stored before it.
+    std::vector<TracePoint> trace_targets, trace_evaluations;
 };
 
 struct StoredProblem {

@@ -1,0 +1,134 @@
+#include "experiment/report/coco_export.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "experiment/file_name.hpp"
+#include "experiment/report/store.hpp"
+#include "framework/error.hpp"
+
+#ifndef PRIDE_VERSION
+#define PRIDE_VERSION "unknown"
+#endif
+
+namespace pride::report {
+namespace {
+
+// logger_bbob.c's header of every run's block in .dat and .tdat (Fopt printed with %13.12e).
+constexpr const char* kHeader =
+    "% f evaluations | g evaluations | best noise-free fitness - Fopt ({:13.12e}) + sum g_i+ | measured fitness | "
+    "best measured fitness or single-digit g-values | x1 | x2...\n";
+
+/// One data line as logger_bbob_output writes it without constraints or x: "%lu %lu %+10.9e
+/// %+10.9e %+10.9e". The precision is max(best, f_opt) - f_opt, as COCO's logger clamps it.
+std::string line(std::int64_t evaluations, double best, double f_opt) {
+    const double precision = std::isfinite(best) ? std::max(best, f_opt) - f_opt : best;
+    return fmt::format("{} 0 {:+10.9e} {:+10.9e} {:+10.9e}\n", evaluations, precision, best, best);
+}
+
+/// A run's block: its header, the trace's lines, and (logger_bbob_free) a last line at the run's
+/// last evaluation when the trace's last line is not there.
+void write_block(std::ofstream& out, const std::vector<TracePoint>& trace, const StoredRun& r, double f_opt) {
+    out << fmt::format(kHeader, f_opt);
+    for (const auto& t : trace) out << line(t.evaluations, t.best, f_opt);
+    const double best = r.best.value_or(INFINITY);
+    if (trace.empty() || trace.back().evaluations != r.evaluations) out << line(r.evaluations, best, f_opt);
+}
+
+void close_checked(std::ofstream& out, const std::filesystem::path& path) {
+    out.close();  // the last buffer is written here: checked too (a full disk)
+    require(!out.fail(), path.string(), "cannot write the file");
+}
+
+struct Run {
+    std::int64_t instance = 0, seed = 0;
+    const StoredRun* run = nullptr;
+    double f_opt = 0;
+};
+
+}  // namespace
+
+CocoExportSummary export_coco(const std::string& store_path, const std::string& folder) {
+    require(!folder.empty(), "COCO export", "name the folder to write");
+    const CampaignStore store = read_store(store_path);
+    if (!store.problems) throw DamagedStore(store_path, "it has no table problems");
+    std::map<std::string, const StoredProblem*> problems;
+    for (const auto& p : *store.problems) problems[p.id] = &p;
+
+    // algorithm -> fid -> dim -> runs, by instance then seed (the order of the .info line).
+    std::map<std::string, std::map<std::int64_t, std::map<std::int64_t, std::vector<Run>>>> runs;
+    CocoExportSummary summary;
+    summary.folder = folder;
+    for (const StoredRun& r : store.runs) {
+        const auto it = problems.find(r.problem);
+        const StoredProblem* p = it == problems.end() ? nullptr : it->second;
+        if (!p || !p->suite || *p->suite != "bbob" || !p->fid || !p->f_opt || p->instance < 1) {
+            ++summary.skipped;
+            continue;
+        }
+        require(!r.trace_targets.empty(), store_path,
+                fmt::format("run (problem '{}', algorithm '{}', seed {}) has no COCO trace (stored before pride kept "
+                            "one); run the campaign again into a new store to export it",
+                            r.problem, r.algorithm, r.seed));
+        runs[r.algorithm][*p->fid][p->dim].push_back({p->instance, r.seed, &r, *p->f_opt});
+    }
+    require(!runs.empty(), store_path,
+            "holds no run on the bbob suite (COCO's data format is for bbob campaigns: [[suite]] name = \"bbob\")");
+
+    std::vector<std::string> ids;
+    for (const auto& entry : runs) ids.push_back(entry.first);
+    const auto folders = engine::unique_file_names(ids);
+    summary.algorithms = runs.size();
+    for (auto& [algorithm, by_fid] : runs) {
+        const std::filesystem::path dir = std::filesystem::path(folder) / folders.at(algorithm);
+        for (auto& [fid, by_dim] : by_fid) {
+            const std::string data_folder = fmt::format("data_f{}", fid);
+            std::error_code ec;
+            std::filesystem::create_directories(dir / data_folder, ec);
+            require(!ec, (dir / data_folder).string(), "cannot create the folder");
+            const auto info_path = dir / fmt::format("bbobexp_f{}.info", fid);
+            std::ofstream info(info_path);
+            bool first = true;
+            for (auto& [dim, dim_runs] : by_dim) {
+                std::sort(dim_runs.begin(), dim_runs.end(), [](const Run& a, const Run& b) {
+                    return std::tie(a.instance, a.seed) < std::tie(b.instance, b.seed);
+                });
+                const std::string stem = fmt::format("{}/bbobexp_f{}_DIM{}", data_folder, fid, dim);
+                // logger_bbob_open_info_file: the header, a comment line, the data file, then
+                // ", instance:evaluations|final precision" per run (%.1e).
+                info << fmt::format(
+                    "{}suite = 'bbob', funcId = {}, DIM = {}, Precision = {:.3e}, algId = '{}', coco_version = "
+                    "'pride {}', logger = 'bbob', data_format = 'bbob-new2'\n% pride campaign {}, algorithm {}\n{}.dat",
+                    first ? "" : "\n", fid, dim, 1e-8, folders.at(algorithm), PRIDE_VERSION, store.name, algorithm,
+                    stem);
+                first = false;
+                std::ofstream dat(dir / (stem + ".dat")), tdat(dir / (stem + ".tdat"));
+                for (const Run& run : dim_runs) {
+                    write_block(dat, run.run->trace_targets, *run.run, run.f_opt);
+                    write_block(tdat, run.run->trace_evaluations, *run.run, run.f_opt);
+                    const double best = run.run->best.value_or(INFINITY);
+                    info << fmt::format(", {}:{}|{:.1e}", run.instance, run.run->evaluations,
+                                        std::isfinite(best) ? std::max(best, run.f_opt) - run.f_opt : best);
+                    ++summary.runs;
+                }
+                close_checked(dat, dir / (stem + ".dat"));
+                close_checked(tdat, dir / (stem + ".tdat"));
+                summary.files += 2;
+            }
+            info << "\n";
+            close_checked(info, info_path);
+            ++summary.files;
+        }
+    }
+    return summary;
+}
+
+}  // namespace pride::report
