@@ -49,6 +49,13 @@ def main():
             line, = ax.step(xs, ys, where="post", linestyle=styles[index % len(styles)], linewidth=1.8,
                             label=f"{curve['algorithm']} ({curve['pairs']} pairs)")
             ax.plot([xs[-1]], [ys[-1]], "x", color=line.get_color(), markersize=9, markeredgewidth=2)
+            restarts = curve.get("restarts")  # COCO's ECDF with simulated restarts (thin, same colour)
+            if restarts and restarts["x"]:
+                rxs = [left] + restarts["x"] + [max(right, restarts["x"][-1])]
+                rys = [0.0] + restarts["y"] + [restarts["y"][-1]]
+                ax.step(rxs, rys, where="post", linestyle=":", linewidth=1.0, color=line.get_color(),
+                        label=f"{curve['algorithm']}, simulated restarts")
+                right = max(right, restarts["x"][-1])
         dims = ", ".join(str(d) for d in group["dims"])
         ax.set_title(f"{data['campaign']}: {group['title']}, D = {dims}\n"
                      f"{len(precisions)} targets f_opt + 10^[{_span(precisions)}]", fontsize="medium")

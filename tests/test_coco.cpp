@@ -296,7 +296,10 @@ TEST_CASE("coco: a store with the suite columns read back, analysed and reported
     CHECK(md.out.find("## Expected running time (ERT)") != std::string::npos);
     CHECK(md.out.find("### bbob-f1, 2-D (2 instances)") != std::string::npos);
     CHECK(md.out.find("| algorithm | ERT 1e1 | ERT 1e-1 | #succ |") != std::string::npos);
-    CHECK(md.out.find("| a | 45 | 350 | 1/4 |") != std::string::npos);
+    // ERTs with the 10th and 90th percentiles of their bootstrap in brackets; inf without.
+    CHECK(md.out.find("| a | 45 [") != std::string::npos);
+    CHECK(md.out.find("] | 350 [") != std::string::npos);
+    CHECK(md.out.find("] | 1/4 |") != std::string::npos);
     CHECK(md.out.find("| b | inf | inf | 0/4 |") != std::string::npos);
     CHECK(md.out.find("### rastrigin, 3-D (1 instance)") != std::string::npos);
     CHECK(md.out.find("1 runs record no target hits") != std::string::npos);
@@ -307,16 +310,17 @@ TEST_CASE("coco: a store with the suite columns read back, analysed and reported
     CHECK(csv.out.find("ert") == std::string::npos);
     const auto ert_csv = run_pride("report " + quote(store) + " --format ert-csv");
     REQUIRE(ert_csv.status == 0);
-    CHECK(ert_csv.out.rfind("function,dim,algorithm,precision,ert,successes,runs\n", 0) == 0);
-    CHECK(ert_csv.out.find("\nbbob-f1,2,a,10,45,3,4\n") != std::string::npos);
-    CHECK(ert_csv.out.find("\nbbob-f1,2,a,1,135,2,4\n") != std::string::npos);
-    CHECK(ert_csv.out.find("\nbbob-f1,2,a,0.1,350,1,4\n") != std::string::npos);
-    CHECK(ert_csv.out.find("\nbbob-f20,2,b,0.1,inf,0,1\n") != std::string::npos);
+    CHECK(ert_csv.out.rfind("function,dim,algorithm,precision,ert,successes,runs,ert_p10,ert_p50,ert_p90\n", 0) == 0);
+    CHECK(ert_csv.out.find("\nbbob-f1,2,a,10,45,3,4,") != std::string::npos);
+    CHECK(ert_csv.out.find("\nbbob-f1,2,a,1,135,2,4,") != std::string::npos);
+    CHECK(ert_csv.out.find("\nbbob-f1,2,a,0.1,350,1,4,") != std::string::npos);
+    CHECK(ert_csv.out.find("\nbbob-f20,2,b,0.1,inf,0,1,inf,inf,inf\n") != std::string::npos);
     CHECK(std::count(ert_csv.out.begin(), ert_csv.out.end(), '\n') == 1 + 6 * 3);  // 6 rows x 3 precisions
     const auto latex = run_pride("report " + quote(store) + " --format latex");
     REQUIRE(latex.status == 0);
     CHECK(latex.out.find("% bbob-f20, 2-D (1 instance)\n\\begin{tabular}{lrrr}") != std::string::npos);
-    CHECK(latex.out.find("a & 80 & 200 & 1/2 \\\\") != std::string::npos);
+    CHECK(latex.out.find("a & 80 [") != std::string::npos);
+    CHECK(latex.out.find("] & 200 [") != std::string::npos);
 
     // Precisions in another order: the columns follow COCO's order, #succ the smallest precision.
     // The hits stay as they are: for a on bbob-f1 the ERT at 10 is now the second entry's, 135;
@@ -332,7 +336,9 @@ TEST_CASE("coco: a store with the suite columns read back, analysed and reported
     const auto u = run_pride("report " + quote(unordered));
     REQUIRE(u.status == 0);
     CHECK(u.out.find("the smallest precision (1e-1)") != std::string::npos);
-    CHECK(u.out.find("| a | 135 | 45 | 3/4 |") != std::string::npos);
+    CHECK(u.out.find("| a | 135 [") != std::string::npos);
+    CHECK(u.out.find("] | 45 [") != std::string::npos);
+    CHECK(u.out.find("] | 3/4 |") != std::string::npos);
 }
 
 TEST_CASE("coco: stores without the suite columns, or with them NULL, read as before", "[report][coco]") {

@@ -260,7 +260,7 @@ TEST_CASE("report: ERT pools a function's seeded instances, never its instance 0
         std::vector<std::string> f;
         std::stringstream cells(line);
         for (std::string c; std::getline(cells, c, ',');) f.push_back(c);
-        REQUIRE(f.size() == 7);
+        REQUIRE(f.size() == 10);
         runs.emplace(f[0], f[6]);
     }
     CHECK(runs == std::map<std::string, std::string>{

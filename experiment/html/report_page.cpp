@@ -291,10 +291,61 @@ std::string statistics_section(const ReportData& r) {
                 "class=\"n\">{:.3g}{}</td></tr>\n",
                 escape(f->algorithms[q.a]), escape(f->algorithms[q.b]), q.z, q.p, q.p_holm, q.p_holm < 0.05 ? "*" : "");
         h += "</table>\n";
+        const auto& cd = f->critical_difference;
+        std::string groups;
+        for (const auto& clique : cd.cliques) {
+            std::string names;
+            for (const std::size_t j : clique) names += (names.empty() ? "" : ", ") + escape(f->algorithms[j]);
+            groups += (groups.empty() ? "" : "; ") + ("{" + names + "}");
+        }
+        h += fmt::format(
+            "<p><b>Nemenyi's critical difference</b> at alpha {:g} (Dem&scaron;ar 2006): CD = {:.3g}; algorithms whose "
+            "average ranks differ by less are not significantly different: {}.</p>\n",
+            cd.alpha, cd.cd, groups.empty() ? std::string("none") : groups);
     } else {
         h += "<p>No Friedman test: it needs two algorithms run on every one of two problems or more.</p>\n";
     }
-    return h + "</section>\n";
+    return h;
+}
+
+/// Demsar's critical-difference diagram: the average ranks, the CD, and a bar over each group of
+/// algorithms not significantly different; then the statistics section ends.
+void cd_diagram(Page& page, const ReportData& r) {
+    if (const auto& f = r.friedman) {
+        const auto& cd = f->critical_difference;
+        const double k = static_cast<double>(f->algorithms.size());
+        Figure fig("critical-difference diagram", Axis{"average rank (1 = best)", Scale::linear, 0.5, k + 0.5},
+                   Axis{"", Scale::linear, -0.5, k + 1.5});
+        fig.subtitle(
+            fmt::format("Friedman over {} problems; Nemenyi CD = {:.3g} at alpha {:g}", f->problems, cd.cd, cd.alpha));
+        std::vector<std::size_t> order(f->algorithms.size());
+        for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return f->test.average_ranks[a] < f->test.average_ranks[b]; });
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            const std::size_t j = order[i];
+            const std::string& name = f->algorithms[j];
+            const bool known = page.algorithms.count(name) > 0;
+            const double y = k - static_cast<double>(i);
+            const Rgb colour = known ? page.colour(name) : series_colour(i);
+            fig.line({f->test.average_ranks[j], f->test.average_ranks[j]}, {0.0, y}, colour, "", 0);
+            fig.markers({f->test.average_ranks[j]}, {y}, colour,
+                        fmt::format("{} ({:.3g})", name, f->test.average_ranks[j]), Marker::circle);
+        }
+        const Rgb black{0, 0, 0};
+        fig.line({1.0, 1.0 + cd.cd}, {k + 1, k + 1}, black, fmt::format("CD = {:.3g}", cd.cd), 0);
+        for (std::size_t c = 0; c < cd.cliques.size(); ++c) {
+            double lo = k + 1, hi = 0;
+            for (const std::size_t j : cd.cliques[c])
+                lo = std::min(lo, f->test.average_ranks[j]), hi = std::max(hi, f->test.average_ranks[j]);
+            const double y = 0.25 + 0.5 * static_cast<double>(c) / std::max<double>(1.0, k);
+            fig.line({lo, hi}, {y, y}, black, c == 0 ? "not significantly different" : "", 0);
+        }
+        page.add(fig, "critical-difference.svg", "critical-difference diagram",
+                 "Average ranks over the problems (1 = best); bars join algorithms whose ranks differ by less than "
+                 "Nemenyi's critical difference (the segment at the top).");
+    }
+    page.html += "</section>\n";
 }
 
 /// The ERT tables (as the markdown report's) and the runtime ECDFs.
@@ -308,7 +359,9 @@ void ert_section(Page& page, const ReportData& r) {
     h += fmt::format(
         "<section id=\"ert\"><h2>Expected running time (ERT) and runtime ECDFs</h2>\n<p>ERT: the evaluations of all "
         "runs (up to the target where reached) over the runs that reached f_opt + precision, over the instances of "
-        "each function; inf where none did. #succ: the runs that reached the smallest precision ({}). Definitions of "
+        "each function; inf where none did; in brackets the 10th and 90th percentiles of the ERT over 1000 bootstrap "
+        "resamples of the runs. #succ: the runs that reached the smallest precision ({}). ECDFs: solid, the runs as "
+        "they are; dotted, with COCO's simulated restarts (100 per function, dimension and target). Definitions of "
         "COCO (Hansen et al., COCO: performance assessment).{}</p>\n",
         escape(report::precision_label(a.precisions[smallest])),
         a.runs_without_hits ? fmt::format(" {} runs record no target hits and are left out.", a.runs_without_hits)
@@ -326,7 +379,10 @@ void ert_section(Page& page, const ReportData& r) {
             h += "<tr><td>" + escape(e.algorithm) + "</td>";
             for (const std::size_t k : shown)
                 h += "<td class=\"n\">" +
-                     (std::isfinite(e.ert[k].value) ? fmt::format("{:.3g}", e.ert[k].value) : std::string("inf")) +
+                     (std::isfinite(e.ert[k].value)
+                          ? fmt::format("{:.3g} <small>[{:.3g}, {:.3g}]</small>", e.ert[k].value, e.ert_interval[k].p10,
+                                        e.ert_interval[k].p90)
+                          : std::string("inf")) +
                      "</td>";
             h += fmt::format("<td class=\"n\">{}/{}</td></tr>\n", e.ert[smallest].successes, e.runs);
         }
@@ -351,6 +407,8 @@ void ert_section(Page& page, const ReportData& r) {
             const auto& e = a.curves[k].ecdf;
             if (!e.x.empty()) lo = std::min(lo, e.x.front());
             if (std::isfinite(e.max_budget)) hi = std::max(hi, e.max_budget);
+            const auto& rs = a.curves[k].restarts;
+            if (!rs.x.empty() && std::isfinite(rs.x.back())) hi = std::max(hi, rs.x.back());
         }
         std::string dim_list;
         for (const auto d : dims) dim_list += (dim_list.empty() ? "" : ", ") + std::to_string(d);
@@ -376,6 +434,15 @@ void ert_section(Page& page, const ReportData& r) {
             f.line(xs, ys, colour, fmt::format("{} ({} pairs)", algorithm, e.pairs), known ? page.dash(algorithm) : 0,
                    true);
             f.markers({end}, {ys.back()}, colour, "", Marker::cross);
+            const auto& rs = c.restarts;
+            if (!rs.x.empty()) {
+                std::vector<double> rx{lo}, ry{0.0};
+                rx.insert(rx.end(), rs.x.begin(), rs.x.end());
+                ry.insert(ry.end(), rs.y.begin(), rs.y.end());
+                rx.push_back(hi);
+                ry.push_back(rs.y.back());
+                f.line(rx, ry, colour, algorithm + ", simulated restarts", 3, true);
+            }
         }
         page.add(f, page.file("ecdf", group), "runtime ECDF: " + title,
                  "Runtime ECDF, " + escape(title) +
@@ -631,6 +698,7 @@ PageSummary write_report_page(const std::string& store, const std::string& dir, 
             "newest, for a campaign that grew), or pride's description of a campaign built in code.</p>\n<pre>" +
             escape(extra.text) + "</pre>\n";
         page.html += "</section>\n" + results_section(data) + statistics_section(data);
+        cd_diagram(page, data);
         ert_section(page, data);
         page.html += "<section id=\"problems\"><h2>Figures per problem</h2>\n";
         for (const auto& [problem, runs] : by_problem) problem_section(page, problem, runs, data, extra);

@@ -45,9 +45,6 @@ double percentile(std::span<const double> sorted, double p);
 
 /// The 10th, 50th and 90th percentiles of a distribution, as cocopp's tables use them; +inf when
 /// it is not defined (no run reached the target).
-struct Percentiles {
-    double p10 = 0, p50 = 0, p90 = 0;
-};
 
 /// The ERT of one target with the spread of its simulated restarts, as cocopp's ERT tables
 /// (pptable.py) show it: `runtimes` are the 10th, 50th and 90th percentiles of `samples`

@@ -1,5 +1,7 @@
 #include "experiment/report/coco.hpp"
 
+#include "experiment/report/bootstrap.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -143,6 +145,14 @@ std::optional<Analysis> analyse(const CampaignStore& store) {
             }
         }
     }
+    // A seed per row and curve, from its name: the same store gives the same intervals and curves.
+    const auto seed_of = [](const std::string& text) {
+        std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+        for (const unsigned char ch : text) h = (h ^ ch) * 1099511628211ull;
+        return h;
+    };
+    // group -> algorithm -> the runs of each (function, dimension, precision): the restarts' pairs
+    std::map<std::string, std::map<std::string, std::vector<std::vector<TargetRun>>>> restart_pairs;
     for (const auto& [key, c] : cells) {
         ErtRow row;
         row.function = c.function;
@@ -152,7 +162,17 @@ std::optional<Analysis> analyse(const CampaignStore& store) {
         row.algorithm = std::get<3>(key);
         row.runs = c.runs;
         row.instances = c.instances.size();
-        for (const auto& runs : c.per_precision) row.ert.push_back(ert(runs));
+        const std::uint64_t seed = seed_of(fmt::format("{}\x1f{}\x1f{}", row.function, row.dim, row.algorithm));
+        for (std::size_t k = 0; k < c.per_precision.size(); ++k) {
+            const auto& runs = c.per_precision[k];
+            row.ert.push_back(ert(runs));
+            row.ert_interval.push_back(ert_confidence(runs, kErtResamples, seed + k));
+        }
+        std::vector<std::string> in{"all"};
+        if (c.problem->suite == "bbob" && c.problem->fid)
+            if (const auto g = bbob_group(*c.problem->fid)) in.push_back(*g);
+        for (const auto& g : in)
+            for (const auto& runs : c.per_precision) restart_pairs[g][row.algorithm].push_back(runs);
         a.erts.push_back(std::move(row));
     }
     if (a.erts.empty()) return std::nullopt;  // no run records hits (grids: no known optimum)
@@ -161,7 +181,9 @@ std::optional<Analysis> analyse(const CampaignStore& store) {
         if (it == groups.end()) continue;
         for (const auto& [algorithm, data] : it->second)
             a.curves.push_back(EcdfCurve{
-                g, algorithm, std::vector<std::int64_t>(data.second.begin(), data.second.end()), ecdf(data.first)});
+                g, algorithm, std::vector<std::int64_t>(data.second.begin(), data.second.end()), ecdf(data.first),
+                ecdf_simulated_restarts(restart_pairs.at(g).at(algorithm), kRestartSamples,
+                                        seed_of(std::string(g) + "\x1f" + algorithm))});
     }
     return a;
 }
@@ -184,10 +206,16 @@ std::string ecdf_json(const std::string& campaign, const Analysis& analysis) {
                 x += (k ? ", " : "") + json_number(c.ecdf.x[k]);
                 y += (k ? ", " : "") + json_number(c.ecdf.y[k]);
             }
-            curves +=
-                fmt::format("{}{{\"algorithm\": {}, \"pairs\": {}, \"max_budget\": {}, \"x\": [{}], \"y\": [{}]}}",
-                            curves.empty() ? "" : ", ", json_string(c.algorithm), c.ecdf.pairs,
-                            json_number(c.ecdf.max_budget), x, y);
+            std::string rx, ry;
+            for (std::size_t k = 0; k < c.restarts.x.size(); ++k) {
+                rx += (k ? ", " : "") + json_number(c.restarts.x[k]);
+                ry += (k ? ", " : "") + json_number(c.restarts.y[k]);
+            }
+            curves += fmt::format(
+                "{}{{\"algorithm\": {}, \"pairs\": {}, \"max_budget\": {}, \"x\": [{}], \"y\": [{}], "
+                "\"restarts\": {{\"pairs\": {}, \"x\": [{}], \"y\": [{}]}}}}",
+                curves.empty() ? "" : ", ", json_string(c.algorithm), c.ecdf.pairs, json_number(c.ecdf.max_budget), x,
+                y, c.restarts.pairs, rx, ry);
         }
         text +=
             fmt::format("{}{{\"group\": {}, \"title\": {}, \"dims\": [{}], \"curves\": [{}]}}", first_group ? "" : ", ",

@@ -26,6 +26,11 @@ struct TargetRun {
     std::int64_t dim = 1;             // the problem's dimension (ecdf() divides by it)
 };
 
+/// The 10th, 50th and 90th percentiles of a sample (experiment/report/bootstrap.hpp).
+struct Percentiles {
+    double p10 = 0, p50 = 0, p90 = 0;
+};
+
 struct Ert {
     double value = 0;  // +inf when no run succeeded
     std::size_t successes = 0, runs = 0;
@@ -70,7 +75,15 @@ struct ErtRow {
     std::string algorithm;
     std::size_t runs = 0, instances = 0;
     std::vector<Ert> ert;  // per precision
+    // Per precision: the 10th, 50th and 90th percentiles of the ERT over bootstrap resamples of
+    // the runs (ert_confidence, bootstrap.hpp; kErtResamples of them), +inf where none succeeded.
+    std::vector<Percentiles> ert_interval;
 };
+
+/// The bootstrap resamples behind ErtRow::ert_interval and the simulated restarts of each pair
+/// behind EcdfCurve::restarts (cocopp draws 30 in its defaults, 10^4 for final figures).
+inline constexpr std::size_t kErtResamples = 1000;
+inline constexpr std::size_t kRestartSamples = 100;
 
 /// One ECDF line: an algorithm over the (run, precision) pairs of a group of functions.
 struct EcdfCurve {
@@ -78,6 +91,9 @@ struct EcdfCurve {
     std::string algorithm;
     std::vector<std::int64_t> dims;  // the dimensions its pairs come from, increasing
     Ecdf ecdf;
+    // COCO's ECDF with simulated restarts (ecdf_simulated_restarts, bootstrap.hpp): kRestartSamples
+    // runtimes per (function, dimension, precision), runs of one function's instances pooled.
+    Ecdf restarts;
 };
 
 struct Analysis {

@@ -1,6 +1,7 @@
 #include "experiment/report/report.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -177,6 +178,16 @@ std::string render_table(const ReportData& report, bool md) {
                                 q.p_holm < 0.05 ? "*" : "", i + 1 < f->pairs.size() ? ";" : "");
         }
         text += "\n";
+        const auto& cd = f->critical_difference;
+        text += md ? "\nNemenyi critical difference (alpha " : "% Nemenyi critical difference (alpha ";
+        text += fmt::format("{:g}; Demsar 2006): CD = {:.3g}; not significantly different:", cd.alpha, cd.cd);
+        for (std::size_t i = 0; i < cd.cliques.size(); ++i) {
+            std::vector<std::string> names;
+            for (const std::size_t j : cd.cliques[i]) names.push_back(f->algorithms[j]);
+            text += fmt::format(" {{{}}}{}", fmt::join(names, ", "), i + 1 < cd.cliques.size() ? "," : "");
+        }
+        if (cd.cliques.empty()) text += " none";
+        text += "\n";
     }
     if (report.coco) text += render_ert(*report.coco, md);
     return text;
@@ -222,10 +233,12 @@ std::string render_ert(const coco::Analysis& a, bool md) {
     head.push_back("#succ");
     std::string text = md ? "\n## Expected running time (ERT)\n\n"
                             "ERT: the evaluations of all runs (up to the target where reached) over the runs that "
-                            "reached f_opt + precision, over the instances of each function; inf where none did. "
+                            "reached f_opt + precision, over the instances of each function; inf where none did; "
+                            "in brackets the 10th and 90th percentiles of the ERT over 1000 bootstrap resamples of "
+                            "the runs (cocopp's bootstrap of the ERT; Hansen et al. 2022). "
                             "#succ: the runs that reached the smallest precision"
-                          : "\n% Expected running time (ERT) per function and dimension; #succ: the runs that reached "
-                            "the smallest precision";
+                          : "\n% Expected running time (ERT) per function and dimension, [10th, 90th percentiles "
+                            "over 1000 bootstrap resamples]; #succ: the runs that reached the smallest precision";
     // The smallest precision, wherever the campaign lists it (analyse() returns none without any).
     const std::size_t smallest =
         static_cast<std::size_t>(std::min_element(a.precisions.begin(), a.precisions.end()) - a.precisions.begin());
@@ -248,7 +261,12 @@ std::string render_ert(const coco::Analysis& a, bool md) {
         for (; i < a.erts.size() && a.erts[i].function == function && a.erts[i].dim == dim; ++i) {
             const coco::ErtRow& r = a.erts[i];
             std::vector<std::string> cols{r.algorithm};
-            for (const std::size_t k : shown) cols.push_back(num3(r.ert[k].value));
+            for (const std::size_t k : shown) {
+                const auto& b = r.ert_interval[k];
+                cols.push_back(std::isfinite(r.ert[k].value)
+                                   ? fmt::format("{} [{}, {}]", num3(r.ert[k].value), num3(b.p10), num3(b.p90))
+                                   : num3(r.ert[k].value));
+            }
             cols.push_back(fmt::format("{}/{}", r.ert[smallest].successes, r.runs));
             text += line(cols);
         }
@@ -412,8 +430,10 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
             for (const auto& a : algorithms) block.push_back(median_of(by_algorithm.at(a).best));
             blocks.push_back(block);
         }
-        report.friedman = FriedmanSummary{algorithms, cells.size(), stats::friedman(blocks), {}};
+        report.friedman = FriedmanSummary{algorithms, cells.size(), stats::friedman(blocks), {}, {}};
         report.friedman->pairs = stats::friedman_pairs(report.friedman->test.average_ranks, cells.size());
+        report.friedman->critical_difference =
+            stats::critical_difference(report.friedman->test.average_ranks, cells.size(), 0.05);
     }
     return report;
 }
@@ -516,12 +536,14 @@ std::string render_csv(const ReportData& report) {
 }
 
 std::string render_ert_csv(const ReportData& report) {
-    std::string text = "function,dim,algorithm,precision,ert,successes,runs\n";
+    std::string text = "function,dim,algorithm,precision,ert,successes,runs,ert_p10,ert_p50,ert_p90\n";
     if (const auto& a = report.coco)
         for (const coco::ErtRow& r : a->erts)
             for (std::size_t k = 0; k < a->precisions.size(); ++k)
-                text += fmt::format("{},{},{},{},{},{},{}\n", csv(r.function), r.dim, csv(r.algorithm),
-                                    exact(a->precisions[k]), exact(r.ert[k].value), r.ert[k].successes, r.runs);
+                text += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", csv(r.function), r.dim, csv(r.algorithm),
+                                    exact(a->precisions[k]), exact(r.ert[k].value), r.ert[k].successes, r.runs,
+                                    exact(r.ert_interval[k].p10), exact(r.ert_interval[k].p50),
+                                    exact(r.ert_interval[k].p90));
     return text;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "experiment/report/coco.hpp"
+#include "experiment/report/critical_difference.hpp"
 #include "experiment/report/statistics.hpp"
 #include "experiment/report/store.hpp"
 
@@ -42,6 +43,9 @@ struct FriedmanSummary {
     std::size_t problems = 0;
     stats::FriedmanTest test;            // average_ranks in the order of `algorithms`
     std::vector<stats::RankPair> pairs;  // every pair's post-hoc test (Demsar 2006), Holm-corrected
+    // Nemenyi's critical difference at alpha 0.05 and the groups of algorithms whose average ranks
+    // differ by less (the bars of Demsar's CD diagram); indices into `algorithms`.
+    stats::CriticalDifference critical_difference;
 };
 
 /// How a report reads the runs.
@@ -83,7 +87,8 @@ std::string render_markdown(const ReportData& report);
 /// the same double ("inf" when infinite), fields quoted as RFC 4180 says.
 std::string render_csv(const ReportData& report);
 /// The ERT of every function, dimension, algorithm and precision (report.coco) as CSV, numbers
-/// as render_csv writes them: function,dim,algorithm,precision,ert,successes,runs; the header
+/// as render_csv writes them: function,dim,algorithm,precision,ert,successes,runs,ert_p10,ert_p50,
+/// ert_p90 (the percentiles of the ERT over bootstrap resamples, coco::ErtRow::ert_interval); the header
 /// alone without an analysis.
 std::string render_ert_csv(const ReportData& report);
 /// A `tabular` with the markdown's columns, then Friedman's ranks as a comment.

@@ -254,10 +254,19 @@ py::dict report_data(const std::vector<std::string>& paths, bool raw) {
             pairs.append(py::dict(py::arg("a") = r.friedman->algorithms[q.a],
                                   py::arg("b") = r.friedman->algorithms[q.b], py::arg("z") = q.z, py::arg("p") = q.p,
                                   py::arg("p_holm") = q.p_holm));
-        friedman = py::dict(py::arg("algorithms") = r.friedman->algorithms, py::arg("problems") = r.friedman->problems,
-                            py::arg("average_ranks") = r.friedman->test.average_ranks,
-                            py::arg("statistic") = r.friedman->test.statistic,
-                            py::arg("p_value") = r.friedman->test.p_value, py::arg("pairs") = pairs);
+        const auto& c = r.friedman->critical_difference;
+        py::list cliques;
+        for (const auto& clique : c.cliques) {
+            py::list names;
+            for (const std::size_t j : clique) names.append(r.friedman->algorithms[j]);
+            cliques.append(names);
+        }
+        const py::dict cd(py::arg("alpha") = c.alpha, py::arg("cd") = c.cd, py::arg("cliques") = cliques);
+        friedman =
+            py::dict(py::arg("algorithms") = r.friedman->algorithms, py::arg("problems") = r.friedman->problems,
+                     py::arg("average_ranks") = r.friedman->test.average_ranks,
+                     py::arg("statistic") = r.friedman->test.statistic, py::arg("p_value") = r.friedman->test.p_value,
+                     py::arg("pairs") = pairs, py::arg("critical_difference") = cd);
     }
     return py::dict(py::arg("campaign") = r.campaign, py::arg("target") = optional_number(r.target),
                     py::arg("rows") = rows, py::arg("friedman") = friedman,
