@@ -1,5 +1,7 @@
 """Campaigns from Python data (Python functions included) and TOML files, run on threads, the
 store and the report read back."""
+import math
+
 import numpy as np
 import pytest
 
@@ -162,3 +164,27 @@ def test_campaign_errors(tmp_path):
                        algorithms=["pso"])
     with pytest.raises(Boom):
         c.run(tmp_path / "x.sqlite", jobs=2)
+
+
+def test_friedman_critical_difference_is_nemenyis(tmp_path):
+    """report()["friedman"]["critical_difference"]: Nemenyi's CD = q_0.05 sqrt(k (k + 1) / (6 N))
+    (Demsar 2006, q from scipy's studentized range), its groups joining algorithms whose average
+    ranks differ by less, as the markdown prints them."""
+    scipy_stats = pytest.importorskip("scipy.stats")
+    c = pride.Campaign("cd", seeds=2, evals=200,
+                       problems=[{"id": f"p{d}", "problem": "sphere", "dim": d} for d in (2, 3, 4)]
+                       + [{"id": "r2", "problem": "rastrigin", "dim": 2}],
+                       algorithms=["pso", "ga", "woa"])
+    c.run(tmp_path / "c.sqlite", jobs=2)
+    r = pride.report(tmp_path / "c.sqlite", dataframe=False)
+    f = r["friedman"]
+    cd = f["critical_difference"]
+    k, n = len(f["algorithms"]), f["problems"]
+    q = scipy_stats.studentized_range.ppf(0.95, k, np.inf) / math.sqrt(2)
+    assert cd["alpha"] == 0.05
+    assert cd["cd"] == pytest.approx(q * math.sqrt(k * (k + 1) / (6 * n)), rel=1e-9)
+    ranks = dict(zip(f["algorithms"], f["average_ranks"]))
+    for group in cd["cliques"]:
+        assert len(group) >= 2
+        assert max(ranks[a] for a in group) - min(ranks[a] for a in group) < cd["cd"]
+    assert f"CD = {cd['cd']:.3g}" in r["markdown"]
