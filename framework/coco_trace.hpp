@@ -8,6 +8,7 @@
 //   always kept (without moving the trigger, as COCO's logger does);
 // - evaluations: floor(10^(k/20)) for k = 0, 1, ... and dim * {1, 2, 5} * 10^k.
 // Bounded by the decades crossed (a few hundred points), never by the evaluations.
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstddef>
@@ -32,23 +33,32 @@ class CocoTrace {
     explicit CocoTrace(double reference = 0.0, std::size_t dimension = 1)
         : reference_(reference), dimension_(static_cast<std::int64_t>(dimension == 0 ? 1 : dimension)) {
         next_second_ = dimension_ * kBases[0];
+        next_ = std::min(next_first_, next_second_);
     }
 
     /// After every evaluation (whole or partial; `evaluations` counts it), with the best value so
     /// far and whether this evaluation improved it.
+    /// Inline and two compares in the common case (no improvement, no trigger): it runs at every
+    /// evaluation of every run.
     void record(std::int64_t evaluations, double best, bool improved) {
-        if (evaluations == 1)  // COCO logs the first evaluation without moving the target trigger
-            targets_.push_back({evaluations, best});
-        else if (improved && target_trigger(best - reference_))
-            targets_.push_back({evaluations, best});
-        if (evaluations >= next_first_ || evaluations >= next_second_) evaluation_trigger(evaluations, best);
+        if (improved || evaluations == 1) [[unlikely]]
+            target_record(evaluations, best);
+        if (evaluations >= next_) [[unlikely]]
+            evaluation_trigger(evaluations, best);
     }
 
     std::vector<TracePoint>& targets() noexcept { return targets_; }
     std::vector<TracePoint>& evaluations() noexcept { return evaluations_; }
 
   private:
-    void evaluation_trigger(std::int64_t evaluations, double best) {
+    [[gnu::noinline]] void target_record(std::int64_t evaluations, double best) {
+        if (evaluations == 1)  // COCO logs the first evaluation without moving the target trigger
+            targets_.push_back({evaluations, best});
+        else if (target_trigger(best - reference_))
+            targets_.push_back({evaluations, best});
+    }
+
+    [[gnu::noinline]] void evaluation_trigger(std::int64_t evaluations, double best) {
         bool hit = false;
         if (evaluations >= next_first_) {  // coco_observer_evaluations_trigger_first
             while (first_value(exponent1_) <= next_first_) ++exponent1_;
@@ -68,6 +78,7 @@ class CocoTrace {
             hit = true;
         }
         if (hit) evaluations_.push_back({evaluations, best});
+        next_ = std::min(next_first_, next_second_);
     }
 
     static constexpr std::int64_t kBases[] = {1, 2, 5};  // base_evaluation_triggers "1,2,5"
@@ -105,6 +116,7 @@ class CocoTrace {
     double exponent_ = INT_MAX;  // the last target trigger's exponent (COCO: an int from INT_MAX)
     std::int64_t next_first_ = 1, exponent1_ = 0;
     std::int64_t next_second_ = 0, exponent2_ = 0;
+    std::int64_t next_ = 1;  // min(next_first_, next_second_): the next evaluation to check
     std::size_t base_ = 0;
     std::vector<TracePoint> targets_, evaluations_;
 };
