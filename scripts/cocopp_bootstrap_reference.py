@@ -13,25 +13,18 @@ The samples are random (cocopp draws from numpy's global generator, seeded here)
 compares its own samples with these statistically: the tolerances are in the test.
 """
 import os
-import shutil
 import sys
-import tempfile
-import types
+import warnings
 
 import numpy as np
 
-source = sys.argv[1] if len(sys.argv) > 1 else "/tmp/coco-postprocess/src/cocopp"
-work = tempfile.mkdtemp(prefix="cocopp-ref-")
-shutil.copytree(source, os.path.join(work, "cocopp"))
-with open(os.path.join(work, "cocopp", "_version.py"), "w") as f:
-    f.write('__version__ = "0+source"\n')
-stand_in = types.ModuleType("platformdirs")
-stand_in.user_cache_dir = lambda *args, **kwargs: os.path.join(work, "cache")
-sys.modules["platformdirs"] = stand_in
-sys.path.insert(0, work)
-os.environ.setdefault("MPLBACKEND", "Agg")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cocopp_check import import_cocopp  # noqa: E402  the same stand-ins as the export's check
 
-import cocopp  # noqa: E402
+source = sys.argv[1] if len(sys.argv) > 1 else "/tmp/coco-postprocess/src/cocopp"
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")  # cocopp's online archive, unreachable here
+    cocopp = import_cocopp(source)
 from cocopp import toolsstats  # noqa: E402
 
 print("numpy", np.__version__)
@@ -100,4 +93,3 @@ values = np.asarray(values)
 log_budgets = [1.0, 1.5, 1.8, 2.0, 2.3, 2.5, 2.8, 3.0, 3.3, 3.6, 4.0]
 print(f"pprldmany ECDF, {len(pairs)} pairs x {samplesize} simulated runs, at log10(evals/dim)", log_budgets, ":",
       [repr(float(np.mean(values <= 10.0**b))) for b in log_budgets])
-shutil.rmtree(work)

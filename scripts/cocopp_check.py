@@ -14,6 +14,7 @@ in a temporary copy (the checkout is not touched): `cocopp/_version.py`, which i
 write, and a `platformdirs` module, whose Debian version (2.6) lacks user_cache_dir(...,
 ensure_exists=...). cocopp warns once that it cannot reach its online archive.
 """
+import atexit
 import csv
 import math
 import os
@@ -25,7 +26,9 @@ import warnings
 
 
 def import_cocopp(source):
+    """cocopp imported from the package folder `source` (its src/cocopp), through the stand-ins."""
     work = tempfile.mkdtemp(prefix="pride-cocopp-")
+    atexit.register(shutil.rmtree, work, True)  # the copy goes when the script ends
     shutil.copytree(source, os.path.join(work, "cocopp"))
     with open(os.path.join(work, "cocopp", "_version.py"), "w") as f:
         f.write('__version__ = "0+source"\n')
@@ -34,9 +37,8 @@ def import_cocopp(source):
     sys.modules["platformdirs"] = stand_in
     sys.path.insert(0, work)
     os.environ.setdefault("MPLBACKEND", "Agg")
-    import cocopp  # noqa: F401
-    from cocopp import pproc
-    return pproc
+    import cocopp
+    return cocopp
 
 
 def main():
@@ -45,7 +47,7 @@ def main():
     source, coco_dir, ert_csv = sys.argv[1:]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the archive, and "less than 15 instances"
-        pproc = import_cocopp(source)
+        pproc = import_cocopp(source).pproc
         datasets = {}
         for algorithm in sorted(os.listdir(coco_dir)):
             for ds in pproc.DataSetList(os.path.join(coco_dir, algorithm)):
