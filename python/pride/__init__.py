@@ -263,7 +263,9 @@ class Campaign:
 
 def read_store(path, *, dataframe=None):
     """The runs of a campaign store: a DataFrame when pandas is present (or ``dataframe=True``),
-    else a list of dicts (problem, algorithm, seed, best, evaluations, wall_ms, optimum, history)."""
+    else a list of dicts (problem, algorithm, seed, best, evaluations, wall_ms, optimum, history,
+    history_evaluations, encoding, and COCO's trace: ``trace_targets`` and ``trace_evaluations``,
+    (n, 2) arrays of rows (evaluations, best so far) at COCO's target and evaluation triggers)."""
     store = _pride.read_store(str(path))
     pd = _pandas()
     if dataframe or (dataframe is None and pd is not None):

@@ -205,6 +205,16 @@ py::dict read_store(const std::string& path) {
         py::gil_scoped_release release;
         s = report::read_store(path);
     }
+    // A COCO trace as an (n, 2) array of rows (evaluations, best so far).
+    const auto trace_array = [](const std::vector<TracePoint>& t) {
+        py::array_t<double> a({static_cast<py::ssize_t>(t.size()), py::ssize_t{2}});
+        auto m = a.mutable_unchecked<2>();
+        for (std::size_t i = 0; i < t.size(); ++i) {
+            m(static_cast<py::ssize_t>(i), 0) = static_cast<double>(t[i].evaluations);
+            m(static_cast<py::ssize_t>(i), 1) = t[i].best;
+        }
+        return a;
+    };
     py::list runs;
     for (const auto& r : s.runs) {
         py::array_t<std::int64_t> he(static_cast<py::ssize_t>(r.history_evaluations.size()));
@@ -216,7 +226,8 @@ py::dict read_store(const std::string& path) {
                              py::arg("evaluations") = r.evaluations, py::arg("wall_ms") = r.wall_ms,
                              py::arg("optimum") = optional_number(r.optimum),
                              py::arg("history") = vector_array(r.history), py::arg("history_evaluations") = he,
-                             py::arg("encoding") = r.encoding));
+                             py::arg("encoding") = r.encoding, py::arg("trace_targets") = trace_array(r.trace_targets),
+                             py::arg("trace_evaluations") = trace_array(r.trace_evaluations)));
     }
     py::list problems;
     if (s.problems)

@@ -188,3 +188,26 @@ def test_friedman_critical_difference_is_nemenyis(tmp_path):
         assert len(group) >= 2
         assert max(ranks[a] for a in group) - min(ranks[a] for a in group) < cd["cd"]
     assert f"CD = {cd['cd']:.3g}" in r["markdown"]
+
+
+def test_read_store_gives_cocos_trace_of_each_run(tmp_path):
+    """trace_targets / trace_evaluations: (evaluations, best so far) at COCO's triggers, the
+    first evaluation first, evaluations increasing and values never rising; the target trace
+    holds the first evaluation that reached each power of ten above f_opt."""
+    c = pride.Campaign("trace", seeds=2, evals=500,
+                       problems=[{"id": "b", "problem": "bbob-f1", "dim": 2, "instance": 1}],
+                       algorithms=["pso"])
+    c.run(tmp_path / "c.sqlite")
+    for run in pride.read_store(tmp_path / "c.sqlite", dataframe=False):
+        for key in ("trace_targets", "trace_evaluations"):
+            t = run[key]
+            assert t.ndim == 2 and t.shape[1] == 2 and t.shape[0] >= 2
+            assert t[0, 0] == 1
+            assert np.all(np.diff(t[:, 0]) > 0) and np.all(np.diff(t[:, 1]) <= 0)
+            assert t[-1, 0] <= run["evaluations"] and t[-1, 1] >= run["best"]
+        # floor(10^(k/20)) gives 1 ... 8, then 10; 2 x {1, 2, 5} gives 2, 4, 10: 9 is no trigger
+        assert list(run["trace_evaluations"][:9, 0]) == [1, 2, 3, 4, 5, 6, 7, 8, 10]
+        # the last target trigger is within a twentieth of a decade of the best precision
+        f_opt = 79.48  # bbob-f1, instance 1
+        last, best = run["trace_targets"][-1, 1] - f_opt, run["best"] - f_opt
+        assert last < 10 ** (1 / 20) * best or last <= 1e-8
