@@ -6,12 +6,11 @@
 
 #include <fmt/format.h>
 
-// Set by experiment/html/CMakeLists.txt on this file alone, so a new commit recompiles nothing else.
+// The commit, written at every build by cmake/git_commit.cmake (experiment/html/CMakeLists.txt);
+// the version, set on this file alone. A new commit recompiles nothing else.
+#include "git_commit.hpp"
 #ifndef PRIDE_VERSION
 #define PRIDE_VERSION "unknown"
-#endif
-#ifndef PRIDE_GIT_COMMIT
-#define PRIDE_GIT_COMMIT "unknown"
 #endif
 
 namespace pride::html {
