@@ -1,5 +1,7 @@
 #include "cli/campaign.hpp"
 
+#include "cli/stderr.hpp"
+
 #include <fmt/format.h>
 #include <signal.h>
 #include <unistd.h>
@@ -50,27 +52,26 @@ int bench_command(const BenchOptions& o, std::ostream& out) {
     engine::Progress progress;
     if (show_progress)
         progress = [](std::size_t done, std::size_t total, double seconds) {
-            fmt::print(stderr, "\r{}/{} runs, {:.0f} s elapsed   ", done, total, seconds);
+            print_stderr("\r{}/{} runs, {:.0f} s elapsed   ", done, total, seconds);
         };
     engine::Stop stop;
     stop.signal = &stop_signal;
     // The store is closed when this is called: the process ends here, abandoning the runs in
     // progress (nothing of theirs is in the store), with 128 + the signal as a shell reports it.
     stop.on_stop = [&](const engine::Interrupted& i) {
-        if (show_progress) fmt::print(stderr, "\n");
+        if (show_progress) print_stderr("\n");
         std::fflush(stdout);
-        fmt::print(stderr,
-                   "pride: interrupted by {}: {} of {} runs are stored in {}; run the same command again to resume\n",
-                   i.signal == SIGINT    ? "SIGINT"
-                   : i.signal == SIGTERM ? "SIGTERM"
-                                         : "a signal",
-                   i.in_store, i.total, store);
+        print_stderr("pride: interrupted by {}: {} of {} runs are stored in {}; run the same command again to resume\n",
+                     i.signal == SIGINT    ? "SIGINT"
+                     : i.signal == SIGTERM ? "SIGTERM"
+                                           : "a signal",
+                     i.in_store, i.total, store);
         std::fflush(stderr);
         std::_Exit(128 + i.signal);
     };
     catch_signals();
     const engine::BenchSummary s = engine::run_campaign(c, store, jobs, progress, stop);
-    if (show_progress) fmt::print(stderr, "\n");
+    if (show_progress) print_stderr("\n");
     if (s.ranks == 0) return 0;  // another MPI rank than 0: rank 0 prints the summary
     std::string extra = s.ranks > 1 ? fmt::format("; {} MPI ranks", s.ranks) : "";
     if (s.others > 0)

@@ -20,6 +20,7 @@
 #include "cli/pareto.hpp"
 #include "cli/report.hpp"
 #include "cli/roughset.hpp"
+#include "cli/stderr.hpp"
 #include "engine/registry.hpp"
 #include "experiment/merge.hpp"
 #include "framework/error.hpp"
@@ -33,7 +34,8 @@ int finish_output(int status) {
     const bool failed = !std::cout.good() || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
     if (failed) {
         const int e = errno;
-        fmt::print(stderr, "pride: cannot write to standard output: {}\n", e != 0 ? std::strerror(e) : "write error");
+        pride::cli::print_stderr("pride: cannot write to standard output: {}\n",
+                                 e != 0 ? std::strerror(e) : "write error");
         return 2;
     }
     return status;
@@ -47,7 +49,7 @@ int main(int argc, char** argv) {
     // A closed standard output (`>&-`) is refused before anything is done: a file opened later
     // would get its descriptor and receive what is printed.
     if (fcntl(STDOUT_FILENO, F_GETFD) == -1 && errno == EBADF) {
-        fmt::print(stderr, "pride: cannot write to standard output: it is closed\n");
+        pride::cli::print_stderr("pride: cannot write to standard output: it is closed\n");
         return 2;
     }
     if (fcntl(STDERR_FILENO, F_GETFD) == -1 && errno == EBADF && open("/dev/null", O_WRONLY) != STDERR_FILENO)
@@ -56,7 +58,7 @@ int main(int argc, char** argv) {
     try {
         status = run_main(argc, argv);
     } catch (const std::exception& e) {
-        fmt::print(stderr, "pride: internal error: {}\n", e.what());
+        pride::cli::print_stderr("pride: internal error: {}\n", e.what());
         status = 1;
     }
     errno = 0;
@@ -263,13 +265,13 @@ int run_main(int argc, char** argv) {
     } catch (const CLI::Success& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        fmt::print(stderr, "pride: {}\n", printable(e.what()));
+        pride::cli::print_stderr("pride: {}\n", printable(e.what()));
         return 2;
     } catch (const pride::InputError& e) {
-        fmt::print(stderr, "pride: {}\n", user_message(e));
+        pride::cli::print_stderr("pride: {}\n", user_message(e));
         return 2;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "pride: internal error: {}\n", printable(e.what()));
+        pride::cli::print_stderr("pride: internal error: {}\n", printable(e.what()));
         return 1;
     }
 }

@@ -246,3 +246,34 @@ TEST_CASE("report, export: a truncated store says so, with the sizes", "[report]
                       {cut + ": damaged store: ", "truncated"});
     CHECK(!fs::exists(dir.file("x")));
 }
+
+TEST_CASE("faults: an error message that cannot be written still exits with the error's status", "[faults][cli]") {
+    // Issue 25: fmt's print threw from main's error handler when stderr could not be written, and
+    // the process aborted (SIGABRT, 134). The message is lost; the status is the error's.
+    const std::string map = map_file();
+    const std::vector<std::pair<std::string, int>> failing{
+        {"run --problem x --dim 2 --algo pso", 2},                       // bad input
+        {"run --problem sphere --dim 2 --algo pso --no-such-flag", 2},   // a parse error
+        {"path --map " + quote(map) + " --start 0,0 --goal 99,99 --algo astar", 2},
+        {"report " + quote("/nonexistent/s.sqlite"), 2},
+    };
+    for (const auto& [args, status] : failing) {
+        for (const std::string redirect : {"2>/dev/full", "2>&-"}) {
+            INFO("pride " << args << " " << redirect);
+            const int raw = std::system((quote(PRIDE_EXE) + " " + args + " </dev/null >/dev/null " + redirect).c_str());
+            REQUIRE(WIFEXITED(raw));
+            CHECK(WEXITSTATUS(raw) == status);
+        }
+        // A closed pipe with SIGPIPE ignored: the reader (true) is gone before pride writes, the
+        // write fails with EPIPE, and the status stays.
+        INFO("pride " << args << " 2>| a closed pipe, SIGPIPE ignored");
+        const TempDir dir("pride-stderr-pipe");
+        const std::string status_file = dir.file("status");
+        const int raw = std::system(("trap '' PIPE; { sleep 0.2; " + quote(PRIDE_EXE) + " " + args +
+                                     " </dev/null; echo $? >" + quote(status_file) + "; } 2>&1 >/dev/null | true")
+                                        .c_str());
+        REQUIRE(WIFEXITED(raw));
+        CHECK(WEXITSTATUS(raw) == 0);
+        CHECK(slurp(status_file) == std::to_string(status) + "\n");
+    }
+}
