@@ -92,6 +92,16 @@ std::string bbob_group_title(const std::string& group) {
     return "all functions";
 }
 
+namespace {
+/// The ECDF groups a problem's pairs count in: "all", and its BBOB function group.
+std::vector<std::string> groups_of(const StoredProblem& p) {
+    std::vector<std::string> in{"all"};
+    if (p.suite == "bbob" && p.fid)
+        if (const auto g = bbob_group(*p.fid)) in.push_back(*g);
+    return in;
+}
+}  // namespace
+
 std::optional<Analysis> analyse(const CampaignStore& store) {
     if (!store.precisions || store.precisions->empty() || !store.problems) return std::nullopt;
     Analysis a;
@@ -132,9 +142,7 @@ std::optional<Analysis> analyse(const CampaignStore& store) {
         c.per_precision.resize(n);
         c.instances.emplace(p.id, p.instance);
         ++c.runs;
-        std::vector<std::string> in{"all"};
-        if (p.suite == "bbob" && p.fid)
-            if (const auto g = bbob_group(*p.fid)) in.push_back(*g);
+        const std::vector<std::string> in = groups_of(p);
         for (std::size_t k = 0; k < n; ++k) {
             const TargetRun t{r.evaluations, r.target_hits[k], p.dim};
             c.per_precision[k].push_back(t);
@@ -168,9 +176,7 @@ std::optional<Analysis> analyse(const CampaignStore& store) {
             row.ert.push_back(ert(runs));
             row.ert_interval.push_back(ert_confidence(runs, kErtResamples, seed + k));
         }
-        std::vector<std::string> in{"all"};
-        if (c.problem->suite == "bbob" && c.problem->fid)
-            if (const auto g = bbob_group(*c.problem->fid)) in.push_back(*g);
+        const std::vector<std::string> in = groups_of(*c.problem);
         for (const auto& g : in)
             for (const auto& runs : c.per_precision) restart_pairs[g][row.algorithm].push_back(runs);
         a.erts.push_back(std::move(row));

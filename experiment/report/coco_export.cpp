@@ -27,11 +27,15 @@ constexpr const char* kHeader =
     "% f evaluations | g evaluations | best noise-free fitness - Fopt ({:13.12e}) + sum g_i+ | measured fitness | "
     "best measured fitness or single-digit g-values | x1 | x2...\n";
 
+/// max(best, f_opt) - f_opt, as COCO's logger clamps it (+inf stays +inf).
+double precision(double best, double f_opt) {
+    return std::isfinite(best) ? std::max(best, f_opt) - f_opt : best;
+}
+
 /// One data line as logger_bbob_output writes it without constraints or x: "%lu %lu %+10.9e
-/// %+10.9e %+10.9e". The precision is max(best, f_opt) - f_opt, as COCO's logger clamps it.
+/// %+10.9e %+10.9e".
 std::string line(std::int64_t evaluations, double best, double f_opt) {
-    const double precision = std::isfinite(best) ? std::max(best, f_opt) - f_opt : best;
-    return fmt::format("{} 0 {:+10.9e} {:+10.9e} {:+10.9e}\n", evaluations, precision, best, best);
+    return fmt::format("{} 0 {:+10.9e} {:+10.9e} {:+10.9e}\n", evaluations, precision(best, f_opt), best, best);
 }
 
 /// A run's block: its header, the trace's lines, and (logger_bbob_free) a last line at the run's
@@ -114,9 +118,8 @@ CocoExportSummary export_coco(const std::string& store_path, const std::string& 
                 for (const Run& run : dim_runs) {
                     write_block(dat, run.run->trace_targets, *run.run, run.f_opt);
                     write_block(tdat, run.run->trace_evaluations, *run.run, run.f_opt);
-                    const double best = run.run->best.value_or(INFINITY);
                     info << fmt::format(", {}:{}|{:.1e}", run.instance, run.run->evaluations,
-                                        std::isfinite(best) ? std::max(best, run.f_opt) - run.f_opt : best);
+                                        precision(run.run->best.value_or(INFINITY), run.f_opt));
                     ++summary.runs;
                 }
                 close_checked(dat, dir / (stem + ".dat"));
