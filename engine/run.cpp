@@ -88,16 +88,6 @@ std::string choices(const std::vector<NamedItem>& items) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Memory
-
-void require_memory(double bytes, const std::string& where, const std::string& what) {
-    const double have = available_memory();
-    require(bytes <= have, where,
-            fmt::format("{} needs about {} of memory, more than the {} this machine has", what, format_bytes(bytes),
-                        format_bytes(have)));
-}
-
-// ---------------------------------------------------------------------------------------------
 // Preparing problems
 
 }  // namespace
@@ -318,23 +308,74 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
     return params;
 }
 
-void check_run_memory(const AlgorithmEntry& entry, const Params& params, const Prepared& p,
-                      const Termination& termination) {
-    // A chain holds no cell twice (every operator cuts loops), so the map's cells bound its length.
-    std::size_t dimension = p.dimension;
-    if (p.chain)
-        std::visit([&](const auto& g) { dimension = g.map().size() + 8; }, p.grid->problem);  // + a vector's own
+/// One part of what a run allocates, named as the message names it when the whole is too much.
+struct MemoryPart {
     double bytes = 0.0;
-    if (entry.memory) bytes += entry.memory(params, dimension);
-    // The history: one value and one count per iteration, for as many iterations as the budget allows.
-    const auto pop = entry.param("pop") ? params.integer("pop") : 1;
-    if (const auto t = termination.horizon(pop, pop)) bytes += 16.0 * static_cast<double>(*t + 1);
-    const std::string where =
-        p.chain ? fmt::format("on chains of up to {} cells", dimension) : fmt::format("in dimension {}", dimension);
-    const std::string what = entry.param("pop")
-                                 ? fmt::format("a run with population {} {}", params.integer("pop"), where)
-                                 : fmt::format("a run {}", where);
-    require_memory(bytes, entry.name, what);
+    std::string where, what;
+};
+
+/// What a run will allocate, checked against the machine's memory before anything is: the
+/// algorithm's own (its entry's estimate), the history (one value and one count per iteration the
+/// budget allows) and, on grids, per cell of the map: the oracle's states when the run computes
+/// the optimum (9 per cell, 20 bytes each: g, parent, two stamps), A*'s records (16 bytes), and
+/// the decode scratch of each copy of a line or free encoding (the loop-free chain 24, the repair
+/// connector's A* 16, a walk's marks 4; one copy per thread). The oracle and the run come one after
+/// the other, so the larger of the two counts. Too much names the largest part.
+void check_run_memory(const AlgorithmEntry& entry, const Params& params, const Prepared& p,
+                      const Termination& termination, std::int64_t threads) {
+    std::vector<MemoryPart> parts;
+    double cells = 0.0;
+    std::string map_size;
+    if (p.grid)
+        std::visit(
+            [&](const auto& g) {
+                cells = static_cast<double>(g.map().size());
+                map_size = fmt::format("{} x {}", g.map().width(), g.map().height());
+            },
+            p.grid->problem);
+    MemoryPart run;
+    if (entry.solve_grid) {
+        if (entry.name == "astar")
+            run = {16.0 * cells, entry.name, fmt::format("A* on a {} map", map_size)};
+    } else {
+        // A chain holds no cell twice (every operator cuts loops), so the map's cells bound its length.
+        const std::size_t dimension = p.chain ? static_cast<std::size_t>(cells) + 8 : p.dimension;  // + a vector's own
+        const std::string where = p.chain ? fmt::format("on chains of up to {} cells", dimension)
+                                          : fmt::format("in dimension {}", dimension);
+        run.where = entry.name;
+        run.what = entry.param("pop") ? fmt::format("a run with population {} {}", params.integer("pop"), where)
+                                      : fmt::format("a run {}", where);
+        if (entry.memory) run.bytes = entry.memory(params, dimension);
+        if (p.grid && !p.chain) {
+            run.bytes += 44.0 * cells * static_cast<double>(threads);
+            run.what += fmt::format(" on a {} map", map_size);
+        }
+        const auto pop = entry.param("pop") ? params.integer("pop") : 1;
+        if (const auto t = termination.horizon(pop, pop))
+            parts.push_back({16.0 * static_cast<double>(*t + 1),
+                             termination.max_iterations ? "iterations" : "evaluations",
+                             fmt::format("the history of {} iterations", *t)});
+    }
+    const auto& g = p.grid ? &std::get<GridSpec>(p.spec) : nullptr;
+    if (g && (g->oracle || entry.needs_optimum) && p.grid->additive_or_steps()) {
+        const MemoryPart oracle{180.0 * cells, g->oracle ? "oracle" : entry.name,
+                                fmt::format("the exact optimum on a {} map", map_size)};
+        if (oracle.bytes > run.bytes) run = oracle;
+    }
+    parts.push_back(std::move(run));
+    double total = 0.0;
+    const MemoryPart* largest = &parts.front();
+    for (const MemoryPart& part : parts) {
+        total += part.bytes;
+        if (part.bytes > largest->bytes) largest = &part;
+    }
+    const double have = available_memory();
+    require(total <= have, largest->where,
+            fmt::format("{} needs about {}{} of memory, more than the {} this machine has", largest->what,
+                        format_bytes(largest->bytes),
+                        largest->bytes < 0.99 * total ? fmt::format(" ({} with the rest of the run)", format_bytes(total))
+                                                      : "",
+                        format_bytes(have)));
 }
 
 template <class R>
@@ -632,7 +673,7 @@ CheckedRun checked_run(const AlgorithmSpec& algorithm, const Prepared& p, const 
     const AlgorithmEntry& entry = algorithms().at(algorithm.name);
     CheckedRun c{entry, checked(entry, p, algorithm), budget.termination(p.dimension, p.grid.has_value())};
     c.termination.optimum = optimum_of(p);  // the reference of the run's COCO trace
-    if (!entry.solve_grid) check_run_memory(entry, c.params, p, c.termination);
+    check_run_memory(entry, c.params, p, c.termination, budget.threads);
     return c;
 }
 }  // namespace
@@ -736,30 +777,6 @@ std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int6
     return std::make_shared<const grid::GridMap>(std::move(loaded));
 }
 
-double available_memory() {
-    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    double bytes = pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 1e18;
-    // What the kernel says it can give without swapping, when it says (Linux's MemAvailable).
-    if (std::FILE* f = std::fopen("/proc/meminfo", "r")) {
-        char line[256];
-        while (std::fgets(line, sizeof line, f))
-            if (unsigned long long kb = 0; std::sscanf(line, "MemAvailable: %llu kB", &kb) == 1) {
-                bytes = std::min(bytes, 1024.0 * static_cast<double>(kb));
-                break;
-            }
-        std::fclose(f);
-    }
-    rlimit limit{};
-    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-        bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
-    return bytes;
-}
 
-std::string format_bytes(double bytes) {
-    if (bytes >= 1e12) return fmt::format("{:.3g} TB", bytes / 1e12);
-    if (bytes >= 1e9) return fmt::format("{:.3g} GB", bytes / 1e9);
-    if (bytes >= 1e6) return fmt::format("{:.3g} MB", bytes / 1e6);
-    return fmt::format("{:.3g} kB", bytes / 1e3);
-}
 
 }  // namespace pride::engine

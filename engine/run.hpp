@@ -11,6 +11,7 @@
 
 #include "engine/specs.hpp"
 #include "framework/coco_trace.hpp"
+#include "framework/memory.hpp"
 #include "framework/observer.hpp"
 #include "problems/grid/path.hpp"
 
@@ -113,12 +114,9 @@ using IterationObserver = std::function<bool(const IterationView&)>;
 RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed,
               const IterationObserver& observer);
 
-/// Bytes of memory this machine has for one process (physical memory, or a lower address-space
-/// limit); sizes are checked against it before anything is allocated.
-double available_memory();
-
-/// "12.5 GB", "300 MB": for messages.
-std::string format_bytes(double bytes);
+// framework/memory.hpp's, under the names the engine's users know.
+using pride::available_memory;
+using pride::format_bytes;
 
 /// The names the grid spec takes, with a few words each (for listings and error messages).
 struct NamedItem {

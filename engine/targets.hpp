@@ -57,6 +57,13 @@ struct GridTarget {
     bool additive() const {
         return std::visit([](const auto& p) { return std::decay_t<decltype(p.objective())>::additive; }, problem);
     }
+    /// The optimum is the oracle's (an additive objective, or a user's with per-step costs), not
+    /// iqga's Pareto front.
+    bool additive_or_steps() const {
+        if (const auto* o = std::get_if<grid::GridProblem<OtherObjective>>(&problem))
+            return o->objective().user && o->objective().has_steps();
+        return true;
+    }
     /// The objective has an exact optimum: the additive ones through the oracle (oracle.hpp),
     /// iqga through the 3-D Pareto front (pareto.hpp), a user's through the oracle on its per-step
     /// form when it gives one.

@@ -24,8 +24,10 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
+#include "framework/error.hpp"
 #include "framework/random.hpp"
 
 namespace pride::continuous {
@@ -76,8 +78,23 @@ struct Transform {
     }
 };
 
+/// The largest dimension of a rotated instance. A rotation is built in O(n^3) time (COCO's
+/// Gram-Schmidt, or a QR), which no memory check bounds: about 4 s at n = 2000, a minute at 5000
+/// and 5 minutes at 8000 on the 2-core test machine, so that a small number on the command line
+/// could start hours of work. Instances without a rotation take any dimension.
+inline constexpr std::size_t kMaxRotatedDimension = 5000;
+
+/// InputError("dim", ...) when a rotation of size n is beyond kMaxRotatedDimension.
+inline void require_rotation_size(std::size_t n) {
+    require(n <= kMaxRotatedDimension, "dim",
+            "a rotated instance is built up to dimension " + std::to_string(kMaxRotatedDimension) +
+                " (its rotation costs dimension^3 time and dimension^2 memory), got " + std::to_string(n) +
+                "; instances without one (instance 0 of the classic functions, bbob-f1 to f5) take any dimension");
+}
+
 /// R_k: a uniformly distributed orthogonal n x n matrix drawn from seed k.
 inline Eigen::MatrixXd random_rotation(std::size_t n, std::uint64_t instance) {
+    require_rotation_size(n);
     Rng rng(instance, 0x726f74 /* "rot" */);
     const auto m = static_cast<Eigen::Index>(n);
     Eigen::MatrixXd g(m, m);

@@ -2,6 +2,8 @@
 // arithmetic follows COCO's order so that every x_opt, f_opt and matrix entry is bit-identical.
 #include "problems/continuous/bbob/instance.hpp"
 
+#include "problems/continuous/instance.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -88,23 +90,29 @@ double compute_fopt(int function, std::int64_t instance) {
 }
 
 RowMatrix compute_rotation(std::size_t dim, std::int64_t seed) {
+    require_rotation_size(dim);
     const std::vector<double> g = gauss(dim * dim, seed);
     const auto n = static_cast<Eigen::Index>(dim);
-    RowMatrix b(n, n);
+    // Classical Gram-Schmidt on the columns, column by column, as COCO does it, the same operations
+    // in the same order; the columns are held as rows of `c` so that each loop over k reads
+    // consecutive memory (on a row-major b they were strided: 12.7 s at dimension 2000 against
+    // 3 s now).
+    RowMatrix c(n, n);
     for (Eigen::Index i = 0; i < n; ++i)
-        for (Eigen::Index j = 0; j < n; ++j) b(i, j) = g[static_cast<std::size_t>(j * n + i)];
-    // Classical Gram-Schmidt on the columns, column by column, as COCO does it.
+        for (Eigen::Index j = 0; j < n; ++j) c(j, i) = g[static_cast<std::size_t>(j * n + i)];
     for (Eigen::Index i = 0; i < n; ++i) {
+        double* const ci = c.row(i).data();
         for (Eigen::Index j = 0; j < i; ++j) {
+            const double* const cj = c.row(j).data();
             double prod = 0.0;
-            for (Eigen::Index k = 0; k < n; ++k) prod += b(k, i) * b(k, j);
-            for (Eigen::Index k = 0; k < n; ++k) b(k, i) -= prod * b(k, j);
+            for (Eigen::Index k = 0; k < n; ++k) prod += ci[k] * cj[k];
+            for (Eigen::Index k = 0; k < n; ++k) ci[k] -= prod * cj[k];
         }
         double prod = 0.0;
-        for (Eigen::Index k = 0; k < n; ++k) prod += b(k, i) * b(k, i);
-        for (Eigen::Index k = 0; k < n; ++k) b(k, i) /= std::sqrt(prod);
+        for (Eigen::Index k = 0; k < n; ++k) prod += ci[k] * ci[k];
+        for (Eigen::Index k = 0; k < n; ++k) ci[k] /= std::sqrt(prod);
     }
-    return b;
+    return c.transpose();
 }
 
 RowMatrix scaled_product(const RowMatrix& r, const std::vector<double>& scale, const RowMatrix& q) {
