@@ -89,6 +89,7 @@ class OutputFiles {
             return false;
         }
         std::string path_;       // as named, for messages
+        std::string key_;        // path_ resolved: no two files of an output share one
         std::string final_;      // where it goes: path_, or the file a symbolic link names
         std::string temporary_;  // empty: written directly, or renamed into place
         std::string backup_;     // the replaced file's hard link during commit()
@@ -128,16 +129,19 @@ class OutputFiles {
         }
     }
 
-    /// A new file that becomes `path` at commit(), its folder made if need be. InputError when
-    /// `path` is a folder, is named twice in this output, or its temporary cannot be created.
+    /// A new file that becomes `path` at commit(). Its folder must exist (make_folder() makes those
+    /// an output owns; a picture's folder is the user's). InputError when `path` is a folder, is
+    /// named twice in this output, or its temporary cannot be created (no such folder, no right).
     File& create(const std::filesystem::path& path) {
         File& f = add(path);
         f.fd_ = f.direct_ ? ::open(f.path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666)
                           : ::open(f.temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (f.fd_ < 0) {
             const int e = errno;
-            f.temporary_.clear();  // not made: nothing to remove
-            throw InputError(f.path_ + ": cannot write: " + std::strerror(e));
+            const std::string shown = f.path_;
+            names_.erase(f.key_);  // not made: not part of the output
+            files_.pop_back();
+            throw InputError(shown + ": cannot write: " + std::strerror(e));
         }
         return f;
     }
@@ -253,20 +257,21 @@ class OutputFiles {
             throw InputError(shown + ": cannot write: it is a folder");
         std::error_code ec;
         const fs::path same = fs::weakly_canonical(path, ec);
-        if (!names_.insert(ec ? shown : same.string()).second)
-            throw InputError(shown + ": named twice in one output; give each its own name");
+        const std::string key = ec ? shown : same.string();
+        if (names_.count(key)) throw InputError(shown + ": named twice in one output; give each its own name");
         auto file = std::unique_ptr<File>(new File());
         file->path_ = shown;
+        file->key_ = key;
         file->direct_ = writes_directly(path);
         if (!file->direct_) {
             struct stat own {};
             const bool link = ::lstat(path.c_str(), &own) == 0 && S_ISLNK(own.st_mode);
             const fs::path target = link ? fs::canonical(path, ec) : path;
             if (ec) throw InputError(shown + ": cannot write: " + ec.message());
-            if (target.has_parent_path()) make_folder(target.parent_path());
             file->final_ = target.string();
             file->temporary_ = temporary_name(target, "tmp");
         }
+        names_.insert(key);
         files_.push_back(std::move(file));
         return *files_.back();
     }

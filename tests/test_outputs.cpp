@@ -145,11 +145,13 @@ bool has_matplotlib() {
 
 }  // namespace
 
-TEST_CASE("outputs: files appear only at commit; discarded, nothing is left", "[outputs]") {
+TEST_CASE("outputs: files appear only at commit, and discarded nothing is left", "[outputs]") {
     const TempDir dir("pride-out-unit");
     const fs::path out = dir.path() / "new" / "deeper";
     {
         OutputFiles files;
+        CHECK_THROWS_WITH(files.create(out / "a.txt"), Catch::Contains("a.txt: cannot write: No such file or directory"));
+        files.make_folder(out / "sub");
         files.write(out / "a.txt", "alpha");
         OutputFiles::File& b = files.create(out / "sub" / "b.txt");
         b.write("beta");
@@ -162,6 +164,7 @@ TEST_CASE("outputs: files appear only at commit; discarded, nothing is left", "[
     CHECK(dir.entries().empty());
     {
         OutputFiles files;
+        files.make_folder(out / "sub");
         files.write(out / "a.txt", "alpha");
         files.write(out / "sub" / "b.txt", "beta");
         files.commit();
@@ -223,6 +226,7 @@ TEST_CASE("outputs: a write that fails (a full disk) names the file and the reas
         int status = 0;
         try {
             OutputFiles files;
+            files.make_folder(dir.path() / "out");
             files.write(dir.path() / "out" / "small.txt", std::string(100, 's'));
             files.write(dir.path() / "out" / "large.txt", std::string(5000, 'l'));
             files.commit();

@@ -99,6 +99,7 @@ CocoExportSummary export_coco(const std::string& store_path, const std::string& 
         const std::filesystem::path dir = std::filesystem::path(folder) / folders.at(algorithm);
         for (auto& [fid, by_dim] : by_fid) {
             const std::string data_folder = fmt::format("data_f{}", fid);
+            files.make_folder(dir / data_folder);
             std::string info;
             bool first = true;
             for (auto& [dim, dim_runs] : by_dim) {

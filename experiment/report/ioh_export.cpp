@@ -111,6 +111,7 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
         for (const auto& [key, fn] : functions) {
             const std::string stem = fmt::format("f{}_{}", fn.id, engine::file_name(fn.name));
             const std::string data_folder = "data_" + stem;
+            files.make_folder(dir / data_folder);
             std::string info;
             bool first = true;
             for (const auto& [dim, dim_runs] : fn.runs) {
