@@ -123,4 +123,9 @@ CLI::Validator finite_in(double min, double max) {
         "");
 }
 
+CLI::Validator a_path() {
+    return CLI::Validator(
+        [](std::string& value) { return value.empty() ? std::string("expected a path, got ''") : ""; }, "");
+}
+
 }  // namespace pride::cli

@@ -32,6 +32,10 @@ CLI::Validator integer_in(std::int64_t min, std::uint64_t max);
 CLI::Validator finite_in(double min = -std::numeric_limits<double>::infinity(),
                          double max = std::numeric_limits<double>::infinity());
 
+/// A check for a flag or argument that names a file or folder: the empty name is refused (no file
+/// has it; a flag given '' was ignored as if not given).
+CLI::Validator a_path();
+
 /// The largest count (evaluations, iterations, population, dimension) a flag accepts: 10^15,
 /// beyond any run that can finish and far from the int64 limit, so that counts never overflow;
 /// what does not fit in memory is refused before anything is allocated (engine::check).

@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/numbers.hpp"
+#include "cli/output.hpp"
 #include "engine/run.hpp"
 #include "engine/scenarios.hpp"
 #include "experiment/html/draw.hpp"
@@ -83,19 +84,19 @@ int path_command(const PathOptions& o, std::ostream& out) {
         gap = std::abs(run.value - *run.optimum) <= 1e-9 * scale ? 0.0
                                                                  : (run.value - *run.optimum) / std::abs(*run.optimum);
     }
-    // The pictures first: they are the only output that can fail now. Both are drawn to temporary
-    // files and renamed only when both succeeded, so a failure leaves no picture and prints nothing.
+    // The pictures first: drawn to temporary files, and renamed into place only once the text
+    // below was printed, so a failure of either leaves no picture (framework/output_files.hpp).
     std::vector<std::pair<std::string, html::PictureFormat>> pictures;
     if (!o.svg.empty()) pictures.emplace_back(o.svg, html::PictureFormat::svg);
     if (!o.png.empty()) pictures.emplace_back(o.png, html::PictureFormat::png);
-    html::write_pictures(
-        pictures, [&](const std::string& file, const std::string& shown_as, html::PictureFormat format) {
-            html::PathLabels labels;
-            labels.path = fmt::format("{} ({}): {} {:.6g}", o.algo, run.encoding, spec.objective, run.value);
-            if (run.optimum) labels.optimal = fmt::format("exact optimum: {} {:.6g}", spec.objective, *run.optimum);
-            html::draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.path : nullptr,
-                            o.oracle ? &run.optimal_path : nullptr, labels, file, shown_as, format);
-        });
+    OutputFiles files;
+    html::write_pictures(pictures, files, [&](OutputFiles::File& file, html::PictureFormat format) {
+        html::PathLabels labels;
+        labels.path = fmt::format("{} ({}): {} {:.6g}", o.algo, run.encoding, spec.objective, run.value);
+        if (run.optimum) labels.optimal = fmt::format("exact optimum: {} {:.6g}", spec.objective, *run.optimum);
+        html::draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.path : nullptr,
+                        o.oracle ? &run.optimal_path : nullptr, labels, file, format);
+    });
 
     if (o.json) {
         std::string text = fmt::format(
@@ -110,7 +111,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
         if (o.oracle)
             text += fmt::format(", \"optimum\": {{\"objective_value\": {}, \"gap\": {}}}",
                                 run.optimum ? json_number(*run.optimum) : "null", gap ? json_number(*gap) : "null");
-        out << text << "}\n";
+        print_then_commit(out, text + "}\n", files);
         return 0;
     }
     std::string text = fmt::format(
@@ -127,7 +128,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
                             gap ? fmt::format("{:.6g}", *gap) : "-");
     text += fmt::format("evaluations     {}\niterations      {}\nwall_ms         {:.3f}\npath            {}\n",
                         r.evaluations, r.iterations, r.wall_ms, json_cells(run.path));
-    out << text;
+    print_then_commit(out, text, files);
     return 0;
 }
 

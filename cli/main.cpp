@@ -27,12 +27,16 @@
 
 namespace {
 
+bool error_printed = false;  // the one line of an error is on stderr already
+
 /// Standard output flushed and checked: a full disk or a closed stream is a failure (exit 2, one
 /// line), never a silent success with lost output.
 int finish_output(int status) {
     std::cout.flush();
     const bool failed = !std::cout.good() || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
     if (failed) {
+        // A command that failed has said why (perhaps this very failure): one line, its status.
+        if (error_printed) return status;
         const int e = errno;
         pride::cli::print_stderr("pride: cannot write to standard output: {}\n",
                                  e != 0 ? std::strerror(e) : "write error");
@@ -59,6 +63,7 @@ int main(int argc, char** argv) {
         status = run_main(argc, argv);
     } catch (const std::exception& e) {
         pride::cli::print_stderr("pride: internal error: {}\n", e.what());
+        error_printed = true;
         status = 1;
     }
     errno = 0;
@@ -117,7 +122,7 @@ int run_main(int argc, char** argv) {
     PathOptions path;
     auto* path_cmd = app.add_subcommand(
         "path", "one run on a grid map (A*, the exact optimum, or a box algorithm through an encoding)");
-    path_cmd->add_option("--map", path.map, "Moving AI .map or 0/1 matrix file")->required();
+    path_cmd->add_option("--map", path.map, "Moving AI .map or 0/1 matrix file")->required()->check(a_path());
     path_cmd->add_option("--start", path.start, "start cell X,Y (x: column from the left, y: row from the top)")
         ->required();
     path_cmd->add_option("--goal", path.goal, "goal cell X,Y")->required();
@@ -154,14 +159,14 @@ int run_main(int argc, char** argv) {
     path_cmd->add_flag("--corner-cutting", path.corner_cutting, "allow diagonal steps past a blocked corner");
     path_cmd->add_flag("--oracle", path.oracle, "add the exact optimum and the gap to it");
     path_cmd->add_flag("--json", path.json, "print one JSON object");
-    path_cmd->add_option("--svg", path.svg, "draw the map and the path(s) to this SVG file");
-    path_cmd->add_option("--png", path.png, "draw the map and the path(s) to this PNG file");
+    path_cmd->add_option("--svg", path.svg, "draw the map and the path(s) to this SVG file")->check(a_path());
+    path_cmd->add_option("--png", path.png, "draw the map and the path(s) to this PNG file")->check(a_path());
     path_cmd->add_option("--param", path.params, "algorithm parameter NAME=VALUE (repeatable)");
 
     ParetoOptions pareto;
     auto* pareto_cmd = app.add_subcommand(
         "pareto", "the exact Pareto front of length, turns and angle penalty on a grid map, with a path each");
-    pareto_cmd->add_option("--map", pareto.map, "Moving AI .map or 0/1 matrix file")->required();
+    pareto_cmd->add_option("--map", pareto.map, "Moving AI .map or 0/1 matrix file")->required()->check(a_path());
     pareto_cmd->add_option("--start", pareto.start, "start cell X,Y (x: column from the left, y: row from the top)")
         ->required();
     pareto_cmd->add_option("--goal", pareto.goal, "goal cell X,Y")->required();
@@ -171,48 +176,65 @@ int run_main(int argc, char** argv) {
         ->check(integer_in(0, 1000));
     pareto_cmd->add_flag("--corner-cutting", pareto.corner_cutting, "allow diagonal steps past a blocked corner");
     pareto_cmd->add_flag("--json", pareto.json, "print one JSON object");
-    pareto_cmd->add_option("--svg", pareto.svg, "draw the map and every path of the front to this SVG file");
-    pareto_cmd->add_option("--png", pareto.png, "draw the map and every path of the front to this PNG file");
+    pareto_cmd->add_option("--svg", pareto.svg, "draw the map and every path of the front to this SVG file")
+        ->check(a_path());
+    pareto_cmd->add_option("--png", pareto.png, "draw the map and every path of the front to this PNG file")
+        ->check(a_path());
 
     ScenOptions scen;
     auto* scen_cmd = app.add_subcommand("scen", "solve every line of a Moving AI scenario file with A* and compare");
-    scen_cmd->add_option("file", scen.file, "the .scen file")->required();
-    scen_cmd->add_option("--map-dir", scen.map_dir, "where the maps are (default: the scenario's folder)");
+    scen_cmd->add_option("file", scen.file, "the .scen file")->required()->check(a_path());
+    scen_cmd->add_option("--map-dir", scen.map_dir, "where the maps are (default: the scenario's folder)")
+        ->check(a_path());
     scen_cmd->add_flag("--json", scen.json, "print one JSON object");
 
     BenchOptions bench;
     auto* bench_cmd = app.add_subcommand("bench", "run a campaign file: every (problem, algorithm, seed), resumable");
-    bench_cmd->add_option("config", bench.config, "the campaign file (TOML)")->required();
+    bench_cmd->add_option("config", bench.config, "the campaign file (TOML)")->required()->check(a_path());
     bench_cmd->add_option("--jobs", bench.jobs, "parallel runs (default: the number of cores)")
         ->check(integer_in(1, 1024));
-    bench_cmd->add_option("--out", bench.out,
-                          "the SQLite store (default: the name of CONFIG with .sqlite, in the working folder)");
+    bench_cmd
+        ->add_option("--out", bench.out,
+                     "the SQLite store (default: the name of CONFIG with .sqlite, in the working folder)")
+        ->check(a_path());
 
     ReportOptions report;
     auto* report_cmd = app.add_subcommand("report", "comparison tables and statistics from a campaign store");
     report_cmd->add_option("stores", report.stores, "the SQLite store written by pride bench (or several, read as one)")
-        ->required();
+        ->required()
+        ->check(a_path());
     report_cmd->add_option("--format", report.format,
                            "md (default), csv, latex, or ert-csv (the ERT of a campaign with target precisions)");
-    report_cmd->add_option("--plots", report.plots, "write convergence, final-value and path figures (PNG, SVG) here");
-    report_cmd->add_option("--html", report.html,
-                           "write the report as one HTML page (index.html, SVG figures beside it) into this folder");
+    report_cmd->add_option("--plots", report.plots, "write convergence, final-value and path figures (PNG, SVG) here")
+        ->check(a_path());
+    report_cmd
+        ->add_option("--html", report.html,
+                     "write the report as one HTML page (index.html, SVG figures beside it) into this folder")
+        ->check(a_path());
     report_cmd->add_flag("--raw", report.raw,
                          "the values f as run, also where f_opt is known (default there: the precision f - f_opt)");
 
     ExportOptions exporting;
     auto* export_cmd =
         app.add_subcommand("export", "a campaign store as IOHprofiler files (IOHanalyzer) or COCO's data (cocopp)");
-    export_cmd->add_option("store", exporting.store, "the SQLite store written by pride bench")->required();
-    auto* ioh_option = export_cmd->add_option("--ioh", exporting.ioh, "the folder to write IOHprofiler files to");
+    export_cmd->add_option("store", exporting.store, "the SQLite store written by pride bench")
+        ->required()
+        ->check(a_path());
+    auto* ioh_option =
+        export_cmd->add_option("--ioh", exporting.ioh, "the folder to write IOHprofiler files to")->check(a_path());
     export_cmd->add_option("--coco", exporting.coco, "the folder to write COCO's bbob data (.info, .dat, .tdat) to")
-        ->excludes(ioh_option);
+        ->excludes(ioh_option)
+        ->check(a_path());
 
     std::vector<std::string> merge_inputs;
     std::string merge_out;
     auto* merge_cmd = app.add_subcommand("merge", "join the runs of compatible campaign stores into a new store");
-    merge_cmd->add_option("stores", merge_inputs, "two stores or more, written by pride bench")->required();
-    merge_cmd->add_option("--out", merge_out, "the new store to write (it must not exist)")->required();
+    merge_cmd->add_option("stores", merge_inputs, "two stores or more, written by pride bench")
+        ->required()
+        ->check(a_path());
+    merge_cmd->add_option("--out", merge_out, "the new store to write (it must not exist)")
+        ->required()
+        ->check(a_path());
 
     bool list_json = false, list_markdown = false;
     auto* list_cmd = app.add_subcommand("list", "the algorithms, problems, encodings and objectives");
@@ -222,7 +244,8 @@ int run_main(int argc, char** argv) {
 
     RoughsetOptions roughset;
     auto* roughset_cmd = app.add_subcommand("roughset", "reduce a decision table: core, reducts and minimal rules");
-    roughset_cmd->add_option("table", roughset.table, "CSV file: a header of names, the last column the decision");
+    roughset_cmd->add_option("table", roughset.table, "CSV file: a header of names, the last column the decision")
+        ->check(a_path());
     roughset_cmd->add_flag("--grid", roughset.grid, "file 000's grid decision table instead of a file");
     roughset_cmd->add_flag("--json", roughset.json, "print one JSON object");
 
@@ -266,12 +289,15 @@ int run_main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         pride::cli::print_stderr("pride: {}\n", printable(e.what()));
+        error_printed = true;
         return 2;
     } catch (const pride::InputError& e) {
         pride::cli::print_stderr("pride: {}\n", user_message(e));
+        error_printed = true;
         return 2;
     } catch (const std::exception& e) {
         pride::cli::print_stderr("pride: internal error: {}\n", printable(e.what()));
+        error_printed = true;
         return 1;
     }
 }

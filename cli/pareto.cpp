@@ -8,6 +8,7 @@
 
 #include "cli/grid_commands.hpp"
 #include "cli/numbers.hpp"
+#include "cli/output.hpp"
 #include "engine/run.hpp"
 #include "experiment/html/draw.hpp"
 #include "framework/error.hpp"
@@ -57,10 +58,10 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
                                                                    : fmt::format("angle penalty {}", p.angle_penalty));
         labels.push_back(words);
     }
-    html::write_pictures(pictures,
-                         [&](const std::string& file, const std::string& shown_as, html::PictureFormat format) {
-                             html::draw_grid_paths(*map, start, goal, paths, labels, file, shown_as, format);
-                         });
+    OutputFiles files;  // committed once the front was printed
+    html::write_pictures(pictures, files, [&](OutputFiles::File& file, html::PictureFormat format) {
+        html::draw_grid_paths(*map, start, goal, paths, labels, file, format);
+    });
 
     std::string text;
     if (o.json) {
@@ -75,7 +76,7 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
         text = "length turns angle_penalty\n";
         for (const auto& p : front) text += fmt::format("{:.10g} {} {}\n", p.length, p.turns, p.angle_penalty);
     }
-    out << text;
+    print_then_commit(out, text, files);
     return 0;
 }
 

@@ -74,6 +74,11 @@ class Store {
   public:
     explicit Store(const std::string& path) : path_(path), token_(process_token(::getpid())) {
         const bool existed = std::filesystem::exists(path);
+        // Before SQLite opens anything: on a device (/dev/null) it would create its journal beside it.
+        if (existed && !std::filesystem::is_regular_file(path))
+            throw InputError(path + ": cannot be the store: " +
+                             (std::filesystem::is_directory(path) ? "it is a folder" : "not a regular file") +
+                             "; nothing was changed");
         if (!existed) {  // SQLite's own message would give the errno of its last try, not the reason
             const auto parent = std::filesystem::path(path).parent_path();
             if (::access(parent.empty() ? "." : parent.c_str(), W_OK) != 0 && errno != ENOENT)

@@ -8,9 +8,12 @@ best path of each algorithm on the map. Where the problem's optimum f_opt is kno
 problems), values are precisions f - f_opt on a log axis (precisions below 1e-12, 0 included, are
 drawn at 1e-12, and the axis says so), unless --raw. Whole-map planners (A*, exact: no history)
 appear in the convergence figure as a horizontal line at their value. Each figure is written as
-PNG and SVG.
+PNG and SVG, named after the problem: pride passes each problem's file name (--names, a JSON
+object of id -> name from experiment/file_name.hpp's unique_file_names, so that "x/y" and "x_y"
+get files of their own); without it, safe(id). --uri: the SQLite URI to read STORE with (pride's
+experiment/report/store.hpp read_only_uri).
 
-Usage: plot_campaign.py STORE DIR [--raw]
+Usage: plot_campaign.py STORE DIR [--raw] [--names NAMES.json] [--uri URI]
 """
 import json
 import os
@@ -44,14 +47,22 @@ def safe(name):
     return "_" + s[1:] if s.startswith(".") else s
 
 
-def save(fig, folder, stem):
-    for ext in ("png", "svg"):
-        fig.savefig(os.path.join(folder, f"{stem}.{ext}"), dpi=120, bbox_inches="tight")
-    plt.close(fig)
-
-
 class Damaged(Exception):
     """A store whose values are not what pride bench writes."""
+
+
+class CannotWrite(Exception):
+    """A figure that cannot be written: its file and the system's reason."""
+
+
+def save(fig, folder, stem):
+    for ext in ("png", "svg"):
+        path = os.path.join(folder, f"{stem}.{ext}")
+        try:
+            fig.savefig(path, dpi=120, bbox_inches="tight")
+        except OSError as e:
+            raise CannotWrite(f"{path}: cannot write: {e.strerror or e}") from e
+    plt.close(fig)
 
 
 def is_number(v):
@@ -71,11 +82,21 @@ def valid_solution(v):
 
 
 def main():
-    if len(sys.argv) not in (3, 4) or (len(sys.argv) == 4 and sys.argv[3] != "--raw"):
-        sys.exit("usage: plot_campaign.py STORE DIR [--raw]")
-    store, folder = sys.argv[1], sys.argv[2]
-    raw = len(sys.argv) == 4
-    db = sqlite3.connect(f"file:{store}?mode=ro", uri=True)
+    store, folder, options = (sys.argv[1], sys.argv[2], sys.argv[3:]) if len(sys.argv) >= 3 else ("", "", ["?"])
+    raw, file_names, uri = False, {}, None
+    while options:
+        option = options.pop(0)
+        if option == "--raw":
+            raw = True
+        elif option == "--names" and options:
+            with open(options.pop(0), encoding="utf-8") as f:
+                file_names = json.load(f)
+        elif option == "--uri" and options:
+            uri = options.pop(0)
+        else:
+            sys.exit("usage: plot_campaign.py STORE DIR [--raw] [--names NAMES.json] [--uri URI]")
+    # pride passes the URI it read the store with (read-only, or immutable on a read-only folder).
+    db = sqlite3.connect(uri or f"file:{store}?mode=ro", uri=True)
     columns = {row[1] for row in db.execute("PRAGMA table_info(problems)")}
     f_opt_column = "f_opt" if "f_opt" in columns else "NULL"
     problems = {row[0]: row[1:] for row in db.execute(f"SELECT id, type, map, start, goal, {f_opt_column} FROM problems")}
@@ -100,7 +121,7 @@ def main():
         by_problem.setdefault(problem, {}).setdefault(algorithm, []).append((seed, best, *parsed))
     floor = 1e-12
     for problem, algorithms in by_problem.items():
-        stem = safe(problem)
+        stem = file_names.get(problem) or safe(problem)
         info = problems.get(problem)
         f_opt = info[4] if info and isinstance(info[4], (int, float)) and np.isfinite(info[4]) else None
         precision = f_opt is not None and not raw
@@ -190,7 +211,7 @@ if __name__ == "__main__":
     warnings.simplefilter("ignore")
     try:
         main()
-    except Damaged as e:
+    except (Damaged, CannotWrite) as e:
         print(e, file=sys.stderr)
         sys.exit(2)
     except Exception as e:  # noqa: BLE001

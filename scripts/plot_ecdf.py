@@ -21,9 +21,17 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+class CannotWrite(Exception):
+    """A figure that cannot be written: its file and the system's reason."""
+
+
 def save(fig, folder, stem):
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(folder, f"{stem}.{ext}"), dpi=120, bbox_inches="tight")
+        path = os.path.join(folder, f"{stem}.{ext}")
+        try:
+            fig.savefig(path, dpi=120, bbox_inches="tight")
+        except OSError as e:
+            raise CannotWrite(f"{path}: cannot write: {e.strerror or e}") from e
     plt.close(fig)
 
 
@@ -81,6 +89,9 @@ if __name__ == "__main__":
     warnings.simplefilter("ignore")
     try:
         main()
+    except CannotWrite as e:
+        print(e, file=sys.stderr)
+        sys.exit(2)
     except Exception as e:  # noqa: BLE001
         print(f"plot_ecdf.py: {type(e).__name__}: {e}".splitlines()[0], file=sys.stderr)
         sys.exit(1)

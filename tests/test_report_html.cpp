@@ -87,7 +87,7 @@ bool no_staging(const fs::path& dir) {
     for (const fs::path& folder : {dir.parent_path(), dir})
         if (fs::is_directory(folder))
             for (const auto& e : fs::directory_iterator(folder))
-                if (e.path().filename().string().rfind(".pride-html-", 0) == 0) return false;
+                if (e.path().filename().string().find(".pride-") != std::string::npos) return false;
     return true;
 }
 

@@ -9,10 +9,9 @@
 #include <filesystem>
 #include <system_error>
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 
+#include "experiment/html/cairo_output.hpp"
 #include "experiment/html/font_session.hpp"
 #include "framework/error.hpp"
 
@@ -152,8 +151,8 @@ void paint_many(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::C
 }
 
 template <class Paint>
-void draw(const grid::GridMap& map, const std::vector<Entry>& legend, const std::string& file,
-          const std::string& shown_as, PictureFormat format, Paint paint_with) {
+void draw(const grid::GridMap& map, const std::vector<Entry>& legend, OutputFiles::File& file, PictureFormat format,
+          Paint paint_with) {
     // About 800 pixels on the longer side, cells between 2 and 40 pixels; the legend below, at
     // least 240 pixels wide so that its words fit beside a small map.
     const double cell = std::clamp(800.0 / std::max(map.width(), map.height()), 2.0, 40.0);
@@ -161,7 +160,7 @@ void draw(const grid::GridMap& map, const std::vector<Entry>& legend, const std:
     const double w = std::max(map_w, 240.0), h = map_h + legend_height(legend.size());
     const FontSession fonts;  // the legend's text
     cairo_surface_t* surface = format == PictureFormat::svg
-                                   ? cairo_svg_surface_create(file.c_str(), w, h)
+                                   ? cairo_svg_surface_create_for_stream(write_to_file, &file, w, h)
                                    : cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(std::ceil(w)),
                                                                 static_cast<int>(std::ceil(h)));
     cairo_t* cr = cairo_create(surface);
@@ -174,14 +173,7 @@ void draw(const grid::GridMap& map, const std::vector<Entry>& legend, const std:
     cairo_restore(cr);
     paint_legend(cr, legend, map_h, w);
     cairo_destroy(cr);
-    cairo_status_t status = cairo_surface_status(surface);
-    if (format == PictureFormat::png && status == CAIRO_STATUS_SUCCESS)
-        status = cairo_surface_write_to_png(surface, file.c_str());
-    cairo_surface_finish(surface);  // flushes the SVG
-    if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
-    cairo_surface_destroy(surface);
-    if (status != CAIRO_STATUS_SUCCESS)
-        throw InputError(shown_as + ": cannot write the picture: " + cairo_status_to_string(status));
+    finish_into(surface, file, format == PictureFormat::png, "the picture");
 }
 
 }  // namespace
@@ -191,19 +183,18 @@ double legend_height(std::size_t entries) {
 }
 
 void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
-               const grid::Path* optimal, const PathLabels& labels, const std::string& file,
-               const std::string& shown_as, PictureFormat format) {
+               const grid::Path* optimal, const PathLabels& labels, OutputFiles::File& file, PictureFormat format) {
     std::vector<Entry> legend{{kStart, true, "start"}, {kGoal, true, "goal"}};
     if (path && !path->empty()) legend.push_back({kFound, false, labels.path});
     if (optimal && !optimal->empty())
         legend.push_back({{kOptimal.r, kOptimal.g, kOptimal.b, 0.6}, false, labels.optimal});
-    draw(map, legend, file, shown_as, format,
+    draw(map, legend, file, format,
          [&](cairo_t* cr, double cell) { paint(cr, map, start, goal, path, optimal, cell); });
 }
 
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
-                     const std::vector<std::string>& labels, const std::string& file, const std::string& shown_as,
-                     PictureFormat format, const std::vector<Rgb>& colours) {
+                     const std::vector<std::string>& labels, OutputFiles::File& file, PictureFormat format,
+                     const std::vector<Rgb>& colours) {
     std::vector<Entry> legend{{kStart, true, "start"}, {kGoal, true, "goal"}};
     // A long front: its first and last paths named, the rest said in one line (colours run in order).
     const std::size_t n = paths.size(), shown = n > 10 ? 4 : n;
@@ -214,49 +205,31 @@ void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal
         }
         legend.push_back({colour_of(i, n, colours), false, i < labels.size() ? labels[i] : std::string()});
     }
-    draw(map, legend, file, shown_as, format,
+    draw(map, legend, file, format,
          [&](cairo_t* cr, double cell) { paint_many(cr, map, start, goal, paths, colours, cell); });
 }
 
-void write_pictures(
-    const std::vector<std::pair<std::string, PictureFormat>>& pictures,
-    const std::function<void(const std::string& file, const std::string& shown_as, PictureFormat)>& draw_one) {
+void write_pictures(const std::vector<std::pair<std::string, PictureFormat>>& pictures, OutputFiles& files,
+                    const std::function<void(OutputFiles::File& file, PictureFormat)>& draw_one) {
     namespace fs = std::filesystem;
     std::error_code ec;
-    // Everything checked before anything is written: one file named twice, or a folder.
+    // Everything checked before anything is written: one file named twice (OutputFiles would
+    // refuse it too, but after the first was drawn, and in its own words).
     for (std::size_t i = 0; i < pictures.size(); ++i) {
         const std::string& file = pictures[i].first;
-        if (fs::is_directory(file, ec)) throw InputError(file + ": cannot write the picture: it is a folder");
         for (std::size_t j = 0; j < i; ++j) {
             const fs::path a = fs::weakly_canonical(file, ec), b = fs::weakly_canonical(pictures[j].first, ec);
             if (a == b || file == pictures[j].first)
                 throw InputError(file + ": named for two pictures (--svg and --png); give each its own file");
         }
     }
-    // A new path or a regular file is written through a temporary file renamed over it, so that a
-    // failure leaves nothing half-written; anything else (a device such as /dev/stdout or
-    // /dev/full, a pipe, a symbolic link) is written directly, since a rename would replace it.
-    std::vector<bool> direct(pictures.size());
-    for (std::size_t i = 0; i < pictures.size(); ++i) {
-        const fs::file_status st = fs::symlink_status(pictures[i].first, ec);
-        direct[i] = !(st.type() == fs::file_type::not_found || st.type() == fs::file_type::regular);
-    }
-    const std::string suffix = ".part-" + std::to_string(::getpid());
-    try {
-        for (std::size_t i = 0; i < pictures.size(); ++i)
-            if (!direct[i]) draw_one(pictures[i].first + suffix, pictures[i].first, pictures[i].second);
-        for (std::size_t i = 0; i < pictures.size(); ++i)
-            if (direct[i]) draw_one(pictures[i].first, pictures[i].first, pictures[i].second);
-        for (std::size_t i = 0; i < pictures.size(); ++i) {
-            if (direct[i]) continue;
-            fs::rename(pictures[i].first + suffix, pictures[i].first, ec);
-            if (ec) throw InputError(pictures[i].first + ": cannot write the picture: " + ec.message());
+    // Pictures renamed into place first, devices last: a failure drawing one of the first writes
+    // nothing to a device.
+    for (const bool direct : {false, true})
+        for (const auto& [file, format] : pictures) {
+            if (OutputFiles::writes_directly(file) != direct) continue;
+            draw_one(files.create(file), format);
         }
-    } catch (...) {
-        for (std::size_t i = 0; i < pictures.size(); ++i)
-            if (!direct[i]) fs::remove(pictures[i].first + suffix, ec);
-        throw;
-    }
 }
 
 }  // namespace pride::html

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "experiment/html/colour.hpp"
+#include "framework/output_files.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 
@@ -22,29 +23,27 @@ struct PathLabels {
     std::string optimal = "exact optimum";  // the optimal path, when drawn
 };
 
-/// Writes the picture to `file` (callers that must not leave half-written files write to a
-/// temporary name and rename it; errors name `shown_as`). `path` and `optimal` may be null.
-/// A legend under the map names start, goal and each path drawn. InputError when it cannot.
+/// Writes the picture into `file` and closes it (it is in place once its OutputFiles commits).
+/// `path` and `optimal` may be null. A legend under the map names start, goal and each path
+/// drawn. InputError naming the file when it cannot be written.
 void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
-               const grid::Path* optimal, const PathLabels& labels, const std::string& file,
-               const std::string& shown_as, PictureFormat format);
+               const grid::Path* optimal, const PathLabels& labels, OutputFiles::File& file, PictureFormat format);
 
 /// The map with several paths (a Pareto front), each in its own colour, from blue (the first) to
 /// red (the last), or `colours[i]` for path i when given (one per path), and a legend naming each
 /// (`labels`, one per path).
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
-                     const std::vector<std::string>& labels, const std::string& file, const std::string& shown_as,
-                     PictureFormat format, const std::vector<Rgb>& colours = {});
+                     const std::vector<std::string>& labels, OutputFiles::File& file, PictureFormat format,
+                     const std::vector<Rgb>& colours = {});
 
 /// The height in pixels of a legend of `entries` lines under a map drawn `width` pixels wide.
 double legend_height(std::size_t entries);
 
-/// Draws every (file, format) with `draw_one(temporary, file, format)` to a temporary name beside
-/// the file and renames them all only when all succeeded, so that a failure leaves no picture.
-/// Files that are neither regular nor new (devices, pipes, symbolic links) are written directly.
-/// One file named twice, or a folder, is refused before anything is drawn.
-void write_pictures(
-    const std::vector<std::pair<std::string, PictureFormat>>& pictures,
-    const std::function<void(const std::string& file, const std::string& shown_as, PictureFormat)>& draw_one);
+/// Draws every (file, format) with `draw_one` into `files`, for the caller to commit once all
+/// succeeded (and what it prints was printed), so that a failure leaves no picture. Devices and
+/// pipes are written directly, after the others. One file named twice is refused before anything
+/// is drawn, a folder before its picture is.
+void write_pictures(const std::vector<std::pair<std::string, PictureFormat>>& pictures, OutputFiles& files,
+                    const std::function<void(OutputFiles::File& file, PictureFormat)>& draw_one);
 
 }  // namespace pride::html

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "experiment/html/cairo_output.hpp"
 #include "experiment/html/font_session.hpp"
 #include "framework/error.hpp"
 
@@ -201,7 +202,7 @@ void Figure::box(std::string name, const std::vector<double>& values, Rgb colour
     boxes_.push_back({std::move(name), finite.empty() ? std::nullopt : std::optional(box_stats(finite)), colour});
 }
 
-void Figure::write(const std::string& file, const std::string& shown_as) const {
+void Figure::write(OutputFiles::File& file) const {
     const FontSession fonts;
     // The data's ranges (finite values only; positive ones on a log axis).
     double x_lo = kInf, x_hi = -kInf, y_lo = kInf, y_hi = -kInf;
@@ -278,7 +279,7 @@ void Figure::write(const std::string& file, const std::string& shown_as) const {
     };
     const auto x_ok = [&](double v) { return categorical || usable(v, x_.scale); };
 
-    cairo_surface_t* surface = cairo_svg_surface_create(file.c_str(), width, height);
+    cairo_surface_t* surface = cairo_svg_surface_create_for_stream(write_to_file, &file, width, height);
     cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
     cairo_t* cr = cairo_create(surface);
     cairo_set_source_rgb(cr, 1, 1, 1);
@@ -463,11 +464,7 @@ void Figure::write(const std::string& file, const std::string& shown_as) const {
     }
 
     cairo_destroy(cr);
-    cairo_surface_finish(surface);
-    const cairo_status_t status = cairo_surface_status(surface);
-    cairo_surface_destroy(surface);
-    if (status != CAIRO_STATUS_SUCCESS)
-        throw InputError(shown_as + ": cannot write the figure: " + cairo_status_to_string(status));
+    finish_into(surface, file, false, "the figure");
 }
 
 }  // namespace pride::html

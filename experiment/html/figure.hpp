@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "experiment/html/colour.hpp"
+#include "framework/output_files.hpp"
 
 namespace pride::html {
 
@@ -53,8 +54,8 @@ class Figure {
     /// A line of smaller text under the title.
     void subtitle(std::string text) { subtitle_ = std::move(text); }
 
-    /// Writes the figure as SVG to `file`; InputError naming `shown_as` when it cannot.
-    void write(const std::string& file, const std::string& shown_as) const;
+    /// Writes the figure as SVG into `file` and closes it; InputError naming it when it cannot.
+    void write(OutputFiles::File& file) const;
 
   private:
     enum class Kind { line, steps, band, hline, markers };

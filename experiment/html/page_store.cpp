@@ -14,12 +14,7 @@ namespace {
 
 class Reader {
   public:
-    explicit Reader(const std::string& path) : path_(path) {
-        if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
-            sqlite3_close(db_);
-            throw InputError(path + ": cannot open the store");
-        }
-    }
+    explicit Reader(const std::string& path) : path_(path), db_(report::open_read_only(path)) {}
     ~Reader() { sqlite3_close(db_); }
     Reader(const Reader&) = delete;
     Reader& operator=(const Reader&) = delete;

@@ -1,16 +1,11 @@
 #include "experiment/html/report_page.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
 #include <fmt/format.h>
@@ -26,6 +21,7 @@
 #include "experiment/report/coco.hpp"
 #include "experiment/report/store.hpp"
 #include "framework/error.hpp"
+#include "framework/output_files.hpp"
 #include "problems/grid/pareto.hpp"
 #include "problems/grid/path.hpp"
 
@@ -139,10 +135,11 @@ Curve as_steps(const Curve& c) {
     return s;
 }
 
-/// The page as it is built: its HTML and its figures, written to `folder` (the staging folder)
-/// under the names they will have in `shown` (the report's folder, for messages).
+/// The page as it is built: its HTML, and its figures written into `files` under `folder`.
 struct Page {
-    fs::path folder, shown;
+    OutputFiles* files = nullptr;
+    fs::path folder;
+    std::map<std::string, std::string> names;  // problem id -> its file name, no two alike
     std::string html;
     std::string notes;  // of the current problem: under its figures
     std::size_t figures = 0;
@@ -151,12 +148,15 @@ struct Page {
     Rgb colour(const std::string& algorithm) const { return series_colour(algorithms.at(algorithm)); }
     int dash(const std::string& algorithm) const { return static_cast<int>(algorithms.at(algorithm) % 4); }
 
+    /// The figure file of a problem (or an ECDF group): "x/y" and "x_y" get files of their own.
     std::string file(const std::string& kind, const std::string& id) const {
-        return kind + "-" + engine::file_name(id) + ".svg";
+        const auto it = names.find(id);
+        return kind + "-" + (it != names.end() ? it->second : engine::file_name(id)) + ".svg";
     }
+    OutputFiles::File& create(const std::string& name) { return files->create(folder / name); }
     /// Writes the figure and puts it on the page with its caption (HTML).
     void add(const Figure& f, const std::string& name, const std::string& alt, const std::string& caption) {
-        f.write((folder / name).string(), (shown / name).string());
+        f.write(create(name));
         put(name, alt, caption);
     }
     void put(const std::string& name, const std::string& alt, const std::string& caption) {
@@ -573,8 +573,7 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
         colours.push_back(page.colour(b->algorithm));
     }
     const std::string paths_file = page.file("paths", problem);
-    draw_grid_paths(*map, info->start, info->goal, paths, labels, (page.folder / paths_file).string(),
-                    (page.shown / paths_file).string(), PictureFormat::svg, colours);
+    draw_grid_paths(*map, info->start, info->goal, paths, labels, page.create(paths_file), PictureFormat::svg, colours);
     std::string none;
     for (const auto& entry : by_algorithm) {
         const std::string& a = entry.first;  // (clang 14 captures no structured binding)
@@ -626,19 +625,11 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
 
 void problem_section(Page& page, const std::string& problem, const std::vector<const StoredRun*>& runs,
                      const ReportData& r, const PageStore& extra) {
-    page.html += fmt::format("<h3 id=\"problem-{}\">{}</h3>\n<div class=\"figures\">\n",
-                             escape(engine::file_name(problem)), escape(problem));
+    page.html += fmt::format("<h3 id=\"problem-{}\">{}</h3>\n<div class=\"figures\">\n", escape(page.names.at(problem)),
+                             escape(problem));
     page.notes.clear();
     problem_figures(page, problem, runs, r, extra);
     page.html += "</div>\n" + page.notes;
-}
-
-/// Writes `text` to `file`, or InputError naming `shown`.
-void write_text(const fs::path& file, const std::string& text, const fs::path& shown) {
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) throw InputError("html", shown.string() + ": cannot write the file");
 }
 
 /// The folder as named, without a trailing separator.
@@ -651,6 +642,14 @@ fs::path folder_of(const std::string& dir) {
 }  // namespace
 
 PageSummary write_report_page(const std::string& store, const std::string& dir, const report::ReportOptions& options) {
+    OutputFiles files;
+    PageSummary summary = write_report_page(store, dir, options, files);
+    files.commit();  // index.html last: it was created last
+    return summary;
+}
+
+PageSummary write_report_page(const std::string& store, const std::string& dir, const report::ReportOptions& options,
+                              OutputFiles& files) {
     require(!dir.empty(), "html", "expected a folder, got ''");
     // Everything is read and checked before anything is written.
     const report::CampaignStore s = report::read_store(store);
@@ -659,38 +658,23 @@ PageSummary write_report_page(const std::string& store, const std::string& dir, 
     const PageStore extra = read_page_store(store);
 
     const fs::path target = folder_of(dir);
-    std::error_code ec;
-    const bool exists = fs::exists(target, ec);
-    if (exists && !fs::is_directory(target, ec)) throw InputError("html", dir + ": exists and is not a folder");
-    // Staged in a new folder: inside the existing one, or beside the new one (then renamed).
-    // Unique per call, also between threads of one process (Python releases the GIL here).
-    static std::atomic<unsigned> calls{0};
-    const std::string stage = ".pride-html-" + std::to_string(::getpid()) + "-" + std::to_string(calls++);
-    fs::path staging;
-    if (exists) {
-        staging = target / stage;
-    } else {
-        const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
-        fs::create_directories(parent, ec);
-        if (ec) throw InputError("html", dir + ": cannot create the folder: " + ec.message());
-        staging = parent / (stage + "-" + target.filename().string());
-    }
-    fs::remove_all(staging, ec);
-    if (!fs::create_directory(staging, ec) || ec)
-        throw InputError("html", dir + ": cannot " + (exists ? "write into" : "create") +
-                                     " the folder: " + (ec ? ec.message() : std::string("it exists")));
     PageSummary summary;
     summary.index = (target / "index.html").string();
     try {
-        const FontSession fonts;  // one for all the figures
+        files.make_folder(target);
+        files.scratch_folder(target);  // that the folder can be written, known before the figures are drawn
+        const FontSession fonts;       // one for all the figures
         Page page;
-        page.folder = staging;
-        page.shown = target;
+        page.files = &files;
+        page.folder = target;
         std::size_t next = 0;
         for (const ReportRow& row : data.rows)
             if (!page.algorithms.count(row.algorithm)) page.algorithms[row.algorithm] = next++;
         std::map<std::string, std::vector<const StoredRun*>> by_problem;
         for (const StoredRun& run : s.runs) by_problem[run.problem].push_back(&run);
+        std::vector<std::string> problems;
+        for (const auto& entry : by_problem) problems.push_back(entry.first);
+        page.names = engine::unique_file_names(problems);
 
         page.html = provenance_section(store, s, data);
         page.html +=
@@ -710,39 +694,18 @@ PageSummary write_report_page(const std::string& store, const std::string& dir, 
         if (data.coco) nav += "<a href=\"#ert\">ERT and ECDF</a>";
         nav += "<a href=\"#problems\">figures:</a>";
         for (const auto& [problem, runs] : by_problem)
-            nav += fmt::format("<a href=\"#problem-{}\">{}</a>", escape(engine::file_name(problem)), escape(problem));
+            nav += fmt::format("<a href=\"#problem-{}\">{}</a>", escape(page.names.at(problem)), escape(problem));
         nav += "</nav>\n";
         const std::string html = fmt::format(
             "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"generator\" "
             "content=\"pride {}\">\n<title>pride report: {}</title>\n<style>{}</style>\n<script>{}</script>\n</head>\n"
             "<body>\n<h1>Campaign {}</h1>\n{}{}</body>\n</html>\n",
             escape(provenance().version), escape(s.name), kStyle, kScript, escape(s.name), nav, page.html);
-        write_text(staging / "index.html", html, target / "index.html");
+        files.write(target / "index.html", html);
         summary.figures = page.figures;
-
-        // Into place: the whole folder when it is new, else file by file, index.html last.
-        if (!exists) {
-            fs::rename(staging, target, ec);
-            if (ec) throw InputError("html", dir + ": cannot create the folder: " + ec.message());
-        } else {
-            std::vector<fs::path> files;
-            for (const auto& e : fs::directory_iterator(staging)) files.push_back(e.path().filename());
-            std::sort(files.begin(), files.end());
-            files.erase(std::find(files.begin(), files.end(), fs::path("index.html")));
-            files.push_back("index.html");
-            for (const auto& f : files) {
-                fs::rename(staging / f, target / f, ec);
-                if (ec) throw InputError("html", (target / f).string() + ": cannot write the file: " + ec.message());
-            }
-            fs::remove(staging, ec);
-        }
     } catch (const InputError& e) {
-        fs::remove_all(staging, ec);
         if (e.where() == "html") throw;
         throw InputError("html", e.what());
-    } catch (...) {
-        fs::remove_all(staging, ec);
-        throw;
     }
     return summary;
 }

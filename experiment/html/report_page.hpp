@@ -11,6 +11,10 @@
 
 #include "experiment/report/report.hpp"
 
+namespace pride {
+class OutputFiles;
+}
+
 namespace pride::html {
 
 struct PageSummary {
@@ -19,11 +23,16 @@ struct PageSummary {
 };
 
 /// Reads `store` whole, then writes the page. The folder is created (with its parents) or, when
-/// it exists, added to (files of the same names replaced); everything is written to a temporary
-/// folder first and moved in at the end, index.html last, so that a failure leaves no
-/// half-written report. Errors are InputError: the store's own (read_store), and
-/// InputError("html", ...) naming the folder or file that cannot be written.
+/// it exists, added to (files of the same names replaced); every file is written to a temporary
+/// name and all are renamed into place at the end, index.html last (framework/output_files.hpp),
+/// so that a failure leaves no half-written report. Figures are named after problems by
+/// engine::unique_file_names: ids such as "x/y" and "x_y" get files of their own. Errors are
+/// InputError: the store's own (read_store), and InputError("html", ...) naming the folder or
+/// file that cannot be written.
 PageSummary write_report_page(const std::string& store, const std::string& dir,
                               const report::ReportOptions& options = {});
+/// The same page, written to `files` and left for the caller to commit.
+PageSummary write_report_page(const std::string& store, const std::string& dir, const report::ReportOptions& options,
+                              OutputFiles& files);
 
 }  // namespace pride::html

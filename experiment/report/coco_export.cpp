@@ -6,14 +6,15 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <map>
+#include <string>
 #include <tuple>
 #include <vector>
 
 #include "experiment/file_name.hpp"
 #include "experiment/report/store.hpp"
 #include "framework/error.hpp"
+#include "framework/output_files.hpp"
 
 #ifndef PRIDE_VERSION
 #define PRIDE_VERSION "unknown"
@@ -40,16 +41,12 @@ std::string line(std::int64_t evaluations, double best, double f_opt) {
 
 /// A run's block: its header, the trace's lines, and (logger_bbob_free) a last line at the run's
 /// last evaluation when the trace's last line is not there.
-void write_block(std::ofstream& out, const std::vector<TracePoint>& trace, const StoredRun& r, double f_opt) {
-    out << fmt::format(kHeader, f_opt);
-    for (const auto& t : trace) out << line(t.evaluations, t.best, f_opt);
+void write_block(OutputFiles::File& out, const std::vector<TracePoint>& trace, const StoredRun& r, double f_opt) {
+    std::string block = fmt::format(kHeader, f_opt);
+    for (const auto& t : trace) block += line(t.evaluations, t.best, f_opt);
     const double best = r.best.value_or(INFINITY);
-    if (trace.empty() || trace.back().evaluations != r.evaluations) out << line(r.evaluations, best, f_opt);
-}
-
-void close_checked(std::ofstream& out, const std::filesystem::path& path) {
-    out.close();  // the last buffer is written here: checked too (a full disk)
-    require(!out.fail(), path.string(), "cannot write the file");
+    if (trace.empty() || trace.back().evaluations != r.evaluations) block += line(r.evaluations, best, f_opt);
+    out.write(block);
 }
 
 struct Run {
@@ -61,6 +58,13 @@ struct Run {
 }  // namespace
 
 CocoExportSummary export_coco(const std::string& store_path, const std::string& folder) {
+    OutputFiles files;
+    CocoExportSummary summary = export_coco(store_path, folder, files);
+    files.commit();
+    return summary;
+}
+
+CocoExportSummary export_coco(const std::string& store_path, const std::string& folder, OutputFiles& files) {
     require(!folder.empty(), "COCO export", "name the folder to write");
     const CampaignStore store = read_store(store_path);
     if (!store.problems) throw DamagedStore(store_path, "it has no table problems");
@@ -95,11 +99,8 @@ CocoExportSummary export_coco(const std::string& store_path, const std::string& 
         const std::filesystem::path dir = std::filesystem::path(folder) / folders.at(algorithm);
         for (auto& [fid, by_dim] : by_fid) {
             const std::string data_folder = fmt::format("data_f{}", fid);
-            std::error_code ec;
-            std::filesystem::create_directories(dir / data_folder, ec);
-            require(!ec, (dir / data_folder).string(), "cannot create the folder");
-            const auto info_path = dir / fmt::format("bbobexp_f{}.info", fid);
-            std::ofstream info(info_path);
+            files.make_folder(dir / data_folder);
+            std::string info;
             bool first = true;
             for (auto& [dim, dim_runs] : by_dim) {
                 std::sort(dim_runs.begin(), dim_runs.end(), [](const Run& a, const Run& b) {
@@ -108,26 +109,26 @@ CocoExportSummary export_coco(const std::string& store_path, const std::string& 
                 const std::string stem = fmt::format("{}/bbobexp_f{}_DIM{}", data_folder, fid, dim);
                 // logger_bbob_open_info_file: the header, a comment line, the data file, then
                 // ", instance:evaluations|final precision" per run (%.1e).
-                info << fmt::format(
+                info += fmt::format(
                     "{}suite = 'bbob', funcId = {}, DIM = {}, Precision = {:.3e}, algId = '{}', coco_version = "
                     "'pride {}', logger = 'bbob', data_format = 'bbob-new2'\n% pride campaign {}, algorithm {}\n{}.dat",
                     first ? "" : "\n", fid, dim, 1e-8, folders.at(algorithm), PRIDE_VERSION, store.name, algorithm,
                     stem);
                 first = false;
-                std::ofstream dat(dir / (stem + ".dat")), tdat(dir / (stem + ".tdat"));
+                OutputFiles::File& dat = files.create(dir / (stem + ".dat"));
+                OutputFiles::File& tdat = files.create(dir / (stem + ".tdat"));
                 for (const Run& run : dim_runs) {
                     write_block(dat, run.run->trace_targets, *run.run, run.f_opt);
                     write_block(tdat, run.run->trace_evaluations, *run.run, run.f_opt);
-                    info << fmt::format(", {}:{}|{:.1e}", run.instance, run.run->evaluations,
+                    info += fmt::format(", {}:{}|{:.1e}", run.instance, run.run->evaluations,
                                         precision(run.run->best.value_or(INFINITY), run.f_opt));
                     ++summary.runs;
                 }
-                close_checked(dat, dir / (stem + ".dat"));
-                close_checked(tdat, dir / (stem + ".tdat"));
+                dat.close();
+                tdat.close();
                 summary.files += 2;
             }
-            info << "\n";
-            close_checked(info, info_path);
+            files.write(dir / fmt::format("bbobexp_f{}.info", fid), info + "\n");
             ++summary.files;
         }
     }

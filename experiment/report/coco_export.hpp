@@ -12,6 +12,10 @@
 #include <cstddef>
 #include <string>
 
+namespace pride {
+class OutputFiles;
+}
+
 namespace pride::report {
 
 struct CocoExportSummary {
@@ -25,7 +29,10 @@ struct CocoExportSummary {
 /// Writes the bbob runs of the store at `store` under `folder` (created if need be), one folder
 /// per algorithm. InputError when the store is missing, damaged or holds no bbob run, when a
 /// bbob run has no COCO trace (stored before pride kept one: run the campaign again into a new
-/// store), or when a file cannot be written.
+/// store), or when a file cannot be written; then nothing of the export is left
+/// (framework/output_files.hpp).
 CocoExportSummary export_coco(const std::string& store, const std::string& folder);
+/// The same files, written to `files` and left for the caller to commit.
+CocoExportSummary export_coco(const std::string& store, const std::string& folder, OutputFiles& files);
 
 }  // namespace pride::report

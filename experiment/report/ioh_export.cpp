@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
 #include <tuple>
@@ -15,6 +14,7 @@
 #include "experiment/file_name.hpp"
 #include "experiment/report/store.hpp"
 #include "framework/error.hpp"
+#include "framework/output_files.hpp"
 
 namespace pride::report {
 namespace {
@@ -61,6 +61,13 @@ struct Function {
 }  // namespace
 
 ExportSummary export_ioh(const std::string& store_path, const std::string& folder) {
+    OutputFiles files;
+    ExportSummary summary = export_ioh(store_path, folder, files);
+    files.commit();
+    return summary;
+}
+
+ExportSummary export_ioh(const std::string& store_path, const std::string& folder, OutputFiles& files) {
     require(!folder.empty(), "IOH export", "name the folder to write");
     const CampaignStore store = read_store(store_path);
     // The function ids and dimensions are in this table only.
@@ -100,22 +107,20 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
             for (const StoredRun* r : it->second) fn.runs[p.dim].emplace_back(in_suite ? p.instance : r->seed, r);
         }
         const std::filesystem::path dir = std::filesystem::path(folder) / folders.at(algorithm);
-        std::error_code ec;
-        std::filesystem::create_directories(dir, ec);
-        require(!ec, dir.string(), "cannot create the folder");
+        files.make_folder(dir);
         for (const auto& [key, fn] : functions) {
             const std::string stem = fmt::format("f{}_{}", fn.id, engine::file_name(fn.name));
             const std::string data_folder = "data_" + stem;
-            std::filesystem::create_directories(dir / data_folder, ec);
-            require(!ec, (dir / data_folder).string(), "cannot create the folder");
-            std::ofstream info(dir / ("IOHprofiler_" + stem + ".info"));
+            files.make_folder(dir / data_folder);
+            std::string info;
             bool first = true;
             for (const auto& [dim, dim_runs] : fn.runs) {
                 const std::string dat = fmt::format("IOHprofiler_f{}_DIM{}.dat", fn.id, dim);
-                std::ofstream d(dir / data_folder / dat);
+                OutputFiles::File& d = files.create(dir / data_folder / dat);
+                std::string block;
                 // As IOHexperimenter's Analyzer (v1, the .info format) writes them: a header line per
                 // dimension, "%", the data file, then "instance:evaluations|best" per run.
-                info << fmt::format(
+                info += fmt::format(
                     "{}suite = \"{}\", funcId = {}, funcName = \"{}\", DIM = {}, maximization = \"F\", algId = "
                     "\"{}\", algInfo = \"campaign {}\"\n%\n{}/{}",
                     first ? "" : "\n", quoted(fn.suite), fn.id, quoted(fn.name), dim, quoted(algorithm),
@@ -125,25 +130,28 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
                     // One block per run: the best value after each iteration, at its evaluation
                     // count, in the five columns of IOHexperimenter's old data format (no
                     // transformation here: af(x)+b = f(x)).
-                    d << "\"function evaluation\" \"current f(x)\" \"best-so-far f(x)\" \"current af(x)+b\" "
-                         "\"best af(x)+b\"\n";
+                    block +=
+                        "\"function evaluation\" \"current f(x)\" \"best-so-far f(x)\" \"current af(x)+b\" "
+                        "\"best af(x)+b\"\n";
                     // Rows start at the first finite value: IOHanalyzer reads a row as a value reached,
                     // and before a feasible one there is none (a run with none writes no row).
                     for (std::size_t k = 0; k < r->history.size() && k < r->history_evaluations.size(); ++k) {
                         if (!std::isfinite(r->history[k])) continue;
                         const std::string v = value(r->history[k]);
-                        d << fmt::format("{} {} {} {} {}\n", r->history_evaluations[k], v, v, v, v);
+                        block += fmt::format("{} {} {} {} {}\n", r->history_evaluations[k], v, v, v, v);
                     }
-                    info << fmt::format(", {}:{}|{}", number, r->evaluations,
+                    if (block.size() >= (1u << 16)) {  // written as it grows: memory stays small
+                        d.write(block);
+                        block.clear();
+                    }
+                    info += fmt::format(", {}:{}|{}", number, r->evaluations,
                                         r->best ? fmt::format("{:.17g}", *r->best) : std::string("None"));
                 }
-                d.close();  // the last buffer is written here: checked too (a full disk)
-                require(!d.fail(), (dir / data_folder / dat).string(), "cannot write the file");
+                d.write(block);
+                d.close();
                 ++summary.files;
             }
-            info << "\n";
-            info.close();
-            require(!info.fail(), (dir / ("IOHprofiler_" + stem + ".info")).string(), "cannot write the file");
+            files.write(dir / ("IOHprofiler_" + stem + ".info"), info + "\n");
             ++summary.files;
         }
     }

@@ -6,6 +6,10 @@
 #include <cstddef>
 #include <string>
 
+namespace pride {
+class OutputFiles;
+}
+
 namespace pride::report {
 
 struct ExportSummary {
@@ -15,7 +19,11 @@ struct ExportSummary {
 };
 
 /// Writes the store at `store` under `folder` (created if need be). InputError when the store is
-/// missing, not a campaign store, damaged (DamagedStore) or empty, or when a file cannot be written.
+/// missing, not a campaign store, damaged (DamagedStore) or empty, or when a file cannot be written;
+/// then nothing of the export is left (framework/output_files.hpp).
 ExportSummary export_ioh(const std::string& store, const std::string& folder);
+/// The same files, written to `files` and left for the caller to commit (the command line commits
+/// them once its summary was printed).
+ExportSummary export_ioh(const std::string& store, const std::string& folder, OutputFiles& files);
 
 }  // namespace pride::report

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <sqlite3.h>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -97,12 +98,7 @@ bool parse_list(std::string_view text, std::vector<T>& out, std::size_t& at) {
 /// The store's connection, read-only; closed at the end of the scope.
 class Connection {
   public:
-    explicit Connection(const std::string& path) : path_(path) {
-        if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
-            sqlite3_close(db_);
-            throw InputError(path + ": cannot open the store");
-        }
-    }
+    explicit Connection(const std::string& path) : path_(path), db_(open_read_only(path)) {}
     ~Connection() { sqlite3_close(db_); }
     Connection(const Connection&) = delete;
     Connection& operator=(const Connection&) = delete;
@@ -270,7 +266,71 @@ void check_length(const std::string& path) {
                                              size, pages, page, page * pages));
 }
 
+/// `path` as an SQLite URI file name: bytes outside the unreserved set percent-encoded (a '?' or '#'
+/// in a name would end the path), and "file://" before an absolute path (so that "//x" is no host).
+std::string uri_of(const std::string& path) {
+    std::string out = path.rfind('/', 0) == 0 ? "file://" : "file:";
+    for (const char c : path) {
+        const auto u = static_cast<unsigned char>(c);
+        if (std::isalnum(u) || c == '/' || c == '-' || c == '.' || c == '_' || c == '~')
+            out += c;
+        else
+            out += fmt::format("%{:02X}", u);
+    }
+    return out;
+}
+
+/// Whether `file` exists with content (a -wal or -journal file that holds what the store lacks).
+bool holds_content(const std::string& file) {
+    std::error_code ec;
+    return std::filesystem::exists(file, ec) && std::filesystem::file_size(file, ec) > 0 && !ec;
+}
+
+/// The store opened with `uri` and its schema read (which is where a WAL store without its -shm
+/// fails), or null with SQLite's reason in `why`.
+sqlite3* try_open(const std::string& uri, std::string& why) {
+    sqlite3* db = nullptr;
+    int rc = sqlite3_open_v2(uri.c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr);
+    if (rc == SQLITE_OK) rc = sqlite3_exec(db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
+    if (rc == SQLITE_OK) return db;
+    why = db ? sqlite3_errmsg(db) : "out of memory";
+    // Not a database, or a corrupt one, is said by the reader's own checks: keep the connection.
+    const int primary = db ? (sqlite3_extended_errcode(db) & 0xff) : SQLITE_NOMEM;
+    if (primary == SQLITE_NOTADB || primary == SQLITE_CORRUPT) return db;
+    sqlite3_close(db);
+    return nullptr;
+}
+
 }  // namespace
+
+std::string read_only_uri(const std::string& path) {
+    std::string why;
+    const std::string ro = uri_of(path) + "?mode=ro";
+    if (sqlite3* db = try_open(ro, why)) {
+        sqlite3_close(db);
+        return ro;
+    }
+    if (holds_content(path + "-wal") || holds_content(path + "-journal"))
+        throw InputError(path + ": cannot read the store (" + why + "): its changes in " + path +
+                         (holds_content(path + "-wal") ? "-wal" : "-journal") +
+                         " are not in the file yet, and SQLite cannot open them here (a read-only folder or file "
+                         "system); open the store once where its folder can be written, or copy it with that file "
+                         "to such a folder");
+    // Nothing outside the file: it is the whole store, read as a file that does not change.
+    const std::string immutable = uri_of(path) + "?immutable=1";
+    if (sqlite3* db = try_open(immutable, why)) {
+        sqlite3_close(db);
+        return immutable;
+    }
+    throw InputError(path + ": cannot read the store (" + why + ")");
+}
+
+sqlite3* open_read_only(const std::string& path) {
+    const std::string uri = read_only_uri(path);
+    std::string why;
+    if (sqlite3* db = try_open(uri, why)) return db;
+    throw InputError(path + ": cannot read the store (" + why + ")");
+}
 
 namespace {
 /// A trace column, [e0, f0, e1, f1, ...] (null: +inf): evaluations whole, increasing, within the

@@ -13,7 +13,19 @@
 #include "framework/coco_trace.hpp"
 #include "framework/error.hpp"
 
+struct sqlite3;
+
 namespace pride::report {
+
+/// The SQLite URI that opens the store at `path` for reading without writing anything beside it:
+/// "file:PATH?mode=ro", or, where that cannot read it (a read-only folder or file system, where a
+/// store in WAL mode cannot get its -shm file), "file:PATH?immutable=1" when nothing of the store
+/// is outside the file (no -wal or -journal file with content, as after its last writer closed
+/// it). InputError "PATH: cannot read the store (REASON)" otherwise, saying what to do.
+std::string read_only_uri(const std::string& path);
+
+/// The store at `path` opened as read_only_uri says (the caller closes it), checked readable.
+sqlite3* open_read_only(const std::string& path);
 
 /// A store whose contents are not what pride bench writes (missing tables or columns, values of
 /// the wrong kind, malformed JSON); an InputError, so the command line exits 2.
