@@ -60,6 +60,16 @@ def _real(name, value):
     return float(value)
 
 
+def _reals(name, values):
+    """A list of real numbers (None is not one)."""
+    out = []
+    for v in _list(name, values):
+        if v is None:
+            raise TypeError(f"{name}: expected numbers, got NoneType")
+        out.append(_real(name, v))
+    return out
+
+
 def _str(name, value):
     if not isinstance(value, str):
         raise TypeError(f"{name}: expected a name (str), got {type(value).__name__}")
@@ -118,6 +128,8 @@ class Result:
     grid plans add path ((n, 2) array of x, y), feasible, objective_value, metrics, optimum, gap."""
 
     def __init__(self, fields):
+        if not isinstance(fields, dict):
+            raise TypeError(f"fields: expected a dict, got {type(fields).__name__}")
         self.__dict__.update(fields)
 
     def as_dict(self):
@@ -210,7 +222,7 @@ def plan(grid, start, goal, *, algo="pso", objective="cells", step_cost=None, en
                               objective if callable(objective) else _str("objective", objective),
                               _callable("step_cost", step_cost), _str("encoding", encoding),
                               _str("connector", connector), _str("init", init), _int("waypoints", waypoints, False),
-                              None if weights is None else [_real("weights", w) for w in _list("weights", weights)],
+                              None if weights is None else _reals("weights", weights),
                               _real("lambda_", lambda_), _bool("corner_cutting", corner_cutting),
                               _bool("oracle", oracle), _int("evals", evals), _int("iters", iters), _seed(seed),
                               _callable("callback", callback), params))

@@ -206,7 +206,7 @@ class Optimizer {
     }
 
     void tell(const py::object& values) {
-        const auto v = real_array(values, "tell");
+        const auto v = real_array(values, "tell: values");
         require(v.ndim() == 1 || (v.ndim() == 2 && v.shape(1) == 1), "tell",
                 "expected a 1-D array of values, one per point asked for, got an array with " +
                     std::to_string(v.ndim()) + " dimensions");
