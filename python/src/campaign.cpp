@@ -204,6 +204,13 @@ std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seed
     require(evals || evals_per_dim || iters, "campaign",
             "give evals, evals_per_dim or iters (the budget of every run)");
     require(!(evals && evals_per_dim), "evals_per_dim", "give evals or evals_per_dim, not both");
+    // The budget before the problems, whose sizes are checked with their runs under it.
+    const auto count = [](const char* name, std::optional<std::int64_t> v, std::int64_t lo) {
+        require(!v || (*v >= lo && *v <= engine::max_budget), name,
+                fmt::format("must be an integer in [{}, {}], got {}", lo, engine::max_budget, v.value_or(0)));
+    };
+    count("evals", evals, 1);
+    count("iters", iters, 0);
     require(!evals_per_dim || (*evals_per_dim >= 1 && *evals_per_dim <= engine::max_budget), "evals_per_dim",
             "must be in [1, 1000000000000000], got " + std::to_string(evals_per_dim.value_or(0)));
     require(!(target && precision), "precision", "give target (an absolute value) or precision, not both");
