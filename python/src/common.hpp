@@ -95,20 +95,24 @@ class Call {
 
     /// Runs `work` with the GIL released, stopped from outside by `stop` (called with the GIL
     /// held; it sets flags the work reads). On the main thread with `poll` (work that calls no
-    /// Python on this thread), the work runs on a helper thread while this one runs Python's
-    /// signal handlers every 20 ms (Python runs them on its main thread only, between
-    /// bytecodes): an exception a handler raises (KeyboardInterrupt) calls `stop` and is raised
-    /// once the work has ended, whatever it returned. A call the exit stopped raises SystemExit.
+    /// Python on this thread; Python runs signal handlers on its main thread only, between
+    /// bytecodes), Ctrl-C stops the work and its KeyboardInterrupt is raised once the work has
+    /// ended, whatever it returned: with `flag` (what `stop` sets) and Python's default SIGINT
+    /// handler, a signal handler in front of Python's sets `flag`; otherwise the work runs on a
+    /// helper thread while this one runs Python's handlers every 20 ms, and an exception one
+    /// raises calls `stop`. A call the exit stopped raises SystemExit.
     template <class F>
-    auto run(F&& work, const std::function<void()>& stop, bool poll) -> decltype(work()) {
+    auto run(F&& work, const std::function<void()>& stop, bool poll, std::atomic<bool>* flag = nullptr)
+        -> decltype(work()) {
         std::optional<decltype(work())> out;
-        run_work([&] { out.emplace(work()); }, stop, poll);
+        run_work([&] { out.emplace(work()); }, stop, poll, flag);
         return std::move(*out);
     }
 
   private:
     friend void stop_calls_at_exit();
-    void run_work(const std::function<void()>& work, const std::function<void()>& stop, bool poll);
+    void run_work(const std::function<void()>& work, const std::function<void()>& stop, bool poll,
+                  std::atomic<bool>* flag);
 
     std::thread::id thread_;
     Call* outer_;                 // the call this one is made from, on the same thread

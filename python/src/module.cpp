@@ -508,7 +508,7 @@ engine::RunResult run_released(const engine::AlgorithmSpec& algorithm, const eng
                 return watch ? engine::run(algorithm, problem, stoppable, seed, *watch)
                              : engine::run(algorithm, problem, stoppable, seed);
             },
-            [errors] { errors->stopped.store(true); }, !calls_python);
+            [errors] { errors->stopped.store(true); }, !calls_python, &errors->stopped);
     } catch (...) {
         errors->rethrow_or(std::current_exception());
     }

@@ -12,6 +12,7 @@ import signal
 import subprocess
 import sys
 import textwrap
+import threading
 import time
 
 import pytest
@@ -175,3 +176,40 @@ def test_ctrl_c_stops_a_campaign_or_a_run_promptly(tmp_path, kind, jobs):
         assert len(runs) > 0  # the runs that finished before the interrupt were kept
     if kind == "registered":
         assert runs == []
+
+
+class Custom(Exception):
+    pass
+
+
+def with_sigint_handler(handler, call, after=0.5):
+    """call() with `handler` for SIGINT, and a SIGINT sent to this process after `after` s."""
+    previous = signal.signal(signal.SIGINT, handler)
+    timer = threading.Timer(after, lambda: os.kill(os.getpid(), signal.SIGINT))
+    try:
+        timer.start()
+        start = time.monotonic()
+        try:
+            return call(), time.monotonic() - start
+        finally:
+            timer.join()
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+def test_a_custom_sigint_handler_runs_during_a_run_and_what_it_raises_stops_it():
+    # Python's own handlers run on the main thread between bytecodes; the module runs them every
+    # 20 ms while C++ works there, so a handler that raises stops the run promptly...
+    def raises(signum, frame):
+        raise Custom("from the handler")
+
+    with pytest.raises(Custom, match="from the handler"):
+        with_sigint_handler(raises, lambda: pride.minimize("pso", "rastrigin", dim=10, evals=10**12 // 10**3))
+    # ... and one that does not raise leaves the run whole.
+    seen = []
+    (r, ended), took = with_sigint_handler(
+        lambda *a: seen.append(time.monotonic()),
+        lambda: (pride.minimize("pso", "rastrigin", dim=10, evals=6_000_000, seed=1), time.monotonic()), after=0.2)
+    assert len(seen) == 1 and seen[0] < ended, "the handler ran during the run"
+    assert r.evaluations == 6_000_000
+    assert r.history.tobytes() == pride.minimize("pso", "rastrigin", dim=10, evals=6_000_000, seed=1).history.tobytes()
