@@ -178,3 +178,17 @@ def test_empty_ids_are_refused():
         pride.Campaign("c", seeds=1, evals=10, problems=p, algorithms=[{"id": "", "algo": "pso"}])
     with pytest.raises(ValueError, match="^name: a campaign needs a name$"):
         pride.Campaign("", seeds=1, evals=10, problems=p, algorithms=["pso"])
+
+
+def test_a_large_grid_array_is_read_a_block_of_rows_at_a_time():
+    # 3 x 10^6 cells: read as doubles 2^20 cells at a time, not as 24 MB at once; every block
+    # checked and copied to its place.
+    a = np.zeros((3000, 1000), dtype=np.uint8)
+    a[::7, 3] = 1
+    a[2999, 999] = 1
+    g = pride.Grid(a)
+    assert np.array_equal(g.to_array(), a)
+    a[2500, 7] = 2
+    with pytest.raises(ValueError, match=r"^array: cell \(7,2500\) is 2; expected 0 \(free\) or 1 \(blocked\)$"):
+        pride.Grid(a)
+    assert np.array_equal(pride.Grid(a.T[:, :1000] == 1).to_array(), (a.T[:, :1000] == 1).astype(np.uint8))
