@@ -44,6 +44,8 @@ class SigintStops {
         if (sigint_depth++ > 0) return;
         struct sigaction ours {};
         sigaction(SIGINT, nullptr, &python_sigint);
+        // A handler taking siginfo is not Python's: it is left alone (Ctrl-C then waits for the run).
+        if (python_sigint.sa_flags & SA_SIGINFO) return;
         ours = python_sigint;
         ours.sa_flags &= ~SA_SIGINFO;
         ours.sa_handler = stop_on_sigint;
