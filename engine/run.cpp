@@ -194,20 +194,25 @@ void prepare_grid(Prepared& out, const GridSpec& g, Objective objective) {
     }
 }
 
+/// The checks of a continuous problem's size, before any of it is allocated.
+void require_problem_memory(const ContinuousSpec& c) {
+    const auto* item = continuous::catalog().find(c.function);
+    require(item != nullptr, "problem", "unknown problem '" + c.function + "'");
+    require(c.dim >= 1 && c.dim <= 1'000'000'000'000'000, "dim",
+            "must be an integer in [1, 1000000000000000], got " + std::to_string(c.dim));
+    // Bounds, an optimum and scratch vectors per coordinate, and a rotation (dim^2) for an
+    // instance that has one.
+    const double n = static_cast<double>(c.dim);
+    const bool rotated = c.instance.value_or(continuous::default_instance(item->entry)) != 0;
+    require_memory(8.0 * (8.0 * n + (rotated ? 2.0 * n * n : 0.0)), "dim",
+                   fmt::format("{} in dimension {}", c.function, c.dim));
+}
+
 std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
     auto out = std::make_shared<Prepared>();
     out->spec = spec;
     if (const auto* c = std::get_if<ContinuousSpec>(&spec)) {
-        const auto* item = continuous::catalog().find(c->function);
-        require(item != nullptr, "problem", "unknown problem '" + c->function + "'");
-        require(c->dim >= 1 && c->dim <= 1'000'000'000'000'000, "dim",
-                "must be an integer in [1, 1000000000000000], got " + std::to_string(c->dim));
-        // Bounds, an optimum and scratch vectors per coordinate, and a rotation (dim^2) for an
-        // instance that has one, before any is allocated.
-        const double n = static_cast<double>(c->dim);
-        const bool rotated = c->instance.value_or(continuous::default_instance(item->entry)) != 0;
-        require_memory(8.0 * (8.0 * n + (rotated ? 2.0 * n * n : 0.0)), "dim",
-                       fmt::format("{} in dimension {}", c->function, c->dim));
+        require_problem_memory(*c);
         out->name = c->function;
         out->dimension = static_cast<std::size_t>(c->dim);
         out->box = BoxTarget{continuous::make_function(c->function, c->dim, c->instance)};
@@ -612,6 +617,7 @@ Termination Budget::termination(std::size_t dimension, bool grid) const {
                         std::chrono::duration<double, std::milli>(*wall_ms)));
     }
     t.recorded_targets = recorded_targets;
+    t.stop = stop;
     return t;
 }
 
@@ -682,6 +688,28 @@ void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget&
     checked_run(algorithm, *problem.planned_for(algorithm), budget);
 }
 
+void check_before_building(const AlgorithmSpec& algorithm, const ProblemSpec& spec, std::int64_t dimension,
+                           const Budget& budget) {
+    Prepared p;
+    p.spec = spec;
+    if (const auto* c = std::get_if<ContinuousSpec>(&spec)) {
+        require_problem_memory(*c);
+        p.name = c->function;
+        dimension = c->dim;
+    } else if (const auto* cb = std::get_if<CallbackSpec>(&spec)) {
+        require(dimension >= 1 && dimension <= max_budget, "dim",
+                fmt::format("must be an integer in [1, {}], got {}", max_budget, dimension));
+        // The bounds, held three times once built (the spec, its prepared copy, the problem's).
+        require_memory(48.0 * static_cast<double>(dimension), "dim",
+                       fmt::format("{} in dimension {}", cb->name, dimension));
+        p.name = cb->name;
+    } else {
+        return;  // grids: their size is the map's, checked as it is read
+    }
+    p.dimension = static_cast<std::size_t>(dimension);
+    checked_run(algorithm, p, budget);
+}
+
 namespace {
 /// A box run, observed when `observer` is given: its stop flag joins the stopping rules.
 Result run_box(const AlgorithmEntry& entry, const Params& params, const BoxTarget& target,
@@ -691,8 +719,10 @@ Result run_box(const AlgorithmEntry& entry, const Params& params, const BoxTarge
     auto stop = std::make_shared<std::atomic<bool>>(false);
     Termination observed = termination;
     observed.stop = stop;
+    // The observer's flag replaces the budget's (Budget::stop), which is read here instead.
     const BoxObserver forward = [&](const IterationView& view) {
-        if (!(*observer)(view)) stop->store(true, std::memory_order_relaxed);
+        const bool asked = termination.stop && termination.stop->load(std::memory_order_relaxed);
+        if (!(*observer)(view) || asked) stop->store(true, std::memory_order_relaxed);
     };
     return entry.run_box_observed(params, target, observed, seed, forward);
 }

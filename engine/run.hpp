@@ -100,6 +100,14 @@ void check_grid_names(const GridSpec& spec);
 /// problem's space, the budget, and the memory the run needs. InputError naming what is wrong.
 void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget);
 
+/// The checks of Problem(spec) and check() that need nothing built, for a front end that builds a
+/// problem from a size (Python: `dim`): the problem's own memory ("dim"), then the algorithm, its
+/// parameters, the budget and the run's memory, so that nothing is allocated for a run check()
+/// would refuse. For a ContinuousSpec, or a CallbackSpec whose bounds (of `dimension`
+/// coordinates) are not built yet; nothing for a grid (its size is its map's).
+void check_before_building(const AlgorithmSpec& algorithm, const ProblemSpec& spec, std::int64_t dimension,
+                           const Budget& budget);
+
 /// Runs once. The same inputs give the same result, bit for bit (bar wall_ms), on any thread.
 RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget, std::uint64_t seed);
 

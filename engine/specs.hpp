@@ -92,6 +92,9 @@ struct Budget {
     // per thread, with results bit-identical to one thread; continuous functions (cheaper than a
     // thread's wake-up) and chains (evaluated one at a time) run on the run's thread whatever it is.
     std::int64_t threads = 1;
+    // Not a limit either: a flag a front end sets to stop its runs from outside (Python: Ctrl-C,
+    // the interpreter's exit), read once per iteration (Termination::stop); empty costs nothing.
+    std::shared_ptr<const std::atomic<bool>> stop;
 
     /// The stopping rules for a problem of `dimension` (grid: whether it is a grid problem);
     /// InputError naming the field for a limit out of range.

@@ -60,9 +60,65 @@ def _real(name, value):
     return float(value)
 
 
+def _reals(name, values):
+    """A list of real numbers (None is not one)."""
+    out = []
+    for v in _list(name, values):
+        if v is None:
+            raise TypeError(f"{name}: expected numbers, got NoneType")
+        out.append(_real(name, v))
+    return out
+
+
 def _str(name, value):
     if not isinstance(value, str):
         raise TypeError(f"{name}: expected a name (str), got {type(value).__name__}")
+    return value
+
+
+def _seed(value):
+    """A seed: the command line's range, [0, 2^64 - 1], and its wording."""
+    if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
+        raise TypeError(f"seed: expected an integer, got {type(value).__name__}")
+    value = int(value)
+    if not 0 <= value < 2**64:
+        raise ValueError(f"seed: must be an integer in [0, 18446744073709551615], got {value}")
+    return value
+
+
+def _bool(name, value, optional=False):
+    if value is None and optional:
+        return None
+    if not isinstance(value, (bool, _np.bool_)):
+        raise TypeError(f"{name}: expected True or False, got {type(value).__name__}")
+    return bool(value)
+
+
+def _callable(name, value):
+    if value is not None and not callable(value):
+        raise TypeError(f"{name}: expected a callable, got {type(value).__name__}")
+    return value
+
+
+def _path(name, value):
+    """A file's path: a str or an os.PathLike giving one."""
+    if isinstance(value, _os.PathLike):
+        value = _os.fspath(value)
+    if not isinstance(value, str):
+        raise TypeError(f"{name}: expected a path (str or os.PathLike), got {type(value).__name__}")
+    return value
+
+
+def _list(name, value):
+    """A list or tuple (not a str, dict, set or None: their order or items are not what is meant)."""
+    if not isinstance(value, (list, tuple)):
+        raise TypeError(f"{name}: expected a list, got {type(value).__name__}")
+    return list(value)
+
+
+def _grid(value):
+    if not isinstance(value, Grid):
+        raise TypeError(f"grid: expected a pride.Grid, got {type(value).__name__}")
     return value
 
 
@@ -72,6 +128,8 @@ class Result:
     grid plans add path ((n, 2) array of x, y), feasible, objective_value, metrics, optimum, gap."""
 
     def __init__(self, fields):
+        if not isinstance(fields, dict):
+            raise TypeError(f"fields: expected a dict, got {type(fields).__name__}")
         self.__dict__.update(fields)
 
     def as_dict(self):
@@ -91,13 +149,13 @@ def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, ta
     of shape (dim,), or, with ``vectorized=True``, as ``f(X)`` with X of shape (n, dim) returning n
     values. ``params`` are the algorithm's parameters (see ``algorithms()``). Without evals or
     iters the budget is 10,000 evaluations per dimension. ``callback(iteration, evaluations,
-    best_f, population, fitness)`` is called after every iteration with read-only views (valid
-    during the call); returning False stops the run there. The same seed gives the same bits as
-    ``pride run --seed``."""
+    best_f, population, fitness)`` is called after every iteration with read-only copies of the
+    population and its values (the callback's to keep); returning False stops the run there. The
+    same seed (0 to 2^64 - 1) gives the same bits as ``pride run --seed``."""
     return Result(_pride.minimize(_str("algo", algo), problem, _int("dim", dim), bounds, _int("evals", evals),
                                   _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
-                                  _int("seed", seed, False), _int("instance", instance), callback, bool(vectorized),
-                                  params))
+                                  _seed(seed), _int("instance", instance), _callable("callback", callback),
+                                  _bool("vectorized", vectorized), params))
 
 
 class Optimizer:
@@ -110,7 +168,7 @@ class Optimizer:
                  **params):
         self._run = _pride.Optimizer(_str("algo", algo), bounds, _int("dim", dim), _int("evals", evals),
                                      _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
-                                     _int("seed", seed, False), params)
+                                     _seed(seed), params)
         self.algo = algo
 
     def ask(self):
@@ -160,15 +218,14 @@ def plan(grid, start, goal, *, algo="pso", objective="cells", step_cost=None, en
     (-1,1) (-1,0) (-1,-1) (0,-1) (1,-1); >= 0; summing to ``objective`` on every path), ``exact``
     and ``oracle=True`` find its exact optimum; their calls of it are their own work, not
     evaluations."""
-    if not isinstance(grid, Grid):
-        raise TypeError(f"grid: expected a pride.Grid, got {type(grid).__name__}")
-    return Result(_pride.plan(grid, start, goal, _str("algo", algo),
-                              objective if callable(objective) else _str("objective", objective), step_cost,
-                              _str("encoding", encoding), _str("connector", connector), _str("init", init),
-                              _int("waypoints", waypoints, False),
-                              None if weights is None else [_real("weights", w) for w in weights], _real("lambda_", lambda_),
-                              bool(corner_cutting), bool(oracle), _int("evals", evals), _int("iters", iters),
-                              _int("seed", seed, False), callback, params))
+    return Result(_pride.plan(_grid(grid), start, goal, _str("algo", algo),
+                              objective if callable(objective) else _str("objective", objective),
+                              _callable("step_cost", step_cost), _str("encoding", encoding),
+                              _str("connector", connector), _str("init", init), _int("waypoints", waypoints, False),
+                              None if weights is None else _reals("weights", weights),
+                              _real("lambda_", lambda_), _bool("corner_cutting", corner_cutting),
+                              _bool("oracle", oracle), _int("evals", evals), _int("iters", iters), _seed(seed),
+                              _callable("callback", callback), params))
 
 
 def astar(grid, start, goal, *, objective="cells", corner_cutting=False):
@@ -185,8 +242,8 @@ def pareto(grid, start, goal, *, objectives="length,turns", corner_cutting=False
     """The exact Pareto front over ``objectives`` (length, turns, angle: two or three of them, as
     ``pride pareto``): a list of dicts with length, turns, angle_penalty and path."""
     if not isinstance(objectives, str):
-        objectives = ",".join(objectives)
-    return _pride.pareto(grid, start, goal, objectives, corner_cutting)
+        objectives = ",".join(_str("objectives", o) for o in _list("objectives", objectives))
+    return _pride.pareto(_grid(grid), start, goal, objectives, _bool("corner_cutting", corner_cutting))
 
 
 def _pandas():
@@ -202,12 +259,18 @@ def roughset(table, *, columns=None):
     ``table`` is a CSV file's path, a 2-D array (integers are codes, anything else is a label;
     the last column is the decision; ``columns`` names them, default a, b, c, ...) or a pandas
     DataFrame (its column names)."""
-    if isinstance(table, str):
-        return _pride.roughset_csv(table)
+    if columns is not None:
+        columns = _list("columns", columns)
+    if isinstance(table, (str, _os.PathLike)):
+        if columns is not None:
+            raise ValueError("columns: a CSV file names its own columns (its first row)")
+        return _pride.roughset_csv(_path("table", table))
     pd = _pandas()
     if pd is not None and isinstance(table, pd.DataFrame):
-        columns = [str(c) for c in table.columns] if columns is None else list(columns)
+        columns = [str(c) for c in table.columns] if columns is None else columns
         values = table.to_numpy()
+    elif table is None or isinstance(table, (dict, set, bytes)) or not hasattr(table, "__len__"):
+        raise TypeError(f"table: expected a CSV file's path, a 2-D array or a DataFrame, got {type(table).__name__}")
     else:
         values = _np.asarray(table)
     if values.ndim != 2:
@@ -240,13 +303,15 @@ class Campaign:
 
     def __init__(self, name, *, seeds, problems, algorithms, evals=None, evals_per_dim=None, iters=None, target=None,
                  precision=None):
-        self._c = _pride.campaign_from_data(name, seeds, evals, evals_per_dim, iters, target, precision,
-                                            list(problems), list(algorithms))
+        self._c = _pride.campaign_from_data(_str("name", name), _int("seeds", seeds, False), _int("evals", evals),
+                                            _int("evals_per_dim", evals_per_dim), _int("iters", iters),
+                                            _real("target", target), _real("precision", precision),
+                                            _list("problems", problems), _list("algorithms", algorithms))
 
     @classmethod
     def load(cls, path):
         self = cls.__new__(cls)
-        self._c = _pride.campaign_from_file(path)
+        self._c = _pride.campaign_from_file(_path("path", path))
         return self
 
     name = property(lambda self: self._c.name)
@@ -257,8 +322,10 @@ class Campaign:
 
     def run(self, store, *, jobs=1):
         """Runs what ``store`` does not hold yet on ``jobs`` threads; returns the counts
-        (stored, already, total)."""
-        return _pride.campaign_run(self._c, str(store), jobs)
+        (stored, already, total). Ctrl-C stops it within a few tens of milliseconds (plus the
+        evaluation of a Python function in progress): the runs that finished are stored, the ones
+        running are not, and a later run() of the same store resumes."""
+        return _pride.campaign_run(self._c, _path("store", store), _int("jobs", jobs, False))
 
 
 def read_store(path, *, dataframe=None):
@@ -266,7 +333,8 @@ def read_store(path, *, dataframe=None):
     else a list of dicts (problem, algorithm, seed, best, evaluations, wall_ms, optimum, history,
     history_evaluations, encoding, and COCO's trace: ``trace_targets`` and ``trace_evaluations``,
     (n, 2) arrays of rows (evaluations, best so far) at COCO's target and evaluation triggers)."""
-    store = _pride.read_store(str(path))
+    store = _pride.read_store(_path("path", path))
+    dataframe = _bool("dataframe", dataframe, optional=True)
     pd = _pandas()
     if dataframe or (dataframe is None and pd is not None):
         if pd is None:
@@ -284,7 +352,9 @@ def report(path, *, raw=False, dataframe=None, html=None):
     run in parts, read as one (``pride report A B``). ``html=DIR`` also writes the HTML report
     of one store into the folder DIR (``pride report --html DIR``) and gives its index.html as
     ``html``."""
-    paths = [str(p) for p in path] if isinstance(path, (list, tuple)) else [str(path)]
+    paths = [_path("path", p) for p in path] if isinstance(path, (list, tuple)) else [_path("path", path)]
+    raw = _bool("raw", raw)
+    dataframe = _bool("dataframe", dataframe, optional=True)
     if html is not None:
         if not isinstance(html, (str, _os.PathLike)):
             raise TypeError(f"html: expected a folder (str or os.PathLike), got {type(html).__name__}")
@@ -295,9 +365,9 @@ def report(path, *, raw=False, dataframe=None, html=None):
             raise ValueError("html: expected a folder, got ''")
         if len(paths) != 1:
             raise ValueError("html: draws one store; join several into one with pride merge first")
-    r = _pride.report(paths, bool(raw))
+    r = _pride.report(paths, raw)
     if html is not None:
-        r["html"] = _pride.report_html(paths[0], html, bool(raw))["index"]
+        r["html"] = _pride.report_html(paths[0], html, raw)["index"]
     pd = _pandas()
     if dataframe or (dataframe is None and pd is not None):
         if pd is None:

@@ -4,8 +4,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <set>
+#include <type_traits>
 
 #include "common.hpp"
 #include "experiment/campaign.hpp"
@@ -30,37 +32,82 @@ const std::set<std::string> problem_keys{
     "objective", "encoding",   "connector", "init",     "waypoints", "weights", "lambda",  "corner_cutting", "function",
     "bounds",    "vectorized", "step_cost", "f_opt"};
 
+/// d[key] checked as a T (None or missing: empty); a wrong type is a TypeError "WHERE: KEY: ...".
 template <class T>
-std::optional<T> get(const py::dict& d, const char* key) {
+std::optional<T> get(const py::dict& d, const char* key, const std::string& where) {
     if (!d.contains(key) || d[key].is_none()) return std::nullopt;
-    return d[key].cast<T>();
+    const py::object v = d[key];
+    const std::string name = where + ": " + key;
+    if constexpr (std::is_same_v<T, std::string>)
+        return text_arg(v, name);
+    else if constexpr (std::is_same_v<T, std::int64_t>)
+        return integer_arg(v, name);
+    else if constexpr (std::is_same_v<T, double>)
+        return number_arg(v, name);
+    else if constexpr (std::is_same_v<T, bool>)
+        return flag_arg(v, name);
+    else {
+        static_assert(std::is_same_v<T, std::vector<double>>);
+        if (!py::isinstance<py::sequence>(v) || py::isinstance<py::str>(v))
+            throw py::type_error(name + ": expected a sequence of numbers, got " + type_name(v));
+        std::vector<double> out;
+        for (const auto& x : v.cast<py::sequence>()) out.push_back(number_arg(x, name));
+        return out;
+    }
 }
 
-engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t index) {
+engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t index,
+                                const std::vector<engine::CampaignAlgorithm>& algorithms, const engine::Budget& budget,
+                                std::optional<std::int64_t> evals_per_dim) {
     const std::string where = "problems[" + std::to_string(index) + "]";
-    for (const auto& [k, v] : d)
-        require(problem_keys.count(py::str(k).cast<std::string>()) != 0, where,
-                "unknown key '" + py::str(k).cast<std::string>() + "'");
+    for (const auto& [k, v] : d) {
+        if (!py::isinstance<py::str>(k)) throw py::type_error(where + ": keys must be str, got " + type_name(k));
+        require(problem_keys.count(k.cast<std::string>()) != 0, where, "unknown key '" + k.cast<std::string>() + "'");
+    }
     engine::CampaignProblem p;
-    const auto id = get<std::string>(d, "id");
-    require(id && !id->empty(), where, "needs an id");
+    const auto id = get<std::string>(d, "id", where);
+    require(id && !id->empty(), where, "needs an id (a non-empty str)");
     p.id = *id;
     const int kinds =
         int(d.contains("problem")) + int(d.contains("grid") || d.contains("map")) + int(d.contains("function"));
     require(kinds == 1, where, "give exactly one of problem (a registered name), grid (a map) or function");
     require(!d.contains("f_opt") || d.contains("function"), where,
             "f_opt is for a function (registered problems know their own)");
+    // A size is checked with every algorithm's run before anything of that size is built.
+    const auto check_size = [&](const engine::ProblemSpec& spec, std::int64_t dimension) {
+        engine::Budget b = budget;
+        if (evals_per_dim) {
+            if (static_cast<double>(*evals_per_dim) * static_cast<double>(dimension) > 1e15)
+                return;  // prepare() says so
+            b.evaluations = *evals_per_dim * dimension;
+        }
+        for (const auto& a : algorithms) {
+            try {
+                engine::check_before_building(a.spec, spec, dimension, b);
+            } catch (const InputError& e) {
+                throw InputError(where, "algorithm '" + a.id + "' on problem '" + p.id + "': " + e.what());
+            }
+        }
+    };
     if (d.contains("problem")) {
-        const auto dim = get<std::int64_t>(d, "dim");
+        const auto dim = get<std::int64_t>(d, "dim", where);
         require(dim.has_value(), where, "problem '" + p.id + "' needs dim");
-        p.spec = engine::ContinuousSpec{d["problem"].cast<std::string>(), *dim, get<std::int64_t>(d, "instance")};
+        const auto name = get<std::string>(d, "problem", where);
+        require(name.has_value(), where, "problem: expected a registered problem's name, got None");
+        const engine::ContinuousSpec spec{*name, *dim, get<std::int64_t>(d, "instance", where)};
+        check_size(spec, *dim);
+        p.spec = spec;
     } else if (d.contains("function")) {
         const py::object fn = d["function"];
-        if (!PyCallable_Check(fn.ptr())) throw py::type_error(where + ": function must be callable");
+        if (!PyCallable_Check(fn.ptr()))
+            throw py::type_error(where + ": function: expected a callable, got " + type_name(fn));
         require(d.contains("bounds"), where, "a function needs bounds=(lower, upper)");
-        auto [lower, upper] = parse_bounds(d["bounds"], get<std::int64_t>(d, "dim"));
-        auto spec = callback_spec(fn, get<bool>(d, "vectorized").value_or(false), std::move(lower), std::move(upper),
-                                  c.errors, p.id);
+        engine::CallbackSpec box;
+        box.name = p.id;
+        auto [lower, upper] =
+            parse_bounds(d["bounds"], get<std::int64_t>(d, "dim", where), [&](std::int64_t n) { check_size(box, n); });
+        auto spec = callback_spec(fn, get<bool>(d, "vectorized", where).value_or(false), std::move(lower),
+                                  std::move(upper), c.errors, p.id);
         if (d.contains("f_opt") && !d["f_opt"].is_none()) {
             const py::object v = d["f_opt"];
             if (PyBool_Check(v.ptr()) || (!py::isinstance<py::float_>(v) && !py::isinstance<py::int_>(v)))
@@ -74,21 +121,20 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
     } else {
         engine::GridSpec g;
         const py::object map = d.contains("grid") ? d["grid"] : d["map"];
-        if (py::isinstance<py::str>(map)) {
-            p.map_file = map.cast<std::string>();
-            p.inflate = get<std::int64_t>(d, "inflate").value_or(0);
-        } else {
+        if (py::isinstance<Grid>(map)) {
             // A pride.Grid (its map is shared as it is; inflate it with Grid.inflated).
             require(!d.contains("inflate"), where, "inflate a Grid with grid.inflated(r)");
-            if (!py::isinstance<Grid>(map))
-                throw py::type_error(where + ": grid must be a map file's path or a pride.Grid");
             g.map = map.cast<const Grid&>().map;
+        } else {
+            if (!py::isinstance<py::str>(map) && !py::isinstance(map, py::module_::import("os").attr("PathLike")))
+                throw py::type_error(where + ": grid: expected a map file's path or a pride.Grid, got " +
+                                     type_name(map));
+            p.map_file = path_arg(map, where + ": grid");
+            p.inflate = get<std::int64_t>(d, "inflate", where).value_or(0);
         }
         auto cell = [&](const char* key) {
             require(d.contains(key), where, std::string("a grid problem needs ") + key + "=(x, y)");
-            const auto v = d[key].cast<std::vector<int>>();
-            require(v.size() == 2, where, std::string(key) + " must be (x, y)");
-            return grid::Cell{v[0], v[1]};
+            return grid_cell(d[key], where + ": " + key);
         };
         g.start = cell("start");
         g.goal = cell("goal");
@@ -99,13 +145,13 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
         } else {
             require(!d.contains("step_cost"), where, "step_cost: only with an objective that is a function");
         }
-        g.encoding = get<std::string>(d, "encoding").value_or(g.encoding);
-        g.connector = get<std::string>(d, "connector").value_or(g.connector);
-        g.init = get<std::string>(d, "init").value_or(g.init);
-        g.waypoints = get<std::int64_t>(d, "waypoints").value_or(g.waypoints);
-        g.weights = get<std::vector<double>>(d, "weights").value_or(g.weights);
-        g.lambda = get<double>(d, "lambda");
-        g.corner_cutting = get<bool>(d, "corner_cutting").value_or(false);
+        g.encoding = get<std::string>(d, "encoding", where).value_or(g.encoding);
+        g.connector = get<std::string>(d, "connector", where).value_or(g.connector);
+        g.init = get<std::string>(d, "init", where).value_or(g.init);
+        g.waypoints = get<std::int64_t>(d, "waypoints", where).value_or(g.waypoints);
+        g.weights = get<std::vector<double>>(d, "weights", where).value_or(g.weights);
+        g.lambda = get<double>(d, "lambda", where);
+        g.corner_cutting = get<bool>(d, "corner_cutting", where).value_or(false);
         p.spec = std::move(g);
     }
     return p;
@@ -118,18 +164,27 @@ engine::CampaignAlgorithm algorithm(const py::handle& item, std::size_t index) {
         a.id = a.spec.name = item.cast<std::string>();
         return a;
     }
-    if (!py::isinstance<py::dict>(item)) throw py::type_error(where + ": expected an algorithm name or a dict");
+    if (!py::isinstance<py::dict>(item))
+        throw py::type_error(where + ": expected an algorithm name or a dict, got " + type_name(item));
     py::dict d = item.cast<py::dict>();
-    const auto algo = get<std::string>(d, "algo");
+    const auto algo = get<std::string>(d, "algo", where);
     require(algo.has_value(), where, "needs algo (a registered algorithm's name)");
     a.spec.name = *algo;
-    a.id = get<std::string>(d, "id").value_or(*algo);
+    a.id = get<std::string>(d, "id", where).value_or(*algo);
+    require(!a.id.empty(), where, "id must not be empty");
     py::dict params;
     for (const auto& [k, v] : d) {
-        const auto key = py::str(k).cast<std::string>();
+        if (!py::isinstance<py::str>(k)) throw py::type_error(where + ": keys must be str, got " + type_name(k));
+        const auto key = k.cast<std::string>();
         if (key == "id" || key == "algo") continue;
         if (key == "params") {
-            for (const auto& [pk, pv] : v.cast<py::dict>()) params[pk] = pv;
+            if (!py::isinstance<py::dict>(v))
+                throw py::type_error(where + ": params: expected a dict, got " + type_name(v));
+            for (const auto& [pk, pv] : v.cast<py::dict>()) {
+                if (!py::isinstance<py::str>(pk))
+                    throw py::type_error(where + ": params: keys must be str, got " + type_name(pk));
+                params[pk] = pv;
+            }
         } else {
             params[k] = v;
         }
@@ -149,11 +204,21 @@ std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seed
     require(evals || evals_per_dim || iters, "campaign",
             "give evals, evals_per_dim or iters (the budget of every run)");
     require(!(evals && evals_per_dim), "evals_per_dim", "give evals or evals_per_dim, not both");
+    // The budget before the problems, whose sizes are checked with their runs under it.
+    const auto count = [](const char* name, std::optional<std::int64_t> v, std::int64_t lo) {
+        require(!v || (*v >= lo && *v <= engine::max_budget), name,
+                fmt::format("must be an integer in [{}, {}], got {}", lo, engine::max_budget, v.value_or(0)));
+    };
+    count("evals", evals, 1);
+    count("iters", iters, 0);
     require(!evals_per_dim || (*evals_per_dim >= 1 && *evals_per_dim <= engine::max_budget), "evals_per_dim",
             "must be in [1, 1000000000000000], got " + std::to_string(evals_per_dim.value_or(0)));
     require(!(target && precision), "precision", "give target (an absolute value) or precision, not both");
     require(!precision || (std::isfinite(*precision) && *precision > 0), "precision",
             "must be a finite number > 0 (a target f_opt + precision)");
+    // As the campaign file's 'target' (campaign_toml.cpp): a report threshold that is a number.
+    require(!target || std::isfinite(*target), "target",
+            "must be a finite number, got " + fmt::format("{}", target.value_or(0.0)));
     k.name = name;
     k.seeds = seeds;
     k.budget.evaluations = evals;
@@ -163,34 +228,49 @@ std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seed
     k.target_precision = precision;
     require(py::len(problems) > 0, "problems", "a campaign needs at least one problem");
     require(py::len(algorithms) > 0, "algorithms", "a campaign needs at least one algorithm");
+    // The algorithms first: each function's and problem's size is checked with their runs.
     std::size_t i = 0;
-    for (const auto& p : problems) {
-        if (!py::isinstance<py::dict>(p)) throw py::type_error("problems[" + std::to_string(i) + "]: expected a dict");
-        k.problems.push_back(problem(p.cast<py::dict>(), *c, i++));
-    }
-    i = 0;
     for (const auto& a : algorithms) k.algorithms.push_back(algorithm(a, i++));
+    i = 0;
+    for (const auto& p : problems) {
+        if (!py::isinstance<py::dict>(p))
+            throw py::type_error("problems[" + std::to_string(i) + "]: expected a dict, got " + type_name(p));
+        k.problems.push_back(problem(p.cast<py::dict>(), *c, i++, k.algorithms, k.budget, evals_per_dim));
+    }
+    k.budget.stop = UserError::flag(c->errors);
     engine::prepare(k);
     return c;
 }
 
-std::shared_ptr<PyCampaign> from_file(const std::string& path) {
+std::shared_ptr<PyCampaign> from_file(const py::object& path) {
+    const std::string file = path_arg(path, "path");
     auto c = std::make_shared<PyCampaign>();
-    py::gil_scoped_release release;
-    c->campaign = engine::read_campaign(path);
+    {
+        py::gil_scoped_release release;
+        c->campaign = engine::read_campaign(file);
+    }
+    c->campaign.budget.stop = UserError::flag(c->errors);
     return c;
 }
 
-py::dict run(PyCampaign& c, const std::string& store, std::int64_t jobs) {
+py::dict run(PyCampaign& c, const py::object& store_path, const py::object& jobs_arg) {
+    const std::string store = path_arg(store_path, "store");
+    const std::int64_t jobs = integer_arg(jobs_arg, "jobs");
+    c.errors->reset();
+    // Stopping (Ctrl-C, the interpreter's exit) goes through the campaign's own path: the storing
+    // thread commits the runs that finished and drops the claims of the running ones; only then
+    // are these stopped (Budget::stop, and Python functions not called again), so that a run cut
+    // short is never stored.
+    std::atomic<int> signal{0};
+    const auto errors = c.errors;
+    const engine::Stop stop{&signal, [errors](const engine::Interrupted&) { errors->stopped.store(true); }};
     engine::BenchSummary s;
-    {
+    try {
         // Runs of Python functions take the GIL for each call: threads never run Python at once.
-        py::gil_scoped_release release;
-        try {
-            s = engine::run_campaign(c.campaign, store, jobs);
-        } catch (...) {
-            c.errors->rethrow_or(std::current_exception());
-        }
+        s = Call::current().run([&] { return engine::run_campaign(c.campaign, store, jobs, {}, stop); },
+                                [&signal] { signal.store(SIGINT); }, true);
+    } catch (...) {
+        c.errors->rethrow_or(std::current_exception());
     }
     return py::dict(py::arg("stored") = s.stored, py::arg("already") = s.already, py::arg("total") = s.total);
 }
@@ -199,7 +279,8 @@ py::object optional_number(const std::optional<double>& v) {
     return v ? py::object(py::float_(*v)) : py::object(py::none());
 }
 
-py::dict read_store(const std::string& path) {
+py::dict read_store(const py::object& store) {
+    const std::string path = path_arg(store, "path");
     report::CampaignStore s;
     {
         py::gil_scoped_release release;
@@ -317,14 +398,14 @@ void bind_campaign(py::module_& m) {
             for (const auto& a : c.campaign.algorithms) ids.push_back(a.id);
             return ids;
         });
-    m.def("campaign_from_data", &from_data, py::arg("name"), py::arg("seeds"), py::arg("evals"),
+    m.def("campaign_from_data", &from_data, py::call_guard<Call>(), py::arg("name"), py::arg("seeds"), py::arg("evals"),
           py::arg("evals_per_dim"), py::arg("iters"), py::arg("target"), py::arg("precision"), py::arg("problems"),
           py::arg("algorithms"));
-    m.def("campaign_from_file", &from_file, py::arg("path"));
-    m.def("campaign_run", &run, py::arg("campaign"), py::arg("store"), py::arg("jobs"));
-    m.def("read_store", &read_store, py::arg("path"));
-    m.def("report", &report_data, py::arg("paths"), py::arg("raw") = false);
-    m.def("report_html", &report_html, py::arg("path"), py::arg("dir"), py::arg("raw") = false);
+    m.def("campaign_from_file", &from_file, py::call_guard<Call>(), py::arg("path"));
+    m.def("campaign_run", &run, py::call_guard<Call>(), py::arg("campaign"), py::arg("store"), py::arg("jobs"));
+    m.def("read_store", &read_store, py::call_guard<Call>(), py::arg("path"));
+    m.def("report", &report_data, py::call_guard<Call>(), py::arg("paths"), py::arg("raw") = false);
+    m.def("report_html", &report_html, py::call_guard<Call>(), py::arg("path"), py::arg("dir"), py::arg("raw") = false);
 }
 
 }  // namespace pride::python

@@ -6,11 +6,14 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "engine/run.hpp"
@@ -27,12 +30,38 @@ struct Grid {
     std::shared_ptr<const grid::GridMap> map;
 };
 
+/// Thrown by a Python callback of a run stopped from outside (Ctrl-C, the interpreter's exit)
+/// instead of calling Python again; the call then raises why it was stopped.
+struct Stopped {};
+
+/// Raised (as SystemExit, which ends a thread silently) by a call that the interpreter's exit
+/// stopped, or that a thread other than the main one begins once the exit has begun.
+struct Exiting {};
+
 /// The first exception a user function (or observer) raised in a run. NLopt turns an exception
 /// thrown through it into its own error, so the run's caller rethrows this one instead: an
-/// exception raised in user code propagates unchanged.
+/// exception raised in user code propagates unchanged. It also carries the flag that stops the
+/// runs of a call from outside.
 struct UserError {
     std::mutex mutex;
     std::exception_ptr first;
+    // Set to stop the call's runs: they read it once per iteration (Budget::stop), its Python
+    // callbacks before each call (they throw Stopped instead of calling).
+    std::atomic<bool> stopped{false};
+
+    /// The stop flag as Budget::stop takes it (it keeps this object alive).
+    static std::shared_ptr<const std::atomic<bool>> flag(const std::shared_ptr<UserError>& e) {
+        return {e, &e->stopped};
+    }
+    void check_stopped() const {
+        if (stopped.load(std::memory_order_relaxed)) throw Stopped{};
+    }
+    /// Ready for another call (a campaign is run again after an interruption).
+    void reset() {
+        const std::lock_guard lock(mutex);
+        first = nullptr;
+        stopped.store(false);
+    }
     void remember(std::exception_ptr e) {
         const std::lock_guard lock(mutex);
         if (!first) first = std::move(e);
@@ -46,6 +75,71 @@ struct UserError {
         std::rethrow_exception(saved ? saved : e);
     }
 };
+
+/// A call of the module from Python: the guard of every binding (py::call_guard<Call>), made and
+/// destroyed with the GIL held. The calls in progress are listed, so that
+///  - Ctrl-C on the main thread stops the C++ work of the call it interrupts (run()), and
+///  - the interpreter's exit (an atexit hook) stops the calls in progress on other threads and
+///    waits until they have returned: a thread that takes the GIL once finalisation has begun is
+///    ended by a forced unwinding, which C++ frames (noexcept destructors, catch (...)) turn into
+///    std::terminate. A call begun on another thread once the exit has begun raises SystemExit.
+class Call {
+  public:
+    Call();
+    ~Call();
+    Call(const Call&) = delete;
+    Call& operator=(const Call&) = delete;
+
+    /// The innermost call on this thread.
+    static Call& current();
+
+    /// Runs `work` with the GIL released, stopped from outside by `stop` (called with the GIL
+    /// held; it sets flags the work reads). On the main thread with `poll` (work that calls no
+    /// Python on this thread; Python runs signal handlers on its main thread only, between
+    /// bytecodes), Ctrl-C stops the work and its KeyboardInterrupt is raised once the work has
+    /// ended, whatever it returned: with `flag` (what `stop` sets) and Python's default SIGINT
+    /// handler, a signal handler in front of Python's sets `flag`; otherwise the work runs on a
+    /// helper thread while this one runs Python's handlers every 20 ms, and an exception one
+    /// raises calls `stop`. A call the exit stopped raises SystemExit.
+    template <class F>
+    auto run(F&& work, const std::function<void()>& stop, bool poll, std::atomic<bool>* flag = nullptr)
+        -> decltype(work()) {
+        std::optional<decltype(work())> out;
+        run_work([&] { out.emplace(work()); }, stop, poll, flag);
+        return std::move(*out);
+    }
+
+  private:
+    friend void stop_calls_at_exit();
+    void run_work(const std::function<void()>& work, const std::function<void()>& stop, bool poll,
+                  std::atomic<bool>* flag);
+
+    std::thread::id thread_;
+    Call* outer_;                 // the call this one is made from, on the same thread
+    std::function<void()> stop_;  // while run() works
+    std::exception_ptr reason_;   // why it was stopped: KeyboardInterrupt, Exiting
+};
+
+/// The module's atexit hook (Call).
+void stop_calls_at_exit();
+
+/// True on the interpreter's main thread (where signal handlers run).
+bool on_main_thread();
+
+/// Arguments taken as Python objects and checked here, so that a wrong type is a one-line
+/// TypeError naming the argument ("NAME: expected an integer, got str"), never pybind11's
+/// multi-line list of signatures nor its "Unable to cast" RuntimeError.
+std::string type_name(const py::handle& o);
+/// An integer (Python or numpy; bool refused) in the int64 range (else ValueError).
+std::int64_t integer_arg(const py::handle& o, const std::string& name);
+/// A real number (Python or numpy; bool refused); not checked for being finite.
+double number_arg(const py::handle& o, const std::string& name);
+/// A str.
+std::string text_arg(const py::handle& o, const std::string& name);
+/// A file's path: a str or an os.PathLike giving one.
+std::string path_arg(const py::handle& o, const std::string& name);
+/// True or False (Python or numpy bool).
+bool flag_arg(const py::handle& o, const std::string& name);
 
 /// Keyword arguments `**params` as the engine's ParamValues: numbers and bools only.
 /// The keyword parameters of algorithm `algo`: numbers, or names for its choice parameters.
@@ -64,12 +158,19 @@ py::array numeric_array(const py::object& o, const std::string& what);
 /// numeric_array(o) as a C-contiguous array of doubles.
 py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const py::object& o, const std::string& what);
 
-/// (lower, upper) from Python: sequences or scalars (broadcast to `dim`).
+/// (lower, upper) from Python: sequences or scalars (broadcast to `dim`); `check_size` gets the
+/// box's dimension before its coordinates are allocated.
 std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::object& bounds,
-                                                                 std::optional<std::int64_t> dim);
+                                                                 std::optional<std::int64_t> dim,
+                                                                 const std::function<void(std::int64_t)>& check_size);
+
+/// A check_size for parse_bounds: engine::check_before_building for `algorithm` under `budget`
+/// on a box named `name` (the references must outlive it).
+std::function<void(std::int64_t)> box_check(const engine::AlgorithmSpec& algorithm, const std::string& name,
+                                            const engine::Budget& budget);
 
 /// An observer from a Python callable fn(iteration, evaluations, best_f, population, fitness):
-/// population an (n, dim) and fitness an (n,) read-only view, valid during the call; returning
+/// population an (n, dim) and fitness an (n,) read-only copy, the observer's to keep; returning
 /// False stops the run.
 engine::IterationObserver observer(const py::object& fn, const std::shared_ptr<UserError>& errors);
 
@@ -77,10 +178,8 @@ engine::IterationObserver observer(const py::object& fn, const std::shared_ptr<U
 engine::Budget budget(std::optional<std::int64_t> evals, std::optional<std::int64_t> iters,
                       std::optional<double> target, std::optional<double> wall_ms);
 
-/// A seed: an integer >= 0 (ValueError "seed: ..." as the command line says it).
-std::uint64_t checked_seed(std::int64_t seed);
-
-/// engine::run with the GIL released (taken again by user functions) and user errors rethrown.
+/// engine::run with the GIL released (taken again by user functions), stopped by Ctrl-C and the
+/// interpreter's exit (Call::run), and user errors rethrown.
 engine::RunResult run_released(const engine::AlgorithmSpec& algorithm, const engine::Problem& problem,
                                const engine::Budget& budget, std::uint64_t seed, const py::object& callback,
                                const std::shared_ptr<UserError>& errors);
@@ -90,6 +189,9 @@ py::dict result_dict(const engine::RunResult& r);
 
 py::array_t<double> vector_array(const std::vector<double>& v);
 py::array_t<int> path_array(const grid::Path& path);
+
+/// A cell (x, y) of integers; `where` names it in messages ("start", "problems[0]: goal").
+grid::Cell grid_cell(const py::handle& o, const std::string& where);
 
 /// A grid problem's objective from Python: a name, or a function of the path's cells (an (n, 2)
 /// int array) with an optional step_cost(previous, direction) for the exact optimum. `where`

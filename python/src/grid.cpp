@@ -16,41 +16,48 @@ namespace pride::python {
 namespace {
 
 Grid grid_from_array(const py::object& array) {
-    const py::array raw = numeric_array(array, "grid");  // sizes checked before any copy
+    const py::array raw = numeric_array(array, "array");  // sizes checked before any copy
     if (raw.ndim() != 2)
-        throw InputError("grid", "expected a 2-D array of 0 (free) and 1 (blocked), rows top first, got " +
-                                     std::to_string(raw.ndim()) + " dimensions");
+        throw InputError("array", "expected a 2-D array of 0 (free) and 1 (blocked), rows top first, got " +
+                                      std::to_string(raw.ndim()) + " dimensions");
     const auto height = raw.shape(0), width = raw.shape(1);
-    require(width >= 1 && height >= 1, "grid", "a map needs at least one row and one column");
-    require(width <= 1'000'000 && height <= 1'000'000 && width * height <= 100'000'000, "grid",
+    require(width >= 1 && height >= 1, "array", "a map needs at least one row and one column");
+    require(width <= 1'000'000 && height <= 1'000'000 && width * height <= 100'000'000, "array",
             fmt::format("a {} x {} map is larger than 10^8 cells", width, height));
-    const auto a = real_array(raw, "grid");
     std::vector<std::uint8_t> blocked(static_cast<std::size_t>(width * height));
-    const double* v = a.data();
-    for (py::ssize_t i = 0; i < width * height; ++i) {
-        require(v[i] == 0.0 || v[i] == 1.0, "grid",
-                fmt::format("cell ({},{}) is {}; expected 0 (free) or 1 (blocked)", i % width, i / width, v[i]));
-        blocked[static_cast<std::size_t>(i)] = v[i] == 1.0;
+    // As doubles a block of rows at a time (about 2^20 cells): a map of 10^8 cells is not
+    // copied whole into 800 MB of doubles.
+    const py::ssize_t rows = std::max<py::ssize_t>(1, (py::ssize_t{1} << 20) / width);
+    for (py::ssize_t y0 = 0; y0 < height; y0 += rows) {
+        const py::ssize_t y1 = std::min(height, y0 + rows);
+        const auto a = real_array(raw[py::slice(y0, y1, 1)], "array");
+        const double* v = a.data();
+        for (py::ssize_t k = 0; k < (y1 - y0) * width; ++k) {
+            const py::ssize_t i = y0 * width + k;
+            require(v[k] == 0.0 || v[k] == 1.0, "array",
+                    fmt::format("cell ({},{}) is {}; expected 0 (free) or 1 (blocked)", i % width, i / width, v[k]));
+            blocked[static_cast<std::size_t>(i)] = v[k] == 1.0;
+        }
     }
     return {std::make_shared<const grid::GridMap>(static_cast<int>(width), static_cast<int>(height), std::move(blocked),
                                                   "array")};
 }
 
-grid::Cell cell(const py::object& o, const char* where) {
+}  // namespace
+
+grid::Cell grid_cell(const py::handle& o, const std::string& where) {
     if (!py::isinstance<py::sequence>(o) || py::isinstance<py::str>(o) || py::len(o) != 2)
-        throw py::type_error(std::string(where) + ": expected (x, y)");
+        throw py::type_error(where + ": expected (x, y), got " + type_name(o));
     const py::sequence s = o.cast<py::sequence>();
     auto coordinate = [&](const py::object& c) {
         if (!py::isinstance(c, py::module_::import("numbers").attr("Integral")) || PyBool_Check(c.ptr()))
-            throw py::type_error(std::string(where) + ": expected integer coordinates (x, y)");
-        const auto v = c.cast<long long>();
+            throw py::type_error(where + ": expected integer coordinates (x, y), got " + type_name(c));
+        const auto v = integer_arg(c, where);
         require(v > -1'000'000'000 && v < 1'000'000'000, where, "coordinate out of range");
         return static_cast<int>(v);
     };
     return {coordinate(s[0]), coordinate(s[1])};
 }
-
-}  // namespace
 
 /// A Python objective on paths: fn(cells), cells an (n, 2) array of int (x, y) that the function
 /// may keep (each call gets its own), returning one number; with step_cost(previous, direction)
@@ -72,7 +79,9 @@ std::shared_ptr<const engine::UserPathObjective> user_objective(const py::object
     };
     user->value = [value, errors, number](const grid::Path& path) -> double {
         py::gil_scoped_acquire gil;
+        errors->check_stopped();
         try {
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
             return number((*value)(path_array(path)), "objective");
         } catch (...) {
             errors->remember(std::current_exception());
@@ -84,6 +93,7 @@ std::shared_ptr<const engine::UserPathObjective> user_objective(const py::object
         auto step = std::make_shared<py::object>(step_cost);
         user->step_cost = [step, errors, number](int previous, int direction) -> double {
             py::gil_scoped_acquire gil;
+            errors->check_stopped();
             try {
                 return number((*step)(previous, direction), "step_cost");
             } catch (...) {
@@ -115,7 +125,7 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
               const py::object& objective, const py::object& step_cost, const std::string& encoding,
               const std::string& connector, const std::string& init, std::int64_t waypoints,
               const std::optional<std::vector<double>>& weights, std::optional<double> lambda, bool corner_cutting,
-              bool oracle, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::int64_t seed,
+              bool oracle, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::uint64_t seed,
               const py::object& callback, const py::dict& params) {
     engine::GridSpec spec;
     auto errors = std::make_shared<UserError>();
@@ -130,8 +140,8 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     spec.oracle = oracle;
     engine::check_grid_names(spec);
     spec.map = g.map;
-    spec.start = cell(start, "start");
-    spec.goal = cell(goal, "goal");
+    spec.start = grid_cell(start, "start");
+    spec.goal = grid_cell(goal, "goal");
     const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     std::optional<engine::Problem> problem;
     {
@@ -140,8 +150,7 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     }
     const engine::Budget b = budget(evals, iters, std::nullopt, std::nullopt);
     engine::check(algorithm, *problem, b);
-    const auto s = checked_seed(seed);
-    const engine::RunResult r = run_released(algorithm, *problem, b, s, callback, errors);
+    const engine::RunResult r = run_released(algorithm, *problem, b, seed, callback, errors);
     py::dict d = result_dict(r);
     d["objective"] = spec.objective;
     d["seed"] = seed;
@@ -161,7 +170,7 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
 py::list pareto(const Grid& g, const py::object& start, const py::object& goal, const std::string& objectives,
                 bool corner_cutting) {
     const grid::Criteria criteria = grid::parse_criteria(objectives);
-    const grid::Cell s = cell(start, "start"), e = cell(goal, "goal");
+    const grid::Cell s = grid_cell(start, "start"), e = grid_cell(goal, "goal");
     // The checks of `pride pareto`: inside, free, the goal reachable, and memory.
     const grid::GridProblem<grid::LengthObjective> checked(g.map, s, e, {}, corner_cutting);
     grid::ParetoOptions options;
@@ -200,15 +209,19 @@ void bind_grid(py::module_& m) {
         .def(py::init(&grid_from_array), py::arg("array"))
         .def_static(
             "load",
-            [](const std::string& path, std::int64_t inflate) {
+            [](const py::object& path, const py::object& inflate) {
+                const std::string file = path_arg(path, "path");
+                const std::int64_t r = integer_arg(inflate, "inflate");
                 py::gil_scoped_release release;
-                return Grid{engine::load_map(path, inflate)};
+                return Grid{engine::load_map(file, r)};
             },
-            py::arg("path"), py::arg("inflate") = 0)
+            py::call_guard<Call>(), py::arg("path"), py::arg("inflate") = 0)
         .def(
             "inflated",
-            [](const Grid& g, std::int64_t r) {
-                require(r >= 0 && r <= 1000, "inflate", "must be in [0, 1000], got " + std::to_string(r));
+            [](const Grid& g, const py::object& radius) {
+                const std::int64_t r = integer_arg(radius, "radius");
+                require(r >= 0 && r <= 1000, "radius",
+                        "must be in [0, 1000] (cells to inflate obstacles by), got " + std::to_string(r));
                 return Grid{std::make_shared<const grid::GridMap>(g.map->inflated(static_cast<int>(r)))};
             },
             py::arg("radius"))
@@ -218,16 +231,19 @@ void bind_grid(py::module_& m) {
         .def("to_array", &grid_array)
         .def(
             "free",
-            [](const Grid& g, int x, int y) {
-                return g.map->free({x, y});
+            [](const Grid& g, const py::object& x, const py::object& y) {
+                const std::int64_t cx = integer_arg(x, "x"), cy = integer_arg(y, "y");
+                // Outside the map is not free (and beyond int, outside).
+                return cx >= 0 && cy >= 0 && cx < g.map->width() && cy < g.map->height() &&
+                       g.map->free({static_cast<int>(cx), static_cast<int>(cy)});
             },
             py::arg("x"), py::arg("y"));
-    m.def("plan", &plan, py::arg("grid"), py::arg("start"), py::arg("goal"), py::arg("algo"), py::arg("objective"),
-          py::arg("step_cost"), py::arg("encoding"), py::arg("connector"), py::arg("init"), py::arg("waypoints"),
-          py::arg("weights"), py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"), py::arg("evals"),
-          py::arg("iters"), py::arg("seed"), py::arg("callback"), py::arg("params"));
-    m.def("pareto", &pareto, py::arg("grid"), py::arg("start"), py::arg("goal"), py::arg("objectives"),
-          py::arg("corner_cutting"));
+    m.def("plan", &plan, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"), py::arg("algo"),
+          py::arg("objective"), py::arg("step_cost"), py::arg("encoding"), py::arg("connector"), py::arg("init"),
+          py::arg("waypoints"), py::arg("weights"), py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"),
+          py::arg("evals"), py::arg("iters"), py::arg("seed"), py::arg("callback"), py::arg("params"));
+    m.def("pareto", &pareto, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
+          py::arg("objectives"), py::arg("corner_cutting"));
 }
 
 }  // namespace pride::python

@@ -2,6 +2,7 @@
 // these functions in the Python-facing API; everything here takes plain values.
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <map>
 
 #include "common.hpp"
@@ -114,10 +115,12 @@ py::dict grid_names() {
     return d;
 }
 
-/// The problem of minimize(): a registered name (dim, instance) or a Python callable on bounds.
+/// The problem of minimize(): a registered name (dim, instance) or a Python callable on bounds,
+/// its size checked with the run's (`algorithm` under `budget`) before anything is built.
 engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::int64_t> dim, const py::object& bounds,
                                  std::optional<std::int64_t> instance, bool vectorized,
-                                 const std::shared_ptr<UserError>& errors) {
+                                 const std::shared_ptr<UserError>& errors, const engine::AlgorithmSpec& algorithm,
+                                 const engine::Budget& budget) {
     if (py::isinstance<py::str>(problem)) {
         const auto name = problem.cast<std::string>();
         require(bounds.is_none(), "bounds",
@@ -128,29 +131,31 @@ engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::i
                 dim = static_cast<std::int64_t>(item->entry.fixed_dim);
         if (!dim && !continuous::catalog().find(name)) throw InputError("problem", "unknown problem '" + name + "'");
         require(dim.has_value(), "dim", "give the dimension of problem '" + name + "'");
-        return engine::ContinuousSpec{name, *dim, instance};
+        const engine::ContinuousSpec spec{name, *dim, instance};
+        engine::check_before_building(algorithm, spec, *dim, budget);
+        return spec;
     }
     if (!PyCallable_Check(problem.ptr()))
         throw py::type_error("problem: expected a registered problem's name (str) or a callable, got " +
                              py::str(py::type::of(problem).attr("__name__")).cast<std::string>());
     require(!instance, "instance", "only for registered problems");
     require(!bounds.is_none(), "bounds", "a Python function needs bounds=(lower, upper)");
-    auto [lower, upper] = parse_bounds(bounds, dim);
+    auto [lower, upper] = parse_bounds(bounds, dim, box_check(algorithm, "bounds", budget));
     return callback_spec(problem, vectorized, std::move(lower), std::move(upper), errors);
 }
 
 py::dict minimize(const std::string& algo, const py::object& problem, std::optional<std::int64_t> dim,
                   const py::object& bounds, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters,
-                  std::optional<double> target, std::optional<double> wall_ms, std::int64_t seed,
+                  std::optional<double> target, std::optional<double> wall_ms, std::uint64_t seed,
                   std::optional<std::int64_t> instance, const py::object& callback, bool vectorized,
                   const py::dict& params) {
     auto errors = std::make_shared<UserError>();
     const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
-    std::optional<engine::Problem> prepared;
-    prepared.emplace(problem_spec(problem, dim, bounds, instance, vectorized, errors));
     const engine::Budget b = budget(evals, iters, target, wall_ms);
+    std::optional<engine::Problem> prepared;
+    prepared.emplace(problem_spec(problem, dim, bounds, instance, vectorized, errors, algorithm, b));
     engine::check(algorithm, *prepared, b);
-    const engine::RunResult r = run_released(algorithm, *prepared, b, checked_seed(seed), callback, errors);
+    const engine::RunResult r = run_released(algorithm, *prepared, b, seed, callback, errors);
     py::dict d = result_dict(r);
     d["problem"] = prepared->name();
     d["instance"] = prepared->instance();
@@ -162,29 +167,37 @@ class Optimizer {
   public:
     Optimizer(const std::string& algo, const py::object& bounds, std::optional<std::int64_t> dim,
               std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::optional<double> target,
-              std::optional<double> wall_ms, std::int64_t seed, const py::dict& params) {
+              std::optional<double> wall_ms, std::uint64_t seed, const py::dict& params) {
         require(!bounds.is_none(), "bounds", "the Optimizer needs bounds=(lower, upper)");
-        auto [lower, upper] = parse_bounds(bounds, dim);
         engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
         const auto b = budget(evals, iters, target, wall_ms);
-        const auto s = checked_seed(seed);
+        auto [lower, upper] = parse_bounds(bounds, dim, box_check(algorithm, "bounds", b));
         py::gil_scoped_release release;
-        run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, s);
+        run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed);
     }
     ~Optimizer() { close(); }
 
     void close() {
         if (!run_) return;
+        // Joining its thread needs no Python, so the GIL is kept off a thread that could not take
+        // it back once the interpreter's exit has begun (a daemon thread dropping an optimizer).
+        if (!on_main_thread()) {
+            run_.reset();
+            return;
+        }
         py::gil_scoped_release release;
         run_.reset();
     }
 
     py::array_t<double> ask() {
         const Matrix* points = nullptr;
+        bool ended = false;
         {
             py::gil_scoped_release release;
-            points = &live().ask();
+            points = &live().ask();  // rethrows what ended a run that failed
+            ended = points->cols() == 0 && live().done();
         }
+        require(!ended, "ask", "the run has ended (done is true): nothing more to ask; its result is in result");
         const auto n = static_cast<py::ssize_t>(points->cols()), dim = static_cast<py::ssize_t>(points->rows());
         py::array_t<double> out({n, dim});
         // A column of the engine's matrix is a row of X: one copy of the whole block.
@@ -193,7 +206,7 @@ class Optimizer {
     }
 
     void tell(const py::object& values) {
-        const auto v = real_array(values, "tell");
+        const auto v = real_array(values, "tell: values");
         require(v.ndim() == 1 || (v.ndim() == 2 && v.shape(1) == 1), "tell",
                 "expected a 1-D array of values, one per point asked for, got an array with " +
                     std::to_string(v.ndim()) + " dimensions");
@@ -227,6 +240,51 @@ class Optimizer {
 };
 
 }  // namespace
+
+std::string type_name(const py::handle& o) {
+    return py::str(py::type::of(o).attr("__name__")).cast<std::string>();
+}
+
+std::int64_t integer_arg(const py::handle& o, const std::string& name) {
+    if (PyBool_Check(o.ptr()) || !py::isinstance(o, py::module_::import("numbers").attr("Integral")))
+        throw py::type_error(name + ": expected an integer, got " + type_name(o));
+    const py::int_ i = py::reinterpret_steal<py::int_>(PyNumber_Index(o.ptr()));
+    if (!i) throw py::error_already_set();
+    int overflow = 0;
+    const long long v = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
+    if (overflow != 0)
+        throw py::value_error(name + ": " + py::str(py::handle(i)).cast<std::string>() +
+                              " is out of range (64-bit integers)");
+    return v;
+}
+
+double number_arg(const py::handle& o, const std::string& name) {
+    if (PyBool_Check(o.ptr()) || !py::isinstance(o, py::module_::import("numbers").attr("Real")))
+        throw py::type_error(name + ": expected a number, got " + type_name(o));
+    const double v = PyFloat_AsDouble(o.ptr());
+    if (v == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+    return v;
+}
+
+std::string text_arg(const py::handle& o, const std::string& name) {
+    if (!py::isinstance<py::str>(o)) throw py::type_error(name + ": expected a str, got " + type_name(o));
+    return o.cast<std::string>();
+}
+
+std::string path_arg(const py::handle& o, const std::string& name) {
+    if (py::isinstance<py::str>(o)) return o.cast<std::string>();
+    if (py::isinstance(o, py::module_::import("os").attr("PathLike"))) {
+        const py::object p = py::module_::import("os").attr("fspath")(o);
+        if (py::isinstance<py::str>(p)) return p.cast<std::string>();
+    }
+    throw py::type_error(name + ": expected a path (str or os.PathLike), got " + type_name(o));
+}
+
+bool flag_arg(const py::handle& o, const std::string& name) {
+    if (PyBool_Check(o.ptr())) return o.ptr() == Py_True;
+    if (py::isinstance(o, py::module_::import("numpy").attr("bool_"))) return o.cast<bool>();
+    throw py::type_error(name + ": expected True or False, got " + type_name(o));
+}
 
 engine::ParamValues param_values(const std::string& algo, const py::dict& params) {
     engine::ParamValues v;
@@ -286,30 +344,43 @@ py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const 
     return f;
 }
 
-std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::object& bounds,
-                                                                 std::optional<std::int64_t> dim) {
-    if (!py::isinstance<py::sequence>(bounds) || py::len(bounds) != 2)
-        throw py::type_error("bounds: expected (lower, upper)");
-    const py::sequence pair = bounds.cast<py::sequence>();
-    auto side = [&](const py::object& o, const char* which) {
-        const auto a = real_array(o, std::string("bounds: ") + which);
-        require(a.ndim() <= 1, "bounds", std::string(which) + " must be a number or a 1-D sequence");
-        std::vector<double> v(a.data(), a.data() + a.size());
-        if (a.ndim() == 0) {
-            require(dim.has_value(), "dim", std::string("give dim when ") + which + " is one number");
-            count_in("dim", *dim, 1);
-            v.assign(static_cast<std::size_t>(*dim), v.front());
-        }
-        return v;
+std::function<void(std::int64_t)> box_check(const engine::AlgorithmSpec& algorithm, const std::string& name,
+                                            const engine::Budget& budget) {
+    return [&algorithm, name, &budget](std::int64_t dimension) {
+        engine::CallbackSpec box;
+        box.name = name;
+        engine::check_before_building(algorithm, box, dimension, budget);
     };
-    auto lower = side(pair[0], "lower"), upper = side(pair[1], "upper");
+}
+
+std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::object& bounds,
+                                                                 std::optional<std::int64_t> dim,
+                                                                 const std::function<void(std::int64_t)>& check_size) {
+    if (!py::isinstance<py::sequence>(bounds) || py::isinstance<py::str>(bounds) || py::len(bounds) != 2)
+        throw py::type_error("bounds: expected (lower, upper), got " +
+                             py::str(py::type::of(bounds).attr("__name__")).cast<std::string>());
+    const py::sequence pair = bounds.cast<py::sequence>();
+    // The user's numbers as arrays first (as large as what the user holds), the box's size
+    // checked before a number broadcast to dim coordinates is.
+    const auto lower = real_array(pair[0], "bounds: lower"), upper = real_array(pair[1], "bounds: upper");
+    require(lower.ndim() <= 1, "bounds", "lower must be a number or a 1-D sequence");
+    require(upper.ndim() <= 1, "bounds", "upper must be a number or a 1-D sequence");
+    if (lower.ndim() == 0) require(dim.has_value(), "dim", "give dim when lower is one number");
+    if (upper.ndim() == 0) require(dim.has_value(), "dim", "give dim when upper is one number");
     if (dim) {
-        require(lower.size() == static_cast<std::size_t>(*dim), "dim",
-                "is " + std::to_string(*dim) + " but lower has " + std::to_string(lower.size()) + " coordinates");
-        require(upper.size() == static_cast<std::size_t>(*dim), "dim",
-                "is " + std::to_string(*dim) + " but upper has " + std::to_string(upper.size()) + " coordinates");
+        count_in("dim", *dim, 1);
+        for (const auto& [side, a] : {std::pair{"lower", &lower}, std::pair{"upper", &upper}})
+            require(
+                a->ndim() == 0 || a->size() == *dim, "dim",
+                "is " + std::to_string(*dim) + " but " + side + " has " + std::to_string(a->size()) + " coordinates");
     }
-    return {std::move(lower), std::move(upper)};
+    const std::int64_t n = dim ? *dim : static_cast<std::int64_t>(lower.size());
+    if (check_size && n >= 1) check_size(n);  // an empty box is the engine's to refuse
+    const auto coordinates = [n](const py::array_t<double, py::array::c_style | py::array::forcecast>& a) {
+        if (a.ndim() == 0) return std::vector<double>(static_cast<std::size_t>(n), *a.data());
+        return std::vector<double>(a.data(), a.data() + a.size());
+    };
+    return {coordinates(lower), coordinates(upper)};
 }
 
 engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::vector<double> lower,
@@ -325,7 +396,10 @@ engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::v
     if (!vectorized) {
         spec.scalar = [function, errors](std::span<const double> x) -> double {
             py::gil_scoped_acquire gil;
+            errors->check_stopped();
             try {
+                // Ctrl-C reaches the run at this call even when the function runs no bytecode.
+                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
                 py::array_t<double> point(static_cast<py::ssize_t>(x.size()));
                 std::memcpy(point.mutable_data(), x.data(), sizeof(double) * x.size());
                 const py::object value = (*function)(point);
@@ -344,7 +418,9 @@ engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::v
     } else {
         spec.batch = [function, errors](MatrixView points, std::span<double> values) {
             py::gil_scoped_acquire gil;
+            errors->check_stopped();
             try {
+                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
                 const auto n = static_cast<py::ssize_t>(points.cols()), dim = static_cast<py::ssize_t>(points.rows());
                 py::array_t<double> x({n, dim});
                 double* out = x.mutable_data();
@@ -369,16 +445,22 @@ engine::IterationObserver observer(const py::object& fn, const std::shared_ptr<U
     auto function = std::make_shared<py::object>(fn);
     return [function, errors](const IterationView& v) -> bool {
         py::gil_scoped_acquire gil;
+        errors->check_stopped();
         try {
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
             const auto n = static_cast<py::ssize_t>(v.population.cols()),
                        dim = static_cast<py::ssize_t>(v.population.rows());
-            // Views of the run's own memory (no copy), read-only, valid during the call.
-            const py::none owner;
-            py::array_t<double> population(
-                {n, dim}, {static_cast<py::ssize_t>(sizeof(double)) * dim, static_cast<py::ssize_t>(sizeof(double))},
-                v.population.data(), owner);
-            py::array_t<double> fitness({static_cast<py::ssize_t>(v.fitness.size())},
-                                        {static_cast<py::ssize_t>(sizeof(double))}, v.fitness.data(), owner);
+            // Copies the observer may keep: the run's own memory is reused or freed after the
+            // call, and numpy cannot revoke a view of it. A column of the engine's matrix is a
+            // row here, so each is one copy of a contiguous block. Read-only: writing them would
+            // not change the run.
+            py::array_t<double> population({n, dim});
+            py::array_t<double> fitness(static_cast<py::ssize_t>(v.fitness.size()));
+            if (n > 0 && dim > 0)
+                std::memcpy(population.mutable_data(), v.population.data(),
+                            sizeof(double) * static_cast<std::size_t>(n * dim));
+            if (!v.fitness.empty())
+                std::memcpy(fitness.mutable_data(), v.fitness.data(), sizeof(double) * v.fitness.size());
             population.attr("flags").attr("writeable") = false;
             fitness.attr("flags").attr("writeable") = false;
             const py::object r = (*function)(v.iteration, v.evaluations, v.best_f, population, fitness);
@@ -405,11 +487,6 @@ engine::Budget budget(std::optional<std::int64_t> evals, std::optional<std::int6
     return b;
 }
 
-std::uint64_t checked_seed(std::int64_t seed) {
-    integer_in("seed", seed, 0, "18446744073709551615", seed >= 0);
-    return static_cast<std::uint64_t>(seed);
-}
-
 engine::RunResult run_released(const engine::AlgorithmSpec& algorithm, const engine::Problem& problem,
                                const engine::Budget& budget, std::uint64_t seed, const py::object& callback,
                                const std::shared_ptr<UserError>& errors) {
@@ -418,10 +495,20 @@ engine::RunResult run_released(const engine::AlgorithmSpec& algorithm, const eng
         if (!PyCallable_Check(callback.ptr())) throw py::type_error("callback: expected a callable");
         watch = observer(callback, errors);
     }
-    py::gil_scoped_release release;
+    engine::Budget stoppable = budget;
+    stoppable.stop = UserError::flag(errors);
+    // Python's functions run on this thread (where Ctrl-C raises in them); a run that calls none
+    // runs beside it, which then takes Ctrl-C (Call::run).
+    const auto* grid = std::get_if<engine::GridSpec>(&problem.spec());
+    const bool calls_python =
+        watch || std::holds_alternative<engine::CallbackSpec>(problem.spec()) || (grid && grid->path_objective);
     try {
-        return watch ? engine::run(algorithm, problem, budget, seed, *watch)
-                     : engine::run(algorithm, problem, budget, seed);
+        return Call::current().run(
+            [&] {
+                return watch ? engine::run(algorithm, problem, stoppable, seed, *watch)
+                             : engine::run(algorithm, problem, stoppable, seed);
+            },
+            [errors] { errors->stopped.store(true); }, !calls_python, &errors->stopped);
     } catch (...) {
         errors->rethrow_or(std::current_exception());
     }
@@ -447,7 +534,8 @@ py::dict result_dict(const engine::RunResult& r) {
     py::dict d;
     d["algo"] = r.algorithm;
     d["best_f"] = r.best_f;
-    d["best_x"] = vector_array(r.best_x);
+    // Nothing finite found: no best point (the command line writes null), best_f stays +inf.
+    d["best_x"] = std::isfinite(r.best_f) ? py::object(vector_array(r.best_x)) : py::object(py::none());
     d["evaluations"] = r.evaluations;
     d["iterations"] = r.iterations;
     d["wall_ms"] = r.wall_ms;
@@ -483,26 +571,32 @@ PYBIND11_MODULE(_pride, m) {
             if (p) std::rethrow_exception(p);
         } catch (const pride::InputError& e) {
             PyErr_SetString(PyExc_ValueError, python_message(e).c_str());
+        } catch (const Exiting&) {
+            PyErr_SetString(PyExc_SystemExit, "pride: the interpreter is exiting; the call was stopped");
+        } catch (const Stopped&) {  // a callback's, always replaced by why its run was stopped
+            PyErr_SetString(PyExc_RuntimeError, "pride: the run was stopped");
         }
     });
+    on_main_thread();  // learns which thread is the main one, while the import holds the GIL
+    py::module_::import("atexit").attr("register")(py::cpp_function(&stop_calls_at_exit));
     m.def("algorithms", &algorithms);
     m.def("problems", &problems);
     m.def("grid_names", &grid_names);
-    m.def("minimize", &minimize, py::arg("algo"), py::arg("problem"), py::arg("dim"), py::arg("bounds"),
-          py::arg("evals"), py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"),
+    m.def("minimize", &minimize, py::call_guard<Call>(), py::arg("algo"), py::arg("problem"), py::arg("dim"),
+          py::arg("bounds"), py::arg("evals"), py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"),
           py::arg("instance"), py::arg("callback"), py::arg("vectorized"), py::arg("params"));
     py::class_<Optimizer>(m, "Optimizer")
         .def(py::init<const std::string&, const py::object&, std::optional<std::int64_t>, std::optional<std::int64_t>,
-                      std::optional<std::int64_t>, std::optional<double>, std::optional<double>, std::int64_t,
+                      std::optional<std::int64_t>, std::optional<double>, std::optional<double>, std::uint64_t,
                       const py::dict&>(),
-             py::arg("algo"), py::arg("bounds"), py::arg("dim"), py::arg("evals"), py::arg("iters"), py::arg("target"),
-             py::arg("wall_ms"), py::arg("seed"), py::arg("params"))
-        .def("ask", &Optimizer::ask)
-        .def("tell", &Optimizer::tell)
-        .def("done", &Optimizer::done)
-        .def("result", &Optimizer::result)
+             py::call_guard<Call>(), py::arg("algo"), py::arg("bounds"), py::arg("dim"), py::arg("evals"),
+             py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"), py::arg("params"))
+        .def("ask", &Optimizer::ask, py::call_guard<Call>())
+        .def("tell", &Optimizer::tell, py::call_guard<Call>())
+        .def("done", &Optimizer::done, py::call_guard<Call>())
+        .def("result", &Optimizer::result, py::call_guard<Call>())
         .def("dimension", &Optimizer::dimension)
-        .def("close", &Optimizer::close);
+        .def("close", &Optimizer::close, py::call_guard<Call>());
     bind_grid(m);
     bind_roughset(m);
     bind_campaign(m);

@@ -81,14 +81,14 @@ void bind_roughset(py::module_& m) {
         [](const std::vector<std::string>& columns, const py::object& rows, bool labels) {
             return analysis_dict(table(columns, rows, labels));
         },
-        py::arg("columns"), py::arg("rows"), py::arg("labels"));
+        py::call_guard<Call>(), py::arg("columns"), py::arg("rows"), py::arg("labels"));
     m.def(
         "roughset_csv",
         [](const std::string& path) {
             const DecisionTable t = roughset::read_csv(path);
             return analysis_dict(t);
         },
-        py::arg("path"));
+        py::call_guard<Call>(), py::arg("path"));
 }
 
 }  // namespace pride::python

@@ -44,7 +44,7 @@ def test_grid_from_array_and_inflation():
     h = g.inflated(1)
     assert h.to_array().sum() > ARRAY.sum() and not h.free(0, 0)
     assert np.array_equal(pride.Grid(ARRAY.astype(bool)).to_array(), ARRAY)
-    with pytest.raises(ValueError, match=r"grid: cell \(2,0\) is 2"):
+    with pytest.raises(ValueError, match=r"array: cell \(2,0\) is 2"):
         pride.Grid(np.array([[0, 0, 2]]))
     with pytest.raises(ValueError, match="2-D"):
         pride.Grid(np.zeros(3))

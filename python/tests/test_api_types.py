@@ -1,0 +1,226 @@
+"""Every argument of the public API, and every key of a campaign's entries, given a value of the
+wrong type: a one-line TypeError or ValueError that names the argument (or key), never
+pybind11's multi-line "incompatible function arguments", its "Unable to cast" RuntimeError, or a
+message such as "'NoneType' object is not iterable" that names nothing.
+
+The table below says what each argument is; the walk checks that it lists every parameter each
+public function has, so that a new argument cannot go untested."""
+import inspect
+import re
+
+import numpy as np
+import pytest
+
+import pride
+
+GRID = pride.Grid(np.zeros((4, 4), dtype=int))
+
+
+def f(x):
+    return float(x @ x)
+
+
+def length(cells):
+    return float(len(cells))
+
+
+# Wrong values for each kind of argument. `None` is listed only where it is not a valid value.
+INT = ["3", 2.5, object(), [1], True]
+INT_REQUIRED = INT + [None]
+REAL = ["1", object(), [1.0], True]
+TEXT = [5, object(), None, b"pso"]
+FLAG = ["yes", 2, object(), None]
+FLAG_OPTIONAL = ["yes", 2, object()]
+SEED = ["1", 1.5, object(), None, True]
+CALLABLE = [5, "f", object()]
+PATH = [5, object(), None, b"x.sqlite"]
+LIST = [None, 5, "ab", object(), {"a": 1}]
+CELL = [None, 5, "ab", (1.5, 2), (1,), (True, 1)]
+GRID_ARG = [None, np.zeros((3, 3)), "map", 5]
+NUMBERS = [None, "abc", object(), np.array(["a", "b"])]
+WEIGHTS = [5, "ab", ["x", 1, 1], [None, 1, 1]]
+OBJECTIVE = [5, object(), None]
+PROBLEM = [5, None, object()]
+BOUNDS = [5, "ab", None, (None, 1), ("a", 1)]
+TABLE = [None, 5, object()]
+OBJECTIVES = [5, None, [1, 2], object()]
+
+
+def map_file(tmp_path):
+    path = tmp_path / "m.map"
+    path.write_text("0 0 0 0\n" * 4)
+    return str(path)
+
+
+def campaign(**kw):
+    args = dict(seeds=1, evals=10, problems=[{"id": "a", "problem": "sphere", "dim": 2}], algorithms=["pso"])
+    args.update(kw)
+    return pride.Campaign("c", **args)
+
+
+# name -> (call(**overrides), {parameter: wrong values}); `call` passes valid values for the rest.
+def api(tmp_path):
+    mfile = map_file(tmp_path)
+    store = str(tmp_path / "s.sqlite")
+    campaign().run(store)
+    opt = lambda: pride.Optimizer("pso", bounds=(-1, 1), dim=2, evals=20)
+
+    return {
+        "minimize": (lambda **o: pride.minimize(**{"algo": "pso", "problem": f, "bounds": (-1, 1), "dim": 2,
+                                                   "evals": 20, **o}),
+                     dict(algo=TEXT, problem=PROBLEM, dim=INT, bounds=BOUNDS, evals=INT, iters=INT, target=REAL,
+                          wall_ms=REAL, seed=SEED, instance=INT, callback=CALLABLE, vectorized=FLAG)),
+        "Optimizer": (lambda **o: pride.Optimizer(**{"algo": "pso", "bounds": (-1, 1), "dim": 2, "evals": 20, **o}),
+                      dict(algo=TEXT, bounds=BOUNDS, dim=INT, evals=INT, iters=INT, target=REAL, wall_ms=REAL,
+                           seed=SEED)),
+        "Optimizer.tell": (lambda **o: (lambda x: x.tell(**{"values": np.zeros(len(x.ask())), **o}))(opt()),
+                           dict(values=NUMBERS)),
+        "Grid": (lambda **o: pride.Grid(**{"array": np.zeros((2, 2)), **o}), dict(array=[None, "abc", object()])),
+        "Grid.load": (lambda **o: pride.Grid.load(**{"path": mfile, "inflate": 0, **o}), dict(path=PATH, inflate=INT_REQUIRED)),
+        "Grid.inflated": (lambda **o: GRID.inflated(**{"radius": 1, **o}), dict(radius=INT_REQUIRED)),
+        "Grid.free": (lambda **o: GRID.free(**{"x": 1, "y": 1, **o}), dict(x=INT_REQUIRED, y=INT_REQUIRED)),
+        "plan": (lambda **o: pride.plan(**{"grid": GRID, "start": (0, 0), "goal": (3, 3), "iters": 2, **o}),
+                 dict(grid=GRID_ARG, start=CELL, goal=CELL, algo=TEXT, objective=OBJECTIVE, step_cost=CALLABLE,
+                      encoding=TEXT, connector=TEXT, init=TEXT, waypoints=INT_REQUIRED, weights=WEIGHTS,
+                      lambda_=REAL, corner_cutting=FLAG, oracle=FLAG, evals=INT, iters=INT, seed=SEED,
+                      callback=CALLABLE)),
+        "astar": (lambda **o: pride.astar(**{"grid": GRID, "start": (0, 0), "goal": (3, 3), **o}),
+                  dict(grid=GRID_ARG, start=CELL, goal=CELL, objective=OBJECTIVE, corner_cutting=FLAG)),
+        "exact": (lambda **o: pride.exact(**{"grid": GRID, "start": (0, 0), "goal": (3, 3), **o}),
+                  dict(grid=GRID_ARG, start=CELL, goal=CELL, objective=OBJECTIVE, corner_cutting=FLAG)),
+        "pareto": (lambda **o: pride.pareto(**{"grid": GRID, "start": (0, 0), "goal": (3, 3), **o}),
+                   dict(grid=GRID_ARG, start=CELL, goal=CELL, objectives=OBJECTIVES, corner_cutting=FLAG)),
+        "roughset": (lambda **o: pride.roughset(**{"table": [[1, 0], [0, 1]], **o}),
+                     dict(table=TABLE, columns=[5, "ab", object()])),
+        "Campaign": (lambda **o: campaign(**o) if "name" not in o else pride.Campaign(
+                         o.pop("name"), seeds=1, evals=10, problems=[{"id": "a", "problem": "sphere", "dim": 2}],
+                         algorithms=["pso"], **o),
+                     dict(name=TEXT, seeds=INT_REQUIRED, problems=LIST, algorithms=LIST, evals=INT,
+                          evals_per_dim=INT, iters=INT, target=REAL, precision=REAL)),
+        "Campaign.load": (lambda **o: pride.Campaign.load(**o), dict(path=PATH)),
+        "Campaign.run": (lambda **o: campaign().run(**{"store": store, **o}), dict(store=PATH, jobs=INT_REQUIRED)),
+        "read_store": (lambda **o: pride.read_store(**{"path": store, **o}), dict(path=PATH, dataframe=FLAG_OPTIONAL)),
+        "report": (lambda **o: pride.report(**{"path": store, "dataframe": False, **o}),
+                   dict(path=PATH + [[5]], raw=FLAG, dataframe=FLAG_OPTIONAL, html=[5, object(), b"dir"])),
+        "Result": (lambda **o: pride.Result(**o), dict(fields=[None, 5, "ab", [1, 2]])),
+    }
+
+
+def parameters(fn):
+    """The parameters a public function takes by name (not **params), from its signature, or for
+    a pybind11 method from its docstring's first line."""
+    try:
+        sig = inspect.signature(fn)
+        return {n for n, p in sig.parameters.items()
+                if p.kind not in (p.VAR_KEYWORD, p.VAR_POSITIONAL) and n not in ("self", "cls")}
+    except (TypeError, ValueError):
+        head = fn.__doc__.splitlines()[0]
+        return {a.split(":")[0].strip() for a in head[head.index("(") + 1:head.rindex(")")].split(",")
+                if a.strip() and not a.strip().startswith("self")}
+
+
+def public_functions():
+    """Every public function and method of pride, by the name the table uses."""
+    out = {}
+    for name in pride.__all__:
+        obj = getattr(pride, name)
+        if inspect.isclass(obj):
+            out[name] = obj.__init__ if obj is not pride.Grid else None
+            for m, member in vars(obj).items():
+                if not m.startswith("_") and callable(member) and not isinstance(member, property):
+                    out[f"{name}.{m}"] = getattr(obj, m)
+            if obj is pride.Grid:
+                for m in ("load", "inflated", "free", "to_array"):
+                    out[f"Grid.{m}"] = getattr(obj, m)
+        else:
+            out[name] = obj
+    return out
+
+
+def assert_named_error(call, name, value):
+    try:
+        call()
+    except (TypeError, ValueError) as e:
+        message = str(e)
+        assert "\n" not in message, f"{name}={value!r}: a message of several lines: {message!r}"
+        assert "incompatible function arguments" not in message and "Unable to cast" not in message, message
+        assert re.search(rf"(^|\W){re.escape(name)}(\W|$)", message), f"{name}={value!r}: {message!r} names nothing"
+    except Exception as e:  # noqa: BLE001 (RuntimeError "Unable to cast", or anything else)
+        pytest.fail(f"{name}={value!r}: {type(e).__name__}: {e}")
+    else:
+        pytest.fail(f"{name}={value!r}: accepted")
+
+
+def test_the_table_covers_every_public_function_and_parameter(tmp_path):
+    table = api(tmp_path)
+    # Functions without parameters (or properties) need no row.
+    no_parameters = {"algorithms", "problems", "grid_names", "Result.as_dict", "Optimizer.ask", "Optimizer.close",
+                     "Grid.to_array"}
+    for name, fn in public_functions().items():
+        if name in no_parameters or fn is None and name == "Grid":
+            continue
+        assert name in table, f"{name} has no row in the table of argument types"
+        assert parameters(fn) == set(table[name][1]), name
+    assert parameters(pride.Grid.load) == {"path", "inflate"}
+    assert parameters(pride.Grid.free) == {"x", "y"}
+
+
+def test_every_argument_of_a_wrong_type_is_named(tmp_path):
+    table = api(tmp_path)
+    for fn_name, (call, kinds) in table.items():
+        if fn_name not in ("Campaign.load", "Result"):
+            call()  # the valid call works
+        for name, wrong in kinds.items():
+            for value in wrong:
+                assert_named_error(lambda: call(**{name: value}), name, value)
+
+
+def test_algorithm_parameters_of_a_wrong_type_are_named():
+    for value in ("many", None, [40], object()):
+        assert_named_error(lambda: pride.minimize("pso", "sphere", dim=2, evals=20, pop=value), "pop", value)
+        assert_named_error(lambda: pride.Optimizer("pso", bounds=(-1, 1), dim=2, evals=20, pop=value), "pop", value)
+        assert_named_error(lambda: pride.plan(GRID, (0, 0), (3, 3), iters=2, pop=value), "pop", value)
+
+
+# Campaign entries: a valid entry of each kind, and wrong values for each of its keys.
+PROBLEM_KEYS = [
+    ({"id": "a", "problem": "sphere", "dim": 2},
+     dict(id=[5, None, ""], problem=[5, None], dim=["2", 2.5, None], instance=["1", 1.5])),
+    ({"id": "f", "function": f, "bounds": (-1, 1), "dim": 2},
+     dict(function=[5, "f"], bounds=[5, "ab", None, ("a", 1)], vectorized=["yes", 1], f_opt=["0", True],
+          dim=["2", 2.5])),
+    ({"id": "g", "grid": GRID, "start": (0, 0), "goal": (3, 3)},
+     dict(grid=[5, None, np.zeros((2, 2))], start=[5, "ab", (1.5, 2), None], goal=[5, (1,)], objective=[5, object()],
+          encoding=[5], connector=[5], init=[5], waypoints=["3", 2.5], weights=[5, "ab", ["x", 1, 1]],
+          lambda_=["1"], corner_cutting=["yes", 1])),
+    ({"id": "u", "grid": GRID, "start": (0, 0), "goal": (3, 3), "objective": length}, dict(step_cost=[5, "c"])),
+]
+
+
+def test_every_key_of_a_campaign_entry_of_a_wrong_type_is_named(tmp_path):
+    mfile = map_file(tmp_path)
+    for valid, keys in PROBLEM_KEYS + [({"id": "m", "grid": mfile, "start": (0, 0), "goal": (3, 3)},
+                                        dict(inflate=["1", 1.5], grid=[b"m.map"]))]:
+        campaign(problems=[valid])  # the valid entry is taken
+        for key, wrong in keys.items():
+            name = "lambda" if key == "lambda_" else key
+            for value in wrong:
+                assert_named_error(lambda: campaign(problems=[{**valid, name: value}]), name, value)
+    assert_named_error(lambda: campaign(problems=[{"id": "a", "problem": "sphere", "dim": 2, 5: 1}]), "problems[0]", 5)
+    assert_named_error(lambda: campaign(problems=[5]), "problems[0]", 5)
+    for value in (5, None, ["pso"]):
+        assert_named_error(lambda: campaign(algorithms=[value]), "algorithms[0]", value)
+    for key, wrong in dict(id=[5, ""], algo=[5, None], params=[5, "x", {1: 2}], pop=["x", None]).items():
+        for value in wrong:
+            assert_named_error(lambda: campaign(algorithms=[{"algo": "pso", key: value}]),
+                               "algorithms[0]" if key in ("params", "algo") else key, value)
+
+
+def test_nothing_where_a_list_is_expected():
+    for name in ("problems", "algorithms"):
+        with pytest.raises(TypeError, match=f"^{name}: expected a list, got NoneType$"):
+            campaign(**{name: None})
+    with pytest.raises(TypeError, match="^columns: expected a list, got int$"):
+        pride.roughset([[1, 0], [0, 1]], columns=5)
+    with pytest.raises(TypeError, match="^weights: expected a list, got NoneType$|^weights: expected numbers"):
+        pride.plan(GRID, (0, 0), (3, 3), iters=2, objective="weighted", weights=[None, 1, 1])
