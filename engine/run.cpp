@@ -368,13 +368,21 @@ void check_run_memory(const AlgorithmEntry& entry, const Params& params, const P
         if (oracle.bytes > run.bytes) run = oracle;
     }
     parts.push_back(std::move(run));
+    // The run's own part is blamed first when it alone is too much (a default budget grows the
+    // history with the dimension the user chose), then the history (a huge --iters), else the
+    // largest part.
+    std::reverse(parts.begin(), parts.end());
+    const double have = available_memory();
     double total = 0.0;
     const MemoryPart* largest = &parts.front();
-    for (const MemoryPart& part : parts) {
-        total += part.bytes;
-        if (part.bytes > largest->bytes) largest = &part;
-    }
-    const double have = available_memory();
+    for (const MemoryPart& part : parts) total += part.bytes;
+    for (const MemoryPart& part : parts)
+        if (part.bytes > have) {
+            largest = &part;
+            break;
+        } else if (part.bytes > largest->bytes) {
+            largest = &part;
+        }
     require(total <= have, largest->where,
             fmt::format("{} needs about {}{} of memory, more than the {} this machine has", largest->what,
                         format_bytes(largest->bytes),
