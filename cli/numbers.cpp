@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "framework/error.hpp"
+#include "framework/number.hpp"
 
 namespace pride::cli {
 
@@ -19,19 +20,14 @@ std::string_view trim(std::string_view s) {
 }  // namespace
 
 double parse_finite(std::string_view text, const std::string& where) {
-    const std::string_view t = trim(text);
     double v = 0.0;
-    const char* begin = t.data();
-    const char* end = t.data() + t.size();
-    if (!t.empty() && *begin == '+') ++begin;  // from_chars refuses a leading '+'
-    const auto [ptr, ec] = std::from_chars(begin, end, v);
-    require(!t.empty() && ec == std::errc() && ptr == end && std::isfinite(v), where,
-            "'" + std::string(t) + "' is not a finite number");
+    const NumberText read = parse_decimal(text, v);
+    require(read == NumberText::ok, where, number_problem(text, read));
     return v;
 }
 
 void check_integer(std::string_view text, std::int64_t min, std::uint64_t max, const std::string& where) {
-    const std::string_view t = trim(text);
+    const std::string_view t = text;  // no spaces: the grammar of framework/number.hpp
     const std::string range = fmt::format("[{}, {}]", min, max);
     const bool negative = !t.empty() && t.front() == '-';
     const std::string_view digits = !t.empty() && (t.front() == '-' || t.front() == '+') ? t.substr(1) : t;
@@ -57,7 +53,7 @@ std::vector<double> parse_point(std::string_view text, const std::string& where)
         const auto comma = text.find(',', start);
         const std::string_view token = text.substr(start, comma == std::string_view::npos ? text.npos : comma - start);
         require(!trim(token).empty(), where, "coordinate " + std::to_string(k) + " is empty");
-        point.push_back(parse_finite(token, where + " coordinate " + std::to_string(k)));
+        point.push_back(parse_finite(trim(token), where + " coordinate " + std::to_string(k)));
         if (comma == std::string_view::npos) break;
         start = comma + 1;
     }

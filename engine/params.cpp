@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "framework/error.hpp"
+#include "framework/number.hpp"
 
 namespace pride::engine {
 
@@ -111,24 +112,23 @@ void ParamValues::set_from_string(std::string_view assignment) {
             "expected NAME=VALUE");
     const std::string name(assignment.substr(0, eq));
     const std::string text(assignment.substr(eq + 1));
-    std::size_t used = 0;
     double value = 0.0;
-    try {
-        value = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
+    const NumberText read = parse_decimal(text, value);
     // A name (for a choice parameter, which Params checks) starts with a letter; anything else must
-    // be a finite number. inf and nan are no names: they are numbers that are not finite.
+    // be a number (framework/number.hpp's grammar, as every other number). inf and nan are no
+    // names: they are numbers that are not finite.
+    auto not_finite = [](std::string t) {
+        for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return t == "inf" || t == "nan" || t == "infinity";
+    };
     auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
     const bool is_name = !text.empty() && std::isalpha(static_cast<unsigned char>(text[0])) &&
-                         std::all_of(text.begin(), text.end(), name_char) && used == 0;
+                         std::all_of(text.begin(), text.end(), name_char) && !not_finite(text);
     if (is_name) {
         set_name(name, text);
         return;
     }
-    require(used == text.size() && !text.empty() && std::isfinite(value), "parameter " + name,
-            "'" + text + "' is not a finite number");
+    require(read == NumberText::ok, "parameter " + name, number_problem(text, read));
     set(name, value);
 }
 
