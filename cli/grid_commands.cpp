@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/numbers.hpp"
 #include "cli/output.hpp"
+#include "engine/registry.hpp"
 #include "engine/run.hpp"
 #include "engine/scenarios.hpp"
 #include "experiment/html/draw.hpp"
@@ -31,7 +32,19 @@ engine::GridSpec grid_spec(const PathOptions& o) {
     g.encoding = o.encoding;
     g.connector = o.connector;
     g.init = o.init;
-    g.waypoints = o.waypoints;
+    if (o.waypoints) {
+        // A count the run would ignore is refused: only the free encoding has waypoints.
+        const engine::AlgorithmEntry* entry = engine::algorithms().find(o.algo);
+        const std::string encoding =
+            !o.encoding.empty() ? o.encoding : entry && !entry->solve_grid ? entry->native_encoding : "";
+        if (entry || !o.encoding.empty())
+            require(encoding == "free", "--waypoints",
+                    encoding.empty() ? o.algo + " plans on the whole map, it has no waypoints"
+                                     : "only the free encoding has waypoints; this run plans on " + encoding +
+                                           (o.encoding.empty() ? " (" + o.algo + "'s own; --encoding free to use them)"
+                                                               : ""));
+        g.waypoints = *o.waypoints;
+    }
     g.corner_cutting = o.corner_cutting;
     g.oracle = o.oracle;
     if (o.weights) g.weights = parse_point(*o.weights, "--weights");

@@ -28,7 +28,7 @@ struct PathOptions {
     std::uint64_t seed = 1;
     std::int64_t threads = 1;  // evaluation threads (engine::Budget::threads)
     std::int64_t inflate = 0;
-    std::int64_t waypoints = 3;
+    std::optional<std::int64_t> waypoints;  // free only (default 3); named with another encoding: refused
     std::optional<std::string> weights;  // "L,T,A" for the weighted objective
     std::optional<double> lambda;        // for the hswoa objective
     bool corner_cutting = false;

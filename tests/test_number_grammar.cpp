@@ -56,3 +56,20 @@ TEST_CASE("numbers: the command line takes the same spellings everywhere", "[cli
     CHECK(run_pride("eval --problem sphere --x -", " 1 , 2 \n").out == "5\n");
     CHECK(run_pride("eval --problem sphere --x -", "1 0,2\n").status == 2);
 }
+
+TEST_CASE("cli: an option the run would ignore is refused: --waypoints off the free encoding, a one-objective front",
+          "[cli]") {
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string path = "path --map " + map + " --start 0,0 --goal 9,9 --evals 40 ";
+    const auto native = run_pride(path + "--algo pso --waypoints 5");
+    CHECK(native.status == 2);
+    CHECK(native.err == "pride: --waypoints: only the free encoding has waypoints; this run plans on line (pso's "
+                        "own; --encoding free to use them)\n");
+    CHECK(run_pride(path + "--algo ga --encoding chain --waypoints 5").status == 2);
+    CHECK(run_pride(path + "--algo astar --waypoints 5").err ==
+          "pride: --waypoints: astar plans on the whole map, it has no waypoints\n");
+    CHECK(run_pride(path + "--algo pso --encoding free --waypoints 5").status == 0);
+    const auto one = run_pride("pareto --map " + map + " --start 0,0 --goal 9,9 --objectives length");
+    CHECK(one.status == 2);
+    CHECK(one.err.find("a Pareto front needs two or three objectives, got only 'length'") != std::string::npos);
+}

@@ -30,6 +30,9 @@ Criteria parse_criteria(std::string_view list) {
         *slot = true;
         begin = comma + 1;
     }
+    require(static_cast<int>(c.length) + c.turns + c.angle_penalty >= 2, "objectives",
+            "a Pareto front needs two or three objectives, got only '" + std::string(list) +
+                "' (one objective's optimum: pride path --algo exact)");
     return c;
 }
 
