@@ -10,7 +10,7 @@ using pride::NumberText;
 using pride::parse_decimal;
 using pride::test::run_pride;
 
-TEST_CASE("numbers: one decimal grammar, no hex, no spaces, no inf or nan; an underflow rounds", "[cli]") {
+TEST_CASE("numbers: one decimal grammar without hex, inner spaces, inf or nan, where an underflow rounds", "[cli]") {
     double v = -1.0;
     for (const char* good : {"2", "+2", "-2", "2.", ".5", "-.5", "1e3", "1E-3", "+1.5e+2", "0"}) {
         INFO(good);
