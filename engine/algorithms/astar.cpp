@@ -21,6 +21,8 @@ void register_astar(AlgorithmRegistry& registry) {
             },
             target.problem);
     };
+    // Its records (g, parent, stamp: 16 bytes) for every cell of the map.
+    e.memory = [](const Params&, std::size_t cells) { return 16.0 * static_cast<double>(cells); };
     registry.add(std::move(e));
 }
 
