@@ -35,14 +35,15 @@ engine::GridSpec grid_spec(const PathOptions& o) {
     if (o.waypoints) {
         // A count the run would ignore is refused: only the free encoding has waypoints.
         const engine::AlgorithmEntry* entry = engine::algorithms().find(o.algo);
-        const std::string encoding =
-            !o.encoding.empty() ? o.encoding : entry && !entry->solve_grid ? entry->native_encoding : "";
+        const std::string encoding = !o.encoding.empty()           ? o.encoding
+                                     : entry && !entry->solve_grid ? entry->native_encoding
+                                                                   : "";
         if (entry || !o.encoding.empty())
             require(encoding == "free", "--waypoints",
-                    encoding.empty() ? o.algo + " plans on the whole map, it has no waypoints"
-                                     : "only the free encoding has waypoints; this run plans on " + encoding +
-                                           (o.encoding.empty() ? " (" + o.algo + "'s own; --encoding free to use them)"
-                                                               : ""));
+                    encoding.empty()
+                        ? o.algo + " plans on the whole map, it has no waypoints"
+                        : "only the free encoding has waypoints; this run plans on " + encoding +
+                              (o.encoding.empty() ? " (" + o.algo + "'s own; --encoding free to use them)" : ""));
         g.waypoints = *o.waypoints;
     }
     g.corner_cutting = o.corner_cutting;

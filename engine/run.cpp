@@ -346,8 +346,8 @@ void check_run_memory(const AlgorithmEntry& entry, const Params& params, const P
     } else {
         // A chain holds no cell twice (every operator cuts loops), so the map's cells bound its length.
         const std::size_t dimension = p.chain ? static_cast<std::size_t>(cells) + 8 : p.dimension;  // + a vector's own
-        const std::string where = p.chain ? fmt::format("on chains of up to {} cells", dimension)
-                                          : fmt::format("in dimension {}", dimension);
+        const std::string where =
+            p.chain ? fmt::format("on chains of up to {} cells", dimension) : fmt::format("in dimension {}", dimension);
         run.where = entry.name;
         run.what = entry.param("pop") ? fmt::format("a run with population {} {}", params.integer("pop"), where)
                                       : fmt::format("a run {}", where);
@@ -385,11 +385,11 @@ void check_run_memory(const AlgorithmEntry& entry, const Params& params, const P
             largest = &part;
         }
     require(total <= have, largest->where,
-            fmt::format("{} needs about {}{} of memory, more than the {} this machine has", largest->what,
-                        format_bytes(largest->bytes),
-                        largest->bytes < 0.99 * total ? fmt::format(" ({} with the rest of the run)", format_bytes(total))
-                                                      : "",
-                        format_bytes(have)));
+            fmt::format(
+                "{} needs about {}{} of memory, more than the {} this machine has", largest->what,
+                format_bytes(largest->bytes),
+                largest->bytes < 0.99 * total ? fmt::format(" ({} with the rest of the run)", format_bytes(total)) : "",
+                format_bytes(have)));
 }
 
 template <class R>
@@ -822,7 +822,5 @@ std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int6
     if (inflate > 0) loaded = loaded.inflated(static_cast<int>(inflate));
     return std::make_shared<const grid::GridMap>(std::move(loaded));
 }
-
-
 
 }  // namespace pride::engine

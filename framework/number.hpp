@@ -47,7 +47,7 @@ inline NumberText parse_decimal(std::string_view text, double& out) {
         return NumberText::ok;
     }
     return ec == std::errc() && ptr == unsigned_text.data() + unsigned_text.size() ? NumberText::ok
-                                                                                    : NumberText::not_a_number;
+                                                                                   : NumberText::not_a_number;
 }
 
 /// The message for a value parse_decimal refused.

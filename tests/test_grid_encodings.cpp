@@ -34,8 +34,7 @@ int snapped(const GridProblem<CellsObjective>& p, bool rows, int line, double id
 
 }  // namespace
 
-TEST_CASE("line encoding: every gene snaps to the nearest reachable cell of its line, as defined",
-          "[grid][encoding]") {
+TEST_CASE("line encoding: every gene snaps to the nearest reachable cell of its line, as defined", "[grid][encoding]") {
     int lines = 0, ties = 0;
     for (const auto& in : random_instances(4711, 200)) {
         const Cell s = in.start, g = in.goal;

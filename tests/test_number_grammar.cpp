@@ -63,8 +63,9 @@ TEST_CASE("cli: an option the run would ignore is refused: --waypoints off the f
     const std::string path = "path --map " + map + " --start 0,0 --goal 9,9 --evals 40 ";
     const auto native = run_pride(path + "--algo pso --waypoints 5");
     CHECK(native.status == 2);
-    CHECK(native.err == "pride: --waypoints: only the free encoding has waypoints; this run plans on line (pso's "
-                        "own; --encoding free to use them)\n");
+    CHECK(native.err ==
+          "pride: --waypoints: only the free encoding has waypoints; this run plans on line (pso's "
+          "own; --encoding free to use them)\n");
     CHECK(run_pride(path + "--algo ga --encoding chain --waypoints 5").status == 2);
     CHECK(run_pride(path + "--algo astar --waypoints 5").err ==
           "pride: --waypoints: astar plans on the whole map, it has no waypoints\n");

@@ -27,8 +27,8 @@ std::string coordinates(int n) {
 /// stderr.
 pride::test::CliOutput run_limited(long kib, const std::string& args) {
     const std::string err = "/tmp/pride-sizes-" + std::to_string(getpid()) + ".err";
-    const std::string cmd = "ulimit -v " + std::to_string(kib) + "; '" + std::string(PRIDE_EXE) + "' " + args +
-                            " >/dev/null 2>" + err;
+    const std::string cmd =
+        "ulimit -v " + std::to_string(kib) + "; '" + std::string(PRIDE_EXE) + "' " + args + " >/dev/null 2>" + err;
     const int raw = std::system(("sh -c \"" + cmd + "\"").c_str());
     pride::test::CliOutput r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -69,8 +69,9 @@ TEST_CASE("sizes: the exact optimum on a map too large for memory is refused up 
     const auto exact = run_limited(300 * 1024, path + "--algo exact");
     INFO(exact.err);
     CHECK(exact.status == 2);
-    CHECK(exact.err == "pride: exact: the exact optimum on a 1500 x 1500 map needs about 405 MB of memory, more "
-                       "than the 315 MB this machine has\n");
+    CHECK(exact.err ==
+          "pride: exact: the exact optimum on a 1500 x 1500 map needs about 405 MB of memory, more "
+          "than the 315 MB this machine has\n");
     const auto oracle = run_limited(300 * 1024, path + "--algo astar --oracle");
     CHECK(oracle.status == 2);
     CHECK(oracle.err.find("pride: --oracle: the exact optimum on a 1500 x 1500 map") == 0);
