@@ -29,8 +29,8 @@ struct PathOptions {
     std::int64_t threads = 1;  // evaluation threads (engine::Budget::threads)
     std::int64_t inflate = 0;
     std::optional<std::int64_t> waypoints;  // free only (default 3); named with another encoding: refused
-    std::optional<std::string> weights;  // "L,T,A" for the weighted objective
-    std::optional<double> lambda;        // for the hswoa objective
+    std::optional<std::string> weights;     // "L,T,A" for the weighted objective
+    std::optional<double> lambda;           // for the hswoa objective
     bool corner_cutting = false;
     bool oracle = false;
     bool json = false;

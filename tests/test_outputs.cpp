@@ -150,7 +150,8 @@ TEST_CASE("outputs: files appear only at commit, and discarded nothing is left",
     const fs::path out = dir.path() / "new" / "deeper";
     {
         OutputFiles files;
-        CHECK_THROWS_WITH(files.create(out / "a.txt"), Catch::Contains("a.txt: cannot write: No such file or directory"));
+        CHECK_THROWS_WITH(files.create(out / "a.txt"),
+                          Catch::Contains("a.txt: cannot write: No such file or directory"));
         files.make_folder(out / "sub");
         files.write(out / "a.txt", "alpha");
         OutputFiles::File& b = files.create(out / "sub" / "b.txt");
