@@ -19,7 +19,9 @@
 #include "engine/json.hpp"
 #include "experiment/file_name.hpp"
 #include "experiment/store.hpp"
+#include "experiment/store_digest.hpp"
 #include "framework/error.hpp"
+#include "problems/continuous/catalog.hpp"
 
 #ifdef PRIDE_HAVE_MPI
 #include <mpi.h>
@@ -90,6 +92,123 @@ std::string problem_definition(const CampaignProblem& p) {
         return s;
     }
     return "function (a callback: known by its id alone)";
+}
+
+namespace {
+
+std::string map_digest(const grid::GridMap& m) {
+    Sha256 h;
+    h.field("grid map v1");
+    const std::int64_t size[2] = {m.width(), m.height()};
+    h.add(size, sizeof size);
+    unsigned char chunk[4096];
+    std::size_t used = 0;
+    for (std::size_t i = 0; i < m.size(); ++i) {
+        chunk[used++] = m.free_index(i) ? 0 : 1;
+        if (used == sizeof chunk) {
+            h.add(chunk, used);
+            used = 0;
+        }
+    }
+    h.add(chunk, used);
+    return h.hex();
+}
+
+std::string settings_digest(const CampaignProblem& p) {
+    Sha256 h;
+    const auto number = [&](double v) { h.field(json_number(v)); };
+    if (const auto* f = std::get_if<ContinuousSpec>(&p.spec)) {
+        h.field("function v1").field(f->function).field(std::to_string(f->dim));
+        h.field(std::to_string(p.problem ? p.problem->instance() : f->instance.value_or(0)));
+    } else if (const auto* g = std::get_if<GridSpec>(&p.spec)) {
+        h.field("grid v1").field(std::to_string(p.inflate));
+        h.field(fmt::format("{},{} {},{}", g->start.x, g->start.y, g->goal.x, g->goal.y));
+        h.field(g->objective).field(g->encoding).field(g->connector).field(std::to_string(g->waypoints));
+        h.field(g->init).field(g->corner_cutting ? "corner cutting" : "no corner cutting");
+        h.field(std::to_string(g->weights.size()));
+        for (const double w : g->weights) number(w);
+        h.field(g->lambda ? json_number(*g->lambda) : "no lambda");
+        // A Python objective is known only as being one (and whether it has its per-step form).
+        h.field(!g->path_objective             ? "no user objective"
+                : g->path_objective->step_cost ? "a user objective with step costs"
+                                               : "a user objective");
+    } else if (const auto* b = std::get_if<CallbackSpec>(&p.spec)) {
+        h.field("callback v1").field(b->name).field(std::to_string(b->lower.size()));
+        for (const double v : b->lower) number(v);
+        for (const double v : b->upper) number(v);
+        h.field(b->f_opt ? json_number(*b->f_opt) : "no f_opt");
+    }
+    return h.hex();
+}
+
+/// The part of a digest after "LABEL sha256:", or empty.
+std::string digest_part(const std::string& digest, const std::string& label) {
+    const std::string key = label + " sha256:";
+    const auto at = digest.find(key);
+    return at == std::string::npos ? std::string() : digest.substr(at + key.size(), 64);
+}
+
+std::string compose_digest(const std::string& map_hex, const CampaignProblem& p) {
+    return (map_hex.empty() ? std::string() : "map sha256:" + map_hex + "; ") + "settings sha256:" + settings_digest(p);
+}
+
+}  // namespace
+
+std::string problem_digest(const CampaignProblem& p) {
+    const auto* g = std::get_if<GridSpec>(&p.spec);
+    return compose_digest(g && g->map ? map_digest(*g->map) : std::string(), p);
+}
+
+std::string digest_difference(const std::string& stored, const std::string& now) {
+    const auto shown = [](const std::string& hex) { return hex.empty() ? std::string("none") : hex.substr(0, 16); };
+    for (const char* part : {"map", "settings"}) {
+        const std::string a = digest_part(stored, part), b = digest_part(now, part);
+        if (a != b)
+            return fmt::format("has {} than the stored one{} ({}; sha256 {}... stored, {}... now)",
+                               part == std::string("map") ? "another map" : "other settings",
+                               part == std::string("map") ? "" : "s",
+                               part == std::string("map") ? "its cells or size differ: the map was edited, or another "
+                                                            "map given"
+                                                          : "its start, goal, objective, weights, bounds or another "
+                                                            "setting differ",
+                               shown(a), shown(b));
+    }
+    return "differs from the stored one (" + stored + " stored, " + now + " now)";
+}
+
+std::string name_problem(const std::string& name) {
+    if (name.empty()) return "must not be empty";
+    for (std::size_t i = 0; i < name.size(); ++i) {
+        const auto u = static_cast<unsigned char>(name[i]);
+        // C0 controls and DEL, and C1 controls (U+0080-U+009F, two bytes in UTF-8): a terminal
+        // acts on them (ESC starts a control sequence) rather than showing them.
+        const bool c1 = u == 0xc2 && i + 1 < name.size() && static_cast<unsigned char>(name[i + 1]) >= 0x80 &&
+                        static_cast<unsigned char>(name[i + 1]) <= 0x9f;
+        if (u == 0) return fmt::format("must not contain a NUL character (U+0000 at byte {})", i + 1);
+        if (u < 0x20 || u == 0x7f || c1)
+            return fmt::format("must not contain control characters (U+{:04X} at byte {})",
+                               c1 ? static_cast<unsigned char>(name[i + 1]) : u, i + 1);
+    }
+    return "";
+}
+
+double problem_memory(const ProblemSpec& spec) {
+    constexpr double built = 16e3;
+    if (const auto* f = std::get_if<ContinuousSpec>(&spec)) {
+        const auto* item = continuous::catalog().find(f->function);
+        const double n = std::max(0.0, static_cast<double>(f->dim));
+        const bool rotated = item && f->instance.value_or(continuous::default_instance(item->entry)) != 0 &&
+                             item->entry.instances != continuous::Instances::none;
+        return built + 8.0 * (8.0 * n + (rotated ? 2.0 * n * n : 0.0));
+    }
+    return built;
+}
+
+double run_list_memory(std::size_t problem_id_length, std::size_t algorithm_id_length) {
+    // A task (24 bytes), its number (8), its key (72) and the key's node in the set of stored
+    // keys (72 + 48), each key's ids on the heap beyond 15 characters (with malloc's overhead).
+    const auto heap = [](std::size_t n) { return n > 15 ? 2.0 * (static_cast<double>(n) + 32.0) : 0.0; };
+    return 224.0 + heap(problem_id_length) + heap(algorithm_id_length);
 }
 
 std::string algorithm_definition(const CampaignAlgorithm& a) {
@@ -683,14 +802,37 @@ void prepare(Campaign& c) {
             "[budget]: give evaluations or evaluations_per_dim, not both");
     require(!c.problems.empty(), file, "no [[problem]]");
     require(!c.algorithms.empty(), file, "no [[algorithm]]");
-    // The list of runs is made before any starts: a task and a stored key per run.
+    require(c.problems.size() <= max_campaign_problems, file,
+            fmt::format("{} problems; a campaign has at most {}", c.problems.size(), max_campaign_problems));
+    // Every problem is built, and the list of runs made (a task and a stored key per run), before
+    // any run starts: both are checked here, before either is (issue 25: 128 bytes a run was less
+    // than a key with its two ids takes, and the problems' own 12 kB each were not counted).
+    std::size_t problem_id = 0, algorithm_id = 0;
+    double built = 0.0;
+    for (const auto& p : c.problems) {
+        problem_id = std::max(problem_id, p.id.size());
+        // A problem too large alone is refused as it is built, by the engine's check naming its
+        // dimension; the sum is of the others.
+        if (const double bytes = problem_memory(p.spec); bytes <= available_memory()) built += bytes;
+    }
+    for (const auto& a : c.algorithms) algorithm_id = std::max(algorithm_id, a.id.size());
     const double runs = static_cast<double>(c.problems.size()) * static_cast<double>(c.algorithms.size()) *
                         static_cast<double>(c.seeds);
-    require(runs * 128.0 <= available_memory(), file,
-            fmt::format("{} runs ({} problems x {} algorithms x {} seeds) need about {} of memory to list, more "
-                        "than the {} this machine has",
-                        runs, c.problems.size(), c.algorithms.size(), c.seeds, format_bytes(runs * 128.0),
-                        format_bytes(available_memory())));
+    const double listed = runs * run_list_memory(problem_id, algorithm_id);
+    require(built + listed <= available_memory(), file,
+            fmt::format("{} problems and their {} runs ({} algorithms x {} seeds each) need about {} of memory "
+                        "({} for the problems, {} to list the runs), more than the {} this machine has",
+                        c.problems.size(), runs, c.algorithms.size(), c.seeds, format_bytes(built + listed),
+                        format_bytes(built), format_bytes(listed), format_bytes(available_memory())));
+    // Names as the store keeps and the summaries print them (issue 25): one root for the campaign
+    // files and Python; the name itself is not shown (it may hold the very character refused).
+    if (const std::string why = name_problem(c.name); !why.empty()) throw InputError(file, "name " + why);
+    for (const auto& p : c.problems)
+        if (const std::string why = name_problem(p.id); !why.empty())
+            throw InputError(where_of(c, p.line, "problem"), "problem id " + why);
+    for (const auto& a : c.algorithms)
+        if (const std::string why = name_problem(a.id); !why.empty())
+            throw InputError(where_of(c, a.line, "algorithm"), "algorithm id " + why);
     std::set<std::string> ids;
     for (const auto& p : c.problems)
         if (!ids.insert(p.id).second)
@@ -751,6 +893,18 @@ void prepare(Campaign& c) {
         } catch (const InputError& e) {
             throw InputError(where, "problem '" + p.id + "': " + e.what());
         }
+    }
+    // Each map hashed once, whatever number of problems use it.
+    std::map<const grid::GridMap*, std::string> map_digests;
+    for (auto& p : c.problems) {
+        const auto* g = std::get_if<GridSpec>(&p.spec);
+        if (!g || !g->map) {
+            p.digest = problem_digest(p);
+            continue;
+        }
+        auto& m = map_digests[g->map.get()];
+        if (m.empty()) m = map_digest(*g->map);
+        p.digest = compose_digest(m, p);
     }
     for (const auto& a : c.algorithms) {
         const std::string where = where_of(c, a.line, "algorithm '" + a.id + "'");

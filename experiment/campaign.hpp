@@ -28,6 +28,7 @@ struct CampaignProblem {
     std::shared_ptr<const Problem> problem;  // built by prepare()
     // The evaluations of each run when the campaign budgets per dimension (set by prepare()).
     std::optional<std::int64_t> evaluations;
+    std::string digest;  // problem_digest(), set by prepare()
 };
 
 /// COCO's 51 target precisions: a continuous problem with a known optimum f_opt records in every
@@ -74,6 +75,40 @@ struct Campaign {
 std::string budget_definition(const Campaign& c);
 std::string problem_definition(const CampaignProblem& p);
 std::string algorithm_definition(const CampaignAlgorithm& a);
+
+/// What a store records of a prepared problem beside its definition, so that a resume or a merge
+/// on another problem under the same id is refused: "map sha256:HEX; settings sha256:HEX" for a
+/// grid (the map's size and cells as the runs see them, inflated; not its path, so a map moved
+/// or given in code is the same map), "settings sha256:HEX" otherwise. The settings are every
+/// field that defines the problem: a grid's start, goal, objective, weights, lambda, inflate,
+/// corner cutting, encoding, connector, init and waypoints; a function's name, dimension and
+/// instance; a Python function's id, bounds and f_opt. Python code (a function, a path objective,
+/// a step cost) cannot be identified: only that there is one.
+std::string problem_digest(const CampaignProblem& p);
+
+/// What differs between two problem digests, for messages: "has another map than the stored
+/// one (...)" or "has other settings than the stored ones (...)".
+std::string digest_difference(const std::string& stored, const std::string& now);
+
+/// A name as a store keeps it (the campaign's name, problem and algorithm ids): an empty one, a
+/// NUL (SQLite would cut the name there) or another control character (printed raw on a
+/// terminal) gives what is wrong, else an empty string.
+std::string name_problem(const std::string& name);
+
+/// At most this many problems in one campaign (COCO's largest suites have a few thousand): a short
+/// instance list or suite must not start hours of building (each problem takes about 12 kB and
+/// 80 us to build before its rotation, issue 25: a 6.9 MB file asked for a million).
+inline constexpr std::size_t max_campaign_problems = 100'000;
+
+/// The memory a problem takes once prepare() has built it, estimated from its spec before any of
+/// it is: a built problem's tables (about 11 kB measured; 16 kB counted with its CampaignProblem
+/// and id), a continuous instance's vectors and rotation (8 dim and 2 dim^2 doubles); a grid's
+/// map is counted once per file by load_map.
+double problem_memory(const ProblemSpec& spec);
+
+/// The memory one run of a campaign takes in the lists made before any starts (its task, its key
+/// with both ids, its place in the set of stored keys), for ids of these lengths.
+double run_list_memory(std::size_t problem_id_length, std::size_t algorithm_id_length);
 
 /// Checks the campaign and builds every problem once (each map read once): a missing or duplicate
 /// id, a bad problem, an unknown algorithm, a bad parameter, an algorithm that cannot run on a

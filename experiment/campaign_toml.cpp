@@ -14,6 +14,7 @@
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
 #include "framework/error.hpp"
+#include "framework/memory.hpp"
 #include "framework/read_file.hpp"
 #include "problems/continuous/catalog.hpp"
 
@@ -22,6 +23,11 @@ namespace {
 
 std::string at(const std::string& file, const toml::node& node) {
     return fmt::format("{}:{}", file, node.source().begin.line);
+}
+
+/// FILE:LINE:COLUMN of a node, for the checks added with issue 25 (the older ones give the line).
+std::string at_column(const std::string& file, const toml::node& node) {
+    return fmt::format("{}:{}:{}", file, node.source().begin.line, node.source().begin.column);
 }
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
@@ -33,6 +39,15 @@ std::string need_string(const std::string& file, const toml::table& t, std::stri
     if (!n) fail(where, "missing key '" + std::string(key) + "'");
     if (!n->is_string()) fail(at(file, *n), "'" + std::string(key) + "' must be a string");
     return std::string(**n->as_string());
+}
+
+/// A name the store keeps and summaries print (an id, the campaign's name): need_string, and not
+/// empty, without NUL or another control character (campaign.hpp: name_problem).
+std::string need_name(const std::string& file, const toml::table& t, std::string_view key, const std::string& where) {
+    std::string v = need_string(file, t, key, where);
+    if (const std::string why = name_problem(v); !why.empty())
+        fail(at_column(file, *t.get(key)), "'" + std::string(key) + "' " + why);
+    return v;
 }
 
 std::int64_t need_integer(const std::string& file, const toml::node& n, std::string_view key) {
@@ -71,7 +86,7 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
     CampaignProblem p;
     p.line = static_cast<int>(t.source().begin.line);
     const std::string where = fmt::format("{}:{}", file, p.line);
-    p.id = need_string(file, t, "id", where);
+    p.id = need_name(file, t, "id", where);
     const std::string type = need_string(file, t, "type", where);
     const bool grid = type == "grid";
     GridSpec g;
@@ -119,17 +134,49 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
     return p;
 }
 
+/// The problems the file has asked for so far, counted before each table expands (issue 25: a
+/// 6.9 MB instance list or a 15 KB suite asked for hundreds of thousands of problems, 12 kB each,
+/// and met std::bad_alloc after gigabytes): a table that would pass max_campaign_problems or the
+/// memory of the problems built (problem_memory) is refused at its key, before it expands.
+struct Expansion {
+    std::size_t problems = 0;
+    double bytes = 0.0;
+
+    void add(std::size_t n, double memory, const std::string& where, const std::string& what) {
+        if (problems + n > max_campaign_problems)
+            fail(where, fmt::format("{} {} problems ({} in the campaign with those before); a campaign has at most "
+                                    "{}",
+                                    what, n, problems + n, max_campaign_problems));
+        // One problem too large alone is the engine's to refuse, naming its dimension.
+        if (n > 1 && bytes + memory > available_memory())
+            fail(where, fmt::format("{} {} problems, which need about {} of memory once built ({} with those "
+                                    "before), more than the {} this machine has",
+                                    what, n, format_bytes(memory), format_bytes(bytes + memory),
+                                    format_bytes(available_memory())));
+        problems += n;
+        if (memory <= available_memory()) bytes += memory;
+    }
+};
+
 /// A continuous [[problem]] with `instance = [k1, k2, ...]` is one problem per instance, "ID-iK".
 void add_problem(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t,
-                 const std::filesystem::path& folder) {
+                 const std::filesystem::path& folder, Expansion& expansion) {
     std::vector<std::int64_t> instances;
     CampaignProblem p = read_problem(file, t, folder, instances);
     const toml::node* given = t.get("instance");
     if (!given) {
+        expansion.add(1, problem_memory(p.spec), fmt::format("{}:{}", file, p.line), "this [[problem]] is");
         out.push_back(std::move(p));
         return;
     }
     if (instances.empty()) fail(at(file, *given), "'instance' must not be an empty list");
+    double memory = 0.0;
+    for (const std::int64_t k : instances) {
+        ContinuousSpec f = std::get<ContinuousSpec>(p.spec);
+        f.instance = k;
+        memory += problem_memory(f);
+    }
+    expansion.add(instances.size(), memory, at_column(file, *given), "'instance' lists");
     const bool list = given->is_array();
     for (const std::int64_t k : instances) {
         CampaignProblem q = p;
@@ -143,7 +190,7 @@ void add_problem(std::vector<CampaignProblem>& out, const std::string& file, con
 /// F1-F23, instance 0 as defined), with `functions`, `instances` and `dimensions` lists; one
 /// problem per (function, instance, dimension), "PREFIX-fN-iK-dD" (fixed-dimension functions: their
 /// own dimension and instance 0 only).
-void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t) {
+void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t, Expansion& expansion) {
     const int line = static_cast<int>(t.source().begin.line);
     const std::string where = fmt::format("{}:{}", file, line);
     static const std::set<std::string> keys{"name", "id", "functions", "instances", "dimensions"};
@@ -154,7 +201,7 @@ void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const
     const std::string name = need_string(file, t, "name", where);
     if (name != "bbob" && name != "classic") fail(where, "unknown suite '" + name + "' (bbob, classic)");
     const bool bbob = name == "bbob";
-    const std::string prefix = t.get("id") ? need_string(file, t, "id", where) : name;
+    const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : name;
     std::vector<std::int64_t> functions, instances, dimensions;
     for (std::int64_t f = 1; f <= (bbob ? 24 : 23); ++f) functions.push_back(f);
     instances = bbob ? std::vector<std::int64_t>{1, 2, 3, 4, 5} : std::vector<std::int64_t>{0};
@@ -166,16 +213,52 @@ void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const
         fail(where, "a [[suite]] needs 'dimensions' (a list of integers)");
     for (auto* list : {&functions, &instances, &dimensions})
         if (list->empty()) fail(where, "the lists of a [[suite]] must not be empty");
-    for (const std::int64_t f : functions) {
+    for (const std::int64_t f : functions)
         if (f < 1 || f > (bbob ? 24 : 23))
             fail(at(file, *t.get("functions")),
                  fmt::format("function {} is not in the {} suite (1-{})", f, name, bbob ? 24 : 23));
+    {
+        // What the suite expands to, counted before any of it is made.
+        std::size_t n = 0;
+        double memory = 0.0;
+        for (const std::int64_t f : functions) {
+            const std::string function = (bbob ? "bbob-f" : "yao-f") + std::to_string(f);
+            const auto& entry = continuous::catalog().find(function)->entry;
+            const bool single = entry.instances == continuous::Instances::none;
+            std::set<std::int64_t> seen;
+            for (const std::int64_t d : dimensions) {
+                const std::int64_t dim = entry.fixed_dim ? static_cast<std::int64_t>(entry.fixed_dim) : d;
+                if (!seen.insert(dim).second) continue;
+                const std::size_t k = single ? 1 : instances.size();
+                n += k;
+                memory += static_cast<double>(k) * problem_memory(ContinuousSpec{function, dim, single ? 0 : 1});
+            }
+        }
+        // Blamed on the longest list the table gives.
+        const char* key = "dimensions";
+        for (const char* other : {"instances", "functions"})
+            if (const auto* node = t.get(other);
+                node && node->as_array() && node->as_array()->size() > t.get(key)->as_array()->size())
+                key = other;
+        expansion.add(n, memory, at_column(file, *t.get(key)),
+                      fmt::format("'{}': this [[suite]] expands to {} functions x {} instances x {} dimensions, "
+                                  "or",
+                                  key, functions.size(), instances.size(), dimensions.size()));
+    }
+    for (const std::int64_t f : functions) {
         const std::string function = (bbob ? "bbob-f" : "yao-f") + std::to_string(f);
         const auto& entry = continuous::catalog().find(function)->entry;
         const auto fixed = entry.fixed_dim;
-        // Fixed-dimension functions (Yao's F14-F23) have one instance: they run once, at instance 0.
-        const std::vector<std::int64_t> own_instances =
-            entry.instances == continuous::Instances::none ? std::vector<std::int64_t>{0} : instances;
+        // Fixed-dimension functions (Yao's F14-F23) have one instance: they run once, at instance 0,
+        // when the list asks for it; a list without it is refused, never run at an instance it
+        // does not name (issue 25: instances = [1] ran instance 0 and said nothing).
+        const bool single = entry.instances == continuous::Instances::none;
+        if (single && std::find(instances.begin(), instances.end(), 0) == instances.end())
+            fail(at_column(file, *t.get("instances")),
+                 fmt::format("'instances' has no instance 0, the only instance of {} (a fixed-dimension function); "
+                             "add 0 to 'instances', or leave F14-F23 out of 'functions'",
+                             function));
+        const std::vector<std::int64_t> own_instances = single ? std::vector<std::int64_t>{0} : instances;
         std::set<std::int64_t> seen;
         for (const std::int64_t d : dimensions) {
             const std::int64_t dim = fixed ? static_cast<std::int64_t>(fixed) : d;
@@ -196,7 +279,7 @@ CampaignAlgorithm read_algorithm(const std::string& file, const toml::table& t) 
     CampaignAlgorithm a;
     a.line = static_cast<int>(t.source().begin.line);
     const std::string where = fmt::format("{}:{}", file, a.line);
-    a.id = need_string(file, t, "id", where);
+    a.id = need_name(file, t, "id", where);
     a.spec.name = need_string(file, t, "type", where);
     for (auto&& [key, value] : t) {
         const std::string k(key.str());
@@ -233,11 +316,14 @@ Campaign read_campaign(const std::string& path) {
     }
     const auto folder = std::filesystem::path(path).parent_path();
     bool suites_read = false;
+    Expansion expansion;
     for (auto&& [key, value] : root) {
         const std::string k(key.str());
         if (k == "name") {
             if (!value.is_string()) fail(at(path, value), "'name' must be a string");
             c.name = std::string(**value.as_string());
+            if (const std::string why = name_problem(c.name); !why.empty())
+                fail(at_column(path, value), "'name' " + why);
         } else if (k == "seeds") {
             c.seeds = need_integer(path, value, k);
             if (c.seeds < 1) fail(at(path, value), "'seeds' must be >= 1");
@@ -289,14 +375,14 @@ Campaign read_campaign(const std::string& path) {
         } else if (k == "suite") {
             const toml::array* a = value.as_array();
             if (!a || !a->is_array_of_tables()) fail(at(path, value), "'suite' must be [[suite]] tables");
-            for (const toml::node& n : *a) add_suite(c.problems, path, *n.as_table());
+            for (const toml::node& n : *a) add_suite(c.problems, path, *n.as_table(), expansion);
             suites_read = true;
         } else if (k == "problem" || k == "algorithm") {
             const toml::array* a = value.as_array();
             if (!a || !a->is_array_of_tables()) fail(at(path, value), "'" + k + "' must be [[" + k + "]] tables");
             for (const toml::node& n : *a) {
                 if (k == "problem")
-                    add_problem(c.problems, path, *n.as_table(), folder);
+                    add_problem(c.problems, path, *n.as_table(), folder, expansion);
                 else
                     c.algorithms.push_back(read_algorithm(path, *n.as_table()));
             }

@@ -8,6 +8,8 @@
 #include <optional>
 #include <set>
 
+#include "experiment/campaign.hpp"
+#include "experiment/report/store.hpp"
 #include "experiment/store_schema.hpp"
 #include "framework/error.hpp"
 
@@ -47,9 +49,10 @@ class Db {
         while ((rc = sqlite3_step(s)) == SQLITE_ROW) {
             auto& row = out.emplace_back();
             for (int i = 0; i < sqlite3_column_count(s); ++i)
-                row.push_back(sqlite3_column_type(s, i) == SQLITE_NULL
-                                  ? std::nullopt
-                                  : std::optional<std::string>(reinterpret_cast<const char*>(sqlite3_column_text(s, i))));
+                row.push_back(
+                    sqlite3_column_type(s, i) == SQLITE_NULL
+                        ? std::nullopt
+                        : std::optional<std::string>(reinterpret_cast<const char*>(sqlite3_column_text(s, i))));
         }
         sqlite3_finalize(s);
         if (rc != SQLITE_DONE) throw InputError(path_ + ": " + sqlite3_errmsg(db_));
@@ -92,7 +95,9 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
     require(inputs.size() >= 2, "merge", "give two stores or more to merge");
     require(!std::filesystem::exists(out), out, "exists already; merge writes a new store (choose another --out)");
     for (const auto& in : inputs) require(std::filesystem::is_regular_file(in), in, "no such store");
-    // Each input at the current schema (pride bench migrates a store when it opens it).
+    // Each input checked as pride report checks it (the same code), then at the current schema
+    // (pride bench migrates a store when it opens it): a damaged input is never copied on.
+    for (const auto& in : inputs) report::check_store(in);
     for (const auto& in : inputs) {
         Db db(in, SQLITE_OPEN_READONLY);
         const auto v = db.rows("PRAGMA user_version");
@@ -136,9 +141,10 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
                 const auto other = db.rows("SELECT budget, precisions FROM b.campaign WHERE id = 1");
                 require(!other.empty(), in, "has no campaign row");
                 if (other[0][0] != campaign[0][0])
-                    throw InputError(fmt::format("{}: its runs have the budget '{}', those of {} '{}'; runs of "
-                                                 "different budgets are not merged",
-                                                 in, text(other[0][0]), inputs[0], text(campaign[0][0])));
+                    throw InputError(
+                        fmt::format("{}: its runs have the budget '{}', those of {} '{}'; runs of "
+                                    "different budgets are not merged",
+                                    in, text(other[0][0]), inputs[0], text(campaign[0][0])));
                 if (other[0][1] != campaign[0][1])
                     throw InputError(fmt::format("{}: records the target precisions {}, {} records {}", in,
                                                  text(other[0][1]), inputs[0], text(campaign[0][1])));
@@ -148,34 +154,51 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
                         "WHERE o.definition IS NOT m.definition OR o.definition IS NULL LIMIT 1",
                         table));
                     if (!differ.empty())
-                        throw InputError(fmt::format("{}: {} '{}' is defined as {} there and as {} in {}; stores "
-                                                     "whose runs differ in definition are not merged",
-                                                     in, table == std::string("problems") ? "problem" : "algorithm",
-                                                     text(differ[0][0]), text(differ[0][1]), text(differ[0][2]),
-                                                     inputs[0]));
+                        throw InputError(
+                            fmt::format("{}: {} '{}' is defined as {} there and as {} in {}; stores "
+                                        "whose runs differ in definition are not merged",
+                                        in, table == std::string("problems") ? "problem" : "algorithm",
+                                        text(differ[0][0]), text(differ[0][1]), text(differ[0][2]), inputs[0]));
+                    // The same definition may name maps whose content differs (edited between
+                    // the campaigns, or given in code): the digests (schema 3) must agree too.
+                    if (table == std::string("problems")) {
+                        const auto other_content = db.rows(
+                            "SELECT o.id, o.digest, m.digest FROM b.problems o JOIN main.problems m ON o.id = m.id "
+                            "WHERE o.digest IS NOT NULL AND m.digest IS NOT NULL AND o.digest <> m.digest LIMIT 1");
+                        if (!other_content.empty())
+                            throw InputError(fmt::format(
+                                "{}: problem '{}' {} in {}; stores whose runs are of different problems are not "
+                                "merged",
+                                in, text(other_content[0][0]),
+                                digest_difference(*other_content[0][2], *other_content[0][1]), inputs[0]));
+                    }
                     const auto cols = columns(db, "main", table);
-                    db.exec(fmt::format("INSERT INTO main.{0} ({1}) SELECT {1} FROM b.{0} WHERE id NOT IN (SELECT id "
-                                        "FROM main.{0})",
-                                        table, joined(cols)));
+                    db.exec(
+                        fmt::format("INSERT INTO main.{0} ({1}) SELECT {1} FROM b.{0} WHERE id NOT IN (SELECT id "
+                                    "FROM main.{0})",
+                                    table, joined(cols)));
                 }
                 // A run in both must be the same run: every column but the wall time, bit for bit.
                 std::string unequal;
-                for (const auto& c : compared) unequal += (unequal.empty() ? "" : " OR ") + ("o." + c + " IS NOT m." + c);
-                const auto differ = db.rows("SELECT o.problem, o.algorithm, o.seed FROM b.runs o JOIN main.runs m ON "
-                                            "o.problem = m.problem AND o.algorithm = m.algorithm AND o.seed = m.seed "
-                                            "WHERE " +
-                                            unequal + " ORDER BY o.problem, o.algorithm, o.seed LIMIT 1");
+                for (const auto& c : compared)
+                    unequal += (unequal.empty() ? "" : " OR ") + ("o." + c + " IS NOT m." + c);
+                const auto differ = db.rows(
+                    "SELECT o.problem, o.algorithm, o.seed FROM b.runs o JOIN main.runs m ON "
+                    "o.problem = m.problem AND o.algorithm = m.algorithm AND o.seed = m.seed "
+                    "WHERE " +
+                    unequal + " ORDER BY o.problem, o.algorithm, o.seed LIMIT 1");
                 if (!differ.empty())
-                    throw InputError(fmt::format("{}: run (problem '{}', algorithm '{}', seed {}) differs from the "
-                                                 "same run in {}; stores whose runs differ are not merged",
-                                                 in, text(differ[0][0]), text(differ[0][1]), text(differ[0][2]),
-                                                 inputs[0]));
+                    throw InputError(
+                        fmt::format("{}: run (problem '{}', algorithm '{}', seed {}) differs from the "
+                                    "same run in {}; stores whose runs differ are not merged",
+                                    in, text(differ[0][0]), text(differ[0][1]), text(differ[0][2]), inputs[0]));
                 for (const auto& row : db.rows("SELECT problem, algorithm, seed FROM b.runs"))
                     if (!keys_seen.insert(*row[0] + '\x1f' + *row[1] + '\x1f' + *row[2]).second) ++summary.shared;
-                db.exec(fmt::format("INSERT INTO main.runs ({0}) SELECT {1} FROM b.runs o WHERE NOT EXISTS (SELECT 1 "
-                                    "FROM main.runs m WHERE m.problem = o.problem AND m.algorithm = o.algorithm AND "
-                                    "m.seed = o.seed)",
-                                    joined(run_columns), joined(run_columns, "o.")));
+                db.exec(
+                    fmt::format("INSERT INTO main.runs ({0}) SELECT {1} FROM b.runs o WHERE NOT EXISTS (SELECT 1 "
+                                "FROM main.runs m WHERE m.problem = o.problem AND m.algorithm = o.algorithm AND "
+                                "m.seed = o.seed)",
+                                joined(run_columns), joined(run_columns, "o.")));
             } catch (...) {
                 db.exec("DETACH DATABASE b");
                 throw;

@@ -28,6 +28,7 @@
 #include "engine/json.hpp"
 #include "engine/registry.hpp"
 #include "experiment/campaign.hpp"
+#include "experiment/report/store.hpp"
 #include "experiment/store_schema.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
@@ -79,6 +80,16 @@ class Store {
             throw InputError(path + ": cannot be the store: " +
                              (std::filesystem::is_directory(path) ? "it is a folder" : "not a regular file") +
                              "; nothing was changed");
+        // A store is checked as pride report checks it (report/store.hpp: check_store, the same
+        // code) before anything is trusted or written: resuming on a truncated or bit-flipped store
+        // would take its damaged rows for stored runs and report success.
+        if (existed) {
+            try {
+                report::check_store(path);
+            } catch (const InputError& e) {
+                throw InputError(std::string(e.what()) + "; nothing was run (run the campaign into another store)");
+            }
+        }
         if (!existed) {  // SQLite's own message would give the errno of its last try, not the reason
             const auto parent = std::filesystem::path(path).parent_path();
             if (::access(parent.empty() ? "." : parent.c_str(), W_OK) != 0 && errno != ENOENT)
@@ -168,6 +179,10 @@ class Store {
             add_column("campaign", "budget", "TEXT");
             add_column("problems", "definition", "TEXT");
             add_column("algorithms", "definition", "TEXT");
+            // What each problem is beyond its definition's text (issue 25: a map edited between an
+            // interrupted campaign and its resume): SHA-256 digests of its content, compared on
+            // every resume. NULL in stores from before, filled on their next resume.
+            add_column("problems", "digest", "TEXT");
             // Written only when it changes: a store that needs nothing is not touched (its bytes stay).
             if (user_version() != store_schema) exec(fmt::format("PRAGMA user_version = {}", store_schema).c_str());
             add_column("problems", "function", "TEXT");
@@ -244,6 +259,9 @@ class Store {
                                      ", this pride records COCO's 51 (10^2 ... 10^-8); report it as it is, or run the "
                                      "campaign into a new store");
                 if (text == c.text) {
+                    // The same file may name an edited map, and Python's campaigns describe a Grid
+                    // given in code by its settings alone: the content is compared all the same.
+                    check_digests(c);
                     fill_definitions(c);  // a store from before definitions, resumed with its own file
                     exec("COMMIT");
                     return;
@@ -449,6 +467,8 @@ class Store {
             if (const auto it = algorithms.find(a.id); it != algorithms.end() && *it->second != algorithm_definition(a))
                 throw InputError(path_ + ": algorithm '" + a.id + "' is stored as " + *it->second + ", here it is " +
                                  algorithm_definition(a) + refuse);
+        check_digests(c);
+        fill_digests(c);
         s = prepare("UPDATE campaign SET text = ?, target = ?, target_precision = ? WHERE id = 1");
         sqlite3_bind_text(s, 1, c.text.c_str(), -1, SQLITE_TRANSIENT);
         bind_optional(s, 2, c.target);
@@ -460,6 +480,41 @@ class Store {
             if (!problems.count(p.id)) record_problem(p);
     }
 
+    /// Every problem of `c` stored under its id with another digest (problem_digest: its map's
+    /// cells and size, its settings) is refused, naming the id and what differs: the runs
+    /// stored are of another problem. A NULL digest (a store from before them) is not compared.
+    void check_digests(const Campaign& c) {
+        std::map<std::string, std::string> stored;
+        sqlite3_stmt* s = prepare("SELECT id, digest FROM problems WHERE digest IS NOT NULL");
+        int rc;
+        while ((rc = sqlite3_step(s)) == SQLITE_ROW)
+            stored[reinterpret_cast<const char*>(sqlite3_column_text(s, 0))] =
+                reinterpret_cast<const char*>(sqlite3_column_text(s, 1));
+        sqlite3_finalize(s);
+        if (rc != SQLITE_DONE) fail("cannot read the store");
+        for (const auto& p : c.problems)
+            if (const auto it = stored.find(p.id); it != stored.end() && it->second != p.digest)
+                throw InputError(path_ + ": problem '" + p.id + "' " + digest_difference(it->second, p.digest) +
+                                 "; a store never mixes the runs of two problems under one id (give the problem "
+                                 "another id, or choose another store file)");
+    }
+
+    /// The digests of this campaign's problems, recorded where the store has none (a store from
+    /// before them: its problems are taken as they are now, an edit made before cannot be seen).
+    /// Nothing is written when none is missing.
+    void fill_digests(const Campaign& c) {
+        sqlite3_stmt* s = prepare("SELECT COUNT(*) FROM problems WHERE digest IS NULL");
+        const bool missing = sqlite3_step(s) == SQLITE_ROW && sqlite3_column_int64(s, 0) > 0;
+        sqlite3_finalize(s);
+        if (!missing) return;
+        for (const auto& p : c.problems) {
+            sqlite3_stmt* u = prepare("UPDATE problems SET digest = ? WHERE id = ? AND digest IS NULL");
+            sqlite3_bind_text(u, 1, p.digest.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(u, 2, p.id.c_str(), -1, SQLITE_TRANSIENT);
+            step_done(u, "cannot write the store");
+        }
+    }
+
     /// A store written before definitions were kept, resumed with its very campaign: the
     /// definitions are this campaign's, recorded where missing, so that it can grow from now on.
     /// Nothing is written when none is missing (the store's bytes stay).
@@ -469,6 +524,7 @@ class Store {
             "definition IS NULL) + (SELECT COUNT(*) FROM algorithms WHERE definition IS NULL)");
         const bool missing = sqlite3_step(s) == SQLITE_ROW && sqlite3_column_int64(s, 0) > 0;
         sqlite3_finalize(s);
+        fill_digests(c);
         if (!missing) return;
         const std::string budget = budget_definition(c);
         s = prepare("UPDATE campaign SET budget = ? WHERE budget IS NULL");
@@ -526,7 +582,7 @@ class Store {
         {
             sqlite3_stmt* s = prepare(
                 "INSERT INTO problems (id, type, dim, map, start, goal, function, instance, f_opt, suite, fid, "
-                "definition) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+                "definition, digest) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
             const std::string map = p.map_file.empty() ? "" : std::filesystem::absolute(p.map_file).string();
             const auto* g = std::get_if<GridSpec>(&p.spec);
             const auto* f = std::get_if<ContinuousSpec>(&p.spec);
@@ -556,6 +612,7 @@ class Store {
             }
             const std::string definition = problem_definition(p);
             sqlite3_bind_text(s, 12, definition.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(s, 13, p.digest.c_str(), -1, SQLITE_TRANSIENT);
             step_done(s, "cannot write the store");
         }
     }

@@ -6,8 +6,10 @@
 //   1: runs.encoding, campaign.target_precision, campaign.budget and the problems' and
 //      algorithms' definitions (issues 23 and 24)
 //   2: runs.trace_targets and runs.trace_evaluations, COCO's trace of each run (issue 24)
+//   3: problems.digest, SHA-256 digests of each problem's map and settings (issue 25); NULL in a
+//      store migrated from before, filled from the campaign of its first resume
 namespace pride::engine {
 
-inline constexpr int store_schema = 2;
+inline constexpr int store_schema = 3;
 
 }  // namespace pride::engine

@@ -291,6 +291,9 @@ bool holds_content(const std::string& file) {
 sqlite3* try_open(const std::string& uri, std::string& why) {
     sqlite3* db = nullptr;
     int rc = sqlite3_open_v2(uri.c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr);
+    // A pride bench on the same store may hold it for a moment (its schema being created, a
+    // change of journal mode): wait for it as pride bench itself does, rather than fail.
+    if (rc == SQLITE_OK) sqlite3_busy_timeout(db, 30000);
     if (rc == SQLITE_OK) rc = sqlite3_exec(db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
     if (rc == SQLITE_OK) return db;
     why = db ? sqlite3_errmsg(db) : "out of memory";
@@ -356,11 +359,16 @@ std::vector<TracePoint> trace(const Query& q, int i, const char* column, std::in
 }
 }  // namespace
 
-CampaignStore read_store(const std::string& path) {
+namespace {
+
+/// read_store, and check_store with `keep_runs` false (its runs checked, not kept: a store of any
+/// size is checked in the memory of one run).
+CampaignStore read_checked(const std::string& path, bool keep_runs) {
     require(std::filesystem::is_regular_file(path), path, "no such store");
     check_length(path);
     const Connection db(path);
     const auto tables = names(db, "SELECT name FROM sqlite_master WHERE type = 'table'");
+    if (!keep_runs && tables.empty()) return {};
     if (!tables.count("campaign") && !tables.count("runs"))
         throw InputError(path + ": not a campaign store (it has no campaign and no runs table)");
     {
@@ -504,9 +512,29 @@ CampaignStore read_store(const std::string& path) {
             q.fail("problem", fmt::format("'{}' is not in table problems (the analysis of target hits needs its "
                                           "function and dimension)",
                                           r.problem));
-        store.runs.push_back(std::move(r));
+        if (keep_runs) store.runs.push_back(std::move(r));
+    }
+    if (!keep_runs) {
+        // Pages the queries above never read (free pages, the claims, an index's inner pages):
+        // a damaged one would fail some later write, or a lookup would miss a stored run.
+        Query check(db, "PRAGMA quick_check(1)");
+        check.where = "SQLite's quick_check";
+        if (check.next()) {
+            const std::string verdict = check.text(0, "quick_check");
+            if (verdict != "ok") throw DamagedStore(path, "SQLite's quick_check: " + verdict);
+        }
     }
     return store;
+}
+
+}  // namespace
+
+CampaignStore read_store(const std::string& path) {
+    return read_checked(path, true);
+}
+
+void check_store(const std::string& path) {
+    read_checked(path, false);
 }
 
 }  // namespace pride::report

@@ -84,4 +84,10 @@ struct CampaignStore {
 /// missing or not a campaign store, DamagedStore when its contents are damaged.
 CampaignStore read_store(const std::string& path);
 
+/// The checks of read_store (the very same code, the runs read and dropped one by one) followed by
+/// SQLite's quick_check of every page, for what trusts a store before writing to it or from it
+/// (pride bench, Python's Campaign.run, pride merge): the same InputError or DamagedStore as
+/// read_store. An SQLite file without any table (a store being created) passes.
+void check_store(const std::string& path);
+
 }  // namespace pride::report
