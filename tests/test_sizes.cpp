@@ -57,6 +57,7 @@ TEST_CASE("sizes: a rotated instance beyond dimension 5000 is refused before its
 }
 
 TEST_CASE("sizes: the exact optimum on a map too large for memory is refused up front, A* is not", "[faults]") {
+    if (PRIDE_UNDER_ASAN) return;  // no address-space limit under ASan (tests/test_support.hpp)
     const std::string map = "/tmp/pride-sizes-" + std::to_string(getpid()) + ".map";
     {
         std::ofstream f(map);

@@ -285,8 +285,9 @@ TEST_CASE("store identity: instance lists and suites are bounded before they exp
     for (int k = 1; k <= 60'000; ++k) list += (k > 1 ? ", " : "") + std::to_string(k);
     const std::string mid = dir.write(
         "mid.toml", head + "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\ninstance = [" + list + "]\n" + tail);
-    check_input_error(run_pride_limited(700'000, "bench '" + mid + "' --out '" + dir.file("s.sqlite") + "'"),
-                      {mid + ":9:12", "'instance' lists 60000 problems", "of memory once built"});
+    if (!PRIDE_UNDER_ASAN)
+        check_input_error(run_pride_limited(700'000, "bench '" + mid + "' --out '" + dir.file("s.sqlite") + "'"),
+                          {mid + ":9:12", "'instance' lists 60000 problems", "of memory once built"});
     CHECK(dir.entries() == std::vector<std::string>{"big.toml", "mid.toml", "suite.toml"});
 }
 

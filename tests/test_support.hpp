@@ -15,6 +15,21 @@
 #include "framework/error.hpp"
 #include "tests/json_reader.hpp"
 
+// AddressSanitizer reserves terabytes of address space for its shadow memory, so a process under
+// an address-space limit (`ulimit -v`, what available_memory() honours) cannot even start there:
+// the tests of such limits run in the normal build only. (GCC says ASan with
+// __SANITIZE_ADDRESS__, clang with __has_feature.)
+#if defined(__SANITIZE_ADDRESS__)
+#define PRIDE_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PRIDE_UNDER_ASAN 1
+#endif
+#endif
+#ifndef PRIDE_UNDER_ASAN
+#define PRIDE_UNDER_ASAN 0
+#endif
+
 namespace pride::test {
 
 /// A temporary folder under /tmp, removed with everything in it at the end of the scope.
