@@ -17,12 +17,15 @@
 #include "experiment/report/store.hpp"
 #include "framework/coco_trace.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/sqlite_support.hpp"
 #include "tests/test_support.hpp"
 
 namespace fs = std::filesystem;
 using pride::test::expect_input_error;
 using pride::test::run_pride;
 using pride::test::slurp;
+
+using pride::test::exec_sql;
 
 namespace {
 
@@ -60,17 +63,6 @@ std::vector<std::vector<Line>> blocks(const std::string& text) {
         out.back().push_back(l);
     }
     return out;
-}
-
-void exec(const std::string& store, const std::string& sql) {
-    sqlite3* db = nullptr;
-    REQUIRE(sqlite3_open(store.c_str(), &db) == SQLITE_OK);
-    char* error = nullptr;
-    const int rc = sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &error);
-    INFO((error ? error : ""));
-    sqlite3_free(error);
-    sqlite3_close(db);
-    REQUIRE(rc == SQLITE_OK);
 }
 
 }  // namespace
@@ -208,14 +200,14 @@ TEST_CASE("export --coco: bad input is one line, exit 2", "[coco][export]") {
                        {"r.sqlite", "no run on the bbob suite"});
 
     // Runs stored before pride kept a trace cannot be written as COCO's data.
-    exec(store, "UPDATE runs SET trace_targets = '[]' WHERE seed = 2");
+    exec_sql(store, "UPDATE runs SET trace_targets = '[]' WHERE seed = 2");
     expect_input_error("export '" + store + "' --coco '" + (dir / "old").string() + "'",
                        {"c.sqlite", "seed 2", "no COCO trace", "new store"});
     // A damaged trace is a damaged store.
-    exec(store, "UPDATE runs SET trace_targets = '[5, 1.0, 3, 0.5]' WHERE seed = 1");
+    exec_sql(store, "UPDATE runs SET trace_targets = '[5, 1.0, 3, 0.5]' WHERE seed = 1");
     expect_input_error("export '" + store + "' --coco '" + (dir / "old").string() + "'",
                        {"damaged store", "trace_targets", "increasing evaluations"});
-    exec(store, "UPDATE runs SET trace_targets = '[1, 1.0, 3]' WHERE seed = 1");
+    exec_sql(store, "UPDATE runs SET trace_targets = '[1, 1.0, 3]' WHERE seed = 1");
     expect_input_error("export '" + store + "' --coco '" + (dir / "old").string() + "'",
                        {"damaged store", "trace_targets", "pairs"});
 }

@@ -26,7 +26,10 @@
 #include "experiment/report/store.hpp"
 #include "framework/output_files.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/sqlite_support.hpp"
 #include "tests/test_support.hpp"
+
+using pride::test::exec_sql;
 
 namespace {
 
@@ -126,17 +129,6 @@ std::string bbob_store(const TempDir& dir) {
     INFO(r.out << r.err);
     REQUIRE(r.status == 0);
     return store;
-}
-
-void sql(const std::string& store, const std::string& statement) {
-    sqlite3* db = nullptr;
-    REQUIRE(sqlite3_open(store.c_str(), &db) == SQLITE_OK);
-    char* error = nullptr;
-    const int rc = sqlite3_exec(db, statement.c_str(), nullptr, nullptr, &error);
-    INFO((error ? error : ""));
-    sqlite3_free(error);
-    sqlite3_close(db);
-    REQUIRE(rc == SQLITE_OK);
 }
 
 bool has_matplotlib() {
@@ -352,7 +344,8 @@ TEST_CASE("outputs: problem ids x/y and x_y get figures of their own", "[outputs
     const TempDir dir("pride-out-ids");
     // Campaigns refuse such ids (test_report_precision.cpp); merged or older stores can hold them.
     const std::string store = small_store(dir, "s", 5);
-    sql(store,
+    exec_sql(
+        store,
         "UPDATE problems SET id = 'x/y' WHERE id = 'sphere'; UPDATE runs SET problem = 'x/y' WHERE problem = "
         "'sphere'; UPDATE problems SET id = 'x_y' WHERE id = 'grid'; UPDATE runs SET problem = 'x_y' WHERE problem "
         "= 'grid'");

@@ -19,7 +19,10 @@
 #include "experiment/campaign_toml.hpp"
 #include "experiment/store_digest.hpp"
 #include "experiment/store_schema.hpp"
+#include "tests/sqlite_support.hpp"
 #include "tests/test_support.hpp"
+
+using pride::test::exec_sql;
 
 namespace {
 
@@ -55,17 +58,6 @@ std::string edited_map() {
 
 pride::test::CliOutput bench(const TempDir& dir, const std::string& config, const std::string& store) {
     return run_pride("bench '" + dir.file(config) + "' --jobs 1 --out '" + store + "'");
-}
-
-void exec(const std::string& store, const std::string& sql) {
-    sqlite3* db = nullptr;
-    REQUIRE(sqlite3_open(store.c_str(), &db) == SQLITE_OK);
-    char* error = nullptr;
-    const int rc = sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &error);
-    INFO((error ? error : ""));
-    sqlite3_free(error);
-    sqlite3_close(db);
-    REQUIRE(rc == SQLITE_OK);
 }
 
 std::string scalar(const std::string& store, const std::string& sql) {
@@ -148,7 +140,7 @@ TEST_CASE("store identity: a store from schema 2 is migrated on resume, its dige
     const std::string store = dir.file("c.sqlite");
     REQUIRE(bench(dir, "c.toml", store).status == 0);
     // As pride wrote it before issue 25: no digest column, schema 2.
-    exec(store, "ALTER TABLE problems DROP COLUMN digest; PRAGMA user_version = 2");
+    exec_sql(store, "ALTER TABLE problems DROP COLUMN digest; PRAGMA user_version = 2");
     const auto old_report = run_pride("report '" + store + "' --format csv");
     CHECK(old_report.status == 0);  // report reads old stores as they are
     REQUIRE(bench(dir, "c.toml", store).status == 0);
@@ -177,7 +169,7 @@ TEST_CASE("store identity: bench and merge check a store as report does, and ref
 
     // A value of a run damaged in place (its history no longer a list of numbers).
     const std::string edited = dir.write("edited.sqlite", bytes);
-    exec(edited, "UPDATE runs SET history = '[1, x]' WHERE rowid = 1");
+    exec_sql(edited, "UPDATE runs SET history = '[1, x]' WHERE rowid = 1");
     check_input_error(bench(dir, "c.toml", edited), {edited, "damaged store:", "history"});
     check_input_error(run_pride("merge '" + good + "' '" + edited + "' --out '" + dir.file("m1.sqlite") + "'"),
                       {edited, "damaged store:", "history"});
@@ -219,7 +211,7 @@ TEST_CASE("store identity: bench refuses a store whose damage only SQLite's quic
     const int root =
         std::stoi(scalar(store, "SELECT rootpage FROM sqlite_master WHERE name = 'sqlite_autoindex_claims_1'"));
     const auto page_size = static_cast<std::size_t>(std::stoul(scalar(store, "PRAGMA page_size")));
-    exec(store, "PRAGMA journal_mode = DELETE");  // every page in the file, none in a -wal
+    exec_sql(store, "PRAGMA journal_mode = DELETE");  // every page in the file, none in a -wal
     REQUIRE(!std::filesystem::exists(store + "-wal"));
     std::string bytes = slurp(store);
     const std::size_t page = page_size * static_cast<std::size_t>(root - 1);
