@@ -7,11 +7,11 @@
 
 namespace pride::test {
 
-/// Runs `sql` (one or more statements) on the SQLite file `store`; a failure fails the test with
-/// SQLite's message.
+/// Runs `sql` (one or more statements) on the existing SQLite file `store` (never created here);
+/// a failure fails the test with SQLite's message.
 inline void exec_sql(const std::string& store, const std::string& sql) {
     sqlite3* db = nullptr;
-    REQUIRE(sqlite3_open(store.c_str(), &db) == SQLITE_OK);
+    REQUIRE(sqlite3_open_v2(store.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK);
     char* error = nullptr;
     const int rc = sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &error);
     INFO((error ? error : ""));

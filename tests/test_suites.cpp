@@ -12,11 +12,14 @@
 
 #include "experiment/campaign.hpp"
 #include "experiment/campaign_toml.hpp"
+#include "tests/sqlite_support.hpp"
 #include "tests/test_support.hpp"
 
 using Catch::Matchers::Contains;
 using pride::test::input_error_message;
 using pride::test::TempDir;
+
+using pride::test::exec_sql;
 
 namespace {
 
@@ -44,17 +47,6 @@ std::vector<std::vector<std::string>> rows(const std::string& store, const std::
     sqlite3_finalize(s);
     sqlite3_close(db);
     return out;
-}
-
-void exec(const std::string& store, const std::string& sql) {
-    sqlite3* db = nullptr;
-    REQUIRE(sqlite3_open_v2(store.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK);
-    char* message = nullptr;
-    const int rc = sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &message);
-    INFO((message ? message : ""));
-    sqlite3_free(message);
-    sqlite3_close(db);
-    REQUIRE(rc == SQLITE_OK);
 }
 
 const std::string kSuiteCampaign = R"(name = "suites"
@@ -195,7 +187,7 @@ TEST_CASE("suites: a store written before the suite columns resumes and gains th
     const auto c = pride::engine::read_campaign(config);
     (void)pride::engine::run_campaign(c, store, 1);
     // Back to the schema of before: no new columns, half the runs.
-    exec(
+    exec_sql(
         store,
         "DELETE FROM runs WHERE seed = 2; ALTER TABLE runs DROP COLUMN target_hits; ALTER TABLE campaign DROP COLUMN "
         "precisions; ALTER TABLE problems DROP COLUMN function; ALTER TABLE problems DROP COLUMN instance; ALTER TABLE "
