@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -23,6 +24,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <tuple>
 
 #include "engine/json.hpp"
@@ -144,7 +146,7 @@ class Store {
         // meanwhile would lose a store that holds nothing yet. Runs are then written with
         // synchronous=NORMAL, as before.
         if (!existed) exec("PRAGMA synchronous=OFF");
-        exec("PRAGMA journal_mode=WAL");
+        journal_wal();
         // The schema in one transaction: two processes opening one new store create it once.
         exec("BEGIN IMMEDIATE");
         try {
@@ -686,6 +688,28 @@ class Store {
     [[noreturn]] void fail(const std::string& doing) const { throw InputError(path_ + ": " + doing + ": " + reason()); }
 
     void rollback() noexcept { sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr); }
+
+    /// Switches the store to WAL and makes sure it is: while another process reads the file (the
+    /// check of a second bench starting at once, a pride report), SQLite leaves the journal as it
+    /// was without waiting and says so only in the mode it returns, and a store left in rollback
+    /// mode fails its writers at once with "database is locked" when two write together. Readers
+    /// come and go: the switch is retried for up to the busy timeout.
+    void journal_wal() {
+        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        for (;;) {
+            std::string mode;
+            sqlite3_stmt* s = nullptr;
+            if (sqlite3_prepare_v2(db_, "PRAGMA journal_mode=WAL", -1, &s, nullptr) == SQLITE_OK &&
+                sqlite3_step(s) == SQLITE_ROW)
+                if (const unsigned char* text = sqlite3_column_text(s, 0)) mode = reinterpret_cast<const char*>(text);
+            sqlite3_finalize(s);
+            if (mode == "wal") return;
+            if (std::chrono::steady_clock::now() > until)
+                throw InputError(path_ + ": cannot write the store: it stays in journal mode '" + mode +
+                                 "' (another process keeps it open)");
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
 
     void exec(const char* sql) {
         char* message = nullptr;
