@@ -207,11 +207,15 @@ struct Section {
 int list_command(ListFormat format, std::ostream& out) {
     std::vector<Section> sections;
     Section problems{"problems", {}};
-    for (const auto& item : continuous::catalog().items())
+    for (const auto& item : continuous::catalog().items()) {
+        std::string dims;
+        for (const std::size_t d : item.entry.dims) dims += (dims.empty() ? "" : ", ") + std::to_string(d);
         problems.items.push_back(
             {item.name,
-             item.summary + (item.entry.fixed_dim ? " (dim = " + std::to_string(item.entry.fixed_dim) + ")"
-                                                  : " (dim >= " + std::to_string(item.entry.min_dim) + ")")});
+             item.summary + (!dims.empty()            ? " (dim in " + dims + ")"
+                             : item.entry.fixed_dim ? " (dim = " + std::to_string(item.entry.fixed_dim) + ")"
+                                                    : " (dim >= " + std::to_string(item.entry.min_dim) + ")")});
+    }
     sections.push_back(problems);
     sections.push_back({"encodings", {{"identity", "the genotype is the solution (every continuous problem)"}}});
     for (const auto& e : engine::grid_encodings()) sections.back().items.push_back(e);

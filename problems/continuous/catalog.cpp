@@ -2,6 +2,7 @@
 // classes themselves are held by continuous::Function (function_variant.hpp, function.cpp).
 #include "problems/continuous/catalog.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -155,6 +156,25 @@ void add_bbob_suite(Registry<CatalogEntry>& r, std::tuple<F...>*) {
     (add_bbob<F>(r), ...);
 }
 
+/// cecYYYY-fN: the CEC suites' functions, in the dimensions of the official data, one instance.
+void add_cec_suite(Registry<CatalogEntry>& r, cec::Suite suite) {
+    for (int k = 1; k <= cec::size(suite); ++k) {
+        const FunctionInfo& info = cec::info(suite, k);
+        CatalogEntry e;
+        e.dims = cec::dimensions(suite, k);
+        e.min_dim = e.dims.front();
+        e.instances = Instances::none;
+        e.suite = std::string(cec::suite_name(suite));
+        e.number = k;
+        e.make = [suite, k](std::size_t dim, std::int64_t) {
+            return wrap(cec::CecFunction(suite, k, dim), std::string(cec::info(suite, k).name), 0);
+        };
+        r.add(std::string(info.name),
+              std::string(info.summary) + "; the official data (" + std::string(cec::data_variable(suite)) + ")",
+              std::move(e));
+    }
+}
+
 }  // namespace
 
 const Registry<CatalogEntry>& catalog() {
@@ -217,6 +237,8 @@ const Registry<CatalogEntry>& catalog() {
         add_yao<Shekel7>(reg, 22);
         add_yao<Shekel10>(reg, 23);
         add_bbob_suite(reg, static_cast<bbob::All*>(nullptr));
+        add_cec_suite(reg, cec::Suite::y2017);
+        add_cec_suite(reg, cec::Suite::y2022);
         return reg;
     }();
     return r;
@@ -237,12 +259,20 @@ Function make_function(std::string_view name, std::int64_t dim, std::optional<st
     require(e.fixed_dim == 0 || static_cast<std::size_t>(dim) == e.fixed_dim, dim_source,
             std::string(name) + " is defined in dimension " + std::to_string(e.fixed_dim) + " only, got " +
                 std::to_string(dim));
+    if (!e.dims.empty() && std::find(e.dims.begin(), e.dims.end(), static_cast<std::size_t>(dim)) == e.dims.end()) {
+        std::string list;
+        for (const std::size_t d : e.dims) list += (list.empty() ? "" : ", ") + std::to_string(d);
+        throw InputError(dim_source,
+                         std::string(name) + " is defined in dimensions " + list + " only, got " + std::to_string(dim));
+    }
     const std::int64_t k = instance.value_or(default_instance(e));
     switch (e.instances) {
         case Instances::transform:
             require(k >= 0, "instance", "must be >= 0, got " + std::to_string(k));
             break;
         case Instances::none:
+            require(k == 0 || !e.suite.starts_with("cec"), "instance",
+                    std::string(name) + ": CEC functions have no instances (the official data fixes one function)");
             require(k == 0, "instance",
                     std::string(name) + " has one instance only (0)" +
                         (name.starts_with("shifted-") ? "; use " + std::string(name.substr(8)) + " --instance K" : ""));

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "framework/registry.hpp"
 #include "problems/continuous/function.hpp"
@@ -22,9 +23,10 @@ enum class Instances {
 
 struct CatalogEntry {
     std::size_t min_dim = 1;
-    std::size_t fixed_dim = 0;  // 0: any dimension >= min_dim
+    std::size_t fixed_dim = 0;      // 0: any dimension >= min_dim
+    std::vector<std::size_t> dims;  // not empty: the only dimensions (CEC: where the official data is)
     Instances instances = Instances::transform;
-    std::string suite;  // "bbob", "classic" (Yao et al. 1999's F1-F23), or empty
+    std::string suite;  // "bbob", "classic" (Yao et al. 1999's F1-F23), "cec2017", "cec2022", or empty
     int number = 0;     // its number in the suite (bbob-f3: 3, yao-f9: 9)
     std::function<Function(std::size_t dim, std::int64_t instance)> make;
 };
