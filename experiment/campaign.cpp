@@ -811,7 +811,8 @@ const cec::SuiteRules* cec_rules_of(const ContinuousSpec& f) {
 void apply_suite_rules(Campaign& c) {
     const std::string file = c.file.empty() ? std::string("campaign") : c.file;
     std::set<std::string_view> suites;
-    const CampaignProblem* other = nullptr;  // the first problem of no CEC suite
+    const CampaignProblem* other = nullptr;      // the first problem of no CEC suite
+    const CampaignProblem* no_budget = nullptr;  // the first problem without a default budget
     for (const auto& p : c.problems) {
         const auto* f = std::get_if<ContinuousSpec>(&p.spec);
         const cec::SuiteRules* rules = f ? cec_rules_of(*f) : nullptr;
@@ -819,6 +820,7 @@ void apply_suite_rules(Campaign& c) {
             suites.insert(rules->name);
         else if (!other)
             other = &p;
+        if (!no_budget && !(rules && cec::default_evaluations(rules->name, f->dim))) no_budget = &p;
     }
     if (c.seeds < 1) {
         require(c.seeds == 0 && !other && suites.size() == 1, file,
@@ -828,12 +830,13 @@ void apply_suite_rules(Campaign& c) {
         c.seeds = cec::suite_rules(*suites.begin())->runs;
     }
     if (!c.budget.evaluations && !c.budget.iterations && !c.evaluations_per_dim)
-        require(!other, file,
+        require(!no_budget, file,
                 suites.empty() ? std::string("missing [budget] with 'evaluations', 'evaluations_per_dim' or "
                                              "'iterations'")
                                : "missing [budget] with 'evaluations', 'evaluations_per_dim' or 'iterations': only "
-                                 "the CEC suites' problems have a default budget, and problem '" +
-                                     other->id + "' is not one");
+                                 "the CEC suites' problems have a default budget (CEC 2022's at D = 10 and 20), and "
+                                 "problem '" +
+                                     no_budget->id + "' has none");
     // The CEC suites' MaxFES, where the campaign gives no evaluation budget.
     if (!c.budget.evaluations && !c.evaluations_per_dim)
         for (auto& p : c.problems)

@@ -219,14 +219,17 @@ void add_cec_suite(std::vector<CampaignProblem>& out, const std::string& file, c
     for (const std::int64_t d : dimensions)
         if (std::find(dims.begin(), dims.end(), d) == dims.end()) dims.push_back(d);
     for (const std::int64_t f : functions) {
-        const auto have = cec::data_dimensions(name, static_cast<int>(f));
+        // The dimensions of the official data (the catalog's), checked before any data is read.
+        const auto* item = continuous::catalog().find(name + "-f" + std::to_string(f));
+        if (!item) fail(where, fmt::format("{}-f{} is not in this pride's catalog", name, f));
+        const auto& have = item->entry.dims;
         for (const std::int64_t d : dims)
-            if (std::find(have.begin(), have.end(), d) == have.end()) {
+            if (d < 1 || std::find(have.begin(), have.end(), static_cast<std::size_t>(d)) == have.end()) {
                 std::string list;
-                for (const std::int64_t h : have) list += (list.empty() ? "" : ", ") + std::to_string(h);
+                for (const std::size_t h : have) list += (list.empty() ? "" : ", ") + std::to_string(h);
                 fail(at_column(file, *t.get("dimensions")),
-                     fmt::format("{}-f{} has no official data in dimension {} (it has {}); leave {} out of "
-                                 "'dimensions', or F{} out of 'functions'",
+                     fmt::format("{}-f{} has no official data in dimension {} (the official code and data define "
+                                 "it in {} only); leave {} out of 'dimensions', or F{} out of 'functions'",
                                  name, f, d, list, d, f));
             }
     }
