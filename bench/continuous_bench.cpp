@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <tuple>
@@ -25,6 +26,7 @@
 #include "engine/run.hpp"
 #include "framework/random.hpp"
 #include "problems/continuous/catalog.hpp"
+#include "problems/continuous/cec/functions.hpp"
 #include "problems/continuous/extras.hpp"
 #include "problems/continuous/functions.hpp"
 #include "problems/continuous/yao.hpp"
@@ -277,6 +279,43 @@ void evaluation_cost() {
     }
 }
 
+// --cost-cec: the same routes for every CEC function and dimension (problems/continuous/cec/), on
+// the official data the environment names (PRIDE_CEC2017_DATA, PRIDE_CEC2022_DATA); a suite
+// without its data is skipped with a line on stderr. D = 2 is left out (not a competition size).
+void cec_cost() {
+    fmt::print("function,dim,scalar_ns,batch_ns\n");
+    for (const auto suite : {continuous::cec::Suite::y2017, continuous::cec::Suite::y2022}) {
+        const std::string variable(continuous::cec::data_variable(suite));
+        if (!std::getenv(variable.c_str())) {
+            fmt::print(stderr, "{}: skipped, {} is not set\n", continuous::cec::suite_name(suite), variable);
+            continue;
+        }
+        for (int k = 1; k <= continuous::cec::size(suite); ++k)
+            for (const std::size_t dim : continuous::cec::dimensions(suite, k)) {
+                if (dim == 2) continue;
+                auto f =
+                    continuous::make_function(continuous::cec::info(suite, k).name, static_cast<std::int64_t>(dim));
+                const Matrix x = uniform_points(f.lower(), f.upper(), 7);
+                std::vector<double> values(kCostPopulation);
+                double sink = 0.0;
+                const double scalar = best_ns([&] {
+                    for (Eigen::Index j = 0; j < x.cols(); ++j) {
+                        double v = f.evaluate(column(x, j));
+                        asm volatile("" : "+x"(v) : : "memory");
+                        sink += v;
+                    }
+                });
+                const double batch = best_ns([&] {
+                    f.evaluate_batch(x, values);
+                    asm volatile("" : : "r"(values.data()) : "memory");
+                    sink += values[0];
+                });
+                fmt::print("{},{},{:.1f},{:.1f}\n", f.name(), dim, scalar, batch);
+                if (sink == 42.0) std::fputs("", stderr);
+            }
+    }
+}
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const auto n = v.size();
@@ -321,10 +360,18 @@ int main(int argc, char** argv) {
     bool cost = false;
     app.add_flag("--cost", cost,
                  "instead: the cost of one evaluation by each route (typed, scalar, batch), D 10 and 40");
+    bool cec = false;
+    app.add_flag("--cost-cec", cec,
+                 "instead: the cost of one evaluation of every CEC 2017 and 2022 function (official data from "
+                 "PRIDE_CEC2017_DATA, PRIDE_CEC2022_DATA)");
     CLI11_PARSE(app, argc, argv);
     try {
         if (cost) {
             evaluation_cost();
+            return 0;
+        }
+        if (cec) {
+            cec_cost();
             return 0;
         }
         fmt::print("algo,problem,dim,seed,fevals,best_f,wall_ms\n");

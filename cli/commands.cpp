@@ -191,10 +191,11 @@ std::string problem_facts(const continuous::CatalogEntry& e) {
     static constexpr const char* instances[] = {"transform", "none", "coco"};
     return fmt::format(
         ", \"min_dim\": {}, \"fixed_dim\": {}, \"instances\": {}, \"default_instance\": {}, "
-        "\"suite\": {}, \"number\": {}",
+        "\"suite\": {}, \"number\": {}, \"dims\": {}",
         e.min_dim, e.fixed_dim ? std::to_string(e.fixed_dim) : "null",
         json_string(instances[static_cast<int>(e.instances)]), continuous::default_instance(e),
-        e.suite.empty() ? "null" : json_string(e.suite), e.suite.empty() ? "null" : std::to_string(e.number));
+        e.suite.empty() ? "null" : json_string(e.suite), e.suite.empty() ? "null" : std::to_string(e.number),
+        e.dims.empty() ? "null" : "[" + fmt::format("{}", fmt::join(e.dims, ", ")) + "]");
 }
 
 struct Section {
@@ -212,7 +213,7 @@ int list_command(ListFormat format, std::ostream& out) {
         for (const std::size_t d : item.entry.dims) dims += (dims.empty() ? "" : ", ") + std::to_string(d);
         problems.items.push_back(
             {item.name,
-             item.summary + (!dims.empty()            ? " (dim in " + dims + ")"
+             item.summary + (!dims.empty()          ? " (dim in " + dims + ")"
                              : item.entry.fixed_dim ? " (dim = " + std::to_string(item.entry.fixed_dim) + ")"
                                                     : " (dim >= " + std::to_string(item.entry.min_dim) + ")")});
     }

@@ -24,6 +24,7 @@
 #include "experiment/store_digest.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
+#include "problems/continuous/cec/functions.hpp"
 
 #ifdef PRIDE_HAVE_MPI
 #include <mpi.h>
@@ -126,6 +127,14 @@ std::string settings_digest(const CampaignProblem& p) {
     if (const auto* f = std::get_if<ContinuousSpec>(&p.spec)) {
         h.field("function v1").field(f->function).field(std::to_string(f->dim));
         h.field(std::to_string(p.problem ? p.problem->instance() : f->instance.value_or(0)));
+        // A CEC function is also its data, which the user names (PRIDE_CEC2017_DATA): another folder
+        // or an edited file makes another problem.
+        const auto* item = continuous::catalog().find(f->function);
+        if (item && item->entry.suite.starts_with("cec"))
+            h.field(fmt::format("cec data {:016x}", continuous::cec::data_fingerprint(
+                                                        item->entry.suite == "cec2017" ? continuous::cec::Suite::y2017
+                                                                                       : continuous::cec::Suite::y2022,
+                                                        item->entry.number, static_cast<std::size_t>(f->dim))));
     } else if (const auto* g = std::get_if<GridSpec>(&p.spec)) {
         h.field("grid v1").field(std::to_string(p.inflate));
         h.field(fmt::format("{},{} {},{}", g->start.x, g->start.y, g->goal.x, g->goal.y));

@@ -96,6 +96,8 @@ py::list problems() {
         d["default_instance"] = continuous::default_instance(e);
         d["suite"] = e.suite.empty() ? py::object(py::none()) : py::object(py::str(e.suite));
         d["number"] = e.suite.empty() ? py::object(py::none()) : py::object(py::int_(e.number));
+        // Not None: the only dimensions (a CEC function: where the official data is).
+        d["dims"] = e.dims.empty() ? py::object(py::none()) : py::object(py::cast(e.dims));
         out.append(d);
     }
     return out;

@@ -385,6 +385,19 @@ std::vector<std::size_t> dimensions(Suite suite, int function) {
     return {2, 10, 20};
 }
 
+std::uint64_t data_fingerprint(Suite suite, int function, std::size_t dim) {
+    const auto data = load(suite, function, checked_dim(suite, function, dim), needs(suite, function));
+    std::uint64_t h = 14695981039346656037ULL;
+    const auto add = [&](const void* bytes, std::size_t n) {
+        const auto* p = static_cast<const unsigned char*>(bytes);
+        for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ULL;
+    };
+    add(data->shift.data(), data->shift.size() * sizeof(double));
+    add(data->rotation.data(), data->rotation.size() * sizeof(double));
+    add(data->shuffle.data(), data->shuffle.size() * sizeof(int));
+    return h;
+}
+
 CecFunction::CecFunction(Suite suite, int function, std::size_t dim)
     : BoxFunction(checked_dim(suite, function, dim), cec::info(suite, function)),
       suite_(suite),

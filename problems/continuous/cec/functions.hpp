@@ -9,6 +9,7 @@
 // the report's final version excludes it from the competition for its unstable behaviour.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -33,6 +34,10 @@ double bias(Suite suite, int function) noexcept;
 
 /// The catalog's facts for the function (name "cec2017-f5", the box, f*), a static table.
 const FunctionInfo& info(Suite suite, int function);
+
+/// A 64-bit fingerprint (FNV-1a) of the data the function reads, for stores to tell a resume on
+/// other data (another folder, an edited file) from one on the same; loads the data (once).
+std::uint64_t data_fingerprint(Suite suite, int function, std::size_t dim);
 
 /// One function of one suite in one dimension, with its data. Copies share the (immutable) data and
 /// have their own work vectors, so copies can run on different threads.
