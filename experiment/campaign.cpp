@@ -838,14 +838,13 @@ void apply_suite_rules(Campaign& c) {
                                  "runs for cec2017, 30 for cec2022)");
         c.seeds = cec::suite_rules(*suites.begin())->runs;
     }
-    if (!c.budget.evaluations && !c.budget.iterations && !c.evaluations_per_dim)
-        require(!no_budget, file,
-                suites.empty() ? std::string("missing [budget] with 'evaluations', 'evaluations_per_dim' or "
-                                             "'iterations'")
-                               : "missing [budget] with 'evaluations', 'evaluations_per_dim' or 'iterations': only "
-                                 "the CEC suites' problems have a default budget (CEC 2022's at D = 10 and 20), and "
-                                 "problem '" +
-                                     no_budget->id + "' has none");
+    if (no_budget && !c.budget.evaluations && !c.budget.iterations && !c.evaluations_per_dim)
+        throw InputError(file, suites.empty() ? std::string("missing [budget] with 'evaluations', "
+                                                            "'evaluations_per_dim' or 'iterations'")
+                                              : "missing [budget] with 'evaluations', 'evaluations_per_dim' or "
+                                                "'iterations': only the CEC suites' problems have a default budget "
+                                                "(CEC 2022's at D = 10 and 20), and problem '" +
+                                                    no_budget->id + "' has none");
     // The CEC suites' MaxFES, where the campaign gives no evaluation budget.
     if (!c.budget.evaluations && !c.evaluations_per_dim)
         for (auto& p : c.problems)
