@@ -484,6 +484,28 @@ TEST_CASE("cec suites: a campaign stores each run's budget and its best values a
                       {"records no evaluation budget (MaxFES)"});
 }
 
+TEST_CASE("cec suites: problems without a known f* are left out of the CEC table, and alone refused", "[cec-suites]") {
+    const TempDir dir;
+    const std::string file =
+        dir.write("g.toml", fmt::format("name = \"g\"\nseeds = 2\n[budget]\nevaluations = 300\n"
+                                        "[[problem]]\nid = \"grid10\"\ntype = \"grid\"\nmap = \"{}\"\n"
+                                        "start = [0, 0]\ngoal = [9, 9]\n"
+                                        "[[problem]]\nid = \"sph\"\ntype = \"sphere\"\ndim = 2\n"
+                                        "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n",
+                                        std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map"));
+    const std::string store = dir.file("g.sqlite");
+    auto c = pride::engine::read_campaign(file);
+    (void)pride::engine::run_campaign(c, store, 1);
+    const auto r = run_pride("report " + quoted(store) + " --format cec");
+    REQUIRE(r.status == 0);
+    CHECK_THAT(r.out, Contains("| sph | pso | 2 | 300 | 2 | "));
+    CHECK_THAT(r.out, Contains("\nLeft out: grid10 (no known optimum f*, so no error f - f*).\n"));
+    CHECK(r.out.find("| grid10 |") == std::string::npos);
+    exec_sql(store, "DELETE FROM runs WHERE problem = 'sph'");
+    check_input_error(run_pride("report " + quoted(store) + " --format cec"),
+                      {store + ": holds no run on a problem with a known optimum f*, so it has no CEC errors"});
+}
+
 #if __has_include("tests/cec_synthetic.hpp")
 #include "tests/cec_synthetic.hpp"
 

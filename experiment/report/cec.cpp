@@ -140,8 +140,8 @@ Table make_table(const CampaignStore& store, const std::string& name) {
         cells[{order.at(r.problem), r.algorithm}].push_back(&r);
     }
     require(!cells.empty(), name,
-            "holds no run on a problem with a known optimum f*, so it has no CEC errors (run pride bench first, "
-            "or report it with --format md)");
+            "holds no run on a problem with a known optimum f*, so it has no CEC errors (report it with --format "
+            "md)");
     for (const auto& [key, runs] : cells) {
         const StoredRun& first = *runs.front();
         const StoredProblem& p = *problems.at(first.problem);
