@@ -67,6 +67,12 @@ class Tokens {
         }
     }
     std::string where() const { return name_ + ":" + std::to_string(line_); }
+    /// Nothing but white space left.
+    bool at_end() const {
+        std::size_t p = pos_;
+        while (p < text_.size() && space(text_[p])) ++p;
+        return p == text_.size();
+    }
 
   private:
     std::string_view next(std::size_t wanted) {
@@ -138,6 +144,9 @@ std::vector<double> read_rows(std::string_view text, std::size_t rows, std::size
     Tokens tokens(text, name);
     std::vector<double> out(rows * per_row);
     for (std::size_t r = 0; r < rows; ++r) {
+        if (tokens.at_end())
+            throw InputError(name, "holds " + std::to_string(r) + " rows of numbers where " + std::to_string(rows) +
+                                       " are needed (a truncated or wrong file)");
         for (std::size_t j = 0; j < per_row; ++j) out[r * per_row + j] = tokens.number(rows * per_row);
         if (r + 1 < rows) tokens.skip_line();
     }
@@ -175,7 +184,17 @@ std::shared_ptr<const Data> load(Suite suite, int function, std::size_t dim, Nee
     data->dim = dim;
     data->components = needs.components;
     const std::string m_file = "M_" + f + "_D" + d + ".txt";
-    data->rotation = read_numbers(read(directory, m_file), needs.components * dim * dim, directory + "/" + m_file);
+    const std::vector<double> by_rows =
+        read_numbers(read(directory, m_file), needs.components * dim * dim, directory + "/" + m_file);
+    if (dim < kRotateByColumns) {
+        data->rotation = by_rows;
+    } else {
+        data->rotation.resize(by_rows.size());
+        for (std::size_t c = 0; c < needs.components; ++c)
+            for (std::size_t i = 0; i < dim; ++i)
+                for (std::size_t j = 0; j < dim; ++j)
+                    data->rotation[c * dim * dim + j * dim + i] = by_rows[c * dim * dim + i * dim + j];
+    }
     const std::string s_file = "shift_data_" + f + ".txt";
     const std::string shift_text = read(directory, s_file);
     data->shift = needs.components == 1 ? read_numbers(shift_text, dim, directory + "/" + s_file)

@@ -31,11 +31,17 @@ std::string data_directory(Suite suite, std::string_view problem);
 /// What one function in one dimension reads, in the official loader's layout.
 struct Data {
     std::size_t dim = 0;
-    std::size_t components = 1;    // rows of `shift`, matrices of `rotation` (compositions: > 1)
-    std::vector<double> shift;     // components x dim, row-major (o_i = row i)
-    std::vector<double> rotation;  // components matrices of dim x dim, each row-major, stacked
-    std::vector<int> shuffle;      // 0-based: the official 1-based permutation minus 1 (empty: none)
+    std::size_t components = 1;  // rows of `shift`, matrices of `rotation` (compositions: > 1)
+    std::vector<double> shift;   // components x dim, row-major (o_i = row i)
+    // components matrices of dim x dim, stacked; by rows as in the file, or by columns (the file's
+    // transpose) from dimension kRotateByColumns on, where summing columns as vectors is faster
+    // (kernel.cpp: rotate; either way in the official code's order).
+    std::vector<double> rotation;
+    std::vector<int> shuffle;  // 0-based: the official 1-based permutation minus 1 (empty: none)
 };
+
+/// From this dimension on, rotations are stored and computed by columns (Data::rotation).
+inline constexpr std::size_t kRotateByColumns = 40;
 
 /// What a function needs from the files: `components` shift rows and matrices, `shuffles`
 /// permutations of dim (0: no shuffle file).

@@ -3,6 +3,8 @@
 // values agree with the official code to the last bits the rotation leaves.
 #include "problems/continuous/cec/kernel.hpp"
 
+#include "problems/continuous/cec/data.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -14,11 +16,41 @@ constexpr double kInf = 1.0e99;  // the official INF: cf_cal's weight at a compo
 constexpr double kE = 2.7182818284590452353602874713526625;
 constexpr double kPi = 3.1415926535897932384626433832795029;
 
-using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-void rotate(const double* in, double* out, int nx, const double* mr) {
-    const Eigen::Map<const RowMatrix> m(mr, nx, nx);
-    Eigen::Map<Eigen::VectorXd>(out, nx).noalias() = m * Eigen::Map<const Eigen::VectorXd>(in, nx);
+/// out = M in (Data::rotation's layout for nx): out_i = ((0 + in_0 M_i0) + in_1 M_i1) + ..., the
+/// official rotatefunc's order for every i, so the bits are the official code's. Small matrices by
+/// rows, four rows at once (four independent sums); large ones by columns, each column one Eigen
+/// vector operation over all i.
+void rotate(const double* in, double* out, int nx, const double* m) {
+    if (static_cast<std::size_t>(nx) >= kRotateByColumns) {
+        Eigen::Map<Eigen::VectorXd> o(out, nx);
+        o.setZero();
+        for (int j = 0; j < nx; ++j)
+            o += in[j] * Eigen::Map<const Eigen::VectorXd>(m + static_cast<std::ptrdiff_t>(j) * nx, nx);
+        return;
+    }
+    int i = 0;
+    for (; i + 4 <= nx; i += 4) {
+        const double* m0 = m + static_cast<std::ptrdiff_t>(i) * nx;
+        const double *m1 = m0 + nx, *m2 = m1 + nx, *m3 = m2 + nx;
+        double a0 = 0, a1 = 0, a2 = 0, a3 = 0;
+        for (int j = 0; j < nx; ++j) {
+            const double x = in[j];
+            a0 = a0 + x * m0[j];
+            a1 = a1 + x * m1[j];
+            a2 = a2 + x * m2[j];
+            a3 = a3 + x * m3[j];
+        }
+        out[i] = a0;
+        out[i + 1] = a1;
+        out[i + 2] = a2;
+        out[i + 3] = a3;
+    }
+    for (; i < nx; ++i) {
+        const double* row = m + static_cast<std::ptrdiff_t>(i) * nx;
+        double a = 0;
+        for (int j = 0; j < nx; ++j) a = a + in[j] * row[j];
+        out[i] = a;
+    }
 }
 
 }  // namespace

@@ -16,9 +16,10 @@
 //   5.12/100 for Rastrigin, ...) to its group, unrotated and unshifted.
 // - Levy's w is 1 + (z - 1)/4 in 2017 and 1 + z/4 in 2022.
 //
-// Everything else follows the report. Rotations are Eigen products (the official loop sums in
-// another order: values agree to about 1e-15 relative, not bit for bit). Nothing allocates per
-// evaluation: the work vectors are the Kernel's, sized once.
+// Everything else follows the report. Rotations sum in the official loop's order (kernel.cpp), so values are the
+// official code's bit for bit where the compiler does not contract a * b + c into one instruction (x86-64 without
+// -mfma: the default build and the official code's). Nothing allocates per evaluation: the work vectors are the
+// Kernel's, sized once.
 #include <cstddef>
 #include <vector>
 
@@ -31,7 +32,7 @@ class Kernel {
     explicit Kernel(std::size_t dim) : y_(dim), z_(dim), tmp_(dim) {}
 
     // The official basic functions: x has nx coordinates, Os the shift, Mr the nx x nx rotation
-    // (row-major); s and r say whether to shift and rotate (sr_func's s_flag and r_flag).
+    // (in Data::rotation's layout); s and r say whether to shift and rotate (sr_func's s_flag and r_flag).
     double ellips(const double* x, int nx, const double* os, const double* mr, bool s, bool r);
     double bent_cigar(const double* x, int nx, const double* os, const double* mr, bool s, bool r);
     double discus(const double* x, int nx, const double* os, const double* mr, bool s, bool r);
