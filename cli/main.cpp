@@ -204,7 +204,8 @@ int run_main(int argc, char** argv) {
         ->required()
         ->check(a_path());
     report_cmd->add_option("--format", report.format,
-                           "md (default), csv, latex, or ert-csv (the ERT of a campaign with target precisions)");
+                           "md (default), csv, latex, ert-csv (the ERT of a campaign with target precisions), or cec "
+                           "and cec-csv (the CEC competitions' errors f - f* at their checkpoints)");
     report_cmd->add_option("--plots", report.plots, "write convergence, final-value and path figures (PNG, SVG) here")
         ->check(a_path());
     report_cmd

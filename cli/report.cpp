@@ -21,6 +21,7 @@
 #include "cli/output.hpp"
 #include "experiment/file_name.hpp"
 #include "experiment/html/report_page.hpp"
+#include "experiment/report/cec.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/report/store.hpp"
 #include "framework/error.hpp"
@@ -164,8 +165,9 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
 }  // namespace
 
 int report_command(const ReportOptions& o, std::ostream& out) {
-    require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv", "--format",
-            "expected md, csv, latex or ert-csv, got '" + o.format + "'");
+    const bool cec = o.format == "cec" || o.format == "cec-csv";
+    require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv" || cec, "--format",
+            "expected md, csv, latex, ert-csv, cec or cec-csv, got '" + o.format + "'");
     OutputFiles files;  // committed once what is printed was printed
     if (!o.html.empty()) {
         // The page holds the tables itself; what is printed is where it is.
@@ -175,6 +177,16 @@ int report_command(const ReportOptions& o, std::ostream& out) {
         const html::PageSummary page =
             html::write_report_page(o.stores.front(), o.html, report::ReportOptions{o.raw}, files);
         print_then_commit(out, page.index + ": the report, with " + std::to_string(page.figures) + " figures\n", files);
+        return 0;
+    }
+    if (cec) {
+        // The CEC competitions' table alone (experiment/report/cec.hpp): no comparison, no figures.
+        require(o.plots.empty(), "--plots", "draws the comparison report's figures; give --format md, csv or latex");
+        require(!o.raw, "--raw", "gives values f; the CEC table is of errors f - f* (give --format md, csv or latex)");
+        const std::string name = o.stores.size() == 1 ? o.stores.front() : std::string("report");
+        const report::cec::Table table = report::cec::make_table(report::read_stores(o.stores), name);
+        print_then_commit(out, o.format == "cec" ? report::cec::render_markdown(table) : report::cec::render_csv(table),
+                          files);
         return 0;
     }
     // The whole store is read and checked before any figure is drawn from it.

@@ -403,6 +403,7 @@ void copy_run(RunResult& out, R&& r) {
     out.target_hits = std::move(r.target_hits);
     out.trace_targets = std::move(r.trace_targets);
     out.trace_evaluations = std::move(r.trace_evaluations);
+    out.checkpoints = std::move(r.checkpoints);
 }
 
 /// The reported value of a whole-map planner's path (not an evaluation: GridProblem::result_value);
@@ -626,6 +627,10 @@ Termination Budget::termination(std::size_t dimension, bool grid) const {
                         std::chrono::duration<double, std::milli>(*wall_ms)));
     }
     t.recorded_targets = recorded_targets;
+    for (std::size_t i = 0; i < recorded_evaluations.size(); ++i)
+        require(recorded_evaluations[i] >= 1 && (i == 0 || recorded_evaluations[i] > recorded_evaluations[i - 1]),
+                "recorded_evaluations", "must be evaluation counts >= 1, increasing");
+    t.recorded_evaluations = recorded_evaluations;
     t.stop = stop;
     return t;
 }

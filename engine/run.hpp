@@ -88,6 +88,8 @@ struct RunResult {
     // (evaluations, best so far) at COCO's target and evaluation triggers (framework/coco_trace.hpp),
     // the reference being the problem's f_opt when known: what COCO's .dat and .tdat files hold.
     std::vector<TracePoint> trace_targets, trace_evaluations;
+    // (evaluations, best so far) after each of Budget::recorded_evaluations the run reached.
+    std::vector<TracePoint> checkpoints;
     std::optional<GridOutcome> grid;
 };
 

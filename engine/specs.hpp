@@ -87,6 +87,9 @@ struct Budget {
     // Not a limit: decreasing values whose first reaching each run records exactly
     // (RunResult::target_hits; campaigns: COCO's targets f_opt + 10^k).
     std::vector<double> recorded_targets;
+    // Not a limit either: increasing evaluation counts after each of which the run records its best
+    // value so far (RunResult::checkpoints; campaigns: the CEC reports' checkpoints).
+    std::vector<std::int64_t> recorded_evaluations;
     // Not a limit either: how many threads evaluate one population (1..256). Box algorithms hand
     // callbacks and grids (line and free encodings) a population cut into that many slices, one
     // per thread, with results bit-identical to one thread; continuous functions (cheaper than a

@@ -17,7 +17,9 @@
 #include <thread>
 
 #include "engine/json.hpp"
+#include "experiment/cec_suites.hpp"
 #include "experiment/file_name.hpp"
+#include "experiment/report/cec.hpp"
 #include "experiment/store.hpp"
 #include "experiment/store_digest.hpp"
 #include "framework/error.hpp"
@@ -73,6 +75,10 @@ std::string budget_definition(const Campaign& c) {
     if (c.budget.evaluations) s += fmt::format("evaluations = {}; ", *c.budget.evaluations);
     if (c.evaluations_per_dim) s += fmt::format("evaluations_per_dim = {}; ", *c.evaluations_per_dim);
     if (c.budget.iterations) s += fmt::format("iterations = {}; ", *c.budget.iterations);
+    // No evaluation budget given: the CEC problems run their suites' MaxFES (prepare()).
+    if (!c.budget.evaluations && !c.evaluations_per_dim &&
+        std::any_of(c.problems.begin(), c.problems.end(), [](const CampaignProblem& p) { return p.evaluations; }))
+        s += "evaluations by the CEC suites' rules; ";
     return s.empty() ? s : s.substr(0, s.size() - 2);
 }
 
@@ -261,10 +267,11 @@ constexpr char kSep = '\x1f';
 std::string serialise(const RunRecord& r) {
     return fmt::format(
         "{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}{0}{13}{0}{14}{0}{15}{0}{"
-        "16}",
+        "16}{0}{17}{0}{18}",
         kSep, r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations, r.wall_ms,
         r.optimum ? fmt::format("{:.17g}", *r.optimum) : "", r.solution, r.history, r.history_evaluations,
-        r.target_hits, r.encoding, r.trace_targets, r.trace_evaluations);
+        r.target_hits, r.encoding, r.trace_targets, r.trace_evaluations,
+        r.max_evaluations ? std::to_string(*r.max_evaluations) : "", r.checkpoints);
 }
 
 RunRecord deserialise(const std::string& text) {
@@ -275,7 +282,7 @@ RunRecord deserialise(const std::string& text) {
         if (end == std::string::npos) break;
         start = end + 1;
     }
-    if (f.size() != 16) throw std::runtime_error("MPI: a malformed run record");
+    if (f.size() != 18) throw std::runtime_error("MPI: a malformed run record");
     RunRecord r;
     r.problem = f[0];
     r.algorithm = f[1];
@@ -293,6 +300,8 @@ RunRecord deserialise(const std::string& text) {
     r.encoding = f[13];
     r.trace_targets = f[14];
     r.trace_evaluations = f[15];
+    if (!f[16].empty()) r.max_evaluations = std::stoll(f[16]);
+    r.checkpoints = f[17];
     return r;
 }
 
@@ -799,17 +808,61 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
     return ledger.finish();
 }
 
+/// The CEC suite of a problem's function by the catalog (cec2017-fN and cec2022-fN, from a
+/// [[suite]] or a [[problem]] alike), or nullptr.
+const cec::SuiteRules* cec_rules_of(const ContinuousSpec& f) {
+    const auto* item = continuous::catalog().find(f.function);
+    return item ? cec::suite_rules(item->entry.suite) : nullptr;
+}
+
 }  // namespace
+
+void apply_suite_rules(Campaign& c) {
+    const std::string file = c.file.empty() ? std::string("campaign") : c.file;
+    std::set<std::string_view> suites;
+    const CampaignProblem* other = nullptr;      // the first problem of no CEC suite
+    const CampaignProblem* no_budget = nullptr;  // the first problem without a default budget
+    for (const auto& p : c.problems) {
+        const auto* f = std::get_if<ContinuousSpec>(&p.spec);
+        const cec::SuiteRules* rules = f ? cec_rules_of(*f) : nullptr;
+        if (rules)
+            suites.insert(rules->name);
+        else if (!other)
+            other = &p;
+        if (!no_budget && !(rules && cec::default_evaluations(rules->name, f->dim))) no_budget = &p;
+    }
+    if (c.seeds < 1) {
+        require(c.seeds == 0 && !other && suites.size() == 1, file,
+                suites.empty() ? std::string("missing key 'seeds'")
+                               : "missing key 'seeds': only a campaign of one CEC suite's problems has a default (51 "
+                                 "runs for cec2017, 30 for cec2022)");
+        c.seeds = cec::suite_rules(*suites.begin())->runs;
+    }
+    if (no_budget && !c.budget.evaluations && !c.budget.iterations && !c.evaluations_per_dim)
+        throw InputError(file, suites.empty() ? std::string("missing [budget] with 'evaluations', "
+                                                            "'evaluations_per_dim' or 'iterations'")
+                                              : "missing [budget] with 'evaluations', 'evaluations_per_dim' or "
+                                                "'iterations': only the CEC suites' problems have a default budget "
+                                                "(CEC 2022's at D = 10 and 20), and problem '" +
+                                                    no_budget->id + "' has none");
+    // The CEC suites' MaxFES, where the campaign gives no evaluation budget.
+    if (!c.budget.evaluations && !c.evaluations_per_dim)
+        for (auto& p : c.problems)
+            if (const auto* f = std::get_if<ContinuousSpec>(&p.spec))
+                if (const cec::SuiteRules* rules = cec_rules_of(*f))
+                    p.evaluations = cec::default_evaluations(rules->name, f->dim);
+}
 
 void prepare(Campaign& c) {
     const std::string file = c.file.empty() ? std::string("campaign") : c.file;
     require(!c.name.empty(), file, "missing key 'name'");
-    require(c.seeds >= 1, file, "missing key 'seeds'");
-    require(c.budget.evaluations || c.budget.iterations || c.evaluations_per_dim, file,
+    require(!c.problems.empty() || c.seeds >= 1, file, "missing key 'seeds'");
+    require(!c.problems.empty() || c.budget.evaluations || c.budget.iterations || c.evaluations_per_dim, file,
             "missing [budget] with 'evaluations', 'evaluations_per_dim' or 'iterations'");
     require(!(c.budget.evaluations && c.evaluations_per_dim), file,
             "[budget]: give evaluations or evaluations_per_dim, not both");
     require(!c.problems.empty(), file, "no [[problem]]");
+    apply_suite_rules(c);
     require(!c.algorithms.empty(), file, "no [[algorithm]]");
     require(c.problems.size() <= max_campaign_problems, file,
             fmt::format("{} problems; a campaign has at most {}", c.problems.size(), max_campaign_problems));
@@ -947,6 +1000,10 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     Budget with_targets = budget_of(budget, p);
     if (optimum)
         for (const double precision : coco_precisions()) with_targets.recorded_targets.push_back(*optimum + precision);
+    r.max_evaluations = with_targets.evaluations;
+    if (optimum && with_targets.evaluations)
+        with_targets.recorded_evaluations = report::cec::recorded_evaluations(
+            *with_targets.evaluations, static_cast<std::int64_t>(std::max<std::size_t>(p.problem->dimension(), 1)));
     const RunResult result = run(a.spec, *p.problem, with_targets, static_cast<std::uint64_t>(seed));
     if (result.grid) {
         r.feasible = result.grid->feasible;
@@ -966,6 +1023,7 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     r.history_evaluations = json_integers(result.history_evaluations);
     r.trace_targets = json_trace(result.trace_targets);
     r.trace_evaluations = json_trace(result.trace_evaluations);
+    r.checkpoints = json_trace(result.checkpoints);
     if (optimum) {
         r.target_hits = "[";
         for (std::size_t k = 0; k < coco_precisions().size(); ++k)

@@ -110,6 +110,15 @@ double problem_memory(const ProblemSpec& spec);
 /// with both ids, its place in the set of stored keys), for ids of these lengths.
 double run_list_memory(std::size_t problem_id_length, std::size_t algorithm_id_length);
 
+/// The CEC suites' rules where the campaign leaves them open (docs/campaigns.md, "The CEC
+/// suites"; prepare() applies them first, data-free): without an evaluation budget (evaluations
+/// or evaluations_per_dim), each problem of a CEC suite (cec2017-fN, cec2022-fN, from a [[suite]]
+/// or a [[problem]]) runs its suite's MaxFES (CampaignProblem::evaluations; with iterations too,
+/// whichever ends first), and a campaign without any budget must hold CEC problems only; without
+/// seeds (0), a campaign of one CEC suite's problems runs the competition's number of runs (51
+/// for cec2017, 30 for cec2022, seeds 1..N), any other is refused. InputError naming the file.
+void apply_suite_rules(Campaign& campaign);
+
 /// Checks the campaign and builds every problem once (each map read once): a missing or duplicate
 /// id, a bad problem, an unknown algorithm, a bad parameter, an algorithm that cannot run on a
 /// problem, or a run that would not fit in memory is an InputError naming the file and line (or
@@ -135,6 +144,11 @@ struct RunRecord {
     // JSON [e0, f0, e1, f1, ...]: (evaluations, best so far) at COCO's target triggers and at its
     // evaluation triggers (RunResult::trace_targets, trace_evaluations), null for +inf.
     std::string trace_targets = "[]", trace_evaluations = "[]";
+    // The run's evaluation budget (MaxFES; empty under an iteration budget alone) and, for problems
+    // with a known optimum, JSON [e0, f0, e1, f1, ...]: the best value so far after each of the
+    // CEC reports' checkpoints of that budget (experiment/report/cec.hpp: recorded_evaluations).
+    std::optional<std::int64_t> max_evaluations;
+    std::string checkpoints = "[]";
 };
 
 /// Runs one (problem, algorithm, seed) of a prepared campaign; the same inputs give the same

@@ -13,6 +13,7 @@
 
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "experiment/cec_suites.hpp"
 #include "framework/error.hpp"
 #include "framework/memory.hpp"
 #include "framework/read_file.hpp"
@@ -186,6 +187,75 @@ void add_problem(std::vector<CampaignProblem>& out, const std::string& file, con
     }
 }
 
+/// [[suite]] name = "cec2017" (F1-F30) or "cec2022" (F1-F12), with `functions` (default: all) and
+/// `dimensions`: one problem per (function, dimension), "PREFIX-fN-dD" on cecYYYY-fN. CEC functions
+/// have no instances (the key is refused), and a dimension the official data does not cover for
+/// a function is refused at the key, naming both (cec_suites.hpp), before any data is read.
+void add_cec_suite(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t,
+                   const cec::SuiteRules& rules, Expansion& expansion) {
+    const int line = static_cast<int>(t.source().begin.line);
+    const std::string where = fmt::format("{}:{}", file, line);
+    const std::string name(rules.name);
+    if (const auto* n = t.get("instances"))
+        fail(at_column(file, *n),
+             fmt::format("'instances': {} has no instances (each function is defined once per dimension, by the "
+                         "official data); leave the key out",
+                         name));
+    const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : name;
+    std::vector<std::int64_t> functions, dimensions;
+    for (std::int64_t f = 1; f <= rules.functions; ++f) functions.push_back(f);
+    if (const auto* n = t.get("functions")) functions = need_integers(file, *n, "functions");
+    if (const auto* n = t.get("dimensions"))
+        dimensions = need_integers(file, *n, "dimensions");
+    else
+        fail(where, "a [[suite]] needs 'dimensions' (a list of integers)");
+    if (functions.empty() || dimensions.empty()) fail(where, "the lists of a [[suite]] must not be empty");
+    for (const std::int64_t f : functions)
+        if (f < 1 || f > rules.functions)
+            fail(at_column(file, *t.get("functions")),
+                 fmt::format("function {} is not in the {} suite (1-{})", f, name, rules.functions));
+    // Each dimension once, in the order given.
+    std::vector<std::int64_t> dims;
+    for (const std::int64_t d : dimensions)
+        if (std::find(dims.begin(), dims.end(), d) == dims.end()) dims.push_back(d);
+    for (const std::int64_t f : functions) {
+        // The dimensions of the official data (the catalog's), checked before any data is read.
+        const auto* item = continuous::catalog().find(name + "-f" + std::to_string(f));
+        if (!item) fail(where, fmt::format("{}-f{} is not in this pride's catalog", name, f));
+        const auto& have = item->entry.dims;
+        for (const std::int64_t d : dims)
+            if (d < 1 || std::find(have.begin(), have.end(), static_cast<std::size_t>(d)) == have.end()) {
+                std::string list;
+                for (const std::size_t h : have) list += (list.empty() ? "" : ", ") + std::to_string(h);
+                fail(at_column(file, *t.get("dimensions")),
+                     fmt::format("{}-f{} has no official data in dimension {} (the official code and data define "
+                                 "it in {} only); leave {} out of 'dimensions', or F{} out of 'functions'",
+                                 name, f, d, list, d, f));
+            }
+    }
+    {
+        double memory = 0.0;
+        for (const std::int64_t f : functions)
+            for (const std::int64_t d : dims)
+                memory += problem_memory(ContinuousSpec{name + "-f" + std::to_string(f), d});
+        const bool longer = t.get("functions") && t.get("functions")->as_array() &&
+                            t.get("functions")->as_array()->size() > t.get("dimensions")->as_array()->size();
+        const char* key = longer ? "functions" : "dimensions";
+        expansion.add(functions.size() * dims.size(), memory, at_column(file, *t.get(key)),
+                      fmt::format("'{}': this [[suite]] expands to {} functions x {} dimensions, or", key,
+                                  functions.size(), dims.size()));
+    }
+    for (const std::int64_t f : functions)
+        for (const std::int64_t d : dims) {
+            CampaignProblem p;
+            p.line = line;
+            p.suite = name;
+            p.id = fmt::format("{}-f{}-d{}", prefix, f, d);
+            p.spec = ContinuousSpec{name + "-f" + std::to_string(f), d};
+            out.push_back(std::move(p));
+        }
+}
+
 /// [[suite]]: name = "bbob" (functions 1-24, instances from 1) or "classic" (Yao et al. 1999's
 /// F1-F23, instance 0 as defined), with `functions`, `instances` and `dimensions` lists; one
 /// problem per (function, instance, dimension), "PREFIX-fN-iK-dD" (fixed-dimension functions: their
@@ -199,7 +269,12 @@ void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const
             fail(at(file, value), "unknown key '" + std::string(key.str()) +
                                       "' in a [[suite]] (name, id, functions, instances, dimensions)");
     const std::string name = need_string(file, t, "name", where);
-    if (name != "bbob" && name != "classic") fail(where, "unknown suite '" + name + "' (bbob, classic)");
+    if (cec::suite_rules(name)) {
+        add_cec_suite(out, file, t, *cec::suite_rules(name), expansion);
+        return;
+    }
+    if (name != "bbob" && name != "classic")
+        fail(where, "unknown suite '" + name + "' (bbob, classic, cec2017, cec2022)");
     const bool bbob = name == "bbob";
     const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : name;
     std::vector<std::int64_t> functions, instances, dimensions;
@@ -299,6 +374,12 @@ CampaignAlgorithm read_algorithm(const std::string& file, const toml::table& t) 
 }  // namespace
 
 Campaign read_campaign(const std::string& path) {
+    Campaign c = parse_campaign(path);
+    prepare(c);
+    return c;
+}
+
+Campaign parse_campaign(const std::string& path) {
     Campaign c;
     c.file = path;
     // Read under a cap (framework/read_file.hpp): `pride bench /dev/zero` is refused, not read forever.
@@ -394,7 +475,6 @@ Campaign read_campaign(const std::string& path) {
     if (suites_read)
         std::stable_sort(c.problems.begin(), c.problems.end(),
                          [](const CampaignProblem& a, const CampaignProblem& b) { return a.line < b.line; });
-    prepare(c);
     return c;
 }
 

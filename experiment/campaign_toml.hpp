@@ -11,4 +11,8 @@ namespace pride::engine {
 /// Reads, checks and prepares (campaign.hpp: prepare) the campaign file at `path`.
 Campaign read_campaign(const std::string& path);
 
+/// read_campaign without prepare(): the file read and checked, its suites and instance lists
+/// expanded, no problem built (so no map or data file read; the campaign's defaults not applied).
+Campaign parse_campaign(const std::string& path);
+
 }  // namespace pride::engine

@@ -200,6 +200,10 @@ class Store {
             // stored before it.
             add_column("runs", "trace_targets", "TEXT NOT NULL DEFAULT '[]'");
             add_column("runs", "trace_evaluations", "TEXT NOT NULL DEFAULT '[]'");
+            // The run's evaluation budget and its best values at the CEC reports' checkpoints (issue
+            // 26); NULL and '[]' for runs stored before them.
+            add_column("runs", "max_evaluations", "INTEGER");
+            add_column("runs", "checkpoints", "TEXT NOT NULL DEFAULT '[]'");
             exec("COMMIT");
             exec("PRAGMA synchronous=NORMAL");
         } catch (...) {
@@ -636,8 +640,8 @@ class Store {
         sqlite3_stmt* s = cached(
             insert_,
             "INSERT OR IGNORE INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, "
-            "optimum, solution, history, history_evaluations, target_hits, encoding, trace_targets, trace_evaluations) "
-            "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+            "optimum, solution, history, history_evaluations, target_hits, encoding, trace_targets, trace_evaluations, "
+            "max_evaluations, checkpoints) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
         sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_int64(s, 3, r.seed);
@@ -658,6 +662,11 @@ class Store {
         sqlite3_bind_text(s, 14, r.encoding.c_str(), -1, SQLITE_STATIC);
         sqlite3_bind_text(s, 15, r.trace_targets.c_str(), -1, SQLITE_STATIC);
         sqlite3_bind_text(s, 16, r.trace_evaluations.c_str(), -1, SQLITE_STATIC);
+        if (r.max_evaluations)
+            sqlite3_bind_int64(s, 17, *r.max_evaluations);
+        else
+            sqlite3_bind_null(s, 17);
+        sqlite3_bind_text(s, 18, r.checkpoints.c_str(), -1, SQLITE_STATIC);
         step_cached(s, "cannot write the store");
         const std::size_t added = static_cast<std::size_t>(sqlite3_changes(db_));
         s = cached(unclaim_, "DELETE FROM claims WHERE problem = ? AND algorithm = ? AND seed = ?");

@@ -8,8 +8,10 @@
 //   2: runs.trace_targets and runs.trace_evaluations, COCO's trace of each run (issue 24)
 //   3: problems.digest, SHA-256 digests of each problem's map and settings (issue 25); NULL in a
 //      store migrated from before, filled from the campaign of its first resume
+//   4: runs.max_evaluations and runs.checkpoints, each run's evaluation budget and its best values
+//      at the CEC reports' checkpoints (issue 26); NULL and '[]' for runs stored before
 namespace pride::engine {
 
-inline constexpr int store_schema = 3;
+inline constexpr int store_schema = 4;
 
 }  // namespace pride::engine

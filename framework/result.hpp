@@ -27,6 +27,9 @@ struct BasicResult {
     /// (evaluations, best so far) at COCO's target triggers and at its evaluation triggers
     /// (framework/coco_trace.hpp): what COCO's .dat and .tdat files hold.
     std::vector<TracePoint> trace_targets, trace_evaluations;
+    /// (evaluations, best so far) after each of Termination::recorded_evaluations the run reached,
+    /// taken at that very evaluation (not at the end of its iteration).
+    std::vector<TracePoint> checkpoints;
     double wall_ms = 0.0;  // from population set-up to the end of the run
 };
 

@@ -42,6 +42,8 @@ class BasicRunState {
           trace_(termination.optimum.value_or(0.0), dimension) {
         if constexpr (is_point) best_x_.assign(dimension, std::numeric_limits<double>::quiet_NaN());
         target_hits_.reserve(termination.recorded_targets.size());
+        checkpoints_.reserve(termination.recorded_evaluations.size());
+        if (!termination.recorded_evaluations.empty()) next_checkpoint_ = termination.recorded_evaluations.front();
         progress_.start = Clock::now();
     }
 
@@ -61,6 +63,7 @@ class BasicRunState {
                 best_x_ = x;
         }
         trace_.record(progress_.evaluations, progress_.best, better);
+        checkpoint();
         return f;
     }
 
@@ -74,6 +77,7 @@ class BasicRunState {
         ++progress_.evaluations;
         const double f = sanitize(problem.evaluate(x));
         trace_.record(progress_.evaluations, progress_.best, false);
+        checkpoint();
         return f;
     }
 
@@ -94,6 +98,7 @@ class BasicRunState {
                     std::copy_n(points.col(j).data(), points.rows(), best_x_.begin());
                 }
                 trace_.record(progress_.evaluations, progress_.best, better);
+                checkpoint();
             }
         } else {
             for (Eigen::Index j = 0; j < n; ++j)
@@ -143,10 +148,25 @@ class BasicRunState {
         r.target_hits = std::move(target_hits_);
         r.trace_targets = std::move(trace_.targets());
         r.trace_evaluations = std::move(trace_.evaluations());
+        r.checkpoints = std::move(checkpoints_);
         return r;
     }
 
   private:
+    /// After every evaluation: at each of Termination::recorded_evaluations, the best value so far
+    /// (one compare in the common case).
+    void checkpoint() {
+        if (progress_.evaluations == next_checkpoint_) [[unlikely]]
+            record_checkpoint();
+    }
+
+    [[gnu::noinline]] void record_checkpoint() {
+        checkpoints_.push_back({progress_.evaluations, progress_.best});
+        const auto& wanted = termination_.recorded_evaluations;
+        next_checkpoint_ = checkpoints_.size() < wanted.size() ? wanted[checkpoints_.size()]
+                                                               : std::numeric_limits<std::int64_t>::max();
+    }
+
     /// A new best value (rare): the targets it reaches are recorded with the evaluation count.
     void improved(double f) {
         progress_.best = f;
@@ -163,6 +183,8 @@ class BasicRunState {
     std::vector<std::int64_t> history_evaluations_;
     std::vector<std::int64_t> target_hits_;
     CocoTrace trace_;
+    std::vector<TracePoint> checkpoints_;
+    std::int64_t next_checkpoint_ = std::numeric_limits<std::int64_t>::max();
     bool started_ = false;
 };
 

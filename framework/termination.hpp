@@ -38,6 +38,9 @@ class Termination {
     // Not a stopping rule: f_opt when known, the reference of the run's COCO trace
     // (Result::trace_targets); without it the trace's triggers follow the values themselves.
     std::optional<double> optimum;
+    // Not a stopping rule: evaluation counts, increasing, after each of which the evaluation guard
+    // records the best value so far (Result::checkpoints; campaigns: the CEC reports' checkpoints).
+    std::vector<std::int64_t> recorded_evaluations;
     // Not a limit: a flag set from outside the run's loop (an observer asking to stop, a front end
     // cancelling), read with the other rules once per iteration; unset costs one test.
     std::shared_ptr<const std::atomic<bool>> stop;
@@ -60,6 +63,9 @@ class Termination {
         if (max_iterations) require(*max_iterations >= 0, where, "the iteration limit must be >= 0");
         for (std::size_t i = 1; i < recorded_targets.size(); ++i)
             require(recorded_targets[i] <= recorded_targets[i - 1], where, "recorded targets must not increase");
+        for (std::size_t i = 0; i < recorded_evaluations.size(); ++i)
+            require(recorded_evaluations[i] >= 1 && (i == 0 || recorded_evaluations[i] > recorded_evaluations[i - 1]),
+                    where, "recorded evaluation counts must be >= 1 and increase");
     }
 
     /// The number of iterations T that schedules (inertia weight, step sizes) run over: the
@@ -88,6 +94,7 @@ class Termination {
         tighter(a.target, b.target, max);
         tighter(a.wall_time, b.wall_time, min);
         if (a.recorded_targets.empty()) a.recorded_targets = b.recorded_targets;
+        if (a.recorded_evaluations.empty()) a.recorded_evaluations = b.recorded_evaluations;
         if (!a.optimum) a.optimum = b.optimum;
         if (!a.stop) a.stop = b.stop;
         return a;

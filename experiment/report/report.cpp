@@ -33,25 +33,8 @@ std::optional<double> evaluations_to(double target, const StoredRun& run) {
     return std::nullopt;
 }
 
-double median_of(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-double mean_of(const std::vector<double>& v) {
-    return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
-
-/// The sample standard deviation (n - 1); 0 for a single run, +inf when a value is infinite.
-double std_of(const std::vector<double>& v) {
-    if (v.size() < 2) return 0.0;
-    if (std::any_of(v.begin(), v.end(), [](double x) { return std::isinf(x); })) return inf;
-    const double m = mean_of(v);
-    double s = 0.0;
-    for (double x : v) s += (x - m) * (x - m);
-    return std::sqrt(s / static_cast<double>(v.size() - 1));
-}
+using stats::mean_of;
+using stats::median_of;
 
 /// For reading: 6 significant digits.
 std::string num(double v) {
@@ -366,7 +349,7 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
             r.min = *std::min_element(c.best.begin(), c.best.end());
             r.max = *std::max_element(c.best.begin(), c.best.end());
             r.mean = mean_of(c.best);
-            r.std = std_of(c.best);
+            r.std = stats::sample_std(c.best);
             r.median = median_of(c.best);
             r.mean_wall_ms = mean_of(c.wall_ms);
             r.mean_evaluations = mean_of(c.evaluations);
@@ -444,9 +427,13 @@ ReportData load_report(const std::string& path, const ReportOptions& options) {
     return make_report(store, options);
 }
 
-ReportData load_report(const std::vector<std::string>& paths, const ReportOptions& options) {
+CampaignStore read_stores(const std::vector<std::string>& paths) {
     require(!paths.empty(), "report", "give a store");
-    if (paths.size() == 1) return load_report(paths.front(), options);
+    if (paths.size() == 1) {
+        CampaignStore store = read_store(paths.front());
+        require(!store.runs.empty(), paths.front(), "holds no runs yet (run pride bench first)");
+        return store;
+    }
     CampaignStore all = read_store(paths.front());
     std::map<std::string, StoredProblem> problems;
     if (all.problems)
@@ -482,7 +469,8 @@ ReportData load_report(const std::vector<std::string>& paths, const ReportOption
         if (fresh) continue;
         const StoredRun& o = *it->second;
         require(o.best == r.best && o.evaluations == r.evaluations && o.history == r.history &&
-                    o.history_evaluations == r.history_evaluations && o.target_hits == r.target_hits,
+                    o.history_evaluations == r.history_evaluations && o.target_hits == r.target_hits &&
+                    o.max_evaluations == r.max_evaluations && o.checkpoints == r.checkpoints,
                 "report",
                 fmt::format("run (problem '{}', algorithm '{}', seed {}) differs between the stores; they cannot be "
                             "reported as one",
@@ -495,7 +483,11 @@ ReportData load_report(const std::vector<std::string>& paths, const ReportOption
         for (auto& [id, p] : problems) all.problems->push_back(p);
     }
     require(!all.runs.empty(), "report", "the stores hold no runs yet (run pride bench first)");
-    return make_report(all, options);
+    return all;
+}
+
+ReportData load_report(const std::vector<std::string>& paths, const ReportOptions& options) {
+    return make_report(read_stores(paths), options);
 }
 
 std::string render_markdown(const ReportData& report) {

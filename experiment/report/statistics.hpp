@@ -19,6 +19,29 @@
 
 namespace pride::stats {
 
+/// The mean of `values` (not empty).
+inline double mean_of(std::span<const double> values) {
+    return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+}
+
+/// The median of `values` (not empty): the mean of the two middle values for an even count.
+inline double median_of(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+/// The sample standard deviation (n - 1); 0 for a single value, +inf when a value is infinite.
+inline double sample_std(std::span<const double> values) {
+    if (values.size() < 2) return 0.0;
+    if (std::any_of(values.begin(), values.end(), [](double x) { return std::isinf(x); }))
+        return std::numeric_limits<double>::infinity();
+    const double m = mean_of(values);
+    double s = 0.0;
+    for (const double x : values) s += (x - m) * (x - m);
+    return std::sqrt(s / static_cast<double>(values.size() - 1));
+}
+
 /// Ranks 1..n of `values`, ties sharing the average of their ranks (NaN not allowed).
 inline std::vector<double> average_ranks(std::span<const double> values) {
     std::vector<std::size_t> order(values.size());

@@ -464,11 +464,12 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
             store.problems->push_back(std::move(p));
         }
     }
-    Query q(db, fmt::format("SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, "
-                            "history_evaluations, {}, {}, {}, {} FROM runs ORDER BY problem, algorithm, seed",
-                            has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"),
-                            optional_column(run_columns, "trace_targets"),
-                            optional_column(run_columns, "trace_evaluations"))
+    Query q(db, fmt::format(
+                    "SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, "
+                    "history_evaluations, {}, {}, {}, {}, {}, {} FROM runs ORDER BY problem, algorithm, seed",
+                    has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"),
+                    optional_column(run_columns, "trace_targets"), optional_column(run_columns, "trace_evaluations"),
+                    optional_column(run_columns, "max_evaluations"), optional_column(run_columns, "checkpoints"))
                     .c_str());
     while (q.next()) {
         // Named by rowid until its key is read, then by the key.
@@ -506,6 +507,11 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
         if (!q.is_null(11)) r.encoding = q.text(11, "encoding");
         r.trace_targets = trace(q, 12, "trace_targets", r.evaluations);
         r.trace_evaluations = trace(q, 13, "trace_evaluations", r.evaluations);
+        r.max_evaluations = q.optional_integer(14, "max_evaluations", 1);
+        if (r.max_evaluations && *r.max_evaluations < r.evaluations)
+            q.fail("max_evaluations", fmt::format("expected at least the run's {} evaluations, got {}", r.evaluations,
+                                                  *r.max_evaluations));
+        r.checkpoints = trace(q, 15, "checkpoints", r.evaluations);
         // The analysis of target hits (experiment/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.
         if (store.precisions && has_problems && !problem_ids.count(r.problem))

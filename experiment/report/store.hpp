@@ -53,6 +53,11 @@ struct StoredRun {
     // COCO's trace (framework/coco_trace.hpp): (evaluations, best so far, +inf before a finite
     // value) at its target and at its evaluation triggers; empty for runs stored before it.
     std::vector<TracePoint> trace_targets, trace_evaluations;
+    // The run's evaluation budget (MaxFES), and (evaluations, best so far) at the CEC reports'
+    // checkpoints of it (experiment/report/cec.hpp), for problems with a known f_opt: empty for runs
+    // stored before store schema 4 and for runs under an iteration budget alone.
+    std::optional<std::int64_t> max_evaluations;
+    std::vector<TracePoint> checkpoints;
 };
 
 struct StoredProblem {
