@@ -8,38 +8,19 @@
 #include <map>
 #include <set>
 
+#include "experiment/report/cells.hpp"
 #include "experiment/report/statistics.hpp"
 #include "framework/error.hpp"
 
 namespace pride::report::cec {
 namespace {
 
+using cells::csv;
+using cells::exact;
+using cells::markdown;
+using cells::num;
+
 constexpr double inf = std::numeric_limits<double>::infinity();
-
-/// For reading: 6 significant digits, as the other tables.
-std::string num(double v) {
-    return std::isfinite(v) ? fmt::format("{:.6g}", v) : "inf";
-}
-
-/// For reading back: the shortest form that parses to the same double.
-std::string exact(double v) {
-    return std::isfinite(v) ? fmt::format("{}", v) : "inf";
-}
-
-/// A CSV field, quoted as RFC 4180 says when it holds a comma, a quote or a line break.
-std::string csv(const std::string& s) {
-    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-    std::string out = "\"";
-    for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
-/// Text for a markdown table cell: a | would start a new column.
-std::string markdown(const std::string& s) {
-    std::string out;
-    for (const char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
-    return out;
-}
 
 std::string run_name(const StoredRun& r) {
     return fmt::format("run (problem '{}', algorithm '{}', seed {})", r.problem, r.algorithm, r.seed);
