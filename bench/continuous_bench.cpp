@@ -21,6 +21,7 @@
 #include <string>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "engine/run.hpp"
@@ -226,6 +227,27 @@ Matrix uniform_points(std::span<const double> lo, std::span<const double> hi, st
     return x;
 }
 
+/// The catalog's two routes on the points x: Function::evaluate point by point, and
+/// Function::evaluate_batch on them all; ns per evaluation.
+std::pair<double, double> catalog_routes_ns(continuous::Function& f, const Matrix& x) {
+    std::vector<double> values(static_cast<std::size_t>(x.cols()));
+    double sink = 0.0;
+    const double scalar = best_ns([&] {
+        for (Eigen::Index j = 0; j < x.cols(); ++j) {
+            double v = f.evaluate(column(x, j));
+            asm volatile("" : "+x"(v) : : "memory");
+            sink += v;
+        }
+    });
+    const double batch = best_ns([&] {
+        f.evaluate_batch(x, values);
+        asm volatile("" : : "r"(values.data()) : "memory");
+        sink += values[0];
+    });
+    if (sink == 42.0) std::fputs("", stderr);
+    return {scalar, batch};
+}
+
 /// One CSV row per (function, D, instance): typed_ns (instance 0 with a typed class only),
 /// scalar_ns, batch_ns.
 template <class Typed = void>
@@ -233,7 +255,6 @@ void cost_row(const std::string& name, std::int64_t dim) {
     for (const std::int64_t instance : {0, 1}) {
         auto f = continuous::make_function(name, dim, name.starts_with("bbob") ? instance + 1 : instance);
         const Matrix x = uniform_points(f.lower(), f.upper(), 7);
-        std::vector<double> values(kCostPopulation);
         double sink = 0.0;
         std::string typed = "";
         if constexpr (!std::is_void_v<Typed>) {
@@ -248,18 +269,7 @@ void cost_row(const std::string& name, std::int64_t dim) {
                                     }));
             }
         }
-        const double scalar = best_ns([&] {
-            for (Eigen::Index j = 0; j < x.cols(); ++j) {
-                double v = f.evaluate(column(x, j));
-                asm volatile("" : "+x"(v) : : "memory");
-                sink += v;
-            }
-        });
-        const double batch = best_ns([&] {
-            f.evaluate_batch(x, values);
-            asm volatile("" : : "r"(values.data()) : "memory");
-            sink += values[0];
-        });
+        const auto [scalar, batch] = catalog_routes_ns(f, x);
         fmt::print("{},{},{},{},{:.2f},{:.2f}\n", name, dim, f.instance(), typed, scalar, batch);
         if (sink == 42.0) std::fputs("", stderr);
     }
@@ -295,23 +305,8 @@ void cec_cost() {
                 if (dim == 2) continue;
                 auto f =
                     continuous::make_function(continuous::cec::info(suite, k).name, static_cast<std::int64_t>(dim));
-                const Matrix x = uniform_points(f.lower(), f.upper(), 7);
-                std::vector<double> values(kCostPopulation);
-                double sink = 0.0;
-                const double scalar = best_ns([&] {
-                    for (Eigen::Index j = 0; j < x.cols(); ++j) {
-                        double v = f.evaluate(column(x, j));
-                        asm volatile("" : "+x"(v) : : "memory");
-                        sink += v;
-                    }
-                });
-                const double batch = best_ns([&] {
-                    f.evaluate_batch(x, values);
-                    asm volatile("" : : "r"(values.data()) : "memory");
-                    sink += values[0];
-                });
+                const auto [scalar, batch] = catalog_routes_ns(f, uniform_points(f.lower(), f.upper(), 7));
                 fmt::print("{},{},{:.1f},{:.1f}\n", f.name(), dim, scalar, batch);
-                if (sink == 42.0) std::fputs("", stderr);
             }
     }
 }
