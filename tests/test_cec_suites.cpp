@@ -22,6 +22,7 @@
 #include "experiment/report/cec.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/report/store.hpp"
+#include "tests/cec_synthetic.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/sqlite_support.hpp"
 #include "tests/test_support.hpp"
@@ -506,9 +507,6 @@ TEST_CASE("cec suites: problems without a known f* are left out of the CEC table
                       {store + ": holds no run on a problem with a known optimum f*, so it has no CEC errors"});
 }
 
-#if __has_include("tests/cec_synthetic.hpp")
-#include "tests/cec_synthetic.hpp"
-
 TEST_CASE("cec suites: the example campaign runs as the docs say and its CEC table reads", "[cec-suites]") {
     // The commands of docs/campaigns.md's sh block on examples/campaigns/cec2017-small.toml, run as
     // written (`pride` the one just built, first on PATH) in a folder laid out as the top of a
@@ -565,4 +563,3 @@ TEST_CASE("cec suites: the example campaign runs as the docs say and its CEC tab
     CHECK_THAT(report, Contains("| 0.01 | 1000 | "));
     CHECK_THAT(report, Contains("| 1.0 | 100000 | "));
 }
-#endif

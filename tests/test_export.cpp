@@ -1,11 +1,13 @@
 // `pride export STORE --ioh DIR`: IOHprofiler .info/.dat files from a real campaign store.
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "tests/cec_synthetic.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 
@@ -87,4 +89,30 @@ TEST_CASE("export: BBOB's f1 and the classic suite's F1 are two IOH functions", 
     CHECK(slurp(a / "IOHprofiler_f1_Sphere.info").rfind("suite = \"BBOB\", funcId = 1, funcName = \"Sphere\"", 0) == 0);
     CHECK(slurp(a / "IOHprofiler_f101_yao-f1.info")
               .rfind("suite = \"classic\", funcId = 101, funcName = \"yao-f1\"", 0) == 0);
+}
+
+TEST_CASE("export: the CEC suites' F1 are IOH functions of their own, apart from the classic F1", "[export][cec]") {
+    // On synthetic data in the official format (tests/cec_synthetic.hpp): the ids do not depend on it.
+    const pride::test::TempDir tmp("pride-ioh-cec");
+    for (const int year : {2017, 2022})
+        pride::test::cec_synthetic::write_input_data(tmp.file("data" + std::to_string(year)), year);
+    const std::string file = tmp.write("c.toml",
+                                       "name = \"ids\"\nseeds = 1\n[budget]\nevaluations = 100\n"
+                                       "[[problem]]\nid = \"y\"\ntype = \"yao-f1\"\ndim = 2\n"
+                                       "[[suite]]\nname = \"cec2017\"\nfunctions = [1]\ndimensions = [10]\n"
+                                       "[[suite]]\nname = \"cec2022\"\nfunctions = [1]\ndimensions = [10]\n"
+                                       "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n");
+    const std::string data =
+        "PRIDE_CEC2017_DATA='" + tmp.file("data2017") + "' PRIDE_CEC2022_DATA='" + tmp.file("data2022") + "' ";
+    const std::string bench =
+        data + "'" + PRIDE_EXE + "' bench '" + file + "' --out '" + tmp.file("c.sqlite") + "' >/dev/null 2>&1";
+    REQUIRE(std::system(bench.c_str()) == 0);
+    REQUIRE(pride::test::run_pride("export '" + tmp.file("c.sqlite") + "' --ioh '" + tmp.file("ioh") + "'").status ==
+            0);
+    const fs::path a = fs::path(tmp.file("ioh")) / "pso";
+    CHECK(slurp(a / "IOHprofiler_f101_yao-f1.info").rfind("suite = \"classic\", funcId = 101", 0) == 0);
+    CHECK(slurp(a / "IOHprofiler_f201_cec2017-f1.info")
+              .rfind("suite = \"cec2017\", funcId = 201, funcName = \"cec2017-f1\"", 0) == 0);
+    CHECK(slurp(a / "IOHprofiler_f301_cec2022-f1.info")
+              .rfind("suite = \"cec2022\", funcId = 301, funcName = \"cec2022-f1\"", 0) == 0);
 }

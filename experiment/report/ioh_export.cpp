@@ -46,8 +46,13 @@ const char* ioh_bbob_name(std::int64_t fid) {
 
 /// The function ids, disjoint across kinds so that no two problems share one in IOHanalyzer (which
 /// tells functions apart by id): BBOB's fid (1-24, IOH's own), 100 + N for the classic suite's F_N
-/// (Yao's F1 is not BBOB's f1), 1000 + the position in the campaign for any other problem.
-constexpr std::int64_t classic_ids = 100, other_ids = 1000;
+/// (Yao's F1 is not BBOB's f1), 200 + N for CEC 2017's, 300 + N for CEC 2022's, 1000 + the
+/// position in the campaign for any other problem.
+constexpr std::int64_t other_ids = 1000;
+
+std::int64_t suite_ids(const std::string& suite) {
+    return suite == "cec2017" ? 200 : suite == "cec2022" ? 300 : 100;
+}
 
 /// One IOHprofiler function: a .info file and, per dimension, a .dat file.
 struct Function {
@@ -95,7 +100,7 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
             const bool in_suite = p.suite && p.fid;
             const bool bbob = in_suite && *p.suite == "bbob" && ioh_bbob_name(*p.fid);
             const std::int64_t id = bbob       ? *p.fid
-                                    : in_suite ? classic_ids + *p.fid
+                                    : in_suite ? suite_ids(*p.suite) + *p.fid
                                                : other_ids + static_cast<std::int64_t>(f + 1);
             const std::string name = bbob ? ioh_bbob_name(*p.fid) : in_suite ? p.function.value_or(p.id) : p.id;
             Function& fn = functions[{in_suite ? 0 : 1, id, name}];
