@@ -174,6 +174,17 @@ constexpr Component hyb(int index) {
     return Component{B::ellips, 1, 1, true, index};
 }
 
+// The components of the code's cf06 and cf07, which both years use (2017 F26, F27; 2022 F11, F12)
+// with their own deltas and biases.
+constexpr std::array<Component, 6> kCf06{
+    {{B::escaffer6, 10000, 2e7}, {B::schwefel}, {B::griewank, 1000, 100}, {B::rosenbrock}, {B::rastrigin, 10000, 1e3}}};
+constexpr std::array<Component, 6> kCf07{{{B::hgbat, 10000, 1000},
+                                          {B::rastrigin, 10000, 1e3},
+                                          {B::schwefel, 10000, 4e3},
+                                          {B::bent_cigar, 10000, 1e30},
+                                          {B::ellips, 10000, 1e10},
+                                          {B::escaffer6, 10000, 2e7}}};
+
 // 2017 cf01-cf10 (F21-F30).
 const std::array<Composition, 10> kComposition2017{{
     {3, {{{B::rosenbrock}, {B::ellips, 10000, 1e10}, {B::rastrigin}}}, {10, 20, 30}, {0, 100, 200}},
@@ -194,23 +205,8 @@ const std::array<Composition, 10> kComposition2017{{
        {B::rosenbrock}}},
      {10, 20, 30, 40, 50},
      {0, 100, 200, 300, 400}},
-    {5,
-     {{{B::escaffer6, 10000, 2e7},
-       {B::schwefel},
-       {B::griewank, 1000, 100},
-       {B::rosenbrock},
-       {B::rastrigin, 10000, 1e3}}},
-     {10, 20, 20, 30, 40},
-     {0, 100, 200, 300, 400}},
-    {6,
-     {{{B::hgbat, 10000, 1000},
-       {B::rastrigin, 10000, 1e3},
-       {B::schwefel, 10000, 4e3},
-       {B::bent_cigar, 10000, 1e30},
-       {B::ellips, 10000, 1e10},
-       {B::escaffer6, 10000, 2e7}}},
-     {10, 20, 30, 40, 50, 60},
-     {0, 100, 200, 300, 400, 500}},
+    {5, kCf06, {10, 20, 20, 30, 40}, {0, 100, 200, 300, 400}},
+    {6, kCf07, {10, 20, 30, 40, 50, 60}, {0, 100, 200, 300, 400, 500}},
     {6,
      {{{B::ackley, 1000, 100},
        {B::griewank, 1000, 100},
@@ -236,23 +232,8 @@ const std::array<Composition, 4> kComposition2022{{
      {10, 20, 30, 40, 50},
      {0, 200, 300, 100, 400}},
     {3, {{{B::schwefel, 1, 1, false}, {B::rastrigin}, {B::hgbat}}}, {20, 10, 10}, {0, 200, 100}},
-    {5,
-     {{{B::escaffer6, 10000, 2e7},
-       {B::schwefel},
-       {B::griewank, 1000, 100},
-       {B::rosenbrock},
-       {B::rastrigin, 10000, 1e3}}},
-     {20, 20, 30, 30, 20},
-     {0, 200, 300, 400, 200}},
-    {6,
-     {{{B::hgbat, 10000, 1000},
-       {B::rastrigin, 10000, 1e3},
-       {B::schwefel, 10000, 4e3},
-       {B::bent_cigar, 10000, 1e30},
-       {B::ellips, 10000, 1e10},
-       {B::escaffer6, 10000, 2e7}}},
-     {10, 20, 30, 40, 50, 60},
-     {0, 300, 500, 100, 400, 200}},
+    {5, kCf06, {20, 20, 30, 30, 20}, {0, 200, 300, 400, 200}},
+    {6, kCf07, {10, 20, 30, 40, 50, 60}, {0, 300, 500, 100, 400, 200}},
 }};
 
 // 2017 F1-F10 and 2022 F1-F5: one basic function, shifted and rotated.
