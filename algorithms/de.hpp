@@ -36,10 +36,11 @@
 //   (7) the Reduction policy (L): the worst individuals are removed, the archive resized;
 //   (8) the population (its current N columns) is recorded and shown to the observer.
 // Decided by this project where the papers are silent: DE's NP rule is 10 D (Storn and Price
-// recommend 5 D to 10 D); ties replace in DE and jDE (Storn's own code takes u when f(u) <= f(x)),
-// not in JADE (its pseudo-code keeps x_i when f(x_i) <= f(u_i)); the bound handling is JADE's
-// midpoint for every entry by default (de and jde's papers name none; `ClampRepair` is the
-// alternative); jSO's N_init = round(25 ln D sqrt D) is at least 4 (D = 1 gives 0); a schedule
+// recommend 5 D to 10 D); ties replace in DE and jDE (Storn's and Tanabe's codes take u when
+// f(u) <= f(x)), not in JADE (its pseudo-code keeps x_i when f(x_i) <= f(u_i)); the bound
+// handling is JADE's midpoint for every entry by default (de and jde's papers name none; Tanabe's
+// jDE code uses the midpoint too; `ClampRepair` is the alternative); jDE starts from F_i = 0.5,
+// CR_i = 0.9 (as Tanabe's jDE code); jSO's N_init = round(25 ln D sqrt D) is at least 4 (D = 1 gives 0); a schedule
 // over the budget (LPSR, jSO's p, F and CR rules) runs over nfes / max_nfes, max_nfes the
 // evaluation limit, so a run without one is refused; draws come from the run's Rng in a fixed
 // order (bit identity with the papers' codes and their rand() is not sought, equality in

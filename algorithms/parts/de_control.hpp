@@ -22,7 +22,8 @@
 //   (P1) fixed:   F_i = F, CR_i = CR                                               (Storn and Price)
 //   (P2) jDE:     F_i <- F_l + U(0,1) F_u if U(0,1) < tau1, else F_i (the draw order: the test,
 //                 then the value); CR_i <- U(0,1) if U(0,1) < tau2, else CR_i; both kept with
-//                 the vector only when its trial replaces it                       (Brest et al. 2006)
+//                 the vector only when its trial replaces it; F_i = 0.5, CR_i = 0.9 at the
+//                 start (Tanabe's jDE code)                                         (Brest et al. 2006)
 //   (P3) JADE:    CR_i = randn(mu_CR) clipped to [0, 1]; F_i = randc(mu_F), drawn again while
 //                 <= 0, 1 if above 1                                               (Zhang and Sanderson)
 //   (P4) SHADE, L-SHADE, jSO: a slot r ~ U{0..H-1} of the memory; CR_i = randn(M_CR,r) clipped to
