@@ -234,18 +234,22 @@ class De {
         while (!state.done()) {
             const de::Spent spent{state.progress().evaluations, limit};
             const auto order_n = std::span<std::size_t>(order).first(n);
-            de::rank(fx, order_n);                   // (1)
+            de::rank(fx, order_n);  // (1)
+            // The draws of (2) and (3) come from a local copy of the generator, put back after:
+            // its state stays in registers (the same draws in the same order).
+            Rng local = rng;
             de::visit(control, [&](const auto& c) {  // (2)
-                for (std::size_t i = 0; i < n; ++i) params[i] = c.sample(adaptation, i, spent, rng);
+                for (std::size_t i = 0; i < n; ++i) params[i] = c.sample(adaptation, i, spent, local);
             });
             const de::Generation g{x, order_n, &archived.members(), archived.size(), spent};
             de::visit(mutation, [&](const auto& m) {  // (3)
                 for (std::size_t i = 0; i < n; ++i) {
                     const auto& p = params[i];
-                    de::make_trial(m, g, i, p.f, p.cr, p.fw, rng, std::span<double>(scratch),
+                    de::make_trial(m, g, i, p.f, p.cr, p.fw, local, std::span<double>(scratch),
                                    column(u, static_cast<Eigen::Index>(i)));
                 }
             });
+            rng = local;
             de::visit(repair, [&](const auto& r) {
                 for (std::size_t i = 0; i < n; ++i) {
                     const auto k = static_cast<Eigen::Index>(i);
