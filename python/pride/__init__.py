@@ -20,7 +20,7 @@ from . import _pride
 from ._pride import Grid
 
 __all__ = [
-    "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Grid", "plan", "astar",
+    "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
     "exact", "pareto", "roughset", "Campaign", "read_store", "report",
 ]
 
@@ -156,6 +156,15 @@ def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, ta
                                   _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
                                   _seed(seed), _int("instance", instance), _callable("callback", callback),
                                   _bool("vectorized", vectorized), params))
+
+
+def Problem(name, dim=None, *, instance=None, seed=1):
+    """A registered continuous problem to evaluate: ``f = pride.Problem("bbob-f10", 10,
+    instance=1)``; ``f(x)`` for a point of shape (dim,) gives a float, ``f(X)`` for an (n, dim)
+    batch n values. ``f.lower``, ``f.upper``, ``f.optimum`` (f*, None when unknown), ``f.name``,
+    ``f.dim``, ``f.instance``. The values are the ones pride's runs see, bit for bit; ``seed``
+    seeds a noisy function's noise."""
+    return _pride.Problem(_str("name", name), _int("dim", dim), _int("instance", instance), _seed(seed))
 
 
 class Optimizer:

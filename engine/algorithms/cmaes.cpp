@@ -1,0 +1,113 @@
+// The CMA-ES family (algorithms/cmaes.hpp): cmaes, ipop-cmaes and bipop-cmaes share one
+// instantiation (the restart scheme and the boundary policy are chosen once per run); sep-cmaes is
+// the diagonal one.
+#include "algorithms/cmaes.hpp"
+
+#include "engine/family.hpp"
+
+namespace pride::engine {
+namespace {
+
+template <class Covariance>
+using Family = Cmaes<Covariance, cma::SelectableRestarts, cma::SelectableBoundary, SelectableInit>;
+
+std::vector<ParamSpec> common_params() {
+    return {integer("pop", 0, 0, 1'000'000, "lambda of the first run; 0: 4 + floor(3 ln D) (the tutorial's eq. 48)"),
+            real("sigma0", 0.3, 0.0, 10.0, "initial step as a share of each coordinate's range").open_below(),
+            choice("boundary", {"resample", "clamp", "penalty"}, "resample",
+                   "out-of-box samples: drawn again (up to 100 times, then clamped), clamped and used clamped, or "
+                   "clamped with a penalty on the distance in the ranking"),
+            real("penalty", 1.0, 0.0, 1e12, "the penalty's weight per squared box width (boundary = penalty)"),
+            flag("active", true, "negative recombination weights (the tutorial's active update, eq. 53)"),
+            real("tol_fun", 1e-12, 0.0, 1.0, "TolFun: range of recent best values that stops a run"),
+            real("tol_x", 1e-12, 0.0, 1.0, "TolX: step size, relative to the initial one, that stops a run"),
+            walk_init_param(false)};
+}
+
+template <class Covariance>
+Family<Covariance> configure(const Params& p, std::string id, cma::SelectableRestarts restarts) {
+    Family<Covariance> a;
+    a.id = std::move(id);
+    a.population = p.integer("pop");
+    a.sigma0 = p.real("sigma0");
+    a.active = p.flag("active");
+    a.tolerances.fun = p.real("tol_fun");
+    a.tolerances.x = p.real("tol_x");
+    const std::string& b = p.choice("boundary");
+    if (b == "clamp") {
+        a.boundary = cma::ClampRepair{};
+    } else if (b == "penalty") {
+        cma::Penalty penalty;
+        penalty.weight = p.real("penalty");
+        a.boundary = penalty;
+    } else {
+        a.boundary = cma::Resample{};
+    }
+    a.restarts = std::move(restarts);
+    a.init.suggestions = p.flag("walk_init");
+    return a;
+}
+
+/// Bytes for dimension n: C, B and the eigen solver's n x n, four n x lambda_max buffers.
+auto cma_memory(bool full, double lambda_factor) {
+    return [full, lambda_factor](const Params& p, std::size_t dimension) {
+        const double n = static_cast<double>(dimension);
+        const double first =
+            static_cast<double>(p.integer("pop") > 0 ? p.integer("pop") : cma::default_lambda(dimension));
+        const double lambda = first * lambda_factor;
+        return 8.0 * ((full ? 4.0 * n * n : 0.0) + 4.0 * n * lambda + 5.0 * lambda + 16.0 * n);
+    };
+}
+
+}  // namespace
+
+void register_cmaes(AlgorithmRegistry& registry) {
+    auto cmaes = box_algorithm(
+        "cmaes", "cmaes",
+        "CMA-ES (Hansen's 2016 tutorial: active weights, CSA, one run ended by its stopping "
+        "criteria)",
+        common_params(), [](const Params& p) { return configure<cma::FullCovariance>(p, "cmaes", cma::NoRestarts{}); });
+    cmaes.grid_population = 0;  // the tutorial's lambda on grids too
+    cmaes.memory = cma_memory(true, 1.0);
+    registry.add(std::move(cmaes));
+
+    auto ipop_params = common_params();
+    ipop_params.push_back(
+        real("factor", 2.0, 1.0, 4.0, "population growth at each restart (Auger and Hansen 2005: 2)"));
+    auto ipop = box_algorithm("ipop-cmaes", "cmaes",
+                              "IPOP-CMA-ES: restarts with the population doubled (Auger and Hansen 2005)", ipop_params,
+                              [](const Params& p) {
+                                  cma::Ipop r;
+                                  r.factor = p.real("factor");
+                                  return configure<cma::FullCovariance>(p, "ipop-cmaes", r);
+                              });
+    ipop.grid_population = 0;  // the tutorial's lambda on grids too
+    ipop.memory = cma_memory(true, cma::Ipop::max_lambda_factor());
+    registry.add(std::move(ipop));
+
+    auto bipop =
+        box_algorithm("bipop-cmaes", "cmaes",
+                      "BIPOP-CMA-ES: restarts in a large and a small population regime (Hansen 2009)", common_params(),
+                      [](const Params& p) { return configure<cma::FullCovariance>(p, "bipop-cmaes", cma::Bipop{}); });
+    bipop.grid_population = 0;  // the tutorial's lambda on grids too
+    bipop.memory = cma_memory(true, cma::Bipop::max_lambda_factor());
+    registry.add(std::move(bipop));
+
+    auto sep_params = common_params();
+    sep_params.push_back(choice("restarts", {"none", "ipop", "bipop"}, "none",
+                                "restart scheme: none, IPOP (population doubled) or BIPOP"));
+    auto sep = box_algorithm("sep-cmaes", "cmaes",
+                             "separable CMA-ES: diagonal covariance, O(D) per sample (Ros and Hansen 2008)", sep_params,
+                             [](const Params& p) {
+                                 const std::string& r = p.choice("restarts");
+                                 cma::SelectableRestarts restarts = cma::NoRestarts{};
+                                 if (r == "ipop") restarts = cma::Ipop{};
+                                 if (r == "bipop") restarts = cma::Bipop{};
+                                 return configure<cma::DiagonalCovariance>(p, "sep-cmaes", restarts);
+                             });
+    sep.grid_population = 0;  // the tutorial's lambda on grids too
+    sep.memory = cma_memory(false, cma::Ipop::max_lambda_factor());
+    registry.add(std::move(sep));
+}
+
+}  // namespace pride::engine
