@@ -115,6 +115,12 @@ engine::RunResult run_algorithm(const std::string& algo, const engine::Problem& 
                                 std::uint64_t seed) {
     engine::AlgorithmSpec a{algo, {}};
     if (engine::algorithms().at(algo).param("pop")) a.params.set("pop", static_cast<double>(s.pop));
+    // CMA-ES's own stopping criteria off, so that its runs spend the budget as pagmo's do
+    // (tolerances 0 there too).
+    if (algo == "cmaes") {
+        a.params.set("tol_fun", 0.0);
+        a.params.set("tol_x", 0.0);
+    }
     engine::Budget budget;
     budget.evaluations = s.evals;
     return engine::run(a, problem, budget, seed);
@@ -193,7 +199,8 @@ void bench_pagmo(const Settings& s, std::int64_t dim) {
             // The same algorithms as ours: gbest PSO with constriction and vmax 0.2; a GA with
             // tournament 2, SBX 15 / 0.9 and polynomial mutation 20 / (1/D); DE rand/1/bin with
             // F 0.5 and CR 0.9 (pride's de defaults); jDE's self-adaptation on rand/1/bin; CMA-ES
-            // with its defaults, kept in the box. The tolerances are 0: every run spends its budget.
+            // (Hansen's 2006 review, no active update) clamped into the box. The tolerances are 0:
+            // every run spends its budget.
             auto make_algorithm = [&] {
                 if (algo == "pagmo-pso")
                     return pagmo::algorithm{pagmo::pso(gens, 0.7298, 2.05, 2.05, 0.2, 5u, 1u, 4u, false, useed)};
@@ -202,7 +209,8 @@ void bench_pagmo(const Settings& s, std::int64_t dim) {
                                                        "polynomial", "tournament", useed)};
                 if (algo == "pagmo-de") return pagmo::algorithm{pagmo::de(gens, 0.5, 0.9, 7u, 0.0, 0.0, useed)};
                 if (algo == "pagmo-sade") return pagmo::algorithm{pagmo::sade(gens, 7u, 1u, 0.0, 0.0, false, useed)};
-                return pagmo::algorithm{pagmo::cmaes(gens, -1, -1, -1, -1, 0.5, 0.0, 0.0, false, true, useed)};
+                // sigma0 0.3 of the box's width (pagmo scales D by the width; pride's cmaes default).
+                return pagmo::algorithm{pagmo::cmaes(gens, -1, -1, -1, -1, 0.3, 0.0, 0.0, false, true, useed)};
             };
             auto run = [&](pagmo::problem prob) {
                 pagmo::algorithm alg = make_algorithm();
