@@ -98,7 +98,7 @@ struct Start {
     void validate() const {}
 };
 
-/// The first `k` indices ordered by value, best first, ties to the lower index.
+/// `order` <- 0, 1, ..., k - 1 (k its size) ordered by value, best first, ties to the lower index.
 inline void rank(std::span<const double> f, std::span<std::size_t> order) {
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::sort(order.begin(), order.end(),
@@ -162,6 +162,9 @@ class De {
         require(population == 0 || population >= by_strategy, name(),
                 "pop must be 0 (the paper's rule) or >= " + std::to_string(by_strategy) + " for " + strategy +
                     ", got " + std::to_string(population));
+        require(by_reduction == 0 || by_reduction >= by_strategy, name(),
+                "n_min must be >= " + std::to_string(by_strategy) + " for " + strategy + ", got " +
+                    std::to_string(by_reduction));
         require(population == 0 || population >= by_reduction, name(),
                 "pop must be 0 (the paper's rule) or >= n_min = " + std::to_string(by_reduction) +
                     " (the population size reduction's floor), got " + std::to_string(population));
@@ -224,6 +227,7 @@ class De {
         std::vector<double> fu(n0), scratch(dim);
         std::vector<de::Parameters> params(n0);
         std::vector<std::size_t> order(n0);
+        std::vector<char> replaced(n0);
         de::Archive archived(dim, n0, archive);
         de::Adaptation adaptation;
         de::visit(control, [&](const auto& c) { c.start(adaptation, n0); });
@@ -267,12 +271,16 @@ class De {
                     successes.add(params[i].f, params[i].cr, fx[i] - fu[i]);
                     archived.add(archive.stores_trial ? column(std::as_const(u), k) : column(std::as_const(x), k), rng);
                 }
-                if (better || (ties_replace && fu[i] == fx[i])) {
+                replaced[i] = better || (ties_replace && fu[i] == fx[i]);
+                if (replaced[i]) {
                     x.col(k) = u.col(k);
                     fx[i] = fu[i];
-                    de::visit(control, [&](const auto& c) { c.keep(adaptation, i, params[i]); });
                 }
             }
+            de::visit(control, [&](const auto& c) {  // jDE's F_i, CR_i go with the vector
+                for (std::size_t i = 0; i < evaluated; ++i)
+                    if (replaced[i]) c.keep(adaptation, i, params[i]);
+            });
             archived.end_generation(rng);  // (6)
             de::visit(control, [&](const auto& c) { c.update(adaptation, successes); });
             const de::Spent after{state.progress().evaluations, limit};  // (7)

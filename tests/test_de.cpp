@@ -663,12 +663,18 @@ TEST_CASE("DE: each policy's validation error", "[de][errors]") {
               a.mutation = de::RandTwo{};
               a.population = 5;
           }) == "x: pop must be 0 (the paper's rule) or >= 6 for rand/2/bin, got 5");
-    CHECK(message([](Family& a) { a.reduction = de::LinearReduction{3}; }) ==
-          "x: n_min must be in [4, 1000000000], got 3");
+    CHECK(message([](Family& a) {
+              a.mutation = de::BestOne{};  // needs 3: the reduction's own floor speaks
+              a.reduction = de::LinearReduction{3};
+          }) == "x: n_min must be in [4, 1000000000], got 3");
     CHECK(message([](Family& a) {
               a.reduction = de::LinearReduction{10};
               a.population = 8;
           }) == "x: pop must be 0 (the paper's rule) or >= n_min = 10 (the population size reduction's floor), got 8");
+    CHECK(message([](Family& a) {
+              a.mutation = de::RandTwo{};
+              a.reduction = de::LinearReduction{4};
+          }) == "x: n_min must be >= 6 for rand/2/bin, got 4");
     CHECK(message([](Family& a) { a.archive.rate = -1.0; }) == "x: archive rate must be in [0, 100], got -1.000000");
 }
 
