@@ -48,7 +48,8 @@
 // differ, the entry `lshade` follows the code by default (`reading=paper` for the paper): see
 // de_archive.hpp (archived vector, |A| after a reduction) and de_control.hpp (the terminal value).
 // The code also counts an error below 1e-8 as 0 (the CEC rule), which turns near-ties into ties:
-// not followed (the algorithm does not know f*). p_num = max(2, round(p N)) throughout (the code
+// not followed (the algorithm does not know f*; with the CEC 2022 driver's optimum = 0 it never
+// fires anyway). p_num = max(2, round(p N)) throughout (the code
 // applies the floor of 2 only after a reduction; the same for N_init >= 14 at p = 0.11).
 #include <algorithm>
 #include <cstddef>
