@@ -1,5 +1,10 @@
 // The continuous benchmark of issue 2: each algorithm on rastrigin, rosenbrock, ackley, griewank and
-// schwefel (D = 30, pagmo's boxes), population 50, exactly 100,000 evaluations, seeds 1..10.
+// schwefel (D = 30 unless --dims names others, pagmo's boxes), population 50, exactly 100,000
+// evaluations, seeds 1..10. pagmo2's counterparts of the algorithms asked for run beside them with
+// the same population and budget (issue 27 added de/jde against pagmo's de/sade and cmaes against
+// pagmo's cmaes): pso and pso-constriction -> pso, ga and ga-plus -> sga, de -> de (variant 7,
+// rand/1/bin), jde -> sade (variant 7, jDE adaptation), cmaes -> cmaes. An algorithm the registry
+// does not have (cmaes before it lands) is skipped with a line on stderr, and so is its pair.
 //
 // stdout: CSV `algo,problem,dim,seed,fevals,best_f,wall_ms`; wall time runs from population set-up
 // to the end of the run. After each run a row `ALGO/bare` gives the time of the same evaluations
@@ -17,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <tuple>
@@ -24,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/registry.hpp"
 #include "engine/run.hpp"
 #include "framework/random.hpp"
 #include "problems/continuous/catalog.hpp"
@@ -34,7 +41,10 @@
 
 #ifdef PRIDE_HAVE_PAGMO
 #include <pagmo/algorithm.hpp>
+#include <pagmo/algorithms/cmaes.hpp>
+#include <pagmo/algorithms/de.hpp>
 #include <pagmo/algorithms/pso.hpp>
+#include <pagmo/algorithms/sade.hpp>
 #include <pagmo/algorithms/sga.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/problem.hpp>
@@ -50,10 +60,8 @@ namespace {
 using namespace pride;
 using namespace pride::continuous;
 
-constexpr std::int64_t kDim = 30;  // the issue's D
-
 struct Settings {
-    std::int64_t dim = kDim;
+    std::vector<std::int64_t> dims{30};  // issue 2's D; issue 27 asks 10, 30 and 100 (--dims)
     std::int64_t pop = 50;
     std::int64_t evals = 100000;
     std::int64_t seeds = 10;
@@ -64,14 +72,14 @@ struct Settings {
 
 struct Row {
     std::string algo, problem;
-    std::int64_t seed, fevals;
+    std::int64_t dim, seed, fevals;
     double best_f, wall_ms;
 };
 
 std::vector<Row> rows;
 
 void emit(Row r) {
-    fmt::print("{},{},{},{},{},{},{:.3f}\n", r.algo, r.problem, kDim, r.seed, r.fevals,
+    fmt::print("{},{},{},{},{},{},{:.3f}\n", r.algo, r.problem, r.dim, r.seed, r.fevals,
                std::isnan(r.best_f) ? std::string() : fmt::format("{:.17g}", r.best_f), r.wall_ms);
     std::fflush(stdout);
     rows.push_back(std::move(r));
@@ -106,19 +114,25 @@ double bare_ms(F f, const std::vector<double>& points, std::size_t dim, std::siz
 engine::RunResult run_algorithm(const std::string& algo, const engine::Problem& problem, const Settings& s,
                                 std::uint64_t seed) {
     engine::AlgorithmSpec a{algo, {}};
-    a.params.set("pop", static_cast<double>(s.pop));
+    if (engine::algorithms().at(algo).param("pop")) a.params.set("pop", static_cast<double>(s.pop));
+    // CMA-ES's own stopping criteria off, so that its runs spend the budget as pagmo's do
+    // (tolerances 0 there too).
+    if (algo == "cmaes") {
+        a.params.set("tol_fun", 0.0);
+        a.params.set("tol_x", 0.0);
+    }
     engine::Budget budget;
     budget.evaluations = s.evals;
     return engine::run(a, problem, budget, seed);
 }
 
 template <class F>
-void bench_problem(const Settings& s) {
-    const F f(static_cast<std::size_t>(s.dim));
+void bench_problem(const Settings& s, std::int64_t dim) {
+    const F f(static_cast<std::size_t>(dim));
     const std::string name(F::info.name);
-    const engine::Problem problem(engine::ContinuousSpec{name, s.dim});
+    const engine::Problem problem(engine::ContinuousSpec{name, dim});
     std::vector<double> points;
-    points.reserve(static_cast<std::size_t>(s.evals * s.dim));
+    points.reserve(static_cast<std::size_t>(s.evals * dim));
     // The same function as a callback that records every point it evaluates (for the second,
     // untimed run): the run takes the same decisions, so it evaluates the same points.
     engine::CallbackSpec recording{name,
@@ -134,10 +148,10 @@ void bench_problem(const Settings& s) {
         for (std::int64_t seed = 1; seed <= s.seeds; ++seed) {
             const auto useed = static_cast<std::uint64_t>(seed);
             const auto r = run_algorithm(algo, problem, s, useed);
-            emit({algo, name, seed, r.evaluations, r.best_f, r.wall_ms});
+            emit({algo, name, dim, seed, r.evaluations, r.best_f, r.wall_ms});
             points.clear();
             run_algorithm(algo, recorded, s, useed);
-            emit({algo + "/bare", name, seed, r.evaluations, std::nan(""),
+            emit({algo + "/bare", name, dim, seed, r.evaluations, std::nan(""),
                   bare_ms(f, points, f.dimension(), static_cast<std::size_t>(s.pop))});
         }
     }
@@ -156,23 +170,47 @@ struct PagmoRecording {
     std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const { return inner.get_bounds(); }
 };
 
+/// pagmo's counterparts of the algorithms asked for, in the order of the pairs.
+std::vector<std::string> pagmo_pairs(const std::vector<std::string>& algos) {
+    auto asked = [&](std::initializer_list<const char*> names) {
+        for (const char* n : names)
+            if (std::find(algos.begin(), algos.end(), n) != algos.end()) return true;
+        return false;
+    };
+    std::vector<std::string> out;
+    if (asked({"pso", "pso-constriction"})) out.push_back("pagmo-pso");
+    if (asked({"ga", "ga-plus"})) out.push_back("pagmo-sga");
+    if (asked({"de"})) out.push_back("pagmo-de");
+    if (asked({"jde"})) out.push_back("pagmo-sade");
+    if (asked({"cmaes"})) out.push_back("pagmo-cmaes");
+    return out;
+}
+
 template <class PagmoProblem, class F>
-void bench_pagmo(const Settings& s) {
-    const F f(static_cast<std::size_t>(s.dim));
+void bench_pagmo(const Settings& s, std::int64_t dim) {
+    const F f(static_cast<std::size_t>(dim));
     const std::string name(F::info.name);
     const auto gens = static_cast<unsigned>((s.evals - s.pop) / s.pop);  // pop + gens * pop evaluations
     std::vector<double> points;
-    points.reserve(static_cast<std::size_t>(s.evals * s.dim));
-    for (const std::string algo : {"pagmo-pso", "pagmo-sga"}) {
+    points.reserve(static_cast<std::size_t>(s.evals * dim));
+    for (const std::string& algo : pagmo_pairs(s.algos)) {
         for (std::int64_t seed = 1; seed <= s.seeds; ++seed) {
             const auto useed = static_cast<unsigned>(seed);
             // The same algorithms as ours: gbest PSO with constriction and vmax 0.2; a GA with
-            // tournament 2, SBX 15 / 0.9 and polynomial mutation 20 / (1/D).
+            // tournament 2, SBX 15 / 0.9 and polynomial mutation 20 / (1/D); DE rand/1/bin with
+            // F 0.5 and CR 0.9 (pride's de defaults); jDE's self-adaptation on rand/1/bin; CMA-ES
+            // (Hansen's 2006 review, no active update) clamped into the box. The tolerances are 0:
+            // every run spends its budget.
             auto make_algorithm = [&] {
-                return algo == "pagmo-pso"
-                           ? pagmo::algorithm{pagmo::pso(gens, 0.7298, 2.05, 2.05, 0.2, 5u, 1u, 4u, false, useed)}
-                           : pagmo::algorithm{pagmo::sga(gens, 0.9, 15.0, 1.0 / static_cast<double>(s.dim), 20.0, 2u,
-                                                         "sbx", "polynomial", "tournament", useed)};
+                if (algo == "pagmo-pso")
+                    return pagmo::algorithm{pagmo::pso(gens, 0.7298, 2.05, 2.05, 0.2, 5u, 1u, 4u, false, useed)};
+                if (algo == "pagmo-sga")
+                    return pagmo::algorithm{pagmo::sga(gens, 0.9, 15.0, 1.0 / static_cast<double>(dim), 20.0, 2u, "sbx",
+                                                       "polynomial", "tournament", useed)};
+                if (algo == "pagmo-de") return pagmo::algorithm{pagmo::de(gens, 0.5, 0.9, 7u, 0.0, 0.0, useed)};
+                if (algo == "pagmo-sade") return pagmo::algorithm{pagmo::sade(gens, 7u, 1u, 0.0, 0.0, false, useed)};
+                // sigma0 0.3 of the box's width (pagmo scales D by the width; pride's cmaes default).
+                return pagmo::algorithm{pagmo::cmaes(gens, -1, -1, -1, -1, 0.3, 0.0, 0.0, false, true, useed)};
             };
             auto run = [&](pagmo::problem prob) {
                 pagmo::algorithm alg = make_algorithm();
@@ -183,11 +221,11 @@ void bench_pagmo(const Settings& s) {
                 return std::make_tuple(ms, static_cast<std::int64_t>(pop.get_problem().get_fevals()),
                                        pop.champion_f()[0]);
             };
-            const auto [ms, fevals, best] = run(pagmo::problem{PagmoProblem{static_cast<unsigned>(s.dim)}});
-            emit({algo, name, seed, fevals, best, ms});
+            const auto [ms, fevals, best] = run(pagmo::problem{PagmoProblem{static_cast<unsigned>(dim)}});
+            emit({algo, name, dim, seed, fevals, best, ms});
             points.clear();
-            run(pagmo::problem{PagmoRecording<PagmoProblem>{PagmoProblem{static_cast<unsigned>(s.dim)}, &points}});
-            emit({algo + "/bare", name, seed, fevals, std::nan(""),
+            run(pagmo::problem{PagmoRecording<PagmoProblem>{PagmoProblem{static_cast<unsigned>(dim)}, &points}});
+            emit({algo + "/bare", name, dim, seed, fevals, std::nan(""),
                   bare_ms(f, points, f.dimension(), static_cast<std::size_t>(s.pop))});
         }
     }
@@ -318,27 +356,30 @@ double median(std::vector<double> v) {
 }
 
 void summarise() {
-    // Each run row is followed by its bare row.
-    std::map<std::string, std::vector<double>> cost_ns, bare_ns;
-    std::map<std::string, std::map<std::string, std::vector<double>>> best;
+    // Each run row is followed by its bare row. Grouped by (algo, D).
+    using Key = std::pair<std::string, std::int64_t>;
+    std::map<Key, std::vector<double>> cost_ns;
+    std::map<Key, std::map<std::string, std::vector<double>>> best;
+    std::map<Key, std::vector<double>> bare_ns;
     for (std::size_t k = 0; k + 1 < rows.size(); k += 2) {
         const Row& run = rows[k];
         const Row& bare = rows[k + 1];
         const auto evals = static_cast<double>(run.fevals);
-        cost_ns[run.algo].push_back((run.wall_ms - bare.wall_ms) / evals * 1e6);
-        bare_ns[run.problem].push_back(bare.wall_ms / evals * 1e6);
-        best[run.algo][run.problem].push_back(run.best_f);
+        cost_ns[{run.algo, run.dim}].push_back((run.wall_ms - bare.wall_ms) / evals * 1e6);
+        bare_ns[{run.problem, run.dim}].push_back(bare.wall_ms / evals * 1e6);
+        best[{run.algo, run.dim}][run.problem].push_back(run.best_f);
     }
     fmt::print(stderr,
                "\nframework cost per evaluation (median over problems and seeds; bare function time removed)\n");
-    fmt::print(stderr, "{:<18} {:>12}   median best_f per problem\n", "algo", "ns/eval");
-    for (const auto& [algo, costs] : cost_ns) {
+    fmt::print(stderr, "{:<18} {:>4} {:>12}   median best_f per problem\n", "algo", "D", "ns/eval");
+    for (const auto& [key, costs] : cost_ns) {
         std::string medians;
-        for (const auto& [problem, values] : best[algo]) medians += fmt::format("  {}={:.4g}", problem, median(values));
-        fmt::print(stderr, "{:<18} {:>12.1f} {}\n", algo, median(costs), medians);
+        for (const auto& [problem, values] : best[key]) medians += fmt::format("  {}={:.4g}", problem, median(values));
+        fmt::print(stderr, "{:<18} {:>4} {:>12.1f} {}\n", key.first, key.second, median(costs), medians);
     }
-    for (const auto& [problem, ns] : bare_ns)
-        fmt::print(stderr, "bare {:<12} {:>8.1f} ns/eval (median over the points of every run)\n", problem, median(ns));
+    for (const auto& [key, ns] : bare_ns)
+        fmt::print(stderr, "bare {:<12} D={:<4} {:>8.1f} ns/eval (median over the points of every run)\n", key.first,
+                   key.second, median(ns));
 }
 
 }  // namespace
@@ -351,7 +392,12 @@ int main(int argc, char** argv) {
     app.add_option("--algos", s.algos,
                    "algorithms (default: pso pso-constriction ga ga-plus lso ilso nlopt:LN_SBPLX nlopt:GN_CRS2_LM)")
         ->delimiter(',');
-    app.add_flag("!--no-pagmo", s.pagmo, "skip pagmo2 even when it was found at build time");
+    app.add_option("--dims", s.dims, "dimensions (default 30; issue 27: 10,30,100)")
+        ->delimiter(',')
+        ->check(CLI::Range(1, 100000));
+    app.add_flag("!--no-pagmo", s.pagmo,
+                 "skip pagmo2 even when it was found at build time (else each algorithm's pagmo counterpart runs: "
+                 "pso, sga, de, sade, cmaes)");
     bool cost = false;
     app.add_flag("--cost", cost,
                  "instead: the cost of one evaluation by each route (typed, scalar, batch), D 10 and 40");
@@ -369,20 +415,29 @@ int main(int argc, char** argv) {
             cec_cost();
             return 0;
         }
+        // An algorithm the registry lacks (cmaes before it lands) is skipped, with its pagmo pair.
+        std::erase_if(s.algos, [](const std::string& algo) {
+            const bool missing = engine::algorithms().find(algo) == nullptr;
+            if (missing) fmt::print(stderr, "{}: skipped, not in the registry (nor its pagmo pair)\n", algo);
+            return missing;
+        });
         fmt::print("algo,problem,dim,seed,fevals,best_f,wall_ms\n");
-        bench_problem<Rastrigin>(s);
-        bench_problem<Rosenbrock>(s);
-        bench_problem<Ackley>(s);
-        bench_problem<Griewank>(s);
-        bench_problem<Schwefel>(s);
-#ifdef PRIDE_HAVE_PAGMO
-        if (s.pagmo) {
-            bench_pagmo<pagmo::rastrigin, Rastrigin>(s);
-            bench_pagmo<pagmo::rosenbrock, Rosenbrock>(s);
-            bench_pagmo<pagmo::ackley, Ackley>(s);
-            bench_pagmo<pagmo::griewank, Griewank>(s);
-            bench_pagmo<pagmo::schwefel, Schwefel>(s);
+        for (const std::int64_t dim : s.dims) {
+            bench_problem<Rastrigin>(s, dim);
+            bench_problem<Rosenbrock>(s, dim);
+            bench_problem<Ackley>(s, dim);
+            bench_problem<Griewank>(s, dim);
+            bench_problem<Schwefel>(s, dim);
         }
+#ifdef PRIDE_HAVE_PAGMO
+        if (s.pagmo)
+            for (const std::int64_t dim : s.dims) {
+                bench_pagmo<pagmo::rastrigin, Rastrigin>(s, dim);
+                bench_pagmo<pagmo::rosenbrock, Rosenbrock>(s, dim);
+                bench_pagmo<pagmo::ackley, Ackley>(s, dim);
+                bench_pagmo<pagmo::griewank, Griewank>(s, dim);
+                bench_pagmo<pagmo::schwefel, Schwefel>(s, dim);
+            }
 #endif
         summarise();
     } catch (const std::exception& e) {

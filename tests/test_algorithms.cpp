@@ -16,6 +16,7 @@
 #include <tuple>
 #include <vector>
 
+#include "algorithms/de.hpp"
 #include "algorithms/ga.hpp"
 #include "algorithms/lso.hpp"
 #include "algorithms/nlopt.hpp"
@@ -199,6 +200,34 @@ GaPlus ga_plus(std::int64_t population = 50) {
     return a;
 }
 
+// The differential evolution family as the registry configures it (engine/algorithms/de.cpp): one
+// type, so its four configurations share one instantiation per problem type.
+using DeFamily = pride::De<pride::de::SelectableMutation, pride::de::SelectableControl, pride::de::SelectableRepair,
+                           pride::de::SelectableSize, pride::de::SelectableReduction>;
+DeFamily de_family(const std::string& id, std::int64_t population) {
+    DeFamily a;
+    a.id = id;
+    a.population = population;
+    if (id == "jade") {
+        a.mutation = pride::de::CurrentToPBest<pride::de::FixedRate>{{0.05}};
+        a.control = pride::de::JadeControl{};
+        a.archive.rate = 1.0;
+        a.archive.trim_after_generation = true;
+        a.ties_replace = false;
+    } else if (id == "lshade") {
+        a.mutation = pride::de::CurrentToPBest<pride::de::FixedRate>{{0.11}};
+        a.control = pride::de::LshadeControl{};
+        a.archive = {2.6, true, false, true};
+        a.reduction = pride::de::LinearReduction{};
+    } else if (id == "jso") {
+        a.mutation = pride::de::CurrentToPBest<pride::de::LinearRate>{{}, 0.5};
+        a.control = pride::de::JsoControl{};
+        a.archive.rate = 1.0;
+        a.reduction = pride::de::LinearReduction{};
+    }
+    return a;
+}
+
 /// Calls `f(label, algorithm)` for every algorithm of the suite, with the given population.
 template <class F>
 void for_each_algorithm(std::int64_t population, F&& f) {
@@ -233,6 +262,7 @@ void for_each_algorithm(std::int64_t population, F&& f) {
     f("ilso", ilso);
     f("nlopt:LN_SBPLX", pride::Nlopt("LN_SBPLX", population));
     f("nlopt:GN_CRS2_LM", pride::Nlopt("GN_CRS2_LM", population));
+    for (const char* id : {"de", "jade", "lshade", "jso"}) f(id, de_family(id, population));
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 // and `pride path` commands, recorded before the engine refactor (tests/data/golden/, written by
 // scripts/golden_commands.py and the commands' own output), must come out bit for bit the same.
 // Commands for the suites and the algorithms added later (instances, BBOB, WOA, HS, IAGA, ICGA,
-// IQGA, SITP, the exact iqga optimum) are appended after the first 447, recorded when they landed.
+// IQGA, SITP, the exact iqga optimum, the DE family) are appended after the first 447, recorded when
+// they landed.
 // A change of results is a documented fix: the golden file is updated in the same commit, with the
 // reason in its message.
 #include <catch2/catch.hpp>

@@ -1,0 +1,301 @@
+#pragma once
+// Differential evolution: one skeleton for DE, jDE, JADE, SHADE, L-SHADE and jSO, the variable
+// parts policies (algorithms/parts/de_mutation.hpp, de_control.hpp, de_population.hpp,
+// de_archive.hpp; their comments hold the equations (M1)-(M5), (C), (R), (P1)-(P5), (U1)-(U4),
+// (S1)-(S3), (L) with their papers).
+//
+//   Storn, R. and Price, K. (1997). Differential evolution - a simple and efficient heuristic for
+//     global optimization over continuous spaces. J. Global Optimization 11, 341-359.
+//   Brest, J., Greiner, S., Boskovic, B., Mernik, M. and Zumer, V. (2006). Self-adapting control
+//     parameters in differential evolution. IEEE TEC 10(6), 646-657 (jDE).
+//   Zhang, J. and Sanderson, A. C. (2009). JADE: adaptive differential evolution with optional
+//     external archive. IEEE TEC 13(5), 945-958.
+//   Tanabe, R. and Fukunaga, A. (2013). Success-history based parameter adaptation for differential
+//     evolution. Proc. IEEE CEC, 71-78 (SHADE).
+//   Tanabe, R. and Fukunaga, A. (2014). Improving the search performance of SHADE using linear
+//     population size reduction. Proc. IEEE CEC, 1658-1665 (L-SHADE), and Tanabe's C++ code as the
+//     CEC 2022 competition distributes it (lshade.cpp, search_algorithm.cpp, de.h: version 1.0).
+//   Brest, J., Maucec, M. S. and Boskovic, B. (2017). Single objective real-parameter optimization:
+//     algorithm jSO. Proc. IEEE CEC, 1311-1318.
+//
+// The initial population (run_setup.hpp): N_init = `population`, or the Size rule (S1)-(S3) when
+// it is 0; drawn by the Init policy, evaluated, recorded as iteration 0. Each generation G:
+//   (1) rank the population by value (best first, ties to the lower index);
+//   (2) per individual i: F_i, CR_i, F_w,i from the Control policy (P1)-(P5);
+//   (3) per individual i: the trial u_i = the Mutation policy's mutant (M1)-(M5) crossed with x_i
+//       (C), then the Repair policy (R); every trial is made from the population of step (1)
+//       (a synchronous generation);
+//   (4) the N trials are evaluated in one batch (RunState::evaluate_columns: what the budget does
+//       not allow gets +inf, takes no part in (5), and the run ends);
+//   (5) selection, i in order: f(u_i) < f(x_i): a success (F_i, CR_i and |f(u_i) - f(x_i)| go to
+//       S_F, S_CR and the gains; x_i, or u_i under `stores_trial`, to the archive) and u_i replaces
+//       x_i; f(u_i) = f(x_i): u_i replaces x_i without a success when `ties_replace` (SHADE,
+//       L-SHADE, jSO, and this project's DE and jDE), x_i stays otherwise (JADE); the Control keeps
+//       a replaced individual's F_i, CR_i (jDE);
+//   (6) JADE's archive trim; the Control's memory update (U1)-(U4) from S_F, S_CR;
+//   (7) the Reduction policy (L): the worst individuals are removed, the archive resized;
+//   (8) the population (its current N columns) is recorded and shown to the observer.
+// Decided by this project where the papers are silent: DE's NP rule is 10 D (Storn and Price
+// recommend 5 D to 10 D); ties replace in DE and jDE (Storn's and Tanabe's codes take u when
+// f(u) <= f(x)), not in JADE (its pseudo-code keeps x_i when f(x_i) <= f(u_i)); the bound
+// handling is JADE's midpoint for every entry by default (de and jde's papers name none; Tanabe's
+// jDE code uses the midpoint too; `ClampRepair` is the alternative); jDE starts from F_i = 0.5,
+// CR_i = 0.9 (as Tanabe's jDE code); jSO's N_init = round(25 ln D sqrt D) is at least 4 (D = 1 gives 0); a schedule
+// over the budget (LPSR, jSO's p, F and CR rules) runs over nfes / max_nfes, max_nfes the
+// evaluation limit, so a run without one is refused; draws come from the run's Rng in a fixed
+// order (bit identity with the papers' codes and their rand() is not sought, equality in
+// distribution is). Where L-SHADE's paper and Tanabe's code (version 1.0, the CEC 2022 oracle)
+// differ, the entry `lshade` follows the code by default (`reading=paper` for the paper): see
+// de_archive.hpp (archived vector, |A| after a reduction) and de_control.hpp (the terminal value).
+// The code also counts an error below 1e-8 as 0 (the CEC rule), which turns near-ties into ties:
+// not followed (the algorithm does not know f*; with the CEC 2022 driver's optimum = 0 it never
+// fires anyway). p_num = max(2, round(p N)) throughout (the code
+// applies the floor of 2 only after a reduction; the same for N_init >= 14 at p = 0.11).
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "algorithms/parts/de_archive.hpp"
+#include "algorithms/parts/de_control.hpp"
+#include "algorithms/parts/de_mutation.hpp"
+#include "algorithms/parts/de_population.hpp"
+#include "algorithms/parts/run_setup.hpp"
+#include "framework/bounds.hpp"
+#include "framework/error.hpp"
+#include "framework/initializer.hpp"
+#include "framework/observer.hpp"
+#include "framework/problem.hpp"
+#include "framework/random.hpp"
+#include "framework/result.hpp"
+#include "framework/run_state.hpp"
+#include "framework/termination.hpp"
+
+namespace pride {
+namespace de {
+
+/// The policy itself, or each alternative of a OneOf.
+template <class Policy, class F>
+decltype(auto) visit(const Policy& policy, F&& f) {
+    if constexpr (requires { policy.visit(f); })
+        return policy.visit(f);
+    else
+        return f(policy);
+}
+
+/// What start_box_run needs to draw the initial population of N_init (run_setup.hpp).
+template <class Init>
+struct Start {
+    std::string id;
+    std::int64_t population;
+    Init init;
+    Clamp bounds{};  // Init draws inside the box; this only guards the problem's own suggestions
+    std::string name() const { return id; }
+    void validate() const {}
+};
+
+/// `order` <- 0, 1, ..., k - 1 (k its size) ordered by value, best first, ties to the lower index.
+inline void rank(std::span<const double> f, std::span<std::size_t> order) {
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return f[a] < f[b] || (f[a] == f[b] && a < b); });
+}
+
+/// Removes the `count` worst individuals, one at a time, each the first of the worst values
+/// (Tanabe's code); the others keep their order. Per-individual control values go with them.
+inline void remove_worst(Matrix& x, std::vector<double>& fx, Adaptation& a, std::size_t count) {
+    auto n = static_cast<Eigen::Index>(fx.size());
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto worst = static_cast<Eigen::Index>(std::max_element(fx.begin(), fx.end()) - fx.begin());
+        for (Eigen::Index c = worst; c + 1 < n; ++c) x.col(c) = x.col(c + 1);
+        fx.erase(fx.begin() + worst);
+        if (!a.f.empty()) {
+            a.f.erase(a.f.begin() + worst);
+            a.cr.erase(a.cr.begin() + worst);
+        }
+        --n;
+    }
+    x.conservativeResize(Eigen::NoChange, n);  // once per reduction
+}
+
+}  // namespace de
+
+template <class Mutation = de::RandOne, class Control = de::FixedControl, class Repair = de::MidpointRepair,
+          class Size = de::PerDimensionSize, class Reduction = de::FixedPopulation, class Init = UniformInit>
+class De {
+  public:
+    std::string id = "de";        // the name in messages and results
+    std::int64_t population = 0;  // N_init; 0: the Size policy's rule (the paper's)
+    bool ties_replace = true;     // f(u) = f(x): u replaces x (without a success)
+    Mutation mutation{};
+    Control control{};
+    de::ArchiveRules archive{};
+    Repair repair{};
+    Size size{};
+    Reduction reduction{};
+    Init init{};
+
+    std::string name() const { return id; }
+
+    /// The smallest N_init the mutation and the reduction work with.
+    std::int64_t min_population() const {
+        std::int64_t least = 0;
+        de::visit(mutation, [&](const auto& m) { least = std::decay_t<decltype(m)>::min_population; });
+        de::visit(reduction, [&](const auto& r) { least = std::max(least, r.min_population()); });
+        return least;
+    }
+
+    void validate() const {
+        std::int64_t by_strategy = 0, by_reduction = 0;
+        std::string strategy;
+        de::visit(mutation, [&](const auto& m) {
+            by_strategy = std::decay_t<decltype(m)>::min_population;
+            strategy = std::decay_t<decltype(m)>::name;
+        });
+        de::visit(reduction, [&](const auto& r) { by_reduction = r.min_population(); });
+        require(population >= 0, name(),
+                "pop must be 0 (the paper's rule) or positive, got " + std::to_string(population));
+        require(population == 0 || population >= by_strategy, name(),
+                "pop must be 0 (the paper's rule) or >= " + std::to_string(by_strategy) + " for " + strategy +
+                    ", got " + std::to_string(population));
+        require(by_reduction == 0 || by_reduction >= by_strategy, name(),
+                "n_min must be >= " + std::to_string(by_strategy) + " for " + strategy + ", got " +
+                    std::to_string(by_reduction));
+        require(population == 0 || population >= by_reduction, name(),
+                "pop must be 0 (the paper's rule) or >= n_min = " + std::to_string(by_reduction) +
+                    " (the population size reduction's floor), got " + std::to_string(population));
+        de::visit(mutation, [&](const auto& m) { m.validate(name()); });
+        de::visit(control, [&](const auto& c) { c.validate(name()); });
+        de::visit(reduction, [&](const auto& r) { r.validate(name()); });
+        archive.validate(name());
+    }
+
+    /// N_init on a problem of dimension `dim`: `population`, or the Size rule when it is 0.
+    std::int64_t initial_population(std::size_t dim) const {
+        if (population > 0) return population;
+        std::int64_t n = 0;
+        de::visit(size, [&](const auto& s) { n = s(dim); });
+        return std::max(n, min_population());
+    }
+
+    /// True when a policy runs a schedule over the evaluation budget (LPSR, jSO's rules).
+    bool needs_evaluation_limit() const {
+        bool scheduled = false;
+        auto check = [&](const auto& p) { scheduled = scheduled || std::decay_t<decltype(p)>::scheduled; };
+        de::visit(mutation, check);
+        de::visit(control, check);
+        de::visit(reduction, check);
+        return scheduled;
+    }
+
+    /// Bytes a run allocates in dimension `dim`: the population and the trials, the archive, and
+    /// the per-individual and per-slot vectors.
+    double memory_bytes(std::size_t dim) const {
+        const auto n = static_cast<double>(initial_population(dim));
+        const auto a = static_cast<double>(archive.storage(static_cast<std::size_t>(initial_population(dim))));
+        std::int64_t slots = 0;
+        de::visit(control, [&](const auto& c) { slots = c.memory_slots(); });
+        const double d = static_cast<double>(dim);
+        return 8.0 * ((2.0 * n + a) * d + 12.0 * n + 2.0 * static_cast<double>(slots) + 4.0 * d);
+    }
+
+    template <BoxProblem P, Observer O = NoObserver>
+    Result run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
+        validate();
+        termination.validate(name());
+        if (needs_evaluation_limit())
+            require(termination.max_evaluations.has_value(), name(),
+                    "needs an evaluation limit: its population size reduction and schedules run over the "
+                    "evaluation budget");
+        const std::int64_t n_init = initial_population(problem.dimension());
+        // Checks, the initial population (Init) evaluated and recorded as iteration 0.
+        auto run = start_box_run(de::Start<Init>{id, n_init, init}, problem, termination, seed, observer);
+        const auto lo = run.lo, hi = run.hi;
+        const std::size_t dim = run.dim;
+        Rng& rng = run.rng;
+        RunState& state = run.state;
+        Matrix& x = run.x;
+        std::vector<double>& fx = run.fx;
+        const auto n0 = static_cast<std::size_t>(n_init);
+
+        // Allocated once per run: trials, their values and parameters, the order, the archive.
+        Matrix u(x.rows(), x.cols());
+        std::vector<double> fu(n0), scratch(dim);
+        std::vector<de::Parameters> params(n0);
+        std::vector<std::size_t> order(n0);
+        std::vector<char> replaced(n0);
+        de::Archive archived(dim, n0, archive);
+        de::Adaptation adaptation;
+        de::visit(control, [&](const auto& c) { c.start(adaptation, n0); });
+        de::Successes successes(n0);
+        const std::int64_t limit = termination.max_evaluations.value_or(0);
+
+        std::size_t n = n0;
+        while (!state.done()) {
+            const de::Spent spent{state.progress().evaluations, limit};
+            const auto order_n = std::span<std::size_t>(order).first(n);
+            de::rank(fx, order_n);  // (1)
+            // The draws of (2) and (3) come from a local copy of the generator, put back after:
+            // its state stays in registers (the same draws in the same order).
+            Rng local = rng;
+            de::visit(control, [&](const auto& c) {  // (2)
+                for (std::size_t i = 0; i < n; ++i) params[i] = c.sample(adaptation, i, spent, local);
+            });
+            const de::Generation g{x, order_n, &archived.members(), archived.size(), spent};
+            de::visit(mutation, [&](const auto& m) {  // (3)
+                for (std::size_t i = 0; i < n; ++i) {
+                    const auto& p = params[i];
+                    de::make_trial(m, g, i, p.f, p.cr, p.fw, local, std::span<double>(scratch),
+                                   column(u, static_cast<Eigen::Index>(i)));
+                }
+            });
+            rng = local;
+            de::visit(repair, [&](const auto& r) {
+                for (std::size_t i = 0; i < n; ++i) {
+                    const auto k = static_cast<Eigen::Index>(i);
+                    r(column(u, k), column(std::as_const(x), k), lo, hi);
+                }
+            });
+            const auto evaluated =
+                static_cast<std::size_t>(state.evaluate_columns(problem, u.leftCols(static_cast<Eigen::Index>(n)),
+                                                                std::span<double>(fu).first(n)));  // (4)
+            successes.clear();
+            for (std::size_t i = 0; i < evaluated; ++i) {  // (5)
+                const auto k = static_cast<Eigen::Index>(i);
+                const bool better = fu[i] < fx[i];
+                if (better) {
+                    successes.add(params[i].f, params[i].cr, fx[i] - fu[i]);
+                    archived.add(archive.stores_trial ? column(std::as_const(u), k) : column(std::as_const(x), k), rng);
+                }
+                replaced[i] = better || (ties_replace && fu[i] == fx[i]);
+                if (replaced[i]) {
+                    x.col(k) = u.col(k);
+                    fx[i] = fu[i];
+                }
+            }
+            de::visit(control, [&](const auto& c) {  // jDE's F_i, CR_i go with the vector
+                for (std::size_t i = 0; i < evaluated; ++i)
+                    if (replaced[i]) c.keep(adaptation, i, params[i]);
+            });
+            archived.end_generation(rng);  // (6)
+            de::visit(control, [&](const auto& c) { c.update(adaptation, successes); });
+            const de::Spent after{state.progress().evaluations, limit};  // (7)
+            std::size_t next = n;
+            de::visit(reduction, [&](const auto& r) { next = r.next(n, n0, after); });
+            if (next < n) {
+                de::remove_worst(x, fx, adaptation, n - next);
+                n = next;
+                archived.resize(n, rng);
+            }
+            state.end_iteration(observer, x, fx);  // (8)
+        }
+        return state.finish();
+    }
+};
+
+}  // namespace pride
