@@ -246,7 +246,7 @@ TEST_CASE("DE: the weighted Lehmer and arithmetic means on hand-computed numbers
     CHECK(de::weighted_arithmetic_mean(scr, Vec{pride::kInf, pride::kInf}) == Approx(0.4).epsilon(1e-15));
 }
 
-TEST_CASE("DE (U2) SHADE: M_CR <- mean_WA, M_F <- mean_WL, slot by slot; no update without success", "[de][memory]") {
+TEST_CASE("DE (U2) SHADE: M_CR <- mean_WA, M_F <- mean_WL, slot by slot, no update without success", "[de][memory]") {
     de::ShadeControl c;
     c.memory = 2;
     de::Adaptation a;
@@ -687,7 +687,7 @@ TEST_CASE("DE: every entry reaches 1e-8 on the sphere (D = 10) within 100000 eva
         }
 }
 
-TEST_CASE("DE: every entry improves on rastrigin (D = 10); the adaptive ones nearly solve it", "[de][sanity]") {
+TEST_CASE("DE: every entry improves on rastrigin (D = 10), the adaptive ones nearly solve it", "[de][sanity]") {
     for (const char* name : kEntries)
         for (const std::uint64_t seed : {1, 2}) {
             INFO(name << " seed " << seed);
