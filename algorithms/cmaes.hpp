@@ -131,7 +131,12 @@ class Cmaes {
         auto sequence =
             cma::visit_policy(restarts, [&](const auto& r) { return AnySequence(r.sequence(first_lambda(n))); });
         cma::RunPlan plan;
-        while (!state.done() && sequence.next(rng, plan)) {
+        // The first generation is iteration 0 (the initial population of other algorithms): it is
+        // sampled and evaluated under any limit but the evaluations', so that an iteration limit
+        // of k gives k + 1 generations.
+        bool first = true;
+        auto go_on = [&] { return first ? !state.exhausted() : !state.done(); };
+        while (go_on() && sequence.next(rng, plan)) {
             const std::int64_t before = state.progress().evaluations;
             // The mean: one point of the Init policy, for the first run and every restart.
             init(problem, rng, mean);
@@ -140,7 +145,7 @@ class Cmaes {
             const auto columns = static_cast<Eigen::Index>(std::min(plan.lambda, state.remaining()));
             search.begin(column(mean, 0), sigma0 * plan.sigma_factor, plan.lambda, columns, active);
             cma::Stop stop = cma::Stop::none;
-            while (!state.done()) {
+            while (go_on()) {
                 if (state.progress().evaluations - before >= plan.max_evaluations) {
                     stop = cma::Stop::run_budget;
                     break;
@@ -148,6 +153,7 @@ class Cmaes {
                 search.sample(rng, boundary);
                 const auto evaluated = state.evaluate_columns(problem, search.Xeval(), search.values());
                 state.end_iteration(observer, search.Xeval(), search.values());
+                first = false;
                 if (evaluated < plan.lambda) break;  // the budget ended inside the generation: no update
                 stop = search.update(boundary, tolerances);
                 if (stop != cma::Stop::none) break;

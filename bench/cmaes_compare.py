@@ -45,7 +45,7 @@ def python_cmaes(problem, seed, budget, target):
 
 def pride_cmaes(name, dim, instance, seed, budget, target):
     r = pride.minimize("cmaes", name, dim=dim, instance=instance, evals=budget, target=target, seed=seed,
-                       tol_fun=0, tol_x=0)
+                       tol_fun=0, tol_x=0, restarts="none")
     return r.evaluations if r.best_f <= target else None
 
 

@@ -247,7 +247,8 @@ def jso_block(data):
     with open(data / "jso-published-cec2017.csv", newline="") as fh:
         for r in csv.DictReader(fh):
             pub[(int(r["function"]), int(r["dimension"]))] = r
-    keys = sorted(k for k in pub if (k[0], k[1], "jso") in ours)
+    # Only what has all its runs (a campaign resumed over sessions fills the rest).
+    keys = sorted(k for k in pub if len(ours.get((k[0], k[1], "jso"), [])) == int(pub[k]["runs"]))
     out = []
     for fn, dim in keys:
         mine = [snap(e) for e in ours[(fn, dim, "jso")]]
@@ -331,7 +332,7 @@ def run(build, stores, jobs):
     export_cec("jso-cec2017", stores / "jso-cec2017.sqlite", pride)
     raw = export_jso_published(os.environ["PRIDE_JSO_RESULTS"])
     ours = read_cec("jso-cec2017")
-    keys = sorted(raw)
+    keys = sorted(k for k in raw if len(ours.get((k[0], k[1], "jso"), [])) == len(raw[k]))
     ps = [rp.rank_sum([snap(v) for v in raw[k]], [snap(e) for e in ours[(k[0], k[1], "jso")]]) for k in keys]
     adj = rp.holm(ps)
     with open(DATA / "jso-published-cec2017.csv", "w", newline="") as fh:

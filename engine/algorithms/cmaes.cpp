@@ -48,6 +48,24 @@ Family<Covariance> configure(const Params& p, std::string id, cma::SelectableRes
     return a;
 }
 
+/// The restart scheme of `cmaes` and `sep-cmaes`: by default a run that stops before the budget is
+/// spent is followed by another with the same lambda from a new mean (as the NLopt adapter
+/// restarts), so that the baseline spends the budget it is compared under.
+ParamSpec restarts_param(std::vector<std::string> choices) {
+    return choice("restarts", std::move(choices), "restart",
+                  "after a stopping criterion: restart with the same lambda, none (one run, the budget may be left), "
+                  "or IPOP / BIPOP");
+}
+
+cma::SelectableRestarts restarts_of(const std::string& name) {
+    if (name == "none") return cma::NoRestarts{};
+    if (name == "ipop") return cma::Ipop{};
+    if (name == "bipop") return cma::Bipop{};
+    cma::Ipop same;
+    same.factor = 1.0;  // independent restarts: IPOP without growth
+    return same;
+}
+
 /// Bytes for dimension n: C, B and the eigen solver's n x n, four n x lambda_max buffers.
 auto cma_memory(bool full, double lambda_factor) {
     return [full, lambda_factor](const Params& p, std::size_t dimension) {
@@ -62,11 +80,14 @@ auto cma_memory(bool full, double lambda_factor) {
 }  // namespace
 
 void register_cmaes(AlgorithmRegistry& registry) {
+    auto cmaes_params = common_params();
+    cmaes_params.push_back(restarts_param({"restart", "none"}));
     auto cmaes = box_algorithm(
         "cmaes", "cmaes",
-        "CMA-ES (Hansen's 2016 tutorial: active weights, CSA, one run ended by its stopping "
-        "criteria)",
-        common_params(), [](const Params& p) { return configure<cma::FullCovariance>(p, "cmaes", cma::NoRestarts{}); });
+        "CMA-ES (Hansen's 2016 tutorial: active weights, CSA, Hansen 2009's stopping criteria; restarted with the "
+        "same lambda until the budget is spent)",
+        cmaes_params,
+        [](const Params& p) { return configure<cma::FullCovariance>(p, "cmaes", restarts_of(p.choice("restarts"))); });
     cmaes.grid_population = 0;  // the tutorial's lambda on grids too
     cmaes.memory = cma_memory(true, 1.0);
     registry.add(std::move(cmaes));
@@ -94,17 +115,12 @@ void register_cmaes(AlgorithmRegistry& registry) {
     registry.add(std::move(bipop));
 
     auto sep_params = common_params();
-    sep_params.push_back(choice("restarts", {"none", "ipop", "bipop"}, "none",
-                                "restart scheme: none, IPOP (population doubled) or BIPOP"));
-    auto sep = box_algorithm("sep-cmaes", "cmaes",
-                             "separable CMA-ES: diagonal covariance, O(D) per sample (Ros and Hansen 2008)", sep_params,
-                             [](const Params& p) {
-                                 const std::string& r = p.choice("restarts");
-                                 cma::SelectableRestarts restarts = cma::NoRestarts{};
-                                 if (r == "ipop") restarts = cma::Ipop{};
-                                 if (r == "bipop") restarts = cma::Bipop{};
-                                 return configure<cma::DiagonalCovariance>(p, "sep-cmaes", restarts);
-                             });
+    sep_params.push_back(restarts_param({"restart", "none", "ipop", "bipop"}));
+    auto sep = box_algorithm(
+        "sep-cmaes", "cmaes", "separable CMA-ES: diagonal covariance, O(D) per sample (Ros and Hansen 2008)",
+        sep_params, [](const Params& p) {
+            return configure<cma::DiagonalCovariance>(p, "sep-cmaes", restarts_of(p.choice("restarts")));
+        });
     sep.grid_population = 0;  // the tutorial's lambda on grids too
     sep.memory = cma_memory(false, cma::Ipop::max_lambda_factor());
     registry.add(std::move(sep));

@@ -75,6 +75,8 @@ def api(tmp_path):
                            seed=SEED)),
         "Optimizer.tell": (lambda **o: (lambda x: x.tell(**{"values": np.zeros(len(x.ask())), **o}))(opt()),
                            dict(values=NUMBERS)),
+        "Problem": (lambda **o: pride.Problem(**{"name": "sphere", "dim": 2, **o}),
+                    dict(name=TEXT, dim=INT, instance=INT, seed=SEED)),
         "Grid": (lambda **o: pride.Grid(**{"array": np.zeros((2, 2)), **o}), dict(array=[None, "abc", object()])),
         "Grid.load": (lambda **o: pride.Grid.load(**{"path": mfile, "inflate": 0, **o}), dict(path=PATH, inflate=INT_REQUIRED)),
         "Grid.inflated": (lambda **o: GRID.inflated(**{"radius": 1, **o}), dict(radius=INT_REQUIRED)),
