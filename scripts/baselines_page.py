@@ -39,7 +39,7 @@ PAGE = REPO / "docs" / "results" / "baselines.md"
 CAMPAIGNS = REPO / "examples" / "campaigns"
 
 # The page's algorithms in table order (ids of baselines-bbob.toml).
-ALGOS = ["cmaes", "ipop-cmaes", "bipop-cmaes", "sep-cmaes", "de", "jde", "jade", "shade", "lshade", "jso", "pso",
+ALGOS = ["cmaes", "cmaes-once", "ipop-cmaes", "bipop-cmaes", "sep-cmaes", "de", "jde", "jade", "shade", "lshade", "jso", "pso",
          "ga", "woa", "sbplx", "crs2"]
 DIMS = [5, 20]
 # The precisions whose first reaching each BBOB run records (COCO's targets at integer exponents).
@@ -207,15 +207,22 @@ def restarts_block(data):
         rows = read_bbob(dim, data)
         for fn in (3, 15, 16, 21, 22, 23):
             cells = []
-            for a in ("cmaes", "ipop-cmaes", "bipop-cmaes"):
+            for a in ("cmaes-once", "cmaes", "ipop-cmaes", "bipop-cmaes"):
                 rs = [r for r in rows if int(r["function"]) == fn and r["algorithm"] == a]
                 cells.append(f"{sum(float(r['precision']) <= SOLVED for r in rs)} / {len(rs)}")
             out.append([f"f{fn}", dim] + cells)
-    return rp.table(["function", "D", "`cmaes` (one run)", "`ipop-cmaes`", "`bipop-cmaes`"], out, "lrrrr")
+    return rp.table(["function", "D", "`cmaes-once` (one run)", "`cmaes` (same-lambda restarts)", "`ipop-cmaes`",
+                     "`bipop-cmaes`"], out, "lrrrrr")
 
 
 def snap(e):
     return 0.0 if e < 1e-8 else e  # the CEC rule: errors below 1e-8 count as 0
+
+
+def as_published(e):
+    """An error as jSO's result files print it (6 significant digits, %g), so that the test compares
+    the two at the same resolution: 100.00000012 would otherwise rank above every printed 100."""
+    return float(f"{snap(e):.6g}")
 
 
 def lshade_block(data):
@@ -224,8 +231,9 @@ def lshade_block(data):
     with open(data / "lshade-official-cec2022.csv", newline="") as fh:
         for r in csv.DictReader(fh):
             official.setdefault((int(r["function"]), int(r["dimension"])), []).append(snap(float(r["error"])))
-    keys = sorted(official)
     variants = [a for a in ("lshade", "lshade-paper") if any(k[2] == a for k in ours)]
+    # Only what has all its runs (a campaign resumed over sessions fills the rest).
+    keys = sorted(k for k in official if all(len(ours.get((k[0], k[1], a), [])) == len(official[k]) for a in variants))
     ps = {a: [rp.rank_sum(official[k], [snap(e) for e in ours[(k[0], k[1], a)]]) for k in keys] for a in variants}
     adj = {a: rp.holm(ps[a]) for a in variants}
     out = []
@@ -235,7 +243,7 @@ def lshade_block(data):
             mine = [snap(e) for e in ours[(fn, dim, a)]]
             row += [fmt(rp.median(mine)), f"{ps[a][i]:.3g}", f"{adj[a][i]:.3g}" + (" *" if adj[a][i] < 0.05 else "")]
         out.append(row)
-    header = ["function", "D", "official median"]
+    header = ["function", "D", "official median"]  # Holm over the rows shown, per variant
     for a in variants:
         header += [f"`{a}` median", "p", "p (Holm)"]
     return rp.table(header, out, "lr" + "r" * (len(header) - 2))
@@ -251,7 +259,7 @@ def jso_block(data):
     keys = sorted(k for k in pub if len(ours.get((k[0], k[1], "jso"), [])) == int(pub[k]["runs"]))
     out = []
     for fn, dim in keys:
-        mine = [snap(e) for e in ours[(fn, dim, "jso")]]
+        mine = [as_published(e) for e in ours[(fn, dim, "jso")]]
         r = pub[(fn, dim)]
         out.append([f"F{fn}", dim, fmt(float(r["median"])), f"{fmt(float(r['mean']))} ± {fmt(float(r['std']))}",
                     fmt(rp.median(mine)), f"{fmt(rp.mean(mine))} ± {fmt(rp.stdev(mine))}", r["p"],
@@ -320,6 +328,25 @@ def write_page():
     PAGE.write_text(rp.replace_blocks(PAGE.read_text(), blocks()))
 
 
+def export_jso(folder):
+    """jSO's published summary beside the rank-sum test of pride's runs against the published ones
+    (only the functions whose runs are all in), to data/jso-published-cec2017.csv."""
+    raw = export_jso_published(folder)
+    ours = read_cec("jso-cec2017")
+    keys = sorted(k for k in raw if len(ours.get((k[0], k[1], "jso"), [])) == len(raw[k]))
+    ps = [rp.rank_sum([snap(v) for v in raw[k]], [as_published(e) for e in ours[(k[0], k[1], "jso")]]) for k in keys]
+    adj = rp.holm(ps)
+    with open(DATA / "jso-published-cec2017.csv", "w", newline="") as fh:
+        w = csv.writer(fh, lineterminator="\n")
+        w.writerow(["function", "dimension", "runs", "best", "median", "mean", "std", "worst", "p", "p_holm"])
+        tested = {k: (f"{p:.3g}", f"{q:.3g}") for k, p, q in zip(keys, ps, adj)}
+        for k in sorted(raw):
+            v = [snap(x) for x in raw[k]]
+            p, q = tested.get(k, ("", ""))
+            w.writerow([k[0], k[1], len(v), repr(min(v)), repr(rp.median(v)), repr(rp.mean(v)), repr(rp.stdev(v)),
+                        repr(max(v)), p, q])
+
+
 def run(build, stores, jobs):
     pride = build / "cli" / "pride"
     stores.mkdir(parents=True, exist_ok=True)
@@ -330,18 +357,7 @@ def run(build, stores, jobs):
     export_bbob(stores / "baselines-bbob.sqlite", pride)
     export_cec("lshade-cec2022", stores / "lshade-cec2022.sqlite", pride)
     export_cec("jso-cec2017", stores / "jso-cec2017.sqlite", pride)
-    raw = export_jso_published(os.environ["PRIDE_JSO_RESULTS"])
-    ours = read_cec("jso-cec2017")
-    keys = sorted(k for k in raw if len(ours.get((k[0], k[1], "jso"), [])) == len(raw[k]))
-    ps = [rp.rank_sum([snap(v) for v in raw[k]], [snap(e) for e in ours[(k[0], k[1], "jso")]]) for k in keys]
-    adj = rp.holm(ps)
-    with open(DATA / "jso-published-cec2017.csv", "w", newline="") as fh:
-        w = csv.writer(fh, lineterminator="\n")
-        w.writerow(["function", "dimension", "runs", "best", "median", "mean", "std", "worst", "p", "p_holm"])
-        for k, p, q in zip(keys, ps, adj):
-            v = [snap(x) for x in raw[k]]
-            w.writerow([k[0], k[1], len(v), repr(min(v)), repr(rp.median(v)), repr(rp.mean(v)), repr(rp.stdev(v)),
-                        repr(max(v)), f"{p:.3g}", f"{q:.3g}"])
+    export_jso(os.environ["PRIDE_JSO_RESULTS"])
     for d in DIMS:
         ecdf_figure(d)
     write_page()
