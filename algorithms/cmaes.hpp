@@ -128,8 +128,7 @@ class Cmaes {
         RunState& state = start.state;
         cma::Search<Covariance::separable> search(problem.lower(), problem.upper());
         Matrix mean(static_cast<Eigen::Index>(n), 1);
-        auto sequence =
-            cma::visit_policy(restarts, [&](const auto& r) { return AnySequence(r.sequence(first_lambda(n))); });
+        auto sequence = visit_policy(restarts, [&](const auto& r) { return AnySequence(r.sequence(first_lambda(n))); });
         cma::RunPlan plan;
         // The first generation is iteration 0 (the initial population of other algorithms): it is
         // sampled and evaluated under any limit but the evaluations', so that an iteration limit

@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "algorithms/parts/run_setup.hpp"
+#include "algorithms/parts/visit_policy.hpp"
 #include "algorithms/parts/whale_moves.hpp"
 #include "algorithms/parts/whale_pods.hpp"
 #include "framework/bounds.hpp"
@@ -273,14 +274,6 @@ class Woa {
             pod.end_iteration(observer);
         }
         return pod.finish();
-    }
-
-    template <class Policy, class F>
-    static void visit_policy(const Policy& policy, F&& f) {
-        if constexpr (requires { policy.visit(f); })
-            policy.visit(f);
-        else
-            f(policy);
     }
 };
 

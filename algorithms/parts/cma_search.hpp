@@ -16,6 +16,7 @@
 
 #include "algorithms/parts/cma_stopping.hpp"
 #include "algorithms/parts/cma_strategy.hpp"
+#include "algorithms/parts/visit_policy.hpp"
 #include "framework/error.hpp"
 #include "framework/one_of.hpp"
 #include "framework/problem.hpp"
@@ -46,15 +47,6 @@ struct Penalty {
     }
 };
 using SelectableBoundary = OneOf<Resample, ClampRepair, Penalty>;
-
-/// Calls f with the policy, or with the alternative a OneOf holds.
-template <class Policy, class F>
-decltype(auto) visit_policy(const Policy& policy, F&& f) {
-    if constexpr (requires { policy.visit(f); })
-        return policy.visit(f);
-    else
-        return f(policy);
-}
 
 template <bool Separable>
 class Search {
