@@ -4,8 +4,9 @@ rosenbrock and bbob-f10 (instance 1) in D = 10 and 40, median over 25 seeds.
 
 Both start from a mean uniform in the box with sigma0 = 0.3 of its width (C = I: the same search
 as pride's C = diag(width^2) with sigma0 = 0.3, the box being a cube), resample points outside the
-box (python3-cmaes up to 100 times, then clips; pride the same), and run without stopping
-criteria or restarts until the target or the budget (10,000 D evaluations); evaluations are
+box (python3-cmaes up to 100 times, then clips; pride the same), and run without restarts until
+the target or the budget (10,000 D evaluations; python3-cmaes without its should_stop, pride with
+TolFun and TolX off and its other stopping criteria on); evaluations are
 counted at the end of the generation that reaches the target, on both sides. Both evaluate the
 same functions: python3-cmaes calls pride.Problem (pride's values, bit for bit).
 
