@@ -20,7 +20,7 @@
 //
 // The initial population (run_setup.hpp): N_init = `population`, or the Size rule (S1)-(S3) when
 // it is 0; drawn by the Init policy, evaluated, recorded as iteration 0. Each generation G:
-//   (1) rank the population by value (best first, ties to the lower index);
+//   (1) rank the population by value (best first, ties to the lower index), as far as the strategy reads;
 //   (2) per individual i: F_i, CR_i, F_w,i from the Control policy (P1)-(P5);
 //   (3) per individual i: the trial u_i = the Mutation policy's mutant (M1)-(M5) crossed with x_i
 //       (C), then the Repair policy (R); every trial is made from the population of step (1)
@@ -99,11 +99,18 @@ struct Start {
     void validate() const {}
 };
 
-/// `order` <- 0, 1, ..., k - 1 (k its size) ordered by value, best first, ties to the lower index.
-inline void rank(std::span<const double> f, std::span<std::size_t> order) {
+/// The first `leading` entries of `order` <- those of 0, 1, ..., k - 1 (k its size) ordered by
+/// value, best first, ties to the lower index (a total order: the same entries whether the whole
+/// is sorted or only its head, which is all a strategy reads: none for rand/1, one for best/1).
+inline void rank(std::span<const double> f, std::span<std::size_t> order, std::size_t leading) {
+    const auto before = [&](std::size_t a, std::size_t b) { return f[a] < f[b] || (f[a] == f[b] && a < b); };
+    leading = std::min(leading, order.size());
+    if (leading == 0) return;
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return f[a] < f[b] || (f[a] == f[b] && a < b); });
+    if (leading == 1)
+        order[0] = *std::min_element(order.begin(), order.end(), before);
+    else
+        std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(leading), order.end(), before);
 }
 
 /// Removes the `count` worst individuals, one at a time, each the first of the worst values
@@ -239,7 +246,9 @@ class De {
         while (!state.done()) {
             const de::Spent spent{state.progress().evaluations, limit};
             const auto order_n = std::span<std::size_t>(order).first(n);
-            de::rank(fx, order_n);  // (1)
+            std::size_t leading = 0;
+            de::visit(mutation, [&](const auto& m) { leading = m.ranked(n, spent); });
+            de::rank(fx, order_n, leading);  // (1)
             // The draws of (2) and (3) come from a local copy of the generator, put back after:
             // its state stays in registers (the same draws in the same order).
             Rng local = rng;

@@ -63,9 +63,11 @@ struct Spent {
 
 /// The population as a strategy sees it in one generation.
 struct Generation {
-    const Matrix& x;                     // one column per individual
-    std::span<const std::size_t> order;  // the individuals by value, best first (ties: lower index)
-    const Matrix* archive = nullptr;     // the archive's first `archived` columns (current-to-pbest)
+    const Matrix& x;  // one column per individual
+    // The individuals by value, best first (ties: lower index); only the strategy's ranked()
+    // leading entries are set.
+    std::span<const std::size_t> order;
+    const Matrix* archive = nullptr;  // the archive's first `archived` columns (current-to-pbest)
     std::size_t archived = 0;
     Spent spent{};
 
@@ -117,6 +119,8 @@ struct RandOne {
     static constexpr bool scheduled = false;
     static constexpr const char* name = "rand/1/bin";
     static constexpr std::int64_t min_population = 4;  // the target and three donors
+    /// How many leading entries of Generation::order pick() reads (the rest is not ranked).
+    static std::size_t ranked(std::size_t, Spent) noexcept { return 0; }
     void validate(const std::string&) const {}
     template <class Draw>
     Donors pick(const Generation& g, std::size_t i, Draw& u) const {
@@ -135,6 +139,7 @@ struct BestOne {
     static constexpr bool scheduled = false;
     static constexpr const char* name = "best/1/bin";
     static constexpr std::int64_t min_population = 3;
+    static std::size_t ranked(std::size_t, Spent) noexcept { return 1; }
     void validate(const std::string&) const {}
     template <class Draw>
     Donors pick(const Generation& g, std::size_t i, Draw& u) const {
@@ -154,6 +159,7 @@ struct CurrentToBestOne {
     static constexpr bool scheduled = false;
     static constexpr const char* name = "current-to-best/1/bin";
     static constexpr std::int64_t min_population = 3;
+    static std::size_t ranked(std::size_t, Spent) noexcept { return 1; }
     void validate(const std::string&) const {}
     template <class Draw>
     Donors pick(const Generation& g, std::size_t i, Draw& u) const {
@@ -174,6 +180,7 @@ struct RandTwo {
     static constexpr bool scheduled = false;
     static constexpr const char* name = "rand/2/bin";
     static constexpr std::int64_t min_population = 6;  // the target and five donors
+    static std::size_t ranked(std::size_t, Spent) noexcept { return 0; }
     void validate(const std::string&) const {}
     template <class Draw>
     Donors pick(const Generation& g, std::size_t i, Draw& u) const {
@@ -202,6 +209,7 @@ struct FixedRate {
     double operator()(std::size_t, Spent, Draw&) const noexcept {
         return p;
     }
+    double largest(std::size_t, Spent) const noexcept { return p; }
     void validate(const std::string& who) const {
         require(p > 0.0 && p <= 1.0, who, "p must be in (0, 1], got " + std::to_string(p));
     }
@@ -216,6 +224,7 @@ struct UniformRate {
         const double p_min = 2.0 / static_cast<double>(n);
         return p_min + (std::max(p_min, p_max) - p_min) * u.uniform();
     }
+    double largest(std::size_t n, Spent) const noexcept { return std::max(2.0 / static_cast<double>(n), p_max); }
     void validate(const std::string& who) const {
         require(p_max > 0.0 && p_max <= 1.0, who, "p_max must be in (0, 1], got " + std::to_string(p_max));
     }
@@ -230,6 +239,7 @@ struct LinearRate {
     double operator()(std::size_t, Spent spent, Draw&) const noexcept {
         return start + (end - start) * spent.fraction();
     }
+    double largest(std::size_t, Spent spent) const noexcept { return start + (end - start) * spent.fraction(); }
     void validate(const std::string& who) const {
         require(start > 0.0 && start <= 1.0, who, "p_max must be in (0, 1], got " + std::to_string(start));
         require(end > 0.0 && end <= start, who,
@@ -252,6 +262,8 @@ struct CurrentToPBest {
         require(pbest_not_target_before >= 0.0 && pbest_not_target_before <= 1.0, who,
                 "the share of the budget with x_pbest distinct from the target must be in [0, 1]");
     }
+    /// The largest top a draw of p can give (pbest_count is monotone in p).
+    std::size_t ranked(std::size_t n, Spent spent) const noexcept { return pbest_count(rate.largest(n, spent), n); }
     template <class Draw>
     Donors pick(const Generation& g, std::size_t i, Draw& u) const {
         const std::size_t n = g.size();
