@@ -20,6 +20,7 @@
 #include "engine/run.hpp"
 #include "framework/error.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/scripted_draws.hpp"
 #include "tests/test_support.hpp"
 
 namespace {
@@ -29,31 +30,7 @@ using Catch::Matchers::Contains;
 using pride::test::input_error_message;
 using Vec = std::vector<double>;
 
-/// Scripted draws: uniform(), below(n) and normal() return the next value of their own queue.
-struct Script {
-    std::deque<double> u, z;
-    std::deque<std::uint64_t> k;
-    double uniform() {
-        REQUIRE(!u.empty());
-        const double v = u.front();
-        u.pop_front();
-        return v;
-    }
-    double normal() {
-        REQUIRE(!z.empty());
-        const double v = z.front();
-        z.pop_front();
-        return v;
-    }
-    std::uint64_t below(std::uint64_t n) {
-        REQUIRE(!k.empty());
-        const auto v = k.front();
-        k.pop_front();
-        REQUIRE(v < n);
-        return v;
-    }
-    bool spent() const { return u.empty() && z.empty() && k.empty(); }
-};
+using Script = pride::test::ScriptedDraws;
 
 const char* const kEntries[] = {"de", "jde", "jade", "shade", "lshade", "jso"};
 
@@ -644,10 +621,10 @@ TEST_CASE("DE: each policy's validation error", "[de][errors]") {
     CHECK(control(de::JadeControl{1.5}) == "x: c must be in [0, 1], got 1.500000");
     CHECK(control(de::JadeControl{0.1, 0.0}) == "x: the initial mu_F must be in (0, 1], got 0.000000");
     CHECK(control(de::JadeControl{0.1, 0.5, 1.5}) == "x: the initial mu_CR must be in [0, 1], got 1.500000");
-    CHECK(control(de::ShadeControl{0}) == "x: memory must be in [1, 1000000], got 0");
-    CHECK(control(de::ShadeControl{5, 0.0}) == "x: the initial M_F must be in (0, 1], got 0.000000");
-    CHECK(control(de::ShadeControl{5, 0.5, -1.0}) == "x: the initial M_CR must be in [0, 1], got -1.000000");
-    CHECK(control(de::LshadeControl{0}) == "x: memory must be in [1, 1000000], got 0");
+    CHECK(control(de::ShadeControl{{0}}) == "x: memory must be in [1, 1000000], got 0");
+    CHECK(control(de::ShadeControl{{5, 0.0}}) == "x: the initial M_F must be in (0, 1], got 0.000000");
+    CHECK(control(de::ShadeControl{{5, 0.5, -1.0}}) == "x: the initial M_CR must be in [0, 1], got -1.000000");
+    CHECK(control(de::LshadeControl{{0}}) == "x: memory must be in [1, 1000000], got 0");
     CHECK(control(de::JsoControl{1}) == "x: memory must be in [2, 1000000], got 1");
     CHECK(control(de::JsoControl{5, 0.3, 0.8, 0.0}) ==
           "x: the last slot's M_F and M_CR must be in (0, 1], got 0.000000");

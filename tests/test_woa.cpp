@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <span>
 #include <string>
@@ -18,31 +17,14 @@
 #include "framework/termination.hpp"
 #include "problems/continuous/functions.hpp"
 #include "problems/continuous/yao.hpp"
+#include "tests/scripted_draws.hpp"
 
 namespace {
 
 using Vec = std::vector<double>;
 namespace whale = pride::whale;
 
-/// Scripted draws: uniform() and below(n) return the next scripted value of their own queue.
-struct Script {
-    std::deque<double> u;
-    std::deque<std::uint64_t> k;
-    double uniform() {
-        REQUIRE(!u.empty());
-        const double v = u.front();
-        u.pop_front();
-        return v;
-    }
-    std::uint64_t below(std::uint64_t n) {
-        REQUIRE(!k.empty());
-        const auto v = k.front();
-        k.pop_front();
-        REQUIRE(v < n);
-        return v;
-    }
-    bool spent() const { return u.empty() && k.empty(); }
-};
+using Script = pride::test::ScriptedDraws;
 
 struct Log {
     std::int64_t calls = 0, outside = 0;

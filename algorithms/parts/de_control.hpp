@@ -300,10 +300,12 @@ struct JadeControl {
     std::int64_t memory_slots() const { return 1; }
 };
 
-/// (P4), (U2) SHADE's success-history memory (Tanabe and Fukunaga 2013).
-struct ShadeControl {
+/// (P4) The success-history memory of SHADE and L-SHADE: H slots (default `H`), sampled alike;
+/// each adds its own update, (U2) or (U3).
+template <std::int64_t H>
+struct HistoryMemory {
     static constexpr bool scheduled = false;
-    std::int64_t memory = 100;  // H
+    std::int64_t memory = H;
     double f_init = 0.5;
     double cr_init = 0.5;
     void validate(const std::string& who) const {
@@ -317,35 +319,24 @@ struct ShadeControl {
         return detail::memory_sample(a, u);
     }
     void keep(Adaptation&, std::size_t, const Parameters&) const {}
+    std::int64_t memory_slots() const { return memory; }
+};
+
+/// (P4), (U2) SHADE's success-history memory (Tanabe and Fukunaga 2013), H = 100.
+struct ShadeControl : HistoryMemory<100> {
     void update(Adaptation& a, const Successes& s) const {
         if (s.empty()) return;
         a.memory_cr[a.next] = weighted_arithmetic_mean(s.cr, s.gain);
         a.memory_f[a.next] = weighted_lehmer_mean(s.f, s.gain);
         detail::advance(a);
     }
-    std::int64_t memory_slots() const { return memory; }
 };
 
-/// (P4), (U3) L-SHADE's memory: weighted Lehmer means for both, and the terminal value (Tanabe and
-/// Fukunaga 2014). `sticky_terminal`: the paper's reading (a terminal slot stays terminal);
-/// unset, Tanabe's code.
-struct LshadeControl {
-    static constexpr bool scheduled = false;
-    std::int64_t memory = 6;  // H
-    double f_init = 0.5;
-    double cr_init = 0.5;
+/// (P4), (U3) L-SHADE's memory, H = 6: weighted Lehmer means for both, and the terminal value
+/// (Tanabe and Fukunaga 2014). `sticky_terminal`: the paper's reading (a terminal slot stays
+/// terminal); unset, Tanabe's code.
+struct LshadeControl : HistoryMemory<6> {
     bool sticky_terminal = false;
-    void validate(const std::string& who) const {
-        detail::require_memory_size(memory, 1, who);
-        detail::require_unit(f_init, "the initial M_F", who, false);
-        detail::require_unit(cr_init, "the initial M_CR", who, true);
-    }
-    void start(Adaptation& a, std::size_t) const { detail::start_memory(a, memory, f_init, cr_init); }
-    template <class Draw>
-    Parameters sample(const Adaptation& a, std::size_t, Spent, Draw& u) const {
-        return detail::memory_sample(a, u);
-    }
-    void keep(Adaptation&, std::size_t, const Parameters&) const {}
     void update(Adaptation& a, const Successes& s) const {
         if (s.empty()) return;
         const WeightedSums cr = weighted_sums(s.cr, s.gain);
@@ -354,7 +345,6 @@ struct LshadeControl {
         a.memory_cr[a.next] = terminal ? kTerminal : cr.squares / cr.values;
         detail::advance(a);
     }
-    std::int64_t memory_slots() const { return memory; }
 };
 
 /// (P4), (P5), (U4) jSO's memory and its rules over the budget (Brest et al. 2017).

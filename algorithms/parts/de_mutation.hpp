@@ -112,6 +112,15 @@ inline const double* col(const Matrix& x, std::size_t k) noexcept {
     return x.col(static_cast<Eigen::Index>(k)).data();
 }
 
+/// The donors of best/1 and current-to-best/1: x_best and two others, distinct from the target.
+template <class Draw>
+Donors best_and_two(const Generation& g, std::size_t i, Draw& u) {
+    Donors d;
+    d.best = g.order[0];
+    draw_distinct(u, g.size(), i, 2, d);
+    return d;
+}
+
 }  // namespace detail
 
 /// (M1) DE/rand/1.
@@ -143,10 +152,7 @@ struct BestOne {
     void validate(const std::string&) const {}
     template <class Draw>
     Donors pick(const Generation& g, std::size_t i, Draw& u) const {
-        Donors d;
-        d.best = g.order[0];
-        detail::draw_distinct(u, g.size(), i, 2, d);
-        return d;
+        return detail::best_and_two(g, i, u);
     }
     void mutant(const Generation& g, std::size_t, const Donors& d, double f, double, std::span<double> v) const {
         const double *a = detail::col(g.x, d.best), *b = detail::col(g.x, d.r[0]), *c = detail::col(g.x, d.r[1]);
@@ -163,10 +169,7 @@ struct CurrentToBestOne {
     void validate(const std::string&) const {}
     template <class Draw>
     Donors pick(const Generation& g, std::size_t i, Draw& u) const {
-        Donors d;
-        d.best = g.order[0];
-        detail::draw_distinct(u, g.size(), i, 2, d);
-        return d;
+        return detail::best_and_two(g, i, u);
     }
     void mutant(const Generation& g, std::size_t i, const Donors& d, double f, double, std::span<double> v) const {
         const double *x = detail::col(g.x, i), *best = detail::col(g.x, d.best);
