@@ -3,7 +3,8 @@
 
     /usr/bin/python3 scripts/baselines_page.py run [--build build] [--stores DIR] [--jobs 2]
         runs (or resumes) the page's campaigns into DIR (default build/results): the BBOB one
-        (examples/campaigns/baselines-bbob.toml), L-SHADE on CEC 2022 (lshade-cec2022.toml, needs
+        (examples/campaigns/baselines-bbob.toml), the CEC 2017 one (baselines-cec2017.toml, needs
+        PRIDE_CEC2017_DATA), L-SHADE on CEC 2022 (lshade-cec2022.toml, needs
         PRIDE_CEC2022_DATA) and jSO on CEC 2017 (jso-cec2017.toml, needs PRIDE_CEC2017_DATA);
         writes their compact data to docs/results/data/ and the figures to docs/results/img/, then
         the page. The jSO comparison reads jSO's published competition results from
@@ -47,6 +48,8 @@ EXPONENTS = list(range(2, -9, -1))
 GROUPS = [("separable", range(1, 6)), ("moderate", range(6, 10)), ("ill-conditioned", range(10, 15)),
           ("multimodal", range(15, 20)), ("weak structure", range(20, 25))]
 SOLVED = 1e-8
+CEC2017_DIMS = [10, 30]
+CEC2017_RUNS = 25  # baselines-cec2017.toml's seeds: a cell is shown when every algorithm has them all
 # CEC 2022's F* (the official code's biases), for the official L-SHADE's errors.
 CEC2022_FSTAR = [300, 400, 600, 800, 900, 1800, 2000, 2200, 2300, 2400, 2600, 2700]
 
@@ -185,6 +188,16 @@ def ert_block(data, dim):
     return rp.table(["function"] + [f"`{a}`" for a in algos], out, "l" + "r" * len(algos))
 
 
+def best_and_ties(values, algos):
+    """The algorithm of lowest median (ties to the table's order), its median, and the others not
+    significantly worse: two-sided rank-sum p >= 0.05 against it, Holm over the row's comparisons."""
+    best = min(algos, key=lambda a: (rp.median(values[a]), algos.index(a)))
+    others = [a for a in algos if a != best]
+    ps = rp.holm([rp.rank_sum(values[best], values[a]) for a in others])
+    tied = [a for a, p in zip(others, ps) if p >= 0.05]
+    return best, rp.median(values[best]), ", ".join(f"`{a}`" for a in tied) or "none"
+
+
 def tests_block(data, dim):
     rows = read_bbob(dim, data)
     algos = present(rows)
@@ -192,11 +205,8 @@ def tests_block(data, dim):
     for fn in range(1, 25):
         prec = {a: [float(r["precision"]) for r in rows if int(r["function"]) == fn and r["algorithm"] == a]
                 for a in algos}
-        best = min(algos, key=lambda a: (rp.median(prec[a]), algos.index(a)))
-        others = [a for a in algos if a != best]
-        ps = rp.holm([rp.rank_sum(prec[best], prec[a]) for a in others])
-        tied = [a for a, p in zip(others, ps) if p >= 0.05]
-        out.append([f"f{fn}", f"`{best}`", fmt(rp.median(prec[best])), ", ".join(f"`{a}`" for a in tied) or "none"])
+        best, med, tied = best_and_ties(prec, algos)
+        out.append([f"f{fn}", f"`{best}`", fmt(med), tied])
     return rp.table(["function", "lowest median precision", "its median", "not significantly worse (Holm p >= 0.05)"],
                     out, "llrl")
 
@@ -268,6 +278,73 @@ def jso_block(data):
                      "p", "p (Holm)"], out, "lr" + "r" * 6)
 
 
+def cec2017_cells(data):
+    """{(function, D): {algorithm: snapped errors}} of the cells whose runs are all in (every
+    algorithm of the campaign, CEC2017_RUNS each), and the algorithms in table order."""
+    runs = read_cec("baselines-cec2017", data)
+    have = {k[2] for k in runs}
+    algos = [a for a in ALGOS if a in have]
+    cells = {}
+    for fn in range(1, 31):
+        for dim in CEC2017_DIMS:
+            if all(len(runs.get((fn, dim, a), [])) == CEC2017_RUNS for a in algos):
+                cells[(fn, dim)] = {a: [snap(e) for e in runs[(fn, dim, a)]] for a in algos}
+    return cells, algos
+
+
+def cec2017_ranks_block(data):
+    cells, algos = cec2017_cells(data)
+    lines, columns = [], []
+    for dim in CEC2017_DIMS:
+        keys = sorted(k for k in cells if k[1] == dim)
+        if len(keys) < 5:  # the chi-squared approximation wants more blocks than a handful
+            lines.append(f"D = {dim}: {len(keys)} of 30 functions complete, too few for the test.")
+            columns.append(None)
+            continue
+        medians = [[rp.median(cells[k][a]) for a in algos] for k in keys]
+        chi2, p, ranks = rp.friedman(medians)
+        lowest = [sum(row[j] == min(row) for row in medians) for j in range(len(algos))]
+        columns.append((ranks, lowest))
+        lines.append(f"D = {dim}: {len(keys)} of 30 functions; Friedman chi2 = {chi2:.1f} "
+                     f"({len(algos) - 1} degrees of freedom), p = {rp.fmt_p(p)}.")
+    header, out = ["algorithm"], []
+    for dim, col in zip(CEC2017_DIMS, columns):
+        if col:
+            header += [f"mean rank, D = {dim}", f"lowest median, D = {dim}"]
+    for j, a in enumerate(algos):
+        row = [f"`{a}`"]
+        for col in columns:
+            if col:
+                row += [f"{col[0][j]:.2f}", str(col[1][j])]
+        out.append(row)
+    table = rp.table(header, out, "l" + "r" * (len(header) - 1)) if len(header) > 1 else ""
+    return "\n".join(lines) + ("\n\n" + table if table else "")
+
+
+def cec2017_medians_block(data, dim):
+    cells, algos = cec2017_cells(data)
+    out = []
+    for fn, d in sorted(k for k in cells if k[1] == dim):
+        values = [rp.median(cells[(fn, d)][a]) for a in algos]
+        best = min(values)
+        out.append([f"F{fn}"] + [("**" + fmt(v) + "**" if v == best else fmt(v)) for v in values])
+    if not out:
+        return f"No function at D = {dim} has all its runs yet."
+    return rp.table(["function"] + [f"`{a}`" for a in algos], out, "l" + "r" * len(algos))
+
+
+def cec2017_tests_block(data, dim):
+    cells, algos = cec2017_cells(data)
+    out = []
+    for fn, d in sorted(k for k in cells if k[1] == dim):
+        best, med, tied = best_and_ties(cells[(fn, d)], algos)
+        out.append([f"F{fn}", f"`{best}`", fmt(med), tied])
+    if not out:
+        return f"No function at D = {dim} has all its runs yet."
+    return rp.table(["function", "lowest median error", "its median", "not significantly worse (Holm p >= 0.05)"],
+                    out, "llrl")
+
+
 def blocks(data=DATA):
     b = {"bbob-solved": solved_block(data), "bbob-restarts": restarts_block(data)}
     for d in DIMS:
@@ -275,6 +352,11 @@ def blocks(data=DATA):
         b[f"bbob-tests-d{d}"] = tests_block(data, d)
     if (data / "lshade-cec2022.csv").exists():
         b["lshade"] = lshade_block(data)
+    if (data / "baselines-cec2017.csv").exists():
+        b["cec2017-ranks"] = cec2017_ranks_block(data)
+        for d in CEC2017_DIMS:
+            b[f"cec2017-medians-d{d}"] = cec2017_medians_block(data, d)
+            b[f"cec2017-tests-d{d}"] = cec2017_tests_block(data, d)
     if (data / "jso-cec2017.csv").exists() and (data / "jso-published-cec2017.csv").exists():
         b["jso"] = jso_block(data)
     return b
@@ -351,10 +433,11 @@ def run(build, stores, jobs):
     pride = build / "cli" / "pride"
     stores.mkdir(parents=True, exist_ok=True)
     IMG.mkdir(parents=True, exist_ok=True)
-    for name in ("baselines-bbob", "lshade-cec2022", "jso-cec2017"):
+    for name in ("baselines-bbob", "baselines-cec2017", "lshade-cec2022", "jso-cec2017"):
         store = stores / f"{name}.sqlite"
         rp.run([pride, "bench", CAMPAIGNS / f"{name}.toml", "--jobs", jobs, "--out", store], cwd=REPO)
     export_bbob(stores / "baselines-bbob.sqlite", pride)
+    export_cec("baselines-cec2017", stores / "baselines-cec2017.sqlite", pride)
     export_cec("lshade-cec2022", stores / "lshade-cec2022.sqlite", pride)
     export_cec("jso-cec2017", stores / "jso-cec2017.sqlite", pride)
     export_jso(os.environ["PRIDE_JSO_RESULTS"])

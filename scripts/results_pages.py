@@ -316,6 +316,19 @@ def kruskal(groups):
     return h, chi2_sf(h, len(groups) - 1)
 
 
+def friedman(blocks):
+    """Friedman's test over blocks (rows: one value per treatment, lower better), ranks averaged
+    within a block and the tie correction of scipy.stats.friedmanchisquare: (chi2, p, mean ranks)."""
+    n, k = len(blocks), len(blocks[0])
+    ranks = [average_ranks(row) for row in blocks]
+    sums = [sum(r[j] for r in ranks) for j in range(k)]
+    ties = sum(_tie_sum(row) for row in blocks)
+    chi2 = 12.0 / (n * k * (k + 1.0)) * sum(s * s for s in sums) - 3.0 * n * (k + 1.0)
+    c = 1.0 - ties / (n * k * (k * k - 1.0))
+    chi2 = chi2 / c if c > 0 else 0.0
+    return chi2, chi2_sf(chi2, k - 1), [s / n for s in sums]
+
+
 def fisher_exact(a, b, c, d):
     """Two-sided p of Fisher's exact test on the table [[a, b], [c, d]] (as scipy.stats.fisher_exact:
     the tables no more probable than the one observed, with a relative tolerance of 1e-7)."""
