@@ -1,15 +1,15 @@
 #pragma once
 // The two-objective test problems of E. Zitzler, K. Deb, L. Thiele, "Comparison of multiobjective
 // evolutionary algorithms: empirical results", Evolutionary Computation 8(2), 2000, 173-195,
-// Section 3 ("test functions"), known since as ZDT1-ZDT6. Each is built on Deb's construction
-// (same section):
+// the test functions T1-T6 of its Section 3, known since as ZDT1-ZDT6 (cited below by the paper's
+// names, which it gives as formulas, not numbered equations). Each is built on Deb's construction:
 //
 //   minimise T(x) = (f1(x1), f2(x)),   f2(x) = g(x2, ..., xn) h(f1(x1), g(x2, ..., xn)),
 //
 // with the paper's functions T1, T2, T3, T4 and T6 below (T5 is binary-coded: not a box problem).
 // The paper writes m for the number of variables; here it is n, any n >= 2 (its default is the
-// constructor's). The Pareto-optimal set is g = 1 (ZDT1-3, 6: x2..xn = 0; ZDT4: x2..xn = 0 too),
-// and the fronts (fronts.hpp) are h(f1, 1) over the f1 the set reaches.
+// constructor's). The Pareto-optimal set is g = 1, at x2..xn = 0 for all five, and the fronts
+// (fronts.hpp) are f2 = h(f1, 1) over the f1 the set reaches.
 //
 //   class  paper  n (default)  box                              front (g = 1)
 //   Zdt1   T1     30           [0,1]^n                          f2 = 1 - sqrt(f1), f1 in [0,1]
