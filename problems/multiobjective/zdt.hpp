@@ -2,7 +2,7 @@
 // The two-objective test problems of E. Zitzler, K. Deb, L. Thiele, "Comparison of multiobjective
 // evolutionary algorithms: empirical results", Evolutionary Computation 8(2), 2000, 173-195,
 // the test functions T1-T6 of its Section 3, known since as ZDT1-ZDT6 (cited below by the paper's
-// names, which it gives as formulas, not numbered equations). Each is built on Deb's construction:
+// names for them). Each is built on Deb's construction:
 //
 //   minimise T(x) = (f1(x1), f2(x)),   f2(x) = g(x2, ..., xn) h(f1(x1), g(x2, ..., xn)),
 //
