@@ -41,14 +41,18 @@ inline void check_hypervolume_input(const char* who, const MatrixView& f, std::s
     require(ref.size() == static_cast<std::size_t>(f.rows()), who,
             "the reference point has " + std::to_string(ref.size()) + " coordinates for " + std::to_string(f.rows()) +
                 " objectives");
-    for (std::size_t i = 0; i < ref.size(); ++i)
-        require(std::isfinite(ref[i]), who, "reference point coordinate " + std::to_string(i) + " is not finite");
-    for (Eigen::Index j = 0; j < f.cols(); ++j)
-        for (Eigen::Index i = 0; i < f.rows(); ++i) {
-            require(!std::isnan(f(i, j)), who, "point " + std::to_string(j) + " has a NaN objective value");
-            require(f(i, j) != -std::numeric_limits<double>::infinity(), who,
-                    "point " + std::to_string(j) + " has an objective at -infinity (an infinite volume)");
-        }
+    // The messages are built once per call, not once per value checked.
+    const auto bad_ref = std::find_if(ref.begin(), ref.end(), [](double v) { return !std::isfinite(v); });
+    require(bad_ref == ref.end(), who,
+            "reference point coordinate " + std::to_string(bad_ref - ref.begin()) + " is not finite");
+    const Eigen::Index nan = first_nan_column(f);
+    require(nan < 0, who, "point " + std::to_string(nan) + " has a NaN objective value");
+    Eigen::Index minus_infinity = 0;
+    while (minus_infinity < f.cols() &&
+           (f.col(minus_infinity).array() != -std::numeric_limits<double>::infinity()).all())
+        ++minus_infinity;
+    require(minus_infinity == f.cols(), who,
+            "point " + std::to_string(minus_infinity) + " has an objective at -infinity (an infinite volume)");
 }
 
 /// The points of f that strictly dominate ref, flat (M apart), with their column indices.

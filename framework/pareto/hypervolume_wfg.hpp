@@ -63,12 +63,12 @@ inline std::size_t add_nondominated(double* set, std::size_t count, const double
         if (weakly_dominates_flat(u, w, d)) return count;
         if (weakly_dominates_flat(w, u, d)) {
             --count;
-            std::copy_n(set + count * stride, d, u);  // the last member takes its place
+            if (t != count) std::copy_n(set + count * stride, d, u);  // the last member takes its place
         } else {
             ++t;
         }
     }
-    std::copy_n(w, d, set + count * stride);
+    if (w != set + count * stride) std::copy_n(w, d, set + count * stride);  // w may be in place already
     return count + 1;
 }
 

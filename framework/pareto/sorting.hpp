@@ -12,8 +12,7 @@
 //   front k dominates the new point is monotone in k (a point of front k+1 is dominated by one of
 //   front k), so its front is found by binary search over the fronts' last points (Jensen 2003,
 //   "Reducing the run-time complexity of multiobjective EAs: the NSGA-II and other algorithms",
-//   IEEE TEC 7(5); the two-objective case of Li, Deb, Zhang and Kwong's efficient non-domination
-//   level update).
+//   IEEE TEC 7(5); the two-objective case of the "efficient non-domination level update" idea).
 //
 // Decisions the papers leave open: equal points are in the same front (neither dominates the
 // other); NaN is refused (with it dominance is not a partial order); the crowding distance sorts
