@@ -39,7 +39,8 @@
 namespace pride::pareto {
 
 /// Buffers reused from one call to the next: after a first call with as many points, a call
-/// allocates nothing (NSGA-II sorts every generation).
+/// allocates nothing (NSGA-II sorts every generation). For M != 2 it holds N^2 / 8 bytes of
+/// dominance bits (125 kB for N = 1000).
 struct SortScratch {
     std::vector<std::size_t> order;        // the points in sorting order, or the fronts one after another
     std::vector<std::size_t> last;         // M == 2: the last point put in each front
