@@ -506,7 +506,7 @@ TEST_CASE("mo problems: jMetal's reference fronts lie on the analytic fronts", "
     //     for ZDT1, 9 for ZDT3 and ZDT6, 16-17 for DTLZ2.4D and DTLZ5.3D);
     // (b) IGD both ways between jMetal's front and ours at about the same size (jMetal's 4-D fronts
     //     are irregular sets of 183 and 216 points, ours lattices of 165: IGD measures the spacing).
-    // The bounds are about twice what was measured (docs/multiobjective-problems.md).
+    // The bounds are about twice what was measured (docs/multiobjective.md (Problems)).
     struct Case {
         const char* file;
         const char* name;

@@ -40,6 +40,11 @@ inline double tail_sum(std::span<const double> x) noexcept {
     return s;
 }
 
+/// T1-T3's g = 1 + 9 sum_{i=2}^n x_i / (n - 1).
+inline double linear_g(std::span<const double> x) noexcept {
+    return 1.0 + 9.0 * tail_sum(x) / static_cast<double>(x.size() - 1);
+}
+
 }  // namespace detail
 
 /// T1 (ZDT 2000, Sec. 3): f1 = x1, g = 1 + 9 sum_{i=2}^n x_i / (n - 1), h = 1 - sqrt(f1 / g).
@@ -51,7 +56,7 @@ class Zdt1 : public MultiObjectiveBox {
     void evaluate(std::span<const double> x, std::span<double> f) const noexcept {
         assert(x.size() == dimension() && f.size() == 2);
         const double f1 = x[0];
-        const double g = 1.0 + 9.0 * detail::tail_sum(x) / static_cast<double>(x.size() - 1);
+        const double g = detail::linear_g(x);
         const double h = 1.0 - std::sqrt(f1 / g);
         f[0] = f1;
         f[1] = g * h;
@@ -66,7 +71,7 @@ class Zdt2 : public MultiObjectiveBox {
     void evaluate(std::span<const double> x, std::span<double> f) const noexcept {
         assert(x.size() == dimension() && f.size() == 2);
         const double f1 = x[0];
-        const double g = 1.0 + 9.0 * detail::tail_sum(x) / static_cast<double>(x.size() - 1);
+        const double g = detail::linear_g(x);
         const double r = f1 / g;
         f[0] = f1;
         f[1] = g * (1.0 - r * r);
@@ -82,7 +87,7 @@ class Zdt3 : public MultiObjectiveBox {
     void evaluate(std::span<const double> x, std::span<double> f) const noexcept {
         assert(x.size() == dimension() && f.size() == 2);
         const double f1 = x[0];
-        const double g = 1.0 + 9.0 * detail::tail_sum(x) / static_cast<double>(x.size() - 1);
+        const double g = detail::linear_g(x);
         const double r = f1 / g;
         f[0] = f1;
         f[1] = g * (1.0 - std::sqrt(r) - r * std::sin(10.0 * std::numbers::pi * f1));

@@ -1,0 +1,118 @@
+#pragma once
+// The run driver of multi-objective algorithms (issue 28), as run_state.hpp is of the others: the
+// evaluation guard (exact budget; a point with a NaN or +-inf objective gets +inf in every one,
+// worse than every point with finite values), the
+// stopping rules, the evaluations after each iteration, the observer calls and the wall clock.
+// A run's result is the non-dominated set of its final population, points and values.
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+#include "framework/multi_objective.hpp"
+#include "framework/problem.hpp"
+#include "framework/run_state.hpp"
+#include "framework/termination.hpp"
+
+namespace pride {
+
+struct MultiObjectiveResult {
+    Matrix x;  // the non-dominated points of the final population, one column each
+    Matrix f;  // their objective values, M rows, the same columns
+    std::int64_t evaluations = 0;
+    std::int64_t iterations = 0;  // completed iterations after the initial population
+    /// history_evaluations[k]: the evaluations spent when iteration k ended (k = 0: the initial
+    /// population).
+    std::vector<std::int64_t> history_evaluations;
+    double wall_ms = 0.0;
+};
+
+/// What an observer of a multi-objective run sees at the end of each iteration.
+struct MultiObjectiveIterationView {
+    std::int64_t iteration;  // 0 = the initial population
+    std::int64_t evaluations;
+    const Matrix& population;  // one column per individual
+    const Matrix& values;      // M rows, the same columns (+inf where not evaluated)
+};
+
+class MultiObjectiveRunState {
+  public:
+    MultiObjectiveRunState(const Termination& termination, std::size_t objectives)
+        : termination_(termination),
+          limit_(termination.max_evaluations.value_or(std::numeric_limits<std::int64_t>::max())),
+          objectives_(objectives) {
+        progress_.start = Clock::now();
+    }
+
+    /// Evaluates the first min(points.cols(), remaining()) columns into the same columns of
+    /// `values` (objectives() rows) and returns how many; the columns past the budget get +inf in
+    /// every objective. Each column is one evaluation, whatever the number of objectives.
+    template <MultiObjectiveProblem P>
+    Eigen::Index evaluate_columns(P& problem, MatrixView points, Matrix& values) {
+        const Eigen::Index n = std::min<Eigen::Index>(points.cols(), static_cast<Eigen::Index>(remaining()));
+        const auto m = static_cast<std::size_t>(objectives_);
+        if constexpr (BatchMultiObjectiveProblem<P>) {
+            if (n > 0) {
+                auto head = values.leftCols(n);
+                Matrix out(static_cast<Eigen::Index>(m), n);
+                problem.evaluate_batch(points.leftCols(n), out);
+                head = out;
+            }
+        } else {
+            for (Eigen::Index j = 0; j < n; ++j)
+                problem.evaluate(std::span<const double>(points.col(j).data(), static_cast<std::size_t>(points.rows())),
+                                 std::span<double>(values.col(j).data(), m));
+        }
+        // A point with a NaN or infinite objective is +inf in all of them: dominated by every point
+        // whose values are finite, equal to every other such point.
+        for (Eigen::Index j = 0; j < values.cols(); ++j)
+            if (j >= n || !values.col(j).allFinite()) values.col(j).setConstant(kInf);
+        progress_.evaluations += n;
+        return n;
+    }
+
+    bool exhausted() const noexcept { return progress_.evaluations >= limit_; }
+    std::int64_t remaining() const noexcept { return limit_ - progress_.evaluations; }
+    bool done() const { return exhausted() || termination_.done(progress_); }
+    std::size_t objectives() const noexcept { return objectives_; }
+    const Progress& progress() const noexcept { return progress_; }
+
+    /// Closes an iteration (the first call: the initial population) and shows the population.
+    template <class O>
+    void end_iteration(O& observer, const Matrix& population, const Matrix& values) {
+        if (started_) ++progress_.iterations;
+        started_ = true;
+        history_evaluations_.push_back(progress_.evaluations);
+        if constexpr (std::is_invocable_v<O&, const MultiObjectiveIterationView&>)
+            observer(MultiObjectiveIterationView{progress_.iterations, progress_.evaluations, population, values});
+    }
+
+    /// The result: the columns `front` of the final population (its non-dominated ones).
+    MultiObjectiveResult finish(const Matrix& population, const Matrix& values, std::span<const std::size_t> front) {
+        MultiObjectiveResult r;
+        r.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - progress_.start).count();
+        r.x.resize(population.rows(), static_cast<Eigen::Index>(front.size()));
+        r.f.resize(values.rows(), static_cast<Eigen::Index>(front.size()));
+        for (std::size_t k = 0; k < front.size(); ++k) {
+            r.x.col(static_cast<Eigen::Index>(k)) = population.col(static_cast<Eigen::Index>(front[k]));
+            r.f.col(static_cast<Eigen::Index>(k)) = values.col(static_cast<Eigen::Index>(front[k]));
+        }
+        r.evaluations = progress_.evaluations;
+        r.iterations = progress_.iterations;
+        r.history_evaluations = std::move(history_evaluations_);
+        return r;
+    }
+
+  private:
+    Termination termination_;
+    std::int64_t limit_;
+    std::size_t objectives_;
+    Progress progress_;
+    std::vector<std::int64_t> history_evaluations_;
+    bool started_ = false;
+};
+
+}  // namespace pride
