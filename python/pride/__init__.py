@@ -21,7 +21,8 @@ from ._pride import Grid
 
 __all__ = [
     "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
-    "exact", "pareto", "roughset", "Campaign", "read_store", "report",
+    "exact", "pareto", "roughset", "Campaign", "read_store", "report", "hypervolume", "hypervolume_contributions",
+    "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance",
 ]
 
 
@@ -253,6 +254,49 @@ def pareto(grid, start, goal, *, objectives="length,turns", corner_cutting=False
     if not isinstance(objectives, str):
         objectives = ",".join(_str("objectives", o) for o in _list("objectives", objectives))
     return _pride.pareto(_grid(grid), start, goal, objectives, _bool("corner_cutting", corner_cutting))
+
+
+def hypervolume(points, ref):
+    """The exact hypervolume (minimisation) of ``points``, an (n, M) array with one row per point,
+    against the reference point ``ref`` (M,): 2-D sweep, 3-D dimension sweep, WFG above. Points that
+    do not strictly dominate ``ref`` add nothing. No normalisation: scale the objectives first if
+    they should weigh alike (docs/multiobjective.md)."""
+    return _pride.hypervolume(points, ref)
+
+
+def hypervolume_contributions(points, ref):
+    """Each point's exclusive hypervolume contribution (n,), as SMS-EMOA uses it."""
+    return _pride.hypervolume_contributions(points, ref)
+
+
+def igd(points, front):
+    """Inverted generational distance: the mean Euclidean distance from each row of ``front`` (a
+    reference set, usually the true front sampled) to the nearest row of ``points``."""
+    return _pride.igd(points, front)
+
+
+def igd_plus(points, front):
+    """IGD+ (Ishibuchi et al. 2015): as ``igd``, counting only how far a point is worse than a
+    reference point, objective by objective (Pareto compliant)."""
+    return _pride.igd_plus(points, front)
+
+
+def epsilon_additive(points, front):
+    """The additive epsilon indicator (Zitzler et al. 2003): the least eps such that every row of
+    ``front`` is weakly dominated by some row of ``points`` minus eps."""
+    return _pride.epsilon_additive(points, front)
+
+
+def nondominated_sort(points):
+    """The front of each row of ``points`` (n,): 0 for the non-dominated ones, 1 for those
+    non-dominated once front 0 is removed, and so on (Deb et al. 2002)."""
+    return _pride.nondominated_sort(points)
+
+
+def crowding_distance(points):
+    """NSGA-II's crowding distance of the rows of ``points`` taken as one front (n,): +inf at each
+    objective's ends."""
+    return _pride.crowding_distance(points)
 
 
 def _pandas():

@@ -202,5 +202,7 @@ void set_path_objective(engine::GridSpec& spec, const py::object& objective, con
 void bind_grid(py::module_& m);
 void bind_roughset(py::module_& m);
 void bind_campaign(py::module_& m);
+/// pride.hypervolume and the other indicators of framework/pareto/ (pareto.cpp).
+void bind_pareto(py::module_& m);
 
 }  // namespace pride::python

@@ -668,4 +668,5 @@ PYBIND11_MODULE(_pride, m) {
     bind_grid(m);
     bind_roughset(m);
     bind_campaign(m);
+    bind_pareto(m);
 }

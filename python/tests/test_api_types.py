@@ -38,6 +38,9 @@ LIST = [None, 5, "ab", object(), {"a": 1}]
 CELL = [None, 5, "ab", (1.5, 2), (1,), (True, 1)]
 GRID_ARG = [None, np.zeros((3, 3)), "map", 5]
 NUMBERS = [None, "abc", object(), np.array(["a", "b"])]
+POINTS = NUMBERS + [[1.0, 2.0]]  # an (n, M) set, not one point
+PAIRED = POINTS + [[[1.0, 2.0, 3.0]]]  # and M = 3 against M = 2
+PTS = np.array([[0.0, 2.0], [1.0, 1.0], [2.0, 0.0]])
 WEIGHTS = [5, "ab", ["x", 1, 1], [None, 1, 1]]
 OBJECTIVE = [5, object(), None]
 PROBLEM = [5, None, object()]
@@ -105,6 +108,16 @@ def api(tmp_path):
         "report": (lambda **o: pride.report(**{"path": store, "dataframe": False, **o}),
                    dict(path=PATH + [[5]], raw=FLAG, dataframe=FLAG_OPTIONAL, html=[5, object(), b"dir"])),
         "Result": (lambda **o: pride.Result(**o), dict(fields=[None, 5, "ab", [1, 2]])),
+        "hypervolume": (lambda **o: pride.hypervolume(**{"points": PTS, "ref": [3.0, 3.0], **o}),
+                        dict(points=PAIRED, ref=NUMBERS + [[[3.0, 3.0]], [3.0]])),
+        "hypervolume_contributions": (lambda **o: pride.hypervolume_contributions(**{"points": PTS, "ref": [3.0, 3.0], **o}),
+                                      dict(points=PAIRED, ref=NUMBERS + [[3.0]])),
+        "igd": (lambda **o: pride.igd(**{"points": PTS, "front": PTS, **o}), dict(points=PAIRED, front=PAIRED)),
+        "igd_plus": (lambda **o: pride.igd_plus(**{"points": PTS, "front": PTS, **o}), dict(points=PAIRED, front=PAIRED)),
+        "epsilon_additive": (lambda **o: pride.epsilon_additive(**{"points": PTS, "front": PTS, **o}),
+                             dict(points=PAIRED, front=PAIRED)),
+        "nondominated_sort": (lambda **o: pride.nondominated_sort(**{"points": PTS, **o}), dict(points=POINTS)),
+        "crowding_distance": (lambda **o: pride.crowding_distance(**{"points": PTS, **o}), dict(points=POINTS)),
     }
 
 
