@@ -18,9 +18,10 @@
 //
 // Decided by this project, where the paper leaves it open:
 // - reference point of Delta_S: per objective the largest value in R_v plus `reference_offset`
-//   (default 1), recomputed at every step: "the worst point of the worst front plus 1", the rule
-//   later SMS-EMOA descriptions give (not the nadir of the whole population: R_v's own is what
-//   Delta_S within R_v needs, and it is cheaper); it depends on the objectives' scale;
+//   (default 1), recomputed at every step ("the worst front's nadir plus 1", the usual reading;
+//   whether the paper's text says so was not checked here). R_v's own nadir rather than the whole
+//   population's: Delta_S is taken within R_v, and a far point would only inflate the ends'
+//   boxes. It depends on the objectives' scale;
 // - the two ends of a two-objective R_v: measured against that reference point like every other
 //   member (`extremes = Extremes::by_reference`, one rule for every M); `Extremes::kept` gives
 //   them an infinite contribution instead, the variant that always keeps the front's extent;
@@ -32,8 +33,8 @@
 //   with probability 1/2 each and the parents come in random order, so either is as likely);
 // - iterations: a "generation" of mu children is one iteration of the run state (its history and
 //   observer call), the last one shorter when the evaluation budget ends inside it; an observer
-//   call per child would cost more than the child at small mu. Stopping rules other than the
-//   budget (iterations, wall time, stop flag) are read once per generation;
+//   called per child would see the same population, one member changed, mu times over. Rules
+//   other than the budget (iterations, wall time, stop flag) are read once per generation;
 // - operators: eta_c = 20, p_c = 0.9, eta_m = 20, p_m = 1/n, as pride::Nsga2 (NSGA-II's sec. V),
 //   so that the two differ only in selection when compared.
 // Cost of a step at M = 2: the O(mu log mu) sort into fronts and Delta_S of R_v from its sorted
