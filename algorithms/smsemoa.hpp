@@ -148,6 +148,7 @@ inline void contributions_any(const MatrixView& f, Scratch& s) {
 inline std::size_t reduce(const MatrixView& f, double reference_offset, Extremes extremes, Scratch& s) {
     const auto n = static_cast<std::size_t>(f.cols());
     const auto m = static_cast<std::size_t>(f.rows());
+    if (n == 0) throw InputError("sms::reduce", "there is no point to remove");  // no message built per step
     s.rank.resize(n);
     const std::size_t fronts = pareto::nondominated_sort(f, std::span<std::size_t>(s.rank), s.sort);
     s.worst.clear();

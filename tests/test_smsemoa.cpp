@@ -131,6 +131,18 @@ TEST_CASE("smsemoa reduce breaks ties to the lowest column and removes lone and 
     child_failed << 1.0, 2.0, inf,  //
         2.0, 1.0, inf;
     CHECK(reduce(child_failed) == 2);
+
+    // An offset lost to rounding next to a large value: r is one ulp beyond it, so that the
+    // worst point is still measured (its box is then tiny, and it goes).
+    pride::Matrix large(2, 3);
+    large << 1e17, 0.0, 2e17,  //
+        1.0, 2.0, 0.0;
+    CHECK(reduce(large) == 2);
+    CHECK(s.reference == std::vector<double>{std::nextafter(2e17, inf), 3.0});
+    CHECK(s.contribution[2] > 0.0);
+
+    CHECK(input_error_message([&] { (void)reduce(pride::Matrix(2, 0)); }) ==
+          "sms::reduce: there is no point to remove");
 }
 
 TEST_CASE("smsemoa reduce measures the worst front exactly in three objectives") {
