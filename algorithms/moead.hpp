@@ -26,17 +26,18 @@
 //   (4) the members j of P, in random order, replaced by the child when g^te(child | lambda^j, z*)
 //       <= g^te(x^j | lambda^j, z*), at most n_r of them (2009: n_r = 2; the 2007 paper's step 2.4
 //       tries every member of B(i): n_r = 0 here, no limit).
-// The initial population is iteration 0, each generation one more.
+// The initial population is iteration 0, each generation one more. (The papers' equation, section
+// and step numbers and settings are cited as recalled; they were not checked against the text.)
 //
 // Defaults: MOEA/D-DE with pagmo2's moead defaults (T = 20, F = 0.5, CR = 1, eta_m = 20,
 // delta = 0.9, n_r = 2), the variant most users run; Moead<moead::SbxReproduction> with
 // delta = 1 and replacements = 0 is the 2007 paper's algorithm. Where the sources differ:
 // - a weight lambda_k = 0 makes g^te blind to objective k, so such a weight counts as 1e-4
 //   (`zero_weight`), as pagmo2's decompose_objectives and jMetal's MOEA/D do;
-// - DE's repair: the authors' code, as pagmo2, moves a coordinate below `lo` to
-//   lo + u (x^i - lo) (u uniform, above `hi` likewise), between the bound and the parent; the
-//   2009 paper's text resets it to a uniform value in the box (as recalled, not checked against
-//   the text here): Repair::toward_parent (default) and Repair::uniform;
+// - DE's repair: pagmo2 moves a coordinate below `lo` to lo + u (x^i - lo) (u uniform, above
+//   `hi` likewise), between the bound and the parent; the 2009 paper's step resets it to a
+//   uniform value in the box: Repair::toward_parent (default, for the comparison with pagmo2)
+//   and Repair::uniform;
 // - the order of the subproblems in a generation: 1..N in the papers, a new random permutation
 //   each generation in pagmo2 and jMetal: Order::in_order (default) and Order::shuffled;
 // - pagmo2 compares with < where the papers write <=, keeps i out of B(i) and tries i first; here
