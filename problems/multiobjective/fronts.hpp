@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "framework/error.hpp"
+#include "framework/pareto/reference_directions.hpp"
 #include "framework/problem.hpp"
 #include "problems/multiobjective/box.hpp"
 
@@ -181,18 +182,6 @@ inline double dtlz7_phi(double t) {
     return t * (1.0 + std::sin(3.0 * std::numbers::pi * t));
 }
 
-/// C(H + M - 1, M - 1), the size of the simplex lattice of M objectives and H divisions, or
-/// cap + 1 when larger than cap (cap <= kMaxFrontValues, M <= kMaxObjectives, H <= kMaxFrontValues).
-inline std::size_t lattice_size(std::size_t m, std::size_t h, std::size_t cap) {
-    const std::size_t n = h + m - 1, r = std::min(h, m - 1);
-    std::size_t c = 1;  // C(n - r + i, i)
-    for (std::size_t i = 1; i <= r; ++i) {
-        c = c * (n - r + i) / i;
-        if (c > cap) return cap + 1;
-    }
-    return c;
-}
-
 enum class Family { zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1, dtlz2, dtlz3, dtlz4, dtlz5, dtlz6, dtlz7 };
 
 inline constexpr std::array<std::pair<std::string_view, Family>, 12> kFamilies{{{"zdt1", Family::zdt1},
@@ -267,47 +256,12 @@ inline double zdt6_front_f1_min() {
     return 1.0 - std::exp(-4.0 * x) * std::pow(std::sin(6.0 * std::numbers::pi * x), 6.0);
 }
 
-/// The size of the simplex lattice of M objectives and H divisions, C(H + M - 1, M - 1), or
-/// kMaxFrontValues + 1 when larger than kMaxFrontValues.
-inline std::size_t simplex_lattice_size(std::size_t objectives, std::size_t divisions) {
-    require(objectives >= 1 && objectives <= kMaxObjectives, "simplex_lattice",
-            "needs 1 <= M <= " + std::to_string(kMaxObjectives) + " objectives, got " + std::to_string(objectives));
-    if (divisions > kMaxFrontValues) return kMaxFrontValues + 1;
-    return detail::lattice_size(objectives, divisions, kMaxFrontValues);
-}
-
-/// Das and Dennis's simplex lattice (I. Das, J. E. Dennis, "Normal-boundary intersection", SIAM J.
-/// Optim. 8(3), 1998): every point with coordinates in {0, 1/H, ..., 1} summing to 1, one column
-/// each (M rows, C(H + M - 1, M - 1) columns), in lexicographic order of the first M - 1
-/// coordinates. Also the reference directions of decomposition-based algorithms.
-inline Matrix simplex_lattice(std::size_t objectives, std::size_t divisions) {
-    const std::size_t m = objectives, h = divisions;
-    require(m >= 2 && m <= kMaxObjectives, "simplex_lattice",
-            "needs 2 <= M <= " + std::to_string(kMaxObjectives) + " objectives, got " + std::to_string(m));
-    require(h >= 1, "simplex_lattice", "needs H >= 1 divisions, got " + std::to_string(h));
-    const std::size_t size = simplex_lattice_size(m, h);
-    require(size * m <= kMaxFrontValues, "simplex_lattice",
-            "is built up to " + std::to_string(kMaxFrontValues) + " values (M x points), got M = " + std::to_string(m) +
-                " and H = " + std::to_string(h));
-    Matrix out(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(size));
-    std::vector<std::size_t> c(m - 1, 0);  // the first M - 1 counts; the last is H - their sum
-    std::size_t sum = 0;
-    const double hd = static_cast<double>(h);
-    for (Eigen::Index col = 0; col < out.cols(); ++col) {
-        for (std::size_t i = 0; i + 1 < m; ++i) out(static_cast<Eigen::Index>(i), col) = static_cast<double>(c[i]) / hd;
-        out(static_cast<Eigen::Index>(m - 1), col) = static_cast<double>(h - sum) / hd;
-        // The next counts: an odometer, the last digit fastest, kept to sum <= H.
-        for (std::size_t p = m - 1; p-- > 0;) {
-            if (sum < h) {
-                ++c[p], ++sum;
-                break;
-            }
-            sum -= c[p];
-            c[p] = 0;
-        }
-    }
-    return out;
-}
+/// The simplex lattice is the project's one (framework/pareto/reference_directions.hpp); it is
+/// named here too, as the DTLZ1-4 fronts are built on it.
+using pareto::simplex_lattice;
+using pareto::simplex_lattice_size;
+static_assert(kMaxFrontValues == pareto::kMaxLatticeValues && kMaxObjectives == pareto::kMaxLatticeObjectives,
+              "the lattice's limits are the fronts'");
 
 /// The analytic Pareto front of the problem `name` with M = `objectives`, sampled with `points`
 /// points or, for the lattices and DTLZ7's grid, the largest one of at most `points` (the table at
@@ -332,9 +286,7 @@ inline Matrix reference_front(std::string_view name, std::size_t objectives, std
             require(points >= m, w,
                     "a front of M = " + std::to_string(m) + " objectives needs at least " + std::to_string(m) +
                         " points (the lattice with H = 1), got " + std::to_string(points));
-            std::size_t h = 1;
-            while (detail::lattice_size(m, h + 1, points) <= points) ++h;
-            Matrix out = simplex_lattice(m, h);
+            Matrix out = simplex_lattice(m, pareto::simplex_lattice_divisions(m, points));
             if (fam == Family::dtlz1) {
                 out *= 0.5;
             } else {
