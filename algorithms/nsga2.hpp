@@ -70,8 +70,11 @@ struct SurvivalScratch {
 /// standing into `out`.
 struct CrowdingSurvival {
     static constexpr const char* name = "crowding";
+    static constexpr const char* algorithm = "nsga2";
+    /// The tournaments compare the standing (a survival with no ranking of its own says false).
+    static constexpr bool ranked_mating = true;
     void operator()(const Matrix& f, std::size_t keep, std::vector<std::size_t>& chosen, Standing& out,
-                    SurvivalScratch& s) const {
+                    SurvivalScratch& s, Rng&) const {
         const auto n = static_cast<std::size_t>(f.cols());
         s.rank.resize(n);
         const std::size_t fronts = pareto::nondominated_sort(f, std::span<std::size_t>(s.rank), s.sort);
@@ -133,7 +136,8 @@ struct Nsga2 {
     Survival survival{};
     nsga::Tournament tournament = nsga::Tournament::paper;
 
-    static std::string name() { return "nsga2"; }
+    /// nsga2, or nsga3 with NSGA-III's survival (algorithms/nsga3.hpp).
+    static std::string name() { return Survival::algorithm; }
 
     void validate() const {
         require(population >= 4 && population <= 10'000'000 && population % 4 == 0, name(),
@@ -149,6 +153,7 @@ struct Nsga2 {
         termination.validate(name());
         const std::size_t m = problem.objectives();
         require(m >= 1, name(), "the problem has no objectives");
+        if constexpr (requires { survival.validate(m, name()); }) survival.validate(m, name());
         const std::size_t dim = problem.dimension();
         const auto n = static_cast<std::size_t>(population);
         const auto rows = static_cast<Eigen::Index>(dim), mrows = static_cast<Eigen::Index>(m);
@@ -173,7 +178,7 @@ struct Nsga2 {
         std::vector<std::size_t> chosen;
         {
             const Matrix f0 = fr.leftCols(cols);
-            survival(f0, n, chosen, standing, scratch);  // every member survives: ranks and distances
+            survival(f0, n, chosen, standing, scratch, rng);  // every member survives: ranks and distances
             // survival lists the members by front; the population keeps its order, so the standing
             // is put back in index order.
             nsga::Standing ordered{std::vector<std::size_t>(n), std::vector<double>(n)};
@@ -215,7 +220,7 @@ struct Nsga2 {
             state.evaluate_columns(problem, r.rightCols(cols), fq);
             fr.rightCols(cols) = fq;
             // (3)
-            survival(fr, n, chosen, standing, scratch);
+            survival(fr, n, chosen, standing, scratch, rng);
             for (std::size_t k = 0; k < n; ++k) {
                 next.col(static_cast<Eigen::Index>(k)) = r.col(static_cast<Eigen::Index>(chosen[k]));
                 fnext.col(static_cast<Eigen::Index>(k)) = fr.col(static_cast<Eigen::Index>(chosen[k]));
@@ -234,6 +239,7 @@ struct Nsga2 {
   private:
     /// The winner of a binary tournament between members a and b of the population.
     std::size_t winner(std::size_t a, std::size_t b, const Matrix& f, const nsga::Standing& s, Rng& rng) const {
+        if constexpr (!Survival::ranked_mating) return rng.uniform() <= 0.5 ? a : b;
         if (tournament == nsga::Tournament::code) {
             const auto fa = pareto::point(f, static_cast<Eigen::Index>(a));
             const auto fb = pareto::point(f, static_cast<Eigen::Index>(b));

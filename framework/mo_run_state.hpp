@@ -56,10 +56,11 @@ class MultiObjectiveRunState {
         const auto m = static_cast<std::size_t>(objectives_);
         if constexpr (BatchMultiObjectiveProblem<P>) {
             if (n > 0) {
-                auto head = values.leftCols(n);
-                Matrix out(static_cast<Eigen::Index>(m), n);
-                problem.evaluate_batch(points.leftCols(n), out);
-                head = out;
+                // A scratch of the state's, so that an algorithm evaluating one child at a time
+                // (MOEA/D, SMS-EMOA) allocates nothing per evaluation.
+                batch_.resize(static_cast<Eigen::Index>(m), n);
+                problem.evaluate_batch(points.leftCols(n), batch_);
+                values.leftCols(n) = batch_;
             }
         } else {
             for (Eigen::Index j = 0; j < n; ++j)
@@ -112,6 +113,7 @@ class MultiObjectiveRunState {
     std::size_t objectives_;
     Progress progress_;
     std::vector<std::int64_t> history_evaluations_;
+    Matrix batch_;
     bool started_ = false;
 };
 
