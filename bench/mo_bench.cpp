@@ -1,8 +1,11 @@
-// The multi-objective benchmark of issue 28: pride's NSGA-II beside pagmo2's nsga2 (when pagmo was
-// found at build time) on ZDT1-4, 6 (n = 30, 30, 30, 10, 10) and DTLZ1, 2 (M = 3, the papers' k),
-// with the same settings: population 100, SBX eta_c 20 with p_c 0.9, polynomial mutation eta_m 20
-// with p_m 1/n (Deb et al. 2002, sec. V), exactly --evals evaluations (pagmo: 100 + gens x 100),
-// seeds 1..--seeds. Each side runs on its own implementation of the problem.
+// The multi-objective benchmark of issue 28: pride's NSGA-II and MOEA/D beside pagmo2's nsga2 and
+// moead (when pagmo was found at build time), and pride's SMS-EMOA and NSGA-III (M = 3) beside
+// them, on ZDT1-4, 6 (n = 30, 30, 30, 10, 10) and DTLZ1, 2 (M = 3, the papers' k). The pairs share
+// their settings: NSGA-II population 100, SBX eta_c 20 with p_c 0.9, polynomial mutation eta_m 20
+// with p_m 1/n (Deb et al. 2002, sec. V); MOEA/D pagmo's defaults (DE form, T 20, delta 0.9, n_r 2,
+// Tchebycheff, lattice weights: 100 subproblems at M = 2, 91 at M = 3). Exactly --evals
+// evaluations for pride (pagmo: its population + gens x population, up to --evals), seeds
+// 1..--seeds. Each side runs on its own implementation of the problem.
 //
 // stdout: CSV `algo,problem,seed,fevals,wall_ms,bare_ms,points,hv_ratio,igd_plus`. wall_ms runs
 // from the population's set-up to the end of the run; bare_ms is the time of the same evaluations
@@ -26,16 +29,21 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/moead.hpp"
 #include "algorithms/nsga2.hpp"
+#include "algorithms/nsga3.hpp"
+#include "algorithms/smsemoa.hpp"
 #include "framework/pareto/dominance.hpp"
 #include "framework/pareto/hypervolume.hpp"
 #include "framework/pareto/indicators.hpp"
+#include "framework/pareto/reference_directions.hpp"
 #include "problems/multiobjective/dtlz.hpp"
 #include "problems/multiobjective/fronts.hpp"
 #include "problems/multiobjective/zdt.hpp"
 
 #ifdef PRIDE_HAVE_PAGMO
 #include <pagmo/algorithm.hpp>
+#include <pagmo/algorithms/moead.hpp>
 #include <pagmo/algorithms/nsga2.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/problem.hpp>
@@ -54,6 +62,8 @@ struct Settings {
     std::int64_t evals = 25000;
     std::int64_t seeds = 10;
     bool pagmo = true;
+    std::vector<std::string> algos{"nsga2", "moead", "smsemoa", "nsga3"};
+    bool wanted(const std::string& a) const { return std::find(algos.begin(), algos.end(), a) != algos.end(); }
 };
 
 struct Row {
@@ -122,18 +132,18 @@ std::pair<double, double> quality(const Matrix& f, const Reference& ref) {
     return {pareto::hypervolume(f, ref.point) / ref.hv, pareto::igd_plus(f, ref.front)};
 }
 
-template <class P>
-void bench_pride(const Settings& s, const std::string& name, const P& problem, const Reference& ref) {
-    Nsga2<> nsga2;
+template <class A, class P>
+void bench_pride(const Settings& s, const std::string& algo, const A& algorithm, const std::string& name,
+                 const P& problem, const Reference& ref) {
     Termination t;
     t.max_evaluations = s.evals;
     std::vector<double> points;
     for (std::int64_t seed = 1; seed <= s.seeds; ++seed) {
         const auto start = Clock::now();
-        const MultiObjectiveResult r = nsga2.run(problem, t, static_cast<std::uint64_t>(seed));
+        const MultiObjectiveResult r = algorithm.run(problem, t, static_cast<std::uint64_t>(seed));
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         points.clear();
-        (void)nsga2.run(Recording<P>{problem, &points}, t, static_cast<std::uint64_t>(seed));
+        (void)algorithm.run(Recording<P>{problem, &points}, t, static_cast<std::uint64_t>(seed));
         P copy = problem;
         std::vector<double> fx(problem.objectives());
         const double bare = bare_ms(
@@ -143,8 +153,19 @@ void bench_pride(const Settings& s, const std::string& name, const P& problem, c
             },
             points, problem.dimension());
         const auto [hv, igd] = quality(r.f, ref);
-        rows.push_back({"nsga2", name, seed, r.evaluations, ms, bare, r.f.cols(), hv, igd});
+        rows.push_back({algo, name, seed, r.evaluations, ms, bare, r.f.cols(), hv, igd});
     }
+}
+
+/// Every pride algorithm on one problem: NSGA-II, MOEA/D (its DE form, pagmo's defaults),
+/// SMS-EMOA, and at M = 3 NSGA-III on the lattice H = 12 (91 directions, N = 92).
+template <class P>
+void bench_pride_all(const Settings& s, const std::string& name, const P& problem, const Reference& ref) {
+    if (s.wanted("nsga2")) bench_pride(s, "nsga2", Nsga2<>{}, name, problem, ref);
+    if (s.wanted("moead")) bench_pride(s, "moead", Moead<>{}, name, problem, ref);
+    if (s.wanted("smsemoa")) bench_pride(s, "smsemoa", SmsEmoa<>{}, name, problem, ref);
+    if (s.wanted("nsga3") && problem.objectives() == 3)
+        bench_pride(s, "nsga3", make_nsga3(pareto::simplex_lattice(3, 12)), name, problem, ref);
 }
 
 #ifdef PRIDE_HAVE_PAGMO
@@ -160,22 +181,29 @@ struct PagmoRecording {
     pagmo::vector_double::size_type get_nobj() const { return inner.get_nobj(); }
 };
 
+/// pagmo's nsga2 (population 100) or moead (grid weights: its population is the lattice's size,
+/// 100 at M = 2, 91 at M = 3, as pride's moead takes) with pride's settings, the same budget.
 template <class PagmoProblem>
-void bench_pagmo(const Settings& s, const std::string& name, const PagmoProblem& problem, std::size_t dim,
-                 const Reference& ref) {
-    const auto gens = static_cast<unsigned>((s.evals - kPopulation) / kPopulation);
+void bench_pagmo(const Settings& s, const std::string& algo, const std::string& name, const PagmoProblem& problem,
+                 std::size_t dim, const Reference& ref) {
+    const std::int64_t pop = algo == "pagmo-moead" && problem.get_nobj() == 3 ? 91 : kPopulation;
+    const auto gens = static_cast<unsigned>((s.evals - pop) / pop);
     std::vector<double> points;
     for (std::int64_t seed = 1; seed <= s.seeds; ++seed) {
         const auto useed = static_cast<unsigned>(seed);
         auto run = [&](pagmo::problem prob) {
-            pagmo::algorithm alg{pagmo::nsga2(gens, 0.9, 20.0, 1.0 / static_cast<double>(dim), 20.0, useed)};
+            pagmo::algorithm alg =
+                algo == "pagmo-moead"
+                    ? pagmo::algorithm{pagmo::moead(gens, "grid", "tchebycheff", 20u, 1.0, 0.5, 20.0, 0.9, 2u, true,
+                                                    useed)}
+                    : pagmo::algorithm{pagmo::nsga2(gens, 0.9, 20.0, 1.0 / static_cast<double>(dim), 20.0, useed)};
             const auto start = Clock::now();
-            pagmo::population pop{std::move(prob), static_cast<pagmo::population::size_type>(kPopulation), useed};
-            pop = alg.evolve(pop);
+            pagmo::population population{std::move(prob), static_cast<pagmo::population::size_type>(pop), useed};
+            population = alg.evolve(population);
             const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-            return std::make_pair(ms, pop);
+            return std::make_pair(ms, population);
         };
-        const auto [ms, pop] = run(pagmo::problem{problem});
+        const auto [ms, population] = run(pagmo::problem{problem});
         points.clear();
         (void)run(pagmo::problem{PagmoRecording<PagmoProblem>{problem, &points}});
         const double bare = bare_ms(
@@ -184,16 +212,23 @@ void bench_pagmo(const Settings& s, const std::string& name, const PagmoProblem&
                 return f[0] + f.back();
             },
             points, dim);
-        const auto fs = pop.get_f();
+        const auto fs = population.get_f();
         const auto front = std::get<0>(pagmo::fast_non_dominated_sorting(fs))[0];
         Matrix f(static_cast<Eigen::Index>(fs[0].size()), static_cast<Eigen::Index>(front.size()));
         for (std::size_t k = 0; k < front.size(); ++k)
             for (std::size_t i = 0; i < fs[0].size(); ++i)
                 f(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = fs[front[k]][i];
         const auto [hv, igd] = quality(f, ref);
-        rows.push_back({"pagmo-nsga2", name, seed, static_cast<std::int64_t>(pop.get_problem().get_fevals()), ms, bare,
+        rows.push_back({algo, name, seed, static_cast<std::int64_t>(population.get_problem().get_fevals()), ms, bare,
                         f.cols(), hv, igd});
     }
+}
+
+template <class PagmoProblem>
+void bench_pagmo_all(const Settings& s, const std::string& name, const PagmoProblem& problem, std::size_t dim,
+                     const Reference& ref) {
+    if (s.wanted("nsga2")) bench_pagmo(s, "pagmo-nsga2", name, problem, dim, ref);
+    if (s.wanted("moead")) bench_pagmo(s, "pagmo-moead", name, problem, dim, ref);
 }
 #endif
 
@@ -211,6 +246,10 @@ int main(int argc, char** argv) {
     app.add_option("--evals", s.evals, "evaluations per run (default 25000)")->check(CLI::Range(200, 100'000'000));
     app.add_option("--seeds", s.seeds, "seeds 1..N (default 10)")->check(CLI::Range(1, 1000));
     app.add_flag("--no-pagmo{false}", s.pagmo, "skip pagmo2 even when it was found at build time");
+    app.add_option("--algos", s.algos,
+                   "algorithms (default: nsga2 moead smsemoa nsga3; pagmo's nsga2, moead beside theirs)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"nsga2", "moead", "smsemoa", "nsga3"}));
     CLI11_PARSE(app, argc, argv);
 
     using namespace pride::multiobjective;
@@ -218,22 +257,22 @@ int main(int argc, char** argv) {
     const auto three = [](std::string_view name) { return reference_of(reference_front(name, 3, 1000)); };
     const Reference z1 = two("zdt1"), z2 = two("zdt2"), z3 = two("zdt3"), z4 = two("zdt4"), z6 = two("zdt6");
     const Reference d1 = three("dtlz1"), d2 = three("dtlz2");
-    bench_pride(s, "zdt1", Zdt1(30), z1);
-    bench_pride(s, "zdt2", Zdt2(30), z2);
-    bench_pride(s, "zdt3", Zdt3(30), z3);
-    bench_pride(s, "zdt4", Zdt4(10), z4);
-    bench_pride(s, "zdt6", Zdt6(10), z6);
-    bench_pride(s, "dtlz1", Dtlz1(3), d1);
-    bench_pride(s, "dtlz2", Dtlz2(3), d2);
+    bench_pride_all(s, "zdt1", Zdt1(30), z1);
+    bench_pride_all(s, "zdt2", Zdt2(30), z2);
+    bench_pride_all(s, "zdt3", Zdt3(30), z3);
+    bench_pride_all(s, "zdt4", Zdt4(10), z4);
+    bench_pride_all(s, "zdt6", Zdt6(10), z6);
+    bench_pride_all(s, "dtlz1", Dtlz1(3), d1);
+    bench_pride_all(s, "dtlz2", Dtlz2(3), d2);
 #ifdef PRIDE_HAVE_PAGMO
     if (s.pagmo) {
-        bench_pagmo(s, "zdt1", pagmo::zdt(1, 30), 30, z1);
-        bench_pagmo(s, "zdt2", pagmo::zdt(2, 30), 30, z2);
-        bench_pagmo(s, "zdt3", pagmo::zdt(3, 30), 30, z3);
-        bench_pagmo(s, "zdt4", pagmo::zdt(4, 10), 10, z4);
-        bench_pagmo(s, "zdt6", pagmo::zdt(6, 10), 10, z6);
-        bench_pagmo(s, "dtlz1", pagmo::dtlz(1, 7, 3), 7, d1);
-        bench_pagmo(s, "dtlz2", pagmo::dtlz(2, 12, 3), 12, d2);
+        bench_pagmo_all(s, "zdt1", pagmo::zdt(1, 30), 30, z1);
+        bench_pagmo_all(s, "zdt2", pagmo::zdt(2, 30), 30, z2);
+        bench_pagmo_all(s, "zdt3", pagmo::zdt(3, 30), 30, z3);
+        bench_pagmo_all(s, "zdt4", pagmo::zdt(4, 10), 10, z4);
+        bench_pagmo_all(s, "zdt6", pagmo::zdt(6, 10), 10, z6);
+        bench_pagmo_all(s, "dtlz1", pagmo::dtlz(1, 7, 3), 7, d1);
+        bench_pagmo_all(s, "dtlz2", pagmo::dtlz(2, 12, 3), 12, d2);
     }
 #endif
     fmt::print("algo,problem,seed,fevals,wall_ms,bare_ms,points,hv_ratio,igd_plus\n");
