@@ -11,7 +11,7 @@
 namespace pride::grid {
 
 Criteria parse_criteria(std::string_view list) {
-    Criteria c{false, false, false};
+    Criteria c{false, false, false, false};
     require(!list.empty(), "objectives", "expected a list such as length,turns, got nothing");
     std::size_t begin = 0;
     while (begin <= list.size()) {
@@ -24,14 +24,16 @@ Criteria parse_criteria(std::string_view list) {
             slot = &c.turns;
         else if (name == "angle" || name == "angle_penalty")
             slot = &c.angle_penalty;
+        else if (name == "clearance")
+            slot = &c.clearance;
         require(slot != nullptr, "objectives",
-                "unknown objective '" + std::string(name) + "' (expected length, turns or angle)");
+                "unknown objective '" + std::string(name) + "' (expected length, turns, angle or clearance)");
         require(!*slot, "objectives", "'" + std::string(name) + "' is given twice");
         *slot = true;
         begin = comma + 1;
     }
-    require(static_cast<int>(c.length) + c.turns + c.angle_penalty >= 2, "objectives",
-            "a Pareto front needs two or three objectives, got only '" + std::string(list) +
+    require(c.count() >= 2, "objectives",
+            "a Pareto front needs two to four objectives, got only '" + std::string(list) +
                 "' (one objective's optimum: pride path --algo exact)");
     return c;
 }
@@ -41,6 +43,7 @@ std::vector<std::string> criteria_names(const Criteria& c) {
     if (c.length) names.emplace_back("length");
     if (c.turns) names.emplace_back("turns");
     if (c.angle_penalty) names.emplace_back("angle_penalty");
+    if (c.clearance) names.emplace_back("clearance");
     return names;
 }
 
@@ -75,35 +78,46 @@ constexpr std::uint32_t kDirs = 9;  // 8 directions and "no step yet" (also: any
 constexpr int kNone = 8;
 constexpr std::uint32_t kNil = std::numeric_limits<std::uint32_t>::max();
 
+// (A label's "dead" flag lives beside the labels, in a byte of its own: inside Label it would pad
+// 28 bytes to 32.)
 struct Label {
-    std::int32_t straight, diagonal, turns, angle;
+    std::int32_t straight, diagonal, turns, angle, clearance;
     std::uint32_t state, parent;
-    bool dead;
 };
 
 /// A label's costs as its state's list holds them, side by side for the dominance scans.
 struct Costs {
-    std::int32_t straight, diagonal, turns, angle;
+    std::int32_t straight, diagonal, turns, angle, clearance;
     std::uint32_t label;
 };
 
-/// The open list's entry: the key (length + octile distance, exact; the other criteria) and the label.
+/// The open list's entry: the key (length + octile distance, exact; the other criteria in the
+/// canonical order, 0 where unused) and the label.
 struct Entry {
-    std::int32_t straight, diagonal, k2, k3;
+    std::int32_t straight, diagonal, k2, k3, k4;
     std::uint32_t label;
 };
 
 class Search {
   public:
-    Search(const GridMap& map, Cell s, Cell g, const Criteria& c, const ParetoOptions& o)
-        : map_(map), goal_(g), c_(c), o_(o), goal_index_(static_cast<std::uint32_t>(map.index(g))) {
+    Search(const GridMap& map, const MapClearance& clearance, Cell s, Cell g, const Criteria& c, const ParetoOptions& o)
+        : map_(map),
+          clearance_(clearance),
+          goal_(g),
+          c_(c),
+          o_(o),
+          goal_index_(static_cast<std::uint32_t>(map.index(g))) {
         max_labels_ = std::min<std::size_t>(o.max_labels, std::size_t{1} << 25);
         lists_.resize(map.size() * kDirs);
         goal_state_ = goal_index_ * kDirs + kNone;
-        // The criteria after length, in the canonical order, as the key's second and third parts.
-        if (c.turns) second_ = &Label::turns;
-        if (c.angle_penalty) (second_ ? third_ : second_) = &Label::angle;
-        insert({0, 0, 0, 0, static_cast<std::uint32_t>(map.index(s)) * kDirs + kNone, kNil, false});
+        goal_clearance_ = clearance.cost(goal_index_);
+        // The criteria after length, in the canonical order, as the key's later parts.
+        int parts = 0;
+        if (c.turns) keys_[parts++] = &Label::turns;
+        if (c.angle_penalty) keys_[parts++] = &Label::angle;
+        if (c.clearance) keys_[parts++] = &Label::clearance;
+        const auto start = static_cast<std::uint32_t>(map.index(s));
+        insert({0, 0, 0, 0, clearance.cost(start), start * kDirs + kNone, kNil});
     }
 
     void run() {
@@ -111,7 +125,7 @@ class Search {
             std::pop_heap(heap_.begin(), heap_.end(), later_);
             const std::uint32_t id = heap_.back().label;
             heap_.pop_back();
-            if (labels_[id].dead) continue;
+            if (dead_[id]) continue;
             const Label l = labels_[id];
             const std::uint32_t index = l.state / kDirs;
             const int last = static_cast<int>(l.state % kDirs);
@@ -129,6 +143,7 @@ class Search {
                     next.turns += 1;
                     next.angle += angle_penalty_of_turn(turn_steps(last, d));
                 }
+                next.clearance += clearance_.cost(ni);
                 insert(next);
             }
         }
@@ -143,6 +158,7 @@ class Search {
             if (c != 0) return c < 0;
             if (a.turns != b.turns) return a.turns < b.turns;
             if (a.angle != b.angle) return a.angle < b.angle;
+            if (a.clearance != b.clearance) return a.clearance < b.clearance;
             return x < y;
         });
         std::vector<FrontPoint> out;
@@ -156,6 +172,7 @@ class Search {
             p.length = metrics(p.path, false).length;
             p.turns = l.turns;
             p.angle_penalty = l.angle;
+            p.clearance = l.clearance;
             out.push_back(std::move(p));
         }
         return out;
@@ -164,11 +181,12 @@ class Search {
     std::size_t labels() const noexcept { return labels_.size(); }
 
   private:
-    /// x weakly dominates y in the chosen criteria, y's costs raised by (ds, dd, dt, da).
+    /// x weakly dominates y in the chosen criteria, y's costs raised by (ds, dd, dt, da, dc).
     template <class X, class Y>
-    bool dominates(const X& x, const Y& y, int ds = 0, int dd = 0, int dt = 0, int da = 0) const noexcept {
+    bool dominates(const X& x, const Y& y, int ds = 0, int dd = 0, int dt = 0, int da = 0, int dc = 0) const noexcept {
         if (c_.turns && x.turns > y.turns + dt) return false;
         if (c_.angle_penalty && x.angle > y.angle + da) return false;
+        if (c_.clearance && x.clearance > y.clearance + dc) return false;
         return !c_.length || compare_lengths({x.straight, x.diagonal}, {y.straight + ds, y.diagonal + dd}) <= 0;
     }
 
@@ -182,7 +200,7 @@ class Search {
 
     /// A label at (index, last) whose every completion is weakly dominated by a goal label: its
     /// costs plus lower bounds of the rest (the octile distance; a turn of at least 45 degrees
-    /// when the goal is not straight ahead) are.
+    /// when the goal is not straight ahead; the goal cell, which every completion enters) are.
     bool bounded_by_goal(const Label& l, std::uint32_t index, int last) const noexcept {
         if (index == goal_index_) return false;  // the goal list itself decides
         int hs = 0, hd = 0;
@@ -195,7 +213,7 @@ class Search {
             ht = dx == t * kDx[last] && dy == t * kDy[last] ? 0 : 1;
         }
         for (const Costs& c : lists_[goal_state_])
-            if (dominates(c, l, hs, hd, ht, 10 * ht)) return true;
+            if (dominates(c, l, hs, hd, ht, 10 * ht, goal_clearance_)) return true;
         return false;
     }
 
@@ -211,7 +229,7 @@ class Search {
             // dominate that label too, and a list holds no dominated label).
             if (kept == k && dominates(list[k], candidate)) return;
             if (dominates(candidate, list[k])) {
-                labels_[list[k].label].dead = true;
+                dead_[list[k].label] = 1;
                 continue;
             }
             list[kept++] = list[k];
@@ -222,12 +240,14 @@ class Search {
                              "the front needs more than " + std::to_string(max_labels_) + " labels on " + map_.name());
         const auto id = static_cast<std::uint32_t>(labels_.size());
         labels_.push_back(candidate);
-        list.push_back({candidate.straight, candidate.diagonal, candidate.turns, candidate.angle, id});
+        dead_.push_back(0);
+        list.push_back(
+            {candidate.straight, candidate.diagonal, candidate.turns, candidate.angle, candidate.clearance, id});
         if (candidate.state == goal_state_) return;  // goal labels are not extended
         int hs = 0, hd = 0;
         if (o_.use_heuristic) octile(index, hs, hd);
-        heap_.push_back({candidate.straight + hs, candidate.diagonal + hd, second_ ? candidate.*second_ : 0,
-                         third_ ? candidate.*third_ : 0, id});
+        heap_.push_back({candidate.straight + hs, candidate.diagonal + hd, keys_[0] ? candidate.*keys_[0] : 0,
+                         keys_[1] ? candidate.*keys_[1] : 0, keys_[2] ? candidate.*keys_[2] : 0, id});
         std::push_heap(heap_.begin(), heap_.end(), later_);
     }
 
@@ -240,37 +260,60 @@ class Search {
                     return c > 0;
             if (x.k2 != y.k2) return x.k2 > y.k2;
             if (x.k3 != y.k3) return x.k3 > y.k3;
+            if (x.k4 != y.k4) return x.k4 > y.k4;
             return x.label > y.label;
         }
     };
 
-    const GridMap& map_;
+    const GridMap& map_;             // (the search lives inside one front() call)
+    const MapClearance& clearance_;  // (likewise)
     Cell goal_;
     Criteria c_;
     ParetoOptions o_;
     std::uint32_t goal_index_, goal_state_ = 0;
+    std::int32_t goal_clearance_ = 0;
     std::size_t max_labels_ = 0;
-    std::int32_t Label::*second_ = nullptr;
-    std::int32_t Label::*third_ = nullptr;
+    std::int32_t Label::*keys_[3] = {nullptr, nullptr, nullptr};
     Later later_{c_.length};
     std::vector<std::vector<Costs>> lists_;  // per state: the costs of its live labels
     std::vector<Label> labels_;
+    std::vector<std::uint8_t> dead_;  // per label: dominated since it was created
     std::vector<Entry> heap_;
 };
+
+}  // namespace
+
+namespace {
+
+void check_inputs(const GridMap& map, const Criteria& criteria) {
+    require(criteria.count() >= 1, "objectives", "at least one of length, turns, angle and clearance is needed");
+    // Every label's costs stay below 63 * 2^25 < 2^31 (a step adds at most 50 of angle penalty and
+    // 63 of clearance), states are indexed by 32 bits, and the per-state lists take 24 bytes per
+    // state before any label exists (216 MB at the limit).
+    require(map.size() <= 1'000'000, "map",
+            map.name() + " has " + std::to_string(map.size()) + " cells; the Pareto front takes at most 1000000");
+}
 
 }  // namespace
 
 std::vector<FrontPoint> ParetoSearch::front(const GridMap& map, Cell s, Cell g, const Criteria& criteria,
                                             const ParetoOptions& options) {
     labels_ = 0;
-    require(criteria.count() >= 1, "objectives", "at least one of length, turns and angle is needed");
-    // Every label's costs stay below 50 * 2^25 < 2^31, states are indexed by 32 bits, and the
-    // per-state lists take 24 bytes per state before any label exists (216 MB at the limit).
-    require(map.size() <= 1'000'000, "map",
-            map.name() + " has " + std::to_string(map.size()) + " cells; the Pareto front takes at most 1000000");
+    check_inputs(map, criteria);  // before the clearance is allocated
+    return front(map, MapClearance(map), s, g, criteria, options);
+}
+
+std::vector<FrontPoint> ParetoSearch::front(const GridMap& map, const MapClearance& clearance, Cell s, Cell g,
+                                            const Criteria& criteria, const ParetoOptions& options) {
+    labels_ = 0;
+    check_inputs(map, criteria);
+    require(clearance.width() == map.width() && clearance.height() == map.height(), "clearance",
+            "computed for a " + std::to_string(clearance.width()) + "x" + std::to_string(clearance.height()) +
+                " map, not for the " + std::to_string(map.width()) + "x" + std::to_string(map.height()) + " map " +
+                map.name());
     if (!map.free(s) || !map.free(g)) return {};
-    if (s == g) return {FrontPoint{{0, 0}, 0.0, 0, 0, Path{s}}};
-    Search search(map, s, g, criteria, options);
+    if (s == g) return {FrontPoint{{0, 0}, 0.0, 0, 0, clearance.cost(s), Path{s}}};
+    Search search(map, clearance, s, g, criteria, options);
     search.run();
     labels_ = search.labels();
     return search.front();
