@@ -110,7 +110,7 @@ class Search {
         max_labels_ = std::min<std::size_t>(o.max_labels, std::size_t{1} << 25);
         lists_.resize(map.size() * kDirs);
         goal_state_ = goal_index_ * kDirs + kNone;
-        goal_clearance_ = clearance.cost(goal_index_);
+        if (c.clearance && o.use_heuristic) rest_clearance_ = least_clearance_to_goal();
         // The criteria after length, in the canonical order, as the key's later parts.
         int parts = 0;
         if (c.turns) keys_[parts++] = &Label::turns;
@@ -198,9 +198,38 @@ class Search {
         straight = std::max(dx, dy) - diagonal;
     }
 
+    /// The least clearance still to pay from each cell to the goal (the cells entered after it, the
+    /// goal's included): Dijkstra from the goal over the legal steps, which are symmetric (a step
+    /// and its reverse need the same free cells). 0 where the goal cannot be reached (no bound).
+    std::vector<std::int32_t> least_clearance_to_goal() const {
+        constexpr std::int32_t kUnseen = -1;
+        std::vector<std::int32_t> rest(map_.size(), kUnseen);
+        using Item = std::pair<std::int32_t, std::uint32_t>;  // (rest, cell), smallest first
+        std::vector<Item> open{{0, goal_index_}};
+        const auto later = [](const Item& x, const Item& y) { return x.first > y.first; };
+        while (!open.empty()) {
+            std::pop_heap(open.begin(), open.end(), later);
+            const auto [r, v] = open.back();
+            open.pop_back();
+            if (rest[v] != kUnseen) continue;
+            rest[v] = r;
+            const std::int32_t through = r + clearance_.cost(v);  // a neighbour's rest through v
+            for (unsigned m = map_.moves(v, o_.corner_cutting); m != 0; m &= m - 1) {
+                const auto u =
+                    static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(v) + map_.offset(std::countr_zero(m)));
+                if (rest[u] == kUnseen) {
+                    open.push_back({through, u});
+                    std::push_heap(open.begin(), open.end(), later);
+                }
+            }
+        }
+        for (auto& r : rest) r = std::max(r, 0);
+        return rest;
+    }
+
     /// A label at (index, last) whose every completion is weakly dominated by a goal label: its
     /// costs plus lower bounds of the rest (the octile distance; a turn of at least 45 degrees
-    /// when the goal is not straight ahead; the goal cell, which every completion enters) are.
+    /// when the goal is not straight ahead; the least clearance from its cell to the goal) are.
     bool bounded_by_goal(const Label& l, std::uint32_t index, int last) const noexcept {
         if (index == goal_index_) return false;  // the goal list itself decides
         int hs = 0, hd = 0;
@@ -212,8 +241,9 @@ class Search {
             const int t = std::max(std::abs(dx), std::abs(dy));
             ht = dx == t * kDx[last] && dy == t * kDy[last] ? 0 : 1;
         }
+        const std::int32_t hc = rest_clearance_.empty() ? 0 : rest_clearance_[index];
         for (const Costs& c : lists_[goal_state_])
-            if (dominates(c, l, hs, hd, ht, 10 * ht, goal_clearance_)) return true;
+            if (dominates(c, l, hs, hd, ht, 10 * ht, hc)) return true;
         return false;
     }
 
@@ -271,7 +301,7 @@ class Search {
     Criteria c_;
     ParetoOptions o_;
     std::uint32_t goal_index_, goal_state_ = 0;
-    std::int32_t goal_clearance_ = 0;
+    std::vector<std::int32_t> rest_clearance_;  // per cell, when clearance is a criterion and bounds are on
     std::size_t max_labels_ = 0;
     std::int32_t Label::*keys_[3] = {nullptr, nullptr, nullptr};
     Later later_{c_.length};
