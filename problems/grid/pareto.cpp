@@ -111,11 +111,11 @@ class Search {
         lists_.resize(map.size() * kDirs);
         goal_state_ = goal_index_ * kDirs + kNone;
         if (c.clearance && o.use_heuristic) rest_clearance_ = least_clearance_to_goal();
-        // The criteria after length, in the canonical order, as the key's later parts.
         // Without turns and angle among the criteria no cost depends on the last direction, so a
-        // cell is one state (fewer labels: on the bundled maps 3 to 5 times fewer for length and
+        // cell is one state (on the bundled maps 2 to 5 times fewer labels for length and
         // clearance). Only for sets with clearance: the others keep their states, hence their paths.
         by_cell_ = c.clearance && !c.turns && !c.angle_penalty;
+        // The criteria after length, in the canonical order, as the key's later parts.
         int parts = 0;
         if (c.turns) keys_[parts++] = &Label::turns;
         if (c.angle_penalty) keys_[parts++] = &Label::angle;
@@ -323,10 +323,6 @@ class Search {
     std::vector<std::uint8_t> dead_;  // per label: dominated since it was created
     std::vector<Entry> heap_;
 };
-
-}  // namespace
-
-namespace {
 
 void check_inputs(const GridMap& map, const Criteria& criteria) {
     require(criteria.count() >= 1, "objectives", "at least one of length, turns, angle and clearance is needed");
