@@ -20,6 +20,8 @@
 #include <tuple>
 #include <vector>
 
+#include "cli_runner.hpp"
+#include "json_reader.hpp"
 #include "problems/grid/astar.hpp"
 #include "problems/grid/clearance.hpp"
 #include "problems/grid/map_io.hpp"
@@ -542,4 +544,41 @@ TEST_CASE("clearance: on the bundled maps the fronts' ends are A*'s length and D
             CHECK(a[i].clearance == b[i].clearance);
         }
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// pride pareto
+
+TEST_CASE("clearance: pride pareto prints clearance when it is among the objectives", "[clearance][pareto][cli]") {
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-40x40.map";
+    const GridMap m = grid::read_map(map);
+    const auto front = grid::pareto_front(m, {1, 38}, {38, 1}, Criteria{true, false, false, true});
+    REQUIRE(front.size() > 1);
+    const std::string args = "pareto --map '" + map + "' --start 1,38 --goal 38,1 --objectives clearance,length";
+    const auto text = test::run_pride(args);
+    INFO(text.err);
+    REQUIRE(text.status == 0);
+    const auto lines = test::lines_of(text.out);
+    REQUIRE(lines.size() == front.size() + 1);
+    CHECK(lines[0] == "length turns angle_penalty clearance");
+    CHECK(lines[1].substr(lines[1].rfind(' ') + 1) == std::to_string(front[0].clearance));
+    const auto json_run = test::run_pride(args + " --json");
+    REQUIRE(json_run.status == 0);
+    const auto j = test::parse_json(json_run.out);
+    REQUIRE(j.at("objectives").items.size() == 2);
+    CHECK(j.at("objectives").items[0].text == "clearance");
+    REQUIRE(j.at("front").items.size() == front.size());
+    for (std::size_t i = 0; i < front.size(); ++i) {
+        const auto& p = j.at("front").items[i];
+        CHECK(p.keys() == std::vector<std::string>{"length", "turns", "angle_penalty", "clearance", "path"});
+        CHECK(p.at("length").number == front[i].length);
+        CHECK(p.at("clearance").number == front[i].clearance);
+    }
+    // Without clearance among the objectives, the output is what it was.
+    const auto plain = test::run_pride("pareto --map '" + map + "' --start 1,38 --goal 38,1 --objectives length,turns");
+    REQUIRE(plain.status == 0);
+    CHECK(test::lines_of(plain.out).at(0) == "length turns angle_penalty");
+    test::check_input_error(
+        test::run_pride("pareto --map '" + map + "' --start 1,38 --goal 38,1 --objectives clearance"),
+        {"--objectives", "two to four"});
 }
