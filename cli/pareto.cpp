@@ -35,13 +35,13 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
     grid::ParetoOptions options;
     options.corner_cutting = o.corner_cutting;
     // The per-state lists (24 bytes a state) must fit, and the labels stop where memory would end
-    // (at most 68 bytes each: the label, its place in its state's list and in the open list).
+    // (at most 77 bytes each: the label, its place in its state's list and in the open list).
     const double memory = engine::available_memory(), lists = 24.0 * 9.0 * static_cast<double>(map->size());
     require(lists < 0.5 * memory, "map",
             fmt::format("the Pareto front on {} needs {} before its first label; this machine has {}", map->name(),
                         engine::format_bytes(lists), engine::format_bytes(memory)));
     options.max_labels =
-        std::min(options.max_labels, static_cast<std::size_t>(std::max(1.0, (0.8 * memory - lists) / 68.0)));
+        std::min(options.max_labels, static_cast<std::size_t>(std::max(1.0, (0.8 * memory - lists) / 77.0)));
     const auto front = grid::pareto_front(*map, start, goal, criteria, options);
 
     std::vector<std::pair<std::string, html::PictureFormat>> pictures;
@@ -53,9 +53,11 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
         paths.push_back(p.path);
         std::string words;
         for (const auto& n : names)
-            words += (words.empty() ? "" : ", ") + (n == "length"  ? fmt::format("length {:.6g}", p.length)
-                                                    : n == "turns" ? fmt::format("turns {}", p.turns)
-                                                                   : fmt::format("angle penalty {}", p.angle_penalty));
+            words +=
+                (words.empty() ? "" : ", ") + (n == "length"      ? fmt::format("length {:.6g}", p.length)
+                                               : n == "turns"     ? fmt::format("turns {}", p.turns)
+                                               : n == "clearance" ? fmt::format("clearance {}", p.clearance)
+                                                                  : fmt::format("angle penalty {}", p.angle_penalty));
         labels.push_back(words);
     }
     OutputFiles files;  // committed once the front was printed
@@ -63,18 +65,24 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
         html::draw_grid_paths(*map, start, goal, paths, labels, file, format);
     });
 
+    // Clearance (with the default bands) is shown only when asked for, so that the other fronts
+    // print as they always did.
     std::string text;
     if (o.json) {
         std::string list, points;
         for (const auto& n : names) list += (list.empty() ? "" : ", ") + json_string(n);
         for (const auto& p : front)
-            points += fmt::format("{}{{\"length\": {}, \"turns\": {}, \"angle_penalty\": {}, \"path\": {}}}",
+            points += fmt::format("{}{{\"length\": {}, \"turns\": {}, \"angle_penalty\": {}, {}\"path\": {}}}",
                                   points.empty() ? "" : ", ", json_number(p.length), p.turns, p.angle_penalty,
+                                  criteria.clearance ? fmt::format("\"clearance\": {}, ", p.clearance) : "",
                                   json_cells(p.path));
         text = fmt::format("{{\"objectives\": [{}], \"front\": [{}]}}\n", list, points);
     } else {
-        text = "length turns angle_penalty\n";
-        for (const auto& p : front) text += fmt::format("{:.10g} {} {}\n", p.length, p.turns, p.angle_penalty);
+        text = criteria.clearance ? "length turns angle_penalty clearance\n" : "length turns angle_penalty\n";
+        for (const auto& p : front)
+            text += criteria.clearance
+                        ? fmt::format("{:.10g} {} {} {}\n", p.length, p.turns, p.angle_penalty, p.clearance)
+                        : fmt::format("{:.10g} {} {}\n", p.length, p.turns, p.angle_penalty);
     }
     print_then_commit(out, text, files);
     return 0;

@@ -11,7 +11,7 @@
 namespace pride::grid {
 
 Criteria parse_criteria(std::string_view list) {
-    Criteria c{false, false, false};
+    Criteria c{false, false, false, false};
     require(!list.empty(), "objectives", "expected a list such as length,turns, got nothing");
     std::size_t begin = 0;
     while (begin <= list.size()) {
@@ -24,14 +24,16 @@ Criteria parse_criteria(std::string_view list) {
             slot = &c.turns;
         else if (name == "angle" || name == "angle_penalty")
             slot = &c.angle_penalty;
+        else if (name == "clearance")
+            slot = &c.clearance;
         require(slot != nullptr, "objectives",
-                "unknown objective '" + std::string(name) + "' (expected length, turns or angle)");
+                "unknown objective '" + std::string(name) + "' (expected length, turns, angle or clearance)");
         require(!*slot, "objectives", "'" + std::string(name) + "' is given twice");
         *slot = true;
         begin = comma + 1;
     }
-    require(static_cast<int>(c.length) + c.turns + c.angle_penalty >= 2, "objectives",
-            "a Pareto front needs two or three objectives, got only '" + std::string(list) +
+    require(c.count() >= 2, "objectives",
+            "a Pareto front needs two to four objectives, got only '" + std::string(list) +
                 "' (one objective's optimum: pride path --algo exact)");
     return c;
 }
@@ -41,6 +43,7 @@ std::vector<std::string> criteria_names(const Criteria& c) {
     if (c.length) names.emplace_back("length");
     if (c.turns) names.emplace_back("turns");
     if (c.angle_penalty) names.emplace_back("angle_penalty");
+    if (c.clearance) names.emplace_back("clearance");
     return names;
 }
 
@@ -75,35 +78,50 @@ constexpr std::uint32_t kDirs = 9;  // 8 directions and "no step yet" (also: any
 constexpr int kNone = 8;
 constexpr std::uint32_t kNil = std::numeric_limits<std::uint32_t>::max();
 
+// (A label's "dead" flag lives beside the labels, in a byte of its own: inside Label it would pad
+// 28 bytes to 32.)
 struct Label {
-    std::int32_t straight, diagonal, turns, angle;
+    std::int32_t straight, diagonal, turns, angle, clearance;
     std::uint32_t state, parent;
-    bool dead;
 };
 
 /// A label's costs as its state's list holds them, side by side for the dominance scans.
 struct Costs {
-    std::int32_t straight, diagonal, turns, angle;
+    std::int32_t straight, diagonal, turns, angle, clearance;
     std::uint32_t label;
 };
 
-/// The open list's entry: the key (length + octile distance, exact; the other criteria) and the label.
+/// The open list's entry: the key (length + octile distance, exact; the other criteria in the
+/// canonical order, 0 where unused) and the label.
 struct Entry {
-    std::int32_t straight, diagonal, k2, k3;
+    std::int32_t straight, diagonal, k2, k3, k4;
     std::uint32_t label;
 };
 
 class Search {
   public:
-    Search(const GridMap& map, Cell s, Cell g, const Criteria& c, const ParetoOptions& o)
-        : map_(map), goal_(g), c_(c), o_(o), goal_index_(static_cast<std::uint32_t>(map.index(g))) {
+    Search(const GridMap& map, const MapClearance& clearance, Cell s, Cell g, const Criteria& c, const ParetoOptions& o)
+        : map_(map),
+          clearance_(clearance),
+          goal_(g),
+          c_(c),
+          o_(o),
+          goal_index_(static_cast<std::uint32_t>(map.index(g))) {
         max_labels_ = std::min<std::size_t>(o.max_labels, std::size_t{1} << 25);
         lists_.resize(map.size() * kDirs);
         goal_state_ = goal_index_ * kDirs + kNone;
-        // The criteria after length, in the canonical order, as the key's second and third parts.
-        if (c.turns) second_ = &Label::turns;
-        if (c.angle_penalty) (second_ ? third_ : second_) = &Label::angle;
-        insert({0, 0, 0, 0, static_cast<std::uint32_t>(map.index(s)) * kDirs + kNone, kNil, false});
+        if (c.clearance && o.use_heuristic) rest_clearance_ = least_clearance_to_goal();
+        // Without turns and angle among the criteria no cost depends on the last direction, so a
+        // cell is one state (on the bundled maps 2 to 5 times fewer labels for length and
+        // clearance). Only for sets with clearance: the others keep their states, hence their paths.
+        by_cell_ = c.clearance && !c.turns && !c.angle_penalty;
+        // The criteria after length, in the canonical order, as the key's later parts.
+        int parts = 0;
+        if (c.turns) keys_[parts++] = &Label::turns;
+        if (c.angle_penalty) keys_[parts++] = &Label::angle;
+        if (c.clearance) keys_[parts++] = &Label::clearance;
+        const auto start = static_cast<std::uint32_t>(map.index(s));
+        insert({0, 0, 0, 0, clearance.cost(start), start * kDirs + kNone, kNil});
     }
 
     void run() {
@@ -111,10 +129,10 @@ class Search {
             std::pop_heap(heap_.begin(), heap_.end(), later_);
             const std::uint32_t id = heap_.back().label;
             heap_.pop_back();
-            if (labels_[id].dead) continue;
+            if (dead_[id]) continue;
             const Label l = labels_[id];
             const std::uint32_t index = l.state / kDirs;
-            const int last = static_cast<int>(l.state % kDirs);
+            const int last = by_cell_ ? last_step(l) : static_cast<int>(l.state % kDirs);
             if (o_.use_heuristic && bounded_by_goal(l, index, last)) continue;
             const int back = last == kNone ? -1 : (last + 4) % 8;  // a U-turn only makes a loop
             for (unsigned m = map_.moves(index, o_.corner_cutting); m != 0; m &= m - 1) {
@@ -122,13 +140,15 @@ class Search {
                 if (d == back) continue;
                 const auto ni = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(index) + map_.offset(d));
                 Label next = l;
-                next.state = ni == goal_index_ ? goal_state_ : ni * kDirs + static_cast<std::uint32_t>(d);
+                next.state =
+                    ni == goal_index_ ? goal_state_ : ni * kDirs + static_cast<std::uint32_t>(by_cell_ ? kNone : d);
                 next.parent = id;
                 (is_diagonal(d) ? next.diagonal : next.straight) += 1;
                 if (last != kNone && last != d) {
                     next.turns += 1;
                     next.angle += angle_penalty_of_turn(turn_steps(last, d));
                 }
+                next.clearance += clearance_.cost(ni);
                 insert(next);
             }
         }
@@ -143,6 +163,7 @@ class Search {
             if (c != 0) return c < 0;
             if (a.turns != b.turns) return a.turns < b.turns;
             if (a.angle != b.angle) return a.angle < b.angle;
+            if (a.clearance != b.clearance) return a.clearance < b.clearance;
             return x < y;
         });
         std::vector<FrontPoint> out;
@@ -156,6 +177,7 @@ class Search {
             p.length = metrics(p.path, false).length;
             p.turns = l.turns;
             p.angle_penalty = l.angle;
+            p.clearance = l.clearance;
             out.push_back(std::move(p));
         }
         return out;
@@ -164,12 +186,20 @@ class Search {
     std::size_t labels() const noexcept { return labels_.size(); }
 
   private:
-    /// x weakly dominates y in the chosen criteria, y's costs raised by (ds, dd, dt, da).
+    /// x weakly dominates y in the chosen criteria, y's costs raised by (ds, dd, dt, da, dc).
     template <class X, class Y>
-    bool dominates(const X& x, const Y& y, int ds = 0, int dd = 0, int dt = 0, int da = 0) const noexcept {
+    bool dominates(const X& x, const Y& y, int ds = 0, int dd = 0, int dt = 0, int da = 0, int dc = 0) const noexcept {
         if (c_.turns && x.turns > y.turns + dt) return false;
         if (c_.angle_penalty && x.angle > y.angle + da) return false;
+        if (c_.clearance && x.clearance > y.clearance + dc) return false;
         return !c_.length || compare_lengths({x.straight, x.diagonal}, {y.straight + ds, y.diagonal + dd}) <= 0;
+    }
+
+    /// The direction of a label's last step (kNone at the start), from its parent's cell: the turns
+    /// and angle penalty its path reports when the states are cells.
+    int last_step(const Label& l) const noexcept {
+        if (l.parent == kNil) return kNone;
+        return direction(map_.cell(labels_[l.parent].state / kDirs), map_.cell(l.state / kDirs));
     }
 
     /// The octile distance from cell `index` to the goal, as straight and diagonal steps.
@@ -180,9 +210,38 @@ class Search {
         straight = std::max(dx, dy) - diagonal;
     }
 
+    /// The least clearance still to pay from each cell to the goal (the cells entered after it, the
+    /// goal's included): Dijkstra from the goal over the legal steps, which are symmetric (a step
+    /// and its reverse need the same free cells). 0 where the goal cannot be reached (no bound).
+    std::vector<std::int32_t> least_clearance_to_goal() const {
+        constexpr std::int32_t kUnseen = -1;
+        std::vector<std::int32_t> rest(map_.size(), kUnseen);
+        using Item = std::pair<std::int32_t, std::uint32_t>;  // (rest, cell), smallest first
+        std::vector<Item> open{{0, goal_index_}};
+        const auto later = [](const Item& x, const Item& y) { return x.first > y.first; };
+        while (!open.empty()) {
+            std::pop_heap(open.begin(), open.end(), later);
+            const auto [r, v] = open.back();
+            open.pop_back();
+            if (rest[v] != kUnseen) continue;
+            rest[v] = r;
+            const std::int32_t through = r + clearance_.cost(v);  // a neighbour's rest through v
+            for (unsigned m = map_.moves(v, o_.corner_cutting); m != 0; m &= m - 1) {
+                const auto u =
+                    static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(v) + map_.offset(std::countr_zero(m)));
+                if (rest[u] == kUnseen) {
+                    open.push_back({through, u});
+                    std::push_heap(open.begin(), open.end(), later);
+                }
+            }
+        }
+        for (auto& r : rest) r = std::max(r, 0);
+        return rest;
+    }
+
     /// A label at (index, last) whose every completion is weakly dominated by a goal label: its
     /// costs plus lower bounds of the rest (the octile distance; a turn of at least 45 degrees
-    /// when the goal is not straight ahead) are.
+    /// when the goal is not straight ahead; the least clearance from its cell to the goal) are.
     bool bounded_by_goal(const Label& l, std::uint32_t index, int last) const noexcept {
         if (index == goal_index_) return false;  // the goal list itself decides
         int hs = 0, hd = 0;
@@ -194,8 +253,9 @@ class Search {
             const int t = std::max(std::abs(dx), std::abs(dy));
             ht = dx == t * kDx[last] && dy == t * kDy[last] ? 0 : 1;
         }
+        const std::int32_t hc = rest_clearance_.empty() ? 0 : rest_clearance_[index];
         for (const Costs& c : lists_[goal_state_])
-            if (dominates(c, l, hs, hd, ht, 10 * ht)) return true;
+            if (dominates(c, l, hs, hd, ht, 10 * ht, hc)) return true;
         return false;
     }
 
@@ -211,7 +271,7 @@ class Search {
             // dominate that label too, and a list holds no dominated label).
             if (kept == k && dominates(list[k], candidate)) return;
             if (dominates(candidate, list[k])) {
-                labels_[list[k].label].dead = true;
+                dead_[list[k].label] = 1;
                 continue;
             }
             list[kept++] = list[k];
@@ -222,12 +282,14 @@ class Search {
                              "the front needs more than " + std::to_string(max_labels_) + " labels on " + map_.name());
         const auto id = static_cast<std::uint32_t>(labels_.size());
         labels_.push_back(candidate);
-        list.push_back({candidate.straight, candidate.diagonal, candidate.turns, candidate.angle, id});
+        dead_.push_back(0);
+        list.push_back(
+            {candidate.straight, candidate.diagonal, candidate.turns, candidate.angle, candidate.clearance, id});
         if (candidate.state == goal_state_) return;  // goal labels are not extended
         int hs = 0, hd = 0;
         if (o_.use_heuristic) octile(index, hs, hd);
-        heap_.push_back({candidate.straight + hs, candidate.diagonal + hd, second_ ? candidate.*second_ : 0,
-                         third_ ? candidate.*third_ : 0, id});
+        heap_.push_back({candidate.straight + hs, candidate.diagonal + hd, keys_[0] ? candidate.*keys_[0] : 0,
+                         keys_[1] ? candidate.*keys_[1] : 0, keys_[2] ? candidate.*keys_[2] : 0, id});
         std::push_heap(heap_.begin(), heap_.end(), later_);
     }
 
@@ -240,37 +302,57 @@ class Search {
                     return c > 0;
             if (x.k2 != y.k2) return x.k2 > y.k2;
             if (x.k3 != y.k3) return x.k3 > y.k3;
+            if (x.k4 != y.k4) return x.k4 > y.k4;
             return x.label > y.label;
         }
     };
 
-    const GridMap& map_;
+    const GridMap& map_;             // (the search lives inside one front() call)
+    const MapClearance& clearance_;  // (likewise)
     Cell goal_;
     Criteria c_;
     ParetoOptions o_;
     std::uint32_t goal_index_, goal_state_ = 0;
+    std::vector<std::int32_t> rest_clearance_;  // per cell, when clearance is a criterion and bounds are on
     std::size_t max_labels_ = 0;
-    std::int32_t Label::*second_ = nullptr;
-    std::int32_t Label::*third_ = nullptr;
+    std::int32_t Label::*keys_[3] = {nullptr, nullptr, nullptr};
+    bool by_cell_ = false;  // states are cells, not (cell, last direction)
     Later later_{c_.length};
     std::vector<std::vector<Costs>> lists_;  // per state: the costs of its live labels
     std::vector<Label> labels_;
+    std::vector<std::uint8_t> dead_;  // per label: dominated since it was created
     std::vector<Entry> heap_;
 };
+
+void check_inputs(const GridMap& map, const Criteria& criteria) {
+    require(criteria.count() >= 1, "objectives", "at least one of length, turns, angle and clearance is needed");
+    // Every label's costs stay below 63 * 2^25 < 2^31 (a step adds at most 50 of angle penalty and
+    // 63 of clearance), states are indexed by 32 bits, and the per-state lists take 24 bytes per
+    // state before any label exists (216 MB at the limit).
+    require(map.size() <= 1'000'000, "map",
+            map.name() + " has " + std::to_string(map.size()) + " cells; the Pareto front takes at most 1000000");
+}
 
 }  // namespace
 
 std::vector<FrontPoint> ParetoSearch::front(const GridMap& map, Cell s, Cell g, const Criteria& criteria,
                                             const ParetoOptions& options) {
     labels_ = 0;
-    require(criteria.count() >= 1, "objectives", "at least one of length, turns and angle is needed");
-    // Every label's costs stay below 50 * 2^25 < 2^31, states are indexed by 32 bits, and the
-    // per-state lists take 24 bytes per state before any label exists (216 MB at the limit).
-    require(map.size() <= 1'000'000, "map",
-            map.name() + " has " + std::to_string(map.size()) + " cells; the Pareto front takes at most 1000000");
+    check_inputs(map, criteria);  // before the clearance is allocated
+    return front(map, MapClearance(map), s, g, criteria, options);
+}
+
+std::vector<FrontPoint> ParetoSearch::front(const GridMap& map, const MapClearance& clearance, Cell s, Cell g,
+                                            const Criteria& criteria, const ParetoOptions& options) {
+    labels_ = 0;
+    check_inputs(map, criteria);
+    require(clearance.width() == map.width() && clearance.height() == map.height(), "clearance",
+            "computed for a " + std::to_string(clearance.width()) + "x" + std::to_string(clearance.height()) +
+                " map, not for the " + std::to_string(map.width()) + "x" + std::to_string(map.height()) + " map " +
+                map.name());
     if (!map.free(s) || !map.free(g)) return {};
-    if (s == g) return {FrontPoint{{0, 0}, 0.0, 0, 0, Path{s}}};
-    Search search(map, s, g, criteria, options);
+    if (s == g) return {FrontPoint{{0, 0}, 0.0, 0, 0, clearance.cost(s), Path{s}}};
+    Search search(map, clearance, s, g, criteria, options);
     search.run();
     labels_ = search.labels();
     return search.front();

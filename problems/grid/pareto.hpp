@@ -1,6 +1,7 @@
 #pragma once
-// The exact Pareto front of a path's cost vector over a subset of {length, turns, angle_penalty}
-// (shared/spec/grid.md's metrics; shared/spec/cli.md's `pride pareto`), by multi-objective label
+// The exact Pareto front of a path's cost vector over a subset of {length, turns, angle_penalty,
+// clearance} (shared/spec/grid.md's metrics, clearance.hpp's clearance; shared/spec/cli.md's
+// `pride pareto`), by multi-objective label
 // setting (Martins' algorithm, with the octile distance guiding the length) over the oracle's
 // states (cell, direction of the last step), with the oracle's moves: 8-connected, no corner
 // cutting unless asked.
@@ -12,7 +13,8 @@
 // decreases along a step, so a popped label is never dominated later and is final. Labels at the
 // goal are not extended and share one list whatever their last direction: its labels at the end
 // are the front. A label whose cost plus a lower bound of the rest (octile length; one turn and
-// W = 10 when the goal is not straight ahead) is weakly dominated by a goal label is dropped.
+// W = 10 when the goal is not straight ahead; the goal cell's clearance cost) is weakly dominated
+// by a goal label is dropped. Clearance is a cost per cell entered (the start's in the first label).
 //
 // Lengths are exact: a length is a + b sqrt(2) with a the number of orthogonal and b the number of
 // diagonal steps, and two lengths are compared through the sign of (a1 - a2) - (b2 - b1) sqrt(2),
@@ -21,7 +23,8 @@
 //
 // Walks and simple paths have the same front: cutting an innermost loop out of a walk shortens it
 // and adds neither turns nor angle penalty (tests/test_grid_search.cpp gives the argument, for
-// each criterion on its own, for the same cut), so every walk is dominated by a simple path.
+// each criterion on its own, for the same cut), nor clearance (it drops cells, each costing >= 0),
+// so every walk is weakly dominated by a simple path.
 //
 // iqga = -(1/f1 + 1/f2 + 1/f3) (objectives.hpp) does not decrease when any of length, angle
 // penalty and turns grows, so its minimum over all paths is attained on the 3-D front:
@@ -33,26 +36,28 @@
 #include <string_view>
 #include <vector>
 
+#include "problems/grid/clearance.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 
 namespace pride::grid {
 
-/// Which of length, turns and angle_penalty the front is taken over (at least one).
+/// Which of length, turns, angle_penalty and clearance the front is taken over (at least one).
 struct Criteria {
     bool length = true;
     bool turns = false;
     bool angle_penalty = false;
+    bool clearance = false;
 
-    int count() const noexcept { return int(length) + int(turns) + int(angle_penalty); }
+    int count() const noexcept { return int(length) + int(turns) + int(angle_penalty) + int(clearance); }
     friend bool operator==(const Criteria&, const Criteria&) = default;
 };
 
-/// Parses a comma-separated list of criteria: `length`, `turns` and `angle` (or `angle_penalty`),
-/// each at most once, in any order. InputError("objectives", ...) on an empty list, an unknown or a
-/// repeated name.
+/// Parses a comma-separated list of two to four criteria: `length`, `turns`, `angle` (or
+/// `angle_penalty`) and `clearance`, each at most once, in any order. InputError("objectives", ...)
+/// on an empty list, an unknown or a repeated name, or a single one.
 Criteria parse_criteria(std::string_view list);
-/// The criteria as a list of names in the canonical order: length, turns, angle_penalty.
+/// The criteria as a list of names in the canonical order: length, turns, angle_penalty, clearance.
 std::vector<std::string> criteria_names(const Criteria& c);
 
 /// A length a + b sqrt(2): `straight` orthogonal and `diagonal` diagonal steps.
@@ -71,7 +76,8 @@ struct FrontPoint {
     double length = 0.0;  // metrics(path).length (the same bits as `pride path` reports)
     int turns = 0;
     int angle_penalty = 0;
-    Path path;  // start first, goal last
+    int clearance = 0;  // clearance_cost of the path, on the search's MapClearance
+    Path path;          // start first, goal last
 };
 
 struct ParetoOptions {
@@ -80,19 +86,24 @@ struct ParetoOptions {
     /// Both give the same front (the same points; the paths of tied points may differ).
     bool use_heuristic = true;
     /// InputError("pareto", ...) instead of creating more labels than this (at most 2^25; memory:
-    /// 28 bytes each, plus 20 while it is live and 20 while it is open). Maps of more than a million
+    /// 29 bytes each, plus 24 while it is live and 24 while it is open). Maps of more than a million
     /// cells are refused before anything is allocated (the per-state lists take 24 bytes a state).
     std::size_t max_labels = std::size_t{1} << 25;
 };
 
 /// The front, sorted by length, then by the other criteria (lexicographically, in the canonical
-/// order). With fewer than three criteria each point still reports all three metrics of its path
+/// order). With fewer than four criteria each point still reports all four metrics of its path
 /// (a tie in the chosen criteria keeps the path found first). Empty when g cannot be reached or s
 /// or g is outside or blocked; s == g gives the one-cell path.
 class ParetoSearch {
   public:
+    /// Clearance with the default ClearanceParams, computed for this search.
     std::vector<FrontPoint> front(const GridMap& map, Cell s, Cell g, const Criteria& criteria,
                                   const ParetoOptions& options = {});
+    /// Clearance as computed once for this map (any parameters); InputError("clearance", ...) when
+    /// it was computed for a map of another size.
+    std::vector<FrontPoint> front(const GridMap& map, const MapClearance& clearance, Cell s, Cell g,
+                                  const Criteria& criteria, const ParetoOptions& options = {});
     /// Labels created by the last search (a measure of its work).
     std::size_t labels() const noexcept { return labels_; }
 
@@ -103,6 +114,10 @@ class ParetoSearch {
 inline std::vector<FrontPoint> pareto_front(const GridMap& map, Cell s, Cell g, const Criteria& criteria,
                                             const ParetoOptions& options = {}) {
     return ParetoSearch{}.front(map, s, g, criteria, options);
+}
+inline std::vector<FrontPoint> pareto_front(const GridMap& map, const MapClearance& clearance, Cell s, Cell g,
+                                            const Criteria& criteria, const ParetoOptions& options = {}) {
+    return ParetoSearch{}.front(map, clearance, s, g, criteria, options);
 }
 
 /// The minimum of the iqga objective over all legal paths from s to g, taken over the 3-D front
