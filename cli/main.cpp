@@ -170,7 +170,9 @@ int run_main(int argc, char** argv) {
     pareto_cmd->add_option("--start", pareto.start, "start cell X,Y (x: column from the left, y: row from the top)")
         ->required();
     pareto_cmd->add_option("--goal", pareto.goal, "goal cell X,Y")->required();
-    pareto_cmd->add_option("--objectives", pareto.objectives, "length,turns, length,angle or length,angle,turns")
+    pareto_cmd
+        ->add_option("--objectives", pareto.objectives,
+                     "two to four of length, turns, angle, clearance, comma-separated")
         ->required();
     pareto_cmd->add_option("--inflate", pareto.inflate, "obstacle inflation radius in cells (default 0)")
         ->check(integer_in(0, 1000));

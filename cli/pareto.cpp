@@ -34,14 +34,8 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
 
     grid::ParetoOptions options;
     options.corner_cutting = o.corner_cutting;
-    // The per-state lists (24 bytes a state) must fit, and the labels stop where memory would end
-    // (at most 77 bytes each: the label, its place in its state's list and in the open list).
-    const double memory = engine::available_memory(), lists = 24.0 * 9.0 * static_cast<double>(map->size());
-    require(lists < 0.5 * memory, "map",
-            fmt::format("the Pareto front on {} needs {} before its first label; this machine has {}", map->name(),
-                        engine::format_bytes(lists), engine::format_bytes(memory)));
     options.max_labels =
-        std::min(options.max_labels, static_cast<std::size_t>(std::max(1.0, (0.8 * memory - lists) / 77.0)));
+        std::min(options.max_labels, grid::label_limit(map->size(), engine::available_memory(), map->name()));
     const auto front = grid::pareto_front(*map, start, goal, criteria, options);
 
     std::vector<std::pair<std::string, html::PictureFormat>> pictures;

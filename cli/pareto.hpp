@@ -1,6 +1,6 @@
 #pragma once
-// `pride pareto` (shared/spec/cli.md): the exact Pareto front of a grid path's length, turns and
-// angle penalty (problems/grid/pareto.hpp), as text or JSON, and drawn.
+// `pride pareto` (shared/spec/cli.md): the exact Pareto front of a grid path's length, turns,
+// angle penalty and clearance (problems/grid/pareto.hpp), as text or JSON, and drawn.
 #include <cstdint>
 #include <iosfwd>
 #include <string>
@@ -11,7 +11,7 @@ struct ParetoOptions {
     std::string map;
     std::string start;  // "X,Y"
     std::string goal;
-    std::string objectives;  // length,turns | length,angle | length,angle,turns (any order)
+    std::string objectives;  // two to four of length, turns, angle, clearance (any order)
     std::int64_t inflate = 0;
     bool corner_cutting = false;
     bool json = false;

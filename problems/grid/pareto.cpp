@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "framework/error.hpp"
+#include "framework/memory.hpp"
 #include "problems/grid/objectives.hpp"
 
 namespace pride::grid {
@@ -373,6 +374,14 @@ std::optional<double> iqga_optimum(const GridMap& map, Cell s, Cell g, bool corn
     }
     if (out && at) *out = at->path;
     return best;
+}
+
+std::size_t label_limit(std::size_t cells, double memory, const std::string& map_name) {
+    const double lists = 24.0 * 9.0 * static_cast<double>(cells);
+    require(lists < 0.5 * memory, "map",
+            "the Pareto front on " + map_name + " needs " + format_bytes(lists) +
+                " before its first label; this machine has " + format_bytes(memory));
+    return static_cast<std::size_t>(std::max(1.0, (0.8 * memory - lists) / 77.0));
 }
 
 }  // namespace pride::grid

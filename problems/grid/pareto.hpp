@@ -91,6 +91,12 @@ struct ParetoOptions {
     std::size_t max_labels = std::size_t{1} << 25;
 };
 
+/// The largest `ParetoOptions::max_labels` that keeps a search on a map of `cells` cells within
+/// `memory` bytes: the per-state lists (24 bytes a state, 9 states a cell) must fit in half of it
+/// (InputError("map", ...) naming `map_name` otherwise), and the labels (at most 77 bytes each:
+/// the label, its place in its state's list and in the open list) in what is left of 80 %.
+std::size_t label_limit(std::size_t cells, double memory, const std::string& map_name);
+
 /// The front, sorted by length, then by the other criteria (lexicographically, in the canonical
 /// order). With fewer than four criteria each point still reports all four metrics of its path
 /// (a tie in the chosen criteria keeps the path found first). Empty when g cannot be reached or s

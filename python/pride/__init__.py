@@ -249,8 +249,9 @@ def exact(grid, start, goal, *, objective="cells", corner_cutting=False):
 
 
 def pareto(grid, start, goal, *, objectives="length,turns", corner_cutting=False):
-    """The exact Pareto front over ``objectives`` (length, turns, angle: two or three of them, as
-    ``pride pareto``): a list of dicts with length, turns, angle_penalty and path."""
+    """The exact Pareto front over ``objectives`` (length, turns, angle, clearance: two to four of
+    them, as ``pride pareto``): a list of dicts with length, turns, angle_penalty and path, and
+    clearance when it is one of the objectives (docs/grid.md: the cost per cell by distance band)."""
     if not isinstance(objectives, str):
         objectives = ",".join(_str("objectives", o) for o in _list("objectives", objectives))
     return _pride.pareto(_grid(grid), start, goal, objectives, _bool("corner_cutting", corner_cutting))

@@ -175,21 +175,20 @@ py::list pareto(const Grid& g, const py::object& start, const py::object& goal, 
     const grid::GridProblem<grid::LengthObjective> checked(g.map, s, e, {}, corner_cutting);
     grid::ParetoOptions options;
     options.corner_cutting = corner_cutting;
-    const double memory = engine::available_memory(), lists = 24.0 * 9.0 * static_cast<double>(g.map->size());
-    require(lists < 0.5 * memory, "map",
-            fmt::format("the Pareto front on {} needs {} before its first label; this machine has {}", g.map->name(),
-                        engine::format_bytes(lists), engine::format_bytes(memory)));
     options.max_labels =
-        std::min(options.max_labels, static_cast<std::size_t>(std::max(1.0, (0.8 * memory - lists) / 68.0)));
+        std::min(options.max_labels, grid::label_limit(g.map->size(), engine::available_memory(), g.map->name()));
     std::vector<grid::FrontPoint> front;
     {
         py::gil_scoped_release release;
         front = grid::pareto_front(*g.map, s, e, criteria, options);
     }
     py::list out;
-    for (const auto& p : front)
-        out.append(py::dict(py::arg("length") = p.length, py::arg("turns") = p.turns,
-                            py::arg("angle_penalty") = p.angle_penalty, py::arg("path") = path_array(p.path)));
+    for (const auto& p : front) {
+        py::dict d(py::arg("length") = p.length, py::arg("turns") = p.turns, py::arg("angle_penalty") = p.angle_penalty,
+                   py::arg("path") = path_array(p.path));
+        if (criteria.clearance) d["clearance"] = p.clearance;  // as pride pareto shows it: when asked for
+        out.append(d);
+    }
     return out;
 }
 

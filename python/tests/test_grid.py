@@ -96,6 +96,20 @@ def test_pareto_front():
     assert front[0]["length"] == pytest.approx(pride.exact(g, START, GOAL, objective="length").objective_value)
 
 
+def test_pareto_front_with_clearance():
+    # Clearance (docs/grid.md): cells beside an obstacle cost 3, then 2 and 1 by distance band. The
+    # front trades length for it: its ends are the shortest path and the least clearance, and a
+    # point's clearance is what its path pays (start and goal included).
+    g = pride.Grid(ARRAY)
+    front = pride.pareto(g, START, GOAL, objectives="length,clearance")
+    assert front and all("clearance" in p and legal(g, p["path"], START, GOAL) for p in front)
+    lengths = [p["length"] for p in front]
+    clearance = [p["clearance"] for p in front]
+    assert lengths == sorted(lengths) and clearance == sorted(clearance, reverse=True)
+    assert front[0]["length"] == pytest.approx(pride.exact(g, START, GOAL, objective="length").objective_value)
+    assert "clearance" not in pride.pareto(g, START, GOAL, objectives="length,turns")[0]
+
+
 def test_bad_grid_arguments():
     g = pride.Grid(ARRAY)
     with pytest.raises(ValueError, match="start"):
