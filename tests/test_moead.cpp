@@ -18,29 +18,16 @@
 #include "problems/multiobjective/dtlz.hpp"
 #include "problems/multiobjective/fronts.hpp"
 #include "problems/multiobjective/zdt.hpp"
+#include "tests/mo_support.hpp"
 #include "tests/test_support.hpp"
 
 namespace {
 
 using Catch::Matchers::Contains;
 using pride::Matrix;
+using pride::test::CountedZdt1;
+using pride::test::evaluations;
 using pride::test::input_error_message;
-
-/// ZDT1 whose calls are counted (copies share the counter).
-struct CountedZdt1 {
-    pride::multiobjective::Zdt1 zdt1;
-    std::shared_ptr<std::int64_t> calls = std::make_shared<std::int64_t>(0);
-    explicit CountedZdt1(std::size_t n) : zdt1(n) {}
-    std::size_t dimension() const { return zdt1.dimension(); }
-    std::span<const double> lower() const { return zdt1.lower(); }
-    std::span<const double> upper() const { return zdt1.upper(); }
-    std::size_t objectives() const { return 2; }
-    void evaluate(std::span<const double> x, std::span<double> f) {
-        ++*calls;
-        zdt1.evaluate(x, f);
-    }
-};
-static_assert(pride::MultiObjectiveProblem<CountedZdt1>);
 
 /// One variable in [0, 1]; the k-th evaluation returns the k-th of `values` (two objectives) and
 /// records the point it was given, whatever the point: the replacements then follow from the
@@ -61,12 +48,6 @@ struct Scripted {
     }
 };
 static_assert(pride::MultiObjectiveProblem<Scripted>);
-
-pride::Termination evaluations(std::int64_t n) {
-    pride::Termination t;
-    t.max_evaluations = n;
-    return t;
-}
 
 /// The mean and largest distance of a result's values to the analytic front of `name`.
 std::pair<double, double> distances(const char* name, const Matrix& f) {

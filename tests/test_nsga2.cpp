@@ -11,34 +11,15 @@
 #include "algorithms/nsga2.hpp"
 #include "framework/error.hpp"
 #include "problems/multiobjective/zdt.hpp"
+#include "tests/mo_support.hpp"
 #include "tests/test_support.hpp"
 
 namespace {
 
 using Catch::Matchers::Contains;
+using pride::test::CountedZdt1;
+using pride::test::evaluations;
 using pride::test::input_error_message;
-
-/// ZDT1 (problems/multiobjective/zdt.hpp) whose calls are counted (copies share the counter).
-struct CountedZdt1 {
-    pride::multiobjective::Zdt1 zdt1;
-    std::shared_ptr<std::int64_t> calls = std::make_shared<std::int64_t>(0);
-    explicit CountedZdt1(std::size_t n) : zdt1(n) {}
-    std::size_t dimension() const { return zdt1.dimension(); }
-    std::span<const double> lower() const { return zdt1.lower(); }
-    std::span<const double> upper() const { return zdt1.upper(); }
-    std::size_t objectives() const { return 2; }
-    void evaluate(std::span<const double> x, std::span<double> f) {
-        ++*calls;
-        zdt1.evaluate(x, f);
-    }
-};
-static_assert(pride::MultiObjectiveProblem<CountedZdt1>);
-
-pride::Termination evaluations(std::int64_t n) {
-    pride::Termination t;
-    t.max_evaluations = n;
-    return t;
-}
 
 }  // namespace
 

@@ -13,18 +13,15 @@
 #include "framework/pareto/reference_directions.hpp"
 #include "problems/multiobjective/dtlz.hpp"
 #include "problems/multiobjective/fronts.hpp"
+#include "tests/mo_support.hpp"
 #include "tests/test_support.hpp"
 
 namespace {
 
 using Catch::Matchers::Contains;
+using pride::test::CountedZdt1;
+using pride::test::evaluations;
 using pride::test::input_error_message;
-
-pride::Termination evaluations(std::int64_t n) {
-    pride::Termination t;
-    t.max_evaluations = n;
-    return t;
-}
 
 }  // namespace
 
