@@ -31,6 +31,9 @@
 
 namespace {
 
+using pride::test::angle_between;
+using pride::test::w_of_degrees;
+
 using namespace pride;
 using grid::Cell;
 using grid::ClearanceParams;
@@ -122,18 +125,6 @@ std::set<Key> non_dominated(const std::vector<Cost>& costs, const Criteria& c) {
         if (!dominated) out.insert(key_of(x, c));
     }
     return out;
-}
-
-double angle_between(int ax, int ay, int bx, int by) {
-    const double c = (ax * bx + ay * by) / (std::hypot(ax, ay) * std::hypot(bx, by));
-    return std::round(std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.14159265358979323846);
-}
-
-int w_of_degrees(double theta) {
-    if (theta < 1e-9) return 0;
-    if (theta < 90 - 1e-9) return 10;
-    if (theta < 90 + 1e-9) return 20;
-    return 50;
 }
 
 /// Every simple path from s to g, by depth-first search, with the cell costs `costs`.

@@ -30,6 +30,9 @@
 
 namespace {
 
+using pride::test::angle_between;
+using pride::test::w_of_degrees;
+
 using namespace pride;
 using grid::Cell;
 using grid::Criteria;
@@ -56,20 +59,6 @@ bool weakly_dominates(const Cost& a, const Cost& b, const Criteria& c) {
 using Key = std::tuple<long long, int, int>;  // length * 1e6 rounded, turns, angle (unchosen: 0)
 Key key_of(const Cost& x, const Criteria& c) {
     return {c.length ? std::llround(x.length() * 1e6L) : 0, c.turns ? x.turns : 0, c.angle_penalty ? x.angle : 0};
-}
-
-/// The angle between two step vectors in degrees, rounded to the nearest whole degree (the
-/// arc cosine of 2 / (sqrt 2 sqrt 2) is not exactly 0 in floating point).
-double angle_between(int ax, int ay, int bx, int by) {
-    const double c = (ax * bx + ay * by) / (std::hypot(ax, ay) * std::hypot(bx, by));
-    return std::round(std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.14159265358979323846);
-}
-
-int w_of_degrees(double theta) {
-    if (theta < 1e-9) return 0;
-    if (theta < 90 - 1e-9) return 10;
-    if (theta < 90 + 1e-9) return 20;
-    return 50;
 }
 
 struct Brute {
