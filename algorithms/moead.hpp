@@ -241,8 +241,10 @@ struct Moead {
     template <MultiObjectiveProblem P, class O = NoObserver>
     MultiObjectiveResult run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
         validate();
-        termination.validate(name());
-        const std::size_t m = problem.objectives();
+        auto start = start_multiobjective_run(name(), problem, termination, seed);
+        const std::size_t m = start.objectives;
+        Rng& rng = start.rng;
+        MultiObjectiveRunState& state = start.state;
         const std::size_t h = lattice_divisions(m);
         const Matrix lambda = pareto::simplex_lattice(m, h);
         const auto n = static_cast<std::size_t>(lambda.cols());
@@ -252,9 +254,6 @@ struct Moead {
         const std::size_t dim = problem.dimension();
         const auto rows = static_cast<Eigen::Index>(dim), mrows = static_cast<Eigen::Index>(m);
         const auto cols = static_cast<Eigen::Index>(n);
-        Rng rng(seed);
-        seed_noise(problem, seed);
-        MultiObjectiveRunState state(termination, m);
         const auto lo = problem.lower(), hi = problem.upper();
 
         // B(i) on the lattice's integer counts H lambda: exact distances, so exact ties.

@@ -150,17 +150,15 @@ struct Nsga2 {
     template <MultiObjectiveProblem P, class O = NoObserver>
     MultiObjectiveResult run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
         validate();
-        termination.validate(name());
-        const std::size_t m = problem.objectives();
-        require(m >= 1, name(), "the problem has no objectives");
+        auto start = start_multiobjective_run(name(), problem, termination, seed);
+        const std::size_t m = start.objectives;
+        Rng& rng = start.rng;
+        MultiObjectiveRunState& state = start.state;
         if constexpr (requires { survival.validate(m, name()); }) survival.validate(m, name());
         const std::size_t dim = problem.dimension();
         const auto n = static_cast<std::size_t>(population);
         const auto rows = static_cast<Eigen::Index>(dim), mrows = static_cast<Eigen::Index>(m);
         const auto cols = static_cast<Eigen::Index>(n);
-        Rng rng(seed);
-        seed_noise(problem, seed);
-        MultiObjectiveRunState state(termination, m);
         const auto lo = problem.lower(), hi = problem.upper();
 
         // R_t = [P_t | Q_t]: parents in the first N columns, children in the last N.

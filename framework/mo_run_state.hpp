@@ -12,8 +12,10 @@
 #include <type_traits>
 #include <vector>
 
+#include "framework/error.hpp"
 #include "framework/multi_objective.hpp"
 #include "framework/problem.hpp"
+#include "framework/random.hpp"
 #include "framework/run_state.hpp"
 #include "framework/termination.hpp"
 
@@ -116,5 +118,24 @@ class MultiObjectiveRunState {
     Matrix batch_;
     bool started_ = false;
 };
+
+/// What every multi-objective run begins with once its algorithm's own parameters are checked: the
+/// stopping rules checked, M (at least 1), the problem's noise seeded, the run's generator and its
+/// evaluation guard.
+struct MultiObjectiveStart {
+    std::size_t objectives;
+    Rng rng;
+    MultiObjectiveRunState state;
+};
+
+template <MultiObjectiveProblem P>
+MultiObjectiveStart start_multiobjective_run(const std::string& who, P& problem, const Termination& termination,
+                                             std::uint64_t seed) {
+    termination.validate(who);
+    const std::size_t m = problem.objectives();
+    require(m >= 1, who, "the problem has no objectives");
+    seed_noise(problem, seed);
+    return {m, Rng(seed), MultiObjectiveRunState(termination, m)};
+}
 
 }  // namespace pride
