@@ -53,6 +53,7 @@
 #include <pagmo/problems/rastrigin.hpp>
 #include <pagmo/problems/rosenbrock.hpp>
 #include <pagmo/problems/schwefel.hpp>
+#include "bench/pagmo_recording.hpp"
 #endif
 
 namespace {
@@ -158,18 +159,6 @@ void bench_problem(const Settings& s, std::int64_t dim) {
 }
 
 #ifdef PRIDE_HAVE_PAGMO
-/// A pagmo problem that records the points it evaluates (for the second, untimed run).
-template <class PagmoProblem>
-struct PagmoRecording {
-    PagmoProblem inner;
-    std::vector<double>* points = nullptr;
-    pagmo::vector_double fitness(const pagmo::vector_double& x) const {
-        points->insert(points->end(), x.begin(), x.end());
-        return inner.fitness(x);
-    }
-    std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const { return inner.get_bounds(); }
-};
-
 /// pagmo's counterparts of the algorithms asked for, in the order of the pairs.
 std::vector<std::string> pagmo_pairs(const std::vector<std::string>& algos) {
     auto asked = [&](std::initializer_list<const char*> names) {
@@ -224,7 +213,8 @@ void bench_pagmo(const Settings& s, std::int64_t dim) {
             const auto [ms, fevals, best] = run(pagmo::problem{PagmoProblem{static_cast<unsigned>(dim)}});
             emit({algo, name, dim, seed, fevals, best, ms});
             points.clear();
-            run(pagmo::problem{PagmoRecording<PagmoProblem>{PagmoProblem{static_cast<unsigned>(dim)}, &points}});
+            run(pagmo::problem{
+                pride::bench::PagmoRecording<PagmoProblem>{PagmoProblem{static_cast<unsigned>(dim)}, &points}});
             emit({algo + "/bare", name, dim, seed, fevals, std::nan(""),
                   bare_ms(f, points, f.dimension(), static_cast<std::size_t>(s.pop))});
         }

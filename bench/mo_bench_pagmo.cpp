@@ -13,21 +13,10 @@
 #include <vector>
 
 #include "bench/mo_bench.hpp"
+#include "bench/pagmo_recording.hpp"
 
 namespace pride::mo_bench {
 namespace {
-
-template <class PagmoProblem>
-struct PagmoRecording {
-    PagmoProblem inner;
-    std::vector<double>* points = nullptr;
-    pagmo::vector_double fitness(const pagmo::vector_double& x) const {
-        points->insert(points->end(), x.begin(), x.end());
-        return inner.fitness(x);
-    }
-    std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const { return inner.get_bounds(); }
-    pagmo::vector_double::size_type get_nobj() const { return inner.get_nobj(); }
-};
 
 /// pagmo's nsga2 (population 100) or moead (grid weights: its population is the lattice's size,
 /// 100 at M = 2, 91 at M = 3, as pride's moead takes) with pride's settings, the same budget.
@@ -53,7 +42,7 @@ void bench_pagmo(const Settings& s, const std::string& algo, const std::string& 
         };
         const auto [ms, population] = run(pagmo::problem{problem});
         points.clear();
-        (void)run(pagmo::problem{PagmoRecording<PagmoProblem>{problem, &points}});
+        (void)run(pagmo::problem{bench::PagmoRecording<PagmoProblem>{problem, &points}});
         const double bare = bare_ms(
             [&](const double* x) {
                 const auto f = problem.fitness(pagmo::vector_double(x, x + dim));
