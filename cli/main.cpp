@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/export.hpp"
 #include "cli/flags.hpp"
+#include "cli/front.hpp"
 #include "cli/grid_commands.hpp"
 #include "cli/pareto.hpp"
 #include "cli/report.hpp"
@@ -77,9 +78,13 @@ int run_main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("pride ") + PRIDE_VERSION, "print the version and exit");
 
     // The algorithm names of the help texts, from the registry.
-    std::string box_names, all_names;
+    std::string box_names, all_names, mo_names;
     for (const auto& a : pride::engine::algorithms().entries()) {
         if (a.name.find(':') != std::string::npos) continue;
+        if (a.multiobjective()) {
+            mo_names += (mo_names.empty() ? "" : ", ") + a.name;
+            continue;
+        }
         all_names += (all_names.empty() ? "" : ", ") + a.name;
         if (a.run_box) box_names += (box_names.empty() ? "" : ", ") + a.name;
     }
@@ -183,6 +188,44 @@ int run_main(int argc, char** argv) {
     pareto_cmd->add_option("--png", pareto.png, "draw the map and every path of the front to this PNG file")
         ->check(a_path());
 
+    FrontOptions front;
+    auto* front_cmd = app.add_subcommand(
+        "front", "one run of a multi-objective algorithm (ZDT, DTLZ, or a grid with several criteria): its front");
+    front_cmd->add_option("--algo", front.algo, mo_names)->required();
+    front_cmd->add_option("--problem", front.problem, "zdt1, zdt2, zdt3, zdt4, zdt6 or dtlz1-dtlz7 (or --map)");
+    front_cmd->add_option("--dim", front.dim, "number of variables n (default: the paper's)")
+        ->check(integer_in(1, max_count));
+    front_cmd->add_option("--map", front.map, "a grid: Moving AI .map or 0/1 matrix file")->check(a_path());
+    front_cmd->add_option("--start", front.start, "grids: start cell X,Y");
+    front_cmd->add_option("--goal", front.goal, "grids: goal cell X,Y");
+    front_cmd->add_option("--objectives", front.objectives,
+                          "DTLZ: the number of objectives M (default 3); grids: two to four of length, turns, angle, "
+                          "clearance (default length,turns)");
+    front_cmd->add_option("--encoding", front.encoding, "grids: line (default) or free");
+    front_cmd->add_option("--connector", front.connector, "grids: repair (default) or penalty");
+    front_cmd->add_option("--waypoints", front.waypoints, "waypoints of the free encoding (default 3)")
+        ->check(integer_in(1, 1000));
+    front_cmd->add_option("--inflate", front.inflate, "obstacle inflation radius in cells (default 0)")
+        ->check(integer_in(0, 1000));
+    front_cmd->add_flag("--corner-cutting", front.corner_cutting, "allow diagonal steps past a blocked corner");
+    auto* front_evals =
+        front_cmd->add_option("--evals", front.evals, "evaluation budget (default 10000 * n; grids: 50 iterations)")
+            ->check(integer_in(1, max_count));
+    front_cmd->add_option("--iters", front.iters, "iteration limit")
+        ->excludes(front_evals)
+        ->check(integer_in(0, max_count));
+    front_cmd->add_option("--wall-ms", front.wall_ms, "stop after this many milliseconds")->check(finite_in());
+    front_cmd->add_option("--pop", front.pop, "population size")->check(integer_in(1, max_count));
+    front_cmd->add_option("--seed", front.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
+    front_cmd->add_option("--param", front.params, "algorithm parameter NAME=VALUE (repeatable)");
+    front_cmd->add_flag("--no-reference", front.no_reference,
+                        "skip the reference front and the indicators (a grid's exact front can be costly)");
+    front_cmd->add_flag("--json", front.json, "print one JSON object");
+    front_cmd->add_option("--svg", front.svg, "grids: draw the map and the front's paths to this SVG file")
+        ->check(a_path());
+    front_cmd->add_option("--png", front.png, "grids: draw the map and the front's paths to this PNG file")
+        ->check(a_path());
+
     ScenOptions scen;
     auto* scen_cmd = app.add_subcommand("scen", "solve every line of a Moving AI scenario file with A* and compare");
     scen_cmd->add_option("file", scen.file, "the .scen file")->required()->check(a_path());
@@ -263,7 +306,7 @@ int run_main(int argc, char** argv) {
         if (argc > 1 && argv[1][0] != '-' && !known)
             throw pride::InputError(
                 std::string("unknown subcommand '") + argv[1] +
-                "' (expected run, eval, list, path, pareto, scen, roughset, bench, report, merge or export)");
+                "' (expected run, eval, list, path, pareto, front, scen, roughset, bench, report, merge or export)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
@@ -275,6 +318,7 @@ int run_main(int argc, char** argv) {
         if (*path_cmd) return path_command(path, std::cout);
         if (*scen_cmd) return scen_command(scen, std::cout);
         if (*pareto_cmd) return pareto_command(pareto, std::cout);
+        if (*front_cmd) return front_command(front, std::cout);
         if (*roughset_cmd) return roughset_command(roughset, std::cout);
         if (*bench_cmd) return bench_command(bench, std::cout);
         if (*report_cmd) return report_command(report, std::cout);

@@ -14,6 +14,7 @@ std::vector<std::string> AlgorithmEntry::spaces() const {
     if (run_box) out.emplace_back("box");
     if (run_chain) out.emplace_back("chain");
     if (solve_grid) out.emplace_back("grid");
+    if (run_multiobjective) out.emplace_back("multi-objective");
     return out;
 }
 
@@ -33,8 +34,10 @@ const ParamSpec* AlgorithmEntry::param(std::string_view wanted) const {
 void AlgorithmRegistry::add(AlgorithmEntry entry) {
     if (entry.name.empty()) throw std::logic_error("an algorithm is registered without a name");
     if (find(entry.name)) throw std::logic_error("algorithm '" + entry.name + "' is registered twice");
-    if (!entry.run_box && !entry.run_chain && !entry.solve_grid)
+    if (!entry.run_box && !entry.run_chain && !entry.solve_grid && !entry.run_multiobjective)
         throw std::logic_error("algorithm '" + entry.name + "' is registered without a runner");
+    if (entry.run_multiobjective && (entry.run_box || entry.run_chain || entry.solve_grid))
+        throw std::logic_error("algorithm '" + entry.name + "' is multi-objective and has another runner");
     // How it plans on a grid, the same three names for every algorithm that plans through an
     // encoding (none of them has a default: the run's value is the problem's, else the native one).
     if (entry.run_box || entry.run_chain) {

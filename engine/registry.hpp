@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine/params.hpp"
+#include "framework/mo_run_state.hpp"
 #include "framework/observer.hpp"
 #include "framework/result.hpp"
 #include "framework/termination.hpp"
@@ -26,6 +27,7 @@ namespace pride::engine {
 struct BoxTarget;    // engine/targets.hpp
 struct ChainTarget;  // engine/targets.hpp
 struct GridTarget;   // engine/targets.hpp
+struct MoTarget;     // engine/mo_targets.hpp
 
 using ChainResult = BasicResult<grid::Path>;
 
@@ -54,6 +56,10 @@ struct AlgorithmEntry {
         run_box_observed;
     /// Runs on cell chains (grids with the chain encoding).
     std::function<ChainResult(const Params&, const ChainTarget&, const Termination&, std::uint64_t seed)> run_chain;
+    /// Runs on a problem of several objectives (engine/multiobjective.hpp): its result is the
+    /// non-dominated set. A multi-objective algorithm has no other runner.
+    std::function<MultiObjectiveResult(const Params&, const MoTarget&, const Termination&, std::uint64_t seed)>
+        run_multiobjective;
     /// Solves a grid as a whole (baselines): no budget, no seed.
     std::function<GridSolution(const GridTarget&)> solve_grid;
     /// Whole-map algorithms that return the exact optimum say so: the objective must have one
@@ -72,13 +78,14 @@ struct AlgorithmEntry {
     /// registry when left empty; whole-map algorithms (A*, exact) plan on the grid itself.
     std::string native_encoding;
 
-    /// "box", "chain", "grid": the spaces it runs on.
+    /// "box", "chain", "grid", "multi-objective": the spaces it runs on.
     std::vector<std::string> spaces() const;
     /// The grid encodings it can plan through: line and free with a box runner, chain with a chain one.
     std::vector<std::string> encodings() const;
     /// False for whole-map planners (A*, exact), which do not evaluate the objective: they have no
     /// evaluation budget, and comparisons at equal evaluations exempt them.
     bool evaluates() const { return !solve_grid; }
+    bool multiobjective() const { return static_cast<bool>(run_multiobjective); }
     const ParamSpec* param(std::string_view name) const;
 };
 

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "engine/multiobjective.hpp"
 #include "engine/registry.hpp"
 #include "engine/targets.hpp"
 #include "framework/error.hpp"
@@ -197,6 +198,8 @@ void prepare_grid(Prepared& out, const GridSpec& g, Objective objective) {
 /// The checks of a continuous problem's size, before any of it is allocated.
 void require_problem_memory(const ContinuousSpec& c) {
     const auto* item = continuous::catalog().find(c.function);
+    require(item != nullptr || !is_multiobjective_problem(c.function), "problem",
+            c.function + " has several objectives: its runs are multi-objective ones (pride front, pride.front)");
     require(item != nullptr, "problem", "unknown problem '" + c.function + "'");
     require(c.dim >= 1 && c.dim <= 1'000'000'000'000'000, "dim",
             "must be an integer in [1, 1000000000000000], got " + std::to_string(c.dim));
@@ -274,6 +277,9 @@ ParamValues effective_params(const AlgorithmEntry& entry, const Prepared& p, con
 
 /// Checks that the algorithm runs on the problem's space; returns the checked parameters.
 Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSpec& a) {
+    require(!entry.multiobjective(), "algo",
+            entry.name + " is a multi-objective algorithm; " + p.name +
+                " has one objective (its problems: zdt1-zdt6, dtlz1-dtlz7, grids with several objectives)");
     const Params params(entry.name, entry.params, effective_params(entry, p, a.params));
     const auto* g = std::get_if<GridSpec>(&p.spec);
     auto refuse_chain_settings = [&](const std::string& space) {

@@ -1,0 +1,153 @@
+#include "cli/front.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <ostream>
+#include <utility>
+
+#include "cli/commands.hpp"
+#include "cli/grid_commands.hpp"
+#include "cli/numbers.hpp"
+#include "cli/output.hpp"
+#include "engine/multiobjective.hpp"
+#include "engine/run.hpp"
+#include "experiment/html/draw.hpp"
+#include "framework/error.hpp"
+
+namespace pride::cli {
+namespace {
+
+engine::MoProblemSpec problem_spec(const FrontOptions& o) {
+    const bool grid = !o.map.empty();
+    require(grid != !o.problem.empty(), "problem", "give either --problem or --map (with --start and --goal)");
+    if (!grid) {
+        require(o.start.empty() && o.goal.empty() && o.encoding.empty() && !o.waypoints && o.inflate == 0 &&
+                    !o.corner_cutting && o.connector == "repair" && o.svg.empty() && o.png.empty(),
+                "problem",
+                o.problem +
+                    " is not a grid: --start, --goal, --encoding, --connector, --waypoints, "
+                    "--inflate, --corner-cutting, --svg and --png are for --map");
+        require(engine::is_multiobjective_problem(o.problem), "problem",
+                "unknown multi-objective problem '" + o.problem +
+                    "' (zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7; single-objective problems run with pride run)");
+        engine::MoBenchmarkSpec s{o.problem, o.dim.value_or(0), 0};
+        if (!o.objectives.empty()) {
+            std::int64_t m = 0;
+            const auto* end = o.objectives.data() + o.objectives.size();
+            const auto [ptr, ec] = std::from_chars(o.objectives.data(), end, m);
+            require(ec == std::errc{} && ptr == end && m >= 1, "objectives",
+                    "expected the number of objectives M of " + o.problem + ", got '" + o.objectives + "'");
+            s.objectives = m;
+        }
+        return s;
+    }
+    require(!o.dim, "dim", "a grid's dimension is its encoding's");
+    require(!o.start.empty() && !o.goal.empty(), "map", "a grid needs --start and --goal");
+    require(!o.waypoints || o.encoding == "free", "waypoints", "only for the free encoding");
+    engine::MoGridSpec s;
+    s.grid.map = engine::load_map(o.map, o.inflate);
+    s.grid.start = parse_cell(o.start, "--start");
+    s.grid.goal = parse_cell(o.goal, "--goal");
+    s.grid.encoding = o.encoding;
+    s.grid.connector = o.connector;
+    s.grid.waypoints = o.waypoints.value_or(3);
+    s.grid.corner_cutting = o.corner_cutting;
+    s.objectives = o.objectives.empty() ? "length,turns" : o.objectives;
+    return s;
+}
+
+std::string row_json(const Matrix& m, Eigen::Index j) {
+    std::vector<double> v(m.col(j).data(), m.col(j).data() + m.rows());
+    return json_array(v);
+}
+
+}  // namespace
+
+int front_command(const FrontOptions& o, std::ostream& out) {
+    const engine::MoProblemSpec spec = problem_spec(o);
+    const engine::MoProblem problem(spec);
+    const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
+    engine::Budget budget;
+    budget.evaluations = o.evals;
+    budget.iterations = o.iters;
+    budget.wall_ms = o.wall_ms;
+    engine::check(algorithm, problem, budget);
+    const engine::MoRunResult r = engine::run(algorithm, problem, budget, o.seed);
+    std::optional<engine::MoQuality> q;
+    if (!o.no_reference) q = engine::quality(problem, r.f);
+
+    const auto names = problem.objective_names();
+    const bool grid = problem.is_grid();
+    std::vector<std::pair<std::string, html::PictureFormat>> pictures;
+    if (!o.svg.empty()) pictures.emplace_back(o.svg, html::PictureFormat::svg);
+    if (!o.png.empty()) pictures.emplace_back(o.png, html::PictureFormat::png);
+    OutputFiles files;  // committed once the front was printed
+    if (grid) {
+        const auto& g = std::get<engine::MoGridSpec>(spec).grid;
+        std::vector<std::string> labels;
+        for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
+            std::string words;
+            for (std::size_t i = 0; i < names.size(); ++i)
+                words += fmt::format("{}{} {:.6g}", i == 0 ? "" : ", ", names[i], r.f(static_cast<Eigen::Index>(i), j));
+            labels.push_back(words);
+        }
+        html::write_pictures(pictures, files, [&](OutputFiles::File& file, html::PictureFormat format) {
+            html::draw_grid_paths(*g.map, g.start, g.goal, r.paths, labels, file, format);
+        });
+    }
+
+    std::string text;
+    const std::string where =
+        grid ? "grid" : fmt::format("{} (n = {}, M = {})", problem.name(), problem.dimension(), problem.objectives());
+    if (o.json) {
+        std::string list, points;
+        for (const auto& n : names) list += (list.empty() ? "" : ", ") + json_string(n);
+        for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
+            points += points.empty() ? "" : ", ";
+            if (grid)
+                points += fmt::format("{{\"f\": {}, \"legal\": {}, \"path\": {}}}", row_json(r.f, j),
+                                      r.feasible[static_cast<std::size_t>(j)] ? "true" : "false",
+                                      json_cells(r.paths[static_cast<std::size_t>(j)]));
+            else
+                points += fmt::format("{{\"f\": {}, \"x\": {}}}", row_json(r.f, j), row_json(r.x, j));
+        }
+        std::string quality = "null";
+        if (q)
+            quality = fmt::format(
+                "{{\"hypervolume\": {}, \"reference_hypervolume\": {}, \"hypervolume_ratio\": {}, \"igd_plus\": {}, "
+                "\"ideal\": {}, \"nadir\": {}, \"reference_point\": 1.1, \"reference_size\": {}{}}}",
+                json_number(q->hypervolume), json_number(q->reference_hypervolume), json_number(q->hypervolume_ratio),
+                json_number(q->igd_plus), json_array(q->ideal), json_array(q->nadir), q->reference_size,
+                q->exact_found ? fmt::format(", \"exact_found\": {}", *q->exact_found) : "");
+        text = fmt::format(
+            "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"objectives\": [{}], \"seed\": {}, \"evaluations\": {}, "
+            "\"iterations\": {}, \"wall_ms\": {}, \"front\": [{}], \"quality\": {}}}\n",
+            json_string(r.algorithm), json_string(problem.name()), problem.dimension(), list, o.seed, r.evaluations,
+            r.iterations, json_number(r.wall_ms), points, quality);
+    } else {
+        text = fmt::format(
+            "algo         {}\nproblem      {}\nseed         {}\nevaluations  {}\niterations   {}\nwall_ms      {:.3f}\n"
+            "points       {} non-dominated\n",
+            r.algorithm, where, o.seed, r.evaluations, r.iterations, r.wall_ms, r.f.cols());
+        if (q) {
+            text += fmt::format(
+                "hypervolume  {:.6g} of the reference front's {:.6g} (ratio {:.4f}; normalised, "
+                "reference point 1.1)\nigd+         {:.6g}\n",
+                q->hypervolume, q->reference_hypervolume, q->hypervolume_ratio, q->igd_plus);
+            if (q->exact_found)
+                text += fmt::format("exact front  {} of its {} points found\n", *q->exact_found, q->reference_size);
+        }
+        for (std::size_t i = 0; i < names.size(); ++i) text += (i == 0 ? "" : " ") + names[i];
+        text += grid ? " legal\n" : "\n";
+        for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
+            for (Eigen::Index i = 0; i < r.f.rows(); ++i)
+                text += fmt::format("{}{:.10g}", i == 0 ? "" : " ", r.f(i, j));
+            text += grid ? (r.feasible[static_cast<std::size_t>(j)] ? " yes\n" : " no\n") : "\n";
+        }
+    }
+    print_then_commit(out, text, files);
+    return 0;
+}
+
+}  // namespace pride::cli

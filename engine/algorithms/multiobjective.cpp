@@ -1,0 +1,175 @@
+// The multi-objective algorithms (issue 28): NSGA-II and NSGA-III (algorithms/nsga2.hpp,
+// nsga3.hpp), MOEA/D (moead.hpp) and SMS-EMOA (smsemoa.hpp). Each runner visits the target once
+// (engine/mo_targets.hpp) and runs typed; the defaults are the papers' (their headers cite them).
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "algorithms/moead.hpp"
+#include "algorithms/nsga2.hpp"
+#include "algorithms/nsga3.hpp"
+#include "algorithms/smsemoa.hpp"
+#include "engine/mo_targets.hpp"
+#include "engine/registry.hpp"
+#include "framework/pareto/reference_directions.hpp"
+
+namespace pride::engine {
+namespace {
+
+/// An entry whose algorithm is configured from the parameters and M (NSGA-III's directions and
+/// MOEA/D's weights depend on it).
+template <class Configure>
+AlgorithmEntry mo_algorithm(std::string name, std::string summary, std::vector<ParamSpec> params, Configure configure) {
+    AlgorithmEntry e;
+    e.name = name;
+    e.family = std::move(name);
+    e.summary = std::move(summary);
+    e.params = std::move(params);
+    e.run_multiobjective = [configure](const Params& p, const MoTarget& target, const Termination& termination,
+                                       std::uint64_t seed) -> MultiObjectiveResult {
+        return std::visit(
+            [&](const auto& problem) -> MultiObjectiveResult {
+                const auto algorithm = configure(p, problem.objectives());
+                return algorithm.run(problem, termination, seed);
+            },
+            target.problem);
+    };
+    return e;
+}
+
+std::vector<ParamSpec> variation_params(double eta_c, double p_c) {
+    return {real("eta_c", eta_c, 0.0, 1000.0, "SBX distribution index"),
+            real("p_c", p_c, 0.0, 1.0, "SBX probability per pair"),
+            real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
+            real("p_m", 0.0, 0.0, 1.0, "mutation probability per variable (default 1/n)").no_default()};
+}
+
+template <class A>
+void configure_variation(A& a, const Params& p) {
+    a.crossover = SbxCrossover{p.real("eta_c"), p.real("p_c")};
+    a.mutation = PolynomialMutation{p.real("eta_m"), p.optional("p_m").value_or(-1.0)};
+}
+
+nsga::Tournament tournament(const Params& p) {
+    return p.choice("tournament") == "code" ? nsga::Tournament::code : nsga::Tournament::paper;
+}
+
+ParamSpec tournament_param() {
+    return choice("tournament", {"paper", "code"}, "paper",
+                  "NSGA-II's binary tournament: by rank then crowding (the paper), or Deb's code's "
+                  "(dominance, then crowding, then a coin)");
+}
+
+/// NSGA-III's reference directions: H = `divisions` (one layer, or two with `inner` > 0), or the
+/// paper's Table I for M = 3, 5, 8, 10, 15 (H = 12; 6; 3 and 2; 3 and 2; 2 and 1) and else the
+/// largest one-layer lattice of at most 100 directions (M = 2: H = 99).
+Matrix nsga3_directions(std::size_t m, std::int64_t divisions, std::int64_t inner) {
+    std::size_t outer = static_cast<std::size_t>(divisions), in = static_cast<std::size_t>(inner);
+    if (divisions == 0) {
+        in = 0;
+        switch (m) {
+            case 3:
+                outer = 12;
+                break;
+            case 5:
+                outer = 6;
+                break;
+            case 8:
+            case 10:
+                outer = 3, in = 2;
+                break;
+            case 15:
+                outer = 2, in = 1;
+                break;
+            default:
+                outer = pareto::simplex_lattice_divisions(m, std::max<std::size_t>(m, 100));
+        }
+    }
+    const std::size_t size =
+        in == 0 ? pareto::simplex_lattice_size(m, outer) : pareto::two_layer_lattice_size(m, outer, in);
+    require(size <= 1'000'000, "nsga3",
+            "the reference directions of M = " + std::to_string(m) + " objectives and H = " + std::to_string(outer) +
+                (in == 0 ? "" : ", " + std::to_string(in)) + " number more than 1000000");
+    return in == 0 ? pareto::simplex_lattice(m, outer) : pareto::two_layer_lattice(m, outer, in);
+}
+
+}  // namespace
+
+void register_multiobjective(AlgorithmRegistry& registry) {
+    auto nsga2_params = std::vector<ParamSpec>{integer("pop", 100, 4, 10'000'000, "population N, a multiple of 4")};
+    for (auto& s : variation_params(20.0, 0.9)) nsga2_params.push_back(std::move(s));
+    nsga2_params.push_back(tournament_param());
+    registry.add(mo_algorithm("nsga2",
+                              "NSGA-II (Deb et al. 2002): non-dominated sorting, crowding, SBX and polynomial mutation",
+                              std::move(nsga2_params), [](const Params& p, std::size_t) {
+                                  Nsga2<> a;
+                                  a.population = p.integer("pop");
+                                  configure_variation(a, p);
+                                  a.tournament = tournament(p);
+                                  return a;
+                              }));
+
+    auto nsga3_params = std::vector<ParamSpec>{
+        integer("pop", 0, 0, 10'000'000,
+                "population N, a multiple of 4 (0: the smallest not below the number of directions)"),
+        integer("divisions", 0, 0, 1'000'000,
+                "H of the reference directions (0: the paper's Table I for M = 3, 5, 8, 10, 15, else at most 100)"),
+        integer("inner_divisions", 0, 0, 1'000'000, "H2 of an inner layer (0: one layer)")};
+    for (auto& s : variation_params(30.0, 1.0)) nsga3_params.push_back(std::move(s));
+    nsga3_params.push_back(tournament_param());
+    registry.add(mo_algorithm(
+        "nsga3", "NSGA-III (Deb and Jain 2014): NSGA-II with niching on reference directions, for M >= 3",
+        std::move(nsga3_params), [](const Params& p, std::size_t m) {
+            require(p.integer("inner_divisions") == 0 || p.integer("divisions") > 0, "nsga3",
+                    "inner_divisions needs divisions");
+            Nsga3<> a = make_nsga3(nsga3_directions(m, p.integer("divisions"), p.integer("inner_divisions")));
+            if (p.integer("pop") > 0) a.population = p.integer("pop");
+            configure_variation(a, p);
+            a.tournament = tournament(p);
+            return a;
+        }));
+
+    registry.add(mo_algorithm(
+        "moead", "MOEA/D-DE (Zhang and Li 2007; Li and Zhang 2009): Tchebycheff subproblems and neighbourhoods",
+        {integer("pop", 100, 2, static_cast<std::int64_t>(moead::kMaxSubproblems),
+                 "the most subproblems (the largest lattice that fits), unless divisions is set"),
+         integer("divisions", 0, 0, 1'000'000, "H of the weight lattice (0: from pop)"),
+         integer("neighbours", 20, 2, 1'000'000, "T, the neighbourhood size"),
+         real("delta", 0.9, 0.0, 1.0, "probability that parents come from the neighbourhood"),
+         integer("replacements", 2, 0, 1'000'000, "n_r, the most members a child replaces (0: no limit)"),
+         real("f", 0.5, 0.0, 2.0, "DE's F"), real("cr", 1.0, 0.0, 1.0, "DE's CR"),
+         real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
+         real("p_m", 0.0, 0.0, 1.0, "mutation probability per variable (default 1/n)").no_default(),
+         choice("order", {"in_order", "shuffled"}, "in_order", "the order of the subproblems in a generation")},
+        [](const Params& p, std::size_t) {
+            Moead<> a;
+            a.population = p.integer("pop");
+            a.divisions = p.integer("divisions");
+            a.neighbours = p.integer("neighbours");
+            a.delta = p.real("delta");
+            a.replacements = p.integer("replacements");
+            a.reproduction.f = p.real("f");
+            a.reproduction.cr = p.real("cr");
+            a.reproduction.mutation = PolynomialMutation{p.real("eta_m"), p.optional("p_m").value_or(-1.0)};
+            a.order = p.choice("order") == "shuffled" ? moead::Order::shuffled : moead::Order::in_order;
+            return a;
+        }));
+
+    auto sms_params = std::vector<ParamSpec>{integer("pop", 100, 2, 10'000'000, "population mu")};
+    for (auto& s : variation_params(20.0, 0.9)) sms_params.push_back(std::move(s));
+    sms_params.push_back(
+        real("reference_offset", 1.0, 0.0, 1e300, "the reference point: the worst front's worst values plus this")
+            .open_below());
+    registry.add(mo_algorithm(
+        "smsemoa", "SMS-EMOA (Beume et al. 2007): steady state, the least exact hypervolume contribution leaves",
+        std::move(sms_params), [](const Params& p, std::size_t) {
+            SmsEmoa<> a;
+            a.population = p.integer("pop");
+            configure_variation(a, p);
+            a.reference_offset = p.real("reference_offset");
+            return a;
+        }));
+}
+
+}  // namespace pride::engine

@@ -1,0 +1,305 @@
+#include "engine/multiobjective.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+
+#include "engine/mo_targets.hpp"
+#include "engine/registry.hpp"
+#include "engine/run.hpp"
+#include "framework/error.hpp"
+#include "framework/memory.hpp"
+#include "framework/pareto/dominance.hpp"
+#include "framework/pareto/hypervolume.hpp"
+#include "framework/pareto/indicators.hpp"
+#include "problems/grid/pareto.hpp"
+
+namespace pride::engine {
+
+struct MoPrepared {
+    MoProblemSpec spec;
+    std::string name;
+    std::vector<std::string> objective_names;
+    std::optional<MoTarget> target;
+    // The reference front, made at first use and shared by the problem's copies.
+    mutable std::once_flag front_once;
+    mutable Matrix front;
+    mutable std::vector<grid::Path> front_paths;
+    mutable std::optional<InputError> front_error;
+    grid::Criteria criteria{};                            // grids
+    std::shared_ptr<const grid::MapClearance> clearance;  // grids with clearance
+};
+
+bool is_multiobjective_problem(const std::string& name) {
+    return multiobjective::find_problem(name) != nullptr;
+}
+
+namespace {
+
+std::int64_t checked_count(std::int64_t v, std::int64_t lo, std::int64_t hi, const char* where) {
+    require(v >= lo && v <= hi, where, fmt::format("must be an integer in [{}, {}], got {}", lo, hi, v));
+    return v;
+}
+
+void prepare_benchmark(MoPrepared& out, const MoBenchmarkSpec& s) {
+    checked_count(s.dim, 0, static_cast<std::int64_t>(multiobjective::kMaxVariables), "dim");
+    checked_count(s.objectives, 0, static_cast<std::int64_t>(multiobjective::kMaxObjectives), "objectives");
+    multiobjective::Benchmark b(s.problem, static_cast<std::size_t>(s.dim), static_cast<std::size_t>(s.objectives));
+    out.name = std::string(b.name());
+    for (std::size_t i = 1; i <= b.objectives(); ++i) out.objective_names.push_back(fmt::format("f{}", i));
+    out.target = MoTarget{std::move(b)};
+}
+
+void prepare_grid(MoPrepared& out, const MoGridSpec& s) {
+    const GridSpec& g = s.grid;
+    check_grid_names(g);
+    require(g.map != nullptr, "map", "no map given");
+    require(g.objective == "cells" && g.weights.empty() && !g.lambda && !g.path_objective, "objective",
+            "a multi-objective grid problem takes its criteria from objectives, not a single objective");
+    require(!g.oracle, "oracle", "a multi-objective grid problem's reference is its exact front");
+    require(g.encoding.empty() || g.encoding == "line" || g.encoding == "free", "encoding",
+            "multi-objective grid problems are searched through line or free, got " + g.encoding);
+    require(g.init.empty() || g.init == "uniform", "init",
+            "the multi-objective algorithms start from uniform points, got " + g.init);
+    out.criteria = grid::parse_criteria(s.objectives);
+    grid::ClearanceParams cp;
+    cp.bands = static_cast<int>(checked_count(s.clearance_bands, 1, 63, "clearance_bands"));
+    cp.band_width = static_cast<int>(checked_count(s.clearance_width, 1, 1'000'000, "clearance_width"));
+    grid::PathCriteria criteria(*g.map, out.criteria, cp);
+    out.clearance = criteria.clearance();
+    out.objective_names = grid::criteria_names(out.criteria);
+    out.name = "grid";
+    grid::GridProblem<grid::CellsObjective> problem(g.map, g.start, g.goal, {}, g.corner_cutting);
+    const grid::SelectableConnector connector(g.connector == "penalty" ? grid::SelectableConnector::Kind::penalty
+                                                                       : grid::SelectableConnector::Kind::repair);
+    if (g.encoding == "free") {
+        grid::FreeEncoding<grid::SelectableConnector> e(problem, static_cast<int>(g.waypoints), connector);
+        MoGridFree p(problem, std::move(e), std::move(criteria));
+        p.count_calls(g.objective_calls);
+        out.target = MoTarget{std::move(p)};
+    } else {
+        grid::LineEncoding<grid::SelectableConnector> e(problem, connector);
+        MoGridLine p(problem, std::move(e), std::move(criteria));
+        p.count_calls(g.objective_calls);
+        out.target = MoTarget{std::move(p)};
+    }
+}
+
+void prepare_callback(MoPrepared& out, const MoCallbackSpec& s) {
+    require(!s.lower.empty(), "bounds", "the box has no coordinate");
+    require(s.lower.size() == s.upper.size(), "bounds",
+            fmt::format("lower has {} coordinates, upper {}", s.lower.size(), s.upper.size()));
+    for (std::size_t i = 0; i < s.lower.size(); ++i)
+        require(std::isfinite(s.lower[i]) && std::isfinite(s.upper[i]) && s.lower[i] <= s.upper[i], "bounds",
+                fmt::format("coordinate {} must have finite bounds with lower <= upper", i));
+    checked_count(s.objectives, 2, static_cast<std::int64_t>(multiobjective::kMaxObjectives), "objectives");
+    require(static_cast<bool>(s.scalar) || static_cast<bool>(s.batch), "function", "no function given");
+    out.name = s.name;
+    for (std::int64_t i = 1; i <= s.objectives; ++i) out.objective_names.push_back(fmt::format("f{}", i));
+    out.target = MoTarget{
+        MoCallbackProblem(s.name, s.lower, s.upper, static_cast<std::size_t>(s.objectives), s.scalar, s.batch)};
+}
+
+/// The grid's exact front over the same criteria (ParetoSearch within the machine's memory).
+void exact_front(const MoPrepared& p) {
+    const auto& s = std::get<MoGridSpec>(p.spec);
+    const grid::GridMap& map = *s.grid.map;
+    grid::ParetoOptions options;
+    options.corner_cutting = s.grid.corner_cutting;
+    options.max_labels = grid::label_limit(map.size(), available_memory(), map.name());
+    const grid::MapClearance clearance = p.clearance ? *p.clearance : grid::MapClearance(map);
+    const auto front = grid::pareto_front(map, clearance, s.grid.start, s.grid.goal, p.criteria, options);
+    const auto m = static_cast<Eigen::Index>(p.criteria.count());
+    p.front.resize(m, static_cast<Eigen::Index>(front.size()));
+    for (std::size_t j = 0; j < front.size(); ++j) {
+        const auto& q = front[j];
+        Eigen::Index k = 0;
+        const auto c = static_cast<Eigen::Index>(j);
+        if (p.criteria.length) p.front(k++, c) = q.steps.value();  // as PathCriteria's
+        if (p.criteria.turns) p.front(k++, c) = q.turns;
+        if (p.criteria.angle_penalty) p.front(k++, c) = q.angle_penalty;
+        if (p.criteria.clearance) p.front(k++, c) = q.clearance;
+        p.front_paths.push_back(q.path);
+    }
+}
+
+}  // namespace
+
+MoProblem::MoProblem(const MoProblemSpec& spec) : prepared_(std::make_shared<MoPrepared>()) {
+    prepared_->spec = spec;
+    if (const auto* b = std::get_if<MoBenchmarkSpec>(&spec))
+        prepare_benchmark(*prepared_, *b);
+    else if (const auto* g = std::get_if<MoGridSpec>(&spec))
+        prepare_grid(*prepared_, *g);
+    else
+        prepare_callback(*prepared_, std::get<MoCallbackSpec>(spec));
+}
+
+std::string MoProblem::name() const {
+    return prepared_->name;
+}
+bool MoProblem::is_grid() const {
+    return std::holds_alternative<MoGridSpec>(prepared_->spec);
+}
+std::size_t MoProblem::dimension() const {
+    return std::visit([](const auto& p) { return p.dimension(); }, prepared_->target->problem);
+}
+std::size_t MoProblem::objectives() const {
+    return prepared_->objective_names.size();
+}
+std::vector<std::string> MoProblem::objective_names() const {
+    return prepared_->objective_names;
+}
+
+const Matrix& MoProblem::reference_front(std::size_t points) const {
+    const MoPrepared& p = *prepared_;
+    require(!std::holds_alternative<MoCallbackSpec>(p.spec), "problem",
+            p.name + " is a user's function: it has no reference front");
+    std::call_once(p.front_once, [&] {
+        try {
+            if (const auto* b = std::get_if<multiobjective::Benchmark>(&p.target->problem))
+                p.front = b->reference_front(points);
+            else
+                exact_front(p);
+        } catch (const InputError& e) {
+            p.front_error = e;
+        }
+    });
+    if (p.front_error) throw *p.front_error;
+    return p.front;
+}
+
+const std::vector<grid::Path>& MoProblem::reference_paths() const {
+    reference_front();
+    return prepared_->front_paths;
+}
+
+namespace {
+
+const AlgorithmEntry& multiobjective_entry(const AlgorithmSpec& algorithm, const MoProblem& problem) {
+    const AlgorithmEntry& entry = algorithms().at(algorithm.name);
+    if (!entry.multiobjective()) {
+        std::string names;
+        for (const auto& e : algorithms().entries())
+            if (e.multiobjective()) names += (names.empty() ? "" : ", ") + e.name;
+        throw InputError("algo", entry.name + " optimises one objective; " + problem.name() + " has " +
+                                     std::to_string(problem.objectives()) + " (multi-objective algorithms: " + names +
+                                     ")");
+    }
+    return entry;
+}
+
+Termination mo_termination(const MoProblem& problem, const Budget& budget) {
+    require(!budget.target, "target", "a multi-objective run has no single value to reach");
+    require(budget.recorded_targets.empty() && budget.recorded_evaluations.empty(), "budget",
+            "multi-objective runs record no targets or checkpoints");
+    require(budget.threads == 1, "threads", "multi-objective runs evaluate on one thread");
+    return budget.termination(problem.dimension(), problem.is_grid());
+}
+
+/// What a run allocates, checked before it does: about six population-sized matrices of points
+/// and of values (parents, children, the merged set, their copies).
+void check_memory(const Params& params, const MoProblem& problem) {
+    const double pop = std::max(100.0, static_cast<double>(params.integer("pop")));
+    const double per = static_cast<double>(problem.dimension() + problem.objectives());
+    require_memory(8.0 * 6.0 * pop * per, "pop",
+                   fmt::format("a population of {} in dimension {}", params.integer("pop"), problem.dimension()));
+}
+
+}  // namespace
+
+void check(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budget& budget) {
+    const AlgorithmEntry& entry = multiobjective_entry(algorithm, problem);
+    const Params params(entry.name, entry.params, algorithm.params);
+    mo_termination(problem, budget).validate(entry.name);
+    check_memory(params, problem);
+}
+
+MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budget& budget, std::uint64_t seed) {
+    const AlgorithmEntry& entry = multiobjective_entry(algorithm, problem);
+    const Params params(entry.name, entry.params, algorithm.params);
+    const Termination termination = mo_termination(problem, budget);
+    check_memory(params, problem);
+    MultiObjectiveResult r = entry.run_multiobjective(params, *problem.prepared().target, termination, seed);
+
+    MoRunResult out;
+    out.algorithm = entry.name;
+    out.evaluations = r.evaluations;
+    out.iterations = r.iterations;
+    out.wall_ms = r.wall_ms;
+    out.history_evaluations = std::move(r.history_evaluations);
+    // Distinct objective vectors only (the first point of each, in the population's order),
+    // listed in lexicographic order of their objectives.
+    auto keep = pareto::nondominated(r.f);
+    std::stable_sort(keep.begin(), keep.end(), [&](std::size_t a, std::size_t b) {
+        return pareto::detail::lexicographically_before(r.f, static_cast<Eigen::Index>(a),
+                                                        static_cast<Eigen::Index>(b));
+    });
+    out.f.resize(r.f.rows(), static_cast<Eigen::Index>(keep.size()));
+    out.x.resize(r.x.rows(), static_cast<Eigen::Index>(keep.size()));
+    for (std::size_t k = 0; k < keep.size(); ++k) {
+        out.f.col(static_cast<Eigen::Index>(k)) = r.f.col(static_cast<Eigen::Index>(keep[k]));
+        out.x.col(static_cast<Eigen::Index>(k)) = r.x.col(static_cast<Eigen::Index>(keep[k]));
+    }
+    if (problem.is_grid()) {
+        std::visit(
+            [&](const auto& target) {
+                using T = std::decay_t<decltype(target)>;
+                if constexpr (std::is_same_v<T, MoGridLine> || std::is_same_v<T, MoGridFree>) {
+                    T decoder = target;
+                    for (Eigen::Index j = 0; j < out.x.cols(); ++j) {
+                        auto [path, legal] = decoder.path(column(std::as_const(out.x), j));
+                        out.paths.push_back(std::move(path));
+                        out.feasible.push_back(legal ? 1 : 0);
+                    }
+                }
+            },
+            problem.prepared().target->problem);
+    }
+    return out;
+}
+
+MoQuality quality(const MoProblem& problem, const Matrix& f) {
+    const Matrix& front = problem.reference_front();
+    require(front.cols() > 0, "problem", "the reference front is empty (the goal cannot be reached)");
+    require(f.rows() == front.rows(), "front",
+            fmt::format("the set has {} objectives, the problem {}", f.rows(), front.rows()));
+    MoQuality q;
+    const auto m = front.rows();
+    const Eigen::VectorXd ideal = front.rowwise().minCoeff(), nadir = front.rowwise().maxCoeff();
+    Eigen::VectorXd range = nadir - ideal;
+    for (Eigen::Index i = 0; i < m; ++i)
+        if (!(range[i] > 0.0)) range[i] = 1.0;
+    const auto normalise = [&](const Matrix& a) {
+        return Matrix((a.colwise() - ideal).array().colwise() / range.array());
+    };
+    const Matrix nf = normalise(front), ns = normalise(f);
+    const std::vector<double> ref(static_cast<std::size_t>(m), 1.1);
+    q.ideal.assign(ideal.data(), ideal.data() + m);
+    q.nadir.assign(nadir.data(), nadir.data() + m);
+    q.reference_size = front.cols();
+    q.reference_hypervolume = pareto::hypervolume(nf, ref);
+    if (f.cols() > 0) {
+        q.hypervolume = pareto::hypervolume(ns, ref);
+        q.igd_plus = pareto::igd_plus(ns, nf);
+    } else {
+        q.igd_plus = std::numeric_limits<double>::infinity();
+    }
+    q.hypervolume_ratio = q.reference_hypervolume > 0.0 ? q.hypervolume / q.reference_hypervolume : 0.0;
+    if (problem.is_grid()) {
+        std::int64_t found = 0;
+        for (Eigen::Index j = 0; j < front.cols(); ++j)
+            for (Eigen::Index k = 0; k < f.cols(); ++k)
+                if (f.col(k) == front.col(j)) {
+                    ++found;
+                    break;
+                }
+        q.exact_found = found;
+    }
+    return q;
+}
+
+}  // namespace pride::engine
