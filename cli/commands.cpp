@@ -16,6 +16,7 @@
 #include "engine/run.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
+#include "problems/multiobjective/catalog.hpp"
 
 namespace pride::cli {
 
@@ -218,6 +219,10 @@ int list_command(ListFormat format, std::ostream& out) {
                                                     : " (dim >= " + std::to_string(item.entry.min_dim) + ")")});
     }
     sections.push_back(problems);
+    Section several{"multiobjective_problems", {}};
+    for (const auto& e : multiobjective::kCatalog)
+        several.items.push_back({std::string(e.name), std::string(e.summary) + " (pride front)"});
+    sections.push_back(several);
     sections.push_back({"encodings", {{"identity", "the genotype is the solution (every continuous problem)"}}});
     for (const auto& e : engine::grid_encodings()) sections.back().items.push_back(e);
     sections.push_back({"connectors", engine::grid_connectors()});
@@ -230,6 +235,7 @@ int list_command(ListFormat format, std::ostream& out) {
         text = markdown_algorithms(algorithms);
         for (auto s : sections) {
             s.title[0] = static_cast<char>(s.title[0] - 'a' + 'A');
+            std::replace(s.title.begin(), s.title.end(), '_', ' ');
             text += fmt::format("\n### {}\n\n| name | what it is |\n|---|---|\n", s.title);
             for (const auto& item : s.items) text += fmt::format("| `{}` | {} |\n", item.name, md_cell(item.summary));
         }

@@ -3,13 +3,35 @@
 #include <algorithm>
 #include <string>
 
+#include "engine/registry.hpp"
 #include "framework/error.hpp"
 
 namespace pride::engine {
 
 AskTell::AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector<double> upper, Budget budget,
-                 std::uint64_t seed) {
+                 std::uint64_t seed, std::int64_t objectives) {
     dimension_ = lower.size();
+    const bool several = algorithms().at(algorithm.name).multiobjective();
+    require(several ? objectives >= 2 : objectives == 1, "objectives",
+            several ? algorithm.name + " is multi-objective: give the number of objectives M >= 2, got " +
+                          std::to_string(objectives)
+                    : algorithm.name + " optimises one objective, got " + std::to_string(objectives));
+    objectives_ = static_cast<std::size_t>(objectives);
+    if (several) {
+        MoCallbackSpec spec;
+        spec.name = "bounds";
+        spec.lower = std::move(lower);
+        spec.upper = std::move(upper);
+        spec.objectives = objectives;
+        spec.batch = [this](MatrixView points, Matrix& values) {
+            exchange(points, std::span<double>(values.data(), static_cast<std::size_t>(values.size())));
+        };
+        MoProblem problem(spec);
+        check(algorithm, problem, budget);
+        worker_ =
+            std::thread([this, algorithm, problem, budget, seed] { work(algorithm, problem, budget, seed, front_); });
+        return;
+    }
     CallbackSpec spec;
     spec.name = "bounds";
     spec.lower = std::move(lower);
@@ -17,7 +39,8 @@ AskTell::AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector
     spec.batch = [this](MatrixView points, std::span<double> values) { exchange(points, values); };
     Problem problem(spec);
     check(algorithm, problem, budget);
-    worker_ = std::thread(&AskTell::work, this, std::move(algorithm), std::move(problem), std::move(budget), seed);
+    worker_ =
+        std::thread([this, algorithm, problem, budget, seed] { work(algorithm, problem, budget, seed, result_); });
 }
 
 AskTell::~AskTell() {
@@ -29,8 +52,9 @@ AskTell::~AskTell() {
     if (worker_.joinable()) worker_.join();
 }
 
-void AskTell::work(AlgorithmSpec algorithm, Problem problem, Budget budget, std::uint64_t seed) {
-    std::optional<RunResult> result;
+template <class P, class R>
+void AskTell::work(AlgorithmSpec algorithm, P problem, Budget budget, std::uint64_t seed, std::optional<R>& out) {
+    std::optional<R> result;
     std::exception_ptr failure;
     try {
         result = run(algorithm, problem, budget, seed);
@@ -40,7 +64,7 @@ void AskTell::work(AlgorithmSpec algorithm, Problem problem, Budget budget, std:
     {
         const std::lock_guard lock(mutex_);
         if (!cancel_) {
-            result_ = std::move(result);
+            out = std::move(result);
             failure_ = failure;
         }
         state_ = State::finished;
@@ -58,6 +82,7 @@ void AskTell::exchange(MatrixView points, std::span<double> values) {
     changed_.notify_all();
     changed_.wait(lock, [&] { return told_ || cancel_; });
     if (cancel_) throw Cancelled{};
+    // M values per point, the point's together: the column of an M x n matrix.
     std::copy(values_.begin(), values_.end(), values.begin());
     state_ = State::running;
 }
@@ -84,9 +109,13 @@ void AskTell::tell(std::span<const double> values) {
         wait_for_run(lock);
         require(state_ != State::finished, "tell", "the run has ended (done is true): nothing more to tell");
         require(asked_, "tell", "no points were asked for: call ask() first");
-        require(values.size() == static_cast<std::size_t>(pending_.cols()), "tell",
-                "expected " + std::to_string(pending_.cols()) + " values, one per point asked for, got " +
-                    std::to_string(values.size()));
+        const auto expected = static_cast<std::size_t>(pending_.cols()) * objectives_;
+        require(values.size() == expected, "tell",
+                objectives_ == 1 ? "expected " + std::to_string(pending_.cols()) +
+                                       " values, one per point asked for, got " + std::to_string(values.size())
+                                 : "expected " + std::to_string(pending_.cols()) + " x " + std::to_string(objectives_) +
+                                       " values, " + std::to_string(objectives_) + " per point asked for, got " +
+                                       std::to_string(values.size()));
         values_.assign(values.begin(), values.end());
         told_ = true;
         asked_ = false;
@@ -101,13 +130,30 @@ bool AskTell::done() {
     return state_ == State::finished;
 }
 
-const RunResult& AskTell::result() {
+void AskTell::wait_for_result(bool ready) {
     std::unique_lock lock(mutex_);
     wait_for_run(lock);
     if (failure_) std::rethrow_exception(failure_);
-    require(state_ == State::finished && result_.has_value(), "result",
+    require(state_ == State::finished && ready, "result",
+            "the run has not ended yet: tell the values of every batch until done is true");
+}
+
+const RunResult& AskTell::result() {
+    require(objectives_ == 1, "result", "a multi-objective run's result is its front (front_result)");
+    wait_for_result(true);
+    const std::lock_guard lock(mutex_);
+    require(result_.has_value(), "result",
             "the run has not ended yet: tell the values of every batch until done is true");
     return *result_;
+}
+
+const MoRunResult& AskTell::front_result() {
+    require(objectives_ > 1, "result", "a single-objective run has no front (result)");
+    wait_for_result(true);
+    const std::lock_guard lock(mutex_);
+    require(front_.has_value(), "result",
+            "the run has not ended yet: tell the values of every batch until done is true");
+    return *front_;
 }
 
 }  // namespace pride::engine

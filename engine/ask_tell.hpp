@@ -3,7 +3,8 @@
 // its own thread over a callback problem whose batch function hands each batch the evaluation
 // guard asks for (the population, or what is left of the budget) to the caller and waits for its
 // values, so no algorithm is rewritten and the run is the one engine::run gives with the same
-// function: the same seed, the same bits.
+// function: the same seed, the same bits. A multi-objective algorithm is driven the same way, told
+// M values per point.
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -13,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "engine/multiobjective.hpp"
 #include "engine/run.hpp"
 #include "engine/specs.hpp"
 #include "framework/problem.hpp"
@@ -23,19 +25,23 @@ class AskTell {
   public:
     /// Checks everything engine::check does on the box [lower, upper] (InputError naming what is
     /// wrong), then starts the run; it waits at its first batch.
+    /// `objectives` M: 1 for a single-objective algorithm, at least 2 for a multi-objective one
+    /// (engine/multiobjective.hpp; InputError("objectives", ...) otherwise).
     AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector<double> upper, Budget budget,
-            std::uint64_t seed);
+            std::uint64_t seed, std::int64_t objectives = 1);
     /// A run still going is stopped at its pending batch and its thread joined.
     ~AskTell();
     AskTell(const AskTell&) = delete;
     AskTell& operator=(const AskTell&) = delete;
 
     std::size_t dimension() const noexcept { return dimension_; }
+    std::size_t objectives() const noexcept { return objectives_; }
 
     /// The points the run wants evaluated next, one per column (0 columns once the run has
     /// ended); asking again before telling gives the same points. Blocks until the run asks or ends.
     const Matrix& ask();
-    /// The values of the points of the last ask(), one each (NaN: worse than every value).
+    /// The values of the points of the last ask(), one each (NaN: worse than every value); with
+    /// M objectives, M per point, the point's values together (point after point).
     /// InputError("tell", ...) after the end, before an ask, or for a wrong number of values.
     void tell(std::span<const double> values);
     /// True once the run has ended (blocks until the run asks or ends).
@@ -43,9 +49,14 @@ class AskTell {
     /// The run's result; InputError("result", ...) before the end. Rethrows what stopped the run
     /// if it failed.
     const RunResult& result();
+    /// The same for a multi-objective run: its non-dominated set.
+    const MoRunResult& front_result();
 
   private:
-    void work(AlgorithmSpec algorithm, Problem problem, Budget budget, std::uint64_t seed);
+    template <class P, class R>
+    void work(AlgorithmSpec algorithm, P problem, Budget budget, std::uint64_t seed, std::optional<R>& out);
+    /// The state the run ended in, checked for the result (`ready`: the run's kind has one).
+    void wait_for_result(bool ready);
     /// The batch function: publishes `points`, waits for tell() (or cancellation).
     void exchange(MatrixView points, std::span<double> values);
     void wait_for_run(std::unique_lock<std::mutex>& lock);
@@ -54,6 +65,7 @@ class AskTell {
     enum class State { running, asking, finished };
 
     std::size_t dimension_ = 0;
+    std::size_t objectives_ = 1;
     std::mutex mutex_;
     std::condition_variable changed_;
     State state_ = State::running;
@@ -63,6 +75,7 @@ class AskTell {
     std::vector<double> values_;
     bool told_ = false;
     std::optional<RunResult> result_;
+    std::optional<MoRunResult> front_;
     std::exception_ptr failure_;
     std::thread worker_;  // last: started once everything above exists
 };

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <memory>
 
+#include "engine/ask_tell.hpp"
 #include "engine/multiobjective.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
@@ -240,6 +241,49 @@ TEST_CASE("a user's multi-objective function: scalar and batch forms give the sa
     CHECK(a.x.minCoeff() >= -1e-3);
     CHECK(a.x.maxCoeff() <= 2.0 + 1e-3);
     throws_naming([&] { engine::quality(MoProblem(scalar), a.f); }, {"problem", "reference front"});
+}
+
+TEST_CASE("ask and tell drives a multi-objective algorithm: M values per point, the run's own result") {
+    const auto schaffer = [](MatrixView x, Matrix& f) {
+        for (Eigen::Index j = 0; j < x.cols(); ++j) {
+            f(0, j) = x(0, j) * x(0, j);
+            f(1, j) = (x(0, j) - 2.0) * (x(0, j) - 2.0);
+        }
+    };
+    engine::MoCallbackSpec spec;
+    spec.name = "bounds";
+    spec.lower = {-10.0};
+    spec.upper = {10.0};
+    spec.batch = schaffer;
+    const auto direct = engine::run(AlgorithmSpec{"smsemoa", {}}, MoProblem(spec), evaluations(1500), 9);
+    engine::AskTell at(AlgorithmSpec{"smsemoa", {}}, {-10.0}, {10.0}, evaluations(1500), 9, 2);
+    CHECK(at.objectives() == 2);
+    std::int64_t told = 0;
+    while (!at.done()) {
+        const Matrix& x = at.ask();
+        Matrix f(2, x.cols());
+        schaffer(x, f);
+        if (told == 0) {
+            throws_naming([&] { at.tell(std::span<const double>(f.data(), static_cast<std::size_t>(x.cols()))); },
+                          {"tell", "2 per point"});
+        }
+        at.tell(std::span<const double>(f.data(), static_cast<std::size_t>(f.size())));
+        told += x.cols();
+    }
+    CHECK(told == 1500);
+    CHECK(at.front_result().f == direct.f);
+    CHECK(at.front_result().x == direct.x);
+    throws_naming([&] { (void)at.result(); }, {"result", "front_result"});
+    throws_naming(
+        [] {
+            engine::AskTell(AlgorithmSpec{"nsga2", {}}, {0.0}, {1.0}, evaluations(10), 1, 1);
+        },
+        {"objectives", "M >= 2"});
+    throws_naming(
+        [] {
+            engine::AskTell(AlgorithmSpec{"pso", {}}, {0.0}, {1.0}, evaluations(10), 1, 3);
+        },
+        {"objectives", "one objective"});
 }
 
 TEST_CASE("multi-objective errors name what is wrong") {

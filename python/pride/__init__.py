@@ -22,7 +22,7 @@ from ._pride import Grid
 __all__ = [
     "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
     "exact", "pareto", "roughset", "Campaign", "read_store", "report", "hypervolume", "hypervolume_contributions",
-    "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance",
+    "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance", "front", "plan_front",
 ]
 
 
@@ -159,6 +159,42 @@ def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, ta
                                   _bool("vectorized", vectorized), params))
 
 
+def front(algo, problem, *, dim=None, objectives=None, bounds=None, evals=None, iters=None, wall_ms=None, seed=1,
+          vectorized=False, reference=True, **params):
+    """One run of a multi-objective ``algo`` (nsga2, nsga3, moead, smsemoa) on ``problem``: a
+    catalog problem's name (zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7; ``dim`` its number of
+    variables n and ``objectives`` DTLZ's M, both defaulting to the papers') or a Python function
+    with ``bounds=(lower, upper)`` and ``objectives=M``, called as ``f(x)`` returning M values or,
+    with ``vectorized=True``, as ``f(X)`` with X of shape (n, dim) returning an (n, M) array. The
+    result's ``f`` is the non-dominated set found, an (n, M) array (distinct points, in
+    lexicographic order), ``x`` their points (n, dim); ``quality`` (catalog problems, unless
+    ``reference=False``) has the hypervolume, its ratio to the reference front's and IGD+, on
+    objectives normalised by the reference front (docs/multiobjective.md). The same bits as
+    ``pride front`` with the same seed."""
+    return Result(_pride.front(_str("algo", algo), problem, _int("dim", dim), _int("objectives", objectives), bounds,
+                               _int("evals", evals), _int("iters", iters), _real("wall_ms", wall_ms), _seed(seed),
+                               _bool("vectorized", vectorized), _bool("reference", reference), params))
+
+
+def plan_front(grid, start, goal, *, algo="nsga2", objectives="length,turns", encoding="line", connector="repair",
+               waypoints=3, corner_cutting=False, clearance_bands=3, clearance_width=1, evals=None, iters=None,
+               wall_ms=None, seed=1, reference=True, **params):
+    """A multi-objective run on a grid, as ``pride front --map``: ``objectives`` two to four of
+    length, turns, angle and clearance, searched through the ``line`` or ``free`` encoding. The
+    result has ``f`` (n, M), ``paths`` (a list of (k, 2) arrays of (x, y)), ``legal`` (n,) and,
+    unless ``reference=False``, ``quality`` against the exact front (``exact_found``: how many of
+    its points the run found)."""
+    if not isinstance(objectives, str):
+        objectives = ",".join(_str("objectives", o) for o in _list("objectives", objectives))
+    return Result(_pride.plan_front(_grid(grid), start, goal, _str("algo", algo), objectives,
+                                    _str("encoding", encoding), _str("connector", connector),
+                                    _int("waypoints", waypoints, False), _bool("corner_cutting", corner_cutting),
+                                    _int("clearance_bands", clearance_bands, False),
+                                    _int("clearance_width", clearance_width, False), _int("evals", evals),
+                                    _int("iters", iters), _real("wall_ms", wall_ms), _seed(seed),
+                                    _bool("reference", reference), params))
+
+
 def Problem(name, dim=None, *, instance=None, seed=1):
     """A registered continuous problem to evaluate: ``f = pride.Problem("bbob-f10", 10,
     instance=1)``; ``f(x)`` for a point of shape (dim,) gives a float, ``f(X)`` for an (n, dim)
@@ -172,13 +208,15 @@ class Optimizer:
     """Ask and tell: ``X = opt.ask()`` gives the (n, dim) batch the algorithm wants evaluated,
     ``opt.tell(values)`` its n values, until ``opt.done``; then ``opt.result`` as from
     ``minimize``. The run is the one ``minimize`` makes with the same function and seed, bit for
-    bit. Closing (or dropping) an optimizer mid-run stops its run."""
+    bit. Closing (or dropping) an optimizer mid-run stops its run. A multi-objective algorithm
+    (nsga2, nsga3, moead, smsemoa) takes ``objectives=M`` and is told an (n, M) array, a row of M
+    values per point; its ``result`` is the front, as from ``front``."""
 
     def __init__(self, algo, *, bounds, dim=None, evals=None, iters=None, target=None, wall_ms=None, seed=1,
-                 **params):
+                 objectives=None, **params):
         self._run = _pride.Optimizer(_str("algo", algo), bounds, _int("dim", dim), _int("evals", evals),
                                      _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
-                                     _seed(seed), params)
+                                     _seed(seed), _int("objectives", objectives), params)
         self.algo = algo
 
     def ask(self):

@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "engine/multiobjective.hpp"
 #include "engine/run.hpp"
 #include "engine/specs.hpp"
 #include "framework/error.hpp"
@@ -188,6 +189,8 @@ engine::RunResult run_released(const engine::AlgorithmSpec& algorithm, const eng
 py::dict result_dict(const engine::RunResult& r);
 
 py::array_t<double> vector_array(const std::vector<double>& v);
+/// A multi-objective run's result as a dict (front.cpp): f (n, M), x (n, dim), the counts.
+py::dict front_result_dict(const engine::MoRunResult& r, std::size_t objectives);
 py::array_t<int> path_array(const grid::Path& path);
 
 /// A cell (x, y) of integers; `where` names it in messages ("start", "problems[0]: goal").
@@ -204,5 +207,7 @@ void bind_roughset(py::module_& m);
 void bind_campaign(py::module_& m);
 /// pride.hypervolume and the other indicators of framework/pareto/ (pareto.cpp).
 void bind_pareto(py::module_& m);
+/// pride.front and pride.plan_front: multi-objective runs (front.cpp).
+void bind_front(py::module_& m);
 
 }  // namespace pride::python

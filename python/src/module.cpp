@@ -8,6 +8,7 @@
 #include "common.hpp"
 #include "engine/ask_tell.hpp"
 #include "engine/registry.hpp"
+#include "framework/memory.hpp"
 #include "problems/continuous/catalog.hpp"
 
 namespace pride::python {
@@ -169,13 +170,27 @@ class Optimizer {
   public:
     Optimizer(const std::string& algo, const py::object& bounds, std::optional<std::int64_t> dim,
               std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::optional<double> target,
-              std::optional<double> wall_ms, std::uint64_t seed, const py::dict& params) {
+              std::optional<double> wall_ms, std::uint64_t seed, std::optional<std::int64_t> objectives,
+              const py::dict& params) {
         require(!bounds.is_none(), "bounds", "the Optimizer needs bounds=(lower, upper)");
         engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
         const auto b = budget(evals, iters, target, wall_ms);
-        auto [lower, upper] = parse_bounds(bounds, dim, box_check(algorithm, "bounds", b));
+        const engine::AlgorithmEntry& entry = engine::algorithms().at(algo);
+        const std::int64_t m = objectives.value_or(1);
+        if (objectives) require(m >= 1 && m <= 10'000, "objectives", "must be in [1, 10000], got " + std::to_string(m));
+        // A multi-objective run's checks need its M, made by AskTell: here only the box's size.
+        auto [lower, upper] =
+            entry.multiobjective()
+                ? parse_bounds(
+                      bounds, dim,
+                      [m](std::int64_t d) {
+                          require(d >= 1 && d <= 100'000'000, "bounds", "the box must have 1 to 100000000 coordinates");
+                          require_memory(8.0 * (2.0 * static_cast<double>(d) + 600.0 * static_cast<double>(d + m)),
+                                         "bounds", "a box of " + std::to_string(d) + " coordinates");
+                      })
+                : parse_bounds(bounds, dim, box_check(algorithm, "bounds", b));
         py::gil_scoped_release release;
-        run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed);
+        run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed, m);
     }
     ~Optimizer() { close(); }
 
@@ -209,9 +224,14 @@ class Optimizer {
 
     void tell(const py::object& values) {
         const auto v = real_array(values, "tell: values");
-        require(v.ndim() == 1 || (v.ndim() == 2 && v.shape(1) == 1), "tell",
-                "expected a 1-D array of values, one per point asked for, got an array with " +
-                    std::to_string(v.ndim()) + " dimensions");
+        const auto m = static_cast<py::ssize_t>(live().objectives());
+        if (m == 1)
+            require(v.ndim() == 1 || (v.ndim() == 2 && v.shape(1) == 1), "tell",
+                    "expected a 1-D array of values, one per point asked for, got an array with " +
+                        std::to_string(v.ndim()) + " dimensions");
+        else
+            require(v.ndim() == 2 && v.shape(1) == m, "tell",
+                    "expected an (n, " + std::to_string(m) + ") array, a row of M values per point asked for");
         const std::span<const double> values_span(v.data(), static_cast<std::size_t>(v.size()));
         py::gil_scoped_release release;
         live().tell(values_span);
@@ -223,6 +243,14 @@ class Optimizer {
     }
 
     py::dict result() {
+        if (live().objectives() > 1) {
+            const engine::MoRunResult* r = nullptr;
+            {
+                py::gil_scoped_release release;
+                r = &live().front_result();
+            }
+            return front_result_dict(*r, live().objectives());
+        }
         const engine::RunResult* r = nullptr;
         {
             py::gil_scoped_release release;
@@ -656,9 +684,10 @@ PYBIND11_MODULE(_pride, m) {
     py::class_<Optimizer>(m, "Optimizer")
         .def(py::init<const std::string&, const py::object&, std::optional<std::int64_t>, std::optional<std::int64_t>,
                       std::optional<std::int64_t>, std::optional<double>, std::optional<double>, std::uint64_t,
-                      const py::dict&>(),
+                      std::optional<std::int64_t>, const py::dict&>(),
              py::call_guard<Call>(), py::arg("algo"), py::arg("bounds"), py::arg("dim"), py::arg("evals"),
-             py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"), py::arg("params"))
+             py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"), py::arg("objectives"),
+             py::arg("params"))
         .def("ask", &Optimizer::ask, py::call_guard<Call>())
         .def("tell", &Optimizer::tell, py::call_guard<Call>())
         .def("done", &Optimizer::done, py::call_guard<Call>())
@@ -669,4 +698,5 @@ PYBIND11_MODULE(_pride, m) {
     bind_roughset(m);
     bind_campaign(m);
     bind_pareto(m);
+    bind_front(m);
 }

@@ -20,6 +20,10 @@ def f(x):
     return float(x @ x)
 
 
+def f2(x):
+    return [float(x @ x), float((x - 1) @ (x - 1))]
+
+
 def length(cells):
     return float(len(cells))
 
@@ -75,7 +79,16 @@ def api(tmp_path):
                           wall_ms=REAL, seed=SEED, instance=INT, callback=CALLABLE, vectorized=FLAG)),
         "Optimizer": (lambda **o: pride.Optimizer(**{"algo": "pso", "bounds": (-1, 1), "dim": 2, "evals": 20, **o}),
                       dict(algo=TEXT, bounds=BOUNDS, dim=INT, evals=INT, iters=INT, target=REAL, wall_ms=REAL,
-                           seed=SEED)),
+                           seed=SEED, objectives=INT)),
+        "front": (lambda **o: pride.front(**{"algo": "nsga2", "problem": f2, "bounds": (-1, 1), "dim": 2,
+                                             "objectives": 2, "evals": 20, **o}),
+                  dict(algo=TEXT, problem=PROBLEM, dim=INT, objectives=INT, bounds=BOUNDS, evals=INT, iters=INT,
+                       wall_ms=REAL, seed=SEED, vectorized=FLAG, reference=FLAG)),
+        "plan_front": (lambda **o: pride.plan_front(**{"grid": GRID, "start": (0, 0), "goal": (3, 3), "iters": 2, **o}),
+                       dict(grid=GRID_ARG, start=CELL, goal=CELL, algo=TEXT, objectives=OBJECTIVES, encoding=TEXT,
+                            connector=TEXT, waypoints=INT_REQUIRED, corner_cutting=FLAG, clearance_bands=INT_REQUIRED,
+                            clearance_width=INT_REQUIRED, evals=INT, iters=INT, wall_ms=REAL, seed=SEED,
+                            reference=FLAG)),
         "Optimizer.tell": (lambda **o: (lambda x: x.tell(**{"values": np.zeros(len(x.ask())), **o}))(opt()),
                            dict(values=NUMBERS)),
         "Problem": (lambda **o: pride.Problem(**{"name": "sphere", "dim": 2, **o}),

@@ -1,0 +1,123 @@
+"""Multi-objective runs from Python (pride.front, pride.plan_front, the Optimizer told (n, M)
+arrays): the same runs as ``pride front``, exact budgets, the three ways of giving a function
+alike, quality against the reference fronts, and one-line errors."""
+import json
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import pride
+
+PRIDE = os.environ.get("PRIDE_EXE", "")
+MAPS = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "maps")
+
+
+def schaffer(x):
+    return [x[0] ** 2, (x[0] - 2.0) ** 2]
+
+
+def schaffer_rows(X):
+    return np.c_[X[:, 0] ** 2, (X[:, 0] - 2.0) ** 2]
+
+
+def test_a_catalog_run_is_the_command_lines():
+    r = pride.front("nsga2", "zdt1", evals=3000, seed=4)
+    assert r.evaluations == 3000
+    assert r.f.shape[1] == 2 and r.x.shape == (r.f.shape[0], 30)
+    assert r.objectives == ["f1", "f2"]
+    assert np.all(np.diff(r.f[:, 0]) > 0)  # distinct, in lexicographic order, non-dominated
+    assert np.all(np.diff(r.f[:, 1]) < 0)
+    if PRIDE:
+        out = subprocess.run([PRIDE, "front", "--algo", "nsga2", "--problem", "zdt1", "--evals", "3000",
+                              "--seed", "4", "--json"], check=True, capture_output=True, text=True).stdout
+        doc = json.loads(out)
+        assert np.array_equal(np.array([p["f"] for p in doc["front"]]), r.f)
+        assert doc["quality"]["hypervolume"] == r.quality["hypervolume"]
+
+
+def test_every_algorithm_reaches_its_front():
+    for algo, problem, evals, least in (("nsga2", "zdt2", 20000, 0.97), ("smsemoa", "zdt1", 10000, 0.97),
+                                        ("moead", "zdt1", 25000, 0.95), ("nsga3", "dtlz2", 30000, 0.92)):
+        r = pride.front(algo, problem, evals=evals, seed=1)
+        assert least < r.quality["hypervolume_ratio"] <= 1.0 + 1e-9, (algo, problem)
+        assert r.quality["igd_plus"] < 0.05
+        assert r.quality["exact_found"] is None
+    r = pride.front("nsga3", "dtlz1", objectives=5, evals=2000)
+    assert r.f.shape[1] == 5 and r.x.shape[1] == 9  # M + k - 1, k = 5
+    assert pride.front("nsga2", "zdt1", evals=500, reference=False).quality is None
+
+
+def test_scalar_vectorized_and_ask_tell_are_one_run():
+    a = pride.front("nsga2", schaffer, bounds=([-10], [10]), objectives=2, evals=2000, seed=3)
+    b = pride.front("nsga2", schaffer_rows, bounds=([-10], [10]), objectives=2, evals=2000, seed=3, vectorized=True)
+    assert np.array_equal(a.f, b.f) and np.array_equal(a.x, b.x)
+    assert a.quality is None  # a function has no reference front
+    with pride.Optimizer("nsga2", bounds=([-10], [10]), objectives=2, evals=2000, seed=3) as opt:
+        told = 0
+        while not opt.done:
+            X = opt.ask()
+            opt.tell(schaffer_rows(X))
+            told += len(X)
+        assert told == 2000
+        assert np.array_equal(opt.result.f, a.f)
+    # Schaffer's Pareto set is [0, 2].
+    assert a.x.min() > -1e-2 and a.x.max() < 2.0 + 1e-2
+
+
+def test_a_grid_front_holds_legal_paths_scored_as_paths():
+    g = pride.Grid.load(os.path.join(MAPS, "file002-20x20.map"))
+    r = pride.plan_front(g, (0, 0), (19, 19), objectives=["length", "turns", "clearance"], encoding="free",
+                         evals=20000)
+    exact = pride.pareto(g, (0, 0), (19, 19), objectives="length,turns,clearance")
+    assert r.quality["reference_size"] == len(exact)
+    assert r.objectives == ["length", "turns", "clearance"]
+    assert len(r.paths) == len(r.f) == len(r.legal)
+    for f, path, legal in zip(r.f, r.paths, r.legal):
+        assert legal
+        assert tuple(path[0]) == (0, 0) and tuple(path[-1]) == (19, 19)
+        steps = np.abs(np.diff(path, axis=0)).sum(axis=1)
+        assert f[0] == pytest.approx((steps == 1).sum() + (steps == 2).sum() * np.sqrt(2), rel=1e-14)
+    # Every point found is weakly dominated by a point of the exact front.
+    front = np.array([[p["length"], p["turns"], p["clearance"]] for p in exact])
+    for f in r.f:
+        assert np.any(np.all(front <= f + 1e-9, axis=1))
+
+
+def test_errors_are_one_line_and_name_the_argument():
+    with pytest.raises(ValueError, match="^algo: pso optimises one objective"):
+        pride.front("pso", "zdt1")
+    with pytest.raises(ValueError, match="^objectives: a Python function needs objectives=M"):
+        pride.front("nsga2", schaffer, bounds=([0], [1]), evals=100)
+    with pytest.raises(ValueError, match="returned 1 values, expected M = 2"):
+        pride.front("nsga2", lambda x: [1.0], bounds=([0], [1]), objectives=2, evals=100)
+    with pytest.raises(ValueError, match="^vectorized: the function must return an array of shape"):
+        pride.front("nsga2", lambda X: X, bounds=([0], [1]), objectives=2, evals=100, vectorized=True)
+    with pytest.raises(ValueError, match="^zdt1: has 2 objectives"):
+        pride.front("nsga2", "zdt1", objectives=3)
+    with pytest.raises(ValueError, match="^problem: unknown multi-objective problem 'sphere'"):
+        pride.front("nsga2", "sphere")
+    with pytest.raises(ValueError, match="^bounds: only for Python functions"):
+        pride.front("nsga2", "zdt1", bounds=([0], [1]))
+    with pytest.raises(ValueError, match="^objectives: nsga2 is multi-objective"):
+        pride.Optimizer("nsga2", bounds=([0], [1]), evals=100)
+    with pytest.raises(ValueError, match="^objectives: pso optimises one objective"):
+        pride.Optimizer("pso", bounds=([0], [1]), evals=100, objectives=2)
+    with pride.Optimizer("nsga2", bounds=([0], [1]), evals=100, objectives=2) as opt:
+        X = opt.ask()
+        with pytest.raises(ValueError, match=r"^tell: expected an \(n, 2\) array"):
+            opt.tell(np.zeros(len(X)))
+    g = pride.Grid(np.zeros((4, 4), dtype=int))
+    with pytest.raises(ValueError, match="^encoding: multi-objective grid problems are searched through line or free"):
+        pride.plan_front(g, (0, 0), (3, 3), encoding="chain")
+    with pytest.raises(ValueError, match="^objectives: "):
+        pride.plan_front(g, (0, 0), (3, 3), objectives="length")
+
+
+def test_a_users_exception_comes_through_unchanged():
+    def broken(x):
+        raise KeyError("mine")
+
+    with pytest.raises(KeyError, match="mine"):
+        pride.front("nsga2", broken, bounds=([0], [1]), objectives=2, evals=100)
