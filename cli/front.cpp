@@ -13,6 +13,7 @@
 #include "engine/multiobjective.hpp"
 #include "engine/run.hpp"
 #include "experiment/html/draw.hpp"
+#include "experiment/html/figure.hpp"
 #include "framework/error.hpp"
 
 namespace pride::cli {
@@ -95,6 +96,27 @@ int front_command(const FrontOptions& o, std::ostream& out) {
         html::write_pictures(pictures, files, [&](OutputFiles::File& file, html::PictureFormat format) {
             html::draw_grid_paths(*g.map, g.start, g.goal, r.paths, labels, file, format);
         });
+    }
+
+    if (!o.plot.empty()) {
+        // The reference front is drawn even with --no-reference only when it is known already: the
+        // plot's own reason to compute it is the comparison, which --no-reference declines.
+        const auto where = grid ? std::string("grid") : problem.name();
+        html::Figure fig(r.algorithm + " on " + where,
+                         html::Axis{names[0], html::Scale::linear, std::nullopt, std::nullopt},
+                         html::Axis{names[1], html::Scale::linear, std::nullopt, std::nullopt});
+        if (names.size() > 2)
+            fig.subtitle(fmt::format("objectives 1 and 2 of {}: {} and {}", names.size(), names[0], names[1]));
+        const auto row = [](const Matrix& m, Eigen::Index i) {
+            return std::vector<double>(m.row(i).begin(), m.row(i).end());
+        };
+        if (q) {
+            const Matrix& front = problem.reference_front();
+            fig.markers(row(front, 0), row(front, 1), html::Rgb{0.6, 0.6, 0.6},
+                        grid ? "exact front" : "reference front", html::Marker::circle);
+        }
+        fig.markers(row(r.f, 0), row(r.f, 1), html::series_colour(0), r.algorithm, html::Marker::cross);
+        fig.write(files.create(o.plot));
     }
 
     std::string text;

@@ -31,6 +31,7 @@ struct FrontOptions {
     bool json = false;
     bool no_reference = false;  // skip the reference front and the indicators
     std::string svg, png;
+    std::string plot;  // SVG: the set in objective space (the first two objectives), with the reference front
 };
 int front_command(const FrontOptions& o, std::ostream& out);
 

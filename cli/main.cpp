@@ -187,6 +187,10 @@ int run_main(int argc, char** argv) {
         ->check(a_path());
     pareto_cmd->add_option("--png", pareto.png, "draw the map and every path of the front to this PNG file")
         ->check(a_path());
+    pareto_cmd
+        ->add_option("--plot", pareto.plot,
+                     "draw the front in objective space (the first two objectives as given) to this SVG file")
+        ->check(a_path());
 
     FrontOptions front;
     auto* front_cmd = app.add_subcommand(
@@ -224,6 +228,11 @@ int run_main(int argc, char** argv) {
     front_cmd->add_option("--svg", front.svg, "grids: draw the map and the front's paths to this SVG file")
         ->check(a_path());
     front_cmd->add_option("--png", front.png, "grids: draw the map and the front's paths to this PNG file")
+        ->check(a_path());
+    front_cmd
+        ->add_option("--plot", front.plot,
+                     "draw the set in objective space (the first two objectives), with the reference front, to this "
+                     "SVG file")
         ->check(a_path());
 
     ScenOptions scen;

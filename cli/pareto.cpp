@@ -11,6 +11,7 @@
 #include "cli/output.hpp"
 #include "engine/run.hpp"
 #include "experiment/html/draw.hpp"
+#include "experiment/html/figure.hpp"
 #include "framework/error.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/objectives.hpp"
@@ -58,6 +59,23 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
     html::write_pictures(pictures, files, [&](OutputFiles::File& file, html::PictureFormat format) {
         html::draw_grid_paths(*map, start, goal, paths, labels, file, format);
     });
+
+    if (!o.plot.empty()) {
+        const auto value = [](const grid::FrontPoint& p, const std::string& n) -> double {
+            return n == "length" ? p.length : n == "turns" ? p.turns : n == "clearance" ? p.clearance : p.angle_penalty;
+        };
+        std::vector<double> x, y;
+        for (const auto& p : front) {
+            x.push_back(value(p, names[0]));
+            y.push_back(value(p, names[1]));
+        }
+        html::Figure fig("exact Pareto front", html::Axis{names[0], html::Scale::linear, std::nullopt, std::nullopt},
+                         html::Axis{names[1], html::Scale::linear, std::nullopt, std::nullopt});
+        if (names.size() > 2)
+            fig.subtitle(fmt::format("objectives 1 and 2 of {}: {} and {}", names.size(), names[0], names[1]));
+        fig.markers(x, y, html::series_colour(0), fmt::format("{} points", front.size()), html::Marker::circle);
+        fig.write(files.create(o.plot));
+    }
 
     // Clearance (with the default bands) is shown only when asked for, so that the other fronts
     // print as they always did.

@@ -17,6 +17,7 @@ struct ParetoOptions {
     bool json = false;
     std::string svg;
     std::string png;
+    std::string plot;  // SVG: the front in objective space, the first two objectives as given
 };
 int pareto_command(const ParetoOptions& o, std::ostream& out);
 

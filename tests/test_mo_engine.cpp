@@ -373,6 +373,24 @@ TEST_CASE("pride front on a grid reports the exact front's share and draws the p
     }
 }
 
+TEST_CASE("pride front and pride pareto draw the set in objective space") {
+    const test::TempDir dir("pride-front-plot");
+    const auto r = test::run_pride("front --algo nsga2 --problem zdt1 --evals 2000 --plot " + dir.file("f.svg"));
+    REQUIRE(r.status == 0);
+    const std::string svg = test::slurp(dir.file("f.svg"));
+    CHECK(svg.rfind("<?xml", 0) == 0);
+    CHECK(svg.size() > 10000);  // 1000 reference points and the set, as markers
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const auto p = test::run_pride("pareto --map " + map +
+                                   " --start 0,19 --goal 19,0 --objectives turns,length --plot " + dir.file("p.svg"));
+    REQUIRE(p.status == 0);
+    CHECK(test::slurp(dir.file("p.svg")).rfind("<?xml", 0) == 0);
+    // A plot that cannot be written fails the command and leaves nothing.
+    test::expect_input_error("front --algo nsga2 --problem zdt1 --evals 200 --plot " + dir.file("none/f.svg"),
+                             {"f.svg"});
+    CHECK_FALSE(std::filesystem::exists(dir.file("none")));
+}
+
 TEST_CASE("pride front refuses bad input with one line") {
     const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
     test::expect_input_error("front --algo nsga2 --problem sphere", {"sphere", "pride run"});

@@ -1,0 +1,190 @@
+#!/usr/bin/env python3
+"""Regenerates docs/results/multiobjective.md (issue 28) from its runs, or checks it.
+
+    PYTHONPATH=build/python /usr/bin/python3 scripts/multiobjective_page.py run
+        runs every (instance, algorithm, seed) of the page through pride's Python module (the runs
+        `pride front --map` makes) and writes their indicators to
+        docs/results/data/multiobjective-grids.csv, then the page.
+    /usr/bin/python3 scripts/multiobjective_page.py render
+        rewrites the page's generated blocks from docs/results/data/ alone.
+    /usr/bin/python3 scripts/multiobjective_page.py check
+        exits 1 when a generated block differs from what the data give
+        (python/tests/test_multiobjective_page.py does the same under ctest).
+
+The runs: NSGA-II, MOEA/D and SMS-EMOA with their registry defaults (population 100, 100 MOEA/D
+subproblems), through the `free` encoding (three waypoints, repair connector), 20,000 evaluations
+each, seeds 1-15; IQGA (file 002) with its registry defaults on its own weighted objective and
+space (chains, N = 40) at the same 20,000 evaluations. Indicators: engine/multiobjective.hpp's
+(normalised by the exact front; hypervolume ratio with the reference point 1.1; IGD+; exact
+points found). Statistics: results_pages.py's Kruskal-Wallis and two-sided rank-sum tests with
+Holm's correction, checked there against scipy.
+"""
+import csv
+import io
+import math
+import pathlib
+import sys
+
+REPO = pathlib.Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO / "scripts"))
+import results_pages as rp  # noqa: E402
+
+DATA = REPO / "docs" / "results" / "data"
+PAGE = REPO / "docs" / "results" / "multiobjective.md"
+CSV = "multiobjective-grids.csv"
+
+# (id, map file, start, goal): the papers' maps (examples/maps/) corner to corner, and two Moving AI
+# maps with a scenario line each (reference-data/movingai/, the line's start and goal).
+INSTANCES = [
+    ("file002-20x20", "examples/maps/file002-20x20.map", (0, 19), (19, 0)),
+    ("file002-40x40", "examples/maps/file002-40x40.map", (1, 38), (38, 1)),
+    ("file003-50x50", "examples/maps/file003-50x50.map", (0, 49), (49, 0)),
+    ("file003-env3-60x60", "examples/maps/file003-env3-60x60.map", (0, 59), (59, 0)),
+    ("den312d", "reference-data/movingai/den312d.map", (58, 37), (4, 56)),
+]
+MO_ALGOS = ["nsga2", "moead", "smsemoa"]
+SEEDS = range(1, 16)
+EVALS = 20_000
+CRITERIA = {"ltc": "length,turns,clearance", "lta": "length,turns,angle"}
+FIELDS = ["instance", "criteria", "algo", "seed", "evaluations", "hv_ratio", "igd_plus", "found", "front",
+          "points"]
+
+
+def run_all():
+    import pride  # the build's module (PYTHONPATH=build/python)
+
+    rows = []
+    for name, path, start, goal in INSTANCES:
+        grid = pride.Grid.load(str(REPO / path))
+        for key, criteria in CRITERIA.items():
+            exact = pride.pareto(grid, start, goal, objectives=criteria)
+            for algo in MO_ALGOS:
+                for seed in SEEDS:
+                    r = pride.plan_front(grid, start, goal, algo=algo, objectives=criteria, encoding="free",
+                                         evals=EVALS, seed=seed)
+                    q = r.quality
+                    assert q["reference_size"] == len(exact)
+                    rows.append([name, key, algo, seed, r.evaluations, repr(q["hypervolume_ratio"]),
+                                 repr(q["igd_plus"]), q["exact_found"], q["reference_size"], len(r.f)])
+            if key != "lta":
+                continue
+            # IQGA: one path per run, on its own weighted objective over length, angle and turns.
+            for seed in SEEDS:
+                r = pride.plan(grid, start, goal, algo="iqga", objective="iqga", evals=EVALS, seed=seed)
+                m = r.metrics
+                on = any(abs(p["length"] - m["length"]) <= 1e-9 * p["length"] and p["turns"] == m["turns"]
+                         and p["angle_penalty"] == m["angle_penalty"] for p in exact)
+                rows.append([name, key, "iqga", seed, r.evaluations, "", "", int(on), len(exact), 1])
+            print(f"{name}: done", file=sys.stderr)
+    with open(DATA / CSV, "w", newline="") as fh:
+        w = csv.writer(fh, lineterminator="\n")
+        w.writerow(FIELDS)
+        w.writerows(rows)
+
+
+def read(data=DATA):
+    with open(data / CSV, newline="") as fh:
+        return list(csv.DictReader(fh))
+
+
+def groups(rows, criteria, field):
+    """{instance: {algo: [values by seed]}} of the MO algorithms."""
+    out = {}
+    for r in rows:
+        if r["criteria"] != criteria or r["algo"] not in MO_ALGOS:
+            continue
+        out.setdefault(r["instance"], {}).setdefault(r["algo"], []).append(float(r[field]))
+    return out
+
+
+def quality_block(rows, criteria):
+    hv, igd, found = (groups(rows, criteria, f) for f in ("hv_ratio", "igd_plus", "found"))
+    size = {r["instance"]: int(r["front"]) for r in rows if r["criteria"] == criteria}
+    header = ["instance", "exact front"] + [f"{a} HV ratio" for a in MO_ALGOS] + [f"{a} IGD+" for a in MO_ALGOS] + \
+        [f"{a} found" for a in MO_ALGOS]
+    out = []
+    for inst, _, _, _ in INSTANCES:
+        if inst not in hv:
+            continue
+        shown = {a: f"{rp.median(hv[inst][a]):.3f}" for a in MO_ALGOS}
+        best = shown[max(MO_ALGOS, key=lambda a: rp.median(hv[inst][a]))]
+        cells = [inst, size[inst]]
+        cells += [f"**{shown[a]}**" if shown[a] == best else shown[a] for a in MO_ALGOS]  # ties at 3 digits: all
+        cells += [f"{rp.median(igd[inst][a]):.3f}" for a in MO_ALGOS]
+        cells += [f"{rp.median(found[inst][a]):g}" for a in MO_ALGOS]
+        out.append(cells)
+    return rp.table(header, out)
+
+
+def tests_block(rows, criteria):
+    hv = groups(rows, criteria, "hv_ratio")
+    pairs = [(a, b) for i, a in enumerate(MO_ALGOS) for b in MO_ALGOS[i + 1:]]
+    out = []
+    for inst, _, _, _ in INSTANCES:
+        if inst not in hv:
+            continue
+        _, p_kw = rp.kruskal([hv[inst][a] for a in MO_ALGOS])
+        ps = rp.holm([rp.rank_sum(hv[inst][a], hv[inst][b]) for a, b in pairs])
+        out.append([inst, rp.star(p_kw)] + [rp.star(p) for p in ps])
+    return rp.table(["instance", "Kruskal-Wallis p"] + [f"{a} vs {b} (Holm)" for a, b in pairs], out)
+
+
+def iqga_block(rows):
+    out = []
+    for inst, _, _, _ in INSTANCES:
+        iq = [r for r in rows if r["instance"] == inst and r["algo"] == "iqga"]
+        if not iq:
+            continue
+        size = int(iq[0]["front"])
+        hits = sum(int(r["found"]) for r in iq)
+        found = groups(rows, "lta", "found")[inst]
+        cells = [inst, size, f"{hits} of {len(iq)}"]
+        cells += [f"{rp.median(found[a]):g} ({min(found[a]):g}-{max(found[a]):g})" for a in MO_ALGOS]
+        out.append(cells)
+    return rp.table(["instance", "exact front", "IQGA runs on the front"] + [f"{a}: points found" for a in MO_ALGOS],
+                    out)
+
+
+def blocks(data=DATA):
+    rows = read(data)
+    runs = sum(1 for _ in rows)
+    return {
+        "mo-runs": f"{runs} runs: {len(INSTANCES)} instances; " + ", ".join(MO_ALGOS) +
+                   f" on two sets of criteria and IQGA on one, {len(SEEDS)} seeds each, {EVALS:,} evaluations per run.",
+        "mo-quality-ltc": quality_block(rows, "ltc"),
+        "mo-tests-ltc": tests_block(rows, "ltc"),
+        "mo-quality-lta": quality_block(rows, "lta"),
+        "mo-tests-lta": tests_block(rows, "lta"),
+        "mo-iqga": iqga_block(rows),
+    }
+
+
+def check(data=DATA, page=PAGE):
+    found = rp.page_blocks(page.read_text())
+    want = blocks(data)
+    return [(n, want.get(n), found.get(n)) for n in sorted(set(found) | set(want)) if want.get(n) != found.get(n)]
+
+
+def render():
+    PAGE.write_text(rp.replace_blocks(PAGE.read_text(), blocks()))
+
+
+def main(argv):
+    if argv[1:] == ["run"]:
+        run_all()
+        render()
+    elif argv[1:] == ["render"]:
+        render()
+    elif argv[1:] == ["check"]:
+        diffs = check()
+        for name, want, got in diffs:
+            print(f"block {name} differs from what the data give", file=sys.stderr)
+        return 1 if diffs else 0
+    else:
+        print(__doc__, file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
