@@ -12,6 +12,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -127,6 +128,23 @@ void stop_calls_at_exit();
 /// True on the interpreter's main thread (where signal handlers run).
 bool on_main_thread();
 
+/// A call of Python from a run (a user function, an observer): with the GIL, refused once the
+/// run is stopped; with `signals`, Ctrl-C reaches the run at this call even when the function runs
+/// no bytecode. An exception `body` raises is remembered in `errors` (the run's caller rethrows
+/// the first one unchanged) and rethrown, which ends the run.
+template <class Body>
+auto python_call(const std::shared_ptr<UserError>& errors, Body&& body, bool signals = true) -> decltype(body()) {
+    py::gil_scoped_acquire gil;
+    errors->check_stopped();
+    try {
+        if (signals && PyErr_CheckSignals() != 0) throw py::error_already_set();
+        return body();
+    } catch (...) {
+        errors->remember(std::current_exception());
+        throw;
+    }
+}
+
 /// Arguments taken as Python objects and checked here, so that a wrong type is a one-line
 /// TypeError naming the argument ("NAME: expected an integer, got str"), never pybind11's
 /// multi-line list of signatures nor its "Unable to cast" RuntimeError.
@@ -189,6 +207,10 @@ engine::RunResult run_released(const engine::AlgorithmSpec& algorithm, const eng
 py::dict result_dict(const engine::RunResult& r);
 
 py::array_t<double> vector_array(const std::vector<double>& v);
+/// A copy of a point as an array of shape (dim,).
+py::array_t<double> point_array(std::span<const double> x);
+/// Copies of points, one per column, as an (n, dim) array, one per row.
+py::array_t<double> rows_array(MatrixView points);
 /// A multi-objective run's result as a dict (front.cpp): f (n, M), x (n, dim), the counts.
 py::dict front_result_dict(const engine::MoRunResult& r, std::size_t objectives);
 py::array_t<int> path_array(const grid::Path& path);

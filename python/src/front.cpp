@@ -10,13 +10,6 @@
 namespace pride::python {
 namespace {
 
-py::array_t<double> rows_of(const Matrix& m) {
-    // One row per column of the engine's matrix: a column-major (M x n) is a row-major (n x M).
-    py::array_t<double> a({static_cast<py::ssize_t>(m.cols()), static_cast<py::ssize_t>(m.rows())});
-    if (m.size() > 0) std::memcpy(a.mutable_data(), m.data(), sizeof(double) * static_cast<std::size_t>(m.size()));
-    return a;
-}
-
 py::object quality_dict(const engine::MoQuality& q) {
     py::dict d;
     d["hypervolume"] = q.hypervolume;
@@ -35,8 +28,8 @@ py::dict front_dict(const engine::MoRunResult& r, const std::vector<std::string>
     py::dict d;
     d["algo"] = r.algorithm;
     d["objectives"] = names;
-    d["f"] = rows_of(r.f);
-    d["x"] = rows_of(r.x);
+    d["f"] = rows_array(r.f);
+    d["x"] = rows_array(r.x);
     d["evaluations"] = r.evaluations;
     d["iterations"] = r.iterations;
     d["wall_ms"] = r.wall_ms;
@@ -61,42 +54,25 @@ engine::MoCallbackSpec mo_callback(const py::object& fn, bool vectorized, std::v
     const auto count = static_cast<py::ssize_t>(m);
     if (!vectorized) {
         spec.scalar = [function, errors, count](std::span<const double> x, std::span<double> f) {
-            py::gil_scoped_acquire gil;
-            errors->check_stopped();
-            try {
-                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-                py::array_t<double> point(static_cast<py::ssize_t>(x.size()));
-                std::memcpy(point.mutable_data(), x.data(), sizeof(double) * x.size());
-                const auto v = real_array((*function)(point), "function: its result (M numbers)");
+            python_call(errors, [&] {
+                const auto v = real_array((*function)(point_array(x)), "function: its result (M numbers)");
                 require(v.size() == count, "function",
                         "returned " + std::to_string(v.size()) + " values, expected M = " + std::to_string(count));
                 std::memcpy(f.data(), v.data(), sizeof(double) * f.size());
-            } catch (...) {
-                errors->remember(std::current_exception());
-                throw;
-            }
+            });
         };
     } else {
         spec.batch = [function, errors, count](MatrixView points, Matrix& values) {
-            py::gil_scoped_acquire gil;
-            errors->check_stopped();
-            try {
-                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-                const auto n = static_cast<py::ssize_t>(points.cols()), dim = static_cast<py::ssize_t>(points.rows());
-                py::array_t<double> x({n, dim});
-                for (py::ssize_t j = 0; j < n; ++j)
-                    std::memcpy(x.mutable_data() + j * dim, points.col(j).data(),
-                                sizeof(double) * static_cast<std::size_t>(dim));
-                const auto v = real_array((*function)(x), "vectorized: the function must return an (n, M) array");
+            python_call(errors, [&] {
+                const auto n = static_cast<py::ssize_t>(points.cols());
+                const auto v =
+                    real_array((*function)(rows_array(points)), "vectorized: the function must return an (n, M) array");
                 require(v.ndim() == 2 && v.shape(0) == n && v.shape(1) == count, "vectorized",
                         "the function must return an array of shape (" + std::to_string(n) + ", " +
                             std::to_string(count) + "), one row of M values per row of X");
                 // Row j of the (n, M) array is column j of the M x n matrix: the same memory order.
                 std::memcpy(values.data(), v.data(), sizeof(double) * static_cast<std::size_t>(n * count));
-            } catch (...) {
-                errors->remember(std::current_exception());
-                throw;
-            }
+            });
         };
     }
     return spec;

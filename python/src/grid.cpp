@@ -78,28 +78,14 @@ std::shared_ptr<const engine::UserPathObjective> user_objective(const py::object
         return f;
     };
     user->value = [value, errors, number](const grid::Path& path) -> double {
-        py::gil_scoped_acquire gil;
-        errors->check_stopped();
-        try {
-            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-            return number((*value)(path_array(path)), "objective");
-        } catch (...) {
-            errors->remember(std::current_exception());
-            throw;
-        }
+        return python_call(errors, [&] { return number((*value)(path_array(path)), "objective"); });
     };
     if (!step_cost.is_none()) {
         if (!PyCallable_Check(step_cost.ptr())) throw py::type_error(where + "step_cost: expected a callable");
         auto step = std::make_shared<py::object>(step_cost);
         user->step_cost = [step, errors, number](int previous, int direction) -> double {
-            py::gil_scoped_acquire gil;
-            errors->check_stopped();
-            try {
-                return number((*step)(previous, direction), "step_cost");
-            } catch (...) {
-                errors->remember(std::current_exception());
-                throw;
-            }
+            return python_call(
+                errors, [&] { return number((*step)(previous, direction), "step_cost"); }, false);
         };
     }
     return user;

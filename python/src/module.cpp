@@ -425,47 +425,27 @@ engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::v
     spec.upper = std::move(upper);
     if (!vectorized) {
         spec.scalar = [function, errors](std::span<const double> x) -> double {
-            py::gil_scoped_acquire gil;
-            errors->check_stopped();
-            try {
-                // Ctrl-C reaches the run at this call even when the function runs no bytecode.
-                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-                py::array_t<double> point(static_cast<py::ssize_t>(x.size()));
-                std::memcpy(point.mutable_data(), x.data(), sizeof(double) * x.size());
-                const py::object value = (*function)(point);
+            return python_call(errors, [&] {
+                const py::object value = (*function)(point_array(x));
                 const double f = PyFloat_AsDouble(value.ptr());
                 if (f == -1.0 && PyErr_Occurred()) {
                     PyErr_Clear();
-                    throw py::type_error("the function must return one number, got " +
-                                         py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+                    throw py::type_error("the function must return one number, got " + type_name(value));
                 }
                 return f;
-            } catch (...) {
-                errors->remember(std::current_exception());
-                throw;
-            }
+            });
         };
     } else {
         spec.batch = [function, errors](MatrixView points, std::span<double> values) {
-            py::gil_scoped_acquire gil;
-            errors->check_stopped();
-            try {
-                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-                const auto n = static_cast<py::ssize_t>(points.cols()), dim = static_cast<py::ssize_t>(points.rows());
-                py::array_t<double> x({n, dim});
-                double* out = x.mutable_data();
-                for (py::ssize_t j = 0; j < n; ++j)
-                    std::memcpy(out + j * dim, points.col(j).data(), sizeof(double) * static_cast<std::size_t>(dim));
-                const py::object result = (*function)(x);
-                const auto f = real_array(result, "vectorized: the function must return one value per row of X");
+            python_call(errors, [&] {
+                const auto n = static_cast<py::ssize_t>(points.cols());
+                const auto f = real_array((*function)(rows_array(points)),
+                                          "vectorized: the function must return one value per row of X");
                 require(f.size() == n, "vectorized",
                         "the function returned " + std::to_string(f.size()) + " values for " + std::to_string(n) +
                             " points (X has one point per row; expected shape (" + std::to_string(n) + ",))");
                 std::memcpy(values.data(), f.data(), sizeof(double) * static_cast<std::size_t>(n));
-            } catch (...) {
-                errors->remember(std::current_exception());
-                throw;
-            }
+            });
         };
     }
     return spec;
@@ -474,31 +454,19 @@ engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::v
 engine::IterationObserver observer(const py::object& fn, const std::shared_ptr<UserError>& errors) {
     auto function = std::make_shared<py::object>(fn);
     return [function, errors](const IterationView& v) -> bool {
-        py::gil_scoped_acquire gil;
-        errors->check_stopped();
-        try {
-            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-            const auto n = static_cast<py::ssize_t>(v.population.cols()),
-                       dim = static_cast<py::ssize_t>(v.population.rows());
+        return python_call(errors, [&] {
             // Copies the observer may keep: the run's own memory is reused or freed after the
-            // call, and numpy cannot revoke a view of it. A column of the engine's matrix is a
-            // row here, so each is one copy of a contiguous block. Read-only: writing them would
-            // not change the run.
-            py::array_t<double> population({n, dim});
+            // call, and numpy cannot revoke a view of it. Read-only: writing them would not change
+            // the run.
+            py::array_t<double> population = rows_array(v.population);
             py::array_t<double> fitness(static_cast<py::ssize_t>(v.fitness.size()));
-            if (n > 0 && dim > 0)
-                std::memcpy(population.mutable_data(), v.population.data(),
-                            sizeof(double) * static_cast<std::size_t>(n * dim));
             if (!v.fitness.empty())
                 std::memcpy(fitness.mutable_data(), v.fitness.data(), sizeof(double) * v.fitness.size());
             population.attr("flags").attr("writeable") = false;
             fitness.attr("flags").attr("writeable") = false;
             const py::object r = (*function)(v.iteration, v.evaluations, v.best_f, population, fitness);
             return !(r.ptr() == Py_False);
-        } catch (...) {
-            errors->remember(std::current_exception());
-            throw;
-        }
+        });
     };
 }
 
@@ -542,6 +510,22 @@ engine::RunResult run_released(const engine::AlgorithmSpec& algorithm, const eng
     } catch (...) {
         errors->rethrow_or(std::current_exception());
     }
+}
+
+py::array_t<double> point_array(std::span<const double> x) {
+    py::array_t<double> a(static_cast<py::ssize_t>(x.size()));
+    if (!x.empty()) std::memcpy(a.mutable_data(), x.data(), sizeof(double) * x.size());
+    return a;
+}
+
+py::array_t<double> rows_array(MatrixView points) {
+    // A column of the engine's matrix is a row here: one copy of a contiguous block when the
+    // columns are (an Eigen::Ref of a whole matrix), else one per column.
+    const auto n = static_cast<py::ssize_t>(points.cols()), dim = static_cast<py::ssize_t>(points.rows());
+    py::array_t<double> a({n, dim});
+    for (py::ssize_t j = 0; j < n; ++j)
+        std::memcpy(a.mutable_data() + j * dim, points.col(j).data(), sizeof(double) * static_cast<std::size_t>(dim));
+    return a;
 }
 
 py::array_t<double> vector_array(const std::vector<double>& v) {
