@@ -22,7 +22,7 @@ from ._pride import Grid
 __all__ = [
     "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
     "exact", "pareto", "roughset", "Campaign", "read_store", "report", "hypervolume", "hypervolume_contributions",
-    "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance", "front", "plan_front",
+    "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance", "attainment_surface", "front", "plan_front",
 ]
 
 
@@ -336,6 +336,16 @@ def crowding_distance(points):
     """NSGA-II's crowding distance of the rows of ``points`` taken as one front (n,): +inf at each
     objective's ends."""
     return _pride.crowding_distance(points)
+
+
+def attainment_surface(runs, k):
+    """The k-th empirical attainment surface of two-objective runs (Fonseca and Fleming 1996):
+    ``runs`` a list of (n_i, 2) arrays (each run's set, objectives minimised), ``k`` in 1..len(runs).
+    Returns the surface's corners, an (m, 2) array in increasing f1: every point that at least k
+    runs attain (a point of theirs weakly dominates it) is weakly dominated by a corner, and each
+    corner is attained by k runs. k = 1 is the best surface, len(runs) the worst, (len(runs) + 1)
+    // 2 the median."""
+    return _pride.attainment_surface(runs, k)
 
 
 def _pandas():

@@ -1,13 +1,15 @@
 // pride.hypervolume, pride.igd, pride.igd_plus, pride.epsilon_additive, pride.nondominated_sort and
-// pride.crowding_distance: framework/pareto/ on numpy arrays. A set is an (n, M) array, one row per
-// point; read row-major it is the (M, n) matrix, one column per point, that framework/pareto takes,
-// so no copy is made of a C-contiguous array of doubles.
+// pride.crowding_distance, pride.attainment_surface: framework/pareto/ on numpy arrays. A set is an (n, M) array, one
+// row per point; read row-major it is the (M, n) matrix, one column per point, that framework/pareto takes, so no copy
+// is made of a C-contiguous array of doubles.
 #include <Eigen/Core>
 
+#include <cstring>
 #include <string>
 #include <vector>
 
 #include "common.hpp"
+#include "framework/pareto/attainment.hpp"
 #include "framework/pareto/hypervolume.hpp"
 #include "framework/pareto/indicators.hpp"
 #include "framework/pareto/sorting.hpp"
@@ -88,6 +90,27 @@ py::array_t<double> crowding_distance(const py::object& points) {
     return out;
 }
 
+py::array_t<double> attainment_surface(const py::object& runs, const py::object& k) {
+    if (!py::isinstance<py::list>(runs) && !py::isinstance<py::tuple>(runs))
+        throw py::type_error("runs: expected a list of (n, 2) arrays, one per run, got " + type_name(runs));
+    std::vector<Matrix> sets;
+    const auto seq = py::reinterpret_borrow<py::sequence>(runs);
+    for (std::size_t i = 0; i < seq.size(); ++i) {
+        const std::string what = "runs[" + std::to_string(i) + "]";
+        const Array a = real_array(seq[i], what);
+        require(a.ndim() == 2 && (a.shape(1) == 2 || a.shape(0) == 0), what,
+                "must be an (n, 2) array, one row per point of two objectives");
+        sets.emplace_back(Eigen::Map<const Matrix>(a.data(), 2, a.shape(0)));
+    }
+    const std::int64_t level = integer_arg(k, "k");
+    require(level >= 1 && static_cast<std::size_t>(level) <= std::max<std::size_t>(sets.size(), 1), "k",
+            "must be in [1, " + std::to_string(sets.size()) + "] (the number of runs), got " + std::to_string(level));
+    const Matrix s = pareto::attainment_surface(sets, static_cast<std::size_t>(level));
+    py::array_t<double> out({static_cast<py::ssize_t>(s.cols()), py::ssize_t{2}});
+    if (s.size() > 0) std::memcpy(out.mutable_data(), s.data(), sizeof(double) * static_cast<std::size_t>(s.size()));
+    return out;
+}
+
 }  // namespace
 
 void bind_pareto(py::module_& m) {
@@ -98,6 +121,7 @@ void bind_pareto(py::module_& m) {
     m.def("epsilon_additive", &against_front<&pareto::epsilon_additive>, py::arg("points"), py::arg("front"));
     m.def("nondominated_sort", &nondominated_sort, py::arg("points"));
     m.def("crowding_distance", &crowding_distance, py::arg("points"));
+    m.def("attainment_surface", &attainment_surface, py::arg("runs"), py::arg("k"));
 }
 
 }  // namespace pride::python

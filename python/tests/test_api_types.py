@@ -131,6 +131,8 @@ def api(tmp_path):
                              dict(points=PAIRED, front=PAIRED)),
         "nondominated_sort": (lambda **o: pride.nondominated_sort(**{"points": PTS, **o}), dict(points=POINTS)),
         "crowding_distance": (lambda **o: pride.crowding_distance(**{"points": PTS, **o}), dict(points=POINTS)),
+        "attainment_surface": (lambda **o: pride.attainment_surface(**{"runs": [PTS[:, :2]], "k": 1, **o}),
+                               dict(runs=[None, 5, "ab", object(), [None], [[[1.0, 2.0, 3.0]]]], k=INT_REQUIRED)),
     }
 
 

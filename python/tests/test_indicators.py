@@ -50,3 +50,29 @@ def test_errors_name_the_argument():
         pride.igd_plus([[1.0, 2.0]], "front")
     with pytest.raises(ValueError, match="NaN"):
         pride.nondominated_sort([[1.0, float("nan")]])
+
+
+def test_attainment_surfaces_by_hand_and_by_brute_force():
+    runs = [np.array([[1.0, 5.0], [3.0, 2.0]]), np.array([[2.0, 4.0]]), np.array([[4.0, 1.0]])]
+    assert pride.attainment_surface(runs, 1).tolist() == [[1, 5], [2, 4], [3, 2], [4, 1]]
+    assert pride.attainment_surface(runs, 2).tolist() == [[2, 5], [3, 4], [4, 2]]
+    assert pride.attainment_surface(runs, 3).tolist() == [[4, 4]]
+    rng = np.random.default_rng(5)
+    for _ in range(50):
+        runs = [rng.integers(0, 6, size=(rng.integers(0, 5), 2)).astype(float) for _ in range(rng.integers(1, 5))]
+        for k in range(1, len(runs) + 1):
+            s = pride.attainment_surface(runs, k)
+            for x in np.arange(-0.5, 6.5, 0.5):
+                for y in np.arange(-0.5, 6.5, 0.5):
+                    count = sum(bool(len(a)) and bool(np.any((a[:, 0] <= x) & (a[:, 1] <= y))) for a in runs)
+                    covered = bool(len(s)) and bool(np.any((s[:, 0] <= x) & (s[:, 1] <= y)))
+                    assert covered == (count >= k)
+
+
+def test_attainment_surface_errors_name_the_argument():
+    with pytest.raises(ValueError, match=r"^k: must be in \[1, 1\]"):
+        pride.attainment_surface([np.zeros((1, 2))], 2)
+    with pytest.raises(ValueError, match=r"^runs\[0\]: must be an \(n, 2\) array"):
+        pride.attainment_surface([np.zeros((1, 3))], 1)
+    with pytest.raises(TypeError, match="^runs: expected a list"):
+        pride.attainment_surface(np.zeros((1, 2)), 1)
