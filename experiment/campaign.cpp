@@ -83,6 +83,15 @@ std::string budget_definition(const Campaign& c) {
 }
 
 std::string problem_definition(const CampaignProblem& p) {
+    if (p.is_multiobjective()) {
+        const auto* f = std::get_if<ContinuousSpec>(&p.spec);
+        CampaignProblem plain = p;
+        plain.objectives.reset();
+        const std::string objectives = p.objectives->empty() ? "(default)" : *p.objectives;
+        return f ? fmt::format("{} dim {} objectives {}", f->function,
+                               f->dim == 0 ? std::string("(default)") : std::to_string(f->dim), objectives)
+                 : problem_definition(plain) + " objectives " + objectives;
+    }
     if (const auto* f = std::get_if<ContinuousSpec>(&p.spec))
         return fmt::format("{} dim {} instance {}", f->function, f->dim,
                            p.problem ? p.problem->instance() : f->instance.value_or(0));
@@ -124,6 +133,7 @@ std::string map_digest(const grid::GridMap& m) {
 std::string settings_digest(const CampaignProblem& p) {
     Sha256 h;
     const auto number = [&](double v) { h.field(json_number(v)); };
+    if (p.is_multiobjective()) h.field("objectives v1").field(*p.objectives);
     if (const auto* f = std::get_if<ContinuousSpec>(&p.spec)) {
         h.field("function v1").field(f->function).field(std::to_string(f->dim));
         h.field(std::to_string(p.problem ? p.problem->instance() : f->instance.value_or(0)));
@@ -172,6 +182,24 @@ std::string compose_digest(const std::string& map_hex, const CampaignProblem& p)
 std::string problem_digest(const CampaignProblem& p) {
     const auto* g = std::get_if<GridSpec>(&p.spec);
     return compose_digest(g && g->map ? map_digest(*g->map) : std::string(), p);
+}
+
+MoProblemSpec multiobjective_spec(const CampaignProblem& p) {
+    if (const auto* g = std::get_if<GridSpec>(&p.spec)) {
+        MoGridSpec s;
+        s.grid = *g;
+        s.objectives = *p.objectives;
+        return s;
+    }
+    const auto& f = std::get<ContinuousSpec>(p.spec);
+    MoBenchmarkSpec s{f.function, f.dim, 0};
+    if (!p.objectives->empty()) {
+        const std::string& m = *p.objectives;
+        require(m.find_first_not_of("0123456789") == std::string::npos && m.size() <= 6, "objectives",
+                "expected the number of objectives M, got '" + m + "'");
+        s.objectives = std::stoll(m);
+    }
+    return s;
 }
 
 std::string digest_difference(const std::string& stored, const std::string& now) {
@@ -933,24 +961,29 @@ void prepare(Campaign& c) {
                 }
                 // The exact optimum beside every run whose objective has one, for gaps in reports.
                 g->oracle = false;
-                Problem problem(p.spec);
-                if (problem.has_optimum()) {
-                    problem = problem.with_oracle();
-                    g->oracle = true;
+                if (p.is_multiobjective()) {
+                    p.multiobjective = std::make_shared<const MoProblem>(multiobjective_spec(p));
+                } else {
+                    Problem problem(p.spec);
+                    if (problem.has_optimum()) {
+                        problem = problem.with_oracle();
+                        g->oracle = true;
+                    }
+                    p.problem = std::make_shared<const Problem>(std::move(problem));
                 }
-                p.problem = std::make_shared<const Problem>(std::move(problem));
+            } else if (p.is_multiobjective()) {
+                p.multiobjective = std::make_shared<const MoProblem>(multiobjective_spec(p));
             } else {
                 p.problem = std::make_shared<const Problem>(p.spec);
             }
             if (c.evaluations_per_dim) {
                 require(!std::holds_alternative<GridSpec>(p.spec), "evaluations_per_dim",
                         "a grid problem has no dimension; give the campaign an absolute budget (evaluations)");
-                const double n =
-                    static_cast<double>(*c.evaluations_per_dim) * static_cast<double>(p.problem->dimension());
+                const double n = static_cast<double>(*c.evaluations_per_dim) * static_cast<double>(p.dimension());
                 require(n <= 1e15, "evaluations_per_dim",
                         fmt::format("{} x {} dimensions is more than 10^15 evaluations", *c.evaluations_per_dim,
-                                    p.problem->dimension()));
-                p.evaluations = *c.evaluations_per_dim * static_cast<std::int64_t>(p.problem->dimension());
+                                    p.dimension()));
+                p.evaluations = *c.evaluations_per_dim * static_cast<std::int64_t>(p.dimension());
             }
         } catch (const InputError& e) {
             throw InputError(where, "problem '" + p.id + "': " + e.what());
@@ -972,7 +1005,10 @@ void prepare(Campaign& c) {
         const std::string where = where_of(c, a.line, "algorithm '" + a.id + "'");
         for (const auto& p : c.problems) {
             try {
-                check(a.spec, *p.problem, budget_of(c.budget, p));
+                if (p.multiobjective)
+                    check(a.spec, *p.multiobjective, budget_of(c.budget, p));
+                else
+                    check(a.spec, *p.problem, budget_of(c.budget, p));
             } catch (const InputError& e) {
                 throw InputError(where, "algorithm '" + a.id + "' on problem '" + p.id + "': " + e.what());
             }
@@ -991,11 +1027,59 @@ std::string json_trace(const std::vector<TracePoint>& trace) {
 }
 }  // namespace
 
+namespace {
+
+/// A multi-objective run as stored: its value is the hypervolume gap 1 - HV / HV_ref (0 for a set
+/// as good as the reference front; engine/multiobjective.hpp's normalisation), its solution the
+/// whole front with its indicators: {"objectives": [...], "hypervolume_ratio", "igd_plus",
+/// "exact_found" (grids), "front": [{"f": [...], "x": [...]} or, on grids, {"f", "legal", "path"}]}.
+RunRecord run_multiobjective(const CampaignProblem& p, const CampaignAlgorithm& a, const Budget& budget,
+                             std::int64_t seed, RunRecord r) {
+    const MoProblem& problem = *p.multiobjective;
+    const MoRunResult result = run(a.spec, problem, budget_of(budget, p), static_cast<std::uint64_t>(seed));
+    const MoQuality q = quality(problem, result.f);
+    const bool grid = problem.is_grid();
+    std::string names, points;
+    for (const auto& n : problem.objective_names()) names += (names.empty() ? "" : ", ") + json_string(n);
+    const auto column = [](const Matrix& m, Eigen::Index j) {
+        return json_array(std::vector<double>(m.col(j).data(), m.col(j).data() + m.rows()));
+    };
+    bool any_legal = !grid && result.f.cols() > 0;
+    for (Eigen::Index j = 0; j < result.f.cols(); ++j) {
+        points += points.empty() ? "" : ", ";
+        if (grid) {
+            const auto k = static_cast<std::size_t>(j);
+            any_legal = any_legal || result.feasible[k] != 0;
+            points += fmt::format("{{\"f\": {}, \"legal\": {}, \"path\": {}}}", column(result.f, j),
+                                  result.feasible[k] ? "true" : "false", json_cells(result.paths[k]));
+        } else {
+            points += fmt::format("{{\"f\": {}, \"x\": {}}}", column(result.f, j), column(result.x, j));
+        }
+    }
+    r.solution = fmt::format(
+        "{{\"objectives\": [{}], \"hypervolume_ratio\": {}, \"igd_plus\": {}, \"exact_found\": {}, \"front\": [{}]}}",
+        names, json_number(q.hypervolume_ratio), json_number(q.igd_plus),
+        q.exact_found ? std::to_string(*q.exact_found) : std::string("null"), points);
+    r.best = 1.0 - q.hypervolume_ratio;
+    r.feasible = any_legal;
+    r.evaluations = result.evaluations;
+    r.iterations = result.iterations;
+    r.wall_ms = result.wall_ms;
+    // One point of history: the run's value after its last iteration.
+    r.history = json_array({r.best});
+    r.history_evaluations = json_integers({result.evaluations});
+    if (grid) r.encoding = std::get<GridSpec>(p.spec).encoding.empty() ? "line" : std::get<GridSpec>(p.spec).encoding;
+    return r;
+}
+
+}  // namespace
+
 RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Budget& budget, std::int64_t seed) {
     RunRecord r;
     r.problem = p.id;
     r.algorithm = a.id;
     r.seed = seed;
+    if (p.multiobjective) return run_multiobjective(p, a, budget, seed, std::move(r));
     const std::optional<double> optimum = p.problem->optimum_value();
     Budget with_targets = budget_of(budget, p);
     if (optimum)

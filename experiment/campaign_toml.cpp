@@ -90,16 +90,40 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
     p.id = need_name(file, t, "id", where);
     const std::string type = need_string(file, t, "type", where);
     const bool grid = type == "grid";
+    // zdt1..dtlz7: several objectives (engine/multiobjective.hpp), with `objectives` M for DTLZ.
+    const bool several = is_multiobjective_problem(type);
     GridSpec g;
     ContinuousSpec f{type, 0};
     static const std::set<std::string> continuous_keys{"id", "type", "dim", "instance"};
-    static const std::set<std::string> grid_keys{"id",        "type",     "map",       "start", "goal",
-                                                 "objective", "encoding", "connector", "init",  "waypoints",
-                                                 "inflate",   "weights",  "lambda"};
+    static const std::set<std::string> multiobjective_keys{"id", "type", "dim", "objectives"};
+    static const std::set<std::string> grid_keys{"id",        "type",     "map",       "start",     "goal",
+                                                 "objective", "encoding", "connector", "init",      "waypoints",
+                                                 "inflate",   "weights",  "lambda",    "objectives"};
     for (auto&& [key, value] : t) {
         const std::string k(key.str());
-        if (!(grid ? grid_keys : continuous_keys).count(k))
-            fail(at(file, value), "unknown key '" + k + "' in a " + (grid ? "grid" : "continuous") + " [[problem]]");
+        if (!(grid ? grid_keys : several ? multiobjective_keys : continuous_keys).count(k))
+            fail(at(file, value), "unknown key '" + k + "' in a " +
+                                      (grid      ? "grid"
+                                       : several ? "multi-objective"
+                                                 : "continuous") +
+                                      " [[problem]]");
+        if (k == "objectives") {
+            // A grid's criteria (a list of names, or one comma-separated string); DTLZ's M.
+            if (grid) {
+                std::string list;
+                if (const toml::array* a = value.as_array()) {
+                    for (const auto& item : *a) {
+                        if (!item.is_string()) fail(at(file, item), "'objectives' must list names such as \"length\"");
+                        list += (list.empty() ? "" : ",") + std::string(*item.as_string());
+                    }
+                } else {
+                    list = need_string(file, t, k, where);
+                }
+                p.objectives = list;
+            } else {
+                p.objectives = std::to_string(need_integer(file, value, k));
+            }
+        }
         if (k == "dim") f.dim = need_integer(file, value, k);
         if (k == "instance")
             instances = value.is_array() ? need_integers(file, value, k) : std::vector{need_integer(file, value, k)};
@@ -127,7 +151,12 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
     if (grid) {
         if (p.map_file.empty()) fail(where, "a grid [[problem]] needs 'map'");
         if (!t.get("start") || !t.get("goal")) fail(where, "a grid [[problem]] needs 'start' and 'goal'");
+        if (p.objectives && t.get("objective"))
+            fail(at(file, *t.get("objective")), "a grid with 'objectives' (several) takes no 'objective' (one)");
         p.spec = g;
+    } else if (several) {
+        if (!p.objectives) p.objectives = "";  // the problem's default M
+        p.spec = f;                            // dim 0: the paper's n
     } else {
         if (!t.get("dim")) fail(where, "missing key 'dim'");
         p.spec = f;

@@ -597,13 +597,15 @@ class Store {
             const std::string goal = g ? fmt::format("{},{}", g->goal.x, g->goal.y) : "";
             sqlite3_bind_text(s, 1, p.id.c_str(), -1, SQLITE_TRANSIENT);
             sqlite3_bind_text(s, 2, type.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_int64(s, 3, g ? 2 : static_cast<std::int64_t>(p.problem->dimension()));  // grids: the plane
+            sqlite3_bind_int64(s, 3, g ? 2 : static_cast<std::int64_t>(p.dimension()));  // grids: the plane
             sqlite3_bind_text(s, 4, map.c_str(), -1, SQLITE_TRANSIENT);
             sqlite3_bind_text(s, 5, start.c_str(), -1, SQLITE_TRANSIENT);
             sqlite3_bind_text(s, 6, goal.c_str(), -1, SQLITE_TRANSIENT);
             sqlite3_bind_text(s, 7, type.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_int64(s, 8, p.problem->instance());
-            if (const auto f_opt = p.problem->optimum_value())
+            // A multi-objective problem has no instance and no single optimum (its runs' values are
+            // hypervolume gaps: 0 is the reference front).
+            sqlite3_bind_int64(s, 8, p.problem ? p.problem->instance() : 0);
+            if (const auto f_opt = p.problem ? p.problem->optimum_value() : std::nullopt)
                 sqlite3_bind_double(s, 9, *f_opt);
             else
                 sqlite3_bind_null(s, 9);

@@ -399,6 +399,20 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
         report.friedman->critical_difference =
             stats::critical_difference(report.friedman->test.average_ranks, cells.size(), 0.05);
     }
+    std::set<std::string> fronts;
+    for (const StoredRun& run : store.runs)
+        if (run.front) fronts.insert(run.problem);
+    if (!fronts.empty()) {
+        std::string list;
+        for (const auto& p : fronts) list += (list.empty() ? "" : ", ") + p;
+        report.notes.push_back(fmt::format(
+            "{} {} several objectives: {} values are hypervolume gaps, 1 - HV / HV_ref, the set's hypervolume "
+            "against the reference front's (the analytic front sampled, or a grid's exact front) on objectives "
+            "normalised by that front, reference point 1.1 (0: as good as the reference front; "
+            "docs/multiobjective.md). Each run's front, its IGD+ and on grids the exact points it found are in the "
+            "store (runs.solution).",
+            list, fronts.size() == 1 ? "has" : "have", fronts.size() == 1 ? "its" : "their"));
+    }
     return report;
 }
 

@@ -466,7 +466,8 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
     }
     Query q(db, fmt::format(
                     "SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, "
-                    "history_evaluations, {}, {}, {}, {}, {}, {} FROM runs ORDER BY problem, algorithm, seed",
+                    "history_evaluations, {}, {}, {}, {}, {}, {}, substr(solution, 1, 1) = '{{' FROM runs ORDER BY "
+                    "problem, algorithm, seed",
                     has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"),
                     optional_column(run_columns, "trace_targets"), optional_column(run_columns, "trace_evaluations"),
                     optional_column(run_columns, "max_evaluations"), optional_column(run_columns, "checkpoints"))
@@ -512,6 +513,7 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
             q.fail("max_evaluations", fmt::format("expected at least the run's {} evaluations, got {}", r.evaluations,
                                                   *r.max_evaluations));
         r.checkpoints = trace(q, 15, "checkpoints", r.evaluations);
+        r.front = q.integer(16, "solution", 0) == 1;
         // The analysis of target hits (experiment/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.
         if (store.precisions && has_problems && !problem_ids.count(r.problem))

@@ -57,6 +57,9 @@ struct StoredRun {
     // checkpoints of it (experiment/report/cec.hpp), for problems with a known f_opt: empty for runs
     // stored before store schema 4 and for runs under an iteration budget alone.
     std::optional<std::int64_t> max_evaluations;
+    // A multi-objective run (its solution is a front, an object, where other runs store a point
+    // or a path): its value is the hypervolume gap (experiment/campaign.hpp).
+    bool front = false;
     std::vector<TracePoint> checkpoints;
 };
 

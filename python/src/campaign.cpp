@@ -30,7 +30,7 @@ struct PyCampaign {
 const std::set<std::string> problem_keys{
     "id",        "problem",    "dim",       "instance", "grid",      "map",     "inflate", "start",          "goal",
     "objective", "encoding",   "connector", "init",     "waypoints", "weights", "lambda",  "corner_cutting", "function",
-    "bounds",    "vectorized", "step_cost", "f_opt"};
+    "bounds",    "vectorized", "step_cost", "f_opt",    "objectives"};
 
 /// d[key] checked as a T (None or missing: empty); a wrong type is a TypeError "WHERE: KEY: ...".
 template <class T>
@@ -89,6 +89,18 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
             }
         }
     };
+    if (d.contains("problem") && !d["problem"].is_none() && py::isinstance<py::str>(d["problem"]) &&
+        engine::is_multiobjective_problem(d["problem"].cast<std::string>())) {
+        // zdt1..dtlz7: several objectives, `objectives` M for DTLZ (default: the paper's n and M).
+        require(!d.contains("instance"), where, "a multi-objective problem has no instances");
+        const auto m = get<std::int64_t>(d, "objectives", where);
+        p.objectives = m ? std::to_string(*m) : std::string();
+        p.spec =
+            engine::ContinuousSpec{d["problem"].cast<std::string>(), get<std::int64_t>(d, "dim", where).value_or(0)};
+        return p;
+    }
+    require(!d.contains("objectives") || d.contains("grid") || d.contains("map"), where,
+            "objectives: only for multi-objective problems (zdt1-zdt6, dtlz1-dtlz7) and grids");
     if (d.contains("problem")) {
         const auto dim = get<std::int64_t>(d, "dim", where);
         require(dim.has_value(), where, "problem '" + p.id + "' needs dim");
@@ -152,6 +164,23 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
         g.weights = get<std::vector<double>>(d, "weights", where).value_or(g.weights);
         g.lambda = get<double>(d, "lambda", where);
         g.corner_cutting = get<bool>(d, "corner_cutting", where).value_or(false);
+        if (d.contains("objectives") && !d["objectives"].is_none()) {
+            // Several criteria: a comma-separated str or a list of names.
+            const py::object o = d["objectives"];
+            std::string list;
+            if (py::isinstance<py::str>(o)) {
+                list = o.cast<std::string>();
+            } else if (py::isinstance<py::list>(o) || py::isinstance<py::tuple>(o)) {
+                for (const auto& item : o.cast<py::sequence>())
+                    list += (list.empty() ? "" : ",") + text_arg(item, where + ": objectives");
+            } else {
+                throw py::type_error(where + ": objectives: expected names of criteria (a str or a list), got " +
+                                     type_name(o));
+            }
+            require(!d.contains("objective") || d["objective"].is_none(), where,
+                    "a grid with objectives (several) takes no objective (one)");
+            p.objectives = list;
+        }
         p.spec = std::move(g);
     }
     return p;

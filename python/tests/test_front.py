@@ -121,3 +121,27 @@ def test_a_users_exception_comes_through_unchanged():
 
     with pytest.raises(KeyError, match="mine"):
         pride.front("nsga2", broken, bounds=([0], [1]), objectives=2, evals=100)
+
+
+def test_a_python_campaign_stores_multiobjective_runs(tmp_path):
+    grid = pride.Grid.load(os.path.join(MAPS, "file002-20x20.map"))
+    c = pride.Campaign("mo", seeds=2, evals=1500, algorithms=["nsga2"],
+                       problems=[{"id": "zdt1", "problem": "zdt1"},
+                                 {"id": "dtlz1", "problem": "dtlz1", "objectives": 4},
+                                 {"id": "g", "grid": grid, "start": (0, 19), "goal": (19, 0),
+                                  "objectives": ["length", "turns"], "encoding": "free"}])
+    store = str(tmp_path / "mo.sqlite")
+    c.run(store)
+    runs = pride.read_store(store, dataframe=False)
+    runs = runs["runs"] if isinstance(runs, dict) else runs
+    by = {(r["problem"], r["seed"]): r for r in runs}
+    assert len(by) == 6
+    direct = pride.front("nsga2", "zdt1", evals=1500, seed=2)
+    assert by[("zdt1", 2)]["best"] == 1.0 - direct.quality["hypervolume_ratio"]
+    on_grid = pride.plan_front(grid, (0, 19), (19, 0), objectives="length,turns", encoding="free", evals=1500, seed=1)
+    assert by[("g", 1)]["best"] == 1.0 - on_grid.quality["hypervolume_ratio"]
+    with pytest.raises(ValueError, match="objectives: only for multi-objective problems"):
+        pride.Campaign("bad", seeds=1, evals=10, algorithms=["pso"],
+                       problems=[{"id": "s", "problem": "sphere", "dim": 2, "objectives": 2}])
+    with pytest.raises(ValueError, match="pso optimises one objective"):
+        pride.Campaign("bad", seeds=1, evals=10, algorithms=["pso"], problems=[{"id": "z", "problem": "zdt1"}])

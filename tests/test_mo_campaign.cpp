@@ -1,0 +1,110 @@
+// Multi-objective campaigns (issue 28): problems of several objectives in campaign files, each
+// run stored with its whole front and, as its value, its hypervolume gap; the stored record is
+// the engine's run; the report says what the values are; bad entries are refused at their line.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+
+#include "engine/multiobjective.hpp"
+#include "experiment/campaign.hpp"
+#include "experiment/campaign_toml.hpp"
+#include "experiment/report/report.hpp"
+#include "tests/cli_runner.hpp"
+#include "tests/json_reader.hpp"
+#include "tests/test_support.hpp"
+
+using namespace pride;
+
+namespace {
+
+const std::string kMaps = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/";
+
+std::string campaign_text(const std::string& extra_problem = "", const std::string& algorithms = "nsga2,smsemoa") {
+    std::string text =
+        "name = \"mo\"\nseeds = 2\n[budget]\nevaluations = 1500\n"
+        "[[problem]]\nid = \"zdt2\"\ntype = \"zdt2\"\ndim = 12\n"
+        "[[problem]]\nid = \"dtlz2\"\ntype = \"dtlz2\"\nobjectives = 3\n"
+        "[[problem]]\nid = \"grid\"\ntype = \"grid\"\nmap = \"" +
+        kMaps +
+        "file002-20x20.map\"\nstart = [0, 19]\ngoal = [19, 0]\n"
+        "objectives = [\"length\", \"turns\", \"clearance\"]\nencoding = \"free\"\n" +
+        extra_problem;
+    std::size_t from = 0;
+    while (from <= algorithms.size()) {
+        const std::size_t comma = std::min(algorithms.find(',', from), algorithms.size());
+        const std::string a = algorithms.substr(from, comma - from);
+        text += "[[algorithm]]\nid = \"" + a + "\"\ntype = \"" + a + "\"\n";
+        from = comma + 1;
+    }
+    return text;
+}
+
+}  // namespace
+
+TEST_CASE("a multi-objective campaign stores each run's front and its hypervolume gap, as the engine runs it") {
+    const test::TempDir dir("pride-mo-campaign");
+    const std::string file = dir.write("mo.toml", campaign_text());
+    engine::Campaign c = engine::read_campaign(file);
+    REQUIRE(c.problems.size() == 3);
+    for (const auto& p : c.problems) CHECK(p.is_multiobjective());
+    CHECK(c.problems[1].multiobjective->objectives() == 3);
+    CHECK(c.problems[0].multiobjective->dimension() == 12);
+    const auto summary = engine::run_campaign(c, dir.file("mo.sqlite"), 2);
+    CHECK(summary.stored == 12);
+    CHECK(engine::run_campaign(c, dir.file("mo.sqlite"), 2).stored == 0);  // resumed: nothing left
+
+    // The stored record is the engine's run: the same front, the value 1 - its hypervolume ratio.
+    for (const auto& p : c.problems) {
+        const engine::RunRecord r = engine::run_one(p, c.algorithms[1], c.budget, 2);
+        const auto direct = engine::run(c.algorithms[1].spec, *p.multiobjective, c.budget, 2);
+        const auto q = engine::quality(*p.multiobjective, direct.f);
+        INFO(p.id);
+        CHECK(r.best == 1.0 - q.hypervolume_ratio);
+        CHECK(r.evaluations == 1500);
+        const auto doc = test::parse_json(r.solution);
+        CHECK(doc.at("hypervolume_ratio").number == q.hypervolume_ratio);
+        const auto& front = doc.at("front").items;
+        REQUIRE(front.size() == static_cast<std::size_t>(direct.f.cols()));
+        for (std::size_t j = 0; j < front.size(); ++j)
+            for (std::size_t i = 0; i < front[j].at("f").items.size(); ++i)
+                CHECK(front[j].at("f").items[i].number ==
+                      direct.f(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+        if (p.multiobjective->is_grid()) {
+            CHECK(doc.at("exact_found").kind == test::JsonValue::Kind::number);
+            CHECK(front.front().has("path"));
+        } else {
+            CHECK(front.front().at("x").items.size() == p.multiobjective->dimension());
+        }
+    }
+    const auto report = report::load_report(dir.file("mo.sqlite"));
+    CHECK(report.rows.size() == 6);
+    REQUIRE_FALSE(report.notes.empty());
+    CHECK(report.notes.back().find("hypervolume gaps") != std::string::npos);
+    const auto text = test::run_pride("report " + dir.file("mo.sqlite"));
+    CHECK(text.status == 0);
+    CHECK(text.out.find("dtlz2, grid, zdt2 have several objectives") != std::string::npos);
+}
+
+TEST_CASE("multi-objective campaign entries are refused at their line when they do not fit") {
+    const test::TempDir dir("pride-mo-campaign-errors");
+    const auto refused = [&](const std::string& text, const std::vector<std::string>& words) {
+        const std::string file = dir.write("bad.toml", text);
+        const std::string message = test::input_error_message([&] { (void)engine::read_campaign(file); });
+        INFO(message);
+        CHECK(message.find("bad.toml") != std::string::npos);
+        for (const auto& w : words) CHECK(message.find(w) != std::string::npos);
+    };
+    refused(campaign_text("", "nsga2,pso"), {"pso", "one objective"});
+    refused(campaign_text("[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 3\n", "nsga2"),
+            {"nsga2", "multi-objective algorithm"});
+    refused(campaign_text("[[problem]]\nid = \"z\"\ntype = \"zdt1\"\ninstance = 2\n"), {"unknown key 'instance'"});
+    refused(campaign_text("[[problem]]\nid = \"z\"\ntype = \"zdt1\"\nobjectives = 3\n"), {"zdt1", "2 objectives"});
+    refused(campaign_text("[[problem]]\nid = \"g2\"\ntype = \"grid\"\nmap = \"" + kMaps +
+                          "file002-20x20.map\"\nstart = [0, 19]\ngoal = [19, 0]\nobjectives = \"length,speed\"\n"),
+            {"objectives", "speed"});
+    refused(campaign_text("[[problem]]\nid = \"g2\"\ntype = \"grid\"\nmap = \"" + kMaps +
+                          "file002-20x20.map\"\nstart = [0, 19]\ngoal = [19, 0]\nobjectives = [\"length\", "
+                          "\"turns\"]\nobjective = \"length\"\n"),
+            {"objective"});
+}
