@@ -39,6 +39,7 @@ class AskTell {
 
     /// The points the run wants evaluated next, one per column (0 columns once the run has
     /// ended); asking again before telling gives the same points. Blocks until the run asks or ends.
+    /// The matrix is the run's: valid until tell(), after which the run may refill it.
     const Matrix& ask();
     /// The values of the points of the last ask(), one each (NaN: worse than every value); with
     /// M objectives, M per point, the point's values together (point after point).

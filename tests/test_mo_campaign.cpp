@@ -3,6 +3,7 @@
 // the engine's run; the report says what the values are; bad entries are refused at their line.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -12,6 +13,7 @@
 #include "experiment/report/report.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/json_reader.hpp"
+#include "tests/sqlite_support.hpp"
 #include "tests/test_support.hpp"
 
 using namespace pride;
@@ -81,9 +83,38 @@ TEST_CASE("a multi-objective campaign stores each run's front and its hypervolum
     CHECK(report.rows.size() == 6);
     REQUIRE_FALSE(report.notes.empty());
     CHECK(report.notes.back().find("hypervolume gaps") != std::string::npos);
+    // The fronts' table: medians of what the runs stored, one row per (problem, algorithm).
+    REQUIRE(report.fronts.size() == 6);
+    for (const auto& row : report.fronts) {
+        INFO(row.problem << " " << row.algorithm);
+        const auto& p = *std::find_if(c.problems.begin(), c.problems.end(),
+                                      [&](const engine::CampaignProblem& q) { return q.id == row.problem; });
+        const auto& a = *std::find_if(c.algorithms.begin(), c.algorithms.end(),
+                                      [&](const engine::CampaignAlgorithm& q) { return q.id == row.algorithm; });
+        std::vector<double> igd, ratio;
+        for (std::int64_t seed = 1; seed <= 2; ++seed) {
+            const auto doc = test::parse_json(engine::run_one(p, a, c.budget, seed).solution);
+            igd.push_back(doc.at("igd_plus").number);
+            ratio.push_back(doc.at("hypervolume_ratio").number);
+        }
+        CHECK(row.runs == 2);
+        CHECK(row.igd_plus == Approx(0.5 * (igd[0] + igd[1])).epsilon(1e-12));
+        CHECK(row.hypervolume_ratio == Approx(0.5 * (ratio[0] + ratio[1])).epsilon(1e-12));
+        CHECK(row.exact_found.has_value() == p.multiobjective->is_grid());
+    }
     const auto text = test::run_pride("report " + dir.file("mo.sqlite"));
     CHECK(text.status == 0);
     CHECK(text.out.find("dtlz2, grid, zdt2 have several objectives") != std::string::npos);
+    CHECK(text.out.find("| problem | algorithm | runs | HV ratio | IGD+ | exact points | p (Holm) |") !=
+          std::string::npos);
+    // A solution that is not valid JSON (a damaged or hand-made store) drops that run from the
+    // fronts' table; the report still reads.
+    test::exec_sql(
+        dir.file("mo.sqlite"),
+        "UPDATE runs SET solution = '{not json' WHERE problem = 'zdt2' AND algorithm = 'nsga2' AND seed = 1");
+    const auto damaged = report::load_report(dir.file("mo.sqlite"));
+    for (const auto& row : damaged.fronts)
+        CHECK(row.runs == (row.problem == "zdt2" && row.algorithm == "nsga2" ? 1u : 2u));
 }
 
 TEST_CASE("multi-objective campaign entries are refused at their line when they do not fit") {

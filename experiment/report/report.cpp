@@ -126,6 +126,22 @@ std::string render_table(const ReportData& report, bool md) {
     }
     if (!md) text += "\\hline\n\\end{tabular}\n";
     for (const auto& note : report.notes) text += (md ? std::string("\n") : std::string("\n% ")) + note + "\n";
+    if (md && !report.fronts.empty()) {
+        text +=
+            "\nProblems of several objectives, per algorithm: the median hypervolume ratio (1 - the gap above), the "
+            "median IGD+ (normalised the same way; 0 is the reference front) and, on grids, the median number of the "
+            "exact front's points found; p (Holm) is the rank-sum test of each algorithm's IGD+ against the lowest "
+            "median's, Holm-corrected over the problem's algorithms.\n\n"
+            "| problem | algorithm | runs | HV ratio | IGD+ | exact points | p (Holm) |\n"
+            "|---|---|---:|---:|---:|---:|---:|\n";
+        for (const auto& r : report.fronts)
+            text += fmt::format("| {} | {} | {} | {:.4g} | {:.4g} | {} | {} |\n", markdown(r.problem),
+                                markdown(r.algorithm), r.runs, r.hypervolume_ratio, r.igd_plus,
+                                r.exact_found ? fmt::format("{:g}", *r.exact_found) : "-",
+                                r.best     ? "best"
+                                : r.p_holm ? fmt::format("{:.3g}{}", *r.p_holm, *r.p_holm < 0.05 ? "*" : "")
+                                           : "");
+    }
     if (const auto& f = report.friedman) {
         text += md ? "\nFriedman average ranks over " : "\n% Friedman average ranks over ";
         text += fmt::format("{} problems (1 = best; median values):", f->problems);
@@ -400,8 +416,43 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
             stats::critical_difference(report.friedman->test.average_ranks, cells.size(), 0.05);
     }
     std::set<std::string> fronts;
+    std::map<std::string, std::map<std::string, std::vector<const StoredRun*>>> by_front;
     for (const StoredRun& run : store.runs)
-        if (run.front) fronts.insert(run.problem);
+        if (run.front && run.igd_plus) {
+            fronts.insert(run.problem);
+            by_front[run.problem][run.algorithm].push_back(&run);
+        }
+    for (const auto& [problem, by_algorithm] : by_front) {
+        std::vector<FrontRow> rows;
+        std::map<std::string, std::vector<double>> igd;
+        for (const auto& [algorithm, runs] : by_algorithm) {
+            FrontRow r;
+            r.problem = problem;
+            r.algorithm = algorithm;
+            r.runs = runs.size();
+            std::vector<double> ratio, found;
+            for (const StoredRun* run : runs) {
+                ratio.push_back(1.0 - run->best.value_or(1.0));
+                igd[algorithm].push_back(*run->igd_plus);
+                if (run->exact_found) found.push_back(static_cast<double>(*run->exact_found));
+            }
+            r.hypervolume_ratio = median_of(ratio);
+            r.igd_plus = median_of(igd[algorithm]);
+            if (found.size() == runs.size()) r.exact_found = median_of(found);
+            rows.push_back(r);
+        }
+        std::size_t best = 0;
+        for (std::size_t i = 1; i < rows.size(); ++i)
+            if (rows[i].igd_plus < rows[best].igd_plus) best = i;
+        rows[best].best = true;
+        std::vector<double> p;
+        for (const auto& r : rows)
+            if (!r.best) p.push_back(stats::rank_sum_test(igd[r.algorithm], igd[rows[best].algorithm]).p_value);
+        const auto adjusted = stats::holm(p);
+        for (std::size_t i = 0, k = 0; i < rows.size(); ++i)
+            if (!rows[i].best) rows[i].p_holm = adjusted[k++];
+        report.fronts.insert(report.fronts.end(), rows.begin(), rows.end());
+    }
     if (!fronts.empty()) {
         std::string list;
         for (const auto& p : fronts) list += (list.empty() ? "" : ", ") + p;

@@ -56,6 +56,17 @@ struct ReportOptions {
 /// COCO's final target precision: a run whose f - f_opt is at most this has solved the problem.
 inline constexpr double solved_precision = 1e-8;
 
+/// A problem of several objectives, per algorithm: what its runs' fronts reached (medians).
+struct FrontRow {
+    std::string problem, algorithm;
+    std::size_t runs = 0;
+    double hypervolume_ratio = 0;       // median of 1 - the hypervolume gap
+    double igd_plus = 0;                // median IGD+
+    std::optional<double> exact_found;  // grids: median points of the exact front found
+    bool best = false;                  // the lowest median IGD+ of the problem (ties: the first)
+    std::optional<double> p_holm;       // IGD+ against the best's, rank-sum, Holm over the problem
+};
+
 struct ReportData {
     std::string campaign;
     std::optional<double> target;
@@ -70,6 +81,8 @@ struct ReportData {
     // compared runs used evaluation counts more than 5 % apart, and the whole-map planners exempt
     // from that comparison (they evaluate no objective). Rendered after the table.
     std::vector<std::string> notes;
+    // Problems of several objectives (their runs store fronts): rendered after the notes.
+    std::vector<FrontRow> fronts;
 };
 
 /// The report of the runs of `store` (no rows when it holds none).

@@ -466,8 +466,12 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
     }
     Query q(db, fmt::format(
                     "SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, "
-                    "history_evaluations, {}, {}, {}, {}, {}, {}, substr(solution, 1, 1) = '{{' FROM runs ORDER BY "
-                    "problem, algorithm, seed",
+                    "history_evaluations, {}, {}, {}, {}, {}, {}, substr(solution, 1, 1) = '{{', "
+                    // A front's indicators, by SQLite's JSON functions; NULL for a solution that is not
+                    // valid JSON (a damaged or hand-made store), which then has no row of fronts.
+                    "CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN json_extract(solution, "
+                    "'$.igd_plus') END, CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN "
+                    "json_extract(solution, '$.exact_found') END FROM runs ORDER BY problem, algorithm, seed",
                     has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"),
                     optional_column(run_columns, "trace_targets"), optional_column(run_columns, "trace_evaluations"),
                     optional_column(run_columns, "max_evaluations"), optional_column(run_columns, "checkpoints"))
@@ -514,6 +518,10 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
                                                   *r.max_evaluations));
         r.checkpoints = trace(q, 15, "checkpoints", r.evaluations);
         r.front = q.integer(16, "solution", 0) == 1;
+        if (r.front) {
+            r.igd_plus = q.optional_number(17, "solution: igd_plus");
+            r.exact_found = q.optional_integer(18, "solution: exact_found", 0);
+        }
         // The analysis of target hits (experiment/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.
         if (store.precisions && has_problems && !problem_ids.count(r.problem))

@@ -60,6 +60,8 @@ struct StoredRun {
     // A multi-objective run (its solution is a front, an object, where other runs store a point
     // or a path): its value is the hypervolume gap (experiment/campaign.hpp).
     bool front = false;
+    std::optional<double> igd_plus;           // a front's IGD+ (normalised as the hypervolume gap)
+    std::optional<std::int64_t> exact_found;  // a grid front's points of the exact front
     std::vector<TracePoint> checkpoints;
 };
 
