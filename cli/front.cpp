@@ -58,11 +58,6 @@ engine::MoProblemSpec problem_spec(const FrontOptions& o) {
     return s;
 }
 
-std::string row_json(const Matrix& m, Eigen::Index j) {
-    std::vector<double> v(m.col(j).data(), m.col(j).data() + m.rows());
-    return json_array(v);
-}
-
 }  // namespace
 
 int front_command(const FrontOptions& o, std::ostream& out) {
@@ -123,17 +118,8 @@ int front_command(const FrontOptions& o, std::ostream& out) {
     const std::string where =
         grid ? "grid" : fmt::format("{} (n = {}, M = {})", problem.name(), problem.dimension(), problem.objectives());
     if (o.json) {
-        std::string list, points;
+        std::string list;
         for (const auto& n : names) list += (list.empty() ? "" : ", ") + json_string(n);
-        for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
-            points += points.empty() ? "" : ", ";
-            if (grid)
-                points += fmt::format("{{\"f\": {}, \"legal\": {}, \"path\": {}}}", row_json(r.f, j),
-                                      r.feasible[static_cast<std::size_t>(j)] ? "true" : "false",
-                                      json_cells(r.paths[static_cast<std::size_t>(j)]));
-            else
-                points += fmt::format("{{\"f\": {}, \"x\": {}}}", row_json(r.f, j), row_json(r.x, j));
-        }
         std::string quality = "null";
         if (q)
             quality = fmt::format(
@@ -144,9 +130,9 @@ int front_command(const FrontOptions& o, std::ostream& out) {
                 q->exact_found ? fmt::format(", \"exact_found\": {}", *q->exact_found) : "");
         text = fmt::format(
             "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"objectives\": [{}], \"seed\": {}, \"evaluations\": {}, "
-            "\"iterations\": {}, \"wall_ms\": {}, \"front\": [{}], \"quality\": {}}}\n",
+            "\"iterations\": {}, \"wall_ms\": {}, \"front\": {}, \"quality\": {}}}\n",
             json_string(r.algorithm), json_string(problem.name()), problem.dimension(), list, o.seed, r.evaluations,
-            r.iterations, json_number(r.wall_ms), points, quality);
+            r.iterations, json_number(r.wall_ms), engine::front_json(r), quality);
     } else {
         text = fmt::format(
             "algo         {}\nproblem      {}\nseed         {}\nevaluations  {}\niterations   {}\nwall_ms      {:.3f}\n"

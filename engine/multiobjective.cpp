@@ -7,6 +7,7 @@
 #include <cmath>
 #include <mutex>
 
+#include "engine/json.hpp"
 #include "engine/mo_targets.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
@@ -260,6 +261,22 @@ MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const 
             problem.prepared().target->problem);
     }
     return out;
+}
+
+std::string front_json(const MoRunResult& r) {
+    const auto column = [](const Matrix& m, Eigen::Index j) {
+        return json_array(std::vector<double>(m.col(j).data(), m.col(j).data() + m.rows()));
+    };
+    const bool grid = !r.paths.empty();
+    std::string points;
+    for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
+        points += points.empty() ? "" : ", ";
+        const auto k = static_cast<std::size_t>(j);
+        points += grid ? fmt::format("{{\"f\": {}, \"legal\": {}, \"path\": {}}}", column(r.f, j),
+                                     r.feasible[k] ? "true" : "false", json_cells(r.paths[k]))
+                       : fmt::format("{{\"f\": {}, \"x\": {}}}", column(r.f, j), column(r.x, j));
+    }
+    return "[" + points + "]";
 }
 
 MoQuality quality(const MoProblem& problem, const Matrix& f) {

@@ -99,6 +99,11 @@ struct MoRunResult {
     std::vector<std::int64_t> history_evaluations;
 };
 
+/// The set of a run as a JSON array, one object per point in the result's order: {"f": [...],
+/// "x": [...]}, or on grids {"f": [...], "legal": true, "path": [[x, y], ...]} (pride front --json,
+/// campaign stores).
+std::string front_json(const MoRunResult& r);
+
 /// Every check a run would make, without running: the name, that it is a multi-objective
 /// algorithm, its parameters, the budget. InputError naming what is wrong.
 void check(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budget& budget);

@@ -1039,29 +1039,16 @@ RunRecord run_multiobjective(const CampaignProblem& p, const CampaignAlgorithm& 
     const MoRunResult result = run(a.spec, problem, budget_of(budget, p), static_cast<std::uint64_t>(seed));
     const MoQuality q = quality(problem, result.f);
     const bool grid = problem.is_grid();
-    std::string names, points;
+    std::string names;
     for (const auto& n : problem.objective_names()) names += (names.empty() ? "" : ", ") + json_string(n);
-    const auto column = [](const Matrix& m, Eigen::Index j) {
-        return json_array(std::vector<double>(m.col(j).data(), m.col(j).data() + m.rows()));
-    };
-    bool any_legal = !grid && result.f.cols() > 0;
-    for (Eigen::Index j = 0; j < result.f.cols(); ++j) {
-        points += points.empty() ? "" : ", ";
-        if (grid) {
-            const auto k = static_cast<std::size_t>(j);
-            any_legal = any_legal || result.feasible[k] != 0;
-            points += fmt::format("{{\"f\": {}, \"legal\": {}, \"path\": {}}}", column(result.f, j),
-                                  result.feasible[k] ? "true" : "false", json_cells(result.paths[k]));
-        } else {
-            points += fmt::format("{{\"f\": {}, \"x\": {}}}", column(result.f, j), column(result.x, j));
-        }
-    }
     r.solution = fmt::format(
-        "{{\"objectives\": [{}], \"hypervolume_ratio\": {}, \"igd_plus\": {}, \"exact_found\": {}, \"front\": [{}]}}",
+        "{{\"objectives\": [{}], \"hypervolume_ratio\": {}, \"igd_plus\": {}, \"exact_found\": {}, \"front\": {}}}",
         names, json_number(q.hypervolume_ratio), json_number(q.igd_plus),
-        q.exact_found ? std::to_string(*q.exact_found) : std::string("null"), points);
+        q.exact_found ? std::to_string(*q.exact_found) : std::string("null"), front_json(result));
     r.best = 1.0 - q.hypervolume_ratio;
-    r.feasible = any_legal;
+    // Feasible: a point found (on grids, a legal path).
+    r.feasible = grid ? std::any_of(result.feasible.begin(), result.feasible.end(), [](char c) { return c != 0; })
+                      : result.f.cols() > 0;
     r.evaluations = result.evaluations;
     r.iterations = result.iterations;
     r.wall_ms = result.wall_ms;
