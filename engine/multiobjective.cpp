@@ -155,14 +155,14 @@ std::vector<std::string> MoProblem::objective_names() const {
     return prepared_->objective_names;
 }
 
-const Matrix& MoProblem::reference_front(std::size_t points) const {
+const Matrix& MoProblem::reference_front() const {
     const MoPrepared& p = *prepared_;
     require(!std::holds_alternative<MoCallbackSpec>(p.spec), "problem",
             p.name + " is a user's function: it has no reference front");
     std::call_once(p.front_once, [&] {
         try {
             if (const auto* b = std::get_if<multiobjective::Benchmark>(&p.target->problem))
-                p.front = b->reference_front(points);
+                p.front = b->reference_front(reference_points);
             else
                 exact_front(p);
         } catch (const InputError& e) {

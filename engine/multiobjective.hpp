@@ -74,10 +74,12 @@ class MoProblem {
     std::size_t objectives() const;
     /// f1, f2, ... for boxes; the criteria's names (length, turns, angle_penalty, clearance) on grids.
     std::vector<std::string> objective_names() const;
-    /// The reference front (M rows, one column per point): the analytic front sampled with at most
-    /// `points` points (catalog problems), or the grid's exact front (ParetoSearch, computed once
-    /// and shared by copies); empty for a callback. InputError when a grid's front is too large.
-    const Matrix& reference_front(std::size_t points = 1000) const;
+    /// The reference front (M rows, one column per point), computed once and shared by copies: the
+    /// analytic front sampled with at most reference_points points (catalog problems), or the
+    /// grid's exact front (ParetoSearch). InputError for a callback (it has none) and when a
+    /// grid's front does not fit in memory.
+    const Matrix& reference_front() const;
+    static constexpr std::size_t reference_points = 1000;
     /// On grids, the exact front's paths, in the columns' order (after reference_front()).
     const std::vector<grid::Path>& reference_paths() const;
 
