@@ -471,7 +471,9 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
                     // valid JSON (a damaged or hand-made store), which then has no row of fronts.
                     "CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN json_extract(solution, "
                     "'$.igd_plus') END, CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN "
-                    "json_extract(solution, '$.exact_found') END FROM runs ORDER BY problem, algorithm, seed",
+                    "json_extract(solution, '$.exact_found') END, CASE WHEN substr(solution, 1, 1) = '{{' AND "
+                    "json_valid(solution) THEN json_extract(solution, '$.front') END FROM runs ORDER BY problem, "
+                    "algorithm, seed",
                     has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"),
                     optional_column(run_columns, "trace_targets"), optional_column(run_columns, "trace_evaluations"),
                     optional_column(run_columns, "max_evaluations"), optional_column(run_columns, "checkpoints"))
@@ -521,6 +523,7 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
         if (r.front) {
             r.igd_plus = q.optional_number(17, "solution: igd_plus");
             r.exact_found = q.optional_integer(18, "solution: exact_found", 0);
+            if (!q.is_null(19)) r.front_json = q.text(19, "solution: front");
         }
         // The analysis of target hits (experiment/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.

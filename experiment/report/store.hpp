@@ -62,6 +62,7 @@ struct StoredRun {
     bool front = false;
     std::optional<double> igd_plus;           // a front's IGD+ (normalised as the hypervolume gap)
     std::optional<std::int64_t> exact_found;  // a grid front's points of the exact front
+    std::string front_json;                   // the front as stored (engine::front_json), or empty
     std::vector<TracePoint> checkpoints;
 };
 

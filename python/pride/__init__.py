@@ -434,7 +434,8 @@ def read_store(path, *, dataframe=None):
     """The runs of a campaign store: a DataFrame when pandas is present (or ``dataframe=True``),
     else a list of dicts (problem, algorithm, seed, best, evaluations, wall_ms, optimum, history,
     history_evaluations, encoding, and COCO's trace: ``trace_targets`` and ``trace_evaluations``,
-    (n, 2) arrays of rows (evaluations, best so far) at COCO's target and evaluation triggers)."""
+    (n, 2) arrays of rows (evaluations, best so far) at COCO's target and evaluation triggers;
+    ``front``: a multi-objective run's non-dominated set, an (n, M) array, None for other runs)."""
     store = _pride.read_store(_path("path", path))
     dataframe = _bool("dataframe", dataframe, optional=True)
     pd = _pandas()

@@ -325,6 +325,29 @@ py::dict read_store(const py::object& store) {
         }
         return a;
     };
+    // A multi-objective run's front: its points' objective values as an (n, M) array (None for
+    // other runs and for a front whose entries are not lists of numbers of one length).
+    const py::object loads = py::module_::import("json").attr("loads");
+    const auto front_array = [&loads](const std::string& text) -> py::object {
+        if (text.empty()) return py::none();
+        std::vector<std::vector<double>> rows;
+        for (const auto& point : loads(text)) {
+            if (!py::isinstance<py::dict>(point) || !point.cast<py::dict>().contains("f")) return py::none();
+            std::vector<double> f;
+            for (const auto& v : point.cast<py::dict>()["f"]) {
+                if (PyBool_Check(v.ptr()) || (!py::isinstance<py::float_>(v) && !py::isinstance<py::int_>(v)))
+                    return py::none();
+                f.push_back(v.cast<double>());
+            }
+            if (!rows.empty() && f.size() != rows.front().size()) return py::none();
+            rows.push_back(std::move(f));
+        }
+        const auto m = rows.empty() ? py::ssize_t{0} : static_cast<py::ssize_t>(rows.front().size());
+        py::array_t<double> a({static_cast<py::ssize_t>(rows.size()), m});
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            std::copy(rows[i].begin(), rows[i].end(), a.mutable_data() + static_cast<py::ssize_t>(i) * m);
+        return a;
+    };
     py::list runs;
     for (const auto& r : s.runs) {
         py::array_t<std::int64_t> he(static_cast<py::ssize_t>(r.history_evaluations.size()));
@@ -337,7 +360,8 @@ py::dict read_store(const py::object& store) {
                              py::arg("optimum") = optional_number(r.optimum),
                              py::arg("history") = vector_array(r.history), py::arg("history_evaluations") = he,
                              py::arg("encoding") = r.encoding, py::arg("trace_targets") = trace_array(r.trace_targets),
-                             py::arg("trace_evaluations") = trace_array(r.trace_evaluations)));
+                             py::arg("trace_evaluations") = trace_array(r.trace_evaluations),
+                             py::arg("front") = front_array(r.front_json)));
     }
     py::list problems;
     if (s.problems)

@@ -138,8 +138,14 @@ def test_a_python_campaign_stores_multiobjective_runs(tmp_path):
     assert len(by) == 6
     direct = pride.front("nsga2", "zdt1", evals=1500, seed=2)
     assert by[("zdt1", 2)]["best"] == 1.0 - direct.quality["hypervolume_ratio"]
+    assert np.array_equal(by[("zdt1", 2)]["front"], direct.f)  # the stored front, as an (n, M) array
+    assert by[("dtlz1", 1)]["front"].shape[1] == 4
     on_grid = pride.plan_front(grid, (0, 19), (19, 0), objectives="length,turns", encoding="free", evals=1500, seed=1)
     assert by[("g", 1)]["best"] == 1.0 - on_grid.quality["hypervolume_ratio"]
+    # A single-objective store's runs have no front.
+    plain = pride.Campaign("so", seeds=1, evals=20, algorithms=["pso"], problems=[{"id": "s", "problem": "sphere", "dim": 2}])
+    plain.run(str(tmp_path / "so.sqlite"))
+    assert pride.read_store(str(tmp_path / "so.sqlite"), dataframe=False)[0]["front"] is None
     with pytest.raises(ValueError, match="objectives: only for multi-objective problems"):
         pride.Campaign("bad", seeds=1, evals=10, algorithms=["pso"],
                        problems=[{"id": "s", "problem": "sphere", "dim": 2, "objectives": 2}])
