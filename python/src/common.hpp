@@ -188,6 +188,11 @@ std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::objec
 std::function<void(std::int64_t)> box_check(const engine::AlgorithmSpec& algorithm, const std::string& name,
                                             const engine::Budget& budget);
 
+/// A check_size for parse_bounds of a multi-objective box of `objectives` values per point (its
+/// checks need M, which a box check of a single-objective algorithm does not know): 1 to 10^8
+/// coordinates, and the box with a run's populations (at least 100 points and values) in memory.
+std::function<void(std::int64_t)> multiobjective_box_check(std::int64_t objectives);
+
 /// An observer from a Python callable fn(iteration, evaluations, best_f, population, fitness):
 /// population an (n, dim) and fitness an (n,) read-only copy, the observer's to keep; returning
 /// False stops the run.

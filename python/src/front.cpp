@@ -132,12 +132,7 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
         require(*objectives >= 2 && *objectives <= 10'000, "objectives",
                 "must be in [2, 10000], got " + std::to_string(*objectives));
         const auto m = *objectives;
-        auto [lower, upper] = parse_bounds(bounds, dim, [m](std::int64_t d) {
-            require(d >= 1 && d <= 100'000'000, "bounds", "the box must have 1 to 100000000 coordinates");
-            // The box, and a run's populations of points and values (at least 100 of each).
-            require_memory(8.0 * (2.0 * static_cast<double>(d) + 600.0 * static_cast<double>(d + m)), "bounds",
-                           "a box of " + std::to_string(d) + " coordinates");
-        });
+        auto [lower, upper] = parse_bounds(bounds, dim, multiobjective_box_check(m));
         spec = mo_callback(problem, vectorized, std::move(lower), std::move(upper), m, errors);
         reference = false;  // a function has no reference front
     }
@@ -185,6 +180,15 @@ py::dict plan_front(const Grid& g, const py::object& start, const py::object& go
 }
 
 }  // namespace
+
+std::function<void(std::int64_t)> multiobjective_box_check(std::int64_t objectives) {
+    return [objectives](std::int64_t d) {
+        require(d >= 1 && d <= 100'000'000, "bounds", "the box must have 1 to 100000000 coordinates");
+        // The box, and a run's populations of points and values (at least 100 of each).
+        require_memory(8.0 * (2.0 * static_cast<double>(d) + 600.0 * static_cast<double>(d + objectives)), "bounds",
+                       "a box of " + std::to_string(d) + " coordinates");
+    };
+}
 
 py::dict front_result_dict(const engine::MoRunResult& r, std::size_t objectives) {
     std::vector<std::string> names;

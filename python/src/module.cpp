@@ -8,7 +8,6 @@
 #include "common.hpp"
 #include "engine/ask_tell.hpp"
 #include "engine/registry.hpp"
-#include "framework/memory.hpp"
 #include "problems/continuous/catalog.hpp"
 
 namespace pride::python {
@@ -179,16 +178,8 @@ class Optimizer {
         const std::int64_t m = objectives.value_or(1);
         if (objectives) require(m >= 1 && m <= 10'000, "objectives", "must be in [1, 10000], got " + std::to_string(m));
         // A multi-objective run's checks need its M, made by AskTell: here only the box's size.
-        auto [lower, upper] =
-            entry.multiobjective()
-                ? parse_bounds(
-                      bounds, dim,
-                      [m](std::int64_t d) {
-                          require(d >= 1 && d <= 100'000'000, "bounds", "the box must have 1 to 100000000 coordinates");
-                          require_memory(8.0 * (2.0 * static_cast<double>(d) + 600.0 * static_cast<double>(d + m)),
-                                         "bounds", "a box of " + std::to_string(d) + " coordinates");
-                      })
-                : parse_bounds(bounds, dim, box_check(algorithm, "bounds", b));
+        auto [lower, upper] = parse_bounds(
+            bounds, dim, entry.multiobjective() ? multiobjective_box_check(m) : box_check(algorithm, "bounds", b));
         py::gil_scoped_release release;
         run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed, m);
     }
