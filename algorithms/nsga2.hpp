@@ -1,5 +1,5 @@
 #pragma once
-// NSGA-II on boxes (issue 28).
+// NSGA-II on boxes and on chains (issue 28).
 //
 //   Deb, K., Pratap, A., Agarwal, S. and Meyarivan, T. (2002). A fast and elitist multiobjective
 //     genetic algorithm: NSGA-II. IEEE Transactions on Evolutionary Computation 6(2), 182-197.
@@ -15,7 +15,13 @@
 //       not fit with the largest crowding distances (the Survival policy: CrowdingSurvival; NSGA-III's
 //       reference directions are the other policy of this skeleton); each member of P_{t+1} keeps
 //       its rank and crowding distance for the tournaments of (1).
-// The initial population: uniform in the box, evaluated, ranked and crowded, recorded as iteration 0.
+// The initial population: uniform in the box (on chains: the space's random chains), evaluated,
+// ranked and crowded, recorded as iteration 0.
+// On chains (grid paths) the skeleton is the same and only the variation differs: the issue's
+// chain operators as policies (Nsga2<ChainCrossover, ChainMutationChoice>: crossover at a common
+// cell with p_c = 0.9, then per child, with probability p_m, one of the GA's and IQGA's mutations;
+// algorithms/parts/chain_operators.hpp). The paper's p_m = 1/n per variable has no chain form;
+// decided by this project: p_m per child (the registry's default says which value).
 // The result: the non-dominated members of the final population.
 //
 // Where the paper is silent this follows Deb's reference code (nsga2-gnu, revision 1.1.6), as
@@ -29,13 +35,16 @@
 // to the lower index in R_t (parents before children), so that one seed gives one result; when
 // the budget ends inside a generation, the children not evaluated have +inf in every objective.
 #include <algorithm>
+#include <concepts>
 #include <cstdint>
 #include <numeric>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "algorithms/parts/chain_operators.hpp"
 #include "algorithms/parts/crossover.hpp"
 #include "algorithms/parts/mutation.hpp"
 #include "framework/error.hpp"
@@ -123,6 +132,18 @@ struct CrowdingSurvival {
     }
 };
 
+/// The paper's settings of its operators on boxes (sec. V: eta_c = 20, p_c = 0.9; eta_m = 20,
+/// p_m = 1/n, written as p_m < 0); other policies (on chains) keep their own defaults.
+template <class Operator>
+Operator default_operator() {
+    if constexpr (std::is_same_v<Operator, SbxCrossover>)
+        return SbxCrossover{20.0, 0.9};
+    else if constexpr (std::is_same_v<Operator, PolynomialMutation>)
+        return PolynomialMutation{20.0, -1.0};
+    else
+        return Operator{};
+}
+
 /// Which tournament decides between two entrants (see the header comment).
 enum class Tournament { paper, code };
 
@@ -131,8 +152,8 @@ enum class Tournament { paper, code };
 template <class Crossover = SbxCrossover, class Mutation = PolynomialMutation, class Survival = nsga::CrowdingSurvival>
 struct Nsga2 {
     std::int64_t population = 100;  // N, a multiple of 4
-    Crossover crossover{20.0, 0.9};
-    Mutation mutation{20.0, -1.0};  // p_m < 0: 1/n
+    Crossover crossover = nsga::default_operator<Crossover>();
+    Mutation mutation = nsga::default_operator<Mutation>();
     Survival survival{};
     nsga::Tournament tournament = nsga::Tournament::paper;
 
@@ -147,6 +168,7 @@ struct Nsga2 {
         mutation.validate(name());
     }
 
+    /// On boxes: SBX and polynomial mutation (the Crossover and Mutation policies' defaults).
     template <MultiObjectiveProblem P, class O = NoObserver>
     MultiObjectiveResult run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
         validate();
@@ -165,20 +187,109 @@ struct Nsga2 {
         Matrix r(rows, 2 * cols), fr(mrows, 2 * cols), next(rows, cols), fnext(mrows, cols);
         for (Eigen::Index j = 0; j < cols; ++j)
             for (std::size_t i = 0; i < dim; ++i) r(static_cast<Eigen::Index>(i), j) = rng.uniform(lo[i], hi[i]);
-        {
-            auto parents = fr.leftCols(cols);
-            Matrix values(mrows, cols);
-            state.evaluate_columns(problem, r.leftCols(cols), values);
-            parents = values;
+        state.evaluate_columns(problem, r.leftCols(cols), fnext);
+        fr.leftCols(cols) = fnext;
+        Generation g(n, m);
+        g.rank_initial(*this, fnext, rng);
+        next = r.leftCols(cols);
+        state.end_iteration(observer, next, fnext);
+
+        const auto cross = crossover.prepare(dim);
+        const auto mutate = mutation.prepare(dim);
+        Matrix fq(mrows, cols);
+        while (!state.done()) {
+            // (1)
+            g.mate(*this, fr, rng, [&](std::size_t a, std::size_t b, std::size_t child) {
+                const auto c1 = cols + static_cast<Eigen::Index>(child), c2 = c1 + 1;
+                r.col(c1) = r.col(static_cast<Eigen::Index>(a));
+                r.col(c2) = r.col(static_cast<Eigen::Index>(b));
+                cross(column(r, c1), column(r, c2), lo, hi, rng);
+                mutate(column(r, c1), lo, hi, rng);
+                mutate(column(r, c2), lo, hi, rng);
+            });
+            // (2)
+            state.evaluate_columns(problem, r.rightCols(cols), fq);
+            fr.rightCols(cols) = fq;
+            // (3)
+            g.survive(*this, fr, fnext, rng);
+            for (std::size_t k = 0; k < n; ++k)
+                next.col(static_cast<Eigen::Index>(k)) = r.col(static_cast<Eigen::Index>(g.chosen[k]));
+            r.leftCols(cols) = next;
+            fr.leftCols(cols) = fnext;
+            state.end_iteration(observer, next, fnext);
         }
+        const auto front = g.first_front();
+        return state.finish(next, fnext, front);
+    }
+
+    /// On chains (grid paths, framework/multi_objective.hpp's MultiObjectiveChainProblem): the same
+    /// generation with the chain policies (ChainCrossover: crossover at a common cell;
+    /// ChainMutationChoice: the GA's and IQGA's mutations), from the space's random chains (random
+    /// or SITP walks, as the space is set).
+    template <MultiObjectiveChainProblem P, class O = NoObserver>
+    BasicMultiObjectiveResult<std::vector<typename P::chain_type>> run(P problem, const Termination& termination,
+                                                                       std::uint64_t seed, O&& observer = O{})
+        const requires std::invocable<const Crossover&, P&, typename P::chain_type&, typename P::chain_type&, Rng&> &&
+        std::invocable<const Mutation&, P&, typename P::chain_type&, Rng&> {
+        validate();
+        auto start = start_multiobjective_run(name(), problem, termination, seed);
+        const std::size_t m = start.objectives;
+        Rng& rng = start.rng;
+        MultiObjectiveRunState& state = start.state;
+        if constexpr (requires { survival.validate(m, name()); }) survival.validate(m, name());
+        const auto n = static_cast<std::size_t>(population);
+        const auto mrows = static_cast<Eigen::Index>(m), cols = static_cast<Eigen::Index>(n);
+
+        using Chain = typename P::chain_type;
+        std::vector<Chain> r(2 * n), next(n);  // R_t = P_t (the first N) and Q_t (the last N)
+        Matrix fr(mrows, 2 * cols), fnext(mrows, cols), fq(mrows, cols);
+        for (std::size_t j = 0; j < n; ++j) problem.random_chain(rng, r[j]);
+        state.evaluate_chains(problem, std::span<const Chain>(r).first(n), fnext);
+        fr.leftCols(cols) = fnext;
+        Generation g(n, m);
+        g.rank_initial(*this, fnext, rng);
+        std::copy(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n), next.begin());
+        state.end_iteration(observer, next, fnext);
+
+        while (!state.done()) {
+            // (1)
+            g.mate(*this, fr, rng, [&](std::size_t a, std::size_t b, std::size_t child) {
+                Chain& c1 = r[n + child];
+                Chain& c2 = r[n + child + 1];
+                c1 = r[a];  // assignment keeps the child's storage: no allocation once warmed up
+                c2 = r[b];
+                crossover(problem, c1, c2, rng);
+                mutation(problem, c1, rng);
+                mutation(problem, c2, rng);
+            });
+            // (2)
+            state.evaluate_chains(problem, std::span<const Chain>(r).subspan(n, n), fq);
+            fr.rightCols(cols) = fq;
+            // (3)
+            g.survive(*this, fr, fnext, rng);
+            for (std::size_t k = 0; k < n; ++k) next[k] = r[g.chosen[k]];
+            for (std::size_t k = 0; k < n; ++k) r[k] = next[k];
+            fr.leftCols(cols) = fnext;
+            state.end_iteration(observer, next, fnext);
+        }
+        const auto front = g.first_front();
+        return state.finish(next, fnext, front);
+    }
+
+  private:
+    /// What a generation keeps besides the population, the same on boxes and chains: the standing
+    /// for the tournaments, the permutations, the survivors and the survival's buffers.
+    struct Generation {
+        std::size_t n;
         nsga::Standing standing;
         nsga::SurvivalScratch scratch;
-        std::vector<std::size_t> chosen;
-        {
-            const Matrix f0 = fr.leftCols(cols);
-            survival(f0, n, chosen, standing, scratch, rng);  // every member survives: ranks and distances
-            // survival lists the members by front; the population keeps its order, so the standing
-            // is put back in index order.
+        std::vector<std::size_t> chosen, perm;
+        Generation(std::size_t size, std::size_t) : n(size), perm(size) {}
+
+        /// The initial population's standing, in its own order (every member survives; the
+        /// survival lists them by front).
+        void rank_initial(const Nsga2& a, const Matrix& f0, Rng& rng) {
+            a.survival(f0, n, chosen, standing, scratch, rng);
             nsga::Standing ordered{std::vector<std::size_t>(n), std::vector<double>(n)};
             for (std::size_t k = 0; k < n; ++k) {
                 ordered.rank[chosen[k]] = standing.rank[k];
@@ -186,55 +297,41 @@ struct Nsga2 {
             }
             standing = std::move(ordered);
         }
-        {
-            const Matrix p0 = r.leftCols(cols), f0 = fr.leftCols(cols);
-            state.end_iteration(observer, p0, f0);
-        }
 
-        const auto cross = crossover.prepare(dim);
-        const auto mutate = mutation.prepare(dim);
-        std::vector<std::size_t> perm(n);
-        Matrix fq(mrows, cols);
-        while (!state.done()) {
-            // (1) two permutations, four entrants at a time: two tournaments, two children.
+        /// (1) two permutations, four entrants at a time: two tournaments, then breed(a, b, child)
+        /// makes children `child` and `child + 1` (counted from 0) of parents a and b.
+        template <class Breed>
+        void mate(const Nsga2& a, const Matrix& fr, Rng& rng, Breed&& breed) {
             std::size_t child = 0;
             for (int pass = 0; pass < 2; ++pass) {
                 std::iota(perm.begin(), perm.end(), std::size_t{0});
                 for (std::size_t i = n; i > 1; --i)
                     std::swap(perm[i - 1], perm[static_cast<std::size_t>(rng.below(i))]);
                 for (std::size_t i = 0; i + 3 < n; i += 4) {
-                    const std::size_t a = winner(perm[i], perm[i + 1], fr, standing, rng);
-                    const std::size_t b = winner(perm[i + 2], perm[i + 3], fr, standing, rng);
-                    const auto c1 = cols + static_cast<Eigen::Index>(child), c2 = c1 + 1;
-                    r.col(c1) = r.col(static_cast<Eigen::Index>(a));
-                    r.col(c2) = r.col(static_cast<Eigen::Index>(b));
-                    cross(column(r, c1), column(r, c2), lo, hi, rng);
-                    mutate(column(r, c1), lo, hi, rng);
-                    mutate(column(r, c2), lo, hi, rng);
+                    const std::size_t p1 = a.winner(perm[i], perm[i + 1], fr, standing, rng);
+                    const std::size_t p2 = a.winner(perm[i + 2], perm[i + 3], fr, standing, rng);
+                    breed(p1, p2, child);
                     child += 2;
                 }
             }
-            // (2)
-            state.evaluate_columns(problem, r.rightCols(cols), fq);
-            fr.rightCols(cols) = fq;
-            // (3)
-            survival(fr, n, chosen, standing, scratch, rng);
-            for (std::size_t k = 0; k < n; ++k) {
-                next.col(static_cast<Eigen::Index>(k)) = r.col(static_cast<Eigen::Index>(chosen[k]));
-                fnext.col(static_cast<Eigen::Index>(k)) = fr.col(static_cast<Eigen::Index>(chosen[k]));
-            }
-            r.leftCols(cols) = next;
-            fr.leftCols(cols) = fnext;
-            state.end_iteration(observer, next, fnext);
         }
-        std::vector<std::size_t> front;
-        for (std::size_t k = 0; k < n; ++k)
-            if (standing.rank[k] == 0) front.push_back(k);
-        const Matrix p = r.leftCols(cols), f = fr.leftCols(cols);
-        return state.finish(p, f, front);
-    }
 
-  private:
+        /// (3) the survivors of R_t into `chosen` (indices into R_t), their values into fnext.
+        void survive(const Nsga2& a, const Matrix& fr, Matrix& fnext, Rng& rng) {
+            a.survival(fr, n, chosen, standing, scratch, rng);
+            for (std::size_t k = 0; k < n; ++k)
+                fnext.col(static_cast<Eigen::Index>(k)) = fr.col(static_cast<Eigen::Index>(chosen[k]));
+        }
+
+        /// The members of the first front, in population order.
+        std::vector<std::size_t> first_front() const {
+            std::vector<std::size_t> front;
+            for (std::size_t k = 0; k < n; ++k)
+                if (standing.rank[k] == 0) front.push_back(k);
+            return front;
+        }
+    };
+
     /// The winner of a binary tournament between members a and b of the population.
     std::size_t winner(std::size_t a, std::size_t b, const Matrix& f, const nsga::Standing& s, Rng& rng) const {
         if constexpr (!Survival::ranked_mating) return rng.uniform() <= 0.5 ? a : b;

@@ -23,11 +23,11 @@ engine::MoProblemSpec problem_spec(const FrontOptions& o) {
     const bool grid = !o.map.empty();
     require(grid != !o.problem.empty(), "problem", "give either --problem or --map (with --start and --goal)");
     if (!grid) {
-        require(o.start.empty() && o.goal.empty() && o.encoding.empty() && !o.waypoints && o.inflate == 0 &&
-                    !o.corner_cutting && o.connector == "repair" && o.svg.empty() && o.png.empty(),
+        require(o.start.empty() && o.goal.empty() && o.encoding.empty() && o.init.empty() && !o.waypoints &&
+                    o.inflate == 0 && !o.corner_cutting && o.connector == "repair" && o.svg.empty() && o.png.empty(),
                 "problem",
                 o.problem +
-                    " is not a grid: --start, --goal, --encoding, --connector, --waypoints, "
+                    " is not a grid: --start, --goal, --encoding, --init, --connector, --waypoints, "
                     "--inflate, --corner-cutting, --svg and --png are for --map");
         require(engine::is_multiobjective_problem(o.problem), "problem",
                 "unknown multi-objective problem '" + o.problem +
@@ -51,6 +51,7 @@ engine::MoProblemSpec problem_spec(const FrontOptions& o) {
     s.grid.start = parse_cell(o.start, "--start");
     s.grid.goal = parse_cell(o.goal, "--goal");
     s.grid.encoding = o.encoding;
+    s.grid.init = o.init;
     s.grid.connector = o.connector;
     s.grid.waypoints = o.waypoints.value_or(3);
     s.grid.corner_cutting = o.corner_cutting;

@@ -19,7 +19,8 @@ struct FrontOptions {
     std::string map, start, goal;
     // Boxes: M (DTLZ; empty: its default); grids: two to four of length, turns, angle, clearance.
     std::string objectives;
-    std::string encoding;  // grids: line (default) or free
+    std::string encoding;  // grids: line (default), free or chain
+    std::string init;      // grids on chains: walk or sitp
     std::string connector = "repair";
     std::optional<std::int64_t> waypoints;
     std::int64_t inflate = 0;

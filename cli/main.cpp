@@ -205,7 +205,9 @@ int run_main(int argc, char** argv) {
     front_cmd->add_option("--objectives", front.objectives,
                           "DTLZ: the number of objectives M (default 3); grids: two to four of length, turns, angle, "
                           "clearance (default length,turns)");
-    front_cmd->add_option("--encoding", front.encoding, "grids: line (default) or free");
+    front_cmd->add_option("--encoding", front.encoding,
+                          "grids: line (default), free, or chain (cell chains with the chain operators: nsga2, nsga3)");
+    front_cmd->add_option("--init", front.init, "grids on chains: walk (random walks, default) or sitp (file 002's)");
     front_cmd->add_option("--connector", front.connector, "grids: repair (default) or penalty");
     front_cmd->add_option("--waypoints", front.waypoints, "waypoints of the free encoding (default 3)")
         ->check(integer_in(1, 1000));

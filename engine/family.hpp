@@ -74,8 +74,9 @@ AlgorithmEntry box_algorithm(std::string name, std::string family, std::string s
 
 /// An algorithm's defaults for the settings of the chain space it plans on (its paper's).
 struct ChainSpaceDefaults {
-    std::string shortcut = "none";  // none, line, elbow
-    std::string walks = "octile";   // eq10, octile
+    std::string shortcut = "none";         // none, line, elbow
+    std::string walks = "octile";          // eq10, octile
+    std::string sitp_score = "objective";  // objective, length (multi-objective spaces: length only)
 };
 
 /// The chain space's settings (problems/grid/chain.hpp) as parameters of an algorithm that plans
@@ -94,7 +95,7 @@ inline std::vector<ParamSpec> chain_space_params(const ChainSpaceDefaults& d) {
             choice("sitp_column", {"random", "midpoint"}, "random",
                    "SITP's transition column: random between start and goal (file 002's text) or eq. 3's midpoint")
                 .only_on_chains(),
-            choice("sitp_score", {"objective", "length"}, "objective",
+            choice("sitp_score", {"objective", "length"}, d.sitp_score,
                    "SITP keeps the best of N/8 walks by the objective (counted evaluations) or by length")
                 .only_on_chains()};
 }

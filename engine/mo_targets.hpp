@@ -2,7 +2,7 @@
 // The concrete multi-objective problem types the engine runs, as one variant (as targets.hpp is
 // for single-objective ones): a registration file visits it once per run, and the run is typed.
 // Four types: the catalog (one type for ZDT and DTLZ), a grid through each of the two box
-// encodings, and a user's function.
+// encodings, and a user's function; and beside them a grid on cell chains (MoChainTarget).
 #include <functional>
 #include <memory>
 #include <span>
@@ -77,6 +77,13 @@ using MoVariant = std::variant<multiobjective::Benchmark, MoGridLine, MoGridFree
 
 struct MoTarget {
     MoVariant problem;
+};
+
+/// A grid of several criteria on cell chains (the chain encoding), for the algorithms that have
+/// chain operators (AlgorithmEntry::run_multiobjective_chain).
+using MoGridChain = grid::MultiObjectiveChains;
+struct MoChainTarget {
+    MoGridChain problem;
 };
 
 }  // namespace pride::engine

@@ -25,6 +25,7 @@ struct MoPrepared {
     std::string name;
     std::vector<std::string> objective_names;
     std::optional<MoTarget> target;
+    std::optional<MoChainTarget> chain;  // grids on the chain encoding (then no target)
     // The reference front, made at first use and shared by the problem's copies.
     mutable std::once_flag front_once;
     mutable Matrix front;
@@ -61,10 +62,12 @@ void prepare_grid(MoPrepared& out, const MoGridSpec& s) {
     require(g.objective == "cells" && g.weights.empty() && !g.lambda && !g.path_objective, "objective",
             "a multi-objective grid problem takes its criteria from objectives, not a single objective");
     require(!g.oracle, "oracle", "a multi-objective grid problem's reference is its exact front");
-    require(g.encoding.empty() || g.encoding == "line" || g.encoding == "free", "encoding",
-            "multi-objective grid problems are searched through line or free, got " + g.encoding);
-    require(g.init.empty() || g.init == "uniform", "init",
-            "the multi-objective algorithms start from uniform points, got " + g.init);
+    if (g.encoding == "chain")
+        require(g.init.empty() || g.init == "walk" || g.init == "sitp", "init",
+                "chains start from random walks (walk) or file 002's SITP walks (sitp), got " + g.init);
+    else
+        require(g.init.empty() || g.init == "uniform", "init",
+                "the multi-objective algorithms start from uniform points on line and free, got " + g.init);
     out.criteria = grid::parse_criteria(s.objectives);
     grid::ClearanceParams cp;
     cp.bands = static_cast<int>(checked_count(s.clearance_bands, 1, 63, "clearance_bands"));
@@ -74,6 +77,14 @@ void prepare_grid(MoPrepared& out, const MoGridSpec& s) {
     out.objective_names = grid::criteria_names(out.criteria);
     out.name = "grid";
     grid::GridProblem<grid::CellsObjective> problem(g.map, g.start, g.goal, {}, g.corner_cutting);
+    if (g.encoding == "chain") {
+        grid::ChainSpace<grid::CellsObjective> space(problem);
+        if (g.init == "sitp") space.set_init(grid::Walks::sitp);
+        MoGridChain p(std::move(space), std::move(criteria));
+        p.count_calls(g.objective_calls);
+        out.chain = MoChainTarget{std::move(p)};
+        return;
+    }
     const grid::SelectableConnector connector(g.connector == "penalty" ? grid::SelectableConnector::Kind::penalty
                                                                        : grid::SelectableConnector::Kind::repair);
     if (g.encoding == "free") {
@@ -146,6 +157,7 @@ bool MoProblem::is_grid() const {
     return std::holds_alternative<MoGridSpec>(prepared_->spec);
 }
 std::size_t MoProblem::dimension() const {
+    if (prepared_->chain) return 0;  // chains have no fixed dimension
     return std::visit([](const auto& p) { return p.dimension(); }, prepared_->target->problem);
 }
 std::size_t MoProblem::objectives() const {
@@ -161,7 +173,7 @@ const Matrix& MoProblem::reference_front() const {
             p.name + " is a user's function: it has no reference front");
     std::call_once(p.front_once, [&] {
         try {
-            if (const auto* b = std::get_if<multiobjective::Benchmark>(&p.target->problem))
+            if (const auto* b = p.target ? std::get_if<multiobjective::Benchmark>(&p.target->problem) : nullptr)
                 p.front = b->reference_front(reference_points);
             else
                 exact_front(p);
@@ -171,6 +183,10 @@ const Matrix& MoProblem::reference_front() const {
     });
     if (p.front_error) throw *p.front_error;
     return p.front;
+}
+
+bool MoProblem::is_chain() const {
+    return prepared_->chain.has_value();
 }
 
 const std::vector<grid::Path>& MoProblem::reference_paths() const {
@@ -190,7 +206,23 @@ const AlgorithmEntry& multiobjective_entry(const AlgorithmSpec& algorithm, const
                                      std::to_string(problem.objectives()) + " (multi-objective algorithms: " + names +
                                      ")");
     }
+    if (problem.is_chain() && !entry.run_multiobjective_chain) {
+        std::string names;
+        for (const auto& e : algorithms().entries())
+            if (e.run_multiobjective_chain) names += (names.empty() ? "" : ", ") + e.name;
+        throw InputError("algo", entry.name + " has no chain operators; the chain encoding takes " + names);
+    }
     return entry;
+}
+
+/// Parameters of one space given on another (SBX's index on chains, a chain setting on a box).
+void check_space_params(const AlgorithmEntry& entry, const Params& params, const MoProblem& problem) {
+    for (const auto& spec : entry.params) {
+        if (!params.given(spec.name)) continue;
+        require(!spec.chain_only || problem.is_chain(), entry.name,
+                spec.name + " is a setting of chains; " + problem.name() + " is not searched on chains");
+        require(!spec.box_only || !problem.is_chain(), entry.name, spec.name + " has no meaning on chains");
+    }
 }
 
 Termination mo_termination(const MoProblem& problem, const Budget& budget) {
@@ -205,9 +237,40 @@ Termination mo_termination(const MoProblem& problem, const Budget& budget) {
 /// and of values (parents, children, the merged set, their copies).
 void check_memory(const Params& params, const MoProblem& problem) {
     const double pop = std::max(100.0, static_cast<double>(params.integer("pop")));
-    const double per = static_cast<double>(problem.dimension() + problem.objectives());
+    // A chain is at most the map's cells, two integers each.
+    const double genes = problem.is_chain()
+                             ? 8.0 * static_cast<double>(std::get<MoGridSpec>(problem.prepared().spec).grid.map->size())
+                             : static_cast<double>(problem.dimension());
+    const double per = genes + static_cast<double>(problem.objectives());
     require_memory(8.0 * 6.0 * pop * per, "pop",
                    fmt::format("a population of {} in dimension {}", params.integer("pop"), problem.dimension()));
+}
+
+/// The members a run's result lists: distinct objective vectors only (the first point of each, in
+/// the population's order), in lexicographic order of their objectives.
+std::vector<std::size_t> listed(const Matrix& f) {
+    auto keep = pareto::nondominated(f);
+    std::stable_sort(keep.begin(), keep.end(), [&](std::size_t a, std::size_t b) {
+        return pareto::detail::lexicographically_before(f, static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+    });
+    return keep;
+}
+
+MoRunResult finish_chain_run(const AlgorithmEntry& entry, MoChainResult r) {
+    MoRunResult out;
+    out.algorithm = entry.name;
+    out.evaluations = r.evaluations;
+    out.iterations = r.iterations;
+    out.wall_ms = r.wall_ms;
+    out.history_evaluations = std::move(r.history_evaluations);
+    const auto keep = listed(r.f);
+    out.f.resize(r.f.rows(), static_cast<Eigen::Index>(keep.size()));
+    for (std::size_t k = 0; k < keep.size(); ++k) {
+        out.f.col(static_cast<Eigen::Index>(k)) = r.f.col(static_cast<Eigen::Index>(keep[k]));
+        out.paths.push_back(std::move(r.x[keep[k]]));
+        out.feasible.push_back(1);  // the chain operators make legal chains only
+    }
+    return out;
 }
 
 }  // namespace
@@ -215,6 +278,7 @@ void check_memory(const Params& params, const MoProblem& problem) {
 void check(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budget& budget) {
     const AlgorithmEntry& entry = multiobjective_entry(algorithm, problem);
     const Params params(entry.name, entry.params, algorithm.params);
+    check_space_params(entry, params, problem);
     mo_termination(problem, budget).validate(entry.name);
     check_memory(params, problem);
 }
@@ -222,8 +286,12 @@ void check(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budge
 MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budget& budget, std::uint64_t seed) {
     const AlgorithmEntry& entry = multiobjective_entry(algorithm, problem);
     const Params params(entry.name, entry.params, algorithm.params);
+    check_space_params(entry, params, problem);
     const Termination termination = mo_termination(problem, budget);
     check_memory(params, problem);
+    if (problem.is_chain())
+        return finish_chain_run(entry,
+                                entry.run_multiobjective_chain(params, *problem.prepared().chain, termination, seed));
     MultiObjectiveResult r = entry.run_multiobjective(params, *problem.prepared().target, termination, seed);
 
     MoRunResult out;
@@ -232,13 +300,7 @@ MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const 
     out.iterations = r.iterations;
     out.wall_ms = r.wall_ms;
     out.history_evaluations = std::move(r.history_evaluations);
-    // Distinct objective vectors only (the first point of each, in the population's order),
-    // listed in lexicographic order of their objectives.
-    auto keep = pareto::nondominated(r.f);
-    std::stable_sort(keep.begin(), keep.end(), [&](std::size_t a, std::size_t b) {
-        return pareto::detail::lexicographically_before(r.f, static_cast<Eigen::Index>(a),
-                                                        static_cast<Eigen::Index>(b));
-    });
+    const auto keep = listed(r.f);
     out.f.resize(r.f.rows(), static_cast<Eigen::Index>(keep.size()));
     out.x.resize(r.x.rows(), static_cast<Eigen::Index>(keep.size()));
     for (std::size_t k = 0; k < keep.size(); ++k) {

@@ -35,8 +35,8 @@ struct MoBenchmarkSpec {
 };
 
 /// A grid searched for several criteria: the map, start and goal, the encoding (line, the
-/// default, or free), connector, waypoints and corner cutting of `grid` (its objective, weights
-/// and oracle are single-objective settings and must be left alone).
+/// default, free, or chain with init walk or sitp), connector, waypoints and corner cutting of
+/// `grid` (its objective, weights and oracle are single-objective settings and must be left alone).
 struct MoGridSpec {
     GridSpec grid;
     std::string objectives = "length,turns";  // two to four of length, turns, angle, clearance
@@ -70,6 +70,8 @@ class MoProblem {
 
     std::string name() const;
     bool is_grid() const;
+    /// A grid searched on cell chains (the chain encoding): no box, dimension() is 0.
+    bool is_chain() const;
     std::size_t dimension() const;
     std::size_t objectives() const;
     /// f1, f2, ... for boxes; the criteria's names (length, turns, angle_penalty, clearance) on grids.
@@ -92,7 +94,7 @@ class MoProblem {
 struct MoRunResult {
     std::string algorithm;
     Matrix f;                       // the non-dominated set's objective values: M rows, one column per point
-    Matrix x;                       // their points (grids: genotypes)
+    Matrix x;                       // their points (grids: genotypes; none on chains)
     std::vector<grid::Path> paths;  // grids: the path of each point
     std::vector<char> feasible;     // grids: whether it is a legal path (no violation)
     std::int64_t evaluations = 0;

@@ -15,6 +15,7 @@ std::vector<std::string> AlgorithmEntry::spaces() const {
     if (run_chain) out.emplace_back("chain");
     if (solve_grid) out.emplace_back("grid");
     if (run_multiobjective) out.emplace_back("multi-objective");
+    if (run_multiobjective_chain) out.emplace_back("multi-objective chain");
     return out;
 }
 
@@ -38,6 +39,8 @@ void AlgorithmRegistry::add(AlgorithmEntry entry) {
         throw std::logic_error("algorithm '" + entry.name + "' is registered without a runner");
     if (entry.run_multiobjective && (entry.run_box || entry.run_chain || entry.solve_grid))
         throw std::logic_error("algorithm '" + entry.name + "' is multi-objective and has another runner");
+    if (entry.run_multiobjective_chain && !entry.run_multiobjective)
+        throw std::logic_error("algorithm '" + entry.name + "' runs on multi-objective chains only");
     // How it plans on a grid, the same three names for every algorithm that plans through an
     // encoding (none of them has a default: the run's value is the problem's, else the native one).
     if (entry.run_box || entry.run_chain) {

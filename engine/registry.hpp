@@ -24,12 +24,14 @@
 
 namespace pride::engine {
 
-struct BoxTarget;    // engine/targets.hpp
-struct ChainTarget;  // engine/targets.hpp
-struct GridTarget;   // engine/targets.hpp
-struct MoTarget;     // engine/mo_targets.hpp
+struct BoxTarget;      // engine/targets.hpp
+struct ChainTarget;    // engine/targets.hpp
+struct GridTarget;     // engine/targets.hpp
+struct MoTarget;       // engine/mo_targets.hpp
+struct MoChainTarget;  // engine/mo_targets.hpp
 
 using ChainResult = BasicResult<grid::Path>;
+using MoChainResult = BasicMultiObjectiveResult<std::vector<grid::Path>>;
 
 /// What an observed box run calls at the end of every iteration (iteration 0: the initial
 /// population); once per iteration, never per evaluation.
@@ -60,6 +62,10 @@ struct AlgorithmEntry {
     /// non-dominated set. A multi-objective algorithm has no other runner.
     std::function<MultiObjectiveResult(const Params&, const MoTarget&, const Termination&, std::uint64_t seed)>
         run_multiobjective;
+    /// Runs on a grid of several criteria searched on cell chains (the chain encoding); only a
+    /// multi-objective entry may have it.
+    std::function<MoChainResult(const Params&, const MoChainTarget&, const Termination&, std::uint64_t seed)>
+        run_multiobjective_chain;
     /// Solves a grid as a whole (baselines): no budget, no seed.
     std::function<GridSolution(const GridTarget&)> solve_grid;
     /// Whole-map algorithms that return the exact optimum say so: the objective must have one

@@ -15,14 +15,20 @@
 
 namespace pride {
 
+/// The three operators alone, what operator policies need (a space of several objectives has them
+/// and evaluates otherwise: framework/multi_objective.hpp).
 template <class P>
-concept ChainProblem = std::copy_constructible<P> &&
-    requires(P& p, const P& cp, Rng& rng, typename P::chain_type& a, typename P::chain_type& b) {
+concept ChainOperators = std::copy_constructible<P> &&
+    requires(P& p, Rng& rng, typename P::chain_type& a, typename P::chain_type& b) {
     typename P::chain_type;
     { p.random_chain(rng, a) } -> std::same_as<void>;
     { p.crossover(a, b, rng) } -> std::same_as<bool>;
     { p.mutate(a, rng) } -> std::same_as<void>;
-    { p.evaluate(std::as_const(a)) } -> std::convertible_to<double>;
+};
+
+template <class P>
+concept ChainProblem = ChainOperators<P> && requires(const typename P::chain_type& a, P& p) {
+    { p.evaluate(a) } -> std::convertible_to<double>;
 };
 
 }  // namespace pride
@@ -37,7 +43,7 @@ namespace pride {
 /// actions order three of them). `badness` in [0, 1] says how bad the chain is in its population
 /// (file 002 eq. 20's B: 0 the best, 1 the worst); operators that ignore it may; 0 when unknown.
 template <class P>
-concept NumberedMutations = ChainProblem<P> &&
+concept NumberedMutations = ChainOperators<P> &&
     requires(P& p, const P& cp, Rng& rng, typename P::chain_type& a, std::size_t k, double badness) {
     { cp.mutation_count() } -> std::convertible_to<std::size_t>;
     { p.mutate(k, a, rng) } -> std::same_as<void>;

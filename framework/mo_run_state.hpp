@@ -3,7 +3,7 @@
 // evaluation guard (exact budget; a point with a NaN or +-inf objective gets +inf in every one,
 // worse than every point with finite values), the
 // stopping rules, the evaluations after each iteration, the observer calls and the wall clock.
-// A run's result is the non-dominated set of its final population, points and values.
+// A run's result is the non-dominated set of its final population, points (or chains) and values.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -21,9 +21,11 @@
 
 namespace pride {
 
-struct MultiObjectiveResult {
-    Matrix x;  // the non-dominated points of the final population, one column each
-    Matrix f;  // their objective values, M rows, the same columns
+/// Population: Matrix for boxes (one column per point), std::vector<chain> for chains.
+template <class Population>
+struct BasicMultiObjectiveResult {
+    Population x;  // the non-dominated members of the final population
+    Matrix f;      // their objective values, M rows, one column per member of x
     std::int64_t evaluations = 0;
     std::int64_t iterations = 0;  // completed iterations after the initial population
     /// history_evaluations[k]: the evaluations spent when iteration k ended (k = 0: the initial
@@ -31,14 +33,17 @@ struct MultiObjectiveResult {
     std::vector<std::int64_t> history_evaluations;
     double wall_ms = 0.0;
 };
+using MultiObjectiveResult = BasicMultiObjectiveResult<Matrix>;
 
 /// What an observer of a multi-objective run sees at the end of each iteration.
-struct MultiObjectiveIterationView {
+template <class Population>
+struct BasicMultiObjectiveIterationView {
     std::int64_t iteration;  // 0 = the initial population
     std::int64_t evaluations;
-    const Matrix& population;  // one column per individual
-    const Matrix& values;      // M rows, the same columns (+inf where not evaluated)
+    const Population& population;  // one column (or chain) per individual
+    const Matrix& values;          // M rows, one column per individual (+inf where not evaluated)
 };
+using MultiObjectiveIterationView = BasicMultiObjectiveIterationView<Matrix>;
 
 class MultiObjectiveRunState {
   public:
@@ -77,6 +82,20 @@ class MultiObjectiveRunState {
         return n;
     }
 
+    /// The chains' version: the first min(chains.size(), remaining()) chains into the same columns
+    /// of `values`, the rest +inf.
+    template <MultiObjectiveChainProblem P>
+    std::size_t evaluate_chains(P& problem, std::span<const typename P::chain_type> chains, Matrix& values) {
+        const std::size_t n = std::min<std::size_t>(chains.size(), static_cast<std::size_t>(remaining()));
+        const auto m = static_cast<std::size_t>(objectives_);
+        for (std::size_t j = 0; j < n; ++j)
+            problem.evaluate(chains[j], std::span<double>(values.col(static_cast<Eigen::Index>(j)).data(), m));
+        for (Eigen::Index j = 0; j < values.cols(); ++j)
+            if (static_cast<std::size_t>(j) >= n || !values.col(j).allFinite()) values.col(j).setConstant(kInf);
+        progress_.evaluations += static_cast<std::int64_t>(n);
+        return n;
+    }
+
     bool exhausted() const noexcept { return progress_.evaluations >= limit_; }
     std::int64_t remaining() const noexcept { return limit_ - progress_.evaluations; }
     bool done() const { return exhausted() || termination_.done(progress_); }
@@ -84,23 +103,31 @@ class MultiObjectiveRunState {
     const Progress& progress() const noexcept { return progress_; }
 
     /// Closes an iteration (the first call: the initial population) and shows the population.
-    template <class O>
-    void end_iteration(O& observer, const Matrix& population, const Matrix& values) {
+    template <class O, class Population>
+    void end_iteration(O& observer, const Population& population, const Matrix& values) {
         if (started_) ++progress_.iterations;
         started_ = true;
         history_evaluations_.push_back(progress_.evaluations);
-        if constexpr (std::is_invocable_v<O&, const MultiObjectiveIterationView&>)
-            observer(MultiObjectiveIterationView{progress_.iterations, progress_.evaluations, population, values});
+        using View = BasicMultiObjectiveIterationView<Population>;
+        if constexpr (std::is_invocable_v<O&, const View&>)
+            observer(View{progress_.iterations, progress_.evaluations, population, values});
     }
 
-    /// The result: the columns `front` of the final population (its non-dominated ones).
-    MultiObjectiveResult finish(const Matrix& population, const Matrix& values, std::span<const std::size_t> front) {
-        MultiObjectiveResult r;
+    /// The result: the members `front` of the final population (its non-dominated ones), columns
+    /// of a Matrix or elements of a vector of chains.
+    template <class Population>
+    BasicMultiObjectiveResult<Population> finish(const Population& population, const Matrix& values,
+                                                 std::span<const std::size_t> front) {
+        BasicMultiObjectiveResult<Population> r;
         r.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - progress_.start).count();
-        r.x.resize(population.rows(), static_cast<Eigen::Index>(front.size()));
         r.f.resize(values.rows(), static_cast<Eigen::Index>(front.size()));
+        if constexpr (std::is_same_v<Population, Matrix>)
+            r.x.resize(population.rows(), static_cast<Eigen::Index>(front.size()));
         for (std::size_t k = 0; k < front.size(); ++k) {
-            r.x.col(static_cast<Eigen::Index>(k)) = population.col(static_cast<Eigen::Index>(front[k]));
+            if constexpr (std::is_same_v<Population, Matrix>)
+                r.x.col(static_cast<Eigen::Index>(k)) = population.col(static_cast<Eigen::Index>(front[k]));
+            else
+                r.x.push_back(population[front[k]]);
             r.f.col(static_cast<Eigen::Index>(k)) = values.col(static_cast<Eigen::Index>(front[k]));
         }
         r.evaluations = progress_.evaluations;
@@ -128,9 +155,9 @@ struct MultiObjectiveStart {
     MultiObjectiveRunState state;
 };
 
-template <MultiObjectiveProblem P>
-MultiObjectiveStart start_multiobjective_run(const std::string& who, P& problem, const Termination& termination,
-                                             std::uint64_t seed) {
+template <class P>
+requires MultiObjectiveProblem<P> || MultiObjectiveChainProblem<P> MultiObjectiveStart
+start_multiobjective_run(const std::string& who, P& problem, const Termination& termination, std::uint64_t seed) {
     termination.validate(who);
     const std::size_t m = problem.objectives();
     require(m >= 1, who, "the problem has no objectives");

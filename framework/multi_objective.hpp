@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "framework/chain.hpp"
 #include "framework/error.hpp"
 #include "framework/problem.hpp"
 
@@ -27,6 +28,16 @@ concept MultiObjectiveProblem = std::copy_constructible<P> &&
     { cp.upper() } -> std::convertible_to<std::span<const double>>;
     { cp.objectives() } -> std::convertible_to<std::size_t>;
     p.evaluate(x, f);  // f.size() == objectives()
+};
+
+/// A problem of several objectives whose solutions are chains searched with the chain operators of
+/// framework/chain.hpp (grid paths): random_chain, crossover and mutate as a ChainProblem's, and
+/// evaluate(c, f) writing the M values of chain c (one evaluation).
+template <class P>
+concept MultiObjectiveChainProblem = ChainOperators<P> &&
+    requires(P& p, const P& cp, const typename P::chain_type& a, std::span<double> f) {
+    { cp.objectives() } -> std::convertible_to<std::size_t>;
+    p.evaluate(a, f);  // f.size() == objectives()
 };
 
 /// Optional: the columns of `points` into the columns of `values` (M rows) in one call.

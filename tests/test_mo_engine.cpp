@@ -60,6 +60,13 @@ engine::MoGridSpec walled_spec(const std::string& objectives) {
     return s;
 }
 
+/// Parameters as given on the command line: "name=value" each.
+engine::ParamValues params_of(std::initializer_list<const char*> assignments) {
+    engine::ParamValues v;
+    for (const char* a : assignments) v.set_from_string(a);
+    return v;
+}
+
 /// `f` throws an InputError whose message names each of `words`.
 template <class Fn>
 void throws_naming(Fn&& f, const std::vector<std::string>& words) {
@@ -74,7 +81,9 @@ TEST_CASE("the multi-objective algorithms are in the one registry, and only ther
     for (const char* name : {"nsga2", "nsga3", "moead", "smsemoa"}) {
         const auto& e = engine::algorithms().at(name);
         CHECK(e.multiobjective());
-        CHECK(e.spaces() == std::vector<std::string>{"multi-objective"});
+        const bool chains = e.name == "nsga2" || e.name == "nsga3";  // the NSGA skeleton has chain operators
+        CHECK(e.spaces() == (chains ? std::vector<std::string>{"multi-objective", "multi-objective chain"}
+                                    : std::vector<std::string>{"multi-objective"}));
         CHECK(e.encodings().empty());
     }
     CHECK_FALSE(engine::algorithms().at("pso").multiobjective());
@@ -320,9 +329,9 @@ TEST_CASE("multi-objective errors name what is wrong") {
             engine::check(AlgorithmSpec{"smsemoa", unknown}, zdt1, evaluations(100));
         },
         {"smsemoa", "w_start"});
-    auto chain = walled_spec("length,turns");
-    chain.grid.encoding = "chain";
-    throws_naming([&] { MoProblem{chain}; }, {"encoding", "line or free"});
+    auto tree = walled_spec("length,turns");
+    tree.grid.encoding = "tree";
+    throws_naming([&] { MoProblem{tree}; }, {"encoding", "tree"});
     throws_naming([] { MoProblem{walled_spec("length")}; }, {"objectives"});
     throws_naming([] { MoProblem{walled_spec("length,speed")}; }, {"objectives", "speed"});
     auto bands = walled_spec("length,clearance");
@@ -405,4 +414,109 @@ TEST_CASE("pride front refuses bad input with one line") {
     test::expect_input_error("front --algo nsga2 --map " + map + " --start 0,0 --goal 19,19 --objectives length",
                              {"objectives"});
     test::expect_input_error("run --algo nsga2 --problem sphere --dim 3", {"nsga2", "multi-objective"});
+}
+
+TEST_CASE("on chains NSGA-II plans with the chain operators: legal paths, exact budget, the exact front reached") {
+    for (const char* init : {"walk", "sitp"}) {
+        INFO(init);
+        auto spec = walled_spec("length,turns,clearance");
+        spec.grid.encoding = "chain";
+        spec.grid.init = init;
+        spec.grid.objective_calls = std::make_shared<std::atomic<std::int64_t>>(0);
+        const MoProblem p(spec);
+        CHECK(p.is_chain());
+        CHECK(p.dimension() == 0);
+        const auto r = engine::run(AlgorithmSpec{"nsga2", {}}, p, evaluations(20000), 5);
+        CHECK(r.evaluations == 20000);
+        CHECK(spec.grid.objective_calls->load() == 20000);
+        CHECK(r.x.cols() == 0);
+        REQUIRE(r.paths.size() == static_cast<std::size_t>(r.f.cols()));
+        const grid::PathCriteria criteria(*spec.grid.map, grid::parse_criteria("length,turns,clearance"));
+        std::vector<double> f(3);
+        for (std::size_t j = 0; j < r.paths.size(); ++j) {
+            CHECK(r.feasible[j] == 1);
+            CHECK(grid::path_violation(*spec.grid.map, r.paths[j], spec.grid.start, spec.grid.goal).empty());
+            criteria(r.paths[j], f);
+            for (Eigen::Index i = 0; i < 3; ++i)
+                CHECK(r.f(i, static_cast<Eigen::Index>(j)) == f[static_cast<std::size_t>(i)]);
+        }
+        // The exact front of this small map is found whole (the box encodings find a part of it).
+        const auto q = engine::quality(p, r.f);
+        REQUIRE(q.exact_found.has_value());
+        CHECK(*q.exact_found == q.reference_size);
+        CHECK(q.hypervolume_ratio == Approx(1.0));
+        // One seed, one result, bit for bit; another seed, another run.
+        const auto again = engine::run(AlgorithmSpec{"nsga2", {}}, p, evaluations(20000), 5);
+        CHECK(again.f == r.f);
+        CHECK(again.paths == r.paths);
+        const auto other = engine::run(AlgorithmSpec{"nsga2", {}}, p, evaluations(3000), 6);
+        const auto first = engine::run(AlgorithmSpec{"nsga2", {}}, p, evaluations(3000), 5);
+        CHECK_FALSE((other.paths == first.paths && other.f == first.f));
+    }
+}
+
+TEST_CASE("on chains NSGA-III runs too, and the chain settings are checked") {
+    auto spec = walled_spec("length,turns,angle");
+    spec.grid.encoding = "chain";
+    const MoProblem p(spec);
+    const auto r =
+        engine::run(AlgorithmSpec{"nsga3", params_of({"mutations=iqga", "shortcut=elbow"})}, p, evaluations(4000), 2);
+    CHECK(r.evaluations == 4000);
+    CHECK_FALSE(r.paths.empty());
+    for (const auto& path : r.paths)
+        CHECK(grid::path_violation(*spec.grid.map, path, spec.grid.start, spec.grid.goal).empty());
+
+    throws_naming(
+        [&] {
+            engine::run(AlgorithmSpec{"moead", {}}, p, evaluations(100), 1);
+        },
+        {"moead", "chain", "nsga2", "nsga3"});
+    throws_naming([&] { engine::run(AlgorithmSpec{"smsemoa", {}}, p, evaluations(100), 1); }, {"smsemoa", "chain"});
+    throws_naming(
+        [&] {
+            engine::run(AlgorithmSpec{"nsga2", params_of({"eta_c=10"})}, p, evaluations(100), 1);
+        },
+        {"eta_c", "chains"});
+    throws_naming(
+        [&] {
+            engine::run(AlgorithmSpec{"nsga2", params_of({"shortcut_keep=1"})}, p, evaluations(100), 1);
+        },
+        {"shortcut_keep", "single objective"});
+    throws_naming(
+        [&] {
+            engine::run(AlgorithmSpec{"nsga2", params_of({"sitp_score=objective"})}, p, evaluations(100), 1);
+        },
+        {"sitp_score", "length"});
+    throws_naming(
+        [&] {
+            engine::check(AlgorithmSpec{"nsga2", params_of({"mutations=sideways"})}, p, evaluations(100));
+        },
+        {"mutations", "sideways"});
+    auto boxed = walled_spec("length,turns");
+    boxed.grid.encoding = "free";
+    throws_naming(
+        [&] {
+            engine::run(AlgorithmSpec{"nsga2", params_of({"mutations=iqga"})}, MoProblem(boxed), evaluations(100), 1);
+        },
+        {"mutations", "chains"});
+    auto bad_init = walled_spec("length,turns");
+    bad_init.grid.encoding = "chain";
+    bad_init.grid.init = "uniform";
+    throws_naming([&] { MoProblem{bad_init}; }, {"init", "walk", "sitp"});
+    bad_init.grid.encoding = "line";
+    bad_init.grid.init = "sitp";
+    throws_naming([&] { MoProblem{bad_init}; }, {"init", "uniform"});
+}
+
+TEST_CASE("pride front plans on chains from the command line") {
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const auto r = test::run_pride("front --algo nsga2 --map " + map +
+                                   " --start 0,19 --goal 19,0 --encoding chain --init sitp --evals 4000 --json");
+    REQUIRE(r.status == 0);
+    const auto j = test::parse_json(r.out);
+    CHECK(j.at("evaluations").number == 4000);
+    CHECK(j.at("quality").at("exact_found").number >= 1);
+    test::expect_input_error("front --algo nsga2 --problem zdt1 --init sitp", {"--init", "--map"});
+    test::expect_input_error("front --algo moead --map " + map + " --start 0,19 --goal 19,0 --encoding chain",
+                             {"moead", "chain"});
 }

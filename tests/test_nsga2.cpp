@@ -156,3 +156,70 @@ TEST_CASE("nsga2 refuses bad parameters with one line") {
     a = {};
     CHECK_THAT(input_error_message([&] { (void)a.run(CountedZdt1(4), pride::Termination{}, 1); }), Contains("nsga2"));
 }
+
+namespace {
+
+/// A chain space of integers that records which mutation made each change: operator k (0..2, the
+/// numbered ones) adds 10^k, the segment mutation adds 1000; two objectives, (c, -c) on a bounded
+/// line, so every chain is non-dominated and the run keeps them all.
+struct RecordingChains {
+    using chain_type = std::vector<int>;
+    std::shared_ptr<std::vector<int>> calls = std::make_shared<std::vector<int>>(4, 0);
+    std::size_t objectives() const { return 2; }
+    void random_chain(pride::Rng& rng, chain_type& c) { c.assign(1, static_cast<int>(rng.below(100))); }
+    bool crossover(chain_type& a, chain_type& b, pride::Rng&) {
+        std::swap(a, b);
+        return true;
+    }
+    void mutate(chain_type& c, pride::Rng&) {
+        ++(*calls)[3];
+        c.push_back(1000);
+    }
+    std::size_t mutation_count() const { return 3; }
+    void mutate(std::size_t k, chain_type& c, pride::Rng&, double = 0.0) {
+        ++(*calls)[k], c.push_back(static_cast<int>(k));
+    }
+    void evaluate(const chain_type& c, std::span<double> f) const {
+        f[0] = static_cast<double>(c.front());
+        f[1] = -static_cast<double>(c.front());
+    }
+};
+static_assert(pride::MultiObjectiveChainProblem<RecordingChains>);
+static_assert(pride::NumberedMutations<RecordingChains>);
+
+}  // namespace
+
+TEST_CASE("nsga2 on chains: one mutation per child drawn from the chosen set, the budget spent exactly") {
+    using pride::ChainMutationSet;
+    for (const auto set : {ChainMutationSet::all, ChainMutationSet::segment, ChainMutationSet::iqga}) {
+        RecordingChains space;
+        pride::Nsga2<pride::ChainCrossover, pride::ChainMutationChoice> a;
+        a.mutation = pride::ChainMutationChoice{1.0, set};
+        const auto r = a.run(space, evaluations(100 * 101), 7);
+        CHECK(r.evaluations == 100 * 101);
+        CHECK(r.iterations == 100);
+        const auto& calls = *space.calls;
+        const int total = calls[0] + calls[1] + calls[2] + calls[3];
+        CHECK(total == 100 * 100);  // p_m = 1: every child of the 100 generations, once
+        if (set == ChainMutationSet::segment) CHECK(calls[3] == total);
+        if (set == ChainMutationSet::iqga) CHECK(calls[3] == 0);
+        if (set != ChainMutationSet::segment)
+            for (int k = 0; k < (set == ChainMutationSet::all ? 4 : 3); ++k) {
+                // Uniform among the set: 10,000 draws, each share within 4 standard deviations.
+                const double share = set == ChainMutationSet::all ? 0.25 : 1.0 / 3.0;
+                CHECK(std::abs(calls[static_cast<std::size_t>(k)] - total * share) <
+                      4.0 * std::sqrt(total * share * (1 - share)));
+            }
+        // The result: chains of the final population with their values.
+        REQUIRE(r.x.size() == static_cast<std::size_t>(r.f.cols()));
+        for (std::size_t j = 0; j < r.x.size(); ++j) CHECK(r.f(0, static_cast<Eigen::Index>(j)) == r.x[j].front());
+    }
+    // p_m = 0: no mutation at all.
+    RecordingChains space;
+    pride::Nsga2<pride::ChainCrossover, pride::ChainMutationChoice> a;
+    a.mutation.probability = 0.0;
+    a.run(space, evaluations(1000), 1);
+    CHECK(*space.calls == std::vector<int>(4, 0));
+    a.mutation.probability = 1.5;
+    CHECK_THAT(input_error_message([&] { a.run(space, evaluations(1000), 1); }), Contains("pm must be in [0, 1]"));
+}

@@ -17,7 +17,7 @@ struct ChainCrossover {
         require(probability >= 0.0 && probability <= 1.0, where,
                 "pc must be in [0, 1], got " + std::to_string(probability));
     }
-    template <ChainProblem P>
+    template <ChainOperators P>
     void operator()(P& problem, typename P::chain_type& a, typename P::chain_type& b, Rng& rng) const {
         if (rng.bernoulli(probability)) problem.crossover(a, b, rng);
     }
@@ -32,9 +32,48 @@ struct ChainMutation {
         require(probability >= 0.0 && probability <= 1.0, where,
                 "pm must be in [0, 1], got " + std::to_string(probability));
     }
-    template <ChainProblem P>
+    template <ChainOperators P>
     void operator()(P& problem, typename P::chain_type& c, Rng& rng) const {
         if (rng.bernoulli(probability)) problem.mutate(c, rng);
+    }
+};
+
+}  // namespace pride
+
+namespace pride {
+
+/// Which of a chain space's mutations ChainMutationChoice draws from.
+enum class ChainMutationSet {
+    segment,  // the GA's: a segment between two random cells regenerated (mutate(c, rng))
+    iqga,     // file 002's three (section 2.4.3): deletion, mid-point, turning point (NumberedMutations)
+    all,      // the four, each with the same chance
+};
+
+/// Mutates a child with probability `probability` by one of the space's mutations in `set`, drawn
+/// uniformly (NSGA-II on chains, issue 28: the mutations of the GA family and of IQGA without
+/// IQGA's Q-learning choice, which scores chains by a single value that a front does not have).
+/// The numbered mutations are told badness 0 (no single ranking in a front either).
+struct ChainMutationChoice {
+    double probability = 0.1;
+    ChainMutationSet set = ChainMutationSet::all;
+    void validate(const std::string& where) const {
+        require(probability >= 0.0 && probability <= 1.0, where,
+                "pm must be in [0, 1], got " + std::to_string(probability));
+    }
+    template <ChainOperators P>
+    void operator()(P& problem, typename P::chain_type& c, Rng& rng) const {
+        if (!rng.bernoulli(probability)) return;
+        if constexpr (NumberedMutations<P>) {
+            if (set == ChainMutationSet::segment) return problem.mutate(c, rng);
+            const std::size_t numbered = problem.mutation_count();
+            if (set == ChainMutationSet::iqga)
+                return problem.mutate(static_cast<std::size_t>(rng.below(numbered)), c, rng);
+            const auto k = static_cast<std::size_t>(rng.below(numbered + 1));
+            if (k == numbered) return problem.mutate(c, rng);
+            problem.mutate(k, c, rng);
+        } else {
+            problem.mutate(c, rng);
+        }
     }
 };
 

@@ -1,8 +1,14 @@
 // The multi-objective algorithms (issue 28): NSGA-II and NSGA-III (algorithms/nsga2.hpp,
 // nsga3.hpp), MOEA/D (moead.hpp) and SMS-EMOA (smsemoa.hpp). Each runner visits the target once
 // (engine/mo_targets.hpp) and runs typed; the defaults are the papers' (their headers cite them).
+// NSGA-II and NSGA-III also run on grid chains with the chain operators (run_multiobjective_chain).
+// Decided by this project: p_m on chains is a probability per child, 0.1 unless given (IQGA's
+// Pm, file 002, as the GA on chains), since the paper's 1/n per variable has no chain form.
+#include <fmt/format.h>
+
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -10,6 +16,7 @@
 #include "algorithms/nsga2.hpp"
 #include "algorithms/nsga3.hpp"
 #include "algorithms/smsemoa.hpp"
+#include "engine/family.hpp"
 #include "engine/mo_targets.hpp"
 #include "engine/registry.hpp"
 #include "framework/pareto/reference_directions.hpp"
@@ -38,17 +45,58 @@ AlgorithmEntry mo_algorithm(std::string name, std::string summary, std::vector<P
     return e;
 }
 
+/// p_m on chains when none is given: decided by this project (see register_multiobjective).
+constexpr double kChainMutation = 1.0;
+
 std::vector<ParamSpec> variation_params(double eta_c, double p_c) {
-    return {real("eta_c", eta_c, 0.0, 1000.0, "SBX distribution index"),
-            real("p_c", p_c, 0.0, 1.0, "SBX probability per pair"),
-            real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
-            real("p_m", 0.0, 0.0, 1.0, "mutation probability per variable (default 1/n)").no_default()};
+    return {real("eta_c", eta_c, 0.0, 1000.0, "SBX distribution index").only_on_boxes(),
+            real("p_c", p_c, 0.0, 1.0, "crossover probability per pair (SBX; on chains at a common cell)"),
+            real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index").only_on_boxes(),
+            real("p_m", 0.0, 0.0, 1.0,
+                 "mutation probability per variable (default 1/n); on chains per child (default " +
+                     fmt::format("{}", kChainMutation) + ")")
+                .no_default()};
+}
+
+/// NSGA-II's settings on chains (nsga2.hpp's header): the chain mutations and the chain space's.
+std::vector<ParamSpec> chain_params() {
+    std::vector<ParamSpec> out{choice("mutations", {"all", "segment", "iqga"}, "all",
+                                      "on chains, the mutations drawn from: the GA's segment regeneration, file "
+                                      "002's three (IQGA's deletion, mid-point, turning point), or the four")
+                                   .only_on_chains()};
+    for (auto& s : chain_space_params({.sitp_score = "length"})) out.push_back(std::move(s));
+    return out;
 }
 
 template <class A>
 void configure_variation(A& a, const Params& p) {
     a.crossover = SbxCrossover{p.real("eta_c"), p.real("p_c")};
     a.mutation = PolynomialMutation{p.real("eta_m"), p.optional("p_m").value_or(-1.0)};
+}
+
+/// The NSGA skeleton configured for boxes, with the chain policies instead (the same population,
+/// survival, tournament and p_c), on the chain space set by the parameters.
+template <class Box>
+void add_mo_chain_runner(AlgorithmEntry& e, Box box_algorithm) {
+    for (auto& s : chain_params()) e.params.push_back(std::move(s));
+    e.run_multiobjective_chain = [box_algorithm](const Params& p, const MoChainTarget& target,
+                                                 const Termination& termination, std::uint64_t seed) -> MoChainResult {
+        const auto box = box_algorithm(p, target.problem.objectives());
+        Nsga2<ChainCrossover, ChainMutationChoice, std::decay_t<decltype(box.survival)>> a;
+        a.population = box.population;
+        a.survival = box.survival;
+        a.tournament = box.tournament;
+        a.crossover = ChainCrossover{p.real("p_c")};
+        const std::string& set = p.choice("mutations");
+        a.mutation =
+            ChainMutationChoice{p.optional("p_m").value_or(kChainMutation), set == "segment" ? ChainMutationSet::segment
+                                                                            : set == "iqga"  ? ChainMutationSet::iqga
+                                                                                             : ChainMutationSet::all};
+        auto problem = target.problem;
+        configure_space(problem.space(), p);
+        problem.configured();
+        return a.run(std::move(problem), termination, seed);
+    };
 }
 
 nsga::Tournament tournament(const Params& p) {
@@ -100,15 +148,22 @@ void register_multiobjective(AlgorithmRegistry& registry) {
     auto nsga2_params = std::vector<ParamSpec>{integer("pop", 100, 4, 10'000'000, "population N, a multiple of 4")};
     for (auto& s : variation_params(20.0, 0.9)) nsga2_params.push_back(std::move(s));
     nsga2_params.push_back(tournament_param());
-    registry.add(mo_algorithm("nsga2",
-                              "NSGA-II (Deb et al. 2002): non-dominated sorting, crowding, SBX and polynomial mutation",
-                              std::move(nsga2_params), [](const Params& p, std::size_t) {
-                                  Nsga2<> a;
-                                  a.population = p.integer("pop");
-                                  configure_variation(a, p);
-                                  a.tournament = tournament(p);
-                                  return a;
-                              }));
+    const auto nsga2 = [](const Params& p, std::size_t) {
+        Nsga2<> a;
+        a.population = p.integer("pop");
+        if (!p.given("eta_c") && !p.given("eta_m") && false) {
+        }
+        configure_variation(a, p);
+        a.tournament = tournament(p);
+        return a;
+    };
+    AlgorithmEntry nsga2_entry = mo_algorithm(
+        "nsga2",
+        "NSGA-II (Deb et al. 2002): non-dominated sorting, crowding, SBX and polynomial mutation; on grid chains the "
+        "chain operators",
+        std::move(nsga2_params), nsga2);
+    add_mo_chain_runner(nsga2_entry, nsga2);
+    registry.add(std::move(nsga2_entry));
 
     auto nsga3_params = std::vector<ParamSpec>{
         integer("pop", 0, 0, 10'000'000,
@@ -118,17 +173,20 @@ void register_multiobjective(AlgorithmRegistry& registry) {
         integer("inner_divisions", 0, 0, 1'000'000, "H2 of an inner layer (0: one layer)")};
     for (auto& s : variation_params(30.0, 1.0)) nsga3_params.push_back(std::move(s));
     nsga3_params.push_back(tournament_param());
-    registry.add(mo_algorithm(
-        "nsga3", "NSGA-III (Deb and Jain 2014): NSGA-II with niching on reference directions, for M >= 3",
-        std::move(nsga3_params), [](const Params& p, std::size_t m) {
-            require(p.integer("inner_divisions") == 0 || p.integer("divisions") > 0, "nsga3",
-                    "inner_divisions needs divisions");
-            Nsga3<> a = make_nsga3(nsga3_directions(m, p.integer("divisions"), p.integer("inner_divisions")));
-            if (p.integer("pop") > 0) a.population = p.integer("pop");
-            configure_variation(a, p);
-            a.tournament = tournament(p);
-            return a;
-        }));
+    const auto nsga3 = [](const Params& p, std::size_t m) {
+        require(p.integer("inner_divisions") == 0 || p.integer("divisions") > 0, "nsga3",
+                "inner_divisions needs divisions");
+        Nsga3<> a = make_nsga3(nsga3_directions(m, p.integer("divisions"), p.integer("inner_divisions")));
+        if (p.integer("pop") > 0) a.population = p.integer("pop");
+        configure_variation(a, p);
+        a.tournament = tournament(p);
+        return a;
+    };
+    AlgorithmEntry nsga3_entry =
+        mo_algorithm("nsga3", "NSGA-III (Deb and Jain 2014): NSGA-II with niching on reference directions, for M >= 3",
+                     std::move(nsga3_params), nsga3);
+    add_mo_chain_runner(nsga3_entry, nsga3);
+    registry.add(std::move(nsga3_entry));
 
     registry.add(mo_algorithm(
         "moead", "MOEA/D-DE (Zhang and Li 2007; Li and Zhang 2009): Tchebycheff subproblems and neighbourhoods",

@@ -99,6 +99,8 @@ class ChainSpace {
         moves_.sitp.midpoint_column = midpoint_column;
         sitp_score_ = score;
     }
+    bool sitp_midpoint() const noexcept { return moves_.sitp.midpoint_column; }
+    SitpScore sitp_score() const noexcept { return sitp_score_; }
 
     template <class Score>
     void random_chain(Rng& rng, Path& out, Score&& score) {

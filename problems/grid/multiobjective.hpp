@@ -10,6 +10,13 @@
 // encodings cut loops) has at most W H cells, so each of its criteria is below 64 W H (length
 // sqrt(2), turns 1, angle penalty 50, clearance B + 1 <= 64 per cell), and a chain with a violation
 // is dominated by every legal path.
+//
+// MultiObjectiveChains is the same criteria on the `chain` encoding (chain.hpp): the chain space's
+// operators (random or SITP walks, crossover at a common cell, the GA's and IQGA's mutations, the
+// space's shortcut) make only legal chains, so no penalty is needed. Where the space would rank
+// by a single objective (SITP's choice among a segment's walks, a shortcut kept only when not
+// worse) a front has no such value: SITP ranks by length and a kept-if-not-worse shortcut is
+// refused.
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -19,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "problems/grid/chain.hpp"
 #include "problems/grid/clearance.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/objectives.hpp"
@@ -113,6 +121,56 @@ class MultiObjectivePaths {
     Encoding encoding_;
     PathCriteria criteria_;
     double penalty_ = 0.0;
+    std::shared_ptr<std::atomic<std::int64_t>> calls_;
+};
+
+/// A grid problem with the criteria as its objectives, searched on cell chains with the chain
+/// space's operators (a MultiObjectiveChainProblem, framework/multi_objective.hpp).
+class MultiObjectiveChains {
+  public:
+    using chain_type = Path;
+    using Space = ChainSpace<CellsObjective>;
+
+    /// InputError("shortcut_keep", ...) when the space keeps a shortcut only if not worse.
+    MultiObjectiveChains(Space space, PathCriteria criteria)
+        : space_(std::move(space)), criteria_(std::move(criteria)) {
+        space_.set_sitp(space_.sitp_midpoint(), SitpScore::length);
+        configured();
+    }
+
+    std::size_t objectives() const noexcept { return criteria_.count(); }
+
+    /// One evaluation: the criteria of chain c (legal by construction).
+    void evaluate(const Path& c, std::span<double> f) {
+        if (calls_) calls_->fetch_add(1, std::memory_order_relaxed);
+        criteria_(c, f);
+    }
+
+    void random_chain(Rng& rng, Path& out) { space_.random_chain(rng, out); }
+    bool crossover(Path& a, Path& b, Rng& rng) { return space_.crossover(a, b, rng); }
+    void mutate(Path& c, Rng& rng) { space_.mutate(c, rng); }
+    // IQGA's numbered mutations (framework/chain.hpp's NumberedMutations).
+    std::size_t mutation_count() const noexcept { return space_.mutation_count(); }
+    void mutate(std::size_t k, Path& c, Rng& rng, double badness = 0.0) { space_.mutate(k, c, rng, badness); }
+
+    /// The space's settings (chain.hpp); call configured() after changing them.
+    Space& space() noexcept { return space_; }
+    const Space& space() const noexcept { return space_; }
+    /// InputError for the settings that need a single objective (the header says why).
+    void configured() const {
+        require(!space_.keeps_if_not_worse(), "shortcut_keep",
+                "a front has no single objective to compare a shortcut with: keep it always or not at all");
+        require(space_.sitp_score() == SitpScore::length, "sitp_score",
+                "a front has no single objective to rank SITP's walks by: use length");
+    }
+
+    void count_calls(std::shared_ptr<std::atomic<std::int64_t>> calls) noexcept { calls_ = std::move(calls); }
+    const GridProblem<CellsObjective>& problem() const noexcept { return space_.problem(); }
+    const PathCriteria& criteria() const noexcept { return criteria_; }
+
+  private:
+    Space space_;
+    PathCriteria criteria_;
     std::shared_ptr<std::atomic<std::int64_t>> calls_;
 };
 

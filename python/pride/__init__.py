@@ -176,18 +176,21 @@ def front(algo, problem, *, dim=None, objectives=None, bounds=None, evals=None, 
                                _bool("vectorized", vectorized), _bool("reference", reference), params))
 
 
-def plan_front(grid, start, goal, *, algo="nsga2", objectives="length,turns", encoding="line", connector="repair",
-               waypoints=3, corner_cutting=False, clearance_bands=3, clearance_width=1, evals=None, iters=None,
+def plan_front(grid, start, goal, *, algo="nsga2", objectives="length,turns", encoding="line", init=None,
+               connector="repair", waypoints=3, corner_cutting=False, clearance_bands=3, clearance_width=1, evals=None, iters=None,
                wall_ms=None, seed=1, reference=True, **params):
     """A multi-objective run on a grid, as ``pride front --map``: ``objectives`` two to four of
-    length, turns, angle and clearance, searched through the ``line`` or ``free`` encoding. The
+    length, turns, angle and clearance, searched through the ``line`` or ``free`` encoding, or on
+    cell chains with ``encoding="chain"`` (nsga2 and nsga3: crossover at a common cell, the GA's and
+    IQGA's mutations; ``init="sitp"`` for file 002's SITP walks, else random walks). The
     result has ``f`` (n, M), ``paths`` (a list of (k, 2) arrays of (x, y)), ``legal`` (n,) and,
     unless ``reference=False``, ``quality`` against the exact front (``exact_found``: how many of
     its points the run found)."""
     if not isinstance(objectives, str):
         objectives = ",".join(_str("objectives", o) for o in _list("objectives", objectives))
     return Result(_pride.plan_front(_grid(grid), start, goal, _str("algo", algo), objectives,
-                                    _str("encoding", encoding), _str("connector", connector),
+                                    _str("encoding", encoding), "" if init is None else _str("init", init),
+                                    _str("connector", connector),
                                     _int("waypoints", waypoints, False), _bool("corner_cutting", corner_cutting),
                                     _int("clearance_bands", clearance_bands, False),
                                     _int("clearance_width", clearance_width, False), _int("evals", evals),

@@ -144,8 +144,8 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
 }
 
 py::dict plan_front(const Grid& g, const py::object& start, const py::object& goal, const std::string& algo,
-                    const std::string& objectives, const std::string& encoding, const std::string& connector,
-                    std::int64_t waypoints, bool corner_cutting, std::int64_t clearance_bands,
+                    const std::string& objectives, const std::string& encoding, const std::string& init,
+                    const std::string& connector, std::int64_t waypoints, bool corner_cutting, std::int64_t clearance_bands,
                     std::int64_t clearance_width, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters,
                     std::optional<double> wall_ms, std::uint64_t seed, bool reference, const py::dict& params) {
     auto errors = std::make_shared<UserError>();
@@ -154,6 +154,7 @@ py::dict plan_front(const Grid& g, const py::object& start, const py::object& go
     spec.grid.start = grid_cell(start, "start");
     spec.grid.goal = grid_cell(goal, "goal");
     spec.grid.encoding = encoding;
+    spec.grid.init = init;
     spec.grid.connector = connector;
     spec.grid.waypoints = waypoints;
     spec.grid.corner_cutting = corner_cutting;
@@ -201,7 +202,8 @@ void bind_front(py::module_& m) {
           py::arg("objectives"), py::arg("bounds"), py::arg("evals"), py::arg("iters"), py::arg("wall_ms"),
           py::arg("seed"), py::arg("vectorized"), py::arg("reference"), py::arg("params"));
     m.def("plan_front", &plan_front, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
-          py::arg("algo"), py::arg("objectives"), py::arg("encoding"), py::arg("connector"), py::arg("waypoints"),
+          py::arg("algo"), py::arg("objectives"), py::arg("encoding"), py::arg("init"), py::arg("connector"),
+          py::arg("waypoints"),
           py::arg("corner_cutting"), py::arg("clearance_bands"), py::arg("clearance_width"), py::arg("evals"),
           py::arg("iters"), py::arg("wall_ms"), py::arg("seed"), py::arg("reference"), py::arg("params"));
 }

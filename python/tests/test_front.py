@@ -66,10 +66,11 @@ def test_scalar_vectorized_and_ask_tell_are_one_run():
     assert a.x.min() > -1e-2 and a.x.max() < 2.0 + 1e-2
 
 
-def test_a_grid_front_holds_legal_paths_scored_as_paths():
+@pytest.mark.parametrize("encoding, init", [("free", None), ("chain", None), ("chain", "sitp")])
+def test_a_grid_front_holds_legal_paths_scored_as_paths(encoding, init):
     g = pride.Grid.load(os.path.join(MAPS, "file002-20x20.map"))
-    r = pride.plan_front(g, (0, 0), (19, 19), objectives=["length", "turns", "clearance"], encoding="free",
-                         evals=20000)
+    r = pride.plan_front(g, (0, 0), (19, 19), objectives=["length", "turns", "clearance"], encoding=encoding,
+                         init=init, evals=20000)
     exact = pride.pareto(g, (0, 0), (19, 19), objectives="length,turns,clearance")
     assert r.quality["reference_size"] == len(exact)
     assert r.objectives == ["length", "turns", "clearance"]
@@ -83,6 +84,8 @@ def test_a_grid_front_holds_legal_paths_scored_as_paths():
     front = np.array([[p["length"], p["turns"], p["clearance"]] for p in exact])
     for f in r.f:
         assert np.any(np.all(front <= f + 1e-9, axis=1))
+    if encoding == "chain":  # the chain operators reach part of this map's exact front (seed 1)
+        assert r.quality["exact_found"] >= 3 and r.quality["hypervolume_ratio"] > 0.8
 
 
 def test_errors_are_one_line_and_name_the_argument():
@@ -109,8 +112,14 @@ def test_errors_are_one_line_and_name_the_argument():
         with pytest.raises(ValueError, match=r"^tell: expected an \(n, 2\) array"):
             opt.tell(np.zeros(len(X)))
     g = pride.Grid(np.zeros((4, 4), dtype=int))
-    with pytest.raises(ValueError, match="^encoding: multi-objective grid problems are searched through line or free"):
-        pride.plan_front(g, (0, 0), (3, 3), encoding="chain")
+    with pytest.raises(ValueError, match="^encoding: unknown encoding 'tree'"):
+        pride.plan_front(g, (0, 0), (3, 3), encoding="tree")
+    with pytest.raises(ValueError, match="^algo: moead has no chain operators"):
+        pride.plan_front(g, (0, 0), (3, 3), encoding="chain", algo="moead")
+    with pytest.raises(ValueError, match="^init: chains start from random walks"):
+        pride.plan_front(g, (0, 0), (3, 3), encoding="chain", init="uniform")
+    with pytest.raises(TypeError, match="^init: "):
+        pride.plan_front(g, (0, 0), (3, 3), encoding="chain", init=3)
     with pytest.raises(ValueError, match="^objectives: "):
         pride.plan_front(g, (0, 0), (3, 3), objectives="length")
 
