@@ -42,7 +42,16 @@ INSTANCES = [
     ("file003-env3-60x60", "examples/maps/file003-env3-60x60.map", (0, 59), (59, 0)),
     ("den312d", "reference-data/movingai/den312d.map", (58, 37), (4, 56)),
 ]
-MO_ALGOS = ["nsga2", "moead", "smsemoa"]
+# (label, algorithm, encoding, init): the three on `free`, and NSGA-II on cell chains with the chain
+# operators, from random walks and from file 002's SITP walks.
+ENTRANTS = [
+    ("nsga2", "nsga2", "free", None),
+    ("moead", "moead", "free", None),
+    ("smsemoa", "smsemoa", "free", None),
+    ("nsga2-chain", "nsga2", "chain", None),
+    ("nsga2-chain-sitp", "nsga2", "chain", "sitp"),
+]
+MO_ALGOS = [label for label, _, _, _ in ENTRANTS]
 SEEDS = range(1, 16)
 EVALS = 20_000
 CRITERIA = {"ltc": "length,turns,clearance", "lta": "length,turns,angle"}
@@ -58,13 +67,13 @@ def run_all():
         grid = pride.Grid.load(str(REPO / path))
         for key, criteria in CRITERIA.items():
             exact = pride.pareto(grid, start, goal, objectives=criteria)
-            for algo in MO_ALGOS:
+            for label, algo, encoding, init in ENTRANTS:
                 for seed in SEEDS:
-                    r = pride.plan_front(grid, start, goal, algo=algo, objectives=criteria, encoding="free",
-                                         evals=EVALS, seed=seed)
+                    r = pride.plan_front(grid, start, goal, algo=algo, objectives=criteria, encoding=encoding,
+                                         init=init, evals=EVALS, seed=seed)
                     q = r.quality
                     assert q["reference_size"] == len(exact)
-                    rows.append([name, key, algo, seed, r.evaluations, repr(q["hypervolume_ratio"]),
+                    rows.append([name, key, label, seed, r.evaluations, repr(q["hypervolume_ratio"]),
                                  repr(q["igd_plus"]), q["exact_found"], q["reference_size"], len(r.f)])
             if key != "lta":
                 continue
@@ -149,7 +158,7 @@ def blocks(data=DATA):
     rows = read(data)
     runs = sum(1 for _ in rows)
     return {
-        "mo-runs": f"{runs} runs: {len(INSTANCES)} instances; " + ", ".join(MO_ALGOS) +
+        "mo-runs": f"{runs:,} runs: {len(INSTANCES)} instances; " + ", ".join(MO_ALGOS) +
                    f" on two sets of criteria and IQGA on one, {len(SEEDS)} seeds each, {EVALS:,} evaluations per run.",
         "mo-quality-ltc": quality_block(rows, "ltc"),
         "mo-tests-ltc": tests_block(rows, "ltc"),
