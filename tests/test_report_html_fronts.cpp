@@ -1,12 +1,13 @@
 // `pride report STORE --html DIR` on a multi-objective campaign (issue 28): per problem the
 // attainment surfaces of two objectives, each algorithm's median front against the reference
 // front and, on grids, that front's paths on the map; the surfaces drawn are attainment.hpp's of
-// the stored fronts; a damaged front is a note on the page.
+// the stored fronts; a damaged front is a note on the page. Also --plots' matplotlib figures of them.
 #include <sqlite3.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -119,7 +120,11 @@ TEST_CASE("report --html: attainment surfaces, median fronts and grid paths of m
     CHECK(html.find("No attainment surfaces: dtlz2 has 3 objectives") != std::string::npos);
     CHECK(html.find("k = ceil(q n)") != std::string::npos);
     CHECK(html.find("in objectives f1 and f2 of 3 (a projection)") != std::string::npos);
-    CHECK(html.find("class=\"note\"") == std::string::npos);  // nothing left out
+    CHECK(html.find("is left out") == std::string::npos);  // every front read
+    CHECK(html.find("No reference front") == std::string::npos);
+    // The markdown report's table of fronts, on the page too.
+    CHECK(html.find("<th class=\"n\">HV ratio</th><th class=\"n\">IGD+</th><th class=\"n\">exact points</th>") !=
+          std::string::npos);
 
     // What the page draws is attainment.hpp's surfaces of the stored fronts, and the median run's
     // front (by hypervolume ratio) with its seed named; the reference front is the campaign's.
@@ -160,6 +165,37 @@ TEST_CASE("report --html: attainment surfaces, median fronts and grid paths of m
             if (problem == "grid") CHECK(a.median->paths.size() == static_cast<std::size_t>(median.f.cols()));
         }
     }
+    // Every figure loads in a browser (headless Chromium, where installed: test_report_html.cpp).
+    if (fs::exists("/usr/bin/chromium")) {
+        std::size_t figures = 0;
+        for (std::size_t at = html.find("<img src="); at != std::string::npos; at = html.find("<img src=", at + 1))
+            ++figures;
+        const int dumped = std::system(("timeout 120 /usr/bin/chromium --headless --no-sandbox --disable-gpu "
+                                        "--user-data-dir=" +
+                                        quote(dir.file("profile")) + " --dump-dom " +
+                                        quote("file://" + (out / "index.html").string()) + " >" +
+                                        quote(dir.file("dom")) + " 2>/dev/null")
+                                           .c_str());
+        REQUIRE(dumped == 0);
+        CHECK(slurp(dir.file("dom")).find("data-figures=\"loaded " + std::to_string(figures) + "\"") !=
+              std::string::npos);
+    }
+
+    // The matplotlib figures (--plots) of the same store: attainment for two objectives, fronts for all.
+    const auto plots = run_pride("report " + quote(store) + " --plots " + quote(dir.file("plots")));
+    if (plots.status == 2 && plots.err.find("matplotlib") != std::string::npos)
+        FAIL("python3-matplotlib is missing: scripts/deps.sh installs it");
+    INFO(plots.err);
+    REQUIRE(plots.status == 0);
+    for (const char* stem :
+         {"zdt1-attainment", "zdt1-fronts", "zdt1-final", "dtlz2-fronts", "grid-attainment", "grid-fronts"}) {
+        INFO(stem);
+        CHECK(fs::exists(dir.path() / "plots" / (std::string(stem) + ".png")));
+        CHECK(fs::exists(dir.path() / "plots" / (std::string(stem) + ".svg")));
+    }
+    CHECK(!fs::exists(dir.path() / "plots" / "dtlz2-attainment.png"));
+    CHECK(!fs::exists(dir.path() / "plots" / "grid-paths.png"));
+
     // k = ceil(q n) at the edges.
     CHECK(html::attainment_k(0.25, 1) == 1);
     CHECK(html::attainment_k(0.75, 4) == 3);

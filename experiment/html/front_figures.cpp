@@ -20,7 +20,7 @@
 namespace pride::html {
 namespace {
 
-const Rgb kReference{0.45, 0.45, 0.5};
+const Rgb kReference{0.74, 0.74, 0.78};  // light: the runs' markers are drawn over it
 constexpr Marker kShapes[] = {Marker::diamond, Marker::square, Marker::cross, Marker::circle};
 
 std::string joined(const std::vector<std::string>& names, const char* between) {

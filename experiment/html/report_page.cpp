@@ -204,6 +204,26 @@ std::string results_section(const ReportData& r) {
     }
     h += "</table></div>\n";
     for (const auto& note : r.notes) h += "<p class=\"note\">" + escape(note) + "</p>\n";
+    if (!r.fronts.empty()) {
+        // The markdown report's table of fronts, the same rows.
+        h += "<p>Problems of several objectives, per algorithm: the median hypervolume ratio (1 - the gap above), the "
+             "median IGD+ (normalised the same way; 0 is the reference front) and, on grids, the median number of the "
+             "exact front's points found; <b>best</b> marks the lowest median IGD+; p (Holm) is the rank-sum test of "
+             "each algorithm's IGD+ against the best's, Holm-corrected over the problem's algorithms.</p>\n"
+             "<table>\n<tr><th>problem</th><th>algorithm</th><th class=\"n\">runs</th><th class=\"n\">HV "
+             "ratio</th><th class=\"n\">IGD+</th><th class=\"n\">exact points</th><th class=\"n\">p "
+             "(Holm)</th></tr>\n";
+        for (const auto& x : r.fronts)
+            h += fmt::format(
+                "{}<td>{}</td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{:.4g}</td><td "
+                "class=\"n\">{:.4g}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
+                x.best ? "<tr class=\"best\">" : "<tr>", escape(x.problem), escape(x.algorithm), x.runs,
+                x.hypervolume_ratio, x.igd_plus, x.exact_found ? fmt::format("{:g}", *x.exact_found) : "-",
+                x.best     ? "best"
+                : x.p_holm ? fmt::format("{:.3g}{}", *x.p_holm, *x.p_holm < 0.05 ? "*" : "")
+                           : "");
+        h += "</table>\n";
+    }
     return h + "</section>\n";
 }
 
