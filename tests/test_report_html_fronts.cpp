@@ -237,6 +237,16 @@ TEST_CASE("report --html: a damaged multi-objective front is a note on the page,
         INFO(words);
         CHECK(html.find(words) != std::string::npos);
     }
+    // --plots refuses such a store in one line naming the run (it draws no figure of a store it
+    // cannot read whole).
+    const auto plots = run_pride("report " + quote(store) + " --plots " + quote(dir.file("plots")));
+    if (plots.status == 2 && plots.err.find("matplotlib") != std::string::npos)
+        FAIL("python3-matplotlib is missing: scripts/deps.sh installs it");
+    INFO(plots.err);
+    CHECK(plots.status == 2);
+    CHECK(plots.err.find("damaged store: runs row (problem 'grid', algorithm 'smsemoa', seed 1), column solution") !=
+          std::string::npos);
+
     // The runs left are drawn.
     for (const char* name : {"attainment-zdt1.svg", "fronts-zdt1.svg", "attainment-grid.svg",
                              "front-paths-grid-nsga2.svg", "front-paths-grid-smsemoa.svg", "fronts-dtlz2.svg"}) {

@@ -185,8 +185,8 @@ void front_figures(Page& page, const report::CampaignStore& s, const PageStore& 
             for (std::size_t l = 0; l < a.surfaces.size(); ++l) {
                 staircase(a.surfaces[l], right, top, x, y);
                 f.line(x, y, page.colour(a.algorithm),
-                       fmt::format("{}: {:g} % (k = {} of {})", a.algorithm, 100 * kAttainmentLevels[l], a.k[l],
-                                   a.runs.size()),
+                       fmt::format("{}: {:g} % (k = {} of {}){}", a.algorithm, 100 * kAttainmentLevels[l], a.k[l],
+                                   a.runs.size(), x.empty() ? ": nothing attained" : ""),
                        dashes[l], true);
             }
         }
