@@ -2,6 +2,7 @@
 
 #include <sqlite3.h>
 
+#include <cmath>
 #include <regex>
 
 #include <fmt/format.h>
@@ -156,11 +157,12 @@ void read_front(const Reader& db, const std::string& solution, StoredFront& out)
         bound(s);
         while (s.step(row)) {
             const auto j = sqlite3_column_int64(s.get(), 0), i = sqlite3_column_int64(s.get(), 1);
-            if (!number(s.text(2))) {
+            const double v = sqlite3_column_double(s.get(), 3);
+            if (!number(s.text(2)) || std::isnan(v)) {
                 out.error = fmt::format("point {}: objective {} is not a number", j, i);
                 return;
             }
-            out.f(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = sqlite3_column_double(s.get(), 3);
+            out.f(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = v;
         }
     }
     if (grid == 0) return;
