@@ -4,7 +4,11 @@
 For every problem: the convergence of each algorithm (median and interquartile band over the
 seeds of the best value after each iteration, against evaluations when every curve of the figure
 records them, else against iterations), boxplots of the final values, and for grid problems the
-best path of each algorithm on the map. Where the problem's optimum f_opt is known (continuous
+best path of each algorithm on the map; for problems of several objectives (runs that store a
+front), the boxplots of the hypervolume gaps, each algorithm's 25 %, 50 % and 75 % empirical
+attainment surfaces (two objectives; the k-th surface of n runs for k = ceil(q n), as
+framework/pareto/attainment.hpp) and the front of its median run (by hypervolume ratio), without
+the reference front (pride report --html draws it). Where the problem's optimum f_opt is known (continuous
 problems), values are precisions f - f_opt on a log axis (precisions below 1e-12, 0 included, are
 drawn at 1e-12, and the axis says so), unless --raw. Whole-map planners (A*, exact: no history)
 appear in the convergence figure as a horizontal line at their value. Each figure is written as
@@ -73,12 +77,90 @@ def valid_numbers(v):
     return isinstance(v, list) and all(is_number(x) for x in v)
 
 
+def valid_front(v):
+    """A multi-objective run's solution: its objectives' names, hypervolume ratio and front."""
+    names, front = v.get("objectives"), v.get("front")
+    if not (isinstance(names, list) and len(names) >= 2 and all(isinstance(n, str) for n in names)):
+        return False
+    if not (is_number(v.get("hypervolume_ratio")) and v.get("hypervolume_ratio") is not None):
+        return False
+    return isinstance(front, list) and all(
+        isinstance(p, dict) and valid_numbers(p.get("f")) and len(p["f"]) == len(names) and None not in p["f"]
+        for p in front)
+
+
 def valid_solution(v):
-    """A point (a list of numbers) or a path (a list of [x, y] cells)."""
+    """A point (a list of numbers), a path (a list of [x, y] cells) or a front (valid_front)."""
+    if isinstance(v, dict):
+        return valid_front(v)
     if not isinstance(v, list):
         return False
     return all(is_number(x) for x in v) or all(
         isinstance(c, list) and len(c) == 2 and all(isinstance(x, int) for x in c) for c in v)
+
+
+def attainment_surface(sets, k):
+    """The corners of the k-th attainment surface of two-objective sets (lists of (f1, f2)), in
+    increasing f1: at each f1, the k-th smallest of the runs' best f2 so far (attainment.hpp)."""
+    points = sorted((p[0], p[1], i) for i, s in enumerate(sets) for p in s)
+    best, corners, last, at = [np.inf] * len(sets), [], np.inf, 0
+    while at < len(points):
+        x = points[at][0]
+        while at < len(points) and points[at][0] == x:
+            best[points[at][2]] = min(best[points[at][2]], points[at][1])
+            at += 1
+        y = sorted(best)[k - 1]
+        if y < last:
+            corners.append((x, y))
+            last = y
+    return corners
+
+
+def plot_fronts(problem, algorithms, folder, stem):
+    """Attainment surfaces (two objectives) and each algorithm's median front, from the runs' fronts."""
+    names = next(iter(algorithms.values()))[0][2]["objectives"]
+    styles = {0.25: ":", 0.5: "-", 0.75: "--"}
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    if len(names) == 2:
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        surfaces = {}
+        for algorithm, rs in sorted(algorithms.items()):
+            sets = [[p["f"] for p in r[2]["front"]] for r in rs]
+            for q in styles:
+                k = max(1, int(np.ceil(q * len(sets))))
+                surfaces[algorithm, q, k] = attainment_surface(sets, k)
+        corners = [c for s in surfaces.values() for c in s]
+        right = max((c[0] for c in corners), default=0.0)
+        top = max((c[1] for c in corners), default=0.0)
+        for index, algorithm in enumerate(sorted(algorithms)):
+            for (a, q, k), s in surfaces.items():
+                if a != algorithm or not s:
+                    continue
+                # The staircase from above its first corner out to the right of its last.
+                x = [s[0][0]] + [c[0] for c in s] + [right]
+                y = [top] + [c[1] for c in s] + [s[-1][1]]
+                ax.step(x, y, where="post", linestyle=styles[q], color=colours[index % len(colours)],
+                        label=f"{algorithm}: {100 * q:g} % (k = {k} of {len(algorithms[algorithm])})")
+        ax.set_xlabel(names[0])
+        ax.set_ylabel(names[1])
+        ax.set_title(f"{problem}: empirical attainment surfaces (k = ceil(q n))", fontsize="medium")
+        ax.legend(fontsize="small")
+        save(fig, folder, f"{stem}-attainment")
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    markers = ["D", "s", "x", "o"]
+    for index, (algorithm, rs) in enumerate(sorted(algorithms.items())):
+        # The median run by hypervolume ratio: best first, ties by seed; of two middle ones the better.
+        ranked = sorted(rs, key=lambda r: (-r[2]["hypervolume_ratio"], r[0]))
+        median = ranked[(len(ranked) - 1) // 2]
+        f = np.array([p["f"] for p in median[2]["front"]], dtype=float).reshape(-1, len(names))
+        ax.plot(f[:, 0], f[:, 1], markers[index % len(markers)], color=colours[index % len(colours)],
+                label=f"{algorithm} (seed {median[0]}, HV ratio {median[2]['hypervolume_ratio']:.4g})")
+    ax.set_xlabel(names[0])
+    ax.set_ylabel(names[1])
+    projection = f"; objectives 1 and 2 of {len(names)}" if len(names) > 2 else ""
+    ax.set_title(f"{problem}: fronts of the median runs{projection}", fontsize="medium")
+    ax.legend(fontsize="small")
+    save(fig, folder, f"{stem}-fronts")
 
 
 def main():
@@ -125,6 +207,22 @@ def main():
         info = problems.get(problem)
         f_opt = info[4] if info and isinstance(info[4], (int, float)) and np.isfinite(info[4]) else None
         precision = f_opt is not None and not raw
+
+        # Several objectives: every run stores a front (its value is the hypervolume gap).
+        if all(isinstance(r[2], dict) for rs in algorithms.values() for r in rs):
+            names = {tuple(r[2]["objectives"]) for rs in algorithms.values() for r in rs}
+            if len(names) > 1:
+                raise Damaged(f"{store}: damaged store: problem '{problem}': its runs' fronts have different "
+                              f"objectives ({'; '.join(', '.join(n) for n in sorted(names))})")
+            fig, ax = plt.subplots(figsize=(6.4, 4.2))
+            labels = sorted(algorithms)
+            ax.boxplot([[r[1] for r in algorithms[a] if r[1] is not None] or [np.nan] for a in labels],
+                       labels=labels)
+            ax.set_ylabel("final hypervolume gap 1 - HV / HV_ref")
+            ax.set_title(problem)
+            save(fig, folder, f"{stem}-final")
+            plot_fronts(problem, algorithms, folder, stem)
+            continue
 
         def shown(v):
             """A value as drawn: its precision (floored for the log axis) where f_opt is known."""

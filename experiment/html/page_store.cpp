@@ -2,6 +2,7 @@
 
 #include <sqlite3.h>
 
+#include <cmath>
 #include <regex>
 
 #include <fmt/format.h>
@@ -75,6 +76,117 @@ grid::Cell parse_cell(const std::string& text, const std::string& store, const s
     return {std::stoi(m[1].str()), std::stoi(m[2].str())};
 }
 
+/// The front of a multi-objective run read from its solution, or in `out.error` why it cannot be:
+/// SQLite's JSON functions read it (the report's store reader reads its indicators the same way),
+/// each form checked before a value is taken, so that no form of solution makes SQLite fail.
+void read_front(const Reader& db, const std::string& solution, StoredFront& out) {
+    const auto bound = [&](Reader::Statement& s) {
+        sqlite3_bind_text(s.get(), 1, solution.c_str(), -1, SQLITE_TRANSIENT);
+    };
+    const std::string row = fmt::format("runs row (problem '{}', algorithm '{}', seed {}), column solution",
+                                        out.problem, out.algorithm, out.seed);
+    const auto number = [](const std::string& type) { return type == "real" || type == "integer"; };
+    {
+        Reader::Statement s(db,
+                            "SELECT json_valid(?1), CASE WHEN json_valid(?1) THEN json_type(?1, '$.objectives') END, "
+                            "CASE WHEN json_valid(?1) THEN json_type(?1, '$.front') END, CASE WHEN json_valid(?1) "
+                            "THEN json_type(?1, '$.hypervolume_ratio') END, CASE WHEN json_valid(?1) THEN "
+                            "json_extract(?1, '$.hypervolume_ratio') END");
+        bound(s);
+        s.step(row);
+        if (sqlite3_column_int(s.get(), 0) != 1) {
+            out.error = "not valid JSON";
+            return;
+        }
+        if (s.text(1) != "array" || s.text(2) != "array" || !number(s.text(3))) {
+            out.error = "expected an object with objectives (a list of names), hypervolume_ratio and front (a list)";
+            return;
+        }
+        out.hypervolume_ratio = sqlite3_column_double(s.get(), 4);
+    }
+    {
+        Reader::Statement s(db, "SELECT type, value FROM json_each(?1, '$.objectives') ORDER BY key");
+        bound(s);
+        while (s.step(row)) {
+            if (s.text(0) != "text") {
+                out.error = "an objective's name is not a string";
+                return;
+            }
+            out.objectives.push_back(s.text(1));
+        }
+        if (out.objectives.size() < 2) {
+            out.error = fmt::format("expected two objectives or more, got {}", out.objectives.size());
+            return;
+        }
+    }
+    const auto m = static_cast<Eigen::Index>(out.objectives.size());
+    std::size_t points = 0, grid = 0;
+    {
+        Reader::Statement s(db,
+                            "SELECT type, CASE WHEN type = 'object' THEN json_type(value, '$.f') END, CASE WHEN type "
+                            "= 'object' THEN json_array_length(value, '$.f') END, CASE WHEN type = 'object' THEN "
+                            "json_type(value, '$.path') END, CASE WHEN type = 'object' THEN json_type(value, "
+                            "'$.legal') END FROM json_each(?1, '$.front') ORDER BY key");
+        bound(s);
+        while (s.step(row)) {
+            if (s.text(0) != "object" || s.text(1) != "array" || sqlite3_column_int64(s.get(), 2) != m) {
+                out.error = fmt::format("point {}: expected an object with f, a list of {} values", points, m);
+                return;
+            }
+            if (!s.null(3)) {
+                if (s.text(3) != "array" || (s.text(4) != "true" && s.text(4) != "false")) {
+                    out.error =
+                        fmt::format("point {}: expected path, a list of cells, and legal, true or false", points);
+                    return;
+                }
+                out.legal.push_back(s.text(4) == "true" ? 1 : 0);
+                ++grid;
+            }
+            ++points;
+        }
+    }
+    if (grid != 0 && grid != points) {
+        out.error = "some points have a path and some none";
+        return;
+    }
+    out.f.resize(m, static_cast<Eigen::Index>(points));
+    {
+        Reader::Statement s(db,
+                            "SELECT p.key, f.key, f.type, f.value FROM json_each(?1, '$.front') AS p, "
+                            "json_each(p.value, '$.f') AS f ORDER BY p.key, f.key");
+        bound(s);
+        while (s.step(row)) {
+            const auto j = sqlite3_column_int64(s.get(), 0), i = sqlite3_column_int64(s.get(), 1);
+            const double v = sqlite3_column_double(s.get(), 3);
+            if (!number(s.text(2)) || std::isnan(v)) {
+                out.error = fmt::format("point {}: objective {} is not a number", j, i);
+                return;
+            }
+            out.f(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = v;
+        }
+    }
+    if (grid == 0) return;
+    out.paths.resize(points);
+    Reader::Statement s(db,
+                        "SELECT p.key, c.type, CASE WHEN c.type = 'array' THEN json_array_length(c.value) END, CASE "
+                        "WHEN c.type = 'array' THEN json_type(c.value, '$[0]') END, CASE WHEN c.type = 'array' THEN "
+                        "json_type(c.value, '$[1]') END, CASE WHEN c.type = 'array' THEN json_extract(c.value, "
+                        "'$[0]') END, CASE WHEN c.type = 'array' THEN json_extract(c.value, '$[1]') END FROM "
+                        "json_each(?1, '$.front') AS p, json_each(p.value, '$.path') AS c ORDER BY p.key, c.key");
+    bound(s);
+    while (s.step(row)) {
+        const auto j = static_cast<std::size_t>(sqlite3_column_int64(s.get(), 0));
+        const std::int64_t x = sqlite3_column_int64(s.get(), 5), y = sqlite3_column_int64(s.get(), 6);
+        if (s.text(1) != "array" || sqlite3_column_int64(s.get(), 2) != 2 || s.text(3) != "integer" ||
+            s.text(4) != "integer" || x < -(1 << 30) || x > (1 << 30) || y < -(1 << 30) || y > (1 << 30)) {
+            out.error = fmt::format("point {}: expected path, a list of [x, y] cells", j);
+            out.paths.clear();
+            return;
+        }
+        out.paths[j].push_back({static_cast<int>(x), static_cast<int>(y)});
+    }
+}
+
 }  // namespace
 
 PageStore read_page_store(const std::string& path) {
@@ -83,6 +195,21 @@ PageStore read_page_store(const std::string& path) {
     {
         Reader::Statement s(db, "SELECT text FROM campaign WHERE id = 1");
         if (s.step()) out.text = s.text(0);
+    }
+    // Multi-objective runs: their solution is an object (as read_store tells them apart).
+    {
+        Reader::Statement fronts(
+            db,
+            "SELECT problem, algorithm, seed, solution FROM runs WHERE substr(solution, 1, 1) = '{' "
+            "ORDER BY problem, algorithm, seed");
+        while (fronts.step()) {
+            StoredFront f;
+            f.problem = fronts.text(0);
+            f.algorithm = fronts.text(1);
+            f.seed = sqlite3_column_int64(fronts.get(), 2);
+            read_front(db, fronts.text(3), f);
+            out.fronts.push_back(std::move(f));
+        }
     }
     // Stores from before the problems table are reported too: without pictures of grids.
     if (!db.has_table("problems")) return out;
@@ -109,7 +236,8 @@ PageStore read_page_store(const std::string& path) {
     Reader::Statement best(db,
                            "SELECT r.problem, r.algorithm, r.seed, r.best, r.optimum, r.solution FROM runs r JOIN "
                            "problems p ON p.id = r.problem WHERE p.type = 'grid' AND r.feasible = 1 AND r.best IS NOT "
-                           "NULL ORDER BY r.problem, r.algorithm, r.best, r.seed");
+                           "NULL AND coalesce(substr(r.solution, 1, 1), '') <> '{' ORDER BY r.problem, r.algorithm, "
+                           "r.best, r.seed");
     while (best.step()) {
         BestPath b;
         b.problem = best.text(0);

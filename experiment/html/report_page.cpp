@@ -16,6 +16,8 @@
 #include "experiment/html/draw.hpp"
 #include "experiment/html/figure.hpp"
 #include "experiment/html/font_session.hpp"
+#include "experiment/html/front_figures.hpp"
+#include "experiment/html/page.hpp"
 #include "experiment/html/page_store.hpp"
 #include "experiment/html/provenance.hpp"
 #include "experiment/report/coco.hpp"
@@ -38,36 +40,6 @@ constexpr double kFloor = 1e-12;                 // precisions at or below it ar
 constexpr std::size_t kCurvePoints = 400;        // x positions per convergence curve at most
 constexpr std::size_t kParetoCells = 4096;       // maps up to 64 x 64 get their Pareto front: it is cheap
 constexpr std::size_t kParetoLabels = 1u << 22;  // and it stops here on a map where it is not
-
-std::string escape(std::string_view s) {
-    std::string out;
-    for (const char c : s) switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            case '\'':
-                out += "&#39;";
-                break;
-            default:
-                out += c;
-        }
-    return out;
-}
-
-/// For reading, as the markdown report: 6 significant digits.
-std::string num(double v) {
-    if (std::isnan(v)) return "nan";
-    return std::isfinite(v) ? fmt::format("{:.6g}", v) : (v > 0 ? "inf" : "-inf");
-}
 
 /// The seeds' values at each x: median and quartiles; x evaluations or iterations.
 struct Curve {
@@ -134,37 +106,6 @@ Curve as_steps(const Curve& c) {
     }
     return s;
 }
-
-/// The page as it is built: its HTML, and its figures written into `files` under `folder`.
-struct Page {
-    OutputFiles* files = nullptr;
-    fs::path folder;
-    std::map<std::string, std::string> names;  // problem id -> its file name, no two alike
-    std::string html;
-    std::string notes;  // of the current problem: under its figures
-    std::size_t figures = 0;
-    std::map<std::string, std::size_t> algorithms;  // each algorithm's colour and dash, by index
-
-    Rgb colour(const std::string& algorithm) const { return series_colour(algorithms.at(algorithm)); }
-    int dash(const std::string& algorithm) const { return static_cast<int>(algorithms.at(algorithm) % 4); }
-
-    /// The figure file of a problem (or an ECDF group): "x/y" and "x_y" get files of their own.
-    std::string file(const std::string& kind, const std::string& id) const {
-        const auto it = names.find(id);
-        return kind + "-" + (it != names.end() ? it->second : engine::file_name(id)) + ".svg";
-    }
-    OutputFiles::File& create(const std::string& name) { return files->create(folder / name); }
-    /// Writes the figure and puts it on the page with its caption (HTML).
-    void add(const Figure& f, const std::string& name, const std::string& alt, const std::string& caption) {
-        f.write(create(name));
-        put(name, alt, caption);
-    }
-    void put(const std::string& name, const std::string& alt, const std::string& caption) {
-        ++figures;
-        html += fmt::format("<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n", escape(name),
-                            escape(alt), caption);
-    }
-};
 
 const char* kStyle = R"css(
 body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 0 auto; max-width: 1240px;
@@ -263,6 +204,26 @@ std::string results_section(const ReportData& r) {
     }
     h += "</table></div>\n";
     for (const auto& note : r.notes) h += "<p class=\"note\">" + escape(note) + "</p>\n";
+    if (!r.fronts.empty()) {
+        // The markdown report's table of fronts, the same rows.
+        h += "<p>Problems of several objectives, per algorithm: the median hypervolume ratio (1 - the gap above), the "
+             "median IGD+ (normalised the same way; 0 is the reference front) and, on grids, the median number of the "
+             "exact front's points found; <b>best</b> marks the lowest median IGD+; p (Holm) is the rank-sum test of "
+             "each algorithm's IGD+ against the best's, Holm-corrected over the problem's algorithms.</p>\n"
+             "<table>\n<tr><th>problem</th><th>algorithm</th><th class=\"n\">runs</th><th class=\"n\">HV "
+             "ratio</th><th class=\"n\">IGD+</th><th class=\"n\">exact points</th><th class=\"n\">p "
+             "(Holm)</th></tr>\n";
+        for (const auto& x : r.fronts)
+            h += fmt::format(
+                "{}<td>{}</td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{:.4g}</td><td "
+                "class=\"n\">{:.4g}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
+                x.best ? "<tr class=\"best\">" : "<tr>", escape(x.problem), escape(x.algorithm), x.runs,
+                x.hypervolume_ratio, x.igd_plus, x.exact_found ? fmt::format("{:g}", *x.exact_found) : "-",
+                x.best     ? "best"
+                : x.p_holm ? fmt::format("{:.3g}{}", *x.p_holm, *x.p_holm < 0.05 ? "*" : "")
+                           : "");
+        h += "</table>\n";
+    }
     return h + "</section>\n";
 }
 
@@ -453,9 +414,12 @@ void ert_section(Page& page, const ReportData& r) {
 }
 
 /// Per problem: convergence, final values, and on grids the paths and the Pareto front (figures
-/// in a grid of two columns where the window is wide enough; notes under them).
+/// in a grid of two columns where the window is wide enough; notes under them). A problem of
+/// several objectives: the final hypervolume gaps, then its fronts (front_figures.hpp).
 void problem_figures(Page& page, const std::string& problem, const std::vector<const StoredRun*>& runs,
-                     const ReportData& r, const PageStore& extra) {
+                     const ReportData& r, const report::CampaignStore& s, const PageStore& extra) {
+    // Its runs store fronts, and as their value the hypervolume gap; they record no convergence.
+    const bool fronts = std::all_of(runs.begin(), runs.end(), [](const StoredRun* x) { return x->front; });
     std::optional<double> f_opt;
     bool precision = false;
     for (const ReportRow& row : r.rows)
@@ -500,8 +464,10 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
     }
     // Precisions on a log axis; values too where they are positive and span a decade or more.
     const bool log = precision || (lo > 0 && hi > 10 * lo);
-    const std::string what = precision ? "precision f - f_opt" : "best value f";
-    {
+    const std::string what = fronts      ? "hypervolume gap 1 - HV / HV_ref"
+                             : precision ? "precision f - f_opt"
+                                         : "best value f";
+    if (!fronts) {
         Figure f(problem + ": convergence",
                  Axis{by_evaluations ? "evaluations" : "iterations", Scale::linear, std::nullopt, std::nullopt},
                  Axis{what, log ? Scale::log : Scale::linear, std::nullopt, std::nullopt});
@@ -542,6 +508,10 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
                                floored ? fmt::format("; precisions <= {:g} drawn at {:g}", kFloor, kFloor) : ""));
         page.add(g, page.file("final", problem), problem + ": final values",
                  fmt::format("Final {} of every run on {}.{}", what, escape(problem), missing));
+    }
+    if (fronts) {
+        front_figures(page, s, extra, problem);
+        return;
     }
 
     // Grids: each algorithm's best path on the map, and where cheap the exact Pareto front.
@@ -624,11 +594,11 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
 }
 
 void problem_section(Page& page, const std::string& problem, const std::vector<const StoredRun*>& runs,
-                     const ReportData& r, const PageStore& extra) {
+                     const ReportData& r, const report::CampaignStore& s, const PageStore& extra) {
     page.html += fmt::format("<h3 id=\"problem-{}\">{}</h3>\n<div class=\"figures\">\n", escape(page.names.at(problem)),
                              escape(problem));
     page.notes.clear();
-    problem_figures(page, problem, runs, r, extra);
+    problem_figures(page, problem, runs, r, s, extra);
     page.html += "</div>\n" + page.notes;
 }
 
@@ -685,7 +655,7 @@ PageSummary write_report_page(const std::string& store, const std::string& dir, 
         cd_diagram(page, data);
         ert_section(page, data);
         page.html += "<section id=\"problems\"><h2>Figures per problem</h2>\n";
-        for (const auto& [problem, runs] : by_problem) problem_section(page, problem, runs, data, extra);
+        for (const auto& [problem, runs] : by_problem) problem_section(page, problem, runs, data, s, extra);
         page.html += "</section>\n";
 
         std::string nav =

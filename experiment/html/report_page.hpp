@@ -5,7 +5,8 @@
 // table and statistics (experiment/report/report.hpp), the ERT tables and runtime ECDFs
 // (coco.hpp), and per problem the convergence of each algorithm, boxplots of the final values
 // and, on grids, each algorithm's best path on the map and the exact Pareto front of length and
-// turns beside them.
+// turns beside them; for problems of several objectives, attainment surfaces, the median runs'
+// fronts and their paths on grids (front_figures.hpp).
 #include <cstddef>
 #include <string>
 
