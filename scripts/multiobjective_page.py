@@ -11,8 +11,13 @@
         exits 1 when a generated block differs from what the data give
         (python/tests/test_multiobjective_page.py does the same under ctest).
 
+    ./build/bench/mo_bench > docs/results/data/multiobjective-pagmo.csv
+        (a build with PRIDE_BUILD_BENCH=ON and pagmo2) the ZDT/DTLZ runs beside pagmo2's nsga2 and
+        moead, in one process, that the page's last table reads; then `render`.
+
 The runs: NSGA-II, MOEA/D and SMS-EMOA with their registry defaults (population 100, 100 MOEA/D
-subproblems), through the `free` encoding (three waypoints, repair connector), 20,000 evaluations
+subproblems), through the `free` encoding (three waypoints, repair connector), and NSGA-II on cell
+chains with the chain operators (from random walks, and from SITP walks), 20,000 evaluations
 each, seeds 1-15; IQGA (file 002) with its registry defaults on its own weighted objective and
 space (chains, N = 40) at the same 20,000 evaluations. Indicators: engine/multiobjective.hpp's
 (normalised by the exact front; hypervolume ratio with the reference point 1.1; IGD+; exact
@@ -154,6 +159,42 @@ def iqga_block(rows):
                     out)
 
 
+PAGMO_CSV = "multiobjective-pagmo.csv"
+PAGMO_PAIRS = [("nsga2", "pagmo-nsga2"), ("moead", "pagmo-moead")]
+
+
+def pagmo_rows(data=DATA):
+    """bench/mo_bench's runs: {(problem, algo): [rows]}, problems in the file's order."""
+    out, problems = {}, []
+    with open(data / PAGMO_CSV, newline="") as fh:
+        for r in csv.DictReader(fh):
+            if r["problem"] not in problems:
+                problems.append(r["problem"])
+            out.setdefault((r["problem"], r["algo"]), []).append(r)
+    return out, problems
+
+
+def pagmo_block(data=DATA):
+    runs, problems = pagmo_rows(data)
+    # One family of tests per indicator: each pair on each problem, Holm-corrected over all of them.
+    keys = [(prob, a, b) for a, b in PAGMO_PAIRS for prob in problems]
+    hv = {k: [float(r["hv_ratio"]) for r in runs[k]] for k in runs}
+    ps = rp.holm([rp.rank_sum(hv[(prob, a)], hv[(prob, b)]) for prob, a, b in keys])
+
+    def ns(rows):  # framework cost per evaluation: (wall - bare) / evaluations
+        return rp.median([(float(r["wall_ms"]) - float(r["bare_ms"])) * 1e6 / float(r["fevals"]) for r in rows])
+
+    out = []
+    for (prob, a, b), p in zip(keys, ps):
+        ra, rb = runs[(prob, a)], runs[(prob, b)]
+        na, nb = ns(ra), ns(rb)
+        out.append([prob, f"{a} / {b}", len(ra), f"{rp.median(hv[(prob, a)]):.4f}", f"{rp.median(hv[(prob, b)]):.4f}",
+                    rp.star(p), f"{na:.0f}", f"{nb:.0f}", f"{nb / na:.1f}x"])
+    return rp.table(["problem", "pride / pagmo2", "runs each", "pride HV ratio", "pagmo2 HV ratio",
+                     f"rank-sum p (Holm, {len(keys)} tests)", "pride ns per evaluation", "pagmo2 ns per evaluation",
+                     "pagmo2 / pride"], out)
+
+
 def blocks(data=DATA):
     rows = read(data)
     runs = sum(1 for _ in rows)
@@ -165,6 +206,7 @@ def blocks(data=DATA):
         "mo-quality-lta": quality_block(rows, "lta"),
         "mo-tests-lta": tests_block(rows, "lta"),
         "mo-iqga": iqga_block(rows),
+        "mo-pagmo": pagmo_block(data),
     }
 
 
