@@ -33,6 +33,7 @@ INT = ["3", 2.5, object(), [1], True]
 INT_REQUIRED = INT + [None]
 REAL = ["1", object(), [1.0], True]
 TEXT = [5, object(), None, b"pso"]
+TEXT_OPTIONAL = [5, object(), b"sitp"]  # None is the default
 FLAG = ["yes", 2, object(), None]
 FLAG_OPTIONAL = ["yes", 2, object()]
 SEED = ["1", 1.5, object(), None, True]
@@ -86,7 +87,7 @@ def api(tmp_path):
                        wall_ms=REAL, seed=SEED, vectorized=FLAG, reference=FLAG)),
         "plan_front": (lambda **o: pride.plan_front(**{"grid": GRID, "start": (0, 0), "goal": (3, 3), "iters": 2, **o}),
                        dict(grid=GRID_ARG, start=CELL, goal=CELL, algo=TEXT, objectives=OBJECTIVES, encoding=TEXT,
-                            connector=TEXT, waypoints=INT_REQUIRED, corner_cutting=FLAG, clearance_bands=INT_REQUIRED,
+                            init=TEXT_OPTIONAL, connector=TEXT, waypoints=INT_REQUIRED, corner_cutting=FLAG, clearance_bands=INT_REQUIRED,
                             clearance_width=INT_REQUIRED, evals=INT, iters=INT, wall_ms=REAL, seed=SEED,
                             reference=FLAG)),
         "Optimizer.tell": (lambda **o: (lambda x: x.tell(**{"values": np.zeros(len(x.ask())), **o}))(opt()),
