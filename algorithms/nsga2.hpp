@@ -189,7 +189,7 @@ struct Nsga2 {
             for (std::size_t i = 0; i < dim; ++i) r(static_cast<Eigen::Index>(i), j) = rng.uniform(lo[i], hi[i]);
         state.evaluate_columns(problem, r.leftCols(cols), fnext);
         fr.leftCols(cols) = fnext;
-        Generation g(n, m);
+        Generation g(n);
         g.rank_initial(*this, fnext, rng);
         next = r.leftCols(cols);
         state.end_iteration(observer, next, fnext);
@@ -246,7 +246,7 @@ struct Nsga2 {
         for (std::size_t j = 0; j < n; ++j) problem.random_chain(rng, r[j]);
         state.evaluate_chains(problem, std::span<const Chain>(r).first(n), fnext);
         fr.leftCols(cols) = fnext;
-        Generation g(n, m);
+        Generation g(n);
         g.rank_initial(*this, fnext, rng);
         std::copy(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n), next.begin());
         state.end_iteration(observer, next, fnext);
@@ -284,7 +284,7 @@ struct Nsga2 {
         nsga::Standing standing;
         nsga::SurvivalScratch scratch;
         std::vector<std::size_t> chosen, perm;
-        Generation(std::size_t size, std::size_t) : n(size), perm(size) {}
+        explicit Generation(std::size_t size) : n(size), perm(size) {}
 
         /// The initial population's standing, in its own order (every member survives; the
         /// survival lists them by front).

@@ -237,10 +237,14 @@ Termination mo_termination(const MoProblem& problem, const Budget& budget) {
 /// and of values (parents, children, the merged set, their copies).
 void check_memory(const Params& params, const MoProblem& problem) {
     const double pop = std::max(100.0, static_cast<double>(params.integer("pop")));
-    // A chain is at most the map's cells, two integers each.
-    const double genes = problem.is_chain()
-                             ? 8.0 * static_cast<double>(std::get<MoGridSpec>(problem.prepared().spec).grid.map->size())
-                             : static_cast<double>(problem.dimension());
+    // A chain counted as twice the map's perimeter in cells, two integers each (one double's
+    // bytes): a loop-free chain may have as many cells as the map, but counting that would refuse
+    // runs on large maps whose paths cover a small part of them.
+    double genes = static_cast<double>(problem.dimension());
+    if (problem.is_chain()) {
+        const grid::GridMap& map = *std::get<MoGridSpec>(problem.prepared().spec).grid.map;
+        genes = 4.0 * static_cast<double>(map.width() + map.height());
+    }
     const double per = genes + static_cast<double>(problem.objectives());
     require_memory(8.0 * 6.0 * pop * per, "pop",
                    fmt::format("a population of {} in dimension {}", params.integer("pop"), problem.dimension()));
