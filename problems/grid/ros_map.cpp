@@ -16,10 +16,26 @@ namespace {
 // An image map file: the cap of the text maps (map_io.cpp), far above any ROS map.
 constexpr std::size_t kMaxImageBytes = std::size_t{64} << 20;
 
+/// `text` with control characters as \xNN: yaml-cpp's messages may hold the character they
+/// stumbled on (a line end), and a message is one line.
+std::string printable(const std::string& text) {
+    static constexpr char kHex[] = "0123456789ABCDEF";
+    std::string out;
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7F)
+            out += std::string("\\x") + kHex[u >> 4] + kHex[u & 15];
+        else
+            out += c;
+    }
+    return out;
+}
+
 /// Throws InputError "name:LINE:COL: what" at the node's place, "name: what" when it has none.
 [[noreturn]] void fail(const std::string& name, const YAML::Mark& mark, const std::string& what) {
-    if (mark.is_null() || mark.line < 0) throw InputError(name + ": " + what);
-    throw InputError(name + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1) + ": " + what);
+    if (mark.is_null() || mark.line < 0) throw InputError(name + ": " + printable(what));
+    throw InputError(name + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1) + ": " +
+                     printable(what));
 }
 
 /// A short, one-line form of a scalar for messages.
@@ -27,9 +43,7 @@ std::string shown(const YAML::Node& node) {
     if (!node.IsScalar()) return node.IsSequence() ? "a list" : node.IsMap() ? "a mapping" : "nothing";
     std::string s = node.Scalar();
     if (s.size() > 40) s = s.substr(0, 40) + "...";
-    for (char& c : s)
-        if (static_cast<unsigned char>(c) < 0x20) c = ' ';
-    return "`" + s + "`";
+    return "`" + s + "`";  // fail() escapes control characters
 }
 
 std::string number_text(double v) {
