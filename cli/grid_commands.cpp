@@ -76,10 +76,11 @@ Cell parse_world_cell(const std::string& text, const GridMap& map, const std::st
                 " has no world frame (only a ROS map_server YAML map has a resolution and origin): give a cell with " +
                 where.substr(0, where.find("-world")));
     const auto cell = map.cell_at({x, y});
-    require(cell.has_value(), where,
-            fmt::format("the point ({}, {}) is outside the map: x in [{}, {}), y in [{}, {}) metres", x, y, f->origin_x,
-                        f->origin_x + map.width() * f->resolution, f->origin_y,
-                        f->origin_y + map.height() * f->resolution));
+    require(
+        cell.has_value(), where,
+        fmt::format("the point ({}, {}) is outside the map: x in [{:.10g}, {:.10g}), y in [{:.10g}, {:.10g}) metres", x,
+                    y, f->origin_x, f->origin_x + map.width() * f->resolution, f->origin_y,
+                    f->origin_y + map.height() * f->resolution));
     return *cell;
 }
 

@@ -413,7 +413,7 @@ TEST_CASE("pride path: --start-world and --goal-world on a map_server map, path_
     REQUIRE(r.status == 0);
     CHECK_THAT(r.out, Contains("\"path_world\": [[-1.975, -0.475], "));
     CHECK_THAT(r.out, Contains("[-0.475, 0.525]]"));
-    const auto text = pride::test::run_pride("path --map '" + map + "' --start 160,209 --goal 190,189 --algo astar");
+    const auto text = pride::test::run_pride("path --map '" + map + "' --start 160,193 --goal 190,173 --algo astar");
     REQUIRE(text.status == 0);
     CHECK_THAT(text.out, Contains("path_world      [[-1.975, -0.475], "));
     // A map without a frame has no path_world.
@@ -428,7 +428,7 @@ TEST_CASE("pride path: --start-world and --goal-world on a map_server map, path_
                        {"--start-world", "has no world frame", "--start"});
     expect_input_error("path --map '" + map + "' --start-world 30,0 --goal-world 0,0 --algo astar",
                        {"--start-world", "outside the map", "[-10, 9.2)"});
-    expect_input_error("path --map '" + map + "' --start-world 0,0 --goal-world 0;0 --algo astar", {"--goal-world"});
+    expect_input_error("path --map '" + map + "' --start-world 0,0 --goal-world 0:0 --algo astar", {"--goal-world"});
     expect_input_error("path --map '" + map + "' --goal-world 0,0 --algo astar", {"--start", "--start-world"});
     expect_input_error("path --map '" + map + "' --start 1,1 --start-world 0,0 --goal 2,2 --algo astar", {"--start"});
     // Bad image files are one line too, exit status 2.

@@ -81,10 +81,11 @@ grid::Cell endpoint(const grid::GridMap& map, const py::object& cell, const py::
             "the map " + map.name() +
                 " has no world frame (only a ROS map_server YAML map has a resolution and origin): give " + where);
     const auto c = map.cell_at({x, y});
-    require(c.has_value(), world_name,
-            fmt::format("the point ({}, {}) is outside the map: x in [{}, {}), y in [{}, {}) metres", x, y,
-                        f->origin_x, f->origin_x + map.width() * f->resolution, f->origin_y,
-                        f->origin_y + map.height() * f->resolution));
+    require(
+        c.has_value(), world_name,
+        fmt::format("the point ({}, {}) is outside the map: x in [{:.10g}, {:.10g}), y in [{:.10g}, {:.10g}) metres", x,
+                    y, f->origin_x, f->origin_x + map.width() * f->resolution, f->origin_y,
+                    f->origin_y + map.height() * f->resolution));
     return *c;
 }
 
@@ -151,12 +152,12 @@ void set_path_objective(engine::GridSpec& spec, const py::object& objective, con
 namespace {
 
 py::dict plan(const Grid& g, const py::object& start, const py::object& goal, const py::object& start_world,
-              const py::object& goal_world, const std::string& algo,
-              const py::object& objective, const py::object& step_cost, const std::string& encoding,
-              const std::string& connector, const std::string& init, std::int64_t waypoints,
-              const std::optional<std::vector<double>>& weights, std::optional<double> lambda, bool corner_cutting,
-              bool oracle, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::uint64_t seed,
-              const py::object& callback, const py::dict& params) {
+              const py::object& goal_world, const std::string& algo, const py::object& objective,
+              const py::object& step_cost, const std::string& encoding, const std::string& connector,
+              const std::string& init, std::int64_t waypoints, const std::optional<std::vector<double>>& weights,
+              std::optional<double> lambda, bool corner_cutting, bool oracle, std::optional<std::int64_t> evals,
+              std::optional<std::int64_t> iters, std::uint64_t seed, const py::object& callback,
+              const py::dict& params) {
     engine::GridSpec spec;
     auto errors = std::make_shared<UserError>();
     set_path_objective(spec, objective, step_cost, errors, "");
@@ -286,10 +287,10 @@ void bind_grid(py::module_& m) {
             },
             py::arg("x"), py::arg("y"));
     m.def("plan", &plan, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
-          py::arg("start_world"), py::arg("goal_world"), py::arg("algo"),
-          py::arg("objective"), py::arg("step_cost"), py::arg("encoding"), py::arg("connector"), py::arg("init"),
-          py::arg("waypoints"), py::arg("weights"), py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"),
-          py::arg("evals"), py::arg("iters"), py::arg("seed"), py::arg("callback"), py::arg("params"));
+          py::arg("start_world"), py::arg("goal_world"), py::arg("algo"), py::arg("objective"), py::arg("step_cost"),
+          py::arg("encoding"), py::arg("connector"), py::arg("init"), py::arg("waypoints"), py::arg("weights"),
+          py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"), py::arg("evals"), py::arg("iters"),
+          py::arg("seed"), py::arg("callback"), py::arg("params"));
     m.def("pareto", &pareto, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
           py::arg("objectives"), py::arg("corner_cutting"));
 }
