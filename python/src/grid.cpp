@@ -68,13 +68,12 @@ grid::Cell endpoint(const grid::GridMap& map, const py::object& cell, const py::
     const std::string world_name = where + "_world";
     if (cell.is_none() && world.is_none())
         throw py::type_error(where + ": give " + where + "=(x, y) (a cell) or " + world_name + "=(x, y) (metres)");
-    if (!cell.is_none() && !world.is_none())
-        throw py::type_error(where + ": give " + where + " or " + world_name + ", not both");
     if (world.is_none()) return grid_cell(cell, where);
     if (!py::isinstance<py::sequence>(world) || py::isinstance<py::str>(world) || py::len(world) != 2)
         throw py::type_error(world_name + ": expected (x, y) in metres, got " + type_name(world));
     const py::sequence s = world.cast<py::sequence>();
     const double x = number_arg(s[0], world_name), y = number_arg(s[1], world_name);
+    if (!cell.is_none()) throw py::type_error(world_name + ": give " + where + " or " + world_name + ", not both");
     require(std::isfinite(x) && std::isfinite(y), world_name, "the point must be finite");
     const auto& f = map.frame();
     require(f.has_value(), world_name,
