@@ -65,12 +65,50 @@ Cell parse_cell(const std::string& text, const std::string& where) {
     return {static_cast<int>(x), static_cast<int>(y)};
 }
 
+Cell parse_world_cell(const std::string& text, const GridMap& map, const std::string& where) {
+    const auto comma = text.find(',');
+    require(comma != std::string::npos, where, "expected X,Y in metres, got '" + text + "'");
+    const double x = parse_finite(std::string_view(text).substr(0, comma), where + " X");
+    const double y = parse_finite(std::string_view(text).substr(comma + 1), where + " Y");
+    const auto& f = map.frame();
+    require(f.has_value(), where,
+            "the map " + map.name() +
+                " has no world frame (only a ROS map_server YAML map has a resolution and origin): give a cell with " +
+                where.substr(0, where.find("-world")));
+    const auto cell = map.cell_at({x, y});
+    require(
+        cell.has_value(), where,
+        fmt::format("the point ({}, {}) is outside the map: x in [{:.10g}, {:.10g}), y in [{:.10g}, {:.10g}) metres", x,
+                    y, f->origin_x, f->origin_x + map.width() * f->resolution, f->origin_y,
+                    f->origin_y + map.height() * f->resolution));
+    return *cell;
+}
+
+std::string json_world_path(const GridMap& map, const Path& path) {
+    // Rounded to 1e-9 m: -10 + 0.5 * 0.05 is printed -9.975, not -9.975000000000001.
+    const auto round = [](double v) { return std::round(v * 1e9) / 1e9 + 0.0; };
+    std::string out = "[";
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const WorldPoint p = map.world(path[i]);
+        out += fmt::format("{}[{}, {}]", i ? ", " : "", json_number(round(p.x)), json_number(round(p.y)));
+    }
+    return out + "]";
+}
+
 engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec_out) {
     engine::GridSpec spec = grid_spec(o);
     engine::check_grid_names(spec);
-    spec.map = engine::load_map(o.map, o.inflate);
-    spec.start = parse_cell(o.start, "--start");
-    spec.goal = parse_cell(o.goal, "--goal");
+    require(!o.start.empty() || !o.start_world.empty(), "--start",
+            "give the start: --start X,Y (a cell) or --start-world X,Y (metres)");
+    require(!o.goal.empty() || !o.goal_world.empty(), "--goal",
+            "give the goal: --goal X,Y (a cell) or --goal-world X,Y (metres)");
+    grid::MapReadOptions read;
+    read.unknown_free = o.unknown_free;
+    spec.map = engine::load_map(o.map, o.inflate, read);
+    spec.start = o.start_world.empty() ? parse_cell(o.start, "--start")
+                                       : parse_world_cell(o.start_world, *spec.map, "--start-world");
+    spec.goal =
+        o.goal_world.empty() ? parse_cell(o.goal, "--goal") : parse_world_cell(o.goal_world, *spec.map, "--goal-world");
     const engine::Problem problem(spec);
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
     engine::Budget budget;
@@ -122,6 +160,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
             run.feasible ? "true" : "false", json_cells(run.path), m.cells, json_number(m.length), m.turns,
             m.turn_angle_deg, m.angle_penalty, run.feasible ? json_number(run.value) : "null", r.evaluations,
             r.iterations, json_number(r.wall_ms), json_array(r.history));
+        if (spec.map->frame()) text += ", \"path_world\": " + json_world_path(*spec.map, run.path);
         if (o.oracle)
             text += fmt::format(", \"optimum\": {{\"objective_value\": {}, \"gap\": {}}}",
                                 run.optimum ? json_number(*run.optimum) : "null", gap ? json_number(*gap) : "null");
@@ -142,6 +181,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
                             gap ? fmt::format("{:.6g}", *gap) : "-");
     text += fmt::format("evaluations     {}\niterations      {}\nwall_ms         {:.3f}\npath            {}\n",
                         r.evaluations, r.iterations, r.wall_ms, json_cells(run.path));
+    if (spec.map->frame()) text += "path_world      " + json_world_path(*spec.map, run.path) + "\n";
     print_then_commit(out, text, files);
     return 0;
 }

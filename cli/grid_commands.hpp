@@ -15,6 +15,9 @@ struct PathOptions {
     std::string map;
     std::string start;  // "X,Y"
     std::string goal;
+    std::string start_world;  // "X,Y" in metres, instead of start (maps with a world frame)
+    std::string goal_world;
+    bool unknown_free = false;  // unknown cells of image maps free (grid::MapReadOptions)
     std::string algo;
     std::string objective = "cells";
     std::string encoding;  // empty: the algorithm's native one
@@ -46,6 +49,11 @@ engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec = nullp
 
 /// A cell given as "X,Y" (integers); InputError naming `where` otherwise.
 grid::Cell parse_cell(const std::string& text, const std::string& where);
+/// The cell holding the world point "X,Y" (metres) of `map`; InputError naming `where` when the map
+/// has no world frame or the point is outside it.
+grid::Cell parse_world_cell(const std::string& text, const grid::GridMap& map, const std::string& where);
+/// A path's cells as world points (cell centres, rounded to 1e-9 m), "[[x, y], ...]".
+std::string json_world_path(const grid::GridMap& map, const grid::Path& path);
 
 struct ScenOptions {
     std::string file;

@@ -127,10 +127,23 @@ int run_main(int argc, char** argv) {
     PathOptions path;
     auto* path_cmd = app.add_subcommand(
         "path", "one run on a grid map (A*, the exact optimum, or a box algorithm through an encoding)");
-    path_cmd->add_option("--map", path.map, "Moving AI .map or 0/1 matrix file")->required()->check(a_path());
-    path_cmd->add_option("--start", path.start, "start cell X,Y (x: column from the left, y: row from the top)")
-        ->required();
-    path_cmd->add_option("--goal", path.goal, "goal cell X,Y")->required();
+    path_cmd
+        ->add_option("--map", path.map,
+                     "Moving AI .map, 0/1 matrix (CSV too), PNG/PGM image or ROS map_server YAML file")
+        ->required()
+        ->check(a_path());
+    // One of --start and --start-world (and of --goal, --goal-world): plan_path says which is missing.
+    auto* path_start =
+        path_cmd->add_option("--start", path.start, "start cell X,Y (x: column from the left, y: row from the top)");
+    path_cmd
+        ->add_option("--start-world", path.start_world,
+                     "start point X,Y in metres (maps with a world frame: ROS map_server YAML); the cell holding it")
+        ->excludes(path_start);
+    auto* path_goal = path_cmd->add_option("--goal", path.goal, "goal cell X,Y");
+    path_cmd->add_option("--goal-world", path.goal_world, "goal point X,Y in metres (as --start-world)")
+        ->excludes(path_goal);
+    path_cmd->add_flag("--unknown-free", path.unknown_free,
+                       "unknown cells of images and map_server maps are free (default: blocked)");
     path_cmd->add_option("--algo", path.algo, all_names + " or nlopt:NAME (see 'pride list')")->required();
     path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
     path_cmd->add_option("--encoding", path.encoding,

@@ -827,9 +827,10 @@ RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budg
     return run_observed(algorithm, problem, budget, seed, &observer);
 }
 
-std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate) {
+std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate,
+                                              const grid::MapReadOptions& options) {
     require(inflate >= 0 && inflate <= 1000, "inflate", "must be in [0, 1000], got " + std::to_string(inflate));
-    grid::GridMap loaded = grid::read_map(file);
+    grid::GridMap loaded = grid::read_map(file, options);
     if (inflate > 0) loaded = loaded.inflated(static_cast<int>(inflate));
     return std::make_shared<const grid::GridMap>(std::move(loaded));
 }

@@ -17,6 +17,7 @@
 #include "framework/problem.hpp"
 #include "framework/termination.hpp"
 #include "problems/grid/map.hpp"
+#include "problems/grid/map_io.hpp"
 
 namespace pride::engine {
 
@@ -108,8 +109,9 @@ struct Budget {
 
 namespace pride::engine {
 
-/// Reads a map file (Moving AI or 0/1 matrix) and inflates its obstacles by `inflate` cells
+/// Reads a map file (any format of grid::read_map, with its options) and inflates its obstacles by `inflate` cells
 /// (0..1000): what a GridSpec's map is made from. InputError naming the file or "inflate".
-std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate = 0);
+std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate = 0,
+                                              const grid::MapReadOptions& options = {});
 
 }  // namespace pride::engine

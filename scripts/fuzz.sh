@@ -4,7 +4,7 @@
 # libFuzzer's final statistics) and findings (crashes, hangs over 1 s, leaks, memory over the RSS
 # limit), each saved under build-fuzz/findings/TARGET/.
 #
-# Usage: scripts/fuzz.sh SECONDS [TARGET...]     (targets: map cec scenario roughset campaign store cli)
+# Usage: scripts/fuzz.sh SECONDS [TARGET...]     (targets: map image rosyaml cec scenario roughset campaign store cli)
 # Environment: PRIDE_FUZZ_BUILD (build folder, default build-fuzz), PRIDE_FUZZ_JOBS (targets run at
 # once, default 1), PRIDE_FUZZ_RSS_MB (default 1024), PRIDE_DATA (extra seeds, default
 # reference-data/), PRIDE_FUZZ_MAX_LEN (largest input, default 16384 bytes).
@@ -19,7 +19,7 @@ cd "$(dirname "$0")/.."
 root=$(pwd)
 seconds=${1:?usage: scripts/fuzz.sh SECONDS [TARGET...]}
 shift
-all=(map cec scenario roughset campaign store cli)
+all=(map image rosyaml cec scenario roughset campaign store cli)
 targets=("$@")
 ((${#targets[@]})) || targets=("${all[@]}")
 build=${PRIDE_FUZZ_BUILD:-build-fuzz}
@@ -47,6 +47,7 @@ collect() {
   local f
   case $t in
     map) for f in examples/maps/*.map "$data"/movingai/*.map; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
+    rosyaml) for f in examples/maps/ros/*.yaml; do cp "$f" "$dir/"; done ;;
     scenario) for f in examples/maps/*.scen "$data"/movingai/*.scen; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
     roughset) for f in "$data"/roughset/*.csv; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
     campaign) for f in examples/campaigns/*.toml; do cp "$f" "$dir/"; done ;;

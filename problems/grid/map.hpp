@@ -3,9 +3,17 @@
 // (x, y), x the column from the left, y the row from the first line of the file downwards (the
 // Moving AI convention). The papers' bottom-left numbering is only a conversion (paper_number,
 // from_paper_number), never a second convention inside the code.
+//
+// World frame (maps read through a ROS map_server YAML, problems/grid/ros_map.hpp): metres per
+// cell and the world point (origin x, y) of the map's bottom-left corner, as map_server's `origin`
+// (its yaw must be 0). The image's first row is the top of the map and y = 0 here, as a Moving AI
+// map's first line: cell (x, y) covers world x in origin_x + [x, x + 1) * resolution and world y in
+// origin_y + [H - 1 - y, H - y) * resolution; its world point is the centre of that square.
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +48,18 @@ inline constexpr int turn_steps(int d, int e) {
     return k < 8 - k ? k : 8 - k;
 }
 
+/// Metres per cell and the world point of the map's bottom-left corner (see the top of this file).
+struct WorldFrame {
+    double resolution = 1.0;
+    double origin_x = 0.0;
+    double origin_y = 0.0;
+    friend bool operator==(const WorldFrame&, const WorldFrame&) = default;
+};
+struct WorldPoint {
+    double x = 0.0;
+    double y = 0.0;
+};
+
 class GridMap {
   public:
     GridMap() = default;
@@ -66,6 +86,31 @@ class GridMap {
     int height() const noexcept { return height_; }
     std::size_t size() const noexcept { return blocked_.size(); }
     const std::string& name() const noexcept { return name_; }
+
+    /// The world frame, when the map came with one (a map_server YAML); none otherwise.
+    const std::optional<WorldFrame>& frame() const noexcept { return frame_; }
+    /// Gives the map a world frame: a finite resolution > 0 and a finite origin.
+    void set_frame(const WorldFrame& f) {
+        require(std::isfinite(f.resolution) && f.resolution > 0.0, name_,
+                "resolution must be a number > 0 (metres per cell), got " + std::to_string(f.resolution));
+        require(std::isfinite(f.origin_x) && std::isfinite(f.origin_y), name_, "the origin must be finite");
+        frame_ = f;
+    }
+    /// The world point (metres) of the centre of cell c; the map must have a frame.
+    WorldPoint world(Cell c) const {
+        require(frame_.has_value(), name_, "the map has no world frame (resolution and origin)");
+        return {frame_->origin_x + (c.x + 0.5) * frame_->resolution,
+                frame_->origin_y + (height_ - 1 - c.y + 0.5) * frame_->resolution};
+    }
+    /// The cell holding world point p (a point on a border between cells belongs to the cell
+    /// right of it or above it), or none when p is outside the map; the map must have a frame.
+    std::optional<Cell> cell_at(WorldPoint p) const {
+        require(frame_.has_value(), name_, "the map has no world frame (resolution and origin)");
+        const double col = std::floor((p.x - frame_->origin_x) / frame_->resolution);
+        const double row = std::floor((p.y - frame_->origin_y) / frame_->resolution);           // from the bottom
+        if (!(col >= 0.0 && col < width_ && row >= 0.0 && row < height_)) return std::nullopt;  // NaN too
+        return Cell{static_cast<int>(col), height_ - 1 - static_cast<int>(row)};
+    }
 
     bool inside(Cell c) const noexcept { return c.x >= 0 && c.y >= 0 && c.x < width_ && c.y < height_; }
     std::size_t index(Cell c) const noexcept {
@@ -121,7 +166,9 @@ class GridMap {
             for (int y = 0; y < height_; ++y)
                 out[index({x, y})] = prefix[std::min(height_, y + r + 1)] - prefix[std::max(0, y - r)] > 0;
         }
-        return GridMap(width_, height_, std::move(out), name_ + " inflated by " + std::to_string(r));
+        GridMap m(width_, height_, std::move(out), name_ + " inflated by " + std::to_string(r));
+        m.frame_ = frame_;
+        return m;
     }
 
     /// File 002 eq. 2 numbers cells from 0, left to right and bottom to top.
@@ -137,6 +184,7 @@ class GridMap {
     std::vector<std::uint8_t> blocked_;                // 1 = blocked, row by row from the top
     std::vector<std::uint8_t> moves_, moves_cutting_;  // legal steps per cell, bit d = direction d
     std::string name_;
+    std::optional<WorldFrame> frame_;
 };
 
 }  // namespace pride::grid

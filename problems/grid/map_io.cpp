@@ -13,6 +13,8 @@
 
 #include "framework/error.hpp"
 #include "framework/read_file.hpp"
+#include "problems/grid/image_map.hpp"
+#include "problems/grid/ros_map.hpp"
 
 namespace pride::grid {
 namespace {
@@ -410,20 +412,35 @@ GridMap parse_matrix(const std::vector<Line>& lines, std::size_t first, const st
                  "empty row inside the matrix: expected " + std::to_string(width) + " cells of 0 or 1");
         std::size_t lead = 0;
         while (lead < s.size() && is_blank(s[lead])) ++lead;
-        const bool spaced = s.find_first_of(" \t", lead) != std::string_view::npos;
-        // Each cell: its byte offset; the token (spaced) or the single character.
+        const bool csv = s.find(',') != std::string_view::npos;
+        const bool spaced = !csv && s.find_first_of(" \t", lead) != std::string_view::npos;
+        // Each cell: its byte offset; the token (spaced, CSV) or the single character.
         std::size_t count = 0;
         std::size_t extra_pos = 0;  // offset of cell width+1, for the "long row" column
         const auto add = [&](std::string_view cell, std::size_t pos) {
+            if (csv && cell.empty())
+                fail(name, ln.number, column(s, pos), "empty matrix cell: expected 0 (free) or 1 (blocked)");
             if (cell != "0" && cell != "1")
                 fail(name, ln.number, column(s, pos),
                      "matrix cell must be 0 (free) or 1 (blocked), got " +
-                         (spaced ? quote(cell) : describe_char(s, pos)));
+                         (spaced || csv ? quote(cell) : describe_char(s, pos)));
             if (width_line != 0 && count == width) extra_pos = pos;
             ++count;
             blocked.push_back(cell == "1" ? 1 : 0);
         };
-        if (spaced) {
+        if (csv) {
+            for (std::size_t p = lead;;) {
+                std::size_t end = s.find(',', p);
+                const bool last = end == std::string_view::npos;
+                if (last) end = s.size();
+                std::size_t a = p, b = end;
+                while (a < b && is_blank(s[a])) ++a;
+                while (b > a && is_blank(s[b - 1])) --b;
+                add(s.substr(a, b - a), a);
+                if (last) break;
+                p = end + 1;
+            }
+        } else if (spaced) {
             for (const Token& t : tokens(s)) add(t.text, t.pos);
         } else {
             for (std::size_t p = lead; p < s.size();) {
@@ -460,9 +477,14 @@ std::string read_file(const std::string& path) {
 // ---------------------------------------------------------------------------------------------
 // Public
 
-GridMap parse_map(std::string_view text, const std::string& name) {
+GridMap parse_map(std::string_view text, const std::string& name, const MapReadOptions& options) {
     if (text.empty()) fail(name, 1, 0, "empty file: no map");
+    if (is_png(text) || is_netpbm(text)) return parse_image_map(text, name, options.unknown_free);
     text = check_text(text, name);
+    if (looks_like_ros_yaml(text))
+        throw InputError(name +
+                         ": a ROS map_server YAML file names its image file: read it from its file "
+                         "(read_map, --map), not from text");
     const auto lines = split_lines(text, name);
     const std::size_t first = first_nonblank(lines);
     if (first == lines.size()) fail(name, 1, 0, "the file holds only blank lines: no map");
@@ -480,8 +502,13 @@ GridMap parse_map(std::string_view text, const std::string& name) {
          "not a map: expected a Moving AI header (`type octile`) or a row of 0/1 matrix cells, got " + quote(ln.text));
 }
 
-GridMap read_map(const std::string& path) {
-    return parse_map(read_file(path), path);
+GridMap read_map(const std::string& path, const MapReadOptions& options) {
+    const std::string bytes = read_file(path);
+    if (!is_png(bytes) && !is_netpbm(bytes) && looks_like_ros_yaml(bytes)) {
+        check_text(bytes, path);
+        return read_ros_map(path, bytes, options.unknown_free);
+    }
+    return parse_map(bytes, path, options);
 }
 
 std::vector<ScenarioEntry> parse_scenario(std::string_view text, const std::string& name) {

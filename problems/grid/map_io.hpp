@@ -1,11 +1,17 @@
 #pragma once
-// Reading maps and scenarios (shared/spec/grid.md, "Maps"). Two map formats, told apart by their
-// content, never by the file name:
+// Reading maps and scenarios (shared/spec/grid.md, "Maps"). The map formats are told apart by
+// their content, never by the file name:
 //   - Moving AI `.map`: `type octile`, `height H`, `width W`, `map` (in this order), then H lines of
 //     W characters; `.` `G` `S` are free, `@` `O` `T` `W` blocked.
-//   - plain matrix: H lines of W tokens `0` (free) / `1` (blocked), separated by blanks ("0 1 0")
-//     or not ("010"); a line with blanks is read token by token, so "0 10" is an error, not 3 cells.
-// Both accept CRLF line ends, trailing blanks on any line, a missing final newline, blank lines
+//   - plain matrix: H lines of W tokens `0` (free) / `1` (blocked), separated by blanks ("0 1 0"),
+//     by commas (CSV: "0,1,0", blanks around the commas allowed) or not at all ("010"); a line with
+//     blanks is read token by token, so "0 10" is an error, not 3 cells.
+//   - images: PNG (its signature) and Netpbm PGM/PPM/PBM/PAM (`P1`..`P7`), read as a plain image
+//     with map_server's default thresholds (image_map.hpp);
+//   - ROS map_server YAML (a text file with `image:` and `resolution:` lines), its image read from
+//     beside it, its resolution and origin kept as the map's world frame (ros_map.hpp); read_map
+//     only, since parse_map reads no other file.
+// The text formats accept CRLF line ends, trailing blanks on any line, a missing final newline, blank lines
 // before the first line and after the last one, and a UTF-8 byte-order mark.
 //
 // Every malformed input throws pride::InputError with one line `FILE:LINE:COL: what is wrong`
@@ -20,10 +26,16 @@
 
 namespace pride::grid {
 
+/// Choices made where a map is loaded.
+struct MapReadOptions {
+    /// Unknown cells of images and map_server maps (image_map.hpp) are free, not blocked.
+    bool unknown_free = false;
+};
+
 /// Parses a map held in `text`; `name` stands for the file in messages and becomes the map's name.
-GridMap parse_map(std::string_view text, const std::string& name);
+GridMap parse_map(std::string_view text, const std::string& name, const MapReadOptions& options = {});
 /// Reads and parses the map file at `path` (the map's name is the path).
-GridMap read_map(const std::string& path);
+GridMap read_map(const std::string& path, const MapReadOptions& options = {});
 
 /// One line of a Moving AI scenario file (`.map.scen`, and the MAPF `-even-N.scen` files, which
 /// share the format): `bucket map width height start_x start_y goal_x goal_y optimal_length`.

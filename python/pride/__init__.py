@@ -251,12 +251,15 @@ class Optimizer:
         self.close()
 
 
-def plan(grid, start, goal, *, algo="pso", objective="cells", step_cost=None, encoding="", connector="repair",
-         init="", waypoints=3, weights=None, lambda_=None, corner_cutting=False, oracle=False, evals=None, iters=None,
-         seed=1, callback=None, **params):
+def plan(grid, start=None, goal=None, *, algo="pso", start_world=None, goal_world=None, objective="cells",
+         step_cost=None, encoding="", connector="repair", init="", waypoints=3, weights=None, lambda_=None,
+         corner_cutting=False, oracle=False, evals=None, iters=None, seed=1, callback=None, **params):
     """A path on ``grid`` (a ``pride.Grid``) from ``start`` to ``goal`` ((x, y), x the column from
     the left, y the row from the top) by any grid algorithm, as ``pride path`` plans it: the
     result's ``path`` is an (n, 2) array of (x, y), with ``metrics`` and ``objective_value``;
+    on a map with a world frame (a ROS map_server map: ``grid.resolution``, ``grid.origin``)
+    ``start_world``/``goal_world`` ((x, y) in metres, the cell holding the point) may replace
+    ``start``/``goal``, and ``path_world`` is the path's cell centres in metres (None without a frame);
     ``oracle=True`` adds the exact ``optimum`` and the ``gap``. Without evals or iters, 50
     iterations. Without ``encoding`` the algorithm plans on its native space (chain for iqga, iaga,
     icga and the woa family, line for the others); an encoding it cannot use is a ValueError.
@@ -269,7 +272,7 @@ def plan(grid, start, goal, *, algo="pso", objective="cells", step_cost=None, en
     (-1,1) (-1,0) (-1,-1) (0,-1) (1,-1); >= 0; summing to ``objective`` on every path), ``exact``
     and ``oracle=True`` find its exact optimum; their calls of it are their own work, not
     evaluations."""
-    return Result(_pride.plan(_grid(grid), start, goal, _str("algo", algo),
+    return Result(_pride.plan(_grid(grid), start, goal, start_world, goal_world, _str("algo", algo),
                               objective if callable(objective) else _str("objective", objective),
                               _callable("step_cost", step_cost), _str("encoding", encoding),
                               _str("connector", connector), _str("init", init), _int("waypoints", waypoints, False),

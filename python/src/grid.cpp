@@ -59,6 +59,49 @@ grid::Cell grid_cell(const py::handle& o, const std::string& where) {
     return {coordinate(s[0]), coordinate(s[1])};
 }
 
+namespace {
+
+/// A start or goal given as a cell (`where`) or a world point in metres (`where`_world): exactly
+/// one of them; TypeError or ValueError naming the keyword otherwise.
+grid::Cell endpoint(const grid::GridMap& map, const py::object& cell, const py::object& world,
+                    const std::string& where) {
+    const std::string world_name = where + "_world";
+    if (cell.is_none() && world.is_none())
+        throw py::type_error(where + ": give " + where + "=(x, y) (a cell) or " + world_name + "=(x, y) (metres)");
+    if (world.is_none()) return grid_cell(cell, where);
+    if (!py::isinstance<py::sequence>(world) || py::isinstance<py::str>(world) || py::len(world) != 2)
+        throw py::type_error(world_name + ": expected (x, y) in metres, got " + type_name(world));
+    const py::sequence s = world.cast<py::sequence>();
+    const double x = number_arg(s[0], world_name), y = number_arg(s[1], world_name);
+    if (!cell.is_none()) throw py::type_error(world_name + ": give " + where + " or " + world_name + ", not both");
+    require(std::isfinite(x) && std::isfinite(y), world_name, "the point must be finite");
+    const auto& f = map.frame();
+    require(f.has_value(), world_name,
+            "the map " + map.name() +
+                " has no world frame (only a ROS map_server YAML map has a resolution and origin): give " + where);
+    const auto c = map.cell_at({x, y});
+    require(
+        c.has_value(), world_name,
+        fmt::format("the point ({}, {}) is outside the map: x in [{:.10g}, {:.10g}), y in [{:.10g}, {:.10g}) metres", x,
+                    y, f->origin_x, f->origin_x + map.width() * f->resolution, f->origin_y,
+                    f->origin_y + map.height() * f->resolution));
+    return *c;
+}
+
+/// The path's cells as world points (cell centres, rounded to 1e-9 m as `pride path` prints them).
+py::array_t<double> world_path_array(const grid::GridMap& map, const grid::Path& path) {
+    py::array_t<double> a({static_cast<py::ssize_t>(path.size()), py::ssize_t{2}});
+    auto v = a.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const grid::WorldPoint p = map.world(path[i]);
+        v(static_cast<py::ssize_t>(i), 0) = std::round(p.x * 1e9) / 1e9 + 0.0;
+        v(static_cast<py::ssize_t>(i), 1) = std::round(p.y * 1e9) / 1e9 + 0.0;
+    }
+    return a;
+}
+
+}  // namespace
+
 /// A Python objective on paths: fn(cells), cells an (n, 2) array of int (x, y) that the function
 /// may keep (each call gets its own), returning one number; with step_cost(previous, direction)
 /// (previous -1 for the first step) its per-step form for the exact optimum. Each call holds the
@@ -107,12 +150,13 @@ void set_path_objective(engine::GridSpec& spec, const py::object& objective, con
 
 namespace {
 
-py::dict plan(const Grid& g, const py::object& start, const py::object& goal, const std::string& algo,
-              const py::object& objective, const py::object& step_cost, const std::string& encoding,
-              const std::string& connector, const std::string& init, std::int64_t waypoints,
-              const std::optional<std::vector<double>>& weights, std::optional<double> lambda, bool corner_cutting,
-              bool oracle, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::uint64_t seed,
-              const py::object& callback, const py::dict& params) {
+py::dict plan(const Grid& g, const py::object& start, const py::object& goal, const py::object& start_world,
+              const py::object& goal_world, const std::string& algo, const py::object& objective,
+              const py::object& step_cost, const std::string& encoding, const std::string& connector,
+              const std::string& init, std::int64_t waypoints, const std::optional<std::vector<double>>& weights,
+              std::optional<double> lambda, bool corner_cutting, bool oracle, std::optional<std::int64_t> evals,
+              std::optional<std::int64_t> iters, std::uint64_t seed, const py::object& callback,
+              const py::dict& params) {
     engine::GridSpec spec;
     auto errors = std::make_shared<UserError>();
     set_path_objective(spec, objective, step_cost, errors, "");
@@ -126,8 +170,8 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     spec.oracle = oracle;
     engine::check_grid_names(spec);
     spec.map = g.map;
-    spec.start = grid_cell(start, "start");
-    spec.goal = grid_cell(goal, "goal");
+    spec.start = endpoint(*g.map, start, start_world, "start");
+    spec.goal = endpoint(*g.map, goal, goal_world, "goal");
     const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     std::optional<engine::Problem> problem;
     {
@@ -141,6 +185,10 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     d["objective"] = spec.objective;
     d["seed"] = seed;
     const auto& run = *r.grid;
+    if (g.map->frame())
+        d["path_world"] = world_path_array(*g.map, run.path);
+    else
+        d["path_world"] = py::none();
     if (run.optimum && run.feasible) {
         // As `pride path`: values that agree to 1e-9 (relative) are the optimum, gap exactly 0.
         const double scale = std::max(1.0, std::abs(*run.optimum));
@@ -194,13 +242,15 @@ void bind_grid(py::module_& m) {
         .def(py::init(&grid_from_array), py::arg("array"))
         .def_static(
             "load",
-            [](const py::object& path, const py::object& inflate) {
+            [](const py::object& path, const py::object& inflate, const py::object& unknown_free) {
                 const std::string file = path_arg(path, "path");
                 const std::int64_t r = integer_arg(inflate, "inflate");
+                grid::MapReadOptions options;
+                options.unknown_free = flag_arg(unknown_free, "unknown_free");
                 py::gil_scoped_release release;
-                return Grid{engine::load_map(file, r)};
+                return Grid{engine::load_map(file, r, options)};
             },
-            py::call_guard<Call>(), py::arg("path"), py::arg("inflate") = 0)
+            py::call_guard<Call>(), py::arg("path"), py::arg("inflate") = 0, py::arg("unknown_free") = false)
         .def(
             "inflated",
             [](const Grid& g, const py::object& radius) {
@@ -213,6 +263,18 @@ void bind_grid(py::module_& m) {
         .def_property_readonly("width", [](const Grid& g) { return g.map->width(); })
         .def_property_readonly("height", [](const Grid& g) { return g.map->height(); })
         .def_property_readonly("name", [](const Grid& g) { return g.map->name(); })
+        // The world frame of a ROS map_server map: metres per cell, and the world point of the
+        // map's bottom-left corner; None for maps without one.
+        .def_property_readonly("resolution",
+                               [](const Grid& g) -> py::object {
+                                   if (!g.map->frame()) return py::none();
+                                   return py::float_(g.map->frame()->resolution);
+                               })
+        .def_property_readonly("origin",
+                               [](const Grid& g) -> py::object {
+                                   if (!g.map->frame()) return py::none();
+                                   return py::make_tuple(g.map->frame()->origin_x, g.map->frame()->origin_y);
+                               })
         .def("to_array", &grid_array)
         .def(
             "free",
@@ -223,10 +285,11 @@ void bind_grid(py::module_& m) {
                        g.map->free({static_cast<int>(cx), static_cast<int>(cy)});
             },
             py::arg("x"), py::arg("y"));
-    m.def("plan", &plan, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"), py::arg("algo"),
-          py::arg("objective"), py::arg("step_cost"), py::arg("encoding"), py::arg("connector"), py::arg("init"),
-          py::arg("waypoints"), py::arg("weights"), py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"),
-          py::arg("evals"), py::arg("iters"), py::arg("seed"), py::arg("callback"), py::arg("params"));
+    m.def("plan", &plan, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
+          py::arg("start_world"), py::arg("goal_world"), py::arg("algo"), py::arg("objective"), py::arg("step_cost"),
+          py::arg("encoding"), py::arg("connector"), py::arg("init"), py::arg("waypoints"), py::arg("weights"),
+          py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"), py::arg("evals"), py::arg("iters"),
+          py::arg("seed"), py::arg("callback"), py::arg("params"));
     m.def("pareto", &pareto, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
           py::arg("objectives"), py::arg("corner_cutting"));
 }

@@ -42,6 +42,7 @@ PATH = [5, object(), None, b"x.sqlite"]
 LIST = [None, 5, "ab", object(), {"a": 1}]
 CELL = [None, 5, "ab", (1.5, 2), (1,), (True, 1)]
 GRID_ARG = [None, np.zeros((3, 3)), "map", 5]
+WORLD = [5, "ab", (1.5,), ("a", 1), (True, 1.0)]  # (x, y) in metres; None is "not given"
 NUMBERS = [None, "abc", object(), np.array(["a", "b"])]
 POINTS = NUMBERS + [[1.0, 2.0]]  # an (n, M) set, not one point
 PAIRED = POINTS + [[[1.0, 2.0, 3.0]]]  # and M = 3 against M = 2
@@ -95,11 +96,12 @@ def api(tmp_path):
         "Problem": (lambda **o: pride.Problem(**{"name": "sphere", "dim": 2, **o}),
                     dict(name=TEXT, dim=INT, instance=INT, seed=SEED)),
         "Grid": (lambda **o: pride.Grid(**{"array": np.zeros((2, 2)), **o}), dict(array=[None, "abc", object()])),
-        "Grid.load": (lambda **o: pride.Grid.load(**{"path": mfile, "inflate": 0, **o}), dict(path=PATH, inflate=INT_REQUIRED)),
+        "Grid.load": (lambda **o: pride.Grid.load(**{"path": mfile, "inflate": 0, **o}), dict(path=PATH, inflate=INT_REQUIRED, unknown_free=FLAG)),
         "Grid.inflated": (lambda **o: GRID.inflated(**{"radius": 1, **o}), dict(radius=INT_REQUIRED)),
         "Grid.free": (lambda **o: GRID.free(**{"x": 1, "y": 1, **o}), dict(x=INT_REQUIRED, y=INT_REQUIRED)),
         "plan": (lambda **o: pride.plan(**{"grid": GRID, "start": (0, 0), "goal": (3, 3), "iters": 2, **o}),
-                 dict(grid=GRID_ARG, start=CELL, goal=CELL, algo=TEXT, objective=OBJECTIVE, step_cost=CALLABLE,
+                 dict(grid=GRID_ARG, start=CELL, goal=CELL, start_world=WORLD, goal_world=WORLD, algo=TEXT,
+                      objective=OBJECTIVE, step_cost=CALLABLE,
                       encoding=TEXT, connector=TEXT, init=TEXT, waypoints=INT_REQUIRED, weights=WEIGHTS,
                       lambda_=REAL, corner_cutting=FLAG, oracle=FLAG, evals=INT, iters=INT, seed=SEED,
                       callback=CALLABLE)),
@@ -192,7 +194,7 @@ def test_the_table_covers_every_public_function_and_parameter(tmp_path):
             continue
         assert name in table, f"{name} has no row in the table of argument types"
         assert parameters(fn) == set(table[name][1]), name
-    assert parameters(pride.Grid.load) == {"path", "inflate"}
+    assert parameters(pride.Grid.load) == {"path", "inflate", "unknown_free"}
     assert parameters(pride.Grid.free) == {"x", "y"}
 
 

@@ -1,0 +1,72 @@
+"""Maps with a world frame (ROS map_server YAML files, examples/maps/ros): Grid.resolution and
+Grid.origin, plan's start_world/goal_world keywords and the result's path_world, and the one-line
+errors naming the keyword."""
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import pride
+
+ROS = pathlib.Path(__file__).resolve().parents[2] / "examples" / "maps" / "ros"
+SANDBOX = str(ROS / "tb3_sandbox.yaml")
+
+
+def test_frame_properties():
+    g = pride.Grid.load(SANDBOX)
+    assert (g.width, g.height) == (384, 384)
+    assert g.resolution == 0.05
+    assert g.origin == (-10.0, -10.0)
+    plain = pride.Grid(np.zeros((3, 4)))
+    assert plain.resolution is None and plain.origin is None
+
+
+def test_plan_in_world_coordinates():
+    g = pride.Grid.load(SANDBOX)
+    r = pride.plan(g, start_world=(-2.0, -0.5), goal_world=(-0.5, 0.5), algo="astar")
+    assert r.feasible
+    # The cells holding the points: x = floor((-2 + 10) / 0.05) = 160, row from the bottom
+    # floor(9.5 / 0.05) = 190, y = 383 - 190 = 193.
+    assert tuple(r.path[0]) == (160, 193)
+    assert r.path_world.shape == (len(r.path), 2)
+    assert tuple(r.path_world[0]) == (-1.975, -0.475)
+    assert tuple(r.path_world[-1]) == (-0.475, 0.525)
+    # The same run with cells gives the same path.
+    same = pride.plan(g, tuple(r.path[0]), tuple(r.path[-1]), algo="astar")
+    assert np.array_equal(same.path, r.path)
+    # Without a frame: no path_world.
+    plain = pride.plan(pride.Grid(np.zeros((3, 4))), (0, 0), (3, 2), algo="astar")
+    assert plain.path_world is None
+
+
+def test_unknown_cells_blocked_or_free(tmp_path):
+    (tmp_path / "u.pgm").write_bytes(b"P5\n3 1\n255\n\xfe\xcd\xfe")
+    (tmp_path / "u.yaml").write_text("image: u.pgm\nresolution: 1\norigin: [0, 0, 0]\n")
+    assert pride.Grid.load(str(tmp_path / "u.yaml")).to_array().tolist() == [[0, 1, 0]]
+    assert pride.Grid.load(str(tmp_path / "u.yaml"), unknown_free=True).to_array().tolist() == [[0, 0, 0]]
+    with pytest.raises(TypeError, match="^unknown_free: "):
+        pride.Grid.load(str(tmp_path / "u.yaml"), unknown_free="yes")
+
+
+def test_errors_name_the_keyword(tmp_path):
+    g = pride.Grid.load(SANDBOX)
+    with pytest.raises(ValueError, match=r"^start_world: the point \(30, 0\) is outside the map: x in \[-10, 9.2\)"):
+        pride.plan(g, start_world=(30.0, 0.0), goal_world=(0, 0), algo="astar")
+    with pytest.raises(TypeError, match="^goal_world: expected a number, got str"):
+        pride.plan(g, start_world=(0, 0), goal_world=("a", 0), algo="astar")
+    with pytest.raises(TypeError, match=r"^start_world: expected \(x, y\) in metres, got str"):
+        pride.plan(g, start_world="0,0", goal_world=(0, 0), algo="astar")
+    with pytest.raises(ValueError, match="^start_world: the point must be finite"):
+        pride.plan(g, start_world=(float("nan"), 0), goal_world=(0, 0), algo="astar")
+    with pytest.raises(TypeError, match="^start_world: give start or start_world, not both"):
+        pride.plan(g, (1, 1), start_world=(0, 0), goal_world=(0, 0), algo="astar")
+    with pytest.raises(TypeError, match=r"^goal: give goal=\(x, y\) \(a cell\) or goal_world"):
+        pride.plan(g, start_world=(0, 0), algo="astar")
+    with pytest.raises(ValueError, match="^start_world: the map array has no world frame"):
+        pride.plan(pride.Grid(np.zeros((3, 4))), start_world=(0, 0), goal=(1, 1), algo="astar")
+    (tmp_path / "y.yaml").write_text("image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0.3]\n")
+    with pytest.raises(ValueError) as e:
+        pride.Grid.load(str(tmp_path / "y.yaml"))
+    assert str(e.value) == str(tmp_path / "y.yaml") + ":3:16: origin yaw 0.3 is not supported: rotate the image"
+    assert "\n" not in str(e.value)
