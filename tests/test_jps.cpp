@@ -7,8 +7,10 @@
 #include <map>
 #include <string>
 
+#include "cli_runner.hpp"
 #include "framework/random.hpp"
 #include "grid_support.hpp"
+#include "json_reader.hpp"
 #include "problems/grid/astar.hpp"
 #include "problems/grid/jps.hpp"
 #include "problems/grid/map_io.hpp"
@@ -98,4 +100,21 @@ TEST_CASE("jps: start equal to goal, hand-drawn forced neighbours, and bad input
     CHECK_THROWS_AS(jps.search(map, {1, 1}, {0, 0}), InputError);                 // blocked start
     CHECK_THROWS_AS(jps.search(map, {0, 0}, {9, 0}), InputError);                 // goal outside
     CHECK_THROWS_AS(jps.search(map, {0, 0}, {4, 3}, nullptr, true), InputError);  // corner cutting
+}
+
+TEST_CASE("jps: pride path --algo jps finds the length of astar with fewer expansions, refuses corner cutting") {
+    const std::string where = std::string("path --map '") + PRIDE_SOURCE_DIR +
+                              "/examples/maps/file002-40x40.map' --start 1,38 --goal 38,1 --objective length --json";
+    const auto jps = test::run_pride(where + " --algo jps");
+    const auto astar = test::run_pride(where + " --algo astar");
+    REQUIRE(jps.status == 0);
+    REQUIRE(astar.status == 0);
+    const auto j = test::parse_json(jps.out), a = test::parse_json(astar.out);
+    CHECK(j.at("algo").text == "jps");
+    CHECK(j.at("objective_value").number == Approx(56.42640687).epsilon(1e-9));
+    CHECK(j.at("objective_value").number == a.at("objective_value").number);
+    CHECK(j.at("evaluations").number < a.at("evaluations").number);
+    const auto cut = test::run_pride(where + " --algo jps --corner-cutting");
+    CHECK(cut.status != 0);
+    CHECK(cut.err.find("corner cutting is not supported") != std::string::npos);
 }
