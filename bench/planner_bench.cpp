@@ -1,0 +1,127 @@
+// The grid planners of issue 29 on Moving AI scenarios; prints numbers, asserts nothing.
+//   JPS against A* (the same octile lengths; a mismatch is reported): expansions and microseconds
+//   per query, medians over the file's queries; Theta* and Lazy Theta*: microseconds, line-of-sight
+//   tests per query (medians) and the mean length as a share of A*'s; with --oracle, the exact
+//   any-angle oracle too (microseconds per query, and the mean of Theta*'s length over the oracle's).
+// Each query runs --reps times on one reused planner and keeps its least time (the machine may be
+// shared); one planner object serves the whole file, as a connector reuses one.
+// Usage: planner_bench --scen FILE.scen ... [--reps N] [--oracle]
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <vector>
+
+#include "problems/grid/any_angle.hpp"
+#include "problems/grid/astar.hpp"
+#include "problems/grid/jps.hpp"
+#include "problems/grid/map_io.hpp"
+#include "problems/grid/theta_star.hpp"
+
+namespace {
+
+using namespace pride::grid;
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// The least wall time of `reps` runs of f, in microseconds; f's last result in `result`.
+template <class F>
+double least_us(int reps, F&& f, double& result) {
+    double best = 1e300;
+    for (int r = 0; r < reps; ++r) {
+        const auto t = Clock::now();
+        result = f();
+        best = std::min(best, std::chrono::duration<double, std::micro>(Clock::now() - t).count());
+    }
+    return best;
+}
+
+void bench_file(const std::string& scen, int reps, bool with_oracle) {
+    const auto entries = read_scenario(scen);
+    const auto dir = std::filesystem::path(scen).parent_path();
+    std::map<std::string, GridMap> maps;
+    for (const auto& e : entries)
+        if (!maps.count(e.map)) maps.emplace(e.map, read_map((dir / e.map).string()));
+    std::map<std::string, AnyAngleOracle> oracles;
+    AStar astar;
+    JumpPointSearch jps;
+    ThetaStar theta, lazy(true);
+    std::vector<double> a_exp, j_exp, a_us, j_us, t_us, l_us, t_los, l_los, o_us;
+    double t_share = 0.0, l_share = 0.0, t_over = 0.0, l_over = 0.0;
+    int mismatches = 0, counted = 0;
+    for (const auto& e : entries) {
+        const GridMap& m = maps.at(e.map);
+        double la = 0.0, lj = 0.0, lt = 0.0, ll = 0.0, lo = 0.0;
+        auto ea = astar.expansions(), ej = jps.expansions();
+        a_us.push_back(least_us(
+            reps, [&] { return astar.search(m, e.start, e.goal); }, la));
+        j_us.push_back(least_us(
+            reps, [&] { return jps.search(m, e.start, e.goal); }, lj));
+        a_exp.push_back(static_cast<double>(astar.expansions() - ea) / reps);
+        j_exp.push_back(static_cast<double>(jps.expansions() - ej) / reps);
+        if (std::abs(la - lj) > 1e-9) ++mismatches;
+        auto ct = theta.los_checks(), cl = lazy.los_checks();
+        t_us.push_back(least_us(
+            reps, [&] { return theta.search(m, e.start, e.goal); }, lt));
+        l_us.push_back(least_us(
+            reps, [&] { return lazy.search(m, e.start, e.goal); }, ll));
+        t_los.push_back(static_cast<double>(theta.los_checks() - ct) / reps);
+        l_los.push_back(static_cast<double>(lazy.los_checks() - cl) / reps);
+        if (la > 0.0) {
+            t_share += lt / la;
+            l_share += ll / la;
+            ++counted;
+        }
+        if (with_oracle) {
+            auto it = oracles.find(e.map);
+            if (it == oracles.end()) it = oracles.emplace(e.map, AnyAngleOracle(m)).first;
+            o_us.push_back(least_us(
+                1, [&] { return it->second.solve(e.start, e.goal); }, lo));
+            if (lo > 0.0) {
+                t_over += lt / lo;
+                l_over += ll / lo;
+            }
+        }
+    }
+    const double n = std::max(counted, 1);
+    fmt::print("{},{},{},{:.0f},{:.0f},{:.1f},{:.1f},{:.1f},{:.1f},{:.0f},{:.0f},{:.4f},{:.4f}",
+               std::filesystem::path(scen).filename().string(), entries.size(), mismatches, median(a_exp),
+               median(j_exp), median(a_us), median(j_us), median(t_us), median(l_us), median(t_los), median(l_los),
+               t_share / n, l_share / n);
+    if (with_oracle) fmt::print(",{:.1f},{:.5f},{:.5f}", median(o_us), t_over / n, l_over / n);
+    fmt::print("\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> scens;
+    int reps = 3;
+    bool oracle = false;
+    CLI::App app{"JPS against A*, Theta* and Lazy Theta* on Moving AI scenarios (issue 29)"};
+    app.add_option("--scen", scens, "Moving AI scenario files")->required();
+    app.add_option("--reps", reps, "runs per query and planner; the least time is kept (default 3)")
+        ->check(CLI::PositiveNumber);
+    app.add_flag("--oracle", oracle, "also the exact any-angle oracle (slow on large maps)");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        fmt::print(
+            "file,queries,jps_length_mismatches,astar_expansions,jps_expansions,astar_us,jps_us,theta_us,lazy_us,"
+            "theta_los,lazy_los,theta_over_astar,lazy_over_astar{}\n",
+            oracle ? ",oracle_us,theta_over_oracle,lazy_over_oracle" : "");
+        for (const auto& s : scens) bench_file(s, reps, oracle);
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "planner_bench: {}\n", e.what());
+        return 2;
+    }
+    return 0;
+}
