@@ -171,12 +171,10 @@ struct Nsga2 {
     /// On boxes: SBX and polynomial mutation (the Crossover and Mutation policies' defaults).
     template <MultiObjectiveProblem P, class O = NoObserver>
     MultiObjectiveResult run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
-        validate();
-        auto start = start_multiobjective_run(name(), problem, termination, seed);
+        auto start = begin(problem, termination, seed);
         const std::size_t m = start.objectives;
         Rng& rng = start.rng;
         MultiObjectiveRunState& state = start.state;
-        if constexpr (requires { survival.validate(m, name()); }) survival.validate(m, name());
         const std::size_t dim = problem.dimension();
         const auto n = static_cast<std::size_t>(population);
         const auto rows = static_cast<Eigen::Index>(dim), mrows = static_cast<Eigen::Index>(m);
@@ -231,12 +229,10 @@ struct Nsga2 {
                                                                        std::uint64_t seed, O&& observer = O{})
         const requires std::invocable<const Crossover&, P&, typename P::chain_type&, typename P::chain_type&, Rng&> &&
         std::invocable<const Mutation&, P&, typename P::chain_type&, Rng&> {
-        validate();
-        auto start = start_multiobjective_run(name(), problem, termination, seed);
+        auto start = begin(problem, termination, seed);
         const std::size_t m = start.objectives;
         Rng& rng = start.rng;
         MultiObjectiveRunState& state = start.state;
-        if constexpr (requires { survival.validate(m, name()); }) survival.validate(m, name());
         const auto n = static_cast<std::size_t>(population);
         const auto mrows = static_cast<Eigen::Index>(m), cols = static_cast<Eigen::Index>(n);
 
@@ -277,6 +273,16 @@ struct Nsga2 {
     }
 
   private:
+    /// Every check of the parameters and the stopping rules, then the run's generator and guard.
+    template <class P>
+    MultiObjectiveStart begin(P& problem, const Termination& termination, std::uint64_t seed) const {
+        validate();
+        auto start = start_multiobjective_run(name(), problem, termination, seed);
+        if constexpr (requires { survival.validate(start.objectives, name()); })
+            survival.validate(start.objectives, name());
+        return start;
+    }
+
     /// What a generation keeps besides the population, the same on boxes and chains: the standing
     /// for the tournaments, the permutations, the survivors and the survival's buffers.
     struct Generation {

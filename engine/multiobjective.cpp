@@ -260,20 +260,20 @@ std::vector<std::size_t> listed(const Matrix& f) {
     return keep;
 }
 
-MoRunResult finish_chain_run(const AlgorithmEntry& entry, MoChainResult r) {
+/// A run's record with the members listed() keeps (their indices into the run's result in `keep`)
+/// and their values; their points or paths are for the caller.
+template <class Result>
+MoRunResult listed_run(const AlgorithmEntry& entry, Result& r, std::vector<std::size_t>& keep) {
     MoRunResult out;
     out.algorithm = entry.name;
     out.evaluations = r.evaluations;
     out.iterations = r.iterations;
     out.wall_ms = r.wall_ms;
     out.history_evaluations = std::move(r.history_evaluations);
-    const auto keep = listed(r.f);
+    keep = listed(r.f);
     out.f.resize(r.f.rows(), static_cast<Eigen::Index>(keep.size()));
-    for (std::size_t k = 0; k < keep.size(); ++k) {
+    for (std::size_t k = 0; k < keep.size(); ++k)
         out.f.col(static_cast<Eigen::Index>(k)) = r.f.col(static_cast<Eigen::Index>(keep[k]));
-        out.paths.push_back(std::move(r.x[keep[k]]));
-        out.feasible.push_back(1);  // the chain operators make legal chains only
-    }
     return out;
 }
 
@@ -293,24 +293,21 @@ MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const 
     check_space_params(entry, params, problem);
     const Termination termination = mo_termination(problem, budget);
     check_memory(params, problem);
-    if (problem.is_chain())
-        return finish_chain_run(entry,
-                                entry.run_multiobjective_chain(params, *problem.prepared().chain, termination, seed));
-    MultiObjectiveResult r = entry.run_multiobjective(params, *problem.prepared().target, termination, seed);
-
-    MoRunResult out;
-    out.algorithm = entry.name;
-    out.evaluations = r.evaluations;
-    out.iterations = r.iterations;
-    out.wall_ms = r.wall_ms;
-    out.history_evaluations = std::move(r.history_evaluations);
-    const auto keep = listed(r.f);
-    out.f.resize(r.f.rows(), static_cast<Eigen::Index>(keep.size()));
-    out.x.resize(r.x.rows(), static_cast<Eigen::Index>(keep.size()));
-    for (std::size_t k = 0; k < keep.size(); ++k) {
-        out.f.col(static_cast<Eigen::Index>(k)) = r.f.col(static_cast<Eigen::Index>(keep[k]));
-        out.x.col(static_cast<Eigen::Index>(k)) = r.x.col(static_cast<Eigen::Index>(keep[k]));
+    std::vector<std::size_t> keep;
+    if (problem.is_chain()) {
+        MoChainResult r = entry.run_multiobjective_chain(params, *problem.prepared().chain, termination, seed);
+        MoRunResult out = listed_run(entry, r, keep);
+        for (const std::size_t i : keep) {
+            out.paths.push_back(std::move(r.x[i]));
+            out.feasible.push_back(1);  // the chain operators make legal chains only
+        }
+        return out;
     }
+    MultiObjectiveResult r = entry.run_multiobjective(params, *problem.prepared().target, termination, seed);
+    MoRunResult out = listed_run(entry, r, keep);
+    out.x.resize(r.x.rows(), static_cast<Eigen::Index>(keep.size()));
+    for (std::size_t k = 0; k < keep.size(); ++k)
+        out.x.col(static_cast<Eigen::Index>(k)) = r.x.col(static_cast<Eigen::Index>(keep[k]));
     if (problem.is_grid()) {
         std::visit(
             [&](const auto& target) {

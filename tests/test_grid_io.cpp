@@ -309,7 +309,11 @@ TEST_CASE("grid io: empty and binary files", "[grid][io][errors]") {
     e = map_error(kHeader + "...\n.\xff.\n");
     CHECK_THAT(e, StartsWith("m.map:6:2: "));
     CHECK_THAT(e, Contains("\\xFF") && Contains("UTF-8"));
+    // A PNG signature makes it an image (image_map.hpp): a cut one is a bad PNG, not text.
     e = map_error("\x89PNG\r\n\x1a\n");
+    CHECK_THAT(e, StartsWith("m.map: "));
+    CHECK_THAT(e, Contains("PNG") && Contains("truncated"));
+    e = map_error("\x89PNX\r\n\x1a\n");
     CHECK_THAT(e, StartsWith("m.map:1:1: "));
     CHECK_THAT(e, Contains("\\x89"));
     e = map_error("type octile\nheight 2\nwidth 3\nmap\n..\xC3");  // cut inside a UTF-8 sequence
@@ -344,9 +348,13 @@ TEST_CASE("grid io: matrix errors", "[grid][io][errors]") {
     e = map_error("010\n\n000\n");
     CHECK_THAT(e, StartsWith("m.map:2: "));
     CHECK_THAT(e, Contains("empty row"));
-    e = map_error("0,1,0\n");
+    // Commas make a CSV matrix (0,1,0 is a map); an empty field or another separator is an error.
+    e = map_error("0,,1\n");
+    CHECK_THAT(e, StartsWith("m.map:1:3: "));
+    CHECK_THAT(e, Contains("empty matrix cell"));
+    e = map_error("0;1\n");
     CHECK_THAT(e, StartsWith("m.map:1:2: "));
-    CHECK_THAT(e, Contains("','"));
+    CHECK_THAT(e, Contains("';'"));
     e = map_error("01\xC3\xA9\n");
     CHECK_THAT(e, StartsWith("m.map:1:3: "));
     CHECK_THAT(e, Contains("U+00E9"));
