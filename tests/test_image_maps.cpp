@@ -285,8 +285,9 @@ TEST_CASE("image maps: every bad image is one line naming the file, sizes refuse
         {"P5 \n", "m.png: bad Netpbm image: "},
         {"P7\nWIDTH 1\nHEIGHT 1\nDEPTH 5\nMAXVAL 255\nENDHDR\nabcde", "m.png: unsupported Netpbm image with 5 planes"},
     };
-    for (const auto& [bytes, start] : cases) {
+    for (const auto& [case_bytes, start] : cases) {
         INFO(start);
+        const std::string& bytes = case_bytes;  // clang 14 does not capture structured bindings
         const std::string e = error_of([&] { (void)parse_map(bytes, "m.png"); });
         one_line(e);
         CHECK_THAT(e, StartsWith(start));
