@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <csetjmp>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -125,7 +126,9 @@ bool pnm_header(PnmState& s) {
         pm_setjmpbuf(saved);
         return false;
     }
-    pnm_readpaminit(s.file, &s.pam, PAM_STRUCT_SIZE(tuple_type));
+    // PAM_STRUCT_SIZE(tuple_type), written with offsetof: the macro takes a member of a null
+    // pointer, which UBSan reports.
+    pnm_readpaminit(s.file, &s.pam, static_cast<int>(offsetof(struct pam, tuple_type) + sizeof s.pam.tuple_type));
     pm_setjmpbuf(saved);
     return true;
 }
