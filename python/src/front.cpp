@@ -145,9 +145,10 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
 
 py::dict plan_front(const Grid& g, const py::object& start, const py::object& goal, const std::string& algo,
                     const std::string& objectives, const std::string& encoding, const std::string& init,
-                    const std::string& connector, std::int64_t waypoints, bool corner_cutting, std::int64_t clearance_bands,
-                    std::int64_t clearance_width, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters,
-                    std::optional<double> wall_ms, std::uint64_t seed, bool reference, const py::dict& params) {
+                    const std::string& connector, std::int64_t waypoints, bool corner_cutting,
+                    std::int64_t clearance_bands, std::int64_t clearance_width, std::optional<std::int64_t> evals,
+                    std::optional<std::int64_t> iters, std::optional<double> wall_ms, std::uint64_t seed,
+                    bool reference, const py::dict& params) {
     auto errors = std::make_shared<UserError>();
     engine::MoGridSpec spec;
     spec.grid.map = g.map;
@@ -203,9 +204,9 @@ void bind_front(py::module_& m) {
           py::arg("seed"), py::arg("vectorized"), py::arg("reference"), py::arg("params"));
     m.def("plan_front", &plan_front, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
           py::arg("algo"), py::arg("objectives"), py::arg("encoding"), py::arg("init"), py::arg("connector"),
-          py::arg("waypoints"),
-          py::arg("corner_cutting"), py::arg("clearance_bands"), py::arg("clearance_width"), py::arg("evals"),
-          py::arg("iters"), py::arg("wall_ms"), py::arg("seed"), py::arg("reference"), py::arg("params"));
+          py::arg("waypoints"), py::arg("corner_cutting"), py::arg("clearance_bands"), py::arg("clearance_width"),
+          py::arg("evals"), py::arg("iters"), py::arg("wall_ms"), py::arg("seed"), py::arg("reference"),
+          py::arg("params"));
 }
 
 }  // namespace pride::python
