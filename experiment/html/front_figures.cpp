@@ -233,17 +233,8 @@ void front_figures(Page& page, const report::CampaignStore& s, const PageStore& 
     if (!grid) return;
     const auto info =
         std::find_if(extra.grids.begin(), extra.grids.end(), [&](const GridProblemInfo& g) { return g.id == problem; });
-    if (info == extra.grids.end() || info->map.empty()) {
-        page.notes += "<p class=\"note\">The map was given in code, not as a file: no picture of the paths.</p>\n";
-        return;
-    }
-    std::shared_ptr<const grid::GridMap> map;
-    try {
-        map = engine::load_map(info->map, info->inflate);
-    } catch (const InputError& e) {
-        page.notes += "<p class=\"note\">No picture of the paths: " + escape(e.what()) + "</p>\n";
-        return;
-    }
+    const auto map = picture_map(page, info == extra.grids.end() ? nullptr : &*info);
+    if (!map) return;
     std::set<std::string> used;
     for (const auto& a : fronts.algorithms) {
         const StoredFront& r = *a.median;

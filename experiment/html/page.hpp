@@ -6,15 +6,20 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 
 #include <fmt/format.h>
 
+#include "engine/specs.hpp"
 #include "experiment/file_name.hpp"
 #include "experiment/html/colour.hpp"
 #include "experiment/html/figure.hpp"
+#include "experiment/html/page_store.hpp"
+#include "framework/error.hpp"
 #include "framework/output_files.hpp"
+#include "problems/grid/map.hpp"
 
 namespace pride::html {
 
@@ -78,5 +83,20 @@ struct Page {
                             escape(alt), caption);
     }
 };
+
+/// The map of a grid problem for its pictures of paths, or null with a note on the page saying
+/// why there is none (`info` null or its map given in code, or a map file that cannot be read).
+inline std::shared_ptr<const grid::GridMap> picture_map(Page& page, const GridProblemInfo* info) {
+    if (!info || info->map.empty()) {
+        page.notes += "<p class=\"note\">The map was given in code, not as a file: no picture of the paths.</p>\n";
+        return nullptr;
+    }
+    try {
+        return engine::load_map(info->map, info->inflate);
+    } catch (const InputError& e) {
+        page.notes += "<p class=\"note\">No picture of the paths: " + escape(e.what()) + "</p>\n";
+        return nullptr;
+    }
+}
 
 }  // namespace pride::html

@@ -521,17 +521,8 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
     std::vector<const BestPath*> best;
     for (const BestPath& b : extra.best_paths)
         if (b.problem == problem) best.push_back(&b);
-    if (info->map.empty()) {
-        page.notes += "<p class=\"note\">The map was given in code, not as a file: no picture of the paths.</p>\n";
-        return;
-    }
-    std::shared_ptr<const grid::GridMap> map;
-    try {
-        map = engine::load_map(info->map, info->inflate);
-    } catch (const InputError& e) {
-        page.notes += "<p class=\"note\">No picture of the paths: " + escape(e.what()) + "</p>\n";
-        return;
-    }
+    const auto map = picture_map(page, &*info);
+    if (!map) return;
     std::vector<grid::Path> paths;
     std::vector<std::string> labels;
     std::vector<Rgb> colours;
