@@ -24,10 +24,11 @@ engine::MoProblemSpec problem_spec(const FrontOptions& o) {
     require(grid != !o.problem.empty(), "problem", "give either --problem or --map (with --start and --goal)");
     if (!grid) {
         require(o.start.empty() && o.goal.empty() && o.encoding.empty() && o.init.empty() && !o.waypoints &&
-                    o.inflate == 0 && !o.corner_cutting && o.connector == "repair" && o.svg.empty() && o.png.empty(),
+                    o.inflate == 0 && !o.unknown_free && !o.corner_cutting && o.connector == "repair" &&
+                    o.svg.empty() && o.png.empty(),
                 "problem",
                 o.problem +
-                    " is not a grid: --start, --goal, --encoding, --init, --connector, --waypoints, "
+                    " is not a grid: --start, --goal, --encoding, --init, --connector, --waypoints, --unknown-free, "
                     "--inflate, --corner-cutting, --svg and --png are for --map");
         require(engine::is_multiobjective_problem(o.problem), "problem",
                 "unknown multi-objective problem '" + o.problem +
@@ -47,7 +48,9 @@ engine::MoProblemSpec problem_spec(const FrontOptions& o) {
     require(!o.start.empty() && !o.goal.empty(), "map", "a grid needs --start and --goal");
     require(!o.waypoints || o.encoding == "free", "waypoints", "only for the free encoding");
     engine::MoGridSpec s;
-    s.grid.map = engine::load_map(o.map, o.inflate);
+    grid::MapReadOptions read;
+    read.unknown_free = o.unknown_free;
+    s.grid.map = engine::load_map(o.map, o.inflate, read);
     s.grid.start = parse_cell(o.start, "--start");
     s.grid.goal = parse_cell(o.goal, "--goal");
     s.grid.encoding = o.encoding;

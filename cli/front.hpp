@@ -24,6 +24,7 @@ struct FrontOptions {
     std::string connector = "repair";
     std::optional<std::int64_t> waypoints;
     std::int64_t inflate = 0;
+    bool unknown_free = false;  // images and map_server maps: unknown cells free
     bool corner_cutting = false;
     std::optional<std::int64_t> evals, iters, pop;
     std::optional<double> wall_ms;

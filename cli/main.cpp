@@ -192,6 +192,8 @@ int run_main(int argc, char** argv) {
         ->add_option("--objectives", pareto.objectives,
                      "two to four of length, turns, angle, clearance, comma-separated")
         ->required();
+    pareto_cmd->add_flag("--unknown-free", pareto.unknown_free,
+                         "unknown cells of images and map_server maps are free (default: blocked)");
     pareto_cmd->add_option("--inflate", pareto.inflate, "obstacle inflation radius in cells (default 0)")
         ->check(integer_in(0, 1000));
     pareto_cmd->add_flag("--corner-cutting", pareto.corner_cutting, "allow diagonal steps past a blocked corner");
@@ -224,6 +226,8 @@ int run_main(int argc, char** argv) {
     front_cmd->add_option("--connector", front.connector, "grids: repair (default) or penalty");
     front_cmd->add_option("--waypoints", front.waypoints, "waypoints of the free encoding (default 3)")
         ->check(integer_in(1, 1000));
+    front_cmd->add_flag("--unknown-free", front.unknown_free,
+                        "grids: unknown cells of images and map_server maps are free (default: blocked)");
     front_cmd->add_option("--inflate", front.inflate, "obstacle inflation radius in cells (default 0)")
         ->check(integer_in(0, 1000));
     front_cmd->add_flag("--corner-cutting", front.corner_cutting, "allow diagonal steps past a blocked corner");

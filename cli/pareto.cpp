@@ -28,7 +28,9 @@ int pareto_command(const ParetoOptions& o, std::ostream& out) {
         names.push_back(name == "angle" ? "angle_penalty" : name);
         begin = comma + 1;
     }
-    const auto map = engine::load_map(o.map, o.inflate);
+    grid::MapReadOptions read;
+    read.unknown_free = o.unknown_free;
+    const auto map = engine::load_map(o.map, o.inflate, read);
     const grid::Cell start = parse_cell(o.start, "--start"), goal = parse_cell(o.goal, "--goal");
     // The checks of `pride path`: inside, free, and the goal reachable (one line, exit 2).
     const grid::GridProblem<grid::LengthObjective> checked(map, start, goal, {}, o.corner_cutting);

@@ -13,6 +13,7 @@ struct ParetoOptions {
     std::string goal;
     std::string objectives;  // two to four of length, turns, angle, clearance (any order)
     std::int64_t inflate = 0;
+    bool unknown_free = false;  // images and map_server maps: unknown cells free
     bool corner_cutting = false;
     bool json = false;
     std::string svg;

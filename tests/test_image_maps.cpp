@@ -444,4 +444,19 @@ TEST_CASE("pride path: --start-world and --goal-world on a map_server map, path_
     const auto through =
         pride::test::run_pride("path --map '" + u + "' --start 0,0 --goal 2,0 --algo astar --unknown-free");
     CHECK(through.status == 0);
+    // pride pareto and pride front read maps the same way: the unknown cell blocks the only way,
+    // unless --unknown-free (then the front is the one straight path).
+    expect_input_error("pareto --map '" + u + "' --start 0,0 --goal 2,0 --objectives length,turns",
+                       {"--goal", "cannot be reached"});
+    const auto exact = pride::test::run_pride("pareto --map '" + u +
+                                              "' --start 0,0 --goal 2,0 --objectives length,turns --unknown-free");
+    INFO(exact.err);
+    CHECK(exact.status == 0);
+    CHECK_THAT(exact.out, Contains("\n2 0"));
+    const auto front = pride::test::run_pride("front --algo nsga2 --map '" + u +
+                                              "' --start 0,0 --goal 2,0 --encoding chain --evals 400 --unknown-free");
+    INFO(front.err);
+    CHECK(front.status == 0);
+    CHECK_THAT(front.out, Contains("exact front  1 of its 1 points found"));
+    expect_input_error("front --algo nsga2 --problem zdt1 --unknown-free", {"--unknown-free", "--map"});
 }
