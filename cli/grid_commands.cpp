@@ -70,18 +70,7 @@ Cell parse_world_cell(const std::string& text, const GridMap& map, const std::st
     require(comma != std::string::npos, where, "expected X,Y in metres, got '" + text + "'");
     const double x = parse_finite(std::string_view(text).substr(0, comma), where + " X");
     const double y = parse_finite(std::string_view(text).substr(comma + 1), where + " Y");
-    const auto& f = map.frame();
-    require(f.has_value(), where,
-            "the map " + map.name() +
-                " has no world frame (only a ROS map_server YAML map has a resolution and origin): give a cell with " +
-                where.substr(0, where.find("-world")));
-    const auto cell = map.cell_at({x, y});
-    require(
-        cell.has_value(), where,
-        fmt::format("the point ({}, {}) is outside the map: x in [{:.10g}, {:.10g}), y in [{:.10g}, {:.10g}) metres", x,
-                    y, f->origin_x, f->origin_x + map.width() * f->resolution, f->origin_y,
-                    f->origin_y + map.height() * f->resolution));
-    return *cell;
+    return engine::world_cell(map, x, y, where, "a cell with " + where.substr(0, where.find("-world")));
 }
 
 std::string json_world_path(const GridMap& map, const Path& path) {

@@ -827,6 +827,21 @@ RunResult run(const AlgorithmSpec& algorithm, const Problem& problem, const Budg
     return run_observed(algorithm, problem, budget, seed, &observer);
 }
 
+grid::Cell world_cell(const grid::GridMap& map, double x, double y, const std::string& where,
+                      const std::string& instead) {
+    const auto& f = map.frame();
+    require(f.has_value(), where,
+            "the map " + map.name() +
+                " has no world frame (only a ROS map_server YAML map has a resolution and origin): give " + instead);
+    const auto cell = map.cell_at({x, y});
+    require(
+        cell.has_value(), where,
+        fmt::format("the point ({}, {}) is outside the map: x in [{:.10g}, {:.10g}), y in [{:.10g}, {:.10g}) metres", x,
+                    y, f->origin_x, f->origin_x + map.width() * f->resolution, f->origin_y,
+                    f->origin_y + map.height() * f->resolution));
+    return *cell;
+}
+
 std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate,
                                               const grid::MapReadOptions& options) {
     require(inflate >= 0 && inflate <= 1000, "inflate", "must be in [0, 1000], got " + std::to_string(inflate));

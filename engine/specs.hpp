@@ -114,4 +114,10 @@ namespace pride::engine {
 std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate = 0,
                                               const grid::MapReadOptions& options = {});
 
+/// The cell holding the world point (x, y) in metres. InputError(`where`, ...) when the map has no
+/// world frame (the message ends "give `instead`") or the point lies outside the map (with its
+/// bounds in metres).
+grid::Cell world_cell(const grid::GridMap& map, double x, double y, const std::string& where,
+                      const std::string& instead);
+
 }  // namespace pride::engine

@@ -75,17 +75,7 @@ grid::Cell endpoint(const grid::GridMap& map, const py::object& cell, const py::
     const double x = number_arg(s[0], world_name), y = number_arg(s[1], world_name);
     if (!cell.is_none()) throw py::type_error(world_name + ": give " + where + " or " + world_name + ", not both");
     require(std::isfinite(x) && std::isfinite(y), world_name, "the point must be finite");
-    const auto& f = map.frame();
-    require(f.has_value(), world_name,
-            "the map " + map.name() +
-                " has no world frame (only a ROS map_server YAML map has a resolution and origin): give " + where);
-    const auto c = map.cell_at({x, y});
-    require(
-        c.has_value(), world_name,
-        fmt::format("the point ({}, {}) is outside the map: x in [{:.10g}, {:.10g}), y in [{:.10g}, {:.10g}) metres", x,
-                    y, f->origin_x, f->origin_x + map.width() * f->resolution, f->origin_y,
-                    f->origin_y + map.height() * f->resolution));
-    return *c;
+    return engine::world_cell(map, x, y, world_name, where);
 }
 
 /// The path's cells as world points (cell centres, rounded to 1e-9 m as `pride path` prints them).
