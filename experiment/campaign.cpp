@@ -15,6 +15,7 @@
 #include <mutex>
 #include <set>
 #include <thread>
+#include <tuple>
 
 #include "engine/json.hpp"
 #include "experiment/cec_suites.hpp"
@@ -56,6 +57,7 @@ std::string describe(const Campaign& c) {
             s += fmt::format("grid {} {} ({},{}) ({},{}) {} {} {} {} {} {} {}", json_string(p.map_file), p.inflate,
                              g->start.x, g->start.y, g->goal.x, g->goal.y, g->objective, g->encoding, g->connector,
                              g->waypoints, g->init, g->corner_cutting, json_array(g->weights));
+        if (p.unknown_free) s += " unknown_free";
         if (const auto* g = std::get_if<GridSpec>(&p.spec); g && g->lambda) s += " lambda " + json_number(*g->lambda);
         s += "\n";
     }
@@ -105,6 +107,8 @@ std::string problem_definition(const CampaignProblem& p) {
             g->encoding.empty() ? "(native)" : g->encoding, g->connector, g->waypoints,
             g->init.empty() ? "(default)" : g->init, g->corner_cutting, json_array(g->weights));
         if (g->lambda) s += " lambda " + json_number(*g->lambda);
+        // Only when set, so that the definitions of earlier stores stay as they were written.
+        if (p.unknown_free) s += " unknown_free true";
         return s;
     }
     return "function (a callback: known by its id alone)";
@@ -147,6 +151,7 @@ std::string settings_digest(const CampaignProblem& p) {
                                                         item->entry.number, static_cast<std::size_t>(f->dim))));
     } else if (const auto* g = std::get_if<GridSpec>(&p.spec)) {
         h.field("grid v1").field(std::to_string(p.inflate));
+        if (p.unknown_free) h.field("unknown cells free");  // only when set: earlier digests unchanged
         h.field(fmt::format("{},{} {},{}", g->start.x, g->start.y, g->goal.x, g->goal.y));
         h.field(g->objective).field(g->encoding).field(g->connector).field(std::to_string(g->waypoints));
         h.field(g->init).field(g->corner_cutting ? "corner cutting" : "no corner cutting");
@@ -948,15 +953,17 @@ void prepare(Campaign& c) {
     same_file(c.algorithms, "algorithm");
 
     // Each map is read once, whatever number of problems use it.
-    std::map<std::pair<std::string, std::int64_t>, std::shared_ptr<const grid::GridMap>> maps;
+    std::map<std::tuple<std::string, std::int64_t, bool>, std::shared_ptr<const grid::GridMap>> maps;
     for (auto& p : c.problems) {
         const std::string where = where_of(c, p.line, "problem '" + p.id + "'");
         try {
             if (auto* g = std::get_if<GridSpec>(&p.spec)) {
                 check_grid_names(*g);
                 if (!g->map) {
-                    auto& m = maps[{p.map_file, p.inflate}];
-                    if (!m) m = load_map(p.map_file, p.inflate);
+                    auto& m = maps[{p.map_file, p.inflate, p.unknown_free}];
+                    grid::MapReadOptions read;
+                    read.unknown_free = p.unknown_free;
+                    if (!m) m = load_map(p.map_file, p.inflate, read);
                     g->map = m;
                 }
                 // The exact optimum beside every run whose objective has one, for gaps in reports.

@@ -24,6 +24,7 @@ struct CampaignProblem {
     ProblemSpec spec;      // ContinuousSpec or GridSpec; a grid's map may be left empty...
     std::string map_file;  // ... and named here (read once per (file, inflate) by prepare())
     std::int64_t inflate = 0;
+    bool unknown_free = false;               // a map_server map's unknown cells read as free (grid::MapReadOptions)
     int line = 0;                            // where it stands in the campaign file (0: not from a file)
     std::string suite;                       // "bbob", "classic" when it came from a suite, else empty
     std::shared_ptr<const Problem> problem;  // built by prepare()

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -62,6 +63,7 @@ struct TempDir {
         std::ofstream(path / file, std::ios::binary) << content;
         return (path / file).string();
     }
+    std::string file(const std::string& name) const { return (path / name).string(); }
 };
 
 /// A binary PGM (P5) of 8-bit values, rows top first.
@@ -459,4 +461,37 @@ TEST_CASE("pride path: --start-world and --goal-world on a map_server map, path_
     CHECK(front.status == 0);
     CHECK_THAT(front.out, Contains("exact front  1 of its 1 points found"));
     expect_input_error("front --algo nsga2 --problem zdt1 --unknown-free", {"--unknown-free", "--map"});
+}
+
+TEST_CASE("image maps: a campaign reads a map_server map with unknown_free, and its definition says so",
+          "[maps][ros][bench]") {
+    const TempDir dir("bench");
+    dir.write("u.pgm", pgm(3, 1, {254, 205, 254}));
+    const std::string u = dir.write("u.yaml", yaml("u.pgm"));
+    const auto campaign = [&](const std::string& extra) {
+        return "name = \"u\"\nseeds = 1\n[budget]\nevaluations = 100\n[[problem]]\nid = \"u\"\ntype = \"grid\"\nmap = "
+               "\"" +
+               u + "\"\nstart = [0, 0]\ngoal = [2, 0]\n" + extra + "[[algorithm]]\nid = \"a\"\ntype = \"astar\"\n";
+    };
+    // Unknown cells blocked (the default): the goal cannot be reached, refused before any run.
+    const std::string blocked = dir.write("blocked.toml", campaign(""));
+    pride::test::expect_input_error("bench '" + blocked + "' --out '" + dir.file("b.sqlite") + "'",
+                                    {"cannot be reached"});
+    const std::string through = dir.write("free.toml", campaign("unknown_free = true\n"));
+    const auto run = pride::test::run_pride("bench '" + through + "' --out '" + dir.file("f.sqlite") + "'");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    // The store's problem definition (what resumes and reports read) names the setting.
+    std::string definition;
+    {
+        FILE* pipe = popen(("sqlite3 '" + dir.file("f.sqlite") + "' 'SELECT definition FROM problems'").c_str(), "r");
+        REQUIRE(pipe);
+        char buffer[512];
+        while (fgets(buffer, sizeof buffer, pipe)) definition += buffer;
+        CHECK(pclose(pipe) == 0);
+    }
+    CHECK_THAT(definition, Contains(" unknown_free true"));
+    const std::string wrong = dir.write("wrong.toml", campaign("unknown_free = 1\n"));
+    pride::test::expect_input_error("bench '" + wrong + "' --out '" + dir.file("w.sqlite") + "'",
+                                    {"wrong.toml:11", "'unknown_free' must be true or false"});
 }

@@ -120,7 +120,9 @@ engine::MoProblem stored_problem(const report::CampaignStore& s, const PageStore
     if (grid != extra.grids.end()) {
         require(!grid->map.empty(), "map", "the map was given in code, not as a file");
         engine::MoGridSpec spec;
-        spec.grid.map = engine::load_map(grid->map, grid->inflate);
+        grid::MapReadOptions read;
+        read.unknown_free = grid->unknown_free;
+        spec.grid.map = engine::load_map(grid->map, grid->inflate, read);
         spec.grid.start = grid->start;
         spec.grid.goal = grid->goal;
         spec.grid.corner_cutting = grid->corner_cutting;

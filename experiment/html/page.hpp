@@ -92,7 +92,9 @@ inline std::shared_ptr<const grid::GridMap> picture_map(Page& page, const GridPr
         return nullptr;
     }
     try {
-        return engine::load_map(info->map, info->inflate);
+        grid::MapReadOptions read;
+        read.unknown_free = info->unknown_free;
+        return engine::load_map(info->map, info->inflate, read);
     } catch (const InputError& e) {
         page.notes += "<p class=\"note\">No picture of the paths: " + escape(e.what()) + "</p>\n";
         return nullptr;

@@ -230,6 +230,7 @@ PageStore read_page_store(const std::string& path) {
             std::smatch m;
             if (std::regex_search(definition, m, std::regex(R"( inflate (\d{1,9}) )"))) g.inflate = std::stoll(m[1]);
             g.corner_cutting = definition.find(" corner_cutting true") != std::string::npos;
+            g.unknown_free = definition.find(" unknown_free true") != std::string::npos;
             out.grids.push_back(g);
         }
     }

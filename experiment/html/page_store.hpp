@@ -17,7 +17,9 @@ struct GridProblemInfo {
     std::string id;
     std::string map;  // the map file as pride bench resolved it (absolute); empty for a map given in code
     grid::Cell start, goal;
-    std::int64_t inflate = 0;     // from the problem's definition (0 in stores from before definitions)
+    std::int64_t inflate = 0;
+    bool unknown_free =
+        false;  // from the definition too     // from the problem's definition (0 in stores from before definitions)
     bool corner_cutting = false;  // likewise
 };
 

@@ -27,10 +27,11 @@ struct PyCampaign {
     bool python_functions = false;
 };
 
-const std::set<std::string> problem_keys{
-    "id",        "problem",    "dim",       "instance", "grid",      "map",     "inflate", "start",          "goal",
-    "objective", "encoding",   "connector", "init",     "waypoints", "weights", "lambda",  "corner_cutting", "function",
-    "bounds",    "vectorized", "step_cost", "f_opt",    "objectives"};
+const std::set<std::string> problem_keys{"id",        "problem",        "dim",        "instance",    "grid",
+                                         "map",       "inflate",        "start",      "goal",        "objective",
+                                         "encoding",  "connector",      "init",       "waypoints",   "weights",
+                                         "lambda",    "corner_cutting", "function",   "bounds",      "vectorized",
+                                         "step_cost", "f_opt",          "objectives", "unknown_free"};
 
 /// d[key] checked as a T (None or missing: empty); a wrong type is a TypeError "WHERE: KEY: ...".
 template <class T>
@@ -136,6 +137,7 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
         if (py::isinstance<Grid>(map)) {
             // A pride.Grid (its map is shared as it is; inflate it with Grid.inflated).
             require(!d.contains("inflate"), where, "inflate a Grid with grid.inflated(r)");
+            require(!d.contains("unknown_free"), where, "load the Grid with pride.Grid.load(path, unknown_free=True)");
             g.map = map.cast<const Grid&>().map;
         } else {
             if (!py::isinstance<py::str>(map) && !py::isinstance(map, py::module_::import("os").attr("PathLike")))
@@ -143,6 +145,7 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
                                      type_name(map));
             p.map_file = path_arg(map, where + ": grid");
             p.inflate = get<std::int64_t>(d, "inflate", where).value_or(0);
+            p.unknown_free = get<bool>(d, "unknown_free", where).value_or(false);
         }
         auto cell = [&](const char* key) {
             require(d.contains(key), where, std::string("a grid problem needs ") + key + "=(x, y)");

@@ -47,6 +47,16 @@ def test_unknown_cells_blocked_or_free(tmp_path):
     assert pride.Grid.load(str(tmp_path / "u.yaml"), unknown_free=True).to_array().tolist() == [[0, 0, 0]]
     with pytest.raises(TypeError, match="^unknown_free: "):
         pride.Grid.load(str(tmp_path / "u.yaml"), unknown_free="yes")
+    # A campaign's problem reads its map file the same way.
+    problem = {"id": "u", "grid": str(tmp_path / "u.yaml"), "start": (0, 0), "goal": (2, 0)}
+    with pytest.raises(ValueError, match="cannot be reached"):
+        pride.Campaign("u", seeds=1, iters=1, problems=[problem], algorithms=["astar"]).run(tmp_path / "b.sqlite")
+    pride.Campaign("u", seeds=1, iters=1, problems=[{**problem, "unknown_free": True}],
+                   algorithms=["astar"]).run(tmp_path / "f.sqlite")
+    assert pride.read_store(tmp_path / "f.sqlite", dataframe=False)[0]["best"] == 3.0  # cells, the default objective
+    with pytest.raises(ValueError, match="unknown_free"):
+        pride.Campaign("u", seeds=1, iters=1, problems=[{**problem, "grid": pride.Grid.load(str(tmp_path / "u.yaml")),
+                                                "unknown_free": True}], algorithms=["astar"])
 
 
 def test_errors_name_the_keyword(tmp_path):
