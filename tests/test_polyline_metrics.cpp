@@ -240,6 +240,8 @@ TEST_CASE("polyline clearance beside a wall, and none without obstacles", "[poly
     CHECK(scorer.clearance({2, 0}).value() == 0.0);
     CHECK(scorer.clearance({2, -3}).value() == Approx(2.5));  // above the wall
     CHECK(scorer.clearance({2, 7.5}).value() == Approx(7.0));
+    CHECK(scorer.clearance({-1e6, 2}).value() == Approx(std::hypot(1e6 - 0.5, 1.5)));  // far outside
+    CHECK(std::isnan(scorer.clearance({std::nan(""), 1}).value()));
     const PolylineScorer open(test::map_of({"....", "...."}));
     CHECK(!open.has_obstacles());
     CHECK(!open.clearance({1, 1}));

@@ -164,6 +164,7 @@ double PolylineScorer::clearance_unchecked(PathPoint p) const noexcept {
     // diagonal). So the nearest lies within |c - b| <= min(D + e, best so far) + e + r, and no
     // blocked centre is nearer c than D: only that annulus is scanned, rows nearest c first so that
     // the best so far tightens the rest.
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::quiet_NaN();
     const int cx = static_cast<int>(std::clamp(std::floor(p.x + 0.5), 0.0, width_ - 1.0));
     const int cy = static_cast<int>(std::clamp(std::floor(p.y + 0.5), 0.0, height_ - 1.0));
     const double e = std::hypot(p.x - cx, p.y - cy);
@@ -175,11 +176,13 @@ double PolylineScorer::clearance_unchecked(PathPoint p) const noexcept {
     for (int t = 0;; ++t) {
         const int dy = (t & 1) ? (t + 1) / 2 : -(t / 2);  // 0, 1, -1, 2, -2, ...
         const double reach = std::min(bound, best) + e + kHalfDiagonal + kSlack;
-        if (std::abs(dy) > reach) break;
+        // Done beyond the reach, or once both rows are off the map (p may be far outside it).
+        if (std::abs(dy) > reach || (cy + std::abs(dy) >= height_ && cy - std::abs(dy) < 0)) break;
         const int y = cy + dy;
         if (y < 0 || y >= height_) continue;
         const std::int64_t dy2 = std::int64_t{dy} * dy;
-        const auto outer = static_cast<std::int64_t>(std::floor(std::sqrt(std::max(0.0, reach * reach - dy2))));
+        const auto outer = static_cast<std::int64_t>(
+            std::min(std::floor(std::sqrt(std::max(0.0, reach * reach - dy2))), static_cast<double>(width_)));
         std::int64_t in = 0;  // the least |dx| with dx^2 + dy^2 >= inner2
         if (inner2 > dy2) {
             in = static_cast<std::int64_t>(std::sqrt(static_cast<double>(inner2 - dy2)));

@@ -84,9 +84,9 @@ class PolylineScorer {
     PolylineMetrics score(const Polyline& path) const;
 
     /// The exact Euclidean distance from p to the nearest blocked square (0 inside or on one), or
-    /// nullopt when the map has no blocked cell. p may lie outside the map. Scans only the blocked
-    /// candidates the distance transform allows, an annulus about 2 cells wide at the distance D of
-    /// p's cell: O(D) cells (about 10 us at D = 1000, far less in clutter).
+    /// nullopt when the map has no blocked cell. p may lie outside the map (NaN when not finite).
+    /// Scans only the blocked candidates the distance transform allows, an annulus about 2 cells
+    /// wide at the distance D of p's cell: O(D) cells (about 10 us at D = 1000, far less in clutter).
     std::optional<double> clearance(PathPoint p) const;
 
     bool has_obstacles() const noexcept { return has_obstacles_; }
