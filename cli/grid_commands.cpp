@@ -48,6 +48,7 @@ engine::GridSpec grid_spec(const PathOptions& o) {
     }
     g.corner_cutting = o.corner_cutting;
     g.oracle = o.oracle;
+    g.path_gaps = o.gaps;
     if (o.weights) g.weights = parse_point(*o.weights, "--weights");
     g.lambda = o.lambda;
     return g;
@@ -73,12 +74,12 @@ Cell parse_world_cell(const std::string& text, const GridMap& map, const std::st
     return engine::world_cell(map, x, y, where, "a cell with " + where.substr(0, where.find("-world")));
 }
 
-std::string json_world_path(const GridMap& map, const Path& path) {
+std::string json_world_path(const GridMap& map, const Polyline& path) {
     // Rounded to 1e-9 m: -10 + 0.5 * 0.05 is printed -9.975, not -9.975000000000001.
     const auto round = [](double v) { return std::round(v * 1e9) / 1e9 + 0.0; };
     std::string out = "[";
     for (std::size_t i = 0; i < path.size(); ++i) {
-        const WorldPoint p = map.world(path[i]);
+        const WorldPoint p = map.world(path[i].x, path[i].y);
         out += fmt::format("{}[{}, {}]", i ? ", " : "", json_number(round(p.x)), json_number(round(p.y)));
     }
     return out + "]";
@@ -114,6 +115,8 @@ int path_command(const PathOptions& o, std::ostream& out) {
     const engine::RunResult r = plan_path(o, &spec);
     const engine::GridOutcome& run = *r.grid;
     const PathMetrics m = metrics(run.path);
+    // A polyline planner's path (Theta*, the any-angle path) is no chain of cells.
+    const bool polyline_only = run.path.empty() && !run.polyline.empty();
 
     std::optional<double> gap;
     if (run.optimum && run.feasible) {
@@ -135,21 +138,29 @@ int path_command(const PathOptions& o, std::ostream& out) {
         html::PathLabels labels;
         labels.path = fmt::format("{} ({}): {} {:.6g}", o.algo, run.encoding, spec.objective, run.value);
         if (run.optimum) labels.optimal = fmt::format("exact optimum: {} {:.6g}", spec.objective, *run.optimum);
-        html::draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.path : nullptr,
+        html::draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.polyline : nullptr,
                         o.oracle ? &run.optimal_path : nullptr, labels, file, format);
     });
 
     if (o.json) {
+        // A chain's metrics (path.hpp); a polyline planner's path has no cells: null.
+        const std::string chain_metrics =
+            polyline_only ? "null"
+                          : fmt::format(
+                                "{{\"cells\": {}, \"length\": {}, \"turns\": {}, \"turn_angle_deg\": {}, "
+                                "\"angle_penalty\": {}}}",
+                                m.cells, json_number(m.length), m.turns, m.turn_angle_deg, m.angle_penalty);
         std::string text = fmt::format(
             "{{\"algo\": {}, \"objective\": {}, \"encoding\": {}, \"seed\": {}, \"feasible\": {}, \"path\": {}, "
-            "\"metrics\": {{\"cells\": {}, \"length\": {}, \"turns\": {}, \"turn_angle_deg\": {}, \"angle_penalty\": "
-            "{}}}, "
-            "\"objective_value\": {}, \"evaluations\": {}, \"iterations\": {}, \"wall_ms\": {}, \"history\": {}",
+            "\"metrics\": {}, \"objective_value\": {}, \"evaluations\": {}, \"iterations\": {}, \"wall_ms\": {}, "
+            "\"history\": {}",
             json_string(o.algo), json_string(o.objective), json_string(run.encoding), o.seed,
-            run.feasible ? "true" : "false", json_cells(run.path), m.cells, json_number(m.length), m.turns,
-            m.turn_angle_deg, m.angle_penalty, run.feasible ? json_number(run.value) : "null", r.evaluations,
-            r.iterations, json_number(r.wall_ms), json_array(r.history));
-        if (spec.map->frame()) text += ", \"path_world\": " + json_world_path(*spec.map, run.path);
+            run.feasible ? "true" : "false", json_cells(run.path), chain_metrics,
+            run.feasible ? json_number(run.value) : "null", r.evaluations, r.iterations, json_number(r.wall_ms),
+            json_array(r.history));
+        text += ", \"polyline\": " + engine::json_polyline(run.polyline);
+        if (run.feasible) text += ", \"path_metrics\": " + engine::json_path_metrics(run, o.gaps);
+        if (spec.map->frame()) text += ", \"path_world\": " + json_world_path(*spec.map, run.polyline);
         if (o.oracle)
             text += fmt::format(", \"optimum\": {{\"objective_value\": {}, \"gap\": {}}}",
                                 run.optimum ? json_number(*run.optimum) : "null", gap ? json_number(*gap) : "null");
@@ -160,17 +171,40 @@ int path_command(const PathOptions& o, std::ostream& out) {
         "algo            {}\nobjective       {}\nencoding        {}\nseed            {}\n"
         "feasible        {}\n",
         o.algo, o.objective, run.encoding, o.seed, run.feasible ? "yes" : "no");
-    if (run.feasible)
+    if (run.feasible && polyline_only)
+        text +=
+            fmt::format("objective_value {:.10g}\nvertices        {}\nlength          {:.10g}\nturns           {}\n",
+                        run.value, run.polyline.size(), run.metrics.length, run.metrics.turns);
+    else if (run.feasible)
         text += fmt::format(
             "objective_value {:.10g}\ncells           {}\nlength          {:.10g}\nturns           {}\n"
             "turn_angle_deg  {}\nangle_penalty   {}\n",
             run.value, m.cells, m.length, m.turns, m.turn_angle_deg, m.angle_penalty);
+    if (run.feasible) {
+        const PolylineMetrics& pm = run.metrics;
+        const auto clearance = [](const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : "-"; };
+        text += fmt::format(
+            "total_turn_deg  {:.6g}\nmax_turn_deg    {:.6g}\nangle_over_len  {:.6g}\nmax_curvature   {:.6g}\n"
+            "min_clearance   {}\nmean_clearance  {}\n",
+            pm.total_turn_deg, pm.max_turn_deg, pm.angle_over_length, pm.max_curvature, clearance(pm.min_clearance),
+            clearance(pm.mean_clearance));
+    }
     if (o.oracle)
         text += fmt::format("optimum         {:.10g}\ngap             {}\n", *run.optimum,
                             gap ? fmt::format("{:.6g}", *gap) : "-");
-    text += fmt::format("evaluations     {}\niterations      {}\nwall_ms         {:.3f}\npath            {}\n",
-                        r.evaluations, r.iterations, r.wall_ms, json_cells(run.path));
-    if (spec.map->frame()) text += "path_world      " + json_world_path(*spec.map, run.path) + "\n";
+    if (o.gaps) {
+        const auto number = [](const std::optional<double>& v) { return v ? fmt::format("{:.10g}", *v) : "-"; };
+        text += fmt::format("grid_shortest   {}\ngrid_gap        {}\nany_angle_short {}\nany_angle_gap   {}\n",
+                            number(run.shortest_grid_length), number(run.grid_gap),
+                            number(run.shortest_any_angle_length), number(run.any_angle_gap));
+    }
+    text += fmt::format("evaluations     {}\niterations      {}\nwall_ms         {:.3f}\n", r.evaluations, r.iterations,
+                        r.wall_ms);
+    if (!run.path.empty() || run.polyline.empty())
+        text += fmt::format("path            {}\n", json_cells(run.path));
+    else
+        text += fmt::format("polyline        {}\n", engine::json_polyline(run.polyline));
+    if (spec.map->frame()) text += "path_world      " + json_world_path(*spec.map, run.polyline) + "\n";
     print_then_commit(out, text, files);
     return 0;
 }

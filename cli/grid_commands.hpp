@@ -36,6 +36,7 @@ struct PathOptions {
     std::optional<double> lambda;           // for the hswoa objective
     bool corner_cutting = false;
     bool oracle = false;
+    bool gaps = false;  // the shortest grid and any-angle lengths and the path's gaps to them
     bool json = false;
     std::string svg;
     std::string png;

@@ -176,6 +176,8 @@ int run_main(int argc, char** argv) {
         ->check(finite_in(0, pride::engine::max_weight));
     path_cmd->add_flag("--corner-cutting", path.corner_cutting, "allow diagonal steps past a blocked corner");
     path_cmd->add_flag("--oracle", path.oracle, "add the exact optimum and the gap to it");
+    path_cmd->add_flag("--gaps", path.gaps,
+                       "add the shortest grid and any-angle lengths and the path's length gaps to them");
     path_cmd->add_flag("--json", path.json, "print one JSON object");
     path_cmd->add_option("--svg", path.svg, "draw the map and the path(s) to this SVG file")->check(a_path());
     path_cmd->add_option("--png", path.png, "draw the map and the path(s) to this PNG file")->check(a_path());

@@ -57,4 +57,28 @@ std::string json_cells(const grid::Path& path) {
     return s + "]";
 }
 
+std::string json_polyline(const grid::Polyline& line) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < line.size(); ++i)
+        out += (i ? ", [" : "[") + json_number(line[i].x) + ", " + json_number(line[i].y) + "]";
+    return out + "]";
+}
+
+std::string json_path_metrics(const GridOutcome& run, bool gaps) {
+    const auto optional = [](const std::optional<double>& v) { return v ? json_number(*v) : std::string("null"); };
+    const grid::PolylineMetrics& m = run.metrics;
+    std::string out = "{\"length\": " + json_number(m.length) + ", \"turns\": " + std::to_string(m.turns) +
+                      ", \"total_turn_deg\": " + json_number(m.total_turn_deg) +
+                      ", \"max_turn_deg\": " + json_number(m.max_turn_deg) +
+                      ", \"angle_over_length\": " + json_number(m.angle_over_length) +
+                      ", \"max_curvature\": " + json_number(m.max_curvature) +
+                      ", \"min_clearance\": " + optional(m.min_clearance) +
+                      ", \"mean_clearance\": " + optional(m.mean_clearance);
+    if (gaps)
+        out += ", \"shortest_grid_length\": " + optional(run.shortest_grid_length) +
+               ", \"shortest_any_angle_length\": " + optional(run.shortest_any_angle_length) +
+               ", \"grid_gap\": " + optional(run.grid_gap) + ", \"any_angle_gap\": " + optional(run.any_angle_gap);
+    return out + "}";
+}
+
 }  // namespace pride::engine

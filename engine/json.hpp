@@ -6,7 +6,9 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/run.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/polyline.hpp"
 
 namespace pride::engine {
 
@@ -20,5 +22,11 @@ std::string json_integers(const std::vector<std::int64_t>& values);
 std::string json_cells(const grid::Path& path);
 /// A JSON string literal with the necessary escapes.
 std::string json_string(std::string_view s);
+/// A polyline as [[x, y], ...] (cell units, cell (i, j)'s centre at (i, j)).
+std::string json_polyline(const grid::Polyline& line);
+/// A grid run's path metrics (problems/grid/polyline.hpp) as one object, keys in the order of
+/// PolylineMetrics, clearances null on a map without obstacles; with `gaps`, the problem's
+/// shortest lengths and the path's gaps to them (GridSpec::path_gaps) after them.
+std::string json_path_metrics(const GridOutcome& run, bool gaps);
 
 }  // namespace pride::engine

@@ -21,6 +21,7 @@
 #include "framework/result.hpp"
 #include "framework/termination.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/polyline.hpp"
 
 namespace pride::engine {
 
@@ -37,10 +38,12 @@ using MoChainResult = BasicMultiObjectiveResult<std::vector<grid::Path>>;
 /// population); once per iteration, never per evaluation.
 using BoxObserver = std::function<void(const IterationView&)>;
 
-/// What a whole-map algorithm (A*, the exact optimum) returns: a legal path, its value under the
-/// problem's objective, and the work it took (A*: node expansions).
+/// What a whole-map algorithm (A*, the exact optimum) returns: a legal path and the work it took
+/// (A*: node expansions). A polyline planner (AlgorithmEntry::plans_polylines) returns its
+/// polyline instead, empty when it found none.
 struct GridSolution {
     grid::Path path;
+    grid::Polyline polyline;
     std::int64_t work = 0;
 };
 
@@ -71,6 +74,9 @@ struct AlgorithmEntry {
     /// Whole-map algorithms that return the exact optimum say so: the objective must have one
     /// (GridTarget::has_optimum), and the run records it beside the result.
     bool needs_optimum = false;
+    /// Plans polylines in the map's plane (Theta*, the exact any-angle path), not cell chains: it
+    /// runs on the length objective only, where a polyline's value is its Euclidean length.
+    bool plans_polylines = false;
     /// The population on grids when none is given (for entries with a `pop` parameter): the papers'
     /// N = 20, IQGA's N = 40 (file 002, table 1; shared/spec/algorithms.md).
     std::int64_t grid_population = 20;

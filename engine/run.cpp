@@ -17,6 +17,8 @@
 #include "engine/targets.hpp"
 #include "framework/error.hpp"
 #include "framework/parallel.hpp"
+#include "problems/grid/any_angle.hpp"
+#include "problems/grid/astar.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/oracle.hpp"
 #include "problems/grid/pareto.hpp"
@@ -298,6 +300,9 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
     if (entry.solve_grid) {
         require(!entry.needs_optimum || p.grid->has_optimum(), "objective",
                 no_optimum(*g) + ", so " + entry.name + " has no optimum to find");
+        require(!entry.plans_polylines || g->objective == "length", "objective",
+                entry.name + " plans polylines, whose value is their length: it runs on the length objective, not " +
+                    g->objective);
         return params;
     }
     if (p.encoding_error) throw *p.encoding_error;
@@ -448,6 +453,57 @@ void record_path(GridOutcome& o, const GridTarget& target, const grid::Path& can
         o.path = candidate;
         o.value = value;
     }
+}
+
+/// Why a polyline (centre convention) is not a free path from the start's centre to the goal's,
+/// or "" when it is: every segment passes any_angle.hpp's test.
+std::string polyline_violation(const GridTarget& target, const grid::Polyline& line) {
+    return std::visit(
+        [&](const auto& g) -> std::string {
+            const auto at = [](const grid::PathPoint& p) { return grid::Point{p.x + 0.5, p.y + 0.5}; };
+            if (!(line.front() == grid::PathPoint{double(g.start().x), double(g.start().y)}))
+                return "the polyline does not begin at the start";
+            if (!(line.back() == grid::PathPoint{double(g.goal().x), double(g.goal().y)}))
+                return "the polyline does not end at the goal";
+            for (std::size_t i = 1; i < line.size(); ++i)
+                if (!grid::segment_is_free(g.map(), at(line[i - 1]), at(line[i])))
+                    return "segment " + std::to_string(i) + " is not free";
+            return {};
+        },
+        target.problem);
+}
+
+/// The metrics every path gets, whoever planned it (problems/grid/polyline.hpp), and with `gaps`
+/// its gaps to the problem's shortest grid and any-angle lengths (each computed once per problem).
+void score_path(GridOutcome& o, const GridTarget& target, bool gaps) {
+    if (!o.feasible) return;
+    if (o.polyline.empty()) o.polyline = grid::polyline_of(o.path);
+    PathScoring& s = *target.scoring;
+    std::visit(
+        [&](const auto& g) {
+            std::call_once(s.scorer_once, [&] { s.scorer.emplace(g.map()); });
+            o.metrics = s.scorer->score(o.polyline);
+            if (!gaps) return;
+            std::call_once(s.lengths_once, [&] {
+                grid::AStar astar;
+                s.grid_length = astar.search(g.map(), g.start(), g.goal(), nullptr, nullptr, g.corner_cutting());
+                grid::AnyAngleOracle oracle(g.map());
+                s.any_angle_length = oracle.solve(g.start(), g.goal());
+            });
+        },
+        target.problem);
+    if (!gaps) return;
+    const double length = o.metrics.length;
+    // A length equal to the shortest to 1e-9 (relative) is the optimum: its gap is exactly 0.
+    const auto gap = [&](double shortest) -> std::optional<double> {
+        if (shortest < 0.0) return std::nullopt;
+        if (std::abs(length - shortest) <= 1e-9 * std::max(1.0, shortest)) return 0.0;
+        return shortest > 0.0 ? std::optional<double>(length / shortest - 1.0) : std::nullopt;
+    };
+    if (s.grid_length >= 0.0) o.shortest_grid_length = s.grid_length;
+    if (s.any_angle_length >= 0.0) o.shortest_any_angle_length = s.any_angle_length;
+    o.grid_gap = gap(s.grid_length);
+    o.any_angle_gap = gap(s.any_angle_length);
 }
 
 }  // namespace
@@ -785,10 +841,21 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
             s.path = o.optimal_path;
         else
             s = entry.solve_grid(*p.grid);
-        o.feasible = true;
-        o.path = std::move(s.path);
-        o.value = grid_value(*p.grid, o.path);
-        out.best_f = o.value;
+        if (entry.plans_polylines) {
+            // Checked as a chain is: a polyline that leaves the free plane is never a result.
+            o.feasible = !s.polyline.empty() && polyline_violation(*p.grid, s.polyline).empty();
+            if (o.feasible) {
+                o.polyline = std::move(s.polyline);
+                for (std::size_t i = 1; i < o.polyline.size(); ++i)
+                    o.value += std::hypot(o.polyline[i].x - o.polyline[i - 1].x, o.polyline[i].y - o.polyline[i - 1].y);
+            }
+            out.best_f = o.feasible ? o.value : std::numeric_limits<double>::infinity();
+        } else {
+            o.feasible = true;
+            o.path = std::move(s.path);
+            o.value = grid_value(*p.grid, o.path);
+            out.best_f = o.value;
+        }
         out.evaluations = s.work;
         out.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     } else if (p.chain) {
@@ -813,6 +880,7 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
         out.best_x = std::move(r.best_x);
     }
     check_user_optimum(*p.grid, o);
+    score_path(o, *p.grid, g.path_gaps);
     out.grid = std::move(o);
     return out;
 }

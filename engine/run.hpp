@@ -14,6 +14,7 @@
 #include "framework/memory.hpp"
 #include "framework/observer.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/polyline.hpp"
 
 namespace pride::engine {
 
@@ -69,10 +70,19 @@ class Problem {
 struct GridOutcome {
     std::string encoding = "none";  // line, free, chain; none for whole-map algorithms
     bool feasible = false;          // an infeasible candidate is never returned as a path
-    grid::Path path;                // start first; empty when infeasible
+    grid::Path path;                // start first; empty when infeasible or when the planner plans polylines
     double value = 0.0;             // the objective of the path (when feasible)
     std::optional<double> optimum;  // with GridSpec::oracle, or for the exact algorithm
     grid::Path optimal_path;
+    // The path as every planner's is scored (problems/grid/polyline.hpp): a chain's cells, or a
+    // polyline planner's vertices; empty when infeasible. Its metrics when feasible.
+    grid::Polyline polyline;
+    grid::PolylineMetrics metrics;
+    // With GridSpec::path_gaps: the shortest lengths of the problem (the 8-connected grid's, by
+    // A*, and the exact any-angle one) and the path's length over each, minus 1. Empty when the
+    // run found no path or the goal cannot be reached.
+    std::optional<double> shortest_grid_length, shortest_any_angle_length;
+    std::optional<double> grid_gap, any_angle_gap;
 };
 
 struct RunResult {

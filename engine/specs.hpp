@@ -49,6 +49,10 @@ struct GridSpec {
     std::string init;
     bool corner_cutting = false;
     bool oracle = false;  // also compute the exact optimum (additive objectives)
+    // Also compute the problem's shortest lengths (grid and any-angle, once per problem) and each
+    // run's gaps to them (GridOutcome::grid_gap, any_angle_gap): the any-angle oracle is slow on
+    // large open maps, so it is asked for.
+    bool path_gaps = false;
     // When set, counts every evaluation of the objective by every run of the problem (a check of
     // the runs' `evaluations` from outside: tests, pride path --count-calls).
     std::shared_ptr<std::atomic<std::int64_t>> objective_calls;

@@ -50,10 +50,19 @@ struct FrontOptimum {
     grid::Path path;
 };
 
+/// What scores the paths of one prepared problem (its clearance field), and its shortest lengths
+/// (GridSpec::path_gaps), each made once and shared by the problem's copies and runs.
+struct PathScoring {
+    std::once_flag scorer_once, lengths_once;
+    std::optional<grid::PolylineScorer> scorer;
+    double grid_length = -1.0, any_angle_length = -1.0;  // -1: unreachable
+};
+
 /// A grid problem as whole-map algorithms (A*, the exact optimum) see it.
 struct GridTarget {
     GridVariant problem;
     std::shared_ptr<FrontOptimum> front_optimum = std::make_shared<FrontOptimum>();
+    std::shared_ptr<PathScoring> scoring = std::make_shared<PathScoring>();
     bool additive() const {
         return std::visit([](const auto& p) { return std::decay_t<decltype(p.objective())>::additive; }, problem);
     }

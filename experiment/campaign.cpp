@@ -58,6 +58,7 @@ std::string describe(const Campaign& c) {
                              g->start.x, g->start.y, g->goal.x, g->goal.y, g->objective, g->encoding, g->connector,
                              g->waypoints, g->init, g->corner_cutting, json_array(g->weights));
         if (p.unknown_free) s += " unknown_free";
+        if (p.path_gaps) s += " path_gaps";
         if (const auto* g = std::get_if<GridSpec>(&p.spec); g && g->lambda) s += " lambda " + json_number(*g->lambda);
         s += "\n";
     }
@@ -109,6 +110,7 @@ std::string problem_definition(const CampaignProblem& p) {
         if (g->lambda) s += " lambda " + json_number(*g->lambda);
         // Only when set, so that the definitions of earlier stores stay as they were written.
         if (p.unknown_free) s += " unknown_free true";
+        if (p.path_gaps) s += " path_gaps true";  // what its runs record (only when set, as above)
         return s;
     }
     return "function (a callback: known by its id alone)";
@@ -300,11 +302,11 @@ constexpr char kSep = '\x1f';
 std::string serialise(const RunRecord& r) {
     return fmt::format(
         "{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}{0}{13}{0}{14}{0}{15}{0}{"
-        "16}{0}{17}{0}{18}",
+        "16}{0}{17}{0}{18}{0}{19}{0}{20}",
         kSep, r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations, r.wall_ms,
         r.optimum ? fmt::format("{:.17g}", *r.optimum) : "", r.solution, r.history, r.history_evaluations,
         r.target_hits, r.encoding, r.trace_targets, r.trace_evaluations,
-        r.max_evaluations ? std::to_string(*r.max_evaluations) : "", r.checkpoints);
+        r.max_evaluations ? std::to_string(*r.max_evaluations) : "", r.checkpoints, r.path_metrics, r.polyline);
 }
 
 RunRecord deserialise(const std::string& text) {
@@ -315,7 +317,7 @@ RunRecord deserialise(const std::string& text) {
         if (end == std::string::npos) break;
         start = end + 1;
     }
-    if (f.size() != 18) throw std::runtime_error("MPI: a malformed run record");
+    if (f.size() != 20) throw std::runtime_error("MPI: a malformed run record");
     RunRecord r;
     r.problem = f[0];
     r.algorithm = f[1];
@@ -335,6 +337,8 @@ RunRecord deserialise(const std::string& text) {
     r.trace_evaluations = f[15];
     if (!f[16].empty()) r.max_evaluations = std::stoll(f[16]);
     r.checkpoints = f[17];
+    r.path_metrics = f[18];
+    r.polyline = f[19];
     return r;
 }
 
@@ -968,6 +972,7 @@ void prepare(Campaign& c) {
                 }
                 // The exact optimum beside every run whose objective has one, for gaps in reports.
                 g->oracle = false;
+                g->path_gaps = p.path_gaps;
                 if (p.is_multiobjective()) {
                     p.multiobjective = std::make_shared<const MoProblem>(multiobjective_spec(p));
                 } else {
@@ -1089,6 +1094,11 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
         r.optimum = result.grid->optimum;
         r.solution = json_cells(result.grid->path);
         r.encoding = result.grid->encoding;
+        if (r.feasible) {
+            const auto* g = std::get_if<GridSpec>(&p.spec);
+            r.path_metrics = json_path_metrics(*result.grid, g && g->path_gaps);
+            if (result.grid->path.empty()) r.polyline = json_polyline(result.grid->polyline);
+        }
     } else {
         r.best = result.best_f;
         r.feasible = std::isfinite(result.best_f);

@@ -25,6 +25,7 @@ struct CampaignProblem {
     std::string map_file;  // ... and named here (read once per (file, inflate) by prepare())
     std::int64_t inflate = 0;
     bool unknown_free = false;               // a map_server map's unknown cells read as free (grid::MapReadOptions)
+    bool path_gaps = false;                  // each run records its gaps to the shortest grid and any-angle lengths
     int line = 0;                            // where it stands in the campaign file (0: not from a file)
     std::string suite;                       // "bbob", "classic" when it came from a suite, else empty
     std::shared_ptr<const Problem> problem;  // built by prepare()
@@ -164,6 +165,10 @@ struct RunRecord {
     // CEC reports' checkpoints of that budget (experiment/report/cec.hpp: recorded_evaluations).
     std::optional<std::int64_t> max_evaluations;
     std::string checkpoints = "[]";
+    // Grid runs that found a path: its metrics (engine::json_path_metrics; with the problem's
+    // path_gaps, its gaps too), and, for a polyline planner (Theta*, the any-angle path), whose
+    // `solution` holds no cells, its polyline as [[x, y], ...]. Empty: NULL in the store.
+    std::string path_metrics, polyline;
 };
 
 /// Runs one (problem, algorithm, seed) of a prepared campaign; the same inputs give the same

@@ -96,9 +96,9 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
     ContinuousSpec f{type, 0};
     static const std::set<std::string> continuous_keys{"id", "type", "dim", "instance"};
     static const std::set<std::string> multiobjective_keys{"id", "type", "dim", "objectives"};
-    static const std::set<std::string> grid_keys{"id",        "type",     "map",       "start",      "goal",
-                                                 "objective", "encoding", "connector", "init",       "waypoints",
-                                                 "inflate",   "weights",  "lambda",    "objectives", "unknown_free"};
+    static const std::set<std::string> grid_keys{
+        "id",   "type",      "map",     "start",   "goal",   "objective",  "encoding",     "connector",
+        "init", "waypoints", "inflate", "weights", "lambda", "objectives", "unknown_free", "path_gaps"};
     for (auto&& [key, value] : t) {
         const std::string k(key.str());
         if (!(grid ? grid_keys : several ? multiobjective_keys : continuous_keys).count(k))
@@ -141,9 +141,9 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
         if (k == "init") g.init = need_string(file, t, k, where);
         if (k == "waypoints") g.waypoints = need_integer(file, value, k);
         if (k == "inflate") p.inflate = need_integer(file, value, k);
-        if (k == "unknown_free") {
-            if (!value.is_boolean()) fail(at(file, value), "'unknown_free' must be true or false");
-            p.unknown_free = **value.as_boolean();
+        if (k == "unknown_free" || k == "path_gaps") {
+            if (!value.is_boolean()) fail(at(file, value), "'" + k + "' must be true or false");
+            (k == "unknown_free" ? p.unknown_free : p.path_gaps) = **value.as_boolean();
         }
         if (k == "lambda") g.lambda = need_number(file, value, k);
         if (k == "weights") {

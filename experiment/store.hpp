@@ -204,6 +204,10 @@ class Store {
             // 26); NULL and '[]' for runs stored before them.
             add_column("runs", "max_evaluations", "INTEGER");
             add_column("runs", "checkpoints", "TEXT NOT NULL DEFAULT '[]'");
+            // Every grid path's metrics, whoever planned it, and a polyline planner's polyline
+            // (issue 29); NULL for other runs and for runs stored before them.
+            add_column("runs", "path_metrics", "TEXT");
+            add_column("runs", "polyline", "TEXT");
             exec("COMMIT");
             exec("PRAGMA synchronous=NORMAL");
         } catch (...) {
@@ -643,7 +647,9 @@ class Store {
             insert_,
             "INSERT OR IGNORE INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, "
             "optimum, solution, history, history_evaluations, target_hits, encoding, trace_targets, trace_evaluations, "
-            "max_evaluations, checkpoints) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+            "max_evaluations, checkpoints, path_metrics, polyline) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+            "?, "
+            "?, ?, ?, ?, ?)");
         sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_int64(s, 3, r.seed);
@@ -669,6 +675,11 @@ class Store {
         else
             sqlite3_bind_null(s, 17);
         sqlite3_bind_text(s, 18, r.checkpoints.c_str(), -1, SQLITE_STATIC);
+        for (const auto& [column, text] : {std::pair{19, &r.path_metrics}, std::pair{20, &r.polyline}})
+            if (text->empty())
+                sqlite3_bind_null(s, column);
+            else
+                sqlite3_bind_text(s, column, text->c_str(), -1, SQLITE_STATIC);
         step_cached(s, "cannot write the store");
         const std::size_t added = static_cast<std::size_t>(sqlite3_changes(db_));
         s = cached(unclaim_, "DELETE FROM claims WHERE problem = ? AND algorithm = ? AND seed = ?");

@@ -10,8 +10,10 @@
 //      store migrated from before, filled from the campaign of its first resume
 //   4: runs.max_evaluations and runs.checkpoints, each run's evaluation budget and its best values
 //      at the CEC reports' checkpoints (issue 26); NULL and '[]' for runs stored before
+//   5: runs.path_metrics and runs.polyline, every grid path's metrics and a polyline planner's
+//      polyline (issue 29); NULL for other runs and runs stored before
 namespace pride::engine {
 
-inline constexpr int store_schema = 4;
+inline constexpr int store_schema = 5;
 
 }  // namespace pride::engine

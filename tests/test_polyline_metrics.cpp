@@ -261,7 +261,8 @@ TEST_CASE("polyline turns and length equal metrics() on random legal chains", "[
         const grid::PathMetrics ref = grid::metrics(chain);
         const PolylineMetrics got = grid::polyline_metrics(grid::polyline_of(chain));
         CHECK(got.turns == ref.turns);
-        CHECK(got.total_turn_deg == Approx(ref.turn_angle_deg).margin(1e-9));
+        CHECK(got.total_turn_deg ==
+              static_cast<double>(ref.turn_angle_deg));  // exactly: each turn rounded to 1e-9 degree
         CHECK(got.length == Approx(ref.length).epsilon(1e-12).margin(0));
     }
     // Optimal chains from A*.
@@ -273,7 +274,7 @@ TEST_CASE("polyline turns and length equal metrics() on random legal chains", "[
         const grid::PathMetrics ref = grid::metrics(chain);
         const PolylineMetrics got = PolylineScorer(*in.map).score(grid::polyline_of(chain));
         CHECK(got.turns == ref.turns);
-        CHECK(got.total_turn_deg == Approx(ref.turn_angle_deg).margin(1e-9));
+        CHECK(got.total_turn_deg == static_cast<double>(ref.turn_angle_deg));
         CHECK(got.length == Approx(ref.length).epsilon(1e-12).margin(0));
         if (got.min_clearance) CHECK(*got.min_clearance >= 0.5 - 1e-12);  // a chain's cells are free
     }

@@ -18,7 +18,9 @@
 namespace pride::html {
 namespace {
 
-void trace_path(cairo_t* cr, const grid::Path& path, double cell) {
+/// A chain of cells or a polyline (cell (i, j)'s centre at (i, j) in both).
+template <class Points>
+void trace_path(cairo_t* cr, const Points& path, double cell) {
     for (std::size_t i = 0; i < path.size(); ++i) {
         const double x = (path[i].x + 0.5) * cell, y = (path[i].y + 0.5) * cell;
         if (i == 0)
@@ -105,7 +107,7 @@ void paint_legend(cairo_t* cr, const std::vector<Entry>& entries, double top, do
     }
 }
 
-void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
+void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Polyline* path,
            const grid::Path* optimal, double cell) {
     paint_map(cr, map, cell);
     if (optimal && !optimal->empty()) {  // underneath, wide and pale, so the found path stays visible
@@ -182,7 +184,7 @@ double legend_height(std::size_t entries) {
     return entries == 0 ? 0.0 : 2 * kLegendPad + kLegendLine * static_cast<double>(entries);
 }
 
-void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
+void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Polyline* path,
                const grid::Path* optimal, const PathLabels& labels, OutputFiles::File& file, PictureFormat format) {
     std::vector<Entry> legend{{kStart, true, "start"}, {kGoal, true, "goal"}};
     if (path && !path->empty()) legend.push_back({kFound, false, labels.path});

@@ -12,6 +12,7 @@
 #include "framework/output_files.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/polyline.hpp"
 
 namespace pride::html {
 
@@ -24,9 +25,10 @@ struct PathLabels {
 };
 
 /// Writes the picture into `file` and closes it (it is in place once its OutputFiles commits).
-/// `path` and `optimal` may be null. A legend under the map names start, goal and each path
-/// drawn. InputError naming the file when it cannot be written.
-void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Path* path,
+/// `path` (a chain's cells or a polyline planner's vertices) and `optimal` may be null. A legend
+/// under the map names start, goal and each path drawn. InputError naming the file when it cannot
+/// be written.
+void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Polyline* path,
                const grid::Path* optimal, const PathLabels& labels, OutputFiles::File& file, PictureFormat format);
 
 /// The map with several paths (a Pareto front), each in its own colour, from blue (the first) to

@@ -142,6 +142,22 @@ std::string render_table(const ReportData& report, bool md) {
                                 : r.p_holm ? fmt::format("{:.3g}{}", *r.p_holm, *r.p_holm < 0.05 ? "*" : "")
                                            : "");
     }
+    if (md && !report.paths.empty()) {
+        text +=
+            "\nPaths on grids, per algorithm, scored alike whoever planned them (docs/grid.md, \"Polylines and their "
+            "metrics\"): the runs that found a path, then medians over them of the length, turns, total turn "
+            "(degrees), angle over length (rad per cell), maximum curvature (1/cell), minimum and mean clearance "
+            "(cells) and, with the problem's `path_gaps`, the gaps to the shortest grid and any-angle lengths; the "
+            "median planning time over all runs.\n\n"
+            "| problem | algorithm | found | length | turns | turn deg | AOL | max curv. | min clear. | mean clear. | "
+            "grid gap | any-angle gap | median ms |\n"
+            "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        for (const auto& r : report.paths) {
+            text += fmt::format("| {} | {} | {}/{} |", markdown(r.problem), markdown(r.algorithm), r.found, r.runs);
+            for (const auto& m : r.medians) text += m ? fmt::format(" {:.4g} |", *m) : std::string(" - |");
+            text += fmt::format(" {:.3f} |\n", r.median_wall_ms);
+        }
+    }
     if (const auto& f = report.friedman) {
         text += md ? "\nFriedman average ranks over " : "\n% Friedman average ranks over ";
         text += fmt::format("{} problems (1 = best; median values):", f->problems);
@@ -452,6 +468,35 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
         for (std::size_t i = 0, k = 0; i < rows.size(); ++i)
             if (!rows[i].best) rows[i].p_holm = adjusted[k++];
         report.fronts.insert(report.fronts.end(), rows.begin(), rows.end());
+    }
+    // Every grid path scored alike (runs.path_metrics): the planners compared on what they found.
+    std::map<std::string, std::map<std::string, std::vector<const StoredRun*>>> by_path;
+    for (const StoredRun& run : store.runs)
+        if (!run.front) by_path[run.problem][run.algorithm].push_back(&run);
+    for (const auto& [problem, by_algorithm] : by_path) {
+        const bool recorded = std::any_of(by_algorithm.begin(), by_algorithm.end(), [](const auto& a) {
+            return std::any_of(a.second.begin(), a.second.end(),
+                               [](const StoredRun* r) { return !r->path_metrics.empty(); });
+        });
+        if (!recorded) continue;
+        for (const auto& [algorithm, runs] : by_algorithm) {
+            PathRow r;
+            r.problem = problem;
+            r.algorithm = algorithm;
+            r.runs = runs.size();
+            std::vector<std::vector<double>> values(std::size(kPathMetricNames));
+            std::vector<double> wall;
+            for (const StoredRun* run : runs) {
+                wall.push_back(run->wall_ms);
+                if (run->path_metrics.empty()) continue;
+                ++r.found;
+                for (std::size_t k = 0; k < values.size(); ++k)
+                    if (run->path_metrics[k]) values[k].push_back(*run->path_metrics[k]);
+            }
+            for (const auto& v : values) r.medians.push_back(v.empty() ? std::nullopt : std::optional(median_of(v)));
+            r.median_wall_ms = median_of(wall);
+            report.paths.push_back(std::move(r));
+        }
     }
     if (!fronts.empty()) {
         std::string list;

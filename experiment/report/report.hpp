@@ -67,6 +67,16 @@ struct FrontRow {
     std::optional<double> p_holm;       // IGD+ against the best's, rank-sum, Holm over the problem
 };
 
+/// Grid problems, per algorithm: the paths its runs found, scored alike whoever planned them
+/// (problems/grid/polyline.hpp): medians over the runs that found one.
+struct PathRow {
+    std::string problem, algorithm;
+    std::size_t runs = 0, found = 0;
+    // Medians in kPathMetricNames' order (empty where no run recorded the metric), and of wall_ms.
+    std::vector<std::optional<double>> medians;
+    double median_wall_ms = 0;
+};
+
 struct ReportData {
     std::string campaign;
     std::optional<double> target;
@@ -83,6 +93,8 @@ struct ReportData {
     std::vector<std::string> notes;
     // Problems of several objectives (their runs store fronts): rendered after the notes.
     std::vector<FrontRow> fronts;
+    // Grid problems whose runs recorded path metrics (store schema 5): rendered after the fronts.
+    std::vector<PathRow> paths;
 };
 
 /// The report of the runs of `store` (no rows when it holds none).

@@ -464,6 +464,13 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
             store.problems->push_back(std::move(p));
         }
     }
+    // The path metrics by SQLite's JSON functions, NULL where absent (a store from before them, a
+    // run without a path) or not valid JSON.
+    std::string path_metrics;
+    const std::string metrics_column = optional_column(run_columns, "path_metrics");
+    for (const char* key : kPathMetricNames)
+        path_metrics += fmt::format(", CASE WHEN json_valid({0}) THEN json_extract({0}, '$.{1}') END", metrics_column,
+                                    key);
     Query q(db, fmt::format(
                     "SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, "
                     "history_evaluations, {}, {}, {}, {}, {}, {}, substr(solution, 1, 1) = '{{', "
@@ -472,11 +479,12 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
                     "CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN json_extract(solution, "
                     "'$.igd_plus') END, CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN "
                     "json_extract(solution, '$.exact_found') END, CASE WHEN substr(solution, 1, 1) = '{{' AND "
-                    "json_valid(solution) THEN json_extract(solution, '$.front') END FROM runs ORDER BY problem, "
+                    "json_valid(solution) THEN json_extract(solution, '$.front') END{} FROM runs ORDER BY problem, "
                     "algorithm, seed",
                     has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"),
                     optional_column(run_columns, "trace_targets"), optional_column(run_columns, "trace_evaluations"),
-                    optional_column(run_columns, "max_evaluations"), optional_column(run_columns, "checkpoints"))
+                    optional_column(run_columns, "max_evaluations"), optional_column(run_columns, "checkpoints"),
+                    path_metrics)
                     .c_str());
     while (q.next()) {
         // Named by rowid until its key is read, then by the key.
@@ -524,6 +532,16 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
             r.igd_plus = q.optional_number(17, "solution: igd_plus");
             r.exact_found = q.optional_integer(18, "solution: exact_found", 0);
             if (!q.is_null(19)) r.front_json = q.text(19, "solution: front");
+        }
+        if (metrics_column != "NULL") {
+            r.path_metrics.resize(std::size(kPathMetricNames));
+            bool any = false;
+            for (std::size_t k = 0; k < r.path_metrics.size(); ++k) {
+                r.path_metrics[k] = q.optional_number(20 + static_cast<int>(k),
+                                                      (std::string("path_metrics: ") + kPathMetricNames[k]).c_str());
+                any = any || r.path_metrics[k].has_value();
+            }
+            if (!any) r.path_metrics.clear();
         }
         // The analysis of target hits (experiment/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.

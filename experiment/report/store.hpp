@@ -64,7 +64,16 @@ struct StoredRun {
     std::optional<std::int64_t> exact_found;  // a grid front's points of the exact front
     std::string front_json;                   // the front as stored (engine::front_json), or empty
     std::vector<TracePoint> checkpoints;
+    // A grid run's path metrics (runs.path_metrics, store schema 5: problems/grid/polyline.hpp, in
+    // kPathMetricNames' order, each empty where the JSON has null or lacks it); empty for other runs
+    // and runs stored before.
+    std::vector<std::optional<double>> path_metrics;
 };
+
+/// The keys of runs.path_metrics the report reads, in StoredRun::path_metrics' order.
+inline constexpr const char* kPathMetricNames[] = {"length",         "turns",          "total_turn_deg",
+                                                   "angle_over_length", "max_curvature", "min_clearance",
+                                                   "mean_clearance", "grid_gap",       "any_angle_gap"};
 
 struct StoredProblem {
     std::string id;

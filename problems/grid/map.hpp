@@ -102,6 +102,13 @@ class GridMap {
         return {frame_->origin_x + (c.x + 0.5) * frame_->resolution,
                 frame_->origin_y + (height_ - 1 - c.y + 0.5) * frame_->resolution};
     }
+    /// The world point (metres) of a path's vertex (x, y) in cells, cell (i, j)'s centre at (i, j)
+    /// (grid::PathPoint); the map must have a frame.
+    WorldPoint world(double x, double y) const {
+        require(frame_.has_value(), name_, "the map has no world frame (resolution and origin)");
+        return {frame_->origin_x + (x + 0.5) * frame_->resolution,
+                frame_->origin_y + (height_ - 1 - y + 0.5) * frame_->resolution};
+    }
     /// The cell holding world point p (a point on a border between cells belongs to the cell
     /// right of it or above it), or none when p is outside the map; the map must have a frame.
     std::optional<Cell> cell_at(WorldPoint p) const {

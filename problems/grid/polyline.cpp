@@ -102,7 +102,12 @@ PolylineMetrics score_path(const Polyline& p, const PolylineScorer* scorer) {
     if (p.empty()) return m;
     std::optional<ClearanceSampler> sampler;
     if (scorer && scorer->has_obstacles()) sampler.emplace(*scorer, p.front());
-    double total_rad = 0, max_rad = 0;
+    double total_rad = 0, max_rad = 0, total_deg = 0;
+    // Each turn in degrees rounded to 1e-9: a chain's turns are then exact multiples of 45 and
+    // their sum equals metrics().turn_angle_deg exactly (a sum of radians converted once gave
+    // 720.0000000000002 for 16 turns).
+    constexpr double kDeg = 180.0 / std::numbers::pi;
+    const auto degrees = [](double rad) { return std::round(rad * kDeg * 1e9) / 1e9; };
     double px = 0, py = 0;  // the last non-zero segment
     bool has_previous = false;
     for (std::size_t i = 1; i < p.size(); ++i) {
@@ -114,6 +119,7 @@ PolylineMetrics score_path(const Polyline& p, const PolylineScorer* scorer) {
             if (turn > kCollinearRadians) {
                 ++m.turns;
                 total_rad += turn;
+                total_deg += degrees(turn);
                 max_rad = std::max(max_rad, turn);
                 const PathPoint v = p[i - 1];
                 m.max_curvature = std::max(
@@ -125,9 +131,8 @@ PolylineMetrics score_path(const Polyline& p, const PolylineScorer* scorer) {
         py = dy;
         has_previous = true;
     }
-    constexpr double kDeg = 180.0 / std::numbers::pi;
-    m.total_turn_deg = total_rad * kDeg;
-    m.max_turn_deg = max_rad * kDeg;
+    m.total_turn_deg = total_deg;
+    m.max_turn_deg = degrees(max_rad);
     m.angle_over_length = m.length > 0.0 ? total_rad / m.length : 0.0;
     if (sampler) {
         sampler->run_to(p.back());

@@ -65,7 +65,7 @@ inline constexpr double kClearanceSpacing = 0.25;
 struct PolylineMetrics {
     double length = 0;             // Euclidean, in cells
     int turns = 0;                 // interior vertices where the heading changes (reversal = 180)
-    double total_turn_deg = 0;     // sum of |heading change| (each in [0, 180])
+    double total_turn_deg = 0;     // sum of |heading change| (each in [0, 180], rounded to 1e-9 degree)
     double max_turn_deg = 0;       // the largest of them
     double angle_over_length = 0;  // Bench-MR AOL: total turn in radians / length (0 for length 0)
     double max_curvature = 0;      // 1/cell, at turn vertices (the top of this file); 0 without turns

@@ -253,14 +253,18 @@ class Optimizer:
 
 def plan(grid, start=None, goal=None, *, algo="pso", start_world=None, goal_world=None, objective="cells",
          step_cost=None, encoding="", connector="repair", init="", waypoints=3, weights=None, lambda_=None,
-         corner_cutting=False, oracle=False, evals=None, iters=None, seed=1, callback=None, **params):
+         corner_cutting=False, oracle=False, gaps=False, evals=None, iters=None, seed=1, callback=None, **params):
     """A path on ``grid`` (a ``pride.Grid``) from ``start`` to ``goal`` ((x, y), x the column from
     the left, y the row from the top) by any grid algorithm, as ``pride path`` plans it: the
     result's ``path`` is an (n, 2) array of (x, y), with ``metrics`` and ``objective_value``;
     on a map with a world frame (a ROS map_server map: ``grid.resolution``, ``grid.origin``)
     ``start_world``/``goal_world`` ((x, y) in metres, the cell holding the point) may replace
     ``start``/``goal``, and ``path_world`` is the path's cell centres in metres (None without a frame);
-    ``oracle=True`` adds the exact ``optimum`` and the ``gap``. Without evals or iters, 50
+    ``oracle=True`` adds the exact ``optimum`` and the ``gap``. Every path, a chain or a polyline planner's
+    (``theta-star``, ``lazy-theta-star``, ``any-angle-exact``: ``path`` is then empty), comes as
+    ``polyline`` ((n, 2) floats, cell (x, y)'s centre at (x, y)) with ``path_metrics`` (length,
+    turns, turn angles, angle over length, maximum curvature, clearance); ``gaps=True`` adds the
+    shortest grid and any-angle lengths and the path's ``grid_gap`` and ``any_angle_gap``. Without evals or iters, 50
     iterations. Without ``encoding`` the algorithm plans on its native space (chain for iqga, iaga,
     icga and the woa family, line for the others); an encoding it cannot use is a ValueError.
 
@@ -278,7 +282,8 @@ def plan(grid, start=None, goal=None, *, algo="pso", start_world=None, goal_worl
                               _str("connector", connector), _str("init", init), _int("waypoints", waypoints, False),
                               None if weights is None else _reals("weights", weights),
                               _real("lambda_", lambda_), _bool("corner_cutting", corner_cutting),
-                              _bool("oracle", oracle), _int("evals", evals), _int("iters", iters), _seed(seed),
+                              _bool("oracle", oracle), _bool("gaps", gaps), _int("evals", evals), _int("iters", iters),
+                              _seed(seed),
                               _callable("callback", callback), params))
 
 

@@ -27,11 +27,11 @@ struct PyCampaign {
     bool python_functions = false;
 };
 
-const std::set<std::string> problem_keys{"id",        "problem",        "dim",        "instance",    "grid",
-                                         "map",       "inflate",        "start",      "goal",        "objective",
-                                         "encoding",  "connector",      "init",       "waypoints",   "weights",
-                                         "lambda",    "corner_cutting", "function",   "bounds",      "vectorized",
-                                         "step_cost", "f_opt",          "objectives", "unknown_free"};
+const std::set<std::string> problem_keys{"id",        "problem",        "dim",        "instance",     "grid",
+                                         "map",       "inflate",        "start",      "goal",         "objective",
+                                         "encoding",  "connector",      "init",       "waypoints",    "weights",
+                                         "lambda",    "corner_cutting", "function",   "bounds",       "vectorized",
+                                         "step_cost", "f_opt",          "objectives", "unknown_free", "path_gaps"};
 
 /// d[key] checked as a T (None or missing: empty); a wrong type is a TypeError "WHERE: KEY: ...".
 template <class T>
@@ -167,6 +167,7 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
         g.weights = get<std::vector<double>>(d, "weights", where).value_or(g.weights);
         g.lambda = get<double>(d, "lambda", where);
         g.corner_cutting = get<bool>(d, "corner_cutting", where).value_or(false);
+        p.path_gaps = get<bool>(d, "path_gaps", where).value_or(false);
         if (d.contains("objectives") && !d["objectives"].is_none()) {
             // Several criteria: a comma-separated str or a list of names.
             const py::object o = d["objectives"];

@@ -79,15 +79,43 @@ grid::Cell endpoint(const grid::GridMap& map, const py::object& cell, const py::
 }
 
 /// The path's cells as world points (cell centres, rounded to 1e-9 m as `pride path` prints them).
-py::array_t<double> world_path_array(const grid::GridMap& map, const grid::Path& path) {
+py::array_t<double> world_path_array(const grid::GridMap& map, const grid::Polyline& path) {
     py::array_t<double> a({static_cast<py::ssize_t>(path.size()), py::ssize_t{2}});
     auto v = a.mutable_unchecked<2>();
     for (std::size_t i = 0; i < path.size(); ++i) {
-        const grid::WorldPoint p = map.world(path[i]);
+        const grid::WorldPoint p = map.world(path[i].x, path[i].y);
         v(static_cast<py::ssize_t>(i), 0) = std::round(p.x * 1e9) / 1e9 + 0.0;
         v(static_cast<py::ssize_t>(i), 1) = std::round(p.y * 1e9) / 1e9 + 0.0;
     }
     return a;
+}
+
+py::array_t<double> polyline_array(const grid::Polyline& line) {
+    py::array_t<double> a({static_cast<py::ssize_t>(line.size()), py::ssize_t{2}});
+    auto v = a.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        v(static_cast<py::ssize_t>(i), 0) = line[i].x;
+        v(static_cast<py::ssize_t>(i), 1) = line[i].y;
+    }
+    return a;
+}
+
+py::object optional_number(const std::optional<double>& v) {
+    return v ? py::object(py::float_(*v)) : py::object(py::none());
+}
+
+/// The metrics every path gets (problems/grid/polyline.hpp), as pride path --json gives them.
+py::dict path_metrics_dict(const grid::PolylineMetrics& m) {
+    py::dict d;
+    d["length"] = m.length;
+    d["turns"] = m.turns;
+    d["total_turn_deg"] = m.total_turn_deg;
+    d["max_turn_deg"] = m.max_turn_deg;
+    d["angle_over_length"] = m.angle_over_length;
+    d["max_curvature"] = m.max_curvature;
+    d["min_clearance"] = optional_number(m.min_clearance);
+    d["mean_clearance"] = optional_number(m.mean_clearance);
+    return d;
 }
 
 }  // namespace
@@ -144,9 +172,9 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
               const py::object& goal_world, const std::string& algo, const py::object& objective,
               const py::object& step_cost, const std::string& encoding, const std::string& connector,
               const std::string& init, std::int64_t waypoints, const std::optional<std::vector<double>>& weights,
-              std::optional<double> lambda, bool corner_cutting, bool oracle, std::optional<std::int64_t> evals,
-              std::optional<std::int64_t> iters, std::uint64_t seed, const py::object& callback,
-              const py::dict& params) {
+              std::optional<double> lambda, bool corner_cutting, bool oracle, bool gaps,
+              std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::uint64_t seed,
+              const py::object& callback, const py::dict& params) {
     engine::GridSpec spec;
     auto errors = std::make_shared<UserError>();
     set_path_objective(spec, objective, step_cost, errors, "");
@@ -158,6 +186,7 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     spec.lambda = lambda;
     spec.corner_cutting = corner_cutting;
     spec.oracle = oracle;
+    spec.path_gaps = gaps;
     engine::check_grid_names(spec);
     spec.map = g.map;
     spec.start = endpoint(*g.map, start, start_world, "start");
@@ -175,8 +204,16 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     d["objective"] = spec.objective;
     d["seed"] = seed;
     const auto& run = *r.grid;
+    d["polyline"] = polyline_array(run.polyline);
+    d["path_metrics"] = run.feasible ? py::object(path_metrics_dict(run.metrics)) : py::object(py::none());
+    if (gaps) {
+        d["shortest_grid_length"] = optional_number(run.shortest_grid_length);
+        d["shortest_any_angle_length"] = optional_number(run.shortest_any_angle_length);
+        d["grid_gap"] = optional_number(run.grid_gap);
+        d["any_angle_gap"] = optional_number(run.any_angle_gap);
+    }
     if (g.map->frame())
-        d["path_world"] = world_path_array(*g.map, run.path);
+        d["path_world"] = world_path_array(*g.map, run.polyline);
     else
         d["path_world"] = py::none();
     if (run.optimum && run.feasible) {
@@ -278,8 +315,8 @@ void bind_grid(py::module_& m) {
     m.def("plan", &plan, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
           py::arg("start_world"), py::arg("goal_world"), py::arg("algo"), py::arg("objective"), py::arg("step_cost"),
           py::arg("encoding"), py::arg("connector"), py::arg("init"), py::arg("waypoints"), py::arg("weights"),
-          py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"), py::arg("evals"), py::arg("iters"),
-          py::arg("seed"), py::arg("callback"), py::arg("params"));
+          py::arg("lambda_"), py::arg("corner_cutting"), py::arg("oracle"), py::arg("gaps"), py::arg("evals"),
+          py::arg("iters"), py::arg("seed"), py::arg("callback"), py::arg("params"));
     m.def("pareto", &pareto, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
           py::arg("objectives"), py::arg("corner_cutting"));
 }

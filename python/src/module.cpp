@@ -557,9 +557,13 @@ py::dict result_dict(const engine::RunResult& r) {
         d["feasible"] = g.feasible;
         d["path"] = path_array(g.path);
         d["objective_value"] = g.feasible ? py::object(py::float_(g.value)) : py::object(py::none());
-        d["metrics"] =
-            py::dict(py::arg("cells") = m.cells, py::arg("length") = m.length, py::arg("turns") = m.turns,
-                     py::arg("turn_angle_deg") = m.turn_angle_deg, py::arg("angle_penalty") = m.angle_penalty);
+        // A polyline planner's path has no cells, and no chain metrics (its path_metrics has them).
+        if (g.feasible && g.path.empty() && !g.polyline.empty())
+            d["metrics"] = py::none();
+        else
+            d["metrics"] =
+                py::dict(py::arg("cells") = m.cells, py::arg("length") = m.length, py::arg("turns") = m.turns,
+                         py::arg("turn_angle_deg") = m.turn_angle_deg, py::arg("angle_penalty") = m.angle_penalty);
         d["optimum"] = g.optimum ? py::object(py::float_(*g.optimum)) : py::object(py::none());
         d["optimal_path"] = g.optimum ? py::object(path_array(g.optimal_path)) : py::object(py::none());
     }

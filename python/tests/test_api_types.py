@@ -103,7 +103,7 @@ def api(tmp_path):
                  dict(grid=GRID_ARG, start=CELL, goal=CELL, start_world=WORLD, goal_world=WORLD, algo=TEXT,
                       objective=OBJECTIVE, step_cost=CALLABLE,
                       encoding=TEXT, connector=TEXT, init=TEXT, waypoints=INT_REQUIRED, weights=WEIGHTS,
-                      lambda_=REAL, corner_cutting=FLAG, oracle=FLAG, evals=INT, iters=INT, seed=SEED,
+                      lambda_=REAL, corner_cutting=FLAG, oracle=FLAG, gaps=FLAG, evals=INT, iters=INT, seed=SEED,
                       callback=CALLABLE)),
         "astar": (lambda **o: pride.astar(**{"grid": GRID, "start": (0, 0), "goal": (3, 3), **o}),
                   dict(grid=GRID_ARG, start=CELL, goal=CELL, objective=OBJECTIVE, corner_cutting=FLAG)),

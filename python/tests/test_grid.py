@@ -66,12 +66,17 @@ def algorithm_cases():
 def test_every_grid_algorithm_plans_a_legal_path(algo, encoding):
     g = pride.Grid(ARRAY)
     budget = {} if any(a["name"] == algo and "grid" in a["spaces"] for a in ALGOS) else {"evals": 120}
-    r = pride.plan(g, START, GOAL, algo=algo, encoding=encoding, seed=3, **budget)
-    if r.feasible:
+    # The length objective: the polyline planners (theta-star, ...) take no other.
+    r = pride.plan(g, START, GOAL, algo=algo, encoding=encoding, objective="length", seed=3, **budget)
+    if r.feasible and len(r.path) == 0:  # a polyline planner's path: its polyline, no cells
+        assert r.metrics is None and tuple(r.polyline[0]) == START and tuple(r.polyline[-1]) == GOAL
+        assert r.path_metrics["length"] == pytest.approx(r.objective_value)
+    elif r.feasible:
         assert legal(g, r.path, START, GOAL)
         assert r.metrics["cells"] == len(r.path)
+        assert np.array_equal(r.polyline, r.path.astype(float))
     else:
-        assert len(r.path) == 0
+        assert len(r.path) == 0 and len(r.polyline) == 0 and r.path_metrics is None
     if algo in ("astar", "exact"):
         assert r.feasible
 
