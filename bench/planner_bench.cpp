@@ -2,10 +2,14 @@
 //   JPS against A* (the same octile lengths; a mismatch is reported): expansions and microseconds
 //   per query, medians over the file's queries; Theta* and Lazy Theta*: microseconds, line-of-sight
 //   tests per query (medians) and the mean length as a share of A*'s; with --oracle, the exact
-//   any-angle oracle too (microseconds per query, and the mean of Theta*'s length over the oracle's).
+//   any-angle oracle too (microseconds per query, and the mean of Theta*'s length over the oracle's);
+//   with --ompl (when built with OMPL), each OMPL planner of problems/grid/ompl_planner.hpp on the
+//   file's first --ompl-queries queries, each run once with a budget of --ompl-checks validity
+//   checks and seed 1: the median milliseconds to its first solution (over the solved queries) and
+//   the share of queries solved.
 // Each query runs --reps times on one reused planner and keeps its least time (the machine may be
 // shared); one planner object serves the whole file, as a connector reuses one.
-// Usage: planner_bench --scen FILE.scen ... [--reps N] [--oracle]
+// Usage: planner_bench --scen FILE.scen ... [--reps N] [--oracle] [--ompl [--ompl-checks N] [--ompl-queries N]]
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -20,6 +24,9 @@
 #include "problems/grid/jps.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/theta_star.hpp"
+#ifdef PRIDE_HAVE_OMPL
+#include "problems/grid/ompl_planner.hpp"
+#endif
 
 namespace {
 
@@ -45,7 +52,13 @@ double least_us(int reps, F&& f, double& result) {
     return best;
 }
 
-void bench_file(const std::string& scen, int reps, bool with_oracle) {
+/// What --ompl asks for: 0 queries when it is off.
+struct OmplBench {
+    int queries = 0;
+    long checks = 20000;
+};
+
+void bench_file(const std::string& scen, int reps, bool with_oracle, const OmplBench& ompl) {
     const auto entries = read_scenario(scen);
     const auto dir = std::filesystem::path(scen).parent_path();
     std::map<std::string, GridMap> maps;
@@ -98,6 +111,26 @@ void bench_file(const std::string& scen, int reps, bool with_oracle) {
                median(j_exp), median(a_us), median(j_us), median(t_us), median(l_us), median(t_los), median(l_los),
                t_share / n, l_share / n);
     if (with_oracle) fmt::print(",{:.1f},{:.5f},{:.5f}", median(o_us), t_over / n, l_over / n);
+#ifdef PRIDE_HAVE_OMPL
+    if (ompl.queries > 0)
+        for (const auto& name : ompl_planner_names()) {
+            OmplRequest r;
+            r.planner = name;
+            r.max_checks = ompl.checks;
+            std::vector<double> first_ms;
+            std::size_t runs = 0;
+            for (const auto& e : entries) {
+                if (runs == static_cast<std::size_t>(ompl.queries)) break;
+                ++runs;
+                const OmplOutcome o = plan_with_ompl(maps.at(e.map), e.start, e.goal, r);
+                if (o.solved) first_ms.push_back(o.first_solution_ms);
+            }
+            fmt::print(",{:.2f},{:.3f}", median(first_ms),
+                       static_cast<double>(first_ms.size()) / std::max<std::size_t>(runs, 1));
+        }
+#else
+    (void)ompl;
+#endif
     fmt::print("\n");
 }
 
@@ -106,19 +139,41 @@ void bench_file(const std::string& scen, int reps, bool with_oracle) {
 int main(int argc, char** argv) {
     std::vector<std::string> scens;
     int reps = 3;
-    bool oracle = false;
+    bool oracle = false, with_ompl = false;
+    OmplBench ompl;
+    int ompl_queries = 20;
     CLI::App app{"JPS against A*, Theta* and Lazy Theta* on Moving AI scenarios (issue 29)"};
     app.add_option("--scen", scens, "Moving AI scenario files")->required();
     app.add_option("--reps", reps, "runs per query and planner; the least time is kept (default 3)")
         ->check(CLI::PositiveNumber);
     app.add_flag("--oracle", oracle, "also the exact any-angle oracle (slow on large maps)");
+    app.add_flag("--ompl", with_ompl, "also OMPL's planners: time to first solution and share solved");
+    app.add_option("--ompl-checks", ompl.checks, "validity checks per OMPL run (default 20000)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--ompl-queries", ompl_queries, "queries per file for OMPL, the first ones (default 20)")
+        ->check(CLI::PositiveNumber);
     CLI11_PARSE(app, argc, argv);
+#ifndef PRIDE_HAVE_OMPL
+    if (with_ompl) {
+        fmt::print(stderr, "planner_bench: --ompl needs a build with OMPL (scripts/deps.sh installs libompl-dev)\n");
+        return 2;
+    }
+#else
+    std::string ompl_columns;
+    for (const auto& name : ompl_planner_names()) ompl_columns += fmt::format(",{0}_first_ms,{0}_solved", name);
+#endif
+    if (with_ompl) ompl.queries = ompl_queries;
     try {
         fmt::print(
             "file,queries,jps_length_mismatches,astar_expansions,jps_expansions,astar_us,jps_us,theta_us,lazy_us,"
-            "theta_los,lazy_los,theta_over_astar,lazy_over_astar{}\n",
-            oracle ? ",oracle_us,theta_over_oracle,lazy_over_oracle" : "");
-        for (const auto& s : scens) bench_file(s, reps, oracle);
+            "theta_los,lazy_los,theta_over_astar,lazy_over_astar{}{}\n",
+            oracle ? ",oracle_us,theta_over_oracle,lazy_over_oracle" : "",
+#ifdef PRIDE_HAVE_OMPL
+            with_ompl ? ompl_columns : std::string());
+#else
+            "");
+#endif
+        for (const auto& s : scens) bench_file(s, reps, oracle, ompl);
     } catch (const std::exception& e) {
         fmt::print(stderr, "planner_bench: {}\n", e.what());
         return 2;

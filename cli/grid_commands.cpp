@@ -35,9 +35,9 @@ engine::GridSpec grid_spec(const PathOptions& o) {
     if (o.waypoints) {
         // A count the run would ignore is refused: only the free encoding has waypoints.
         const engine::AlgorithmEntry* entry = engine::algorithms().find(o.algo);
-        const std::string encoding = !o.encoding.empty()           ? o.encoding
-                                     : entry && !entry->solve_grid ? entry->native_encoding
-                                                                   : "";
+        const std::string encoding = !o.encoding.empty()            ? o.encoding
+                                     : entry && !entry->whole_map() ? entry->native_encoding
+                                                                    : "";
         if (entry || !o.encoding.empty())
             require(encoding == "free", "--waypoints",
                     encoding.empty()

@@ -12,8 +12,8 @@
 
 #include "cli/numbers.hpp"
 #include "framework/error.hpp"
-#include "roughset/roughset.hpp"
 #include "problems/grid/rough_rules.hpp"
+#include "roughset/roughset.hpp"
 
 namespace pride::cli {
 namespace {

@@ -13,7 +13,7 @@ std::vector<std::string> AlgorithmEntry::spaces() const {
     std::vector<std::string> out;
     if (run_box) out.emplace_back("box");
     if (run_chain) out.emplace_back("chain");
-    if (solve_grid) out.emplace_back("grid");
+    if (whole_map()) out.emplace_back("grid");
     if (run_multiobjective) out.emplace_back("multi-objective");
     if (run_multiobjective_chain) out.emplace_back("multi-objective chain");
     return out;
@@ -35,9 +35,9 @@ const ParamSpec* AlgorithmEntry::param(std::string_view wanted) const {
 void AlgorithmRegistry::add(AlgorithmEntry entry) {
     if (entry.name.empty()) throw std::logic_error("an algorithm is registered without a name");
     if (find(entry.name)) throw std::logic_error("algorithm '" + entry.name + "' is registered twice");
-    if (!entry.run_box && !entry.run_chain && !entry.solve_grid && !entry.run_multiobjective)
+    if (!entry.run_box && !entry.run_chain && !entry.whole_map() && !entry.run_multiobjective)
         throw std::logic_error("algorithm '" + entry.name + "' is registered without a runner");
-    if (entry.run_multiobjective && (entry.run_box || entry.run_chain || entry.solve_grid))
+    if (entry.run_multiobjective && (entry.run_box || entry.run_chain || entry.whole_map()))
         throw std::logic_error("algorithm '" + entry.name + "' is multi-objective and has another runner");
     if (entry.run_multiobjective_chain && !entry.run_multiobjective)
         throw std::logic_error("algorithm '" + entry.name + "' runs on multi-objective chains only");

@@ -71,12 +71,19 @@ struct AlgorithmEntry {
         run_multiobjective_chain;
     /// Solves a grid as a whole (baselines): no budget, no seed.
     std::function<GridSolution(const GridTarget&)> solve_grid;
+    /// Plans on a grid's plane as a whole with a seed and a budget (sampling-based planners: OMPL's):
+    /// its validity checks are its evaluations, counted (GridSolution::work) and within the budget.
+    std::function<GridSolution(const Params&, const GridTarget&, const Termination&, std::uint64_t seed)> sample_grid;
     /// Whole-map algorithms that return the exact optimum say so: the objective must have one
     /// (GridTarget::has_optimum), and the run records it beside the result.
     bool needs_optimum = false;
     /// Plans polylines in the map's plane (Theta*, the exact any-angle path), not cell chains: it
     /// runs on the length objective only, where a polyline's value is its Euclidean length.
     bool plans_polylines = false;
+    /// False when one seed need not give the same bits: resumes and merges then compare its runs
+    /// by their definition (problem, algorithm, seed), not by their values (OMPL's planners: a
+    /// process-wide seed generator, and time limits).
+    bool reproducible = true;
     /// The population on grids when none is given (for entries with a `pop` parameter): the papers'
     /// N = 20, IQGA's N = 40 (file 002, table 1; shared/spec/algorithms.md).
     std::int64_t grid_population = 20;
@@ -95,8 +102,11 @@ struct AlgorithmEntry {
     /// The grid encodings it can plan through: line and free with a box runner, chain with a chain one.
     std::vector<std::string> encodings() const;
     /// False for whole-map planners (A*, exact), which do not evaluate the objective: they have no
-    /// evaluation budget, and comparisons at equal evaluations exempt them.
+    /// evaluation budget, and comparisons at equal evaluations exempt them. A sampling planner's
+    /// validity checks are its evaluations.
     bool evaluates() const { return !solve_grid; }
+    /// Plans on the whole map (no encoding): solve_grid or sample_grid.
+    bool whole_map() const { return solve_grid || sample_grid; }
     bool multiobjective() const { return static_cast<bool>(run_multiobjective); }
     const ParamSpec* param(std::string_view name) const;
 };

@@ -264,7 +264,7 @@ void prepare_plan(Prepared& v, const GridSpec& plan) {
 ParamValues effective_params(const AlgorithmEntry& entry, const Prepared& p, const ParamValues& given) {
     ParamValues v = given;
     const auto* g = std::get_if<GridSpec>(&p.spec);
-    if (!g || entry.solve_grid) return v;
+    if (!g || entry.whole_map()) return v;
     if (entry.param("pop") && !v.contains("pop")) v.set("pop", static_cast<double>(entry.grid_population));
     if (!g->init.empty() && g->encoding == "chain" && entry.param("sitp") && !v.contains("sitp"))
         v.set("sitp", g->init == "sitp" ? 1.0 : 0.0);
@@ -297,7 +297,7 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
                     spec.name + " says how a grid is planned on; it has no meaning on " + p.name);
         return params;
     }
-    if (entry.solve_grid) {
+    if (entry.whole_map()) {
         require(!entry.needs_optimum || p.grid->has_optimum(), "objective",
                 no_optimum(*g) + ", so " + entry.name + " has no optimum to find");
         require(!entry.plans_polylines || g->objective == "length", "objective",
@@ -350,7 +350,7 @@ void check_run_memory(const AlgorithmEntry& entry, const Params& params, const P
             },
             p.grid->problem);
     MemoryPart run;
-    if (entry.solve_grid) {
+    if (entry.whole_map()) {
         if (entry.memory)
             run = {entry.memory(params, static_cast<std::size_t>(cells)), entry.name,
                    fmt::format("{} on a {} map", entry.name, map_size)};
@@ -561,7 +561,7 @@ namespace {
 /// A space the algorithm cannot use is refused, naming the ones it can.
 GridSpec planned_grid(const AlgorithmEntry& entry, const GridSpec& g, const ParamValues& given) {
     GridSpec out = g;
-    if (entry.solve_grid) return out;
+    if (entry.whole_map()) return out;
     auto named = [&](const char* key) -> const std::string* {
         const auto it = given.names().find(key);
         if (it == given.names().end()) return nullptr;
@@ -755,6 +755,11 @@ CheckedRun checked_run(const AlgorithmSpec& algorithm, const Prepared& p, const 
     const AlgorithmEntry& entry = algorithms().at(algorithm.name);
     CheckedRun c{entry, checked(entry, p, algorithm), budget.termination(p.dimension, p.grid.has_value())};
     c.termination.optimum = optimum_of(p);  // the reference of the run's COCO trace
+    // A sampling planner counts validity checks, not iterations: it needs a budget of them (or of
+    // time), never the grids' default of 50 iterations.
+    if (entry.sample_grid)
+        require(budget.evaluations || budget.wall_ms, "evaluations",
+                entry.name + " needs an evaluation budget (its state and motion validity checks: --evals N)");
     check_run_memory(entry, c.params, p, c.termination, budget.threads);
     return c;
 }
@@ -812,9 +817,9 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
     RunResult out;
     out.algorithm = entry.name;
     if (observer && p.grid)
-        require(!entry.solve_grid && !p.chain, "observer",
+        require(!entry.whole_map() && !p.chain, "observer",
                 "only box runs are observed (" + entry.name +
-                    (entry.solve_grid ? " solves the whole map)" : " runs on chains)"));
+                    (entry.whole_map() ? " solves the whole map)" : " runs on chains)"));
     // Made only for a run on the box (its threads start here and end with the run).
     // The bindings captured by name: clang 14 (the fuzz build) cannot capture structured bindings.
     auto box_run = [&, &entry = entry, &params = params, &termination = termination] {
@@ -832,13 +837,15 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
     GridOutcome o;
     const auto start = Clock::now();  // whole-map algorithms: their wall time includes the oracle
     if (g.oracle || entry.needs_optimum) o.optimum = grid_optimum(*p.grid, &o.optimal_path);
-    if (entry.solve_grid) {
+    if (entry.whole_map()) {
         // An entry that returns the exact optimum (needs_optimum) would search again for the path
         // just found (the same function of the same inputs: the same path): 120 s instead of
         // 60 s on an 8000 x 8000 map.
         GridSolution s;
         if (entry.needs_optimum && o.optimum && *o.optimum >= 0.0)
             s.path = o.optimal_path;
+        else if (entry.sample_grid)
+            s = entry.sample_grid(params, *p.grid, termination, seed);
         else
             s = entry.solve_grid(*p.grid);
         if (entry.plans_polylines) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -178,10 +179,17 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
                                     "FROM main.{0})",
                                     table, joined(cols)));
                 }
-                // A run in both must be the same run: every column but the wall time, bit for bit.
+                // A run in both must be the same run: every column but the wall time, bit for bit;
+                // a run of an algorithm registered as not reproducible (AlgorithmEntry::reproducible:
+                // OMPL's planners) by its definition alone, its values kept from the first store.
                 std::string unequal;
                 for (const auto& c : compared)
                     unequal += (unequal.empty() ? "" : " OR ") + ("o." + c + " IS NOT m." + c);
+                const auto algorithm_columns = columns(db, "main", "algorithms");
+                if (std::find(algorithm_columns.begin(), algorithm_columns.end(), "reproducible") !=
+                    algorithm_columns.end())
+                    unequal = "(" + unequal +
+                              ") AND o.algorithm NOT IN (SELECT id FROM main.algorithms WHERE reproducible = 0)";
                 const auto differ = db.rows(
                     "SELECT o.problem, o.algorithm, o.seed FROM b.runs o JOIN main.runs m ON "
                     "o.problem = m.problem AND o.algorithm = m.algorithm AND o.seed = m.seed "

@@ -207,6 +207,9 @@ class Store {
             // Every grid path's metrics, whoever planned it, and a polyline planner's polyline
             // (issue 29); NULL for other runs and for runs stored before them.
             add_column("runs", "path_metrics", "TEXT");
+            // 0 for an algorithm registered as not reproducible (AlgorithmEntry::reproducible):
+            // merges and reports of several stores compare its runs by definition, not values.
+            add_column("algorithms", "reproducible", "INTEGER NOT NULL DEFAULT 1");
             add_column("runs", "polyline", "TEXT");
             exec("COMMIT");
             exec("PRAGMA synchronous=NORMAL");
@@ -577,13 +580,15 @@ class Store {
     }
 
     void record_algorithm(const CampaignAlgorithm& a) {
-        sqlite3_stmt* s = prepare("INSERT INTO algorithms (id, type, evaluates, definition) VALUES (?, ?, ?, ?)");
+        sqlite3_stmt* s =
+            prepare("INSERT INTO algorithms (id, type, evaluates, definition, reproducible) VALUES (?, ?, ?, ?, ?)");
         const AlgorithmEntry* entry = algorithms().find(a.spec.name);
         const std::string definition = algorithm_definition(a);
         sqlite3_bind_text(s, 1, a.id.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, a.spec.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_int(s, 3, !entry || entry->evaluates() ? 1 : 0);
         sqlite3_bind_text(s, 4, definition.c_str(), -1, SQLITE_TRANSIENT);
+        sqlite3_bind_int(s, 5, !entry || entry->reproducible ? 1 : 0);
         step_done(s, "cannot write the store");
     }
 

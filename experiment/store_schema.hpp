@@ -11,7 +11,8 @@
 //   4: runs.max_evaluations and runs.checkpoints, each run's evaluation budget and its best values
 //      at the CEC reports' checkpoints (issue 26); NULL and '[]' for runs stored before
 //   5: runs.path_metrics and runs.polyline, every grid path's metrics and a polyline planner's
-//      polyline (issue 29); NULL for other runs and runs stored before
+//      polyline (issue 29), NULL for other runs and runs stored before; algorithms.reproducible,
+//      0 for algorithms whose runs are compared by definition (OMPL's), 1 before
 namespace pride::engine {
 
 inline constexpr int store_schema = 5;

@@ -549,6 +549,7 @@ CampaignStore read_stores(const std::vector<std::string>& paths) {
                         path, "problem '" + p.id + "' is another problem in " + paths.front());
             }
         all.whole_map_algorithms.insert(s.whole_map_algorithms.begin(), s.whole_map_algorithms.end());
+        all.unreproducible_algorithms.insert(s.unreproducible_algorithms.begin(), s.unreproducible_algorithms.end());
     }
     // Runs: each once; a run in two stores must be the same run (its values, not its wall time).
     std::vector<StoredRun> runs = std::move(all.runs);
@@ -559,6 +560,7 @@ CampaignStore read_stores(const std::vector<std::string>& paths) {
         const auto [it, fresh] = seen.emplace(std::make_tuple(r.problem, r.algorithm, r.seed), &r);
         if (fresh) continue;
         const StoredRun& o = *it->second;
+        if (all.unreproducible_algorithms.count(r.algorithm)) continue;  // the first store's run is kept
         require(o.best == r.best && o.evaluations == r.evaluations && o.history == r.history &&
                     o.history_evaluations == r.history_evaluations && o.target_hits == r.target_hits &&
                     o.max_evaluations == r.max_evaluations && o.checkpoints == r.checkpoints,

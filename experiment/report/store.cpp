@@ -409,13 +409,16 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
 
     CampaignStore store;
     if (tables.count("algorithms")) {
-        columns("algorithms", {"id", "evaluates"});
-        Query q(db, "SELECT rowid, id, evaluates FROM algorithms ORDER BY rowid");
+        const auto algorithm_columns = columns("algorithms", {"id", "evaluates"});
+        Query q(db, fmt::format("SELECT rowid, id, evaluates, {} FROM algorithms ORDER BY rowid",
+                                optional_column(algorithm_columns, "reproducible"))
+                        .c_str());
         while (q.next()) {
             q.where = fmt::format("algorithms row with rowid {}",
                                   q.integer(0, "rowid", std::numeric_limits<std::int64_t>::min()));
             const std::string id = q.text(1, "id");
             if (q.integer(2, "evaluates", 0) == 0) store.whole_map_algorithms.insert(id);
+            if (q.optional_integer(3, "reproducible", 0) == 0) store.unreproducible_algorithms.insert(id);
         }
     }
     {
@@ -469,8 +472,8 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
     std::string path_metrics;
     const std::string metrics_column = optional_column(run_columns, "path_metrics");
     for (const char* key : kPathMetricNames)
-        path_metrics += fmt::format(", CASE WHEN json_valid({0}) THEN json_extract({0}, '$.{1}') END", metrics_column,
-                                    key);
+        path_metrics +=
+            fmt::format(", CASE WHEN json_valid({0}) THEN json_extract({0}, '$.{1}') END", metrics_column, key);
     Query q(db, fmt::format(
                     "SELECT rowid, problem, algorithm, seed, best, evaluations, wall_ms, optimum, history, "
                     "history_evaluations, {}, {}, {}, {}, {}, {}, substr(solution, 1, 1) = '{{', "

@@ -71,9 +71,9 @@ struct StoredRun {
 };
 
 /// The keys of runs.path_metrics the report reads, in StoredRun::path_metrics' order.
-inline constexpr const char* kPathMetricNames[] = {"length",         "turns",          "total_turn_deg",
-                                                   "angle_over_length", "max_curvature", "min_clearance",
-                                                   "mean_clearance", "grid_gap",       "any_angle_gap"};
+inline constexpr const char* kPathMetricNames[] = {
+    "length",        "turns",          "total_turn_deg", "angle_over_length", "max_curvature",
+    "min_clearance", "mean_clearance", "grid_gap",       "any_angle_gap"};
 
 struct StoredProblem {
     std::string id;
@@ -98,6 +98,9 @@ struct CampaignStore {
     // The ids of the campaign's algorithms that evaluate no objective (whole-map planners: A*,
     // exact), from its algorithms table; empty for stores from before it.
     std::set<std::string> whole_map_algorithms;
+    // The ids of those registered as not reproducible (AlgorithmEntry::reproducible: OMPL's
+    // planners): a run of theirs found in two stores is the same run by its definition.
+    std::set<std::string> unreproducible_algorithms;
 };
 
 /// Reads and checks the whole store at `path` (read-only). Throws InputError when the file is

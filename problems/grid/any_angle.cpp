@@ -12,21 +12,6 @@ namespace pride::grid {
 
 namespace {
 
-/// A coordinate in cells to a doubled integer, which must be exact (a multiple of 0.5).
-int doubled(double v, const char* what) {
-    const double d = 2.0 * v;
-    require(std::isfinite(d) && std::abs(d) < 1e9 && d == std::round(d), what,
-            "points must be cell centres or grid points (multiples of 0.5), got " + std::to_string(v));
-    return static_cast<int>(d);
-}
-
-HalfPoint half_point(Point p) {
-    const HalfPoint h{doubled(p.x, "segment"), doubled(p.y, "segment")};
-    require(((h.x ^ h.y) & 1) == 0, "segment",
-            "points must be cell centres or grid points (both halves or both whole)");
-    return h;
-}
-
 /// The direction w lies strictly inside the quadrant of a corner's blocked cell (bit 0: on the
 /// side of larger x, bit 1: of larger y).
 bool strictly_inside(std::uint8_t quadrant, int wx, int wy) {
@@ -35,10 +20,6 @@ bool strictly_inside(std::uint8_t quadrant, int wx, int wy) {
 }
 
 }  // namespace
-
-bool segment_is_free(const GridMap& map, Point a, Point b) {
-    return segment_is_free(map, half_point(a), half_point(b));
-}
 
 AnyAngleOracle::AnyAngleOracle(const GridMap& map) : map_(&map) {
     for (int j = 1; j < map.height(); ++j)  // border points have two outside cells: never convex

@@ -124,8 +124,22 @@ inline bool segment_is_free(const GridMap& map, HalfPoint a, HalfPoint b) noexce
     }
 }
 
-/// segment_is_free for points given in cells (each coordinate a multiple of 0.5, else InputError).
-bool segment_is_free(const GridMap& map, Point a, Point b);
+/// Whether a point of the plane is free: finite, inside [0, W] x [0, H], in the closed square of
+/// at least one free cell (so not inside a blocked square, nor on an edge between two blocked
+/// cells), and not a squeeze point. Exact. With the segment rules at the top: a segment of positive
+/// length is free exactly when every point of it is free, its two ends excepted from the squeeze
+/// rule (the half-lattice test lets a segment end at a squeeze point; point_is_free does not, so a
+/// sampling planner never stops there).
+bool point_is_free(const GridMap& map, Point p) noexcept;
+
+/// segment_is_free for any two points of the plane (segment.cpp): the rules at the top, decided
+/// exactly on the doubles given (the crossings are ordered by an exact orientation predicate), so
+/// on cell centres and grid points it answers as the half-lattice test. Conservative only for a
+/// coordinate of magnitude below 2^-400 other than 0 (the predicate's products could underflow):
+/// such a segment is called blocked. A zero-length segment is free wherever it is (nothing is
+/// crossed, as the half-lattice test); otherwise an end that is not finite or lies outside the map
+/// makes it blocked.
+bool segment_is_free(const GridMap& map, Point a, Point b) noexcept;
 
 /// The exact any-angle oracle: the Euclidean shortest path between the centres of two cells among
 /// the obstacles (the rules at the top of this file). The path bends only at convex corners of the
