@@ -286,7 +286,8 @@ JsonValue check_path_json(const std::string& text, const Grid& grid, XY start, X
     REQUIRE(j.kind == JsonValue::Kind::object);
     std::vector<std::string> expected = {"algo",        "objective",  "encoding", "seed",
                                          "feasible",    "path",       "metrics",  "objective_value",
-                                         "evaluations", "iterations", "wall_ms",  "history"};
+                                         "evaluations", "iterations", "wall_ms",  "history", "polyline"};
+    if (j.has("feasible") && j.at("feasible").boolean) expected.push_back("path_metrics");
     if (oracle) expected.push_back("optimum");
     auto keys = j.keys(), sorted_expected = expected;
     std::sort(keys.begin(), keys.end());
@@ -330,8 +331,18 @@ JsonValue check_path_json(const std::string& text, const Grid& grid, XY start, X
         CHECK(metrics.at("angle_penalty").number == m.angle_penalty);
         REQUIRE(j.at("objective_value").is_number());
         CHECK(nearly(j.at("objective_value").number, objective(m), 1e-12));
+        // Every path is also a polyline, its cells, with the metrics every planner's path gets.
+        const auto& line = j.at("polyline").items;
+        REQUIRE(line.size() == path.size());
+        for (std::size_t i = 0; i < line.size(); ++i)
+            CHECK((line[i].items.at(0).number == path[i].x && line[i].items.at(1).number == path[i].y));
+        const JsonValue& pm = j.at("path_metrics");
+        CHECK(nearly(pm.at("length").number, m.length, 1e-12));
+        CHECK(pm.at("turns").number == m.turns);
+        CHECK(pm.at("total_turn_deg").number == m.turn_angle_deg);
     } else {  // an infeasible candidate is never returned as a result
         CHECK(path.empty());
+        CHECK(j.at("polyline").items.empty());
         CHECK(j.at("objective_value").kind == JsonValue::Kind::null);
     }
     if (oracle) {
