@@ -284,9 +284,9 @@ JsonValue check_path_json(const std::string& text, const Grid& grid, XY start, X
     INFO("output: " << text.substr(0, 600));
     const JsonValue j = parse_json(text);
     REQUIRE(j.kind == JsonValue::Kind::object);
-    std::vector<std::string> expected = {"algo",        "objective",  "encoding", "seed",
-                                         "feasible",    "path",       "metrics",  "objective_value",
-                                         "evaluations", "iterations", "wall_ms",  "history", "polyline"};
+    std::vector<std::string> expected = {"algo",    "objective", "encoding",        "seed",        "feasible",
+                                         "path",    "metrics",   "objective_value", "evaluations", "iterations",
+                                         "wall_ms", "history",   "polyline"};
     if (j.has("feasible") && j.at("feasible").boolean) expected.push_back("path_metrics");
     if (oracle) expected.push_back("optimum");
     auto keys = j.keys(), sorted_expected = expected;

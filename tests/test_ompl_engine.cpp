@@ -32,10 +32,9 @@ bool ompl_built() {
 
 engine::Problem wall_problem() {
     engine::GridSpec g;
-    g.map = std::make_shared<const grid::GridMap>(test::map_of({"..........", "..........", "....#.....",
-                                                                 "....#.....", "....#.....", "....#.....",
-                                                                 "....#.....", "..........", "..........",
-                                                                 ".........."}));
+    g.map = std::make_shared<const grid::GridMap>(
+        test::map_of({"..........", "..........", "....#.....", "....#.....", "....#.....", "....#.....", "....#.....",
+                      "..........", "..........", ".........."}));
     g.start = {1, 4};
     g.goal = {8, 4};
     g.objective = "length";
@@ -120,8 +119,9 @@ TEST_CASE("ompl engine: merges and reports compare OMPL runs by definition, othe
     if (!ompl_built()) return;
     const test::TempDir dir;
     const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
-    const std::string toml = dir.write(
-        "c.toml", "name = \"o\"\nseeds = 1\n[budget]\nevaluations = 2000\n[[problem]]\nid = \"g\"\ntype = \"grid\"\n"
+    const std::string toml =
+        dir.write("c.toml",
+                  "name = \"o\"\nseeds = 1\n[budget]\nevaluations = 2000\n[[problem]]\nid = \"g\"\ntype = \"grid\"\n"
                   "map = \"" +
                       map +
                       "\"\nstart = [0, 0]\ngoal = [9, 9]\nobjective = \"length\"\n[[algorithm]]\nid = \"rrt\"\n"

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "cli_runner.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "experiment/html/page_store.hpp"
 #include "framework/error.hpp"
 #include "grid_support.hpp"
 #include "json_reader.hpp"
@@ -168,10 +170,10 @@ TEST_CASE("polyline planners: pride path prints the polyline, its metrics and ga
     CHECK(line.front().items[0].number == 0.0);
     CHECK(line.back().items[1].number == 9.0);
     const test::JsonValue& m = v.at("path_metrics");
-    CHECK(m.keys() == std::vector<std::string>{"length", "turns", "total_turn_deg", "max_turn_deg",
-                                                "angle_over_length", "max_curvature", "min_clearance",
-                                                "mean_clearance", "shortest_grid_length",
-                                                "shortest_any_angle_length", "grid_gap", "any_angle_gap"});
+    CHECK(m.keys() == std::vector<std::string>{"length", "turns", "total_turn_deg", "max_turn_deg", "angle_over_length",
+                                               "max_curvature", "min_clearance", "mean_clearance",
+                                               "shortest_grid_length", "shortest_any_angle_length", "grid_gap",
+                                               "any_angle_gap"});
     CHECK(m.at("length").number == v.at("objective_value").number);
     CHECK(m.at("grid_gap").number < 0.0);  // shorter than any 8-connected path
     CHECK(m.at("any_angle_gap").number >= 0.0);
@@ -203,8 +205,9 @@ TEST_CASE("polyline planners: a campaign stores every path's metrics and a polyl
           "[polyline][planners][bench]") {
     const test::TempDir dir;
     const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
-    const std::string toml = dir.write(
-        "c.toml", "name = \"paths\"\nseeds = 2\n[budget]\nevaluations = 200\n[[problem]]\nid = \"g\"\ntype = "
+    const std::string toml =
+        dir.write("c.toml",
+                  "name = \"paths\"\nseeds = 2\n[budget]\nevaluations = 200\n[[problem]]\nid = \"g\"\ntype = "
                   "\"grid\"\nmap = \"" +
                       map +
                       "\"\nstart = [0, 0]\ngoal = [9, 9]\nobjective = \"length\"\npath_gaps = true\n"
@@ -233,9 +236,25 @@ TEST_CASE("polyline planners: a campaign stores every path's metrics and a polyl
     REQUIRE(report.status == 0);
     CHECK_THAT(report.out, Contains("Paths on grids, per algorithm") && Contains("| g | theta | 2/2 | 13.07 |") &&
                                Contains("| g | astar | 2/2 | 13.9 |"));
-    test::expect_input_error("bench '" +
-                                 dir.write("bad.toml", test::slurp(toml).replace(test::slurp(toml).find("path_gaps = true"),
-                                                                                 16, "path_gaps = 2")) +
-                                 "' --out '" + dir.file("bad.sqlite") + "'",
-                             {"bad.toml:12", "'path_gaps' must be true or false"});
+    // The HTML report: the same table, and the best paths drawn, the polyline planner's among them.
+    const auto html = test::run_pride("report '" + store + "' --html '" + dir.file("html") + "'");
+    INFO(html.err);
+    REQUIRE(html.status == 0);
+    const std::string page = test::slurp(dir.file("html/index.html"));
+    CHECK_THAT(page, Contains("Paths on grids, per algorithm") && Contains("<td>theta</td><td class=\"n\">2/2</td>"));
+    CHECK(std::filesystem::exists(dir.file("html/paths-g.svg")));
+    // What the picture draws: each algorithm's best path, Theta*'s as its polyline (runs.polyline).
+    const html::PageStore extra = html::read_page_store(store);
+    REQUIRE(extra.best_paths.size() == 3);
+    for (const html::BestPath& b : extra.best_paths) {
+        INFO(b.algorithm);
+        CHECK(b.path.empty() == (b.algorithm == "theta"));
+        CHECK(b.polyline.empty() == (b.algorithm != "theta"));
+    }
+    test::expect_input_error(
+        "bench '" +
+            dir.write("bad.toml",
+                      test::slurp(toml).replace(test::slurp(toml).find("path_gaps = true"), 16, "path_gaps = 2")) +
+            "' --out '" + dir.file("bad.sqlite") + "'",
+        {"bad.toml:12", "'path_gaps' must be true or false"});
 }

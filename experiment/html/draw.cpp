@@ -140,7 +140,7 @@ Rgba colour_of(std::size_t i, std::size_t n, const std::vector<Rgb>& colours) {
 /// Several paths, each in its own colour (by default from blue for the first to red for the last),
 /// half transparent so that shared stretches show as darker.
 void paint_many(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal,
-                const std::vector<grid::Path>& paths, const std::vector<Rgb>& colours, double cell) {
+                const std::vector<grid::Polyline>& paths, const std::vector<Rgb>& colours, double cell) {
     paint_map(cr, map, cell);
     for (std::size_t i = 0; i < paths.size(); ++i) {
         const Rgba c = colour_of(i, paths.size(), colours);
@@ -197,6 +197,15 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
                      const std::vector<std::string>& labels, OutputFiles::File& file, PictureFormat format,
                      const std::vector<Rgb>& colours) {
+    std::vector<grid::Polyline> lines;
+    lines.reserve(paths.size());
+    for (const grid::Path& p : paths) lines.push_back(grid::polyline_of(p));
+    draw_grid_paths(map, start, goal, lines, labels, file, format, colours);
+}
+
+void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal,
+                     const std::vector<grid::Polyline>& paths, const std::vector<std::string>& labels,
+                     OutputFiles::File& file, PictureFormat format, const std::vector<Rgb>& colours) {
     std::vector<Entry> legend{{kStart, true, "start"}, {kGoal, true, "goal"}};
     // A long front: its first and last paths named, the rest said in one line (colours run in order).
     const std::size_t n = paths.size(), shown = n > 10 ? 4 : n;

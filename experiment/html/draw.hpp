@@ -37,6 +37,10 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
                      const std::vector<std::string>& labels, OutputFiles::File& file, PictureFormat format,
                      const std::vector<Rgb>& colours = {});
+/// The same with polylines (cell (i, j)'s centre at (i, j)): chains and polyline planners' paths.
+void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal,
+                     const std::vector<grid::Polyline>& paths, const std::vector<std::string>& labels,
+                     OutputFiles::File& file, PictureFormat format, const std::vector<Rgb>& colours = {});
 
 /// The height in pixels of a legend of `entries` lines under a map drawn `width` pixels wide.
 double legend_height(std::size_t entries);

@@ -234,11 +234,13 @@ PageStore read_page_store(const std::string& path) {
             out.grids.push_back(g);
         }
     }
+    // runs.polyline: a polyline planner's path (store schema 5), NULL for chains and older stores.
+    const std::string polyline = db.has_column("runs", "polyline") ? "r.polyline" : "NULL";
     Reader::Statement best(db,
-                           "SELECT r.problem, r.algorithm, r.seed, r.best, r.optimum, r.solution FROM runs r JOIN "
-                           "problems p ON p.id = r.problem WHERE p.type = 'grid' AND r.feasible = 1 AND r.best IS NOT "
-                           "NULL AND coalesce(substr(r.solution, 1, 1), '') <> '{' ORDER BY r.problem, r.algorithm, "
-                           "r.best, r.seed");
+                           "SELECT r.problem, r.algorithm, r.seed, r.best, r.optimum, r.solution, " + polyline +
+                               " FROM runs r JOIN problems p ON p.id = r.problem WHERE p.type = 'grid' AND r.feasible "
+                               "= 1 AND r.best IS NOT NULL AND coalesce(substr(r.solution, 1, 1), '') <> '{' ORDER BY "
+                               "r.problem, r.algorithm, r.best, r.seed");
     while (best.step()) {
         BestPath b;
         b.problem = best.text(0);
@@ -265,6 +267,24 @@ PageStore read_page_store(const std::string& path) {
             if (!ok || x < -(1 << 30) || x > (1 << 30) || y < -(1 << 30) || y > (1 << 30))
                 throw report::DamagedStore(path, row + ": expected a JSON list of [x, y] cells");
             b.path.push_back({static_cast<int>(x), static_cast<int>(y)});
+        }
+        if (!best.null(6)) {
+            const std::string line_row = fmt::format(
+                "runs row (problem '{}', algorithm '{}', seed {}), column polyline", b.problem, b.algorithm, b.seed);
+            Reader::Statement points(db,
+                                     "SELECT json_type(value), json_array_length(value), json_type(value, '$[0]'), "
+                                     "json_type(value, '$[1]'), json_extract(value, '$[0]'), json_extract(value, "
+                                     "'$[1]') FROM json_each(?1)");
+            const std::string text = best.text(6);
+            sqlite3_bind_text(points.get(), 1, text.c_str(), -1, SQLITE_TRANSIENT);
+            const auto number = [](const std::string& type) { return type == "integer" || type == "real"; };
+            while (points.step(line_row)) {
+                const double x = sqlite3_column_double(points.get(), 4), y = sqlite3_column_double(points.get(), 5);
+                if (points.text(0) != "array" || sqlite3_column_int64(points.get(), 1) != 2 ||
+                    !number(points.text(2)) || !number(points.text(3)) || !(std::abs(x) <= 1e9 && std::abs(y) <= 1e9))
+                    throw report::DamagedStore(path, line_row + ": expected a JSON list of [x, y] points");
+                b.polyline.push_back({x, y});
+            }
         }
         out.best_paths.push_back(std::move(b));
     }

@@ -10,6 +10,7 @@
 #include "framework/problem.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/polyline.hpp"
 
 namespace pride::html {
 
@@ -31,6 +32,7 @@ struct BestPath {
     double value = 0;
     std::optional<double> optimum;  // the exact optimum, when the campaign had it computed
     grid::Path path;
+    grid::Polyline polyline;  // a polyline planner's path (runs.polyline; `path` is then empty)
 };
 
 /// A multi-objective run's front as stored (experiment/campaign.cpp, engine::front_json).

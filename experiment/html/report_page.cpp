@@ -224,6 +224,26 @@ std::string results_section(const ReportData& r) {
                            : "");
         h += "</table>\n";
     }
+    if (!r.paths.empty()) {
+        // The markdown report's table of paths, the same rows.
+        h += "<p>Paths on grids, per algorithm, scored alike whoever planned them (docs/grid.md, \"Polylines and "
+             "their metrics\"): the runs that found a path, then medians over them of the length, turns, total turn "
+             "(degrees), angle over length (rad per cell), maximum curvature (1/cell), minimum and mean clearance "
+             "(cells) and, with the problem's <code>path_gaps</code>, the gaps to the shortest grid and any-angle "
+             "lengths; the median planning time over all runs.</p>\n<div class=\"wide\"><table>\n<tr><th>problem</th>"
+             "<th>algorithm</th><th class=\"n\">found</th><th class=\"n\">length</th><th class=\"n\">turns</th><th "
+             "class=\"n\">turn deg</th><th class=\"n\">AOL</th><th class=\"n\">max curv.</th><th class=\"n\">min "
+             "clear.</th><th class=\"n\">mean clear.</th><th class=\"n\">grid gap</th><th class=\"n\">any-angle "
+             "gap</th><th class=\"n\">median ms</th></tr>\n";
+        for (const auto& x : r.paths) {
+            h += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"n\">{}/{}</td>", escape(x.problem),
+                             escape(x.algorithm), x.found, x.runs);
+            for (const auto& m : x.medians)
+                h += m ? fmt::format("<td class=\"n\">{:.4g}</td>", *m) : std::string("<td class=\"n\">-</td>");
+            h += fmt::format("<td class=\"n\">{:.3f}</td></tr>\n", x.median_wall_ms);
+        }
+        h += "</table></div>\n";
+    }
     return h + "</section>\n";
 }
 
@@ -523,11 +543,11 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
         if (b.problem == problem) best.push_back(&b);
     const auto map = picture_map(page, &*info);
     if (!map) return;
-    std::vector<grid::Path> paths;
+    std::vector<grid::Polyline> paths;
     std::vector<std::string> labels;
     std::vector<Rgb> colours;
     for (const BestPath* b : best) {
-        paths.push_back(b->path);
+        paths.push_back(b->polyline.empty() ? grid::polyline_of(b->path) : b->polyline);
         std::string label = fmt::format("{}: {} (seed {})", b->algorithm, num(b->value), b->seed);
         if (b->optimum) label += fmt::format(", exact optimum {}", num(*b->optimum));
         labels.push_back(label);
