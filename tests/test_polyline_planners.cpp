@@ -5,6 +5,8 @@
 // shortest grid and any-angle lengths; pride path's JSON and text; campaign stores and the report.
 #include <catch2/catch.hpp>
 
+#include <sqlite3.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -251,6 +253,20 @@ TEST_CASE("polyline planners: a campaign stores every path's metrics and a polyl
         CHECK(b.path.empty() == (b.algorithm == "theta"));
         CHECK(b.polyline.empty() == (b.algorithm != "theta"));
     }
+    // Damaged path columns are one-line errors naming the run and the column.
+    const std::string damaged = dir.file("damaged.sqlite");
+    std::filesystem::copy_file(store, damaged);
+    const auto edit = [&](const char* sql) {
+        sqlite3* db = nullptr;
+        REQUIRE(sqlite3_open(damaged.c_str(), &db) == SQLITE_OK);
+        CHECK(sqlite3_exec(db, sql, nullptr, nullptr, nullptr) == SQLITE_OK);
+        sqlite3_close(db);
+    };
+    edit("UPDATE runs SET polyline = '[[1]]' WHERE algorithm = 'theta' AND seed = 1");
+    test::expect_input_error("report '" + damaged + "' --html '" + dir.file("damaged-html") + "'",
+                             {"algorithm 'theta', seed 1), column polyline: expected a JSON list of [x, y] points"});
+    edit("UPDATE runs SET path_metrics = '{\"length\": \"x\"}' WHERE algorithm = 'astar' AND seed = 2");
+    test::expect_input_error("report '" + damaged + "'", {"seed 2)", "path_metrics: length", "expected a number"});
     test::expect_input_error(
         "bench '" +
             dir.write("bad.toml",

@@ -233,7 +233,7 @@ PROBLEM_KEYS = [
 def test_every_key_of_a_campaign_entry_of_a_wrong_type_is_named(tmp_path):
     mfile = map_file(tmp_path)
     for valid, keys in PROBLEM_KEYS + [({"id": "m", "grid": mfile, "start": (0, 0), "goal": (3, 3)},
-                                        dict(inflate=["1", 1.5], grid=[b"m.map"], unknown_free=["yes", 1]))]:
+                                        dict(inflate=["1", 1.5], grid=[b"m.map"], unknown_free=["yes", 1], path_gaps=["yes", 1]))]:
         campaign(problems=[valid])  # the valid entry is taken
         for key, wrong in keys.items():
             name = "lambda" if key == "lambda_" else key
