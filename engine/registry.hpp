@@ -44,7 +44,13 @@ using BoxObserver = std::function<void(const IterationView&)>;
 struct GridSolution {
     grid::Path path;
     grid::Polyline polyline;
+    /// The polyline's points as the planner checked them (any_angle.hpp's plane, cell (x, y) =
+    /// [x, x + 1] x [y, y + 1]), when it has them: the engine checks these, not a conversion.
+    std::vector<grid::Point> plane;
     std::int64_t work = 0;
+    /// The planner's own time when it measures it (OMPL's: without waiting for its lock); else the
+    /// engine's clock around the call.
+    std::optional<double> planning_ms;
 };
 
 struct AlgorithmEntry {

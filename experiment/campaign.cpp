@@ -1083,7 +1083,10 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     Budget with_targets = budget_of(budget, p);
     if (optimum)
         for (const double precision : coco_precisions()) with_targets.recorded_targets.push_back(*optimum + precision);
-    r.max_evaluations = with_targets.evaluations;
+    // A whole-map planner has no evaluation budget: its work (A*'s expansions, Theta*'s) is not
+    // bounded by the campaign's, so no budget is recorded beside it.
+    const AlgorithmEntry* entry = algorithms().find(a.spec.name);
+    if (!entry || entry->evaluates()) r.max_evaluations = with_targets.evaluations;
     if (optimum && with_targets.evaluations)
         with_targets.recorded_evaluations = report::cec::recorded_evaluations(
             *with_targets.evaluations, static_cast<std::int64_t>(std::max<std::size_t>(p.problem->dimension(), 1)));
@@ -1091,7 +1094,9 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     if (result.grid) {
         r.feasible = result.grid->feasible;
         r.best = r.feasible ? result.grid->value : std::numeric_limits<double>::infinity();
-        r.optimum = result.grid->optimum;
+        // The 8-connected optimum is no optimum of a polyline (shorter ones exist): a polyline
+        // planner's run records none, so that reports compare it by its path gaps instead.
+        if (!entry || !entry->plans_polylines) r.optimum = result.grid->optimum;
         r.solution = json_cells(result.grid->path);
         r.encoding = result.grid->encoding;
         if (r.feasible) {

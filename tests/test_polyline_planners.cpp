@@ -17,6 +17,7 @@
 #include "cli_runner.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "engine/targets.hpp"
 #include "experiment/html/page_store.hpp"
 #include "framework/error.hpp"
 #include "grid_support.hpp"
@@ -273,4 +274,82 @@ TEST_CASE("polyline planners: a campaign stores every path's metrics and a polyl
                       test::slurp(toml).replace(test::slurp(toml).find("path_gaps = true"), 16, "path_gaps = 2")) +
             "' --out '" + dir.file("bad.sqlite") + "'",
         {"bad.toml:12", "'path_gaps' must be true or false"});
+}
+
+namespace {
+
+// A polyline planner that cuts through the obstacles: straight from start to goal whatever lies
+// between (what a faulty planner would return). The engine must never report it as a path.
+const engine::Registration straight_line{[] {
+    engine::AlgorithmEntry e;
+    e.name = "test-straight-line";
+    e.family = "test";
+    e.summary = "tests only: the straight segment from start to goal, obstacles or not";
+    e.plans_polylines = true;
+    e.solve_grid = [](const engine::GridTarget& target) {
+        return std::visit(
+            [](const auto& g) {
+                engine::GridSolution s;
+                s.polyline = {{double(g.start().x), double(g.start().y)}, {double(g.goal().x), double(g.goal().y)}};
+                return s;
+            },
+            target.problem);
+    };
+    return e;
+}()};
+
+}  // namespace
+
+TEST_CASE("polyline planners: a polyline through an obstacle is never reported as a path", "[polyline][planners]") {
+    engine::GridSpec g;
+    g.map = std::make_shared<const grid::GridMap>(test::map_of({".....", "..@..", "....."}));
+    g.start = {0, 1};
+    g.goal = {4, 1};
+    g.objective = "length";
+    const auto blocked = run_named("test-straight-line", engine::Problem(g));
+    CHECK_FALSE(blocked.grid->feasible);
+    CHECK(blocked.grid->polyline.empty());
+    CHECK(std::isinf(blocked.best_f));
+    g.map = std::make_shared<const grid::GridMap>(test::map_of({".....", ".....", "....."}));
+    const auto free = run_named("test-straight-line", engine::Problem(g));
+    CHECK(free.grid->feasible);
+    CHECK(free.best_f == 4.0);
+}
+
+TEST_CASE("polyline planners: whole-map work beyond a campaign's budget, and stores of schema 4, are reported",
+          "[polyline][planners][bench]") {
+    const test::TempDir dir;
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string toml =
+        dir.write("w.toml",
+                  "name = \"w\"\nseeds = 1\n[budget]\nevaluations = 5\n[[problem]]\nid = \"g\"\ntype = \"grid\"\n"
+                  "map = \"" +
+                      map +
+                      "\"\nstart = [0, 19]\ngoal = [19, 0]\nobjective = \"length\"\n[[algorithm]]\nid = \"astar\"\n"
+                      "type = \"astar\"\n[[algorithm]]\nid = \"theta\"\ntype = \"theta-star\"\n[[algorithm]]\nid = "
+                      "\"exact\"\ntype = \"any-angle-exact\"\n");
+    const std::string store = dir.file("w.sqlite");
+    REQUIRE(test::run_pride("bench '" + toml + "' --out '" + store + "'").status == 0);
+    // Their work (expansions, segment tests) is far beyond 5 evaluations: no budget is recorded
+    // beside it, and the report reads the store.
+    const auto report = test::run_pride("report '" + store + "'");
+    INFO(report.err);
+    REQUIRE(report.status == 0);
+    // Theta* records no 8-connected optimum: a polyline has no gap to it in the main table.
+    CHECK_THAT(report.out, Contains("| g | theta | 1/1 |"));
+    // A store of schema 4 (before the path columns) gains them on its next bench, and reports.
+    const auto edit = [&](const char* sql) {
+        sqlite3* db = nullptr;
+        REQUIRE(sqlite3_open(store.c_str(), &db) == SQLITE_OK);
+        CHECK(sqlite3_exec(db, sql, nullptr, nullptr, nullptr) == SQLITE_OK);
+        sqlite3_close(db);
+    };
+    edit(
+        "ALTER TABLE runs DROP COLUMN path_metrics; ALTER TABLE runs DROP COLUMN polyline; ALTER TABLE algorithms "
+        "DROP COLUMN reproducible; PRAGMA user_version = 4");
+    CHECK(test::run_pride("report '" + store + "'").status == 0);
+    REQUIRE(test::run_pride("bench '" + toml + "' --out '" + store + "'").status == 0);
+    const auto again = test::run_pride("report '" + store + "' --html '" + dir.file("html") + "'");
+    INFO(again.err);
+    CHECK(again.status == 0);
 }

@@ -59,7 +59,10 @@ void register_any_angle(AlgorithmRegistry& registry) {
                 grid::AnyAngleOracle oracle(g.map());
                 std::vector<grid::Point> points;
                 GridSolution s;
-                if (oracle.solve(g.start(), g.goal(), &points) >= 0.0) s.polyline = grid::polyline_of(points);
+                if (oracle.solve(g.start(), g.goal(), &points) >= 0.0) {
+                    s.polyline = grid::polyline_of(points);
+                    s.plane = std::move(points);
+                }
                 s.work = oracle.segment_tests();
                 return s;
             },

@@ -488,8 +488,8 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
             std::vector<double> wall;
             for (const StoredRun* run : runs) {
                 wall.push_back(run->wall_ms);
+                if (run->best) ++r.found;  // a path found (runs stored before path metrics too)
                 if (run->path_metrics.empty()) continue;
-                ++r.found;
                 for (std::size_t k = 0; k < values.size(); ++k)
                     if (run->path_metrics[k]) values[k].push_back(*run->path_metrics[k]);
             }

@@ -54,7 +54,7 @@ Point point_of(const ob::State* s) {
 struct Budget {
     std::int64_t max_checks = 0;
     std::atomic<std::int64_t> states{0}, motions{0};
-    std::atomic<bool> lifted{false};  // for the simplifier, which runs outside the budget
+    std::atomic<bool> lifted{false};  // for the simplifier under a time budget alone
 
     bool spent() const noexcept { return max_checks > 0 && states + motions >= max_checks; }
     /// Counts one check of that kind, or refuses it when the budget is spent.
@@ -218,7 +218,10 @@ OmplOutcome plan_with_ompl(const GridMap& map, Cell start, Cell goal, const Ompl
     ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(request.seed % 2147483562u) + 1u);
 
     Budget budget;
-    budget.max_checks = request.max_checks;
+    // With simplify, a tenth of a check budget is kept for the simplifier, so that planning and
+    // simplifying together stay within it.
+    budget.max_checks =
+        request.simplify && request.max_checks > 0 ? request.max_checks - request.max_checks / 10 : request.max_checks;
 
     auto space = std::make_shared<ob::RealVectorStateSpace>(2);
     ob::RealVectorBounds bounds(2);
@@ -273,7 +276,10 @@ OmplOutcome plan_with_ompl(const GridMap& map, Cell start, Cell goal, const Ompl
     auto path = std::dynamic_pointer_cast<og::PathGeometric>(pdef->getSolutionPath());
     if (!path || path->getStateCount() < 2) return out;
     if (request.simplify) {
-        budget.lifted = true;
+        if (request.max_checks > 0)
+            budget.max_checks = request.max_checks;  // the kept tenth; a refused check only keeps a segment
+        else
+            budget.lifted = true;
         const std::int64_t before = budget.states + budget.motions;
         og::PathSimplifier(si).simplifyMax(*path);
         out.simplify_checks = budget.states + budget.motions - before;

@@ -4,8 +4,8 @@
 // valid when segment_is_free, so every returned segment is free by pride's rules. The objective is
 // the path's length; the planner runs until its budget ends and the result is its best path then.
 //
-// Built only when OMPL is found (PRIDE_HAVE_OMPL, defined for users of pride_grid); this header
-// includes no OMPL header.
+// Built only when OMPL is found (CMake's PRIDE_HAVE_OMPL; the code that calls it, the engine's
+// ompl.cpp and its tests, is compiled only then); this header includes no OMPL header.
 //
 // Budget: checks, time or both. Every state and motion validity check counts one (a motion check
 // is one call, however long the segment); once max_checks have been made, further checks answer
@@ -36,7 +36,7 @@ struct OmplRequest {
     std::string planner;          // one of ompl_planner_names()
     double time_limit_s = 0.0;    // 0: no time limit
     std::int64_t max_checks = 0;  // budget in state and motion validity checks (0: none); at least one budget
-    bool simplify = false;        // OMPL's PathSimplifier::simplifyMax on the solution (outside the budget)
+    bool simplify = false;  // OMPL's PathSimplifier::simplifyMax on the solution (a tenth of max_checks kept for it)
     std::uint64_t seed = 1;
 };
 
