@@ -325,3 +325,12 @@ TEST_CASE("bbob: evaluate does not allocate", "[bbob]") {
         CHECK(std::isfinite(sum));
     });
 }
+
+TEST_CASE("bbob: f23's table of powers of two has the bits of std::pow(2, j) it replaced", "[bbob]") {
+    using pride::continuous::bbob::F23;
+    for (int j = 0; j <= 32; ++j) {
+        INFO("j = " << j);
+        CHECK(F23::powers_of_two[static_cast<std::size_t>(j)] == std::pow(2.0, static_cast<double>(j)));
+        CHECK(F23::powers_of_two[static_cast<std::size_t>(j)] == std::ldexp(1.0, j));
+    }
+}

@@ -2,6 +2,7 @@
 // BBOB f20-f24, multimodal functions with weak global structure (Hansen, Finck, Ros, Auger 2009,
 // INRIA RR-6829, f20-f24).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <span>
@@ -140,6 +141,17 @@ class F22 : public Gallagher {
 class F23 : public BbobFunction {
   public:
     static constexpr int id = 23;
+    /// 2^j for j = 0..32, made once: the same bits as std::pow(2.0, j) (powers of two are exact),
+    /// which COCO calls 32 D times per evaluation (issue 30: 5x faster than the calls).
+    static constexpr std::array<double, 33> powers_of_two = [] {
+        std::array<double, 33> p{};
+        double v = 1.0;
+        for (double& e : p) {
+            e = v;
+            v *= 2.0;
+        }
+        return p;
+    }();
     static constexpr FunctionInfo info{"bbob-f23", "Katsuura (rugged, repetitive)", -5.0, 5.0, 2, unknown, unknown};
     F23(std::size_t dim, std::int64_t instance)
         : BbobFunction(dim, instance, info, id),
@@ -159,7 +171,7 @@ class F23 : public BbobFunction {
         for (std::size_t i = 0; i < n; ++i) {
             double sum = 0.0;
             for (int j = 1; j < 33; ++j) {
-                const double power = std::pow(2.0, static_cast<double>(j));
+                const double power = powers_of_two[static_cast<std::size_t>(j)];
                 const double scaled = power * z_[i];
                 sum += std::fabs(scaled - std::floor(scaled + 0.5)) / power;
             }
