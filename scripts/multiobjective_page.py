@@ -211,31 +211,8 @@ def blocks(data=DATA):
 
 
 def check(data=DATA, page=PAGE):
-    found = rp.page_blocks(page.read_text())
-    want = blocks(data)
-    return [(n, want.get(n), found.get(n)) for n in sorted(set(found) | set(want)) if want.get(n) != found.get(n)]
-
-
-def render():
-    PAGE.write_text(rp.replace_blocks(PAGE.read_text(), blocks()))
-
-
-def main(argv):
-    if argv[1:] == ["run"]:
-        run_all()
-        render()
-    elif argv[1:] == ["render"]:
-        render()
-    elif argv[1:] == ["check"]:
-        diffs = check()
-        for name, want, got in diffs:
-            print(f"block {name} differs from what the data give", file=sys.stderr)
-        return 1 if diffs else 0
-    else:
-        print(__doc__, file=sys.stderr)
-        return 2
-    return 0
+    return rp.check_page(blocks(data), page)
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    sys.exit(rp.page_main(sys.argv, __doc__, run_all, blocks, PAGE))

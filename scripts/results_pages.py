@@ -652,3 +652,29 @@ def main(argv):
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))
+
+
+def check_page(want, page):
+    """The generated blocks of `page` (a path) that differ from `want` ({name: content}):
+    [(name, wanted, found)]."""
+    found = page_blocks(page.read_text())
+    return [(n, want.get(n), found.get(n)) for n in sorted(set(found) | set(want)) if want.get(n) != found.get(n)]
+
+
+def page_main(argv, doc, run_all, blocks, page):
+    """The command line of a generated results page: `run` (run_all, then render), `render` (the
+    page's blocks from the data) or `check` (exit 1 when a block differs from what the data give)."""
+    if argv[1:] == ["run"]:
+        run_all()
+        page.write_text(replace_blocks(page.read_text(), blocks()))
+    elif argv[1:] == ["render"]:
+        page.write_text(replace_blocks(page.read_text(), blocks()))
+    elif argv[1:] == ["check"]:
+        diffs = check_page(blocks(), page)
+        for name, _, _ in diffs:
+            print(f"block {name} differs from what the data give", file=sys.stderr)
+        return 1 if diffs else 0
+    else:
+        print(doc, file=sys.stderr)
+        return 2
+    return 0
