@@ -189,6 +189,26 @@ void read_front(const Reader& db, const std::string& solution, StoredFront& out)
 
 }  // namespace
 
+/// Calls each(x, y) for every [x, y] of a JSON list, read by SQLite's JSON functions: integers
+/// (cells) or any numbers (points), each within 1e9; else DamagedStore naming `where`.
+template <class Each>
+void for_each_pair(Reader& db, const std::string& json, const std::string& path, const std::string& where,
+                   const char* what, bool integers, Each each) {
+    Reader::Statement pairs(db,
+                            "SELECT json_type(value), json_array_length(value), json_type(value, '$[0]'), "
+                            "json_type(value, '$[1]'), json_extract(value, '$[0]'), json_extract(value, '$[1]') "
+                            "FROM json_each(?1)");
+    sqlite3_bind_text(pairs.get(), 1, json.c_str(), -1, SQLITE_TRANSIENT);
+    const auto ok_type = [&](const std::string& type) { return type == "integer" || (!integers && type == "real"); };
+    while (pairs.step(where)) {
+        const double x = sqlite3_column_double(pairs.get(), 4), y = sqlite3_column_double(pairs.get(), 5);
+        if (pairs.text(0) != "array" || sqlite3_column_int64(pairs.get(), 1) != 2 || !ok_type(pairs.text(2)) ||
+            !ok_type(pairs.text(3)) || !(std::abs(x) <= 1e9 && std::abs(y) <= 1e9))
+            throw report::DamagedStore(path, where + ": expected a JSON list of [x, y] " + what);
+        each(x, y);
+    }
+}
+
 PageStore read_page_store(const std::string& path) {
     Reader db(path);
     PageStore out;
@@ -251,41 +271,16 @@ PageStore read_page_store(const std::string& path) {
         b.seed = sqlite3_column_int64(best.get(), 2);
         b.value = sqlite3_column_double(best.get(), 3);
         if (!best.null(4)) b.optimum = sqlite3_column_double(best.get(), 4);
-        const std::string row = fmt::format("runs row (problem '{}', algorithm '{}', seed {}), column solution",
-                                            b.problem, b.algorithm, b.seed);
-        // The path is a JSON list of [x, y] cells; SQLite's JSON functions read it.
-        Reader::Statement cells(db,
-                                "SELECT json_type(value), json_array_length(value), json_type(value, '$[0]'), "
-                                "json_type(value, '$[1]'), json_extract(value, '$[0]'), json_extract(value, '$[1]') "
-                                "FROM json_each(?1)");
-        const std::string solution = best.text(5);
-        sqlite3_bind_text(cells.get(), 1, solution.c_str(), -1, SQLITE_TRANSIENT);
-        while (cells.step(row)) {
-            const bool ok = cells.text(0) == "array" && sqlite3_column_int64(cells.get(), 1) == 2 &&
-                            cells.text(2) == "integer" && cells.text(3) == "integer";
-            const std::int64_t x = sqlite3_column_int64(cells.get(), 4), y = sqlite3_column_int64(cells.get(), 5);
-            if (!ok || x < -(1 << 30) || x > (1 << 30) || y < -(1 << 30) || y > (1 << 30))
-                throw report::DamagedStore(path, row + ": expected a JSON list of [x, y] cells");
+        const std::string row =
+            fmt::format("runs row (problem '{}', algorithm '{}', seed {}), column ", b.problem, b.algorithm, b.seed);
+        // The path, a JSON list of [x, y] cells, and a polyline planner's polyline, of [x, y] points.
+        for_each_pair(db, best.text(5), path, row + "solution", "cells", true, [&](double x, double y) {
             b.path.push_back({static_cast<int>(x), static_cast<int>(y)});
-        }
-        if (!best.null(6)) {
-            const std::string line_row = fmt::format(
-                "runs row (problem '{}', algorithm '{}', seed {}), column polyline", b.problem, b.algorithm, b.seed);
-            Reader::Statement points(db,
-                                     "SELECT json_type(value), json_array_length(value), json_type(value, '$[0]'), "
-                                     "json_type(value, '$[1]'), json_extract(value, '$[0]'), json_extract(value, "
-                                     "'$[1]') FROM json_each(?1)");
-            const std::string text = best.text(6);
-            sqlite3_bind_text(points.get(), 1, text.c_str(), -1, SQLITE_TRANSIENT);
-            const auto number = [](const std::string& type) { return type == "integer" || type == "real"; };
-            while (points.step(line_row)) {
-                const double x = sqlite3_column_double(points.get(), 4), y = sqlite3_column_double(points.get(), 5);
-                if (points.text(0) != "array" || sqlite3_column_int64(points.get(), 1) != 2 ||
-                    !number(points.text(2)) || !number(points.text(3)) || !(std::abs(x) <= 1e9 && std::abs(y) <= 1e9))
-                    throw report::DamagedStore(path, line_row + ": expected a JSON list of [x, y] points");
+        });
+        if (!best.null(6))
+            for_each_pair(db, best.text(6), path, row + "polyline", "points", false, [&](double x, double y) {
                 b.polyline.push_back({x, y});
-            }
-        }
+            });
         out.best_paths.push_back(std::move(b));
     }
     return out;
