@@ -228,7 +228,19 @@ TEST_CASE("docs: cli.md's generated tables are what pride list --markdown prints
     const auto r = pride::test::run_pride("list --markdown");
     REQUIRE(r.status == 0);
     INFO("regenerate: see docs/cli.md, `pride list`");
-    CHECK(doc.substr(from + begin.size(), to - from - begin.size()) == "\n" + r.out + "\n");
+    std::string shown = doc.substr(from + begin.size(), to - from - begin.size());
+    if (!engine::algorithms().find("ompl:RRTstar")) {
+        // A build without OMPL (the sanitized one) lists no ompl: entries: the doc's rows and
+        // parameter section of them, made where OMPL is built, are left out of the comparison.
+        std::string kept;
+        bool in_ompl_section = false;
+        for (const auto& line : lines_of(shown)) {
+            if (line.rfind("#### ", 0) == 0) in_ompl_section = line.rfind("#### `ompl:", 0) == 0;
+            if (!in_ompl_section && line.rfind("| `ompl:", 0) != 0) kept += line + "\n";
+        }
+        shown = kept;
+    }
+    CHECK(shown == "\n" + r.out + "\n");
 }
 
 TEST_CASE("docs: every command the docs show prints what they show", "[docs]") {
