@@ -22,7 +22,9 @@
 
 #include "framework/error.hpp"
 #include "framework/problem.hpp"
+#include "framework/random.hpp"
 #include "problems/continuous/bbob/suite.hpp"
+#include "problems/continuous/catalog.hpp"
 
 namespace bbob = pride::continuous::bbob;
 
@@ -333,4 +335,25 @@ TEST_CASE("bbob: f23's table of powers of two has the bits of std::pow(2, j) it 
         CHECK(F23::powers_of_two[static_cast<std::size_t>(j)] == std::pow(2.0, static_cast<double>(j)));
         CHECK(F23::powers_of_two[static_cast<std::size_t>(j)] == std::ldexp(1.0, j));
     }
+}
+
+TEST_CASE("bbob: the catalog's batch route gives the scalar route's bits on every function", "[bbob]") {
+    // f1's batch form interleaves two points' sums, and affine() sweeps columns (issue 30): both
+    // must keep COCO's order of operations, which the scalar route is tested against above. Odd
+    // and even numbers of points, so that f1's pairs and its last single point are both taken.
+    pride::Rng rng(11);
+    for (const std::int64_t dim : {2, 3, 10, 40})
+        for (int id = 1; id <= 24; ++id)
+            for (const Eigen::Index count : {1, 6, 7}) {
+                auto f = pride::continuous::make_function("bbob-f" + std::to_string(id), dim, 3);
+                pride::Matrix points(dim, count);
+                for (Eigen::Index j = 0; j < count; ++j)
+                    for (Eigen::Index i = 0; i < dim; ++i) points(i, j) = rng.uniform(-6.0, 6.0);
+                std::vector<double> batch(static_cast<std::size_t>(count));
+                f.evaluate_batch(points, batch);
+                for (Eigen::Index j = 0; j < count; ++j) {
+                    INFO("f" << id << " D = " << dim << " point " << j << " of " << count);
+                    CHECK(batch[static_cast<std::size_t>(j)] == f.evaluate(pride::column(points, j)));
+                }
+            }
 }

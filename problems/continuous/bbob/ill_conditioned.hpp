@@ -35,7 +35,7 @@ class F10 : public BbobFunction {
     }
 
   private:
-    RowMatrix r_;
+    AffineMatrix r_;
     std::vector<double> weight_;
     std::vector<double> shifted_;
     std::vector<double> z_;
@@ -62,7 +62,7 @@ class F11 : public BbobFunction {
     }
 
   private:
-    RowMatrix r_;
+    AffineMatrix r_;
     std::vector<double> shifted_;
     std::vector<double> z_;
 };
@@ -90,7 +90,7 @@ class F12 : public BbobFunction {
     }
 
   private:
-    RowMatrix r_;
+    AffineMatrix r_;
     std::vector<double> a_;
     std::vector<double> b_;
 };
@@ -121,7 +121,7 @@ class F13 : public BbobFunction {
     }
 
   private:
-    RowMatrix m_;
+    AffineMatrix m_;
     std::vector<double> shifted_;
     std::vector<double> z_;
 };
@@ -151,7 +151,7 @@ class F14 : public BbobFunction {
     }
 
   private:
-    RowMatrix r_;
+    AffineMatrix r_;
     std::vector<double> exponent_;
     std::vector<double> shifted_;
     std::vector<double> z_;

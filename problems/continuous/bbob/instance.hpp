@@ -14,6 +14,8 @@ namespace pride::continuous::bbob {
 
 /// Dense matrix, row-major so that a row (one output coordinate) is contiguous in evaluate().
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+/// The matrix of an affine map (transforms.hpp's affine), stored by columns, which it sweeps.
+using AffineMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor>;
 
 /// Throws InputError("bbob-fN", ...) unless dim >= 2 and instance >= 1.
 void check_arguments(std::string_view name, std::size_t dim, std::int64_t instance);
@@ -47,7 +49,7 @@ std::vector<double> power_ramp(double base, std::size_t dim);
 
 /// Gallagher's peaks (f21: 101 peaks, f22: 21), as f_gallagher.c builds them.
 struct GallagherPeaks {
-    RowMatrix rotation;           // R
+    AffineMatrix rotation;        // R
     RowMatrix local;              // row p: R y_p (the peak's location, rotated)
     RowMatrix scales;             // row p: diagonal of C_p
     std::vector<double> heights;  // w_p

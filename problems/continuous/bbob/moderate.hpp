@@ -36,7 +36,7 @@ class F6 : public BbobFunction {
     }
 
   private:
-    RowMatrix m_;
+    AffineMatrix m_;
     std::vector<double> shifted_;
     std::vector<double> z_;
 };
@@ -81,7 +81,7 @@ class F7 : public BbobFunction {
     }
 
   private:
-    RowMatrix q_;
+    AffineMatrix q_;
     RowMatrix lambda_r_;  // Lambda^10 R, row i scaled as COCO does
     std::vector<double> weight_;
     std::vector<double> zhat_;
@@ -148,7 +148,7 @@ class F9 : public BbobFunction {
     }
 
   private:
-    RowMatrix m_;
+    AffineMatrix m_;
     std::vector<double> z_;
 };
 

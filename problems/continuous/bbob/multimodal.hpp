@@ -34,8 +34,8 @@ class F15 : public BbobFunction {
     }
 
   private:
-    RowMatrix r_;
-    RowMatrix m_;
+    AffineMatrix r_;
+    AffineMatrix m_;
     std::vector<double> a_;
     std::vector<double> b_;
 };
@@ -77,8 +77,8 @@ class F16 : public BbobFunction {
 
   private:
     static constexpr int terms = 12;
-    RowMatrix r_;
-    RowMatrix m_;
+    AffineMatrix r_;
+    AffineMatrix m_;
     double penalty_factor_;
     double amplitude_[terms]{};
     double frequency_[terms]{};
@@ -119,8 +119,8 @@ class SchaffersF7 : public BbobFunction {
     }
 
   private:
-    RowMatrix r_;
-    RowMatrix m_;
+    AffineMatrix r_;
+    AffineMatrix m_;
     std::vector<double> a_;
     std::vector<double> b_;
 };
@@ -177,7 +177,7 @@ class F19 : public BbobFunction {
     }
 
   private:
-    RowMatrix m_;
+    AffineMatrix m_;
     std::vector<double> a_;
     std::vector<double> z_;
 };

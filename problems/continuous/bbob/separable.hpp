@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "framework/problem.hpp"
 #include "problems/continuous/bbob/bbob_function.hpp"
 #include "problems/continuous/bbob/transforms.hpp"
 
@@ -23,6 +24,28 @@ class F1 : public BbobFunction {
         double f = 0.0;
         for (double v : z_) f += v * v;
         return f + f_opt_;
+    }
+    /// evaluate() on two points at a time, their sums interleaved: each is still one chain of
+    /// additions in COCO's order (the same bits), but the two chains overlap. Point by point, the
+    /// batch route was 1.2x slower than the scalar one at D = 40 (issue 30), the overlap of one
+    /// point's chain with the next depending on the code around the loop.
+    void evaluate_batch(MatrixView points, std::span<double> values) noexcept {
+        const auto n = static_cast<std::size_t>(points.rows());
+        const auto count = static_cast<std::size_t>(points.cols());
+        std::size_t j = 0;
+        for (; j + 1 < count; j += 2) {
+            const double* a = points.col(static_cast<Eigen::Index>(j)).data();
+            const double* b = points.col(static_cast<Eigen::Index>(j + 1)).data();
+            double fa = 0.0, fb = 0.0;
+            for (std::size_t i = 0; i < n; ++i) {
+                const double va = a[i] - x_opt_[i], vb = b[i] - x_opt_[i];
+                fa += va * va;
+                fb += vb * vb;
+            }
+            values[j] = fa + f_opt_;
+            values[j + 1] = fb + f_opt_;
+        }
+        if (j < count) values[j] = evaluate({points.col(static_cast<Eigen::Index>(j)).data(), n});
     }
 
   private:

@@ -52,15 +52,19 @@ inline void shift(std::span<const double> x, std::span<const double> offset, std
     for (std::size_t i = 0; i < x.size(); ++i) out[i] = x[i] - offset[i];
 }
 
-/// out = M x + b, each row summed from b in column order (transform_vars_affine.c); out != x.
-inline void affine(const RowMatrix& m, std::span<const double> x, std::span<double> out, double b = 0.0) noexcept {
-    const std::size_t n = x.size();
-    const double* row = m.data();
-    for (std::size_t i = 0; i < n; ++i, row += n) {
-        double sum = b;
-        for (std::size_t j = 0; j < n; ++j) sum += x[j] * row[j];
-        out[i] = sum;
-    }
+/// out = M x + b, each out[i] summed from b over j = 0, 1, ... in order: transform_vars_affine.c
+/// sums row i in the same order, so the bits are COCO's (no fused multiply-add: the build targets
+/// baseline x86-64, and Eigen uses FMA only where the compiler may). The sweep adds x[j] times
+/// column j (M is stored by columns) to every out[i] at once: D independent sums that vectorise,
+/// where the row-by-row loop was one chain of D dependent additions per row, whose speed depended on
+/// where the compiler placed it (the batch route was 1.3x slower than the scalar one at D = 40 on
+/// f6, f12 and f13: issue 30). Out of line, so the scalar and batch routes run this one copy.
+[[gnu::noinline]] inline void affine(const AffineMatrix& m, std::span<const double> x, std::span<double> out,
+                                     double b = 0.0) noexcept {
+    const auto n = static_cast<Eigen::Index>(x.size());
+    Eigen::Map<Eigen::VectorXd> sum(out.data(), n);
+    sum.setConstant(b);
+    for (Eigen::Index j = 0; j < n; ++j) sum += x[static_cast<std::size_t>(j)] * m.col(j);
 }
 
 /// Lambda^alpha as transform_vars_conditioning.c writes it: alpha^(0.5 i/(D-1)). COCO writes the

@@ -183,7 +183,7 @@ class F23 : public BbobFunction {
     }
 
   private:
-    RowMatrix m_;
+    AffineMatrix m_;
     double exponent_;
     std::vector<double> shifted_;
     std::vector<double> z_;
@@ -239,7 +239,7 @@ class F24 : public BbobFunction {
 
   private:
     static constexpr double mu0 = 2.5;
-    RowMatrix q_;
+    AffineMatrix q_;
     RowMatrix lambda_r_;  // Lambda^100 R, row i scaled as COCO does
     double s_;
     double mu1_;
