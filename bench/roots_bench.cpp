@@ -283,9 +283,21 @@ void timing(int rounds) {
     const FixedPower root16(1.0 / 16.0), root21(1.0 / 21.0);
     row("16th root: FixedPower::apply (4 square roots, 4 lanes)", [&](std::vector<double>& v) { root16.apply(v); });
 #ifdef PRIDE_ROOTS_AVX
-    if (detail::roots_avx_supported())
+    if (detail::roots_avx_supported()) {
         row("16th root: root16_float (8 lanes, 1 Halley step)",
             [&](std::vector<double>& v) { root16_float_avx(v.data(), v.size()); });
+        // The lanes' bits against the scalar form's (the claim that a value's bits do not depend
+        // on its lane), on the arguments and on 2^-40 .. 2^40.
+        std::vector<double> xs = args;
+        for (int e = -40; e <= 40; ++e) xs.push_back(std::ldexp(1.0 + 0.37 * (e + 40) / 80.0, e));
+        std::vector<double> lanes = xs;
+        root16_float_avx(lanes.data(), lanes.size());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < xs.size(); ++i)
+            differ += std::bit_cast<std::uint64_t>(lanes[i]) != std::bit_cast<std::uint64_t>(root16_float(xs[i]));
+        fmt::print("root16_float: values whose 8-lane bits differ from the scalar form's (of {}),{}\n", xs.size(),
+                   differ);
+    }
 #endif
     row("16th root: root_halley (scalar, 4 Halley steps)", [&](std::vector<double>& v) {
         for (double& x : v) x = root_halley(x, 16);
