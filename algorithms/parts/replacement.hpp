@@ -68,9 +68,10 @@ struct PlusReplacement {
     void operator()(std::span<const double> fp, std::span<const double> fc, std::span<std::size_t> chosen,
                     ReplacementScratch& scratch) const {
         // The parents come best first after every generation of this replacement (its own output
-        // order), so the children alone are sorted and then merged with them: the same order as the
-        // whole pool's sort (total: ties by index, so a parent goes before a child of equal value),
-        // at about half its cost (issue 30: the sort of 100 was a quarter of ga-plus's run).
+        // order); then only the children that can enter are sorted and merged with them: the same
+        // order as the whole pool's sort (total: ties by index, so a parent goes before a child of
+        // equal value), at a fraction of its cost (issue 30: that sort of 100 was a quarter of
+        // ga-plus's run at D = 30). Unsorted parents (the first generation) take the full sort.
         if (chosen.size() <= fp.size() && std::is_sorted(fp.begin(), fp.end())) {
             merge_children(fp, fc, chosen, scratch.order);
             return;
@@ -82,9 +83,10 @@ struct PlusReplacement {
     }
 
   private:
-    /// chosen = the best chosen.size() (<= fp.size()) of parents (sorted) and children, best first. Only children
-    /// strictly better than the worst parent can be among the first fp.size() (on a tie the parent's
-    /// lower index wins), so only those are sorted (ties by index): order holds their indices into fc.
+    /// chosen = the best chosen.size() (<= fp.size()) of the parents (sorted) and the children, best
+    /// first. Only children strictly better than the worst parent can be among the first fp.size()
+    /// (on a tie the parent's lower index wins), so only those are sorted, by (value, index), in
+    /// `order` (indices into fc), then merged with the parents.
     static void merge_children(std::span<const double> fp, std::span<const double> fc, std::span<std::size_t> chosen,
                                std::vector<std::size_t>& order) {
         const std::size_t n = fp.size();
