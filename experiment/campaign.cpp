@@ -5,7 +5,9 @@
 #include <atomic>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
+#include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <exception>
@@ -369,6 +371,8 @@ class Ledger {
     const std::vector<Task>& tasks() const { return tasks_; }
     const Budget& budget() const { return budget_; }
     std::size_t todo() const { return todo_.size(); }
+    /// The runs not yet looked at (to claim).
+    std::size_t left() const { return keys_.size() - cursor_; }
     std::size_t in_store() const { return already_ + stored_; }
 
     /// The next runs to do (task numbers), claimed in the store; empty when none is left that
@@ -441,39 +445,51 @@ class Ledger {
     std::vector<std::size_t> busy_;  // positions in keys_ another process held
 };
 
+/// Rank 0 and the other ranks look at their messages this often while they wait for one.
+constexpr auto kPoll = std::chrono::milliseconds(2);
 #ifdef PRIDE_HAVE_MPI
-/// Runs asked for per thread of a rank other than 0, at first: with two a thread finds its next
-/// run waiting instead of idling for a message round trip.
-constexpr std::int64_t kSlotsPerThread = 2;
-/// At most this many per thread: a rank whose threads still run dry (runs shorter than a round
-/// trip, which is up to two 1 ms polls) asks for one more run each time, up to here.
-constexpr std::int64_t kMaxSlotsPerThread = 32;
+/// A rank other than 0 holds about this much work per thread (by the mean time of its runs so far)
+/// and asks rank 0 for more, in one message, once it holds less than half of it: an answer comes
+/// within a few ms, so its threads never wait for a message round trip, and what a rank holds at
+/// the end stays short.
+constexpr double kAheadSeconds = 0.02;
+/// Runs held per thread before any has finished, and at most.
+constexpr std::int64_t kFirstPerThread = 2, kMaxPerThread = 64;
+/// Finished records travel together: with the next request, or at 64 records, or 20 ms after the
+/// oldest, whichever comes first.
+constexpr std::size_t kRecordBatch = 64;
+constexpr auto kRecordWait = std::chrono::milliseconds(20);
+constexpr char kRecordSep = '\x1e';
+/// Rank 0's answer "stop" (the campaign failed or was interrupted): the runs held are dropped.
+constexpr long long kStop = -1;
 
-/// A rank other than 0: `jobs` threads fed by slots, each slot asking rank 0 for a run and sending
-/// back its record (which asks for the next) until rank 0 answers "no more" (-1). A thread that
-/// finds no run waiting, after its first, adds a slot. Only this thread calls MPI.
+/// A rank other than 0: `jobs` threads run the runs this thread asks rank 0 for, and it sends their
+/// records back in batches. Its messages: "WANT HELD" and each record after a kRecordSep (WANT > 0
+/// is a request, which gets one answer; one at most is open), "!error", and "#" (its last). Rank
+/// 0's answers: task numbers; none is "no more" (the runs held are still run, and nothing is asked
+/// after); {kStop} is "stop". Only this thread calls MPI.
 void mpi_worker(const Campaign& c, std::int64_t jobs) {
     const std::vector<Task> tasks = all_tasks(c);
     std::mutex mutex;
     std::condition_variable to_workers, to_main;
-    std::deque<long long> work;
-    std::deque<std::string> results;  // "!..." a failure; else a record
-    std::int64_t ran_dry = 0;         // times a thread, after its first run, found no run waiting
-    bool done = false;
+    std::deque<long long> work;                        // held, not started
+    std::vector<std::string> results;                  // "!..." a failure; else a record
+    std::size_t low = static_cast<std::size_t>(jobs);  // the threads wake this one below it
+    std::int64_t running = 0, runs = 0;
+    double run_seconds = 0.0;  // of the `runs` finished, for their mean
+    bool told = false;         // "no more" or "stop" received
     auto worker = [&] {
-        for (bool first = true;; first = false) {
+        for (;;) {
             long long index = -1;
             {
                 std::unique_lock lock(mutex);
-                if (work.empty() && !done && !first) {
-                    ++ran_dry;
-                    to_main.notify_one();
-                }
-                to_workers.wait(lock, [&] { return done || !work.empty(); });
+                to_workers.wait(lock, [&] { return told || !work.empty(); });
                 if (work.empty()) return;
                 index = work.front();
                 work.pop_front();
+                ++running;
             }
+            const auto start = std::chrono::steady_clock::now();
             std::string payload;
             try {
                 const Task& t = tasks[static_cast<std::size_t>(index)];
@@ -481,62 +497,89 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             } catch (const std::exception& e) {
                 payload = std::string("!") + e.what();
             }
+            bool wake = false;
             {
                 const std::lock_guard lock(mutex);
+                --running;
+                ++runs;
+                run_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                wake = payload.front() == '!' || results.size() + 1 >= kRecordBatch || work.size() < low || told;
                 results.push_back(std::move(payload));
             }
-            to_main.notify_one();
+            if (wake) to_main.notify_one();
         }
     };
     std::vector<std::thread> pool;
     for (std::int64_t j = 0; j < jobs; ++j) pool.emplace_back(worker);
-    std::list<std::string> sending;               // records being sent, in order
-    std::vector<MPI_Request> requests;            // their sends
-    std::int64_t slots = jobs * kSlotsPerThread;  // asked for so far
-    std::int64_t open = 0;                        // slots that have not been told "no more"
-    bool finishing = false;                       // rank 0 has said "no more" to a slot
-    const auto ask = [&] {
-        MPI_Send(nullptr, 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
-        ++open;
+    // Non-blocking sends: a message over Open MPI's eager limit (a few KB) waits for rank 0 to take
+    // it, and a blocking send spent that wait polling, on a core the runs need. The messages stay
+    // alive (a list: no moves) until their sends complete.
+    std::list<std::string> sending;
+    std::vector<MPI_Request> requests;
+    const auto send = [&](std::string message) {
+        sending.push_back(std::move(message));
+        requests.emplace_back();
+        MPI_Isend(sending.back().data(), static_cast<int>(sending.back().size()), MPI_CHAR, 0, kTagResult,
+                  MPI_COMM_WORLD, &requests.back());
     };
-    for (std::int64_t j = 0; j < slots; ++j) ask();
-    while (open > 0) {
-        for (int flag = 1; flag;) {
-            MPI_Iprobe(0, kTagTask, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
+    bool asking = false;
+    std::string unsent;  // records, each after a kRecordSep
+    std::size_t unsent_count = 0;
+    auto oldest = std::chrono::steady_clock::now();
+    for (;;) {
+        for (;;) {  // rank 0's answers
+            int flag = 0;
+            MPI_Status status;
+            MPI_Iprobe(0, kTagTask, MPI_COMM_WORLD, &flag, &status);
             if (!flag) break;
-            long long index = -1;
-            MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-            if (index < 0) {
-                --open;
-                if (!finishing) {  // no slot is added after this, as rank 0 learns from it
-                    MPI_Send("#", 1, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
-                    finishing = true;
-                }
-                continue;
-            }
+            int count = 0;
+            MPI_Get_count(&status, MPI_LONG_LONG, &count);
+            std::vector<long long> got(static_cast<std::size_t>(count));
+            MPI_Recv(got.data(), count, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            asking = false;
             {
                 const std::lock_guard lock(mutex);
-                work.push_back(index);
+                if (got.empty() || got.front() == kStop) told = true;
+                if (!got.empty() && got.front() == kStop) work.clear();
+                if (!told) work.insert(work.end(), got.begin(), got.end());
             }
-            to_workers.notify_one();
+            to_workers.notify_all();
         }
-        std::deque<std::string> ready;
-        std::int64_t dry = 0;
+        std::vector<std::string> ready;
+        std::size_t held = 0;
+        bool finished = false;
+        double mean = 0.0;
         {
-            std::unique_lock lock(mutex);
-            to_main.wait_for(lock, std::chrono::milliseconds(1), [&] { return !results.empty() || ran_dry > 0; });
+            const std::lock_guard lock(mutex);
             ready.swap(results);
-            std::swap(dry, ran_dry);
+            held = work.size();
+            finished = told && work.empty() && running == 0;
+            mean = runs > 0 ? run_seconds / static_cast<double>(runs) : 0.0;
+            const std::int64_t per_thread = mean > 0.0
+                                                ? std::clamp(static_cast<std::int64_t>(std::ceil(kAheadSeconds / mean)),
+                                                             kFirstPerThread, kMaxPerThread)
+                                                : kFirstPerThread;
+            low = static_cast<std::size_t>(std::max<std::int64_t>(jobs, per_thread * jobs / 2));
         }
-        for (; dry > 0 && !finishing && slots < jobs * kMaxSlotsPerThread; --dry, ++slots) ask();
-        // Non-blocking: a record over Open MPI's eager limit (a few KB) waits for rank 0 to take it,
-        // and a blocking send spent that wait polling, on a core the runs need. The payloads stay
-        // alive (a list: no moves) until their sends complete.
-        for (auto& payload : ready) {
-            sending.push_back(std::move(payload));
-            requests.emplace_back();
-            MPI_Isend(sending.back().data(), static_cast<int>(sending.back().size()), MPI_CHAR, 0, kTagResult,
-                      MPI_COMM_WORLD, &requests.back());
+        const auto now = std::chrono::steady_clock::now();
+        for (auto& r : ready) {
+            if (r.front() == '!') {  // at once, alone
+                send(std::move(r));
+                continue;
+            }
+            if (unsent_count++ == 0) oldest = now;
+            unsent += kRecordSep;
+            unsent += r;
+        }
+        if (!told && !asking && held < low) {
+            send(fmt::format("{} {}", 2 * low - held, held) + unsent);
+            asking = true;
+            unsent.clear();
+            unsent_count = 0;
+        } else if (unsent_count > 0 && (unsent_count >= kRecordBatch || told || now - oldest >= kRecordWait)) {
+            send(fmt::format("0 {}", held) + unsent);
+            unsent.clear();
+            unsent_count = 0;
         }
         while (!requests.empty()) {  // the finished sends, oldest first
             int complete = 0;
@@ -545,29 +588,44 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             requests.erase(requests.begin());
             sending.pop_front();
         }
+        if (finished && unsent_count == 0) {
+            const std::lock_guard lock(mutex);
+            if (results.empty()) break;
+        }
+        std::unique_lock lock(mutex);
+        to_main.wait_for(lock, asking || !requests.empty() ? kPoll : kRecordWait, [&] {
+            return (!results.empty() &&
+                    (results.back().front() == '!' || told || results.size() + unsent_count >= kRecordBatch)) ||
+                   (!told && !asking && work.size() < low) || (told && work.empty() && running == 0);
+        });
     }
-    if (!requests.empty()) MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
-    {
-        const std::lock_guard lock(mutex);
-        done = true;
-    }
-    to_workers.notify_all();
+    send("#");
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
     for (auto& t : pool) t.join();
 }
 
-/// Rank 0's view of the other ranks: each has slots; a slot asks for a run, gets one, and sends its
-/// record back, which asks for the next. An empty message is a slot asking, so a rank may add
-/// slots; rank 0 counts them as they arrive.
+/// Rank 0's view of the other ranks: the requests waiting for an answer (one at most per rank), and
+/// which ranks have been told "no more".
 class Remotes {
   public:
-    explicit Remotes(int size)
-        : idle_(static_cast<std::size_t>(size), 0),
-          open_(static_cast<std::size_t>(size), 0),
-          closed_(static_cast<std::size_t>(size), false) {}
+    struct Request {
+        int rank;
+        std::size_t want, held;  // runs asked for; runs it holds, not started
+    };
 
-    /// Reads the messages waiting; the records go to `finished`, the slots asking for work to the
-    /// idle counts. A failure on a rank is thrown. Receives are non-blocking: a record over the
-    /// eager limit needs its sender to act, and a blocking receive would poll a core meanwhile.
+    Remotes(int size, std::int64_t jobs)
+        : want_(static_cast<std::size_t>(size), 0),
+          held_(static_cast<std::size_t>(size), 0),
+          told_(static_cast<std::size_t>(size), false),
+          closed_(static_cast<std::size_t>(size), false),
+          threads_(static_cast<std::size_t>(size) * static_cast<std::size_t>(jobs)) {}
+
+    /// Threads over all ranks, rank 0's included.
+    std::size_t threads() const { return threads_; }
+
+    /// Reads the messages waiting; the records go to `finished`, the requests are kept. A failure on
+    /// a rank is thrown. Receives are non-blocking: a message over the eager limit needs its sender
+    /// to act, and a blocking receive would poll a core meanwhile.
     void poll(std::vector<RunRecord>& finished) {
         for (;;) {
             int flag = 0;
@@ -589,52 +647,62 @@ class Remotes {
             requests_.erase(requests_.begin());
             receiving_.pop_front();
             const auto r = static_cast<std::size_t>(got.source);
-            if (got.payload == "#") {  // the rank's last slot has asked already (messages keep their order)
+            if (got.payload == "#") {  // its last message (messages keep their order)
                 closed_[r] = true;
                 continue;
             }
-            ++idle_[r];  // a new slot asking, or a record, which frees its slot for the next run
-            if (got.payload.empty()) {
-                ++open_[r];
-                continue;
+            if (got.payload.empty() || got.payload.front() == '!') throw InputError(got.payload.substr(1));
+            std::size_t at = got.payload.find(kRecordSep);
+            unsigned long long want = 0, held = 0;
+            if (std::sscanf(got.payload.substr(0, at).c_str(), "%llu %llu", &want, &held) != 2)
+                throw std::runtime_error("MPI: a malformed message");
+            if (want > 0 && !told_[r]) {
+                want_[r] = static_cast<std::size_t>(want);
+                held_[r] = static_cast<std::size_t>(held);
             }
-            if (got.payload.front() == '!') throw InputError(got.payload.substr(1));
-            finished.push_back(deserialise(got.payload));
+            while (at != std::string::npos) {
+                const std::size_t end = got.payload.find(kRecordSep, at + 1);
+                finished.push_back(deserialise(
+                    got.payload.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1)));
+                at = end;
+            }
         }
     }
-    /// The number of slots waiting for a run.
-    std::size_t idle() const {
-        std::size_t n = 0;
-        for (const std::int64_t k : idle_) n += static_cast<std::size_t>(k);
-        return n;
+
+    /// The requests not answered yet.
+    std::vector<Request> requests() const {
+        std::vector<Request> out;
+        for (std::size_t r = 1; r < want_.size(); ++r)
+            if (want_[r] > 0) out.push_back({static_cast<int>(r), want_[r], held_[r]});
+        return out;
     }
-    void give(long long task) {
-        for (std::size_t r = 1; r < idle_.size(); ++r)
-            if (idle_[r] > 0) {
-                MPI_Send(&task, 1, MPI_LONG_LONG, static_cast<int>(r), kTagTask, MPI_COMM_WORLD);
-                --idle_[r];
-                return;
+
+    /// Answers `rank`'s request with these runs; none is "no more": it asks for no run after.
+    void answer(int rank, const std::vector<long long>& runs) {
+        MPI_Send(runs.data(), static_cast<int>(runs.size()), MPI_LONG_LONG, rank, kTagTask, MPI_COMM_WORLD);
+        const auto r = static_cast<std::size_t>(rank);
+        want_[r] = 0;
+        if (runs.empty()) told_[r] = true;
+    }
+
+    /// Tells every rank not told yet "no more" (or, when `stop`, "stop": the runs it holds are
+    /// dropped), and reads what comes (records dropped) until each has sent its last message.
+    void release_all(bool stop) {
+        for (std::size_t r = 1; r < told_.size(); ++r)
+            if (!told_[r]) {
+                answer(static_cast<int>(r), stop ? std::vector<long long>{kStop} : std::vector<long long>{});
+                told_[r] = true;
             }
-    }
-    /// Sends "no more" to every slot, waiting for the ones still running (their records dropped),
-    /// until every rank has said it adds no slot ("#", sent on its first "no more") and has had
-    /// "no more" for each slot it asked for.
-    void release_all() {
         std::vector<RunRecord> ignored;
         for (;;) {
-            for (std::size_t r = 1; r < idle_.size(); ++r)
-                for (; idle_[r] > 0; --idle_[r]) {
-                    const long long none = -1;
-                    MPI_Send(&none, 1, MPI_LONG_LONG, static_cast<int>(r), kTagTask, MPI_COMM_WORLD);
-                    --open_[r];
-                }
-            bool any_open = false;
-            for (std::size_t r = 1; r < open_.size(); ++r) any_open = any_open || open_[r] > 0 || !closed_[r];
-            if (!any_open && requests_.empty()) break;
+            bool open = !requests_.empty();
+            for (std::size_t r = 1; r < closed_.size(); ++r) open = open || !closed_[r];
+            if (!open) break;
             try {
                 poll(ignored);
             } catch (...) {
             }
+            ignored.clear();
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
     }
@@ -644,19 +712,26 @@ class Remotes {
         std::string payload;
         int source;
     };
-    std::vector<std::int64_t> idle_;  // per rank, slots waiting for a run
-    std::vector<std::int64_t> open_;  // per rank, slots not yet told "no more"
-    std::vector<bool> closed_;        // per rank, "#" received: it asks for no more slots
-    std::list<Received> receiving_;   // receives under way, in order (a list: the buffers stay put)
+    std::vector<std::size_t> want_;  // per rank, runs asked for and not given (0: no request open)
+    std::vector<std::size_t> held_;  // per rank, the runs it held when it asked
+    std::vector<bool> told_;         // per rank, "no more" (or "stop") sent
+    std::vector<bool> closed_;       // per rank, "#" received: its last message
+    std::size_t threads_;
+    std::list<Received> receiving_;  // receives under way, in order (a list: the buffers stay put)
     std::vector<MPI_Request> requests_;
 };
 #else
 class Remotes {
   public:
+    struct Request {
+        int rank;
+        std::size_t want, held;
+    };
+    std::size_t threads() const { return 1; }
     void poll(std::vector<RunRecord>&) {}
-    std::size_t idle() const { return 0; }
-    void give(long long) {}
-    void release_all() {}
+    std::vector<Request> requests() const { return {}; }
+    void answer(int, const std::vector<long long>&) {}
+    void release_all(bool) {}
 };
 #endif
 
@@ -737,7 +812,7 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
         for (;;) {
             std::vector<RunRecord> batch;
             if (remotes) remotes->poll(batch);
-            // Keep the queue full for the threads, and a run for each idle slot of a rank.
+            // Keep the queue full for the threads, and answer the ranks that ask for runs.
             std::size_t queued = 0, length = 0;
             {
                 const std::lock_guard lock(mutex);
@@ -745,16 +820,25 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
                 length = queue_length;
             }
             const std::size_t wanted_here = pool.empty() ? 0 : (queued < length ? length - queued : 0);
-            const std::size_t wanted_there = remotes ? remotes->idle() : 0;
+            // A rank asking gets what it asks for, but at most a share of what is left, so that
+            // the last runs spread over the ranks' threads.
+            const std::vector<Remotes::Request> asked = remotes ? remotes->requests() : std::vector<Remotes::Request>{};
+            const std::size_t share =
+                remotes ? std::max<std::size_t>(1, (ledger.left() + spare.size()) / (2 * remotes->threads())) : 0;
+            std::size_t wanted_there = 0;
+            for (const auto& q : asked) wanted_there += std::min(q.want, share);
             while (!exhausted && spare.size() < wanted_here + wanted_there) {
                 const auto got = ledger.take();
                 if (got.empty()) exhausted = true;
                 spare.insert(spare.end(), got.begin(), got.end());
             }
-            for (std::size_t k = 0; k < wanted_there && !spare.empty(); ++k) {
-                remotes->give(static_cast<long long>(spare.front()));
-                spare.pop_front();
-                ++in_flight;
+            for (const auto& q : asked) {
+                std::vector<long long> given;
+                for (; given.size() < std::min(q.want, share) && !spare.empty(); spare.pop_front())
+                    given.push_back(static_cast<long long>(spare.front()));
+                if (given.empty()) continue;
+                remotes->answer(q.rank, given);
+                in_flight += given.size();
             }
             {
                 const std::lock_guard lock(mutex);
@@ -766,23 +850,26 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
                 if (exhausted && spare.empty()) no_more = true;
             }
             if (remotes && exhausted && spare.empty()) {
-                // The last runs: a rank waiting for one takes this process's queued runs (the last
-                // queued first), which the threads here would start only after their present ones.
-                std::vector<std::size_t> moved;
-                {
-                    const std::lock_guard lock(mutex);
-                    for (std::size_t k = remotes->idle(); k > 0 && !work.empty(); --k) {
-                        moved.push_back(work.back());
-                        work.pop_back();
+                // The last runs: a rank asking takes this process's queued runs (the last queued
+                // first) while this process holds more than it; else it is told "no more".
+                for (const auto& q : remotes->requests()) {
+                    std::vector<long long> moved;
+                    {
+                        const std::lock_guard lock(mutex);
+                        while (moved.size() < q.want && work.size() > q.held + moved.size() + 1) {
+                            moved.push_back(static_cast<long long>(work.back()));
+                            work.pop_back();
+                        }
                     }
+                    remotes->answer(q.rank, moved);
                 }
-                for (const std::size_t task : moved) remotes->give(static_cast<long long>(task));
             }
             to_workers.notify_all();
             {
                 std::unique_lock lock(mutex);
-                // Ranks are polled every millisecond; threads wake this one themselves.
-                to_main.wait_for(lock, remotes ? std::chrono::milliseconds(1) : std::chrono::milliseconds(20), [&] {
+                // Ranks are polled every kPoll (they ask before they run dry); threads wake this one
+                // themselves.
+                to_main.wait_for(lock, remotes ? kPoll : std::chrono::milliseconds(20), [&] {
                     return finished.size() >= kBatch || failure || (no_more && work.empty() && !finished.empty()) ||
                            (!exhausted && 2 * work.size() < queue_length && !pool.empty());
                 });
@@ -818,7 +905,7 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
                 ledger.close();
                 if (stop.on_stop) stop.on_stop(stopped);
                 shut_down();
-                if (remotes) remotes->release_all();
+                if (remotes) remotes->release_all(true);
                 throw stopped;
             }
             {
@@ -831,11 +918,11 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
         throw;
     } catch (...) {
         shut_down();
-        if (remotes) remotes->release_all();
+        if (remotes) remotes->release_all(true);
         throw;
     }
     shut_down();
-    if (remotes) remotes->release_all();
+    if (remotes) remotes->release_all(false);
     {
         // What finished before a failure is kept.
         for (auto& r : finished) waiting.push_back(std::move(r));
@@ -1169,7 +1256,7 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
                 return none;
             }
             Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size));
-            Remotes remotes(size);
+            Remotes remotes(size, jobs);
             BenchSummary s = run_local(ledger, jobs, progress, stop, &remotes);
             s.ranks = size;
             return s;
