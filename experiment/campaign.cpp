@@ -448,13 +448,15 @@ class Ledger {
 /// Rank 0 and the other ranks look at their messages this often while they wait for one.
 constexpr auto kPoll = std::chrono::milliseconds(2);
 #ifdef PRIDE_HAVE_MPI
-/// A rank other than 0 holds about this much work per thread (by the mean time of its runs so far)
-/// and asks rank 0 for more, in one message, once it holds less than half of it: an answer comes
-/// within a few ms, so its threads never wait for a message round trip, and what a rank holds at
-/// the end stays short.
-constexpr double kAheadSeconds = 0.02;
-/// Runs held per thread before any has finished, and at most.
-constexpr std::int64_t kFirstPerThread = 2, kMaxPerThread = 64;
+/// A rank other than 0 holds about this much work per thread, not started (by the mean time of its
+/// runs so far, and at least two runs), and asks rank 0 for more, in one message, once it holds
+/// half of it: an answer comes within a few ms, so its threads do not wait for a message round
+/// trip, and what a rank holds at the end stays short. Each time a thread finds no run all the same
+/// (rank 0 late: a commit waiting for the disk, or the cores shared with other processes or
+/// ranks), it holds a quarter more, up to kMaxAhead.
+constexpr double kAhead = 0.02, kMaxAhead = 0.25;
+/// Runs held per thread before any has finished, and at least and at most.
+constexpr std::int64_t kFirstPerThread = 2, kMaxPerThread = 256;
 /// Finished records travel together: with the next request, or at 64 records, or 20 ms after the
 /// oldest, whichever comes first.
 constexpr std::size_t kRecordBatch = 64;
@@ -474,21 +476,26 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
     std::condition_variable to_workers, to_main;
     std::deque<long long> work;                        // held, not started
     std::vector<std::string> results;                  // "!..." a failure; else a record
-    std::size_t low = static_cast<std::size_t>(jobs);  // the threads wake this one below it
+    std::size_t low = static_cast<std::size_t>(jobs);  // the threads wake this one at it or below
     std::int64_t running = 0, runs = 0;
+    std::int64_t ran_dry = 0;  // times a thread, after its first run, found none held
     double run_seconds = 0.0;  // of the `runs` finished, for their mean
     bool told = false;         // "no more" or "stop" received
     auto worker = [&] {
-        for (;;) {
+        for (bool first = true;; first = false) {
             long long index = -1;
+            bool ask = false;
             {
                 std::unique_lock lock(mutex);
+                if (work.empty() && !told && !first) ++ran_dry;
                 to_workers.wait(lock, [&] { return told || !work.empty(); });
                 if (work.empty()) return;
                 index = work.front();
                 work.pop_front();
                 ++running;
+                ask = !told && work.size() == low;  // the main thread asks for more now, not after this run
             }
+            if (ask) to_main.notify_one();
             const auto start = std::chrono::steady_clock::now();
             std::string payload;
             try {
@@ -503,7 +510,7 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
                 --running;
                 ++runs;
                 run_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                wake = payload.front() == '!' || results.size() + 1 >= kRecordBatch || work.size() < low || told;
+                wake = payload.front() == '!' || results.size() + 1 >= kRecordBatch || work.size() <= low || told;
                 results.push_back(std::move(payload));
             }
             if (wake) to_main.notify_one();
@@ -523,6 +530,7 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
                   MPI_COMM_WORLD, &requests.back());
     };
     bool asking = false;
+    double ahead = kAhead;
     std::string unsent;  // records, each after a kRecordSep
     std::size_t unsent_count = 0;
     auto oldest = std::chrono::steady_clock::now();
@@ -546,7 +554,7 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             to_workers.notify_all();
         }
         std::vector<std::string> ready;
-        std::size_t held = 0;
+        std::size_t held = 0, target = 0;
         bool finished = false;
         double mean = 0.0;
         {
@@ -555,11 +563,12 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             held = work.size();
             finished = told && work.empty() && running == 0;
             mean = runs > 0 ? run_seconds / static_cast<double>(runs) : 0.0;
-            const std::int64_t per_thread = mean > 0.0
-                                                ? std::clamp(static_cast<std::int64_t>(std::ceil(kAheadSeconds / mean)),
-                                                             kFirstPerThread, kMaxPerThread)
-                                                : kFirstPerThread;
-            low = static_cast<std::size_t>(std::max<std::int64_t>(jobs, per_thread * jobs / 2));
+            for (; ran_dry > 0; --ran_dry) ahead = std::min(kMaxAhead, 1.25 * ahead);
+            const std::int64_t per_thread = mean > 0.0 ? std::clamp(static_cast<std::int64_t>(std::ceil(ahead / mean)),
+                                                                    kFirstPerThread, kMaxPerThread)
+                                                       : kFirstPerThread;
+            target = static_cast<std::size_t>(per_thread * jobs);
+            low = target / 2;
         }
         const auto now = std::chrono::steady_clock::now();
         for (auto& r : ready) {
@@ -571,8 +580,8 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             unsent += kRecordSep;
             unsent += r;
         }
-        if (!told && !asking && held < low) {
-            send(fmt::format("{} {}", 2 * low - held, held) + unsent);
+        if (!told && !asking && held <= low) {
+            send(fmt::format("{} {}", target - held, held) + unsent);
             asking = true;
             unsent.clear();
             unsent_count = 0;
@@ -596,7 +605,7 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
         to_main.wait_for(lock, asking || !requests.empty() ? kPoll : kRecordWait, [&] {
             return (!results.empty() &&
                     (results.back().front() == '!' || told || results.size() + unsent_count >= kRecordBatch)) ||
-                   (!told && !asking && work.size() < low) || (told && work.empty() && running == 0);
+                   (!told && !asking && work.size() <= low) || (told && work.empty() && running == 0);
         });
     }
     send("#");
