@@ -5,9 +5,7 @@
 #include <atomic>
 #include <cctype>
 #include <chrono>
-#include <cmath>
 #include <condition_variable>
-#include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <exception>
@@ -371,8 +369,6 @@ class Ledger {
     const std::vector<Task>& tasks() const { return tasks_; }
     const Budget& budget() const { return budget_; }
     std::size_t todo() const { return todo_.size(); }
-    /// The runs not yet looked at (to claim).
-    std::size_t left() const { return keys_.size() - cursor_; }
     std::size_t in_store() const { return already_ + stored_; }
 
     /// The next runs to do (task numbers), claimed in the store; empty when none is left that
@@ -445,61 +441,39 @@ class Ledger {
     std::vector<std::size_t> busy_;  // positions in keys_ another process held
 };
 
-/// Rank 0 and the other ranks look at their messages this often. Every 2 ms, and the others only
-/// while a request or a send was open, took 25-45 % more wall time on 2 ranks than every 1 ms on a
-/// loaded machine (the same CPU time: a process that sleeps and wakes often is given more of the
-/// cores against other sessions); the 1 ms costs under 1 % of a core.
-constexpr auto kPoll = std::chrono::milliseconds(1);
 #ifdef PRIDE_HAVE_MPI
-/// A rank other than 0 holds about this much work per thread, not started (by the mean time of its
-/// runs so far, and at least two runs), and asks rank 0 for more, in one message, once it holds
-/// half of it: an answer comes within a few ms, so its threads do not wait for a message round
-/// trip, and what a rank holds at the end stays short. Each time a thread finds no run all the same
-/// (rank 0 late: a commit waiting for the disk, or the cores shared with other processes or
-/// ranks), it holds a quarter more, up to kMaxAhead.
-constexpr double kAhead = 0.02, kMaxAhead = 0.25;
-/// Runs held per thread before any has finished, and at least and at most.
-constexpr std::int64_t kFirstPerThread = 2, kMaxPerThread = 256;
-/// Finished records travel together: with the next request, or at 64 records, or 20 ms after the
-/// oldest, whichever comes first.
-constexpr std::size_t kRecordBatch = 64;
-constexpr auto kRecordWait = std::chrono::milliseconds(20);
-constexpr char kRecordSep = '\x1e';
-/// Rank 0's answer "stop" (the campaign failed or was interrupted): the runs held are dropped.
-constexpr long long kStop = -1;
+/// Runs asked for per thread of a rank other than 0, at first: with two a thread finds its next
+/// run waiting instead of idling for a message round trip.
+constexpr std::int64_t kSlotsPerThread = 2;
+/// At most this many per thread: a rank whose threads still run dry (runs shorter than a round
+/// trip, which is up to two 1 ms polls) asks for one more run each time, up to here.
+constexpr std::int64_t kMaxSlotsPerThread = 32;
 
-/// A rank other than 0: `jobs` threads run the runs this thread asks rank 0 for, and it sends their
-/// records back in batches. Its messages: "WANT HELD" and each record after a kRecordSep (WANT > 0
-/// is a request, which gets one answer; one at most is open), "!error", and "#" (its last). Rank
-/// 0's answers: task numbers; none is "no more" (the runs held are still run, and nothing is asked
-/// after); {kStop} is "stop". Only this thread calls MPI.
+/// A rank other than 0: `jobs` threads fed by slots, each slot asking rank 0 for a run and sending
+/// back its record (which asks for the next) until rank 0 answers "no more" (-1). A thread that
+/// finds no run waiting, after its first, adds a slot. Only this thread calls MPI.
 void mpi_worker(const Campaign& c, std::int64_t jobs) {
     const std::vector<Task> tasks = all_tasks(c);
     std::mutex mutex;
     std::condition_variable to_workers, to_main;
-    std::deque<long long> work;                        // held, not started
-    std::vector<std::string> results;                  // "!..." a failure; else a record
-    std::size_t low = static_cast<std::size_t>(jobs);  // the threads wake this one at it or below
-    std::int64_t running = 0, runs = 0;
-    std::int64_t ran_dry = 0;  // times a thread, after its first run, found none held
-    double run_seconds = 0.0;  // of the `runs` finished, for their mean
-    bool told = false;         // "no more" or "stop" received
+    std::deque<long long> work;
+    std::deque<std::string> results;  // "!..." a failure; else a record
+    std::int64_t ran_dry = 0;         // times a thread, after its first run, found no run waiting
+    bool done = false;
     auto worker = [&] {
         for (bool first = true;; first = false) {
             long long index = -1;
-            bool ask = false;
             {
                 std::unique_lock lock(mutex);
-                if (work.empty() && !told && !first) ++ran_dry;
-                to_workers.wait(lock, [&] { return told || !work.empty(); });
+                if (work.empty() && !done && !first) {
+                    ++ran_dry;
+                    to_main.notify_one();
+                }
+                to_workers.wait(lock, [&] { return done || !work.empty(); });
                 if (work.empty()) return;
                 index = work.front();
                 work.pop_front();
-                ++running;
-                ask = !told && work.size() == low;  // the main thread asks for more now, not after this run
             }
-            if (ask) to_main.notify_one();
-            const auto start = std::chrono::steady_clock::now();
             std::string payload;
             try {
                 const Task& t = tasks[static_cast<std::size_t>(index)];
@@ -507,91 +481,62 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             } catch (const std::exception& e) {
                 payload = std::string("!") + e.what();
             }
-            bool wake = false;
             {
                 const std::lock_guard lock(mutex);
-                --running;
-                ++runs;
-                run_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                wake = payload.front() == '!' || results.size() + 1 >= kRecordBatch || work.size() <= low || told;
                 results.push_back(std::move(payload));
             }
-            if (wake) to_main.notify_one();
+            to_main.notify_one();
         }
     };
     std::vector<std::thread> pool;
     for (std::int64_t j = 0; j < jobs; ++j) pool.emplace_back(worker);
-    // Non-blocking sends: a message over Open MPI's eager limit (a few KB) waits for rank 0 to take
-    // it, and a blocking send spent that wait polling, on a core the runs need. The messages stay
-    // alive (a list: no moves) until their sends complete.
-    std::list<std::string> sending;
-    std::vector<MPI_Request> requests;
-    const auto send = [&](std::string message) {
-        sending.push_back(std::move(message));
-        requests.emplace_back();
-        MPI_Isend(sending.back().data(), static_cast<int>(sending.back().size()), MPI_CHAR, 0, kTagResult,
-                  MPI_COMM_WORLD, &requests.back());
+    std::list<std::string> sending;               // records being sent, in order
+    std::vector<MPI_Request> requests;            // their sends
+    std::int64_t slots = jobs * kSlotsPerThread;  // asked for so far
+    std::int64_t open = 0;                        // slots that have not been told "no more"
+    bool finishing = false;                       // rank 0 has said "no more" to a slot
+    const auto ask = [&] {
+        MPI_Send(nullptr, 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+        ++open;
     };
-    bool asking = false;
-    double ahead = kAhead;
-    std::string unsent;  // records, each after a kRecordSep
-    std::size_t unsent_count = 0;
-    auto oldest = std::chrono::steady_clock::now();
-    for (;;) {
-        for (;;) {  // rank 0's answers
-            int flag = 0;
-            MPI_Status status;
-            MPI_Iprobe(0, kTagTask, MPI_COMM_WORLD, &flag, &status);
+    for (std::int64_t j = 0; j < slots; ++j) ask();
+    while (open > 0) {
+        for (int flag = 1; flag;) {
+            MPI_Iprobe(0, kTagTask, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
             if (!flag) break;
-            int count = 0;
-            MPI_Get_count(&status, MPI_LONG_LONG, &count);
-            std::vector<long long> got(static_cast<std::size_t>(count));
-            MPI_Recv(got.data(), count, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-            asking = false;
-            {
-                const std::lock_guard lock(mutex);
-                if (got.empty() || got.front() == kStop) told = true;
-                if (!got.empty() && got.front() == kStop) work.clear();
-                if (!told) work.insert(work.end(), got.begin(), got.end());
-            }
-            to_workers.notify_all();
-        }
-        std::vector<std::string> ready;
-        std::size_t held = 0, target = 0;
-        bool finished = false;
-        double mean = 0.0;
-        {
-            const std::lock_guard lock(mutex);
-            ready.swap(results);
-            held = work.size();
-            finished = told && work.empty() && running == 0;
-            mean = runs > 0 ? run_seconds / static_cast<double>(runs) : 0.0;
-            for (; ran_dry > 0; --ran_dry) ahead = std::min(kMaxAhead, 1.25 * ahead);
-            const std::int64_t per_thread = mean > 0.0 ? std::clamp(static_cast<std::int64_t>(std::ceil(ahead / mean)),
-                                                                    kFirstPerThread, kMaxPerThread)
-                                                       : kFirstPerThread;
-            target = static_cast<std::size_t>(per_thread * jobs);
-            low = target / 2;
-        }
-        const auto now = std::chrono::steady_clock::now();
-        for (auto& r : ready) {
-            if (r.front() == '!') {  // at once, alone
-                send(std::move(r));
+            long long index = -1;
+            MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            if (index < 0) {
+                --open;
+                if (!finishing) {  // no slot is added after this, as rank 0 learns from it
+                    MPI_Send("#", 1, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+                    finishing = true;
+                }
                 continue;
             }
-            if (unsent_count++ == 0) oldest = now;
-            unsent += kRecordSep;
-            unsent += r;
+            {
+                const std::lock_guard lock(mutex);
+                work.push_back(index);
+            }
+            to_workers.notify_one();
         }
-        if (!told && !asking && held <= low) {
-            send(fmt::format("{} {}", target - held, held) + unsent);
-            asking = true;
-            unsent.clear();
-            unsent_count = 0;
-        } else if (unsent_count > 0 && (unsent_count >= kRecordBatch || told || now - oldest >= kRecordWait)) {
-            send(fmt::format("0 {}", held) + unsent);
-            unsent.clear();
-            unsent_count = 0;
+        std::deque<std::string> ready;
+        std::int64_t dry = 0;
+        {
+            std::unique_lock lock(mutex);
+            to_main.wait_for(lock, std::chrono::milliseconds(1), [&] { return !results.empty() || ran_dry > 0; });
+            ready.swap(results);
+            std::swap(dry, ran_dry);
+        }
+        for (; dry > 0 && !finishing && slots < jobs * kMaxSlotsPerThread; --dry, ++slots) ask();
+        // Non-blocking: a record over Open MPI's eager limit (a few KB) waits for rank 0 to take it,
+        // and a blocking send spent that wait polling, on a core the runs need. The payloads stay
+        // alive (a list: no moves) until their sends complete.
+        for (auto& payload : ready) {
+            sending.push_back(std::move(payload));
+            requests.emplace_back();
+            MPI_Isend(sending.back().data(), static_cast<int>(sending.back().size()), MPI_CHAR, 0, kTagResult,
+                      MPI_COMM_WORLD, &requests.back());
         }
         while (!requests.empty()) {  // the finished sends, oldest first
             int complete = 0;
@@ -600,44 +545,29 @@ void mpi_worker(const Campaign& c, std::int64_t jobs) {
             requests.erase(requests.begin());
             sending.pop_front();
         }
-        if (finished && unsent_count == 0) {
-            const std::lock_guard lock(mutex);
-            if (results.empty()) break;
-        }
-        std::unique_lock lock(mutex);
-        to_main.wait_for(lock, kPoll, [&] {
-            return (!results.empty() &&
-                    (results.back().front() == '!' || told || results.size() + unsent_count >= kRecordBatch)) ||
-                   (!told && !asking && work.size() <= low) || (told && work.empty() && running == 0);
-        });
     }
-    send("#");
-    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    if (!requests.empty()) MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    {
+        const std::lock_guard lock(mutex);
+        done = true;
+    }
+    to_workers.notify_all();
     for (auto& t : pool) t.join();
 }
 
-/// Rank 0's view of the other ranks: the requests waiting for an answer (one at most per rank), and
-/// which ranks have been told "no more".
+/// Rank 0's view of the other ranks: each has slots; a slot asks for a run, gets one, and sends its
+/// record back, which asks for the next. An empty message is a slot asking, so a rank may add
+/// slots; rank 0 counts them as they arrive.
 class Remotes {
   public:
-    struct Request {
-        int rank;
-        std::size_t want, held;  // runs asked for; runs it holds, not started
-    };
+    explicit Remotes(int size)
+        : idle_(static_cast<std::size_t>(size), 0),
+          open_(static_cast<std::size_t>(size), 0),
+          closed_(static_cast<std::size_t>(size), false) {}
 
-    Remotes(int size, std::int64_t jobs)
-        : want_(static_cast<std::size_t>(size), 0),
-          held_(static_cast<std::size_t>(size), 0),
-          told_(static_cast<std::size_t>(size), false),
-          closed_(static_cast<std::size_t>(size), false),
-          threads_(static_cast<std::size_t>(size) * static_cast<std::size_t>(jobs)) {}
-
-    /// Threads over all ranks, rank 0's included.
-    std::size_t threads() const { return threads_; }
-
-    /// Reads the messages waiting; the records go to `finished`, the requests are kept. A failure on
-    /// a rank is thrown. Receives are non-blocking: a message over the eager limit needs its sender
-    /// to act, and a blocking receive would poll a core meanwhile.
+    /// Reads the messages waiting; the records go to `finished`, the slots asking for work to the
+    /// idle counts. A failure on a rank is thrown. Receives are non-blocking: a record over the
+    /// eager limit needs its sender to act, and a blocking receive would poll a core meanwhile.
     void poll(std::vector<RunRecord>& finished) {
         for (;;) {
             int flag = 0;
@@ -659,62 +589,52 @@ class Remotes {
             requests_.erase(requests_.begin());
             receiving_.pop_front();
             const auto r = static_cast<std::size_t>(got.source);
-            if (got.payload == "#") {  // its last message (messages keep their order)
+            if (got.payload == "#") {  // the rank's last slot has asked already (messages keep their order)
                 closed_[r] = true;
                 continue;
             }
-            if (got.payload.empty() || got.payload.front() == '!') throw InputError(got.payload.substr(1));
-            std::size_t at = got.payload.find(kRecordSep);
-            unsigned long long want = 0, held = 0;
-            if (std::sscanf(got.payload.substr(0, at).c_str(), "%llu %llu", &want, &held) != 2)
-                throw std::runtime_error("MPI: a malformed message");
-            if (want > 0 && !told_[r]) {
-                want_[r] = static_cast<std::size_t>(want);
-                held_[r] = static_cast<std::size_t>(held);
+            ++idle_[r];  // a new slot asking, or a record, which frees its slot for the next run
+            if (got.payload.empty()) {
+                ++open_[r];
+                continue;
             }
-            while (at != std::string::npos) {
-                const std::size_t end = got.payload.find(kRecordSep, at + 1);
-                finished.push_back(deserialise(
-                    got.payload.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1)));
-                at = end;
-            }
+            if (got.payload.front() == '!') throw InputError(got.payload.substr(1));
+            finished.push_back(deserialise(got.payload));
         }
     }
-
-    /// The requests not answered yet.
-    std::vector<Request> requests() const {
-        std::vector<Request> out;
-        for (std::size_t r = 1; r < want_.size(); ++r)
-            if (want_[r] > 0) out.push_back({static_cast<int>(r), want_[r], held_[r]});
-        return out;
+    /// The number of slots waiting for a run.
+    std::size_t idle() const {
+        std::size_t n = 0;
+        for (const std::int64_t k : idle_) n += static_cast<std::size_t>(k);
+        return n;
     }
-
-    /// Answers `rank`'s request with these runs; none is "no more": it asks for no run after.
-    void answer(int rank, const std::vector<long long>& runs) {
-        MPI_Send(runs.data(), static_cast<int>(runs.size()), MPI_LONG_LONG, rank, kTagTask, MPI_COMM_WORLD);
-        const auto r = static_cast<std::size_t>(rank);
-        want_[r] = 0;
-        if (runs.empty()) told_[r] = true;
-    }
-
-    /// Tells every rank not told yet "no more" (or, when `stop`, "stop": the runs it holds are
-    /// dropped), and reads what comes (records dropped) until each has sent its last message.
-    void release_all(bool stop) {
-        for (std::size_t r = 1; r < told_.size(); ++r)
-            if (!told_[r]) {
-                answer(static_cast<int>(r), stop ? std::vector<long long>{kStop} : std::vector<long long>{});
-                told_[r] = true;
+    void give(long long task) {
+        for (std::size_t r = 1; r < idle_.size(); ++r)
+            if (idle_[r] > 0) {
+                MPI_Send(&task, 1, MPI_LONG_LONG, static_cast<int>(r), kTagTask, MPI_COMM_WORLD);
+                --idle_[r];
+                return;
             }
+    }
+    /// Sends "no more" to every slot, waiting for the ones still running (their records dropped),
+    /// until every rank has said it adds no slot ("#", sent on its first "no more") and has had
+    /// "no more" for each slot it asked for.
+    void release_all() {
         std::vector<RunRecord> ignored;
         for (;;) {
-            bool open = !requests_.empty();
-            for (std::size_t r = 1; r < closed_.size(); ++r) open = open || !closed_[r];
-            if (!open) break;
+            for (std::size_t r = 1; r < idle_.size(); ++r)
+                for (; idle_[r] > 0; --idle_[r]) {
+                    const long long none = -1;
+                    MPI_Send(&none, 1, MPI_LONG_LONG, static_cast<int>(r), kTagTask, MPI_COMM_WORLD);
+                    --open_[r];
+                }
+            bool any_open = false;
+            for (std::size_t r = 1; r < open_.size(); ++r) any_open = any_open || open_[r] > 0 || !closed_[r];
+            if (!any_open && requests_.empty()) break;
             try {
                 poll(ignored);
             } catch (...) {
             }
-            ignored.clear();
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
     }
@@ -724,26 +644,19 @@ class Remotes {
         std::string payload;
         int source;
     };
-    std::vector<std::size_t> want_;  // per rank, runs asked for and not given (0: no request open)
-    std::vector<std::size_t> held_;  // per rank, the runs it held when it asked
-    std::vector<bool> told_;         // per rank, "no more" (or "stop") sent
-    std::vector<bool> closed_;       // per rank, "#" received: its last message
-    std::size_t threads_;
-    std::list<Received> receiving_;  // receives under way, in order (a list: the buffers stay put)
+    std::vector<std::int64_t> idle_;  // per rank, slots waiting for a run
+    std::vector<std::int64_t> open_;  // per rank, slots not yet told "no more"
+    std::vector<bool> closed_;        // per rank, "#" received: it asks for no more slots
+    std::list<Received> receiving_;   // receives under way, in order (a list: the buffers stay put)
     std::vector<MPI_Request> requests_;
 };
 #else
 class Remotes {
   public:
-    struct Request {
-        int rank;
-        std::size_t want, held;
-    };
-    std::size_t threads() const { return 1; }
     void poll(std::vector<RunRecord>&) {}
-    std::vector<Request> requests() const { return {}; }
-    void answer(int, const std::vector<long long>&) {}
-    void release_all(bool) {}
+    std::size_t idle() const { return 0; }
+    void give(long long) {}
+    void release_all() {}
 };
 #endif
 
@@ -824,7 +737,7 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
         for (;;) {
             std::vector<RunRecord> batch;
             if (remotes) remotes->poll(batch);
-            // Keep the queue full for the threads, and answer the ranks that ask for runs.
+            // Keep the queue full for the threads, and a run for each idle slot of a rank.
             std::size_t queued = 0, length = 0;
             {
                 const std::lock_guard lock(mutex);
@@ -832,22 +745,16 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
                 length = queue_length;
             }
             const std::size_t wanted_here = pool.empty() ? 0 : (queued < length ? length - queued : 0);
-            // A rank asking gets what it asks for, but at most a share of what is left, so that
-            // the last runs spread over the ranks' threads.
-            const std::vector<Remotes::Request> asked = remotes ? remotes->requests() : std::vector<Remotes::Request>{};
-            const std::size_t share =
-                remotes ? std::max<std::size_t>(1, (ledger.left() + spare.size()) / (2 * remotes->threads())) : 0;
-            std::size_t wanted_there = 0;
-            for (const auto& q : asked) wanted_there += std::min(q.want, share);
-            // This process's threads first, and a few claims a round for the ranks: a rank's request
-            // (up to 256 runs a thread) claimed at once held up the threads here for 30-350 ms.
-            // A rank answered in part asks again; one not answered is answered next round.
-            for (int takes = 0;
-                 !exhausted && (spare.size() < wanted_here || (spare.size() < wanted_here + wanted_there && takes < 4));
-                 ++takes) {
+            const std::size_t wanted_there = remotes ? remotes->idle() : 0;
+            while (!exhausted && spare.size() < wanted_here + wanted_there) {
                 const auto got = ledger.take();
                 if (got.empty()) exhausted = true;
                 spare.insert(spare.end(), got.begin(), got.end());
+            }
+            for (std::size_t k = 0; k < wanted_there && !spare.empty(); ++k) {
+                remotes->give(static_cast<long long>(spare.front()));
+                spare.pop_front();
+                ++in_flight;
             }
             {
                 const std::lock_guard lock(mutex);
@@ -856,40 +763,26 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
                     spare.pop_front();
                     ++in_flight;
                 }
-            }
-            for (const auto& q : asked) {
-                std::vector<long long> given;
-                for (; given.size() < std::min(q.want, share) && !spare.empty(); spare.pop_front())
-                    given.push_back(static_cast<long long>(spare.front()));
-                if (given.empty()) continue;
-                remotes->answer(q.rank, given);
-                in_flight += given.size();
-            }
-            {
-                const std::lock_guard lock(mutex);
                 if (exhausted && spare.empty()) no_more = true;
             }
             if (remotes && exhausted && spare.empty()) {
-                // The last runs: a rank asking takes this process's queued runs (the last queued
-                // first) while this process holds more than it; else it is told "no more".
-                for (const auto& q : remotes->requests()) {
-                    std::vector<long long> moved;
-                    {
-                        const std::lock_guard lock(mutex);
-                        while (moved.size() < q.want && work.size() > q.held + moved.size() + 1) {
-                            moved.push_back(static_cast<long long>(work.back()));
-                            work.pop_back();
-                        }
+                // The last runs: a rank waiting for one takes this process's queued runs (the last
+                // queued first), which the threads here would start only after their present ones.
+                std::vector<std::size_t> moved;
+                {
+                    const std::lock_guard lock(mutex);
+                    for (std::size_t k = remotes->idle(); k > 0 && !work.empty(); --k) {
+                        moved.push_back(work.back());
+                        work.pop_back();
                     }
-                    remotes->answer(q.rank, moved);
                 }
+                for (const std::size_t task : moved) remotes->give(static_cast<long long>(task));
             }
             to_workers.notify_all();
             {
                 std::unique_lock lock(mutex);
-                // Ranks are polled every kPoll (they ask before they run dry); threads wake this one
-                // themselves.
-                to_main.wait_for(lock, remotes ? kPoll : std::chrono::milliseconds(20), [&] {
+                // Ranks are polled every millisecond; threads wake this one themselves.
+                to_main.wait_for(lock, remotes ? std::chrono::milliseconds(1) : std::chrono::milliseconds(20), [&] {
                     return finished.size() >= kBatch || failure || (no_more && work.empty() && !finished.empty()) ||
                            (!exhausted && 2 * work.size() < queue_length && !pool.empty());
                 });
@@ -925,7 +818,7 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
                 ledger.close();
                 if (stop.on_stop) stop.on_stop(stopped);
                 shut_down();
-                if (remotes) remotes->release_all(true);
+                if (remotes) remotes->release_all();
                 throw stopped;
             }
             {
@@ -938,11 +831,11 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
         throw;
     } catch (...) {
         shut_down();
-        if (remotes) remotes->release_all(true);
+        if (remotes) remotes->release_all();
         throw;
     }
     shut_down();
-    if (remotes) remotes->release_all(false);
+    if (remotes) remotes->release_all();
     {
         // What finished before a failure is kept.
         for (auto& r : finished) waiting.push_back(std::move(r));
@@ -1275,18 +1168,17 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
                 none.ranks = 0;  // a worker rank: rank 0 reports
                 return none;
             }
-            Remotes remotes(size, jobs);
+            Remotes remotes(size);
             try {
-                // Claims of 16 runs per thread: the ranks ask for many at once.
-                Ledger ledger(c, store_path, 16 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size));
+                Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size));
                 BenchSummary s = run_local(ledger, jobs, progress, stop, &remotes);
                 s.ranks = size;
                 return s;
             } catch (...) {
                 // A store that cannot be opened, say: the other ranks wait for runs, and
-                // MPI_Finalize would wait for them. Told "stop", they finish (a second call is
-                // a no-op).
-                remotes.release_all(true);
+                // MPI_Finalize would wait for them. Told "no more", they finish (a second call
+                // finds every rank closed).
+                remotes.release_all();
                 throw;
             }
         }

@@ -82,10 +82,10 @@ TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[benc
     CHECK(rows(dir / "mpi-jobs.sqlite") == a);
 }
 
-TEST_CASE("bench: mpirun -np 3 on many short runs (the ranks hold more) stores each run once", "[bench][mpi]") {
-    // Runs far shorter than a message round trip make the other ranks' threads run dry, so they hold
-    // more runs while rank 0 hands out runs and then says "no more": every run is stored once, with
-    // the values of a threaded run, and every rank exits.
+TEST_CASE("bench: mpirun -np 3 on many short runs (the ranks add slots) stores each run once", "[bench][mpi]") {
+    // Runs far shorter than a message round trip make the other ranks' threads run dry, so they ask
+    // for more slots while rank 0 hands out runs and then says "no more": every run is stored once,
+    // with the values of a threaded run, and every rank exits.
     const pride::test::TempDir tmp("pride-mpi3");  // removed with its files at the end of the test
     const fs::path& dir = tmp.path();
     {
@@ -104,10 +104,10 @@ TEST_CASE("bench: mpirun -np 3 on many short runs (the ranks hold more) stores e
     CHECK(a == b);
 }
 
-TEST_CASE("bench: mpirun -np 4 resumes a store a threaded run began, with runs asked for in batches", "[bench][mpi]") {
-    // Ranks ask rank 0 for several runs at once and send records in batches: with 4 ranks (more
-    // than the cores of a small machine) on a store that holds a third of the runs, each missing
-    // run is stored once, with the values of a threaded run, and the summary counts the others.
+TEST_CASE("bench: mpirun -np 4 resumes a store a threaded run began", "[bench][mpi]") {
+    // 4 ranks (more than the cores of a small machine) on a store that holds a third of the runs:
+    // each missing run is stored once, with the values of a threaded run, and the summary counts
+    // the others.
     const pride::test::TempDir tmp("pride-mpi4");  // removed with its files at the end of the test
     const fs::path& dir = tmp.path();
     const auto campaign = [&](const fs::path& file, int seeds) {
@@ -136,7 +136,7 @@ TEST_CASE("bench: mpirun -np 4 resumes a store a threaded run began, with runs a
 
 TEST_CASE("bench: under mpirun, a store rank 0 cannot open is one error, exit status 2, every rank exits",
           "[bench][mpi]") {
-    // The other ranks wait for runs from rank 0: told to stop, they exit, and so does mpirun (it
+    // The other ranks wait for runs from rank 0: told "no more", they exit, and so does mpirun (it
     // hung, rank 0 waiting in MPI_Finalize for ranks that waited for it).
     const pride::test::TempDir tmp("pride-mpi-bad");  // removed with its files at the end of the test
     const fs::path& dir = tmp.path();
