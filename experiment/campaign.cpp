@@ -1168,11 +1168,19 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
                 none.ranks = 0;  // a worker rank: rank 0 reports
                 return none;
             }
-            Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size));
             Remotes remotes(size);
-            BenchSummary s = run_local(ledger, jobs, progress, stop, &remotes);
-            s.ranks = size;
-            return s;
+            try {
+                Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size));
+                BenchSummary s = run_local(ledger, jobs, progress, stop, &remotes);
+                s.ranks = size;
+                return s;
+            } catch (...) {
+                // A store that cannot be opened, say: the other ranks wait for runs, and
+                // MPI_Finalize would wait for them. Told "no more", they finish (a second call
+                // finds every rank closed).
+                remotes.release_all();
+                throw;
+            }
         }
     }
 #else

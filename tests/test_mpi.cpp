@@ -1,7 +1,9 @@
-// pride bench under mpirun (built with -DPRIDE_MPI=ON): two local ranks, with one thread or two
-// each, store the same values as a threaded run. Compiled only into MPI builds.
+// pride bench under mpirun (built with -DPRIDE_MPI=ON): local ranks (2 with one thread or two each,
+// 3, and 4 resuming a store) store the same values as a threaded run, and a store rank 0 cannot
+// open ends every rank. Compiled only into MPI builds.
 #ifdef PRIDE_HAVE_MPI
 #include <sqlite3.h>
+#include <sys/wait.h>
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -100,5 +102,57 @@ TEST_CASE("bench: mpirun -np 3 on many short runs (the ranks add slots) stores e
     const auto a = rows(dir / "threads.sqlite"), b = rows(dir / "mpi.sqlite");
     CHECK(a.size() == 600);
     CHECK(a == b);
+}
+
+TEST_CASE("bench: mpirun -np 4 resumes a store a threaded run began", "[bench][mpi]") {
+    // 4 ranks (more than the cores of a small machine) on a store that holds a third of the runs:
+    // each missing run is stored once, with the values of a threaded run, and the summary counts
+    // the others.
+    const pride::test::TempDir tmp("pride-mpi4");  // removed with its files at the end of the test
+    const fs::path& dir = tmp.path();
+    const auto campaign = [&](const fs::path& file, int seeds) {
+        std::ofstream f(file);
+        f << "name = \"short\"\nseeds = " << seeds << "\n[budget]\nevaluations = 40\n"
+          << "[[problem]]\nid = \"sphere\"\ntype = \"sphere\"\ndim = 3\n"
+             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n"
+             "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n";
+    };
+    campaign(dir / "part.toml", 100);
+    campaign(dir / "c.toml", 300);
+    const std::string config = (dir / "c.toml").string();
+    REQUIRE(pride::test::run_pride("bench '" + config + "' --jobs 2 --out '" + (dir / "threads.sqlite").string() + "'")
+                .status == 0);
+    REQUIRE(pride::test::run_pride("bench '" + (dir / "part.toml").string() + "' --jobs 1 --out '" +
+                                   (dir / "mpi.sqlite").string() + "'")
+                .status == 0);
+    REQUIRE(mpi_bench(4, config, "", dir / "mpi.sqlite", dir / "out") == 0);
+    CHECK(rows(dir / "mpi.sqlite") == rows(dir / "threads.sqlite"));
+    std::ifstream f(dir / "out");
+    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    INFO(text);
+    CHECK(text.find("400 runs stored in") != std::string::npos);
+    CHECK(text.find("200 were there already, 600 in all; 4 MPI ranks") != std::string::npos);
+}
+
+TEST_CASE("bench: under mpirun, a store rank 0 cannot open is one error, exit status 2, every rank exits",
+          "[bench][mpi]") {
+    // The other ranks wait for runs from rank 0: told "no more", they exit, and so does mpirun (it
+    // hung, rank 0 waiting in MPI_Finalize for ranks that waited for it).
+    const pride::test::TempDir tmp("pride-mpi-bad");  // removed with its files at the end of the test
+    const fs::path& dir = tmp.path();
+    {
+        std::ofstream f(dir / "c.toml");
+        f << "name = \"short\"\nseeds = 3\n[budget]\nevaluations = 40\n"
+             "[[problem]]\nid = \"sphere\"\ntype = \"sphere\"\ndim = 3\n"
+             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";
+    }
+    const int status = mpi_bench(3, (dir / "c.toml").string(), "", dir / "no-such-folder" / "s.sqlite", dir / "out");
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 2);
+    std::ifstream f(dir / "out");
+    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    INFO(text);
+    CHECK(text.find("pride: ") != std::string::npos);
+    CHECK(text.find("s.sqlite") != std::string::npos);
 }
 #endif
