@@ -229,6 +229,9 @@ def extras(pride, stores, img):
                      "front": [[p["length"], p["turns"]] for p in fr["front"]]}
     out = {"references": refs}
     bench = pathlib.Path(pride).parents[1] / "bench" / "grid_bench"
+    if not bench.exists():  # the benchmark programs are built only when asked (PRIDE_BUILD_BENCH)
+        rp.subprocess.run(["cmake", "--build", str(bench.parents[1]), "--target", "grid_bench"], check=True,
+                          stdout=rp.subprocess.DEVNULL)
     p = rp.subprocess.run([str(bench), "--init-table", "--maps", str(rp.REPO / "examples" / "maps")],
                           capture_output=True, text=True)
     if p.returncode != 0:

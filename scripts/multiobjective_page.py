@@ -11,8 +11,8 @@
         exits 1 when a generated block differs from what the data give
         (python/tests/test_multiobjective_page.py does the same under ctest).
 
-    ./build/bench/mo_bench > docs/results/data/multiobjective-pagmo.csv
-        (a build with PRIDE_BUILD_BENCH=ON and pagmo2) the ZDT/DTLZ runs beside pagmo2's nsga2 and
+    cmake --build build --target mo_bench && ./build/bench/mo_bench > docs/results/data/multiobjective-pagmo.csv
+        (pagmo2 installed; the benchmark programs are built only when asked) the ZDT/DTLZ runs beside pagmo2's nsga2 and
         moead, in one process, that the page's last table reads; then `render`.
 
 The runs: NSGA-II, MOEA/D and SMS-EMOA with their registry defaults (population 100, 100 MOEA/D
