@@ -4,6 +4,7 @@
 // descheduled on a shared machine is not counted (the minimum then removes most of what is left:
 // caches and the core shared with other processes).
 #include <algorithm>
+#include <chrono>
 #include <ctime>
 
 namespace pride::bench {
@@ -28,6 +29,19 @@ double best_ns(Pass&& pass, long count) {
         best = std::min(best, ns / static_cast<double>(passes * count));
     }
     return best;
+}
+
+/// The least wall time of `rounds` calls of `batch`, in ns, divided by `per` (what `batch` handles).
+template <class F>
+double least_ns(int rounds, double per, F&& batch) {
+    using Clock = std::chrono::steady_clock;
+    double best = 1e300;
+    for (int r = 0; r < rounds; ++r) {
+        const auto start = Clock::now();
+        batch();
+        best = std::min(best, std::chrono::duration<double, std::nano>(Clock::now() - start).count());
+    }
+    return best / per;
 }
 
 }  // namespace pride::bench

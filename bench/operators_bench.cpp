@@ -20,24 +20,14 @@
 #include "algorithms/hs.hpp"
 #include "algorithms/pso.hpp"
 #include "algorithms/woa.hpp"
+#include "bench/best_time.hpp"
 #include "problems/continuous/functions.hpp"
 
 namespace {
 
 using namespace pride;
-using Clock = std::chrono::steady_clock;
 
-/// The least time of `rounds` calls of `batch`, in ns, divided by `per`.
-template <class F>
-double least_ns(int rounds, double per, F&& batch) {
-    double best = 1e300;
-    for (int r = 0; r < rounds; ++r) {
-        const auto start = Clock::now();
-        batch();
-        best = std::min(best, std::chrono::duration<double, std::nano>(Clock::now() - start).count());
-    }
-    return best / per;
-}
+using pride::bench::least_ns;
 
 /// 64 random points in [-5.12, 5.12]^dim (the operators' parents).
 std::vector<std::vector<double>> parents(std::size_t dim, Rng& rng) {

@@ -33,12 +33,12 @@
 #include <vector>
 
 #include "algorithms/parts/power.hpp"
+#include "bench/best_time.hpp"
 #include "framework/random.hpp"
 
 namespace {
 
 using namespace pride;
-using Clock = std::chrono::steady_clock;
 
 /// One Halley step for y^n = x, as a correction (its rounding costs a fraction of an ulp):
 /// y + y 2 (x - P) / ((n + 1) P + (n - 1) x), P = y^n.
@@ -96,16 +96,7 @@ double root_halley(double x, int n) {
 }
 #endif
 
-template <class F>
-double least_ns(int rounds, double per, F&& batch) {
-    double best = 1e300;
-    for (int r = 0; r < rounds; ++r) {
-        const auto start = Clock::now();
-        batch();
-        best = std::min(best, std::chrono::duration<double, std::nano>(Clock::now() - start).count());
-    }
-    return best / per;
-}
+using pride::bench::least_ns;
 
 /// Two-sample Kolmogorov-Smirnov statistic of a and b (sorted here), and its asymptotic p-value
 /// (Numerical Recipes, 3rd ed., sec. 14.3.3: Q_KS((sqrt(ne) + 0.12 + 0.11 / sqrt(ne)) D)).
