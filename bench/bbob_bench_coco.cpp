@@ -24,8 +24,7 @@ double coco_ns(int function, int instance, int dim, const double* points, long c
         for (long j = 0; j < count; ++j) coco_evaluate_function(problem, points + j * dim, values + j);
         asm volatile("" : : "r"(values) : "memory");
     };
-    const double ns = best_ns(pass, count);
-    pass();
+    const double ns = best_ns(pass, count);  // its last pass leaves the values
     coco_suite_free(suite);
     return ns;
 #else

@@ -24,8 +24,7 @@ double ioh_ns(int function, int instance, int dim, const double* points, long co
         for (long j = 0; j < count; ++j) values[j] = (*problem)(xs[static_cast<std::size_t>(j)]);
         asm volatile("" : : "r"(values) : "memory");
     };
-    const double ns = best_ns(pass, count);
-    pass();
+    const double ns = best_ns(pass, count);  // its last pass leaves the values
     return ns;
 #else
     (void)function, (void)instance, (void)dim, (void)points, (void)count, (void)values;
