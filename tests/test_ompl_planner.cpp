@@ -40,6 +40,7 @@ GridMap refined(const GridMap& map, int k) {
     return GridMap(map.width() * k, map.height() * k, std::move(blocked), "refined");
 }
 
+#ifdef PRIDE_HAVE_OMPL  // only the OMPL planners' cases use these two: unused (and warned of) without OMPL
 /// p as a half-lattice point (a cell centre or a grid point), when it is one.
 bool half_of(Point p, HalfPoint& h) {
     const double x = 2.0 * p.x, y = 2.0 * p.y;
@@ -54,6 +55,7 @@ bool free_segment(const GridMap& map, Point a, Point b) {
     if (half_of(a, ha) && half_of(b, hb)) return segment_is_free(map, ha, hb);
     return segment_is_free(map, a, b);
 }
+#endif
 
 }  // namespace
 
