@@ -268,8 +268,8 @@ TEST_CASE("cec: the official data's values equal the official code's (official.t
         CAPTURE(year);
         CHECK(keys_of(expected, year) == coverage(year, syn::official_dimensions));
         const std::string variable(cec::data_variable(suite_of(year)));
-        const char* folder = std::getenv(variable.c_str());
-        if (!folder || !*folder) {
+        const std::string folder = cec::environment_directory(suite_of(year));
+        if (folder.empty()) {
             unset.push_back(variable);
             continue;
         }
@@ -282,7 +282,8 @@ TEST_CASE("cec: the official data's values equal the official code's (official.t
     if (!unset.empty())
         WARN("skipped the official data of " << (unset.size() == 2 ? unset[0] + " and " + unset[1] : unset[0])
                                              << ": not set (the official code's input_data folder, which pride "
-                                                "does not ship; tests/data/cec/README.md)");
+                                                "does not ship, or $PRIDE_DATA/cecYYYY/input_data; "
+                                                "tests/data/cec/README.md)");
 }
 
 TEST_CASE("cec: evaluate_batch gives evaluate's bits", "[cec]") {
@@ -452,18 +453,81 @@ TEST_CASE("cec: missing and damaged data files are input errors naming the file"
     }
 }
 
+namespace {
+
+/// Sets (or, with nothing, unsets) an environment variable for the scope, then restores it.
+class EnvironmentVariable {
+  public:
+    EnvironmentVariable(std::string name, const std::optional<std::string>& value) : name_(std::move(name)) {
+        if (const char* set = std::getenv(name_.c_str())) saved_ = set;
+        if (value)
+            setenv(name_.c_str(), value->c_str(), 1);
+        else
+            unsetenv(name_.c_str());
+    }
+    ~EnvironmentVariable() {
+        if (saved_)
+            setenv(name_.c_str(), saved_->c_str(), 1);
+        else
+            unsetenv(name_.c_str());
+    }
+    EnvironmentVariable(const EnvironmentVariable&) = delete;
+    EnvironmentVariable& operator=(const EnvironmentVariable&) = delete;
+
+  private:
+    std::string name_;
+    std::optional<std::string> saved_;
+};
+
+}  // namespace
+
 TEST_CASE("cec: without a data folder the message names the environment variable", "[cec]") {
     for (const int year : kYears) {
         const std::string variable(cec::data_variable(suite_of(year)));
-        const char* set = std::getenv(variable.c_str());
-        const std::optional<std::string> saved = set ? std::optional<std::string>(set) : std::nullopt;
-        unsetenv(variable.c_str());
+        const EnvironmentVariable specific(variable, std::nullopt), shared("PRIDE_DATA", std::nullopt);
         cec::set_data_directory(suite_of(year), "");
         const std::string message =
             input_error_message([&] { (void)pride::continuous::make_function(name_of(year, 1), 10); });
-        if (saved) setenv(variable.c_str(), saved->c_str(), 1);
         INFO(message);
         CHECK(message.find(variable) != std::string::npos);
         CHECK(message.find(name_of(year, 1)) != std::string::npos);
+        CHECK(message.find("$PRIDE_DATA/cec" + std::to_string(year) + "/input_data") != std::string::npos);
+    }
+}
+
+TEST_CASE("cec: an unset data variable falls back to $PRIDE_DATA/cecYYYY/input_data", "[cec]") {
+    pride::test::TempDir shared("pride-cec-shared");
+    for (const int year : kYears) {
+        const cec::Suite suite = suite_of(year);
+        const std::string variable(cec::data_variable(suite));
+        const fs::path folder = shared.path() / ("cec" + std::to_string(year)) / "input_data";
+        INFO(variable);
+        {
+            // PRIDE_DATA without the folder, and no PRIDE_DATA: nothing.
+            const EnvironmentVariable specific(variable, std::nullopt), root("PRIDE_DATA", shared.path().string());
+            CHECK(cec::environment_directory(suite).empty());
+        }
+        fs::create_directories(folder);
+        {
+            const EnvironmentVariable specific(variable, std::nullopt), root("PRIDE_DATA", std::nullopt);
+            CHECK(cec::environment_directory(suite).empty());
+        }
+        {
+            // The folder under PRIDE_DATA, the specific variable unset: that folder.
+            const EnvironmentVariable specific(variable, std::nullopt), root("PRIDE_DATA", shared.path().string());
+            CHECK(cec::environment_directory(suite) == folder.string());
+            cec::set_data_directory(suite, "");
+            CHECK(cec::data_directory(suite, name_of(year, 1)) == folder.string());
+        }
+        {
+            // The specific variable wins, and set empty it means no data at all.
+            const EnvironmentVariable specific(variable, "/elsewhere"), root("PRIDE_DATA", shared.path().string());
+            CHECK(cec::environment_directory(suite) == "/elsewhere");
+        }
+        {
+            const EnvironmentVariable specific(variable, ""), root("PRIDE_DATA", shared.path().string());
+            CHECK(cec::environment_directory(suite).empty());
+            CHECK_THROWS_AS(cec::data_directory(suite, name_of(year, 1)), pride::InputError);
+        }
     }
 }

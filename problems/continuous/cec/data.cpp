@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <mutex>
 #include <tuple>
@@ -123,14 +124,26 @@ std::string data_directory(Suite suite, std::string_view problem) {
         const std::lock_guard lock(s.mutex);
         if (!s.directory[index(suite)].empty()) return s.directory[index(suite)];
     }
-    const std::string variable(data_variable(suite));
-    const char* value = std::getenv(variable.c_str());
-    if (value && *value) return value;
+    std::string directory = environment_directory(suite);
+    if (!directory.empty()) return directory;
     const bool y2017 = suite == Suite::y2017;
     throw InputError(std::string(problem),
                      "needs the official " + std::string(suite_name(suite)) + " data, which pride does not ship: set " +
-                         variable + " to the input_data folder of the official code (github.com/P-N-Suganthan/" +
-                         (y2017 ? "CEC2017-BoundContrained, CEC17_fast_pow-C++.zip" : "2022-SO-BO, CEC2022.zip") + ")");
+                         std::string(data_variable(suite)) +
+                         " to the input_data folder of the official code (github.com/P-N-Suganthan/" +
+                         (y2017 ? "CEC2017-BoundContrained, CEC17_fast_pow-C++.zip" : "2022-SO-BO, CEC2022.zip") +
+                         "), or leave it unset and have that folder at $PRIDE_DATA/" + std::string(suite_name(suite)) +
+                         "/input_data");
+}
+
+std::string environment_directory(Suite suite) {
+    const std::string variable(data_variable(suite));
+    if (const char* value = std::getenv(variable.c_str())) return value;  // empty: no data, by choice
+    const char* shared = std::getenv("PRIDE_DATA");
+    if (!shared || !*shared) return "";
+    const std::filesystem::path folder = std::filesystem::path(shared) / suite_name(suite) / "input_data";
+    std::error_code ec;
+    return std::filesystem::is_directory(folder, ec) ? folder.string() : "";
 }
 
 std::vector<double> read_numbers(std::string_view text, std::size_t count, const std::string& name) {

@@ -3,7 +3,8 @@
 // from the official code's `input_data` folder. pride does not ship that folder (its files come
 // only with the official code: P-N-Suganthan/CEC2017-BoundContrained, CEC17_fast_pow-C++.zip, and
 // P-N-Suganthan/2022-SO-BO, CEC2022.zip); the user names it once, by set_data_directory() or the
-// environment (PRIDE_CEC2017_DATA, PRIDE_CEC2022_DATA). Each file is parsed once per process and
+// environment (PRIDE_CEC2017_DATA, PRIDE_CEC2022_DATA; unset, $PRIDE_DATA/cec2017/input_data and
+// $PRIDE_DATA/cec2022/input_data, where they are). Each file is parsed once per process and
 // per folder, when a function is made (outside the clock of its evaluations), and kept.
 #include <cstddef>
 #include <memory>
@@ -24,8 +25,13 @@ std::string_view data_variable(Suite suite) noexcept;
 /// variable). An empty string goes back to the environment.
 void set_data_directory(Suite suite, std::string directory);
 
-/// The folder in use: set_data_directory()'s, else the environment variable's. InputError naming
-/// `problem` and telling where the data comes from when neither is set.
+/// The folder the environment names: data_variable(suite)'s value; when that variable is unset (not
+/// when it is empty), $PRIDE_DATA/cec2017/input_data (cec2022's for 2022) where that folder
+/// exists. Empty when neither.
+std::string environment_directory(Suite suite);
+
+/// The folder in use: set_data_directory()'s, else environment_directory()'s. InputError naming
+/// `problem` and telling where the data comes from when neither gives one.
 std::string data_directory(Suite suite, std::string_view problem);
 
 /// What one function in one dimension reads, in the official loader's layout.
