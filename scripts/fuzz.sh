@@ -6,13 +6,13 @@
 #
 # Usage: scripts/fuzz.sh SECONDS [TARGET...]     (targets: map image rosyaml cec scenario roughset campaign store cli)
 # Environment: PRIDE_FUZZ_BUILD (build folder, default build-fuzz), PRIDE_FUZZ_JOBS (targets run at
-# once, default 1), PRIDE_FUZZ_RSS_MB (default 1024), PRIDE_DATA (extra seeds, default
-# reference-data/), PRIDE_FUZZ_MAX_LEN (largest input, default 16384 bytes).
+# once, default 1), PRIDE_FUZZ_RSS_MB (default 1024), PRIDE_DATA (the public data of others, for
+# extra seeds when set), PRIDE_FUZZ_MAX_LEN (largest input, default 16384 bytes).
 # Exit status 1 when any target found something.
 #
 # Seeds: fuzz/corpus/TARGET/ (checked in) plus, collected at run time, the maps and scenarios of
-# examples/maps and PRIDE_DATA/movingai, the CSV tables of PRIDE_DATA/roughset and the campaign
-# files of examples/campaigns. New inputs libFuzzer finds go to build-fuzz/corpus/TARGET/ (kept
+# examples/maps and PRIDE_DATA/movingai, nav2's maps of PRIDE_DATA/ros, the CSV tables of
+# reference-data/roughset and the campaign files of examples/campaigns. New inputs libFuzzer finds go to build-fuzz/corpus/TARGET/ (kept
 # between runs, so later runs start where earlier ones stopped).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,7 +28,7 @@ rss=${PRIDE_FUZZ_RSS_MB:-1024}
 # Inputs up to 16 KiB (and seeds no larger): every format's structure fits, and one input stays far
 # below the 1 s hang limit even on a loaded machine (a 37 KB map took 0.5 s there under ASan).
 max_len=${PRIDE_FUZZ_MAX_LEN:-16384}
-data=${PRIDE_DATA:-$root/reference-data}
+data=${PRIDE_DATA:-}
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
@@ -46,10 +46,10 @@ collect() {
   [[ -d fuzz/corpus/$t ]] && cp fuzz/corpus/"$t"/* "$dir"/ 2>/dev/null || true
   local f
   case $t in
-    map) for f in examples/maps/*.map "$data"/movingai/*.map; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
-    rosyaml) for f in examples/maps/ros/*.yaml; do cp "$f" "$dir/"; done ;;
-    scenario) for f in examples/maps/*.scen "$data"/movingai/*.scen; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
-    roughset) for f in "$data"/roughset/*.csv; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
+    map) for f in examples/maps/*.map ${data:+"$data"/movingai/*.map}; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
+    rosyaml) for f in ${data:+"$data"/ros/*.yaml}; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
+    scenario) for f in examples/maps/*.scen ${data:+"$data"/movingai/*.scen}; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
+    roughset) for f in reference-data/roughset/*.csv; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
     campaign) for f in examples/campaigns/*.toml; do cp "$f" "$dir/"; done ;;
   esac
   find "$dir" -type f -size +"$((len / 1024))"k -delete

@@ -13,6 +13,7 @@
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
+#include "tests/test_support.hpp"
 
 namespace pride::test {
 
@@ -25,11 +26,11 @@ inline grid::GridMap map_of(const std::vector<std::string>& rows) {
                          "hand");
 }
 
-/// The Moving AI scenario files of the shared data (PRIDE_REFERENCE_DATA/movingai/*.scen), in name order.
-inline std::vector<std::filesystem::path> movingai_scenarios() {
+/// The Moving AI scenario files of `dir` ($PRIDE_DATA/movingai: test_support.hpp's shared_data), in name order.
+inline std::vector<std::filesystem::path> movingai_scenarios(const std::filesystem::path& dir) {
     namespace fs = std::filesystem;
     std::vector<fs::path> scenarios;
-    for (const auto& entry : fs::directory_iterator(fs::path(PRIDE_REFERENCE_DATA) / "movingai"))
+    for (const auto& entry : fs::directory_iterator(dir))
         if (entry.path().extension() == ".scen") scenarios.push_back(entry.path());
     std::sort(scenarios.begin(), scenarios.end());
     return scenarios;

@@ -224,9 +224,10 @@ TEST_CASE("any-angle: Theta* and Lazy Theta* follow the straight line on empty m
 }
 
 TEST_CASE("any-angle: oracle <= Theta* <= the scenario's optimum on a Moving AI map") {
-    const auto scen = std::string(PRIDE_REFERENCE_DATA) + "/movingai/random-32-32-20-even-10.scen";
-    const auto entries = read_scenario(scen);
-    const GridMap map = read_map(std::string(PRIDE_REFERENCE_DATA) + "/movingai/" + entries.at(0).map);
+    const auto dir = pride::test::shared_data("movingai", "Moving AI maps and scenarios");
+    if (!dir) return;
+    const auto entries = read_scenario((*dir / "random-32-32-20-even-10.scen").string());
+    const GridMap map = read_map((*dir / entries.at(0).map).string());
     AnyAngleOracle oracle(map);
     ThetaStar theta, lazy(true);
     for (std::size_t i = 0; i < entries.size(); i += 4) {

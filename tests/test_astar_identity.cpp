@@ -50,8 +50,10 @@ TEST_CASE("A* paths, lengths and expansions on the Moving AI scenarios are those
     // Every 10th line of every scenario file (lines 0, 10, 20, ...), files in name order, one
     // AStar for all (the generation stamps carry over between maps of different sizes).
     namespace fs = std::filesystem;
-    const fs::path dir = fs::path(PRIDE_REFERENCE_DATA) / "movingai";
-    const std::vector<fs::path> scenarios = pride::test::movingai_scenarios();
+    const auto data = pride::test::shared_data("movingai", "Moving AI maps and scenarios");
+    if (!data) return;
+    const fs::path dir = *data;
+    const std::vector<fs::path> scenarios = pride::test::movingai_scenarios(dir);
     REQUIRE(scenarios.size() == 16);
     AStar astar;
     Digest d;

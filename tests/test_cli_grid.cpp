@@ -42,9 +42,12 @@ using pride::test::TempDir;
 fs::path bundled_dir() {
     return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps";
 }
-fs::path movingai_dir() {
-    return fs::path(PRIDE_REFERENCE_DATA) / "movingai";
-}
+/// A map of 8 x 8 free cells, as Moving AI's empty-8-8.map.
+const std::string empty_8_8 = "type octile\nheight 8\nwidth 8\nmap\n" + [] {
+    std::string rows;
+    for (int y = 0; y < 8; ++y) rows += "........\n";
+    return rows;
+}();
 
 /// Shell quoting for run_pride's command line.
 std::string q(const std::string& s) {
@@ -753,28 +756,32 @@ void check_scen_json(const std::string& text, std::size_t checked, std::size_t d
 }  // namespace
 
 TEST_CASE("cli grid: scen agrees with Moving AI scenario files", "[cli][grid][scen]") {
+    // the bundled one-line scenarios
+    for (const auto& b : bundled()) check_scen_json(success("scen " + q(b.map + ".scen") + " --json"), 1, 0);
+    const auto movingai = pride::test::shared_data("movingai", "Moving AI maps and scenarios");
+    if (!movingai) return;
     for (const std::string name : {"empty-8-8-even-10", "random-32-32-10-even-10", "random-32-32-20-even-10",
                                    "maze-32-32-2-even-10", "room-32-32-4-even-10", "den312d-even-10"}) {
-        const fs::path file = movingai_dir() / (name + ".scen");
+        const fs::path file = *movingai / (name + ".scen");
         INFO(file.string());
         check_scen_json(success("scen " + q(file.string()) + " --json"), scenario_lines(file), 0);
     }
-    // the bundled one-line scenarios too
-    for (const auto& b : bundled()) check_scen_json(success("scen " + q(b.map + ".scen") + " --json"), 1, 0);
     // text output
-    const auto r = run_pride("scen " + q((movingai_dir() / "empty-8-8-even-10.scen").string()));
+    const auto r = run_pride("scen " + q((*movingai / "empty-8-8-even-10.scen").string()));
     CHECK(r.status == 0);
     CHECK(r.out.find("checked") != std::string::npos);
     CHECK(r.out.find("32") != std::string::npos);
 }
 
 TEST_CASE("cli grid: scen finds maps next to the scenario or in --map-dir", "[cli][grid][scen]") {
+    const auto movingai = pride::test::shared_data("movingai", "Moving AI maps and scenarios");
+    if (!movingai) return;
     TempDir dir;
-    const std::string scen = dir.write("empty.scen", slurp(movingai_dir() / "empty-8-8-even-10.scen"));
+    const std::string scen = dir.write("empty.scen", slurp(*movingai / "empty-8-8-even-10.scen"));
     expect_input_error("scen " + q(scen) + " --json", {"empty-8-8.map"});
-    check_scen_json(success("scen " + q(scen) + " --map-dir " + q(movingai_dir().string()) + " --json"), 32, 0);
+    check_scen_json(success("scen " + q(scen) + " --map-dir " + q(movingai->string()) + " --json"), 32, 0);
     // the map copied next to the scenario
-    dir.write("empty-8-8.map", slurp(movingai_dir() / "empty-8-8.map"));
+    dir.write("empty-8-8.map", slurp(*movingai / "empty-8-8.map"));
     check_scen_json(success("scen " + q(scen) + " --json"), 32, 0);
     // a wrong optimal length is counted, by how much it is wrong
     const std::string wrong = dir.write("wrong.scen",
@@ -790,7 +797,7 @@ TEST_CASE("cli grid: scen finds maps next to the scenario or in --map-dir", "[cl
 
 TEST_CASE("cli grid: scen input errors name the file and line", "[cli][grid][scen][errors]") {
     TempDir dir;
-    dir.write("empty-8-8.map", slurp(movingai_dir() / "empty-8-8.map"));
+    dir.write("empty-8-8.map", empty_8_8);
     const std::string head = "version 1\n0\tempty-8-8.map\t8\t8\t1\t0\t6\t1\t5.41421356\n";
     const std::string fields = dir.write("fields.scen", head + "0\tempty-8-8.map\t8\t8\t5\t3\n");
     expect_input_error("scen " + q(fields) + " --json", {fields + ":3"});

@@ -1,6 +1,6 @@
 // Tests of the grid map and scenario readers (problems/grid/map_io.hpp) and of the map conventions
 // of shared/spec/grid.md they rely on: both formats, lenient line ends, every error with its
-// FILE:LINE:COL, the Moving AI files of reference-data/movingai (sizes, free endpoints and, on a sample,
+// FILE:LINE:COL, the Moving AI files of $PRIDE_DATA/movingai (sizes, free endpoints and, on a sample,
 // the recorded optimal lengths), the bundled maps of examples/maps, random-input robustness, the
 // papers' cell numbering (file 002 eq. 2) and obstacle inflation (file 003 section 3.1).
 #include <unistd.h>
@@ -22,6 +22,7 @@
 #include "framework/error.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
+#include "tests/test_support.hpp"
 
 using namespace pride::grid;
 using Catch::Matchers::Contains;
@@ -487,8 +488,10 @@ TEST_CASE("grid io: scenario errors", "[grid][io][scen][errors]") {
 // ---------------------------------------------------------------------------------------------
 // External data and the bundled maps
 
-TEST_CASE("grid io: every Moving AI map and scenario in reference-data parses and agrees", "[grid][io][movingai]") {
-    const fs::path dir = fs::path(PRIDE_REFERENCE_DATA) / "movingai";
+TEST_CASE("grid io: every Moving AI map and scenario of $PRIDE_DATA parses and agrees", "[grid][io][movingai]") {
+    const auto data = pride::test::shared_data("movingai", "Moving AI maps and scenarios");
+    if (!data) return;
+    const fs::path dir = *data;
     REQUIRE(fs::is_directory(dir));
     int maps = 0, scens = 0;
     std::size_t lines = 0;

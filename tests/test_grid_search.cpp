@@ -206,8 +206,10 @@ TEST_CASE("A* returns the optimal lengths recorded in the Moving AI scenario fil
     // bucket range is sampled) in unoptimised ones. The oracle's `length` is checked on every line
     // of the small maps and every 10th line of the larger ones.
     namespace fs = std::filesystem;
-    const fs::path dir = fs::path(PRIDE_REFERENCE_DATA) / "movingai";
-    const std::vector<fs::path> scenarios = pride::test::movingai_scenarios();
+    const auto data = pride::test::shared_data("movingai", "Moving AI maps and scenarios");
+    if (!data) return;
+    const fs::path dir = *data;
+    const std::vector<fs::path> scenarios = pride::test::movingai_scenarios(dir);
     REQUIRE(scenarios.size() >= 16);
 
     AStar astar;

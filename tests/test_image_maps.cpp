@@ -1,7 +1,7 @@
 // Tests of the map images and ROS map_server maps (problems/grid/image_map.hpp, ros_map.hpp), the
 // world frame of map.hpp, CSV matrices, and `pride path --start-world/--goal-world`: images made
 // here (PGM by hand, PNG with libpng), every map_server mode, negate and threshold boundaries,
-// the row / y convention, every error as one line, and the public ROS maps of examples/maps/ros.
+// the row / y convention, every error as one line, and the public ROS maps of $PRIDE_DATA/ros.
 #include <png.h>
 #include <unistd.h>
 #include <zlib.h>
@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
@@ -116,8 +117,9 @@ std::string yaml(const std::string& image, const std::string& extra = "",
     return "image: " + image + "\nresolution: 0.5\norigin: " + origin + "\n" + extra;
 }
 
-fs::path ros_maps() {
-    return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "ros";
+/// nav2's two map_server maps ($PRIDE_DATA/ros), or nothing after the line saying the test is skipped.
+std::optional<fs::path> ros_maps() {
+    return pride::test::shared_data("ros", "nav2's ROS map_server maps");
 }
 
 }  // namespace
@@ -372,21 +374,23 @@ TEST_CASE("ros maps: the YAML's errors are one line with the file, line and colu
 }
 
 TEST_CASE("ros maps: the public nav2 maps load with their frames, and A* crosses them", "[grid][map][ros]") {
-    const GridMap sandbox = read_map((ros_maps() / "tb3_sandbox.yaml").string());
+    const auto ros = ros_maps();
+    if (!ros) return;
+    const GridMap sandbox = read_map((*ros / "tb3_sandbox.yaml").string());
     CHECK(sandbox.width() == 384);
     CHECK(sandbox.height() == 384);
     REQUIRE(sandbox.frame().has_value());
     CHECK(sandbox.frame()->resolution == 0.05);
     CHECK(sandbox.frame()->origin_x == -10.0);
     CHECK(sandbox.frame()->origin_y == -10.0);
-    const GridMap depot = read_map((ros_maps() / "depot.yaml").string());
+    const GridMap depot = read_map((*ros / "depot.yaml").string());
     CHECK(depot.width() == 604);
     CHECK(depot.height() == 307);
     CHECK(depot.frame()->origin_x == -7.14);
 
     // The cells against a decoder of this test's own (the P5 bytes, map_server's formula).
     for (const auto& [name, free_thresh] : {std::pair{"tb3_sandbox", 0.196}, std::pair{"depot", 0.25}}) {
-        std::ifstream in(ros_maps() / (std::string(name) + ".pgm"), std::ios::binary);
+        std::ifstream in(*ros / (std::string(name) + ".pgm"), std::ios::binary);
         const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         const GridMap& m = std::string(name) == "depot" ? depot : sandbox;
         const std::size_t data = bytes.size() - m.size();  // 8-bit pixels after the header
@@ -411,31 +415,37 @@ TEST_CASE("ros maps: the public nav2 maps load with their frames, and A* crosses
 
 TEST_CASE("pride path: --start-world and --goal-world on a map_server map, path_world in the output",
           "[grid][map][ros][cli]") {
-    const std::string map = (ros_maps() / "tb3_sandbox.yaml").string();
-    const auto r = pride::test::run_pride("path --map '" + map +
-                                          "' --start-world -2,-0.5 --goal-world -0.5,0.5 --algo astar --json");
-    INFO(r.err);
-    REQUIRE(r.status == 0);
-    CHECK_THAT(r.out, Contains("\"path_world\": [[-1.975, -0.475], "));
-    CHECK_THAT(r.out, Contains("[-0.475, 0.525]]"));
-    const auto text = pride::test::run_pride("path --map '" + map + "' --start 160,193 --goal 190,173 --algo astar");
-    REQUIRE(text.status == 0);
-    CHECK_THAT(text.out, Contains("path_world      [[-1.975, -0.475], "));
+    using pride::test::expect_input_error;
     // A map without a frame has no path_world.
     const std::string movingai = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
     const auto plain =
         pride::test::run_pride("path --map '" + movingai + "' --start 0,0 --goal 9,9 --algo astar --json");
     REQUIRE(plain.status == 0);
     CHECK_THAT(plain.out, !Contains("path_world"));
-
-    using pride::test::expect_input_error;
     expect_input_error("path --map '" + movingai + "' --start-world 0,0 --goal 9,9 --algo astar",
                        {"--start-world", "has no world frame", "--start"});
-    expect_input_error("path --map '" + map + "' --start-world 30,0 --goal-world 0,0 --algo astar",
-                       {"--start-world", "outside the map", "[-10, 9.2)"});
-    expect_input_error("path --map '" + map + "' --start-world 0,0 --goal-world 0:0 --algo astar", {"--goal-world"});
-    expect_input_error("path --map '" + map + "' --goal-world 0,0 --algo astar", {"--start", "--start-world"});
-    expect_input_error("path --map '" + map + "' --start 1,1 --start-world 0,0 --goal 2,2 --algo astar", {"--start"});
+
+    // nav2's sandbox map, where it is at hand.
+    if (const auto ros = ros_maps()) {
+        const std::string map = (*ros / "tb3_sandbox.yaml").string();
+        const auto r = pride::test::run_pride("path --map '" + map +
+                                              "' --start-world -2,-0.5 --goal-world -0.5,0.5 --algo astar --json");
+        INFO(r.err);
+        REQUIRE(r.status == 0);
+        CHECK_THAT(r.out, Contains("\"path_world\": [[-1.975, -0.475], "));
+        CHECK_THAT(r.out, Contains("[-0.475, 0.525]]"));
+        const auto text =
+            pride::test::run_pride("path --map '" + map + "' --start 160,193 --goal 190,173 --algo astar");
+        REQUIRE(text.status == 0);
+        CHECK_THAT(text.out, Contains("path_world      [[-1.975, -0.475], "));
+        expect_input_error("path --map '" + map + "' --start-world 30,0 --goal-world 0,0 --algo astar",
+                           {"--start-world", "outside the map", "[-10, 9.2)"});
+        expect_input_error("path --map '" + map + "' --start-world 0,0 --goal-world 0:0 --algo astar",
+                           {"--goal-world"});
+        expect_input_error("path --map '" + map + "' --goal-world 0,0 --algo astar", {"--start", "--start-world"});
+        expect_input_error("path --map '" + map + "' --start 1,1 --start-world 0,0 --goal 2,2 --algo astar",
+                           {"--start"});
+    }
     // Bad image files are one line too, exit status 2.
     const TempDir dir("cli");
     const std::string bad = dir.write("bad.png", "\x89PNG\r\n\x1a\nxx");

@@ -43,7 +43,9 @@ TEST_CASE("jps: the length of A* on every line of the Moving AI scenario files")
     AStar astar;
     JumpPointSearch jps;
     std::int64_t queries = 0;
-    for (const auto& scen : test::movingai_scenarios()) {
+    const auto data = test::shared_data("movingai", "Moving AI maps and scenarios");
+    if (!data) return;
+    for (const auto& scen : test::movingai_scenarios(*data)) {
         const auto entries = read_scenario(scen.string());
         std::map<std::string, GridMap> maps;
         for (const auto& e : entries) {

@@ -1,7 +1,7 @@
 // Tests of the multi-objective box problems (problems/multiobjective/, issue 28): ZDT1-4, 6 and
 // DTLZ1-7 at hand-computed points, points of their Pareto-optimal sets onto the analytic fronts,
 // the fronts and distances of fronts.hpp, the concept, WeightedSum over a ZDT problem, jMetal's
-// published reference fronts (tests/data/jmetal/, README.md there), and every error path.
+// published reference fronts ($PRIDE_DATA/jmetal-fronts/, docs/multiobjective.md), and every error path.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -45,10 +45,10 @@ std::vector<double> col(const Matrix& m, Eigen::Index j) {
     return {m.col(j).data(), m.col(j).data() + m.rows()};
 }
 
-/// A jMetal reference front (tests/data/jmetal/`file`: one point a line, values separated by
-/// commas) as M rows, one column per point.
-Matrix read_front(const std::string& file) {
-    std::ifstream in(std::string(PRIDE_SOURCE_DIR) + "/tests/data/jmetal/" + file);
+/// A jMetal reference front (`dir`/`file`: one point a line, values separated by commas) as M
+/// rows, one column per point.
+Matrix read_front(const std::filesystem::path& dir, const std::string& file) {
+    std::ifstream in(dir / file);
     REQUIRE(in.good());
     std::vector<std::vector<double>> points;
     for (std::string line; std::getline(in, line);) {
@@ -499,9 +499,11 @@ TEST_CASE("mo problems: WeightedSum over ZDT1 is the weighted sum", "[mo-problem
 }
 
 // ---------------------------------------------------------------------------------------------
-// jMetal's reference fronts (tests/data/jmetal/README.md: source, commit, licence).
+// jMetal's reference fronts ($PRIDE_DATA/jmetal-fronts; docs/multiobjective.md: source, commit, licence).
 
 TEST_CASE("mo problems: jMetal's reference fronts lie on the analytic fronts", "[mo-problems][jmetal]") {
+    const auto fronts = pride::test::shared_data("jmetal-fronts", "jMetal's reference fronts");
+    if (!fronts) return;
     // (a) every point of jMetal's front is on ours, to the digits jMetal prints (5 for DTLZ1.4D, 6
     //     for ZDT1, 9 for ZDT3 and ZDT6, 16-17 for DTLZ2.4D and DTLZ5.3D);
     // (b) IGD both ways between jMetal's front and ours at about the same size (jMetal's 4-D fronts
@@ -522,7 +524,7 @@ TEST_CASE("mo problems: jMetal's reference fronts lie on the analytic fronts", "
     };
     for (const auto& c : cases) {
         INFO(c.file);
-        const Matrix theirs = read_front(c.file);
+        const Matrix theirs = read_front(*fronts, c.file);
         REQUIRE(theirs.rows() == static_cast<Eigen::Index>(c.m));
         const Matrix ours = reference_front(c.name, c.m, c.points);
         CHECK(max_distance(c.name, theirs) < c.max_distance);
@@ -533,7 +535,7 @@ TEST_CASE("mo problems: jMetal's reference fronts lie on the analytic fronts", "
     // DTLZ7.3D: jMetal's grid of step 0.02 keeps f_i in {0, ..., 0.26} and {0.64, ..., 0.86}: f3 is
     // right (to 5e-6, its 6 digits), but 0.26 and 0.86 lie past the pieces' ends 0.2514 and 0.8594
     // (by 0.0086 at most): 100 of its 676 points, which the exact front dominates by a hair.
-    const Matrix theirs = read_front("DTLZ7.3D.csv");
+    const Matrix theirs = read_front(*fronts, "DTLZ7.3D.csv");
     REQUIRE(theirs.rows() == 3);
     REQUIRE(theirs.cols() == 676);
     double f3_residual = 0.0, off_pieces = 0.0;

@@ -1,12 +1,16 @@
 #pragma once
-// Small helpers shared by the tests: a temporary folder, whole-file reads, lines of a text, the
-// numbers of a JSON array, and the check of the command line's bad-input contract.
+// Small helpers shared by the tests: a temporary folder, whole-file reads, the public data of
+// others found through PRIDE_DATA, lines of a text, the numbers of a JSON array, and the check of
+// the command line's bad-input contract.
 #include <stdlib.h>
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -70,6 +74,24 @@ inline std::string slurp(const std::filesystem::path& p) {
     std::stringstream s;
     s << f.rdbuf();
     return s.str();
+}
+
+/// `$PRIDE_DATA/relative`: a file or folder of the public data written by others that the
+/// repository does not hold (Moving AI maps, nav2's ROS maps, jMetal's fronts; laid out as
+/// README.md says). Without PRIDE_DATA, or without that file under it, prints the one line
+/// "skipped: needs $PRIDE_DATA/relative (what), why" and gives nothing: the test then returns,
+/// and passes, without checking what needs the data.
+inline std::optional<std::filesystem::path> shared_data(const std::string& relative, const std::string& what) {
+    const char* root = std::getenv("PRIDE_DATA");
+    std::string why;
+    if (!root || !*root)
+        why = "not set";
+    else if (const std::filesystem::path path = std::filesystem::path(root) / relative; std::filesystem::exists(path))
+        return path;
+    else
+        why = "not found under " + std::string(root);
+    std::cout << "skipped: needs $PRIDE_DATA/" << relative << " (" << what << "), " << why << std::endl;
+    return std::nullopt;
 }
 
 /// The lines of `text`, without their '\n'; a last line without one counts.

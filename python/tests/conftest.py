@@ -1,4 +1,5 @@
-"""Shared fixtures: the command line (results are compared with its JSON), the reference data."""
+"""Shared fixtures: the command line (results are compared with its JSON), the reference data, the
+public data of others found through PRIDE_DATA."""
 import json
 import os
 import pathlib
@@ -17,8 +18,21 @@ def pride_exe():
 
 
 def reference_data():
-    """The repository's reference-data/ (public data by others, shipped with pride)."""
+    """The repository's reference-data/ (facts restated from public sources, with the sources named)."""
     return pathlib.Path(os.environ.get("PRIDE_REFERENCE_DATA", str(REPO / "reference-data")))
+
+
+def shared_data(relative, what):
+    """$PRIDE_DATA/relative: a file or folder of the public data written by others that the
+    repository does not hold (Moving AI maps, nav2's ROS maps, jMetal's fronts). Without
+    PRIDE_DATA, or without that file under it, the test is skipped with the one line saying why."""
+    root = os.environ.get("PRIDE_DATA")
+    if not root:
+        pytest.skip(f"needs $PRIDE_DATA/{relative} ({what}), not set")
+    path = pathlib.Path(root) / relative
+    if not path.exists():
+        pytest.skip(f"needs $PRIDE_DATA/{relative} ({what}), not found under {root}")
+    return path
 
 
 def cli(*args, check=True):

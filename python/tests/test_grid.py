@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import pride
-from conftest import cli, reference_data
+from conftest import cli, shared_data
 
 ALGOS = pride.algorithms()
 
@@ -133,7 +133,7 @@ def test_bad_grid_arguments():
 
 
 def test_map_file_equals_cli():
-    path = reference_data() / "movingai" / "random-32-32-10.map"
+    path = shared_data("movingai/random-32-32-10.map", "Moving AI maps")
     g = pride.Grid.load(str(path))
     a = g.to_array()
     free = [(x, y) for y in range(g.height) for x in range(g.width) if a[y, x] == 0]

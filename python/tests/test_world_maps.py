@@ -1,20 +1,24 @@
-"""Maps with a world frame (ROS map_server YAML files, examples/maps/ros): Grid.resolution and
-Grid.origin, plan's start_world/goal_world keywords and the result's path_world, and the one-line
-errors naming the keyword."""
+"""Maps with a world frame (ROS map_server YAML files; nav2's sandbox map from $PRIDE_DATA/ros):
+Grid.resolution and Grid.origin, plan's start_world/goal_world keywords and the result's
+path_world, and the one-line errors naming the keyword."""
 import os
-import pathlib
 
 import numpy as np
 import pytest
 
 import pride
 
-ROS = pathlib.Path(__file__).resolve().parents[2] / "examples" / "maps" / "ros"
-SANDBOX = str(ROS / "tb3_sandbox.yaml")
+from conftest import shared_data
 
 
-def test_frame_properties():
-    g = pride.Grid.load(SANDBOX)
+@pytest.fixture
+def sandbox():
+    """nav2's tb3_sandbox map_server map (skipped, with the reason, without PRIDE_DATA)."""
+    return str(shared_data("ros/tb3_sandbox.yaml", "nav2's ROS map_server maps"))
+
+
+def test_frame_properties(sandbox):
+    g = pride.Grid.load(sandbox)
     assert (g.width, g.height) == (384, 384)
     assert g.resolution == 0.05
     assert g.origin == (-10.0, -10.0)
@@ -22,8 +26,8 @@ def test_frame_properties():
     assert plain.resolution is None and plain.origin is None
 
 
-def test_plan_in_world_coordinates():
-    g = pride.Grid.load(SANDBOX)
+def test_plan_in_world_coordinates(sandbox):
+    g = pride.Grid.load(sandbox)
     r = pride.plan(g, start_world=(-2.0, -0.5), goal_world=(-0.5, 0.5), algo="astar")
     assert r.feasible
     # The cells holding the points: x = floor((-2 + 10) / 0.05) = 160, row from the bottom
@@ -59,8 +63,8 @@ def test_unknown_cells_blocked_or_free(tmp_path):
                                                 "unknown_free": True}], algorithms=["astar"])
 
 
-def test_errors_name_the_keyword(tmp_path):
-    g = pride.Grid.load(SANDBOX)
+def test_errors_name_the_keyword(tmp_path, sandbox):
+    g = pride.Grid.load(sandbox)
     with pytest.raises(ValueError, match=r"^start_world: the point \(30, 0\) is outside the map: x in \[-10, 9.2\)"):
         pride.plan(g, start_world=(30.0, 0.0), goal_world=(0, 0), algo="astar")
     with pytest.raises(TypeError, match="^goal_world: expected a number, got str"):
