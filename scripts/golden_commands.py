@@ -2,7 +2,9 @@
 """Writes the fixed set of `pride run` and `pride path` commands whose JSON results (all fields
 but wall_ms) the golden-results test holds the code to, bit for bit (tests/data/golden/).
 Usage: scripts/golden_commands.py > tests/data/golden/commands.txt
-Maps are named relative to the top of the checkout."""
+Maps are named relative to the top of the checkout, Moving AI's as $PRIDE_DATA/movingai/...
+(the public data of others, not in the repository: the golden test and golden_update.py read them
+there, and skip those commands without PRIDE_DATA)."""
 runs = []
 for algo in ["pso", "pso-constriction", "ga", "ga-plus", "lso", "ilso", "nlopt:LN_SBPLX", "nlopt:GN_CRS2_LM",
              "nlopt:LN_NELDERMEAD"]:
@@ -75,8 +77,8 @@ paths += [
     f"{base} --algo pso --corner-cutting --oracle --seed 11 --json",
     f"{base} --algo astar --corner-cutting --json",
     f"{base} --algo exact --objective length --corner-cutting --json",
-    "path --map reference-data/movingai/den312d.map --start 35,29 --goal 38,55 --algo ga --inflate 1 --oracle --seed 12 --json",
-    "path --map reference-data/movingai/den312d.map --start 38,55 --goal 23,65 --algo pso --encoding free --inflate 1 --oracle --seed 3 --json",
+    "path --map $PRIDE_DATA/movingai/den312d.map --start 35,29 --goal 38,55 --algo ga --inflate 1 --oracle --seed 12 --json",
+    "path --map $PRIDE_DATA/movingai/den312d.map --start 38,55 --goal 23,65 --algo pso --encoding free --inflate 1 --oracle --seed 3 --json",
     f"{base} --algo pso --evals 777 --pop 13 --seed 13 --json",
     f"{base} --algo pso-constriction --param walk_init=1 --seed 14 --json",
 ]
@@ -85,8 +87,8 @@ base = f"path --map {m} --start {s} --goal {g}"
 paths += [
     f"{base} --algo ilso --encoding free --waypoints 4 --objective length --oracle --seed 2 --json",
     f"{base} --algo ga --encoding chain --objective iqga --pop 40 --iters 20 --seed 3 --json",
-    "path --map reference-data/movingai/random-32-32-20.map --start 1,1 --goal 30,30 --algo pso --encoding free --objective length --oracle --seed 1 --json",
-    "path --map reference-data/movingai/maze-32-32-4.map --start 1,1 --goal 29,29 --algo ga --encoding chain --objective length --oracle --seed 2 --json",
+    "path --map $PRIDE_DATA/movingai/random-32-32-20.map --start 1,1 --goal 30,30 --algo pso --encoding free --objective length --oracle --seed 1 --json",
+    "path --map $PRIDE_DATA/movingai/maze-32-32-4.map --start 1,1 --goal 29,29 --algo ga --encoding chain --objective length --oracle --seed 2 --json",
 ]
 # Added with the suites and the new algorithms (session 4: issues 10-12); appended, so that the
 # lines above keep their numbers.
