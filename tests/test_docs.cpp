@@ -252,9 +252,13 @@ TEST_CASE("docs: every command the docs show prints what they show", "[docs]") {
     // on PATH the one just built. A transcript is a fenced block whose first line starts with "$ ";
     // one marked "<!-- scratch copy" shows a modified build and is checked elsewhere
     // (test_docs_problem.cpp); one marked "<!-- needs OMPL" only where OMPL is built (not in the
-    // sanitized build, whose PRIDE_OMPL is off).
+    // sanitized build, whose PRIDE_OMPL is off); one marked "<!-- needs $PRIDE_DATA/FOLDER" (the
+    // public data of others, which the repository does not hold) only where that folder is, and
+    // PRIDE_DATA reaches the commands, which name it so.
     namespace fs = std::filesystem;
     std::size_t checked = 0, cli = 0;
+    std::map<std::string, bool> shared;  // PRIDE_DATA's folders, each looked up (and its absence told) once
+    const std::string needs_data = "<!-- needs $PRIDE_DATA/";
     for (const auto& entry : fs::directory_iterator(fs::path(kSource) / "docs")) {
         if (entry.path().extension() != ".md") continue;
         const std::string doc = "docs/" + entry.path().filename().string();
@@ -269,6 +273,13 @@ TEST_CASE("docs: every command the docs show prints what they show", "[docs]") {
             if (block.preceding.rfind("<!-- scratch copy", 0) == 0) continue;
             if (block.preceding.rfind("<!-- needs OMPL", 0) == 0 && !engine::algorithms().find("ompl:RRTstar"))
                 continue;
+            if (block.preceding.rfind(needs_data, 0) == 0) {
+                const std::string rest = block.preceding.substr(needs_data.size());
+                const std::string folder = rest.substr(0, rest.find_first_of(" :"));
+                if (!shared.count(folder))
+                    shared[folder] = pride::test::shared_data(folder, "for the docs' transcripts on it").has_value();
+                if (!shared[folder]) continue;
+            }
             for (std::size_t i = 0; i < block.lines.size();) {
                 const std::string command = block.lines[i].substr(2);
                 std::string shown;
