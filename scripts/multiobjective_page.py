@@ -39,13 +39,14 @@ PAGE = REPO / "docs" / "results" / "multiobjective.md"
 CSV = "multiobjective-grids.csv"
 
 # (id, map file, start, goal): the papers' maps (examples/maps/) corner to corner, and two Moving AI
-# maps with a scenario line each (reference-data/movingai/, the line's start and goal).
+# maps with a scenario line each (the public data of others, read from $PRIDE_DATA/movingai by the
+# runs; the line's start and goal).
 INSTANCES = [
     ("file002-20x20", "examples/maps/file002-20x20.map", (0, 19), (19, 0)),
     ("file002-40x40", "examples/maps/file002-40x40.map", (1, 38), (38, 1)),
     ("file003-50x50", "examples/maps/file003-50x50.map", (0, 49), (49, 0)),
     ("file003-env3-60x60", "examples/maps/file003-env3-60x60.map", (0, 59), (59, 0)),
-    ("den312d", "reference-data/movingai/den312d.map", (58, 37), (4, 56)),
+    ("den312d", "$PRIDE_DATA/movingai/den312d.map", (58, 37), (4, 56)),
 ]
 # (label, algorithm, encoding, init): the three on `free`, and NSGA-II on cell chains with the chain
 # operators, from random walks and from file 002's SITP walks.
@@ -69,7 +70,7 @@ def run_all():
 
     rows = []
     for name, path, start, goal in INSTANCES:
-        grid = pride.Grid.load(str(REPO / path))
+        grid = pride.Grid.load(str(rp.map_file(path)))
         for key, criteria in CRITERIA.items():
             exact = pride.pareto(grid, start, goal, objectives=criteria)
             for label, algo, encoding, init in ENTRANTS:

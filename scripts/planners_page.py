@@ -34,14 +34,15 @@ CSV = "planners.csv"
 
 
 def last_scenario_line(name):
-    """The start and goal of the last line (the longest bucket) of a bundled Moving AI scenario file."""
-    scen = sorted((REPO / "reference-data" / "movingai").glob(name + "-even-*.scen"))[0]
+    """The start and goal of the last line (the longest bucket) of a Moving AI scenario file."""
+    scen = sorted(rp.map_file("$PRIDE_DATA/movingai").glob(name + "-even-*.scen"))[0]
     fields = scen.read_text().strip().splitlines()[-1].split()
     return (int(fields[4]), int(fields[5])), (int(fields[6]), int(fields[7]))
 
 
-# (id, map file, start, goal): the papers' maps corner to corner, and bundled Moving AI maps with the
-# last line of their scenario files.
+# (id, map file, start, goal): the papers' maps corner to corner, and Moving AI maps (the public data
+# of others, read from $PRIDE_DATA/movingai by the runs) with the start and goal of the last line of
+# their scenario files `NAME-even-1.scen` (the runs check them against the files).
 PAPER_MAPS = [
     ("file000-13x13", "examples/maps/file000-13x13.map", (0, 0), (12, 12)),
     ("file002-20x20", "examples/maps/file002-20x20.map", (0, 19), (19, 0)),
@@ -49,8 +50,15 @@ PAPER_MAPS = [
     ("file003-50x50", "examples/maps/file003-50x50.map", (0, 49), (49, 0)),
     ("file003-env3-60x60", "examples/maps/file003-env3-60x60.map", (0, 59), (59, 0)),
 ]
-MOVINGAI = ["den312d", "maze-32-32-2", "random-64-64-20", "room-64-64-8", "den520d", "Berlin_1_256"]
-INSTANCES = PAPER_MAPS + [(m, f"reference-data/movingai/{m}.map", *last_scenario_line(m)) for m in MOVINGAI]
+MOVINGAI = [
+    ("den312d", (46, 40), (52, 37)),
+    ("maze-32-32-2", (17, 5), (6, 10)),
+    ("random-64-64-20", (60, 35), (10, 56)),
+    ("room-64-64-8", (22, 45), (4, 47)),
+    ("den520d", (177, 18), (9, 212)),
+    ("Berlin_1_256", (212, 144), (78, 147)),
+]
+INSTANCES = PAPER_MAPS + [(m, f"$PRIDE_DATA/movingai/{m}.map", s, g) for m, s, g in MOVINGAI]
 
 WHOLE_MAP = ["astar", "jps", "theta-star", "lazy-theta-star", "any-angle-exact"]
 # (label, algorithm, encoding)
@@ -76,6 +84,8 @@ FIELDS = ["instance", "planner", "seed", "feasible", "evaluations", "wall_ms"] +
 def run_all():
     import pride  # the build's module (PYTHONPATH=build/python)
 
+    for m, s, g in MOVINGAI:
+        assert last_scenario_line(m) == (s, g), f"{m}: the scenario file's last line is not {s} to {g}"
     rows = []
 
     def record(name, label, seed, r):
@@ -86,7 +96,7 @@ def run_all():
                      "" if r.any_angle_gap is None else repr(r.any_angle_gap)])
 
     for name, path, start, goal in INSTANCES:
-        grid = pride.Grid.load(str(REPO / path))
+        grid = pride.Grid.load(str(rp.map_file(path)))
         for algo in WHOLE_MAP:
             record(name, algo, 0, pride.plan(grid, start, goal, algo=algo, objective="length", gaps=True))
         for label, algo, encoding in BUDGETED:

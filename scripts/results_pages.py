@@ -48,6 +48,20 @@ DATA = REPO / "docs" / "results" / "data"
 IMG = REPO / "docs" / "results" / "img"
 CAMPAIGNS = REPO / "examples" / "campaigns"
 
+
+def map_file(name):
+    """The file a page's map `name` names: relative to the top of the checkout, or, written
+    `$PRIDE_DATA/...`, a map of the public data of others under the folder PRIDE_DATA names (Moving
+    AI's maps, which the repository does not hold). Only the runs need the file; the pages print
+    `name` as it is written."""
+    prefix = "$PRIDE_DATA/"
+    if not name.startswith(prefix):
+        return REPO / name
+    root = os.environ.get("PRIDE_DATA")
+    if not root:
+        sys.exit(f"{name}: set PRIDE_DATA to the folder of the public data (reference-data/README.md)")
+    return pathlib.Path(root) / name[len(prefix):]
+
 PAGES = {
     "file002": {
         "page": "docs/results/file002.md",
