@@ -175,7 +175,7 @@ class Ga {
 /// The GA on chains (grid paths, ...): the same skeleton with the chain operator policies.
 using ChainGa = Ga<TournamentSelection, ChainCrossover, ChainMutation>;
 
-/// File 002's IQGA on chain spaces with regions, two-point crossover and numbered mutations
+/// Zhang et al.'s (2025) IQGA on chain spaces with regions, two-point crossover and numbered mutations
 /// (iqga_operators.hpp); elitist replacement with elitism 1. Its initial chains are the problem's
 /// (on grids: SITP walks when the space is set so, as the registry entry iqga does by default).
 using IqgaGa = Ga<RegionTournamentSelection, EliteCrossover, IqgaMutation>;

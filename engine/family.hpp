@@ -84,16 +84,16 @@ struct ChainSpaceDefaults {
 inline std::vector<ParamSpec> chain_space_params(const ChainSpaceDefaults& d) {
     return {choice("shortcut", {"none", "line", "elbow"}, d.shortcut,
                    "the chain space's shortcut on every chain an operator makes, at no evaluation: line of sight "
-                   "(file 003), or one-turn elbows first (this project's)")
+                   "(Cai and Du 2021), or one-turn elbows first (this project's)")
                 .only_on_chains(),
             flag("shortcut_keep", false,
                  "keep a shortcut only when the objective does not rise (two counted evaluations per changed chain)")
                 .only_on_chains(),
             choice("walks", {"eq10", "octile"}, d.walks,
-                   "random walks' roulette: file 003's eq. 10 (D - distance to the goal) or exp(-2 x octile change)")
+                   "random walks' roulette: Cai and Du's (2021) eq. 10 (D - distance to the goal) or exp(-2 x octile change)")
                 .only_on_chains(),
             choice("sitp_column", {"random", "midpoint"}, "random",
-                   "SITP's transition column: random between start and goal (file 002's text) or eq. 3's midpoint")
+                   "SITP's transition column: random between start and goal (Zhang et al.'s (2025) text) or eq. 3's midpoint")
                 .only_on_chains(),
             choice("sitp_score", {"objective", "length"}, d.sitp_score,
                    "SITP keeps the best of N/8 walks by the objective (counted evaluations) or by length")

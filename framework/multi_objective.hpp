@@ -48,7 +48,7 @@ concept BatchMultiObjectiveProblem = MultiObjectiveProblem<P> && requires(P& p, 
 
 /// The scalar problem sum_i w_i f_i(x) of a multi-objective problem: a view that evaluates the
 /// problem it holds (a problem shares its definition between copies, as every problem does), so
-/// that the weighted single-objective algorithms of the papers (file 002's eq. 12) and the
+/// that the weighted single-objective algorithms of the papers (Zhang et al.'s (2025) eq. 12) and the
 /// multi-objective ones search the same objectives. Each call of evaluate() is one evaluation of
 /// the multi-objective problem.
 template <MultiObjectiveProblem P>

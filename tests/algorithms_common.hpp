@@ -237,7 +237,7 @@ void for_each_algorithm(std::int64_t population, F&& f) {
     f("pso-constriction", pso_constriction(population));
     f("ga", ga(population));
     f("ga-plus", ga_plus(population));
-    // The GA variants of file 002 (algorithms/parts/adaptive_rates.hpp, catastrophe.hpp,
+    // The GA variants of Zhang et al. (2025) (algorithms/parts/adaptive_rates.hpp, catastrophe.hpp,
     // q_learning.hpp; tests/test_ga_variants.cpp): the catastrophe every 2 generations here.
     pride::Ga<pride::TournamentSelection, pride::AdaptiveSbxCrossover, pride::AdaptivePolynomialMutation> iaga;
     iaga.id = "iaga";

@@ -50,7 +50,7 @@ using Clock = std::chrono::steady_clock;
 // Files and processes
 
 fs::path bundled_map() {
-    return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "file000-10x10.map";
+    return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "wan2022-10x10.map";
 }
 fs::path bundled_campaigns() {
     return fs::path(PRIDE_SOURCE_DIR) / "examples" / "campaigns";
@@ -637,9 +637,9 @@ TEST_CASE("bench: unknown problems, algorithms and parameters are named", "[cli]
 }
 
 TEST_CASE("bench: bad grid problems are named with their line", "[cli][bench][errors]") {
-    expect_campaign_error(replace(grid_base(), "file000-10x10.map", "nosuchmap-10x10.map"),
+    expect_campaign_error(replace(grid_base(), "wan2022-10x10.map", "nosuchmap-10x10.map"),
                           {"FILE:5:", "'g1'", "nosuchmap-10x10.map"});
-    // (5, 1) is an obstacle of file000-10x10.map
+    // (5, 1) is an obstacle of wan2022-10x10.map
     expect_campaign_error(replace(grid_base(), "start = [0, 0]", "start = [5, 1]"),
                           {"FILE:5:", "'g1'", "start", "(5,1)"});
     expect_campaign_error(replace(grid_base(), "goal = [9, 9]", "goal = [10, 9]"), {"FILE:5:", "'g1'", "goal"});

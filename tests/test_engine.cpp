@@ -37,7 +37,7 @@ engine::AlgorithmSpec algo(const std::string& name, std::initializer_list<std::p
 }
 
 std::string map_file() {
-    return (std::filesystem::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "file000-10x10.map").string();
+    return (std::filesystem::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "wan2022-10x10.map").string();
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ CliOutput run_redirected(const std::string& args, const std::string& redirect) {
 }
 
 std::string map_file() {
-    return std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    return std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
 }
 
 /// A small store written by pride bench, with the algorithm ids given.

@@ -422,7 +422,7 @@ TEST_CASE("pride path: --start-world and --goal-world on a map_server map, path_
     REQUIRE(text.status == 0);
     CHECK_THAT(text.out, Contains("path_world      [[-1.975, -0.475], "));
     // A map without a frame has no path_world.
-    const std::string movingai = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string movingai = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     const auto plain =
         pride::test::run_pride("path --map '" + movingai + "' --start 0,0 --goal 9,9 --algo astar --json");
     REQUIRE(plain.status == 0);

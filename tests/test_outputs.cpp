@@ -97,7 +97,7 @@ CliOutput run_limited(const std::string& args, rlim_t max_bytes) {
 }
 
 std::string map_file() {
-    return std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    return std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
 }
 
 /// A store of two problems (a sphere and a grid) and two algorithms, written by pride bench.

@@ -32,7 +32,7 @@ using pride::test::slurp;
 using pride::test::TempDir;
 
 std::string bundled_map_text() {
-    return slurp(std::filesystem::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "file000-10x10.map");
+    return slurp(std::filesystem::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "wan2022-10x10.map");
 }
 
 /// A grid campaign on m.map (beside the file) and a continuous problem: 2 x 1 x `seeds` runs.

@@ -1,5 +1,5 @@
 #pragma once
-// File 002's IQGA (shared/spec/algorithms.md, IQGA) as GA policies (ga.hpp), over any chain space
+// Zhang et al.'s (2025) IQGA (shared/spec/algorithms.md, IQGA) as GA policies (ga.hpp), over any chain space
 // with the capabilities of framework/chain.hpp (RegionOf, TwoPointCrossover, NumberedMutations):
 //   RegionTournamentSelection  eqs. 14-18: a mating pool built once per generation from tournaments
 //                              of three inside each region, then the parents drawn from it in
@@ -11,7 +11,7 @@
 //                              Q-learning choice among the three (q_learning.hpp, eq. 19), its
 //                              states from the length of the generation's best path (ChainLength).
 //
-// What the paper says (file 002 eqs. 16-18) and what is done here. Eq. 16: s_1 = n_1 if n_1 <= N/3,
+// What the paper says (Zhang et al. 2025, eqs. 16-18) and what is done here. Eq. 16: s_1 = n_1 if n_1 <= N/3,
 // else N/3; s_2 likewise; s_3 = N - s_1 - s_2 (n_i the members in region i; N/3 is read as
 // floor(N/3), the same test for whole n_i). Eq. 17: B = F_best - (21/20) F_worst, F the maximised
 // fitness of the current population. Eq. 18: P_j = (F_i - F_worst) / (F_best - F_worst), F_i the
@@ -117,7 +117,7 @@ inline double badness(double v, double best, double worst) noexcept {
 struct RegionTournamentSelection {
     static constexpr bool uses_regions = true;  // the GA fills GenerationContext::regions for it
     std::int64_t elite = 20;                    // the pairing rule's elite: min(elite, N/2) best
-    // Ablations (file 002's changes removed one at a time): without `regions` the whole population
+    // Ablations (Zhang et al.'s (2025) changes removed one at a time): without `regions` the whole population
     // is one region and all N tournaments draw from it; without `pairing` the second parent is
     // drawn from the whole pool like the first (no elite pairing rule).
     bool regions = true;

@@ -3,7 +3,7 @@
 // (engine/mo_targets.hpp) and runs typed; the defaults are the papers' (their headers cite them).
 // NSGA-II and NSGA-III also run on grid chains with the chain operators (run_multiobjective_chain).
 // Decided by this project: p_m on chains is a probability per child, 0.1 unless given (IQGA's
-// Pm, file 002, as the GA on chains), since the paper's 1/n per variable has no chain form.
+// Pm, Zhang et al. (2025), as the GA on chains), since the paper's 1/n per variable has no chain form.
 #include <fmt/format.h>
 
 #include <cstddef>
