@@ -24,14 +24,14 @@
 // ILSO = Weight QuadraticInertia (0.99 -> 0.35), cub thresholds 3/10 and 2/3 (eq. 12), and an
 // initialiser that takes the problem's starting points (rough-set rule walks on grids).
 //
-// Decided by the spec or this project where Wan and Gao (2022) are open: eq. (6) is read as exp(-30 (t/T)^10)
+// Decided by this project where Wan and Gao (2022) are open: eq. (6) is read as exp(-30 (t/T)^10)
 // (the printed exp(-30t/T)^10 vanishes after 2 % of the run, against the paper's own text);
 // beta = 0.2 fixed (the paper draws it at random); r of eq. 5 drawn once per run (`step` sets a
 // fixed factor instead, 0.1 in the original LSO); gamma is one N(0,1) draw per lion per iteration,
 // for every role; t counts the iterations that move, 1..T, so w reaches w_min and alpha_c reaches 0
 // on the last one; moves are synchronous (all from the p of the previous iteration); with a single
 // lioness (nLeader = 2) her partner is the king; g_bar of eq. (8) is low + high - g per coordinate
-// (the spec; the paper's overlined low and high, means over the coordinates as in eq. 5, give the
+// (the project's decision; the paper's overlined low and high, means over the coordinates as in eq. 5, give the
 // same point on a cubic box and differ on others); T is the iteration limit or the iterations the
 // evaluation budget allows, and when the budget ends inside an iteration the lions left over are
 // not evaluated and keep their personal bests. As stated, the king's p_i is g, so eq. (3) puts the

@@ -31,8 +31,8 @@
 // shortened by the line-of-sight shortcut), and each move of eqs. 1-8 moves a whale towards its
 // target through the space's TowardMoves capability; the improvisation and the reconstruction are
 // chain operations too. whale_pods.hpp says how each equation's factor becomes a share of the
-// target's course (the spec leaves that open).
-// Decided by the spec or this project where the papers are open: as in WOA.m, whales move one
+// target's course (the papers leave that open).
+// Decided by this project where the papers are open: as in WOA.m, whales move one
 // after another in place, so a random whale drawn for whale i may already have moved this
 // iteration (and is not yet clamped: clamping is applied to the whole pod before evaluation); the
 // random whale may be whale i itself; per-coordinate draws keep r and q per whale; eq. 8 uses one

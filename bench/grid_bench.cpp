@@ -1,4 +1,4 @@
-// The grid benchmark of issue 3; prints numbers, asserts nothing.
+// The grid benchmark; prints numbers, asserts nothing.
 //   1. A*: expansions per second and time per query on the larger Moving AI scenario maps
 //      (every line of each scenario file given on the command line): `astar,FILE,queries,
 //      expansions,exp/s first pass,ms/query first pass,worst length error,exp/s warm` (warm: the

@@ -1,6 +1,6 @@
 #pragma once
 // `pride path` (one run on a grid) and `pride scen` (A* against Moving AI scenario files), as in
-// shared/spec/cli.md.
+// docs/cli.md.
 #include <cstdint>
 #include <iosfwd>
 #include <optional>

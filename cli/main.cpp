@@ -1,4 +1,4 @@
-// pride: the command line of the framework (shared/spec/cli.md). Exit status 0 on success, 2 on
+// pride: the command line of the framework (docs/cli.md). Exit status 0 on success, 2 on
 // bad input (one line on stderr naming what and where), 1 on an internal failure.
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>

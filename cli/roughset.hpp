@@ -1,6 +1,6 @@
 #pragma once
 // pride roughset: reduce a decision table (a CSV file, or Wan and Gao's (2022) grid table) and print its
-// consistency, positive region, core, reducts and minimal rules (shared/spec/cli.md).
+// consistency, positive region, core, reducts and minimal rules (docs/cli.md).
 #include <iosfwd>
 #include <string>
 

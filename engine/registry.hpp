@@ -91,7 +91,7 @@ struct AlgorithmEntry {
     /// process-wide seed generator, and time limits).
     bool reproducible = true;
     /// The population on grids when none is given (for entries with a `pop` parameter): the papers'
-    /// N = 20, IQGA's N = 40 (Zhang et al. 2025, table 1; shared/spec/algorithms.md).
+    /// N = 20, IQGA's N = 40 (Zhang et al. 2025, table 1; docs/algorithms.md).
     std::int64_t grid_population = 20;
     /// Bytes a run needs besides the problem, for a population algorithm in `dimension`; checked
     /// against the machine's memory before anything is allocated.

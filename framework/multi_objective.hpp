@@ -1,5 +1,5 @@
 #pragma once
-// Problems with several objectives (issue 28): what a multi-objective algorithm needs of a box
+// Problems with several objectives: what a multi-objective algorithm needs of a box
 // problem. The number of objectives M is known before a run (objectives()), and one evaluation
 // writes all M values at once (an objective evaluated on its own is still one evaluation of the
 // problem: the budget counts points, not objective values). A single-objective algorithm never

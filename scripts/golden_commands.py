@@ -88,7 +88,7 @@ paths += [
     "path --map reference-data/movingai/random-32-32-20.map --start 1,1 --goal 30,30 --algo pso --encoding free --objective length --oracle --seed 1 --json",
     "path --map reference-data/movingai/maze-32-32-4.map --start 1,1 --goal 29,29 --algo ga --encoding chain --objective length --oracle --seed 2 --json",
 ]
-# Added with the suites and the new algorithms (session 4: issues 10-12); appended, so that the
+# Added with the suites and the new algorithms; appended, so that the
 # lines above keep their numbers.
 later = []
 for algo in ["pso", "ga-plus", "woa", "woa-hs", "woa-balance", "hswoa", "hs", "iaga", "icga", "ga-q"]:
@@ -106,7 +106,7 @@ for m, s, g in maps:
         later.append(f"{base} --algo {a} --encoding chain --objective length --iters 10 --oracle --seed 3 --json")
     later.append(f"{base} --algo ga --encoding chain --init sitp --objective iqga --iters 10 --oracle --seed 4 --json")
     later.append(f"{base} --algo pso --init sitp --objective cells --iters 10 --oracle --seed 5 --json")
-# Added in session 5 (issues 11, 12, 15): WOA and HS-WOA on chains and Cai and Du's (2021) maps, IQGA's
+# Added later: WOA and HS-WOA on chains and Cai and Du's (2021) maps, IQGA's
 # ablation flags, IAGA's pm floor off, ga-sga, threads and the largest seed; appended.
 f3 = ("examples/maps/cai2021-50x50.map", "0,49", "49,0")
 for a in ["woa", "woa-hs", "woa-balance", "hswoa"]:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerates docs/results/multiobjective.md (issue 28) from its runs, or checks it.
+"""Regenerates docs/results/multiobjective.md from its runs, or checks it.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/multiobjective_page.py run
         runs every (instance, algorithm, seed) of the page through pride's Python module (the runs

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerates docs/results/planners.md (issue 29) from its runs, or checks it.
+"""Regenerates docs/results/planners.md from its runs, or checks it.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/planners_page.py run
         runs every (instance, planner, seed) of the page through pride's Python module (the runs

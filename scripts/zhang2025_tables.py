@@ -31,7 +31,7 @@ PROBLEMS = {
 ORDER = ["ga", "iaga", "icga", "iqga", "iqga-midpoint"]
 VARIANTS = [  # (id, what it changes) in the order of the table
     ("iqga", "the default: random column, pm 0.1, SITP walks ranked by the objective"),
-    ("iqga-midpoint", "`sitp_column=midpoint` (eq. 3's formula; the pages' reading before issue 23)"),
+    ("iqga-midpoint", "`sitp_column=midpoint` (eq. 3's formula; the reading of earlier versions of the pages)"),
     ("iqga-pm1", "`pm=1` (every child mutated, section 2.4's reading)"),
     ("iqga-midpoint-pm1", "`sitp_column=midpoint pm=1`"),
     ("iqga-score-length", "`sitp_score=length` (SITP ranks its walks by length, at no evaluation)"),

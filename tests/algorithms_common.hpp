@@ -1,8 +1,8 @@
 #pragma once
 // What tests/test_algorithms.cpp and tests/test_algorithm_settings.cpp share: probes that record
 // every evaluated point, the algorithms in their test settings, and for_each_algorithm (every
-// registered box algorithm, for the suites that every algorithm must pass). One file before
-// issue 30; split so that neither translation unit takes over 30 s to compile.
+// registered box algorithm, for the suites that every algorithm must pass). Once one file;
+// split so that neither translation unit takes over 30 s to compile.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Tests of `pride bench` (shared/spec/cli.md, cli/campaign.hpp) through the real executable: every
+// Tests of `pride bench` (docs/cli.md, cli/campaign.hpp) through the real executable: every
 // campaign-file error (exit 2, one line naming the file, the line and the key, no store created);
 // --jobs 1 and --jobs 2 storing the same values; resuming after a real SIGKILL with no run lost or
 // run twice; re-running a finished campaign; refusing a store made from another campaign file. The
@@ -276,7 +276,7 @@ long long integer_of(const std::string& tagged) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The grid, read and solved here independently of the library (shared/spec/grid.md)
+// The grid, read and solved here independently of the library (docs/grid.md)
 
 struct Cell {
     int x, y;
@@ -985,7 +985,7 @@ TEST_CASE("bench: an SQLite database that is not a pride store is refused and le
 }
 
 // ---------------------------------------------------------------------------------------------
-// 5. Campaigns under faults (issue 14): signals, two processes on one store, read-only and full
+// 5. Campaigns under faults: signals, two processes on one store, read-only and full
 // file systems, a store deleted meanwhile, a store of a campaign that stored nothing
 
 namespace {

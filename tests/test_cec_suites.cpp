@@ -1,4 +1,4 @@
-// The CEC suites in campaigns and reports (issue 26): [[suite]] name = "cec2017" / "cec2022" and
+// The CEC suites in campaigns and reports: [[suite]] name = "cec2017" / "cec2022" and
 // what they expand to, their refusals (instances, a dimension without official data, an unknown
 // function) through `pride bench`, the suites' default budgets and runs; the best value so far that
 // every run records at exact evaluation counts, and `pride report --format cec` on a store of

@@ -1,4 +1,4 @@
-// Tests of `pride path` and `pride scen` (shared/spec/cli.md, shared/spec/grid.md) through the real
+// Tests of `pride path` and `pride scen` (docs/cli.md, docs/grid.md) through the real
 // executable: every algorithm and encoding on every bundled map (examples/maps), with the JSON
 // parsed and every path and metric re-checked here, independently of the library (own map reader,
 // own legality rules, own metrics, own breadth-first search); Moving AI scenario files; every input

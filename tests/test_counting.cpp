@@ -1,4 +1,4 @@
-// Every call of an objective is an evaluation (shared/spec/architecture.md): counted from outside,
+// Every call of an objective is an evaluation (docs/architecture.md): counted from outside,
 // by the objective itself, for every registered algorithm on every space and encoding it runs on
 // and every grid objective, the calls must equal the result's `evaluations` and stay within the
 // budget. Iterated over the registry, so that an algorithm registered tomorrow is covered.

@@ -1,4 +1,4 @@
-// Tests of the `chain` encoding (problems/grid/chain.hpp, shared/spec/grid.md "Encodings") and of
+// Tests of the `chain` encoding (problems/grid/chain.hpp, docs/grid.md "Encodings") and of
 // the GA on chains (algorithms/ga.hpp, ChainGa and its plus-replacement variant):
 //   - ChainSpace's operators on many random maps: every chain they make is a legal simple path
 //     from start to goal; crossover splices one parent's head to the other's tail at a common

@@ -1,5 +1,5 @@
 // Tests of the grid map and scenario readers (problems/grid/map_io.hpp) and of the map conventions
-// of shared/spec/grid.md they rely on: both formats, lenient line ends, every error with its
+// of docs/grid.md they rely on: both formats, lenient line ends, every error with its
 // FILE:LINE:COL, the Moving AI files of reference-data/movingai (sizes, free endpoints and, on a sample,
 // the recorded optimal lengths), the bundled maps of examples/maps, random-input robustness, the
 // papers' cell numbering (Zhang et al. 2025, eq. 2) and obstacle inflation (Cai and Du 2021, section 3.1).

@@ -120,7 +120,7 @@ Instance zhang2025_20() {
     return {map, scen.at(0).start, scen.at(0).goal, false};
 }
 
-/// The spec's pool, written out directly from the documented draws (iqga_operators.hpp).
+/// The pool of docs/algorithms.md, written out directly from the documented draws (iqga_operators.hpp).
 std::vector<std::size_t> expected_pool(std::span<const double> f, std::span<const std::size_t> regions, Rng& rng) {
     const std::size_t n = f.size();
     std::vector<std::vector<std::size_t>> in(3);

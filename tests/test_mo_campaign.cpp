@@ -1,4 +1,4 @@
-// Multi-objective campaigns (issue 28): problems of several objectives in campaign files, each
+// Multi-objective campaigns: problems of several objectives in campaign files, each
 // run stored with its whole front and, as its value, its hypervolume gap; the stored record is
 // the engine's run; the report says what the values are; bad entries are refused at their line.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Outputs complete or absent (issue 25, docs/reliability.md "Outputs: complete or absent"):
+// Outputs complete or absent (docs/reliability.md "Outputs: complete or absent"):
 // framework/output_files.hpp on its own (commit, discard, a rename that fails, a write that fails),
 // then every command that writes files, through the real `pride`: a full disk simulated with
 // RLIMIT_FSIZE (writes past N bytes fail with EFBIG, SIGXFSZ ignored) and standard output on

@@ -1,4 +1,4 @@
-// Where each algorithm plans on a grid (shared/spec/architecture.md: every algorithm declares its
+// Where each algorithm plans on a grid (docs/architecture.md: every algorithm declares its
 // native space; front ends use it when the user names none, and refuse a space the algorithm
 // cannot use with the ones it can): the encoding a run names, else the problem's, else the
 // algorithm's native one; one grid problem then holds planners on every space side by side, in one

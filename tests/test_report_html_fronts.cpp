@@ -1,4 +1,4 @@
-// `pride report STORE --html DIR` on a multi-objective campaign (issue 28): per problem the
+// `pride report STORE --html DIR` on a multi-objective campaign: per problem the
 // attainment surfaces of two objectives, each algorithm's median front against the reference
 // front and, on grids, that front's paths on the map; the surfaces drawn are attainment.hpp's of
 // the stored fronts; a damaged front is a note on the page. Also --plots' matplotlib figures of them.

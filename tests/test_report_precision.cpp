@@ -1,4 +1,4 @@
-// Reports in precision (issue 24): where a continuous problem's optimum f_opt is known, pride report
+// Reports in precision: where a continuous problem's optimum f_opt is known, pride report
 // gives f - f_opt (COCO's precision), its mean as the gap and the share within 1e-8 as optimal; --raw
 // gives the values f; `[budget] precision` sets the target f_opt + precision per problem. Every
 // figure is checked against the store's own values, computed here.

@@ -375,7 +375,7 @@ TEST_CASE("rule walk: the bundled maps, and walk lengths beside the random walk"
             REQUIRE(random.walk(map, s, g, rng, path));
             random_sum += metrics(path).length;
         }
-        // The spec asks for walks that differ: with the goal direction drawn between the two
+        // The project's decision asks for walks that differ: with the goal direction drawn between the two
         // directions that bracket the goal angle they do, on every bundled map.
         CHECK(distinct.size() > 5);
         WARN(entry.path().filename().string()

@@ -1,4 +1,4 @@
-// Parallel evaluation inside one run (issue 15; framework/parallel.hpp, Budget::threads): the same
+// Parallel evaluation inside one run (framework/parallel.hpp, Budget::threads): the same
 // result, bit for bit, on 1, 2 and 4 threads for callbacks and grid encodings under several
 // algorithms; errors of user code come back from worker threads; bad thread counts and callbacks
 // not marked thread-safe are refused, by the engine, the command line and campaign files.

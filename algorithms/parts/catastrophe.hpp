@@ -1,6 +1,6 @@
 #pragma once
 // ICGA's catastrophe (the "improved catastrophe GA" [31] that Zhang et al. (2025) compare with;
-// shared/spec/algorithms.md, GA: "a catastrophe step that re-seeds all but the elite after k
+// docs/algorithms.md, GA: "a catastrophe step that re-seeds all but the elite after k
 // generations without improvement"), as a GA per-generation hook (generation_hook.hpp).
 //
 //   Xu, X., Yu, X., Zhao, Y. et al. (2022). Global path planning of mobile robot based on improved

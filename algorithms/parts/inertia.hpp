@@ -10,7 +10,7 @@
 namespace pride {
 
 /// w falls linearly from `start` at the first iteration to `end` at the last (Shi and Eberhart
-/// 1998; 0.9 -> 0.4 is the spec's PSO default).
+/// 1998; 0.9 -> 0.4 is the project's PSO default).
 struct LinearInertia {
     double start = 0.9;
     double end = 0.4;

@@ -30,7 +30,7 @@ inline double step(double r, std::span<const double> low, std::span<const double
     return r * (hi / n - lo / n);
 }
 
-/// Eq. (6) as the spec reads it: alpha_f = step exp(-30 (t/T)^10), t = 1..T (see lso.hpp).
+/// Eq. (6) as the project's decision reads it: alpha_f = step exp(-30 (t/T)^10), t = 1..T (see lso.hpp).
 inline double alpha_f(double step, std::int64_t t, std::int64_t horizon) {
     const double ratio = static_cast<double>(t) / static_cast<double>(horizon);
     return step * std::exp(-30.0 * std::pow(ratio, 10));

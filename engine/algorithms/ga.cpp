@@ -262,7 +262,7 @@ void add_iqga(AlgorithmRegistry& registry) {
     registry.add(std::move(e));
 }
 
-// --- ga-sga: ga-plus with pagmo2's polynomial mutation (issue 15; mutation.hpp) ---
+// --- ga-sga: ga-plus with pagmo2's polynomial mutation (mutation.hpp) ---
 
 using SgaBox = Ga<TournamentSelection, SbxCrossover, SimplePolynomialMutation, Clamp, SelectableInit, PlusReplacement>;
 

@@ -1,4 +1,4 @@
-// The multi-objective algorithms (issue 28): NSGA-II and NSGA-III (algorithms/nsga2.hpp,
+// The multi-objective algorithms: NSGA-II and NSGA-III (algorithms/nsga2.hpp,
 // nsga3.hpp), MOEA/D (moead.hpp) and SMS-EMOA (smsemoa.hpp). Each runner visits the target once
 // (engine/mo_targets.hpp) and runs typed; the defaults are the papers' (their headers cite them).
 // NSGA-II and NSGA-III also run on grid chains with the chain operators (run_multiobjective_chain).

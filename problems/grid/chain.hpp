@@ -1,5 +1,5 @@
 #pragma once
-// The `chain` encoding of shared/spec/grid.md: the individual is the cell chain itself, searched
+// The `chain` encoding of docs/grid.md: the individual is the cell chain itself, searched
 // with discrete operators, not through a box. ChainSpace turns a GridProblem into a ChainProblem
 // (framework/chain.hpp), so the GA runs on paths without a line of grid code of its own:
 //   random_chain: the goal-biased random walk with taboo list and backtracking (walk.hpp);

@@ -1,5 +1,5 @@
 #pragma once
-// The `line` and `free` encodings of shared/spec/grid.md: a point in a box becomes a chain of
+// The `line` and `free` encodings of docs/grid.md: a point in a box becomes a chain of
 // cells through waypoints joined by a Connector policy. Both fit the framework's EncodingFor
 // concept unchanged, so Encoded<GridProblem<O>, LineEncoding<C>> is a BoxProblem and every box
 // algorithm (PSO, GA, NLopt) plans on grids without a line of grid code of its own.

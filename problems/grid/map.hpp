@@ -1,5 +1,5 @@
 #pragma once
-// The grid map of shared/spec/grid.md: H rows by W columns of free or blocked cells; a cell is
+// The grid map of docs/grid.md: H rows by W columns of free or blocked cells; a cell is
 // (x, y), x the column from the left, y the row from the first line of the file downwards (the
 // Moving AI convention). The papers' bottom-left numbering is only a conversion (paper_number,
 // from_paper_number), never a second convention inside the code.

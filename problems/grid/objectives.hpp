@@ -1,5 +1,5 @@
 #pragma once
-// The objectives of shared/spec/grid.md as policy types, all minimised. Each turns a path's
+// The objectives of docs/grid.md as policy types, all minimised. Each turns a path's
 // metrics into a value. The additive ones (all but iqga) also say what one step and one turn cost,
 // which is what the exact oracle searches over:
 //     value = start_cost() + sum over steps of step_cost(d) + sum over turns of turn_cost(k),
@@ -37,7 +37,7 @@ struct LengthObjective {
 };
 
 /// weighted: w_len * length + w_turn * turns + w_angle * angle_penalty (grid.md's general form).
-/// The defaults (1, 1, 0.1) are this project's choice: the spec leaves the weights to the user.
+/// The defaults (1, 1, 0.1) are this project's choice: the papers leave the weights to the user.
 struct WeightedObjective {
     static constexpr std::string_view name = "weighted";
     static constexpr bool additive = true;

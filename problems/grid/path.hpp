@@ -1,5 +1,5 @@
 #pragma once
-// Paths on a grid (shared/spec/grid.md): the chain of cells from start to goal, consecutive cells
+// Paths on a grid (docs/grid.md): the chain of cells from start to goal, consecutive cells
 // one legal step apart; their five metrics; loop cutting; and the straight 8-connected cell line
 // that joins two distant cells.
 #include <algorithm>

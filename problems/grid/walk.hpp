@@ -72,7 +72,7 @@ class TabooRouletteWalk {
 
 /// How a random walk weighs the neighbours it draws from.
 ///   eq10:       Cai and Du's (2021) eq. 10 as this project reads it (the text around the equation is lost;
-///               the spec says only "biased towards the goal"): the fitness of a neighbour n is
+///               the project's decision says only "biased towards the goal"): the fitness of a neighbour n is
 ///               D - dist(n, goal), D the map's diagonal sqrt(W^2 + H^2) and dist the Euclidean
 ///               distance, used as its roulette weight (always > 0: no cell is D from another);
 ///   octile_exp: this project's earlier stand-in, exp(-bias * (the change of the octile distance

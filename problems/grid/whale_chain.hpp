@@ -1,5 +1,5 @@
 #pragma once
-// Cai and Du's (2021) whale moves on chains (shared/spec/algorithms.md, HS-WOA on grids): the operators
+// Cai and Du's (2021) whale moves on chains (docs/algorithms.md, HS-WOA on grids): the operators
 // behind framework/chain.hpp's TowardMoves and Shortening capabilities, which ChainSpace offers.
 //   shortcut(c)          the line-of-sight shortcut: scan from the start and join each cell to the
 //                        farthest later cell it can reach by a legal join, then cut loops. The
@@ -17,7 +17,7 @@
 //                        on to c's last cell of the section, that stay inside a window around t's
 //                        section (its bounding box grown by `margin` cells) whenever they can;
 //                        loops are cut. t may be c itself (a perturbation around c's own section).
-// Decided here where the spec is open: the section is at least two steps of c; "inside a window
+// Decided here where the papers are open: the section is at least two steps of c; "inside a window
 // when possible" weights a step leaving the window 1e-9 times one that stays (so the walk, a
 // complete depth-first search, still always arrives, and leaves the window only when it must);
 // within the window the steps are biased towards the leg's end as RandomWalker's octile rule is
