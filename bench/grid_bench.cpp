@@ -326,7 +326,8 @@ int main(int argc, char** argv) {
     app.add_flag("--sitp", sitp, "only: the time to make N = 40 SITP paths on the bundled 40x40 map");
     app.add_flag("--pareto", pareto, "only the exact Pareto fronts (20x20, 40x40, random 100x100)");
     app.add_flag("--whales", whales, "only: HS-WOA and WOA, N = 20, 50 iterations, on the bundled 50x50 map");
-    app.add_flag("--init-table", init_table, "only: Zhang et al.'s (2025) table 2 (30 SITP and 30 random-walk paths per map)");
+    app.add_flag("--init-table", init_table,
+                 "only: Zhang et al.'s (2025) table 2 (30 SITP and 30 random-walk paths per map)");
     CLI11_PARSE(app, argc, argv);
     try {
         if (init_table) {

@@ -152,8 +152,8 @@ int run_main(int argc, char** argv) {
     path_cmd->add_option("--connector", path.connector, "repair (default) or penalty");
     path_cmd->add_option(
         "--init", path.init,
-        "uniform, walk (random feasible walks), rules (Wan and Gao's (2022) rough-set rule walks) or sitp (Zhang et al.'s "
-        "(2025) SITP walks; also for --encoding chain); default: rules for ilso, uniform for the others");
+        "uniform, walk (random feasible walks), rules (rough-set rule walks, Wan and Gao 2022) or sitp (SITP walks, "
+        "Zhang et al. 2025; also for --encoding chain); default: rules for ilso, uniform for the others");
     path_cmd->add_option("--pop", path.pop, "population size (default 20)")->check(integer_in(1, max_count));
     auto* path_iters =
         path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)")
@@ -224,7 +224,8 @@ int run_main(int argc, char** argv) {
                           "clearance (default length,turns)");
     front_cmd->add_option("--encoding", front.encoding,
                           "grids: line (default), free, or chain (cell chains with the chain operators: nsga2, nsga3)");
-    front_cmd->add_option("--init", front.init, "grids on chains: walk (random walks, default) or sitp (Zhang et al.'s (2025))");
+    front_cmd->add_option("--init", front.init,
+                          "grids on chains: walk (random walks, default) or sitp (Zhang et al. 2025)");
     front_cmd->add_option("--connector", front.connector, "grids: repair (default) or penalty");
     front_cmd->add_option("--waypoints", front.waypoints, "waypoints of the free encoding (default 3)")
         ->check(integer_in(1, 1000));

@@ -68,10 +68,11 @@ const std::vector<NamedItem>& grid_connectors() {
 }
 
 const std::vector<NamedItem>& grid_inits() {
-    static const std::vector<NamedItem> items{{"uniform", "uniform genotypes in the box"},
-                                              {"walk", "genotypes read off goal-biased random walks with taboo list"},
-                                              {"rules", "genotypes read off Wan and Gao's (2022) rough-set rule walks"},
-                                              {"sitp", "genotypes or chains from Zhang et al.'s (2025) SITP walks (eqs. 3-7)"}};
+    static const std::vector<NamedItem> items{
+        {"uniform", "uniform genotypes in the box"},
+        {"walk", "genotypes read off goal-biased random walks with taboo list"},
+        {"rules", "genotypes read off Wan and Gao's (2022) rough-set rule walks"},
+        {"sitp", "genotypes or chains from Zhang et al.'s (2025) SITP walks (eqs. 3-7)"}};
     return items;
 }
 

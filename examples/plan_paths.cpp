@@ -78,7 +78,8 @@ int main(int argc, char** argv) {
     const std::string dir = argc > 1 ? argv[1] : "examples/maps";
     try {
         fmt::print("objective cells, N = 20, T = 50, seeds 1..{}\n\n", kSeeds);
-        for (const char* name : {"wan2022-10x10", "wan2022-13x13", "zhang2025-20x20", "zhang2025-40x40", "cai2021-50x50"})
+        for (const char* name :
+             {"wan2022-10x10", "wan2022-13x13", "zhang2025-20x20", "zhang2025-40x40", "cai2021-50x50"})
             compare(dir, name);
     } catch (const std::exception& e) {
         fmt::print(stderr, "plan_paths: {}\n", e.what());

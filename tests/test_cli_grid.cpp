@@ -448,7 +448,8 @@ TEST_CASE("cli grid: the independent checker itself, on hand-made paths", "[cli]
 }
 
 TEST_CASE("cli grid: the bundled maps are all found", "[cli][grid]") {
-    REQUIRE(bundled().size() == 8);  // Wan and Gao (2022), Zhang et al. (2025) and Cai and Du (2021), with Cai and Du's (2021) three environments
+    REQUIRE(bundled().size() == 8);  // Wan and Gao (2022), Zhang et al. (2025) and Cai and Du (2021), with Cai and Du's
+                                     // (2021) three environments
     for (const auto& b : bundled()) {
         INFO(b.name);
         CHECK(b.grid.free(b.start.x, b.start.y));

@@ -108,7 +108,8 @@ TEST_CASE("planning spaces: a space the algorithm cannot use is refused with the
     CHECK(iqga_line ==
           "encoding line: iqga runs on chain, not on line: name no encoding (iqga's own is chain) or "
           "choose another algorithm");
-    const std::string pso_chain = test::input_error_message([&] { run("pso", engine::Problem(zhang2025_20("chain"))); });
+    const std::string pso_chain =
+        test::input_error_message([&] { run("pso", engine::Problem(zhang2025_20("chain"))); });
     CHECK(pso_chain ==
           "encoding chain: pso runs on line or free, not on chain: name no encoding (pso's own is line) "
           "or choose another algorithm");

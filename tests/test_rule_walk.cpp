@@ -383,7 +383,8 @@ TEST_CASE("rule walk: the bundled maps, and walk lengths beside the random walk"
              << " distinct; without jitter " << fixed_sum / kWalks << ", " << distinct_fixed.size()
              << " distinct; random walk " << random_sum / kWalks << "; A* optimum " << optimum);
     }
-    CHECK(maps == 8);  // Wan and Gao (2022), Zhang et al. (2025) and Cai and Du (2021), with Cai and Du's (2021) three environments
+    CHECK(maps == 8);  // Wan and Gao (2022), Zhang et al. (2025) and Cai and Du (2021), with Cai and Du's (2021) three
+                       // environments
 }
 
 TEST_CASE("rule walk: the same seed gives the same path, different seeds differ", "[grid][roughset]") {

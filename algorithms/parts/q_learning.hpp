@@ -4,7 +4,8 @@
 // chains (docs/algorithms.md, IQGA: Q-learning).
 //
 //   Watkins, C. J. C. H. and Dayan, P. (1992). Q-learning. Machine Learning 8, 279-292.
-//   Zhang et al. (2025), eq. 19:  Q(s_t, a_t) <- Q(s_t, a_t) + alpha (r_{t+1} + gamma max_a' Q(s_{t+1}, a') - Q(s_t, a_t)).
+//   Zhang et al. 2025, eq. 19:
+//     Q(s_t, a_t) <- Q(s_t, a_t) + alpha (r_{t+1} + gamma max_a' Q(s_{t+1}, a') - Q(s_t, a_t)).
 //
 // States: how this generation's best value (the population's smallest, GenerationContext::best)
 // compares with the previous generation's: 1 = smaller (better), 2 = equal, 3 = larger (worse);

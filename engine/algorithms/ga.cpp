@@ -143,15 +143,16 @@ void add_icga(AlgorithmRegistry& registry) {
     v.insert(v.end() - 1,
              integer("k", 10, 1, 1'000'000'000, "generations without improvement of the best before a catastrophe"));
     v.insert(v.end() - 1, integer("elite", 1, 0, 100'000'000, "best members a catastrophe keeps, fewer than pop"));
-    auto e = box_algorithm("icga", "ga",
-                           "GA with a catastrophe (ICGA of Zhang et al. (2025)): after k generations without improvement all "
-                           "but the elite are re-seeded; on chains too",
-                           std::move(v), [](const Params& p) {
-                               IcgaBox a;
-                               icga_common(a, p);
-                               box_operators(a, p);
-                               return a;
-                           });
+    auto e = box_algorithm(
+        "icga", "ga",
+        "GA with a catastrophe (ICGA of Zhang et al. (2025)): after k generations without improvement all "
+        "but the elite are re-seeded; on chains too",
+        std::move(v), [](const Params& p) {
+            IcgaBox a;
+            icga_common(a, p);
+            box_operators(a, p);
+            return a;
+        });
     add_chain_runner(e, [](const Params& p) {
         IcgaChain a;
         icga_common(a, p);
@@ -181,26 +182,27 @@ void add_ga_q(AlgorithmRegistry& registry) {
         real("alpha", 0.1, 0.0, 1.0, "Q-learning: learning rate"),
         real("gamma", 0.9, 0.0, 1.0, "Q-learning: discount factor"),
         walk_init_param(false)};
-    auto e = box_algorithm("ga-q", "ga",
-                           "GA whose mutation is polynomial, uniform or Gaussian by probabilities (0.6/0.2/0.2 in "
-                           "some order) that Q-learning chooses once per generation (Zhang et al. 2025, eq. 19); boxes only",
-                           std::move(v), [](const Params& p) {
-                               GaQBox a;
-                               a.id = "ga-q";
-                               a.population = p.integer("pop");
-                               a.replacement.elitism = p.integer("elitism");
-                               a.selection.size = p.integer("tournament");
-                               a.init.suggestions = p.flag("walk_init");
-                               a.crossover.eta = p.real("eta_c");
-                               a.crossover.probability = p.real("pc");
-                               auto& [polynomial, uniform, gaussian] = a.mutation.operators;
-                               polynomial.eta = p.real("eta_m");
-                               gaussian.sigma = p.real("sigma");
-                               if (const auto pm = p.optional("pm"))
-                                   polynomial.probability = uniform.probability = gaussian.probability = *pm;
-                               a.mutation.learning = {p.real("epsilon"), p.real("alpha"), p.real("gamma")};
-                               return a;
-                           });
+    auto e =
+        box_algorithm("ga-q", "ga",
+                      "GA whose mutation is polynomial, uniform or Gaussian by probabilities (0.6/0.2/0.2 in "
+                      "some order) that Q-learning chooses once per generation (Zhang et al. 2025, eq. 19); boxes only",
+                      std::move(v), [](const Params& p) {
+                          GaQBox a;
+                          a.id = "ga-q";
+                          a.population = p.integer("pop");
+                          a.replacement.elitism = p.integer("elitism");
+                          a.selection.size = p.integer("tournament");
+                          a.init.suggestions = p.flag("walk_init");
+                          a.crossover.eta = p.real("eta_c");
+                          a.crossover.probability = p.real("pc");
+                          auto& [polynomial, uniform, gaussian] = a.mutation.operators;
+                          polynomial.eta = p.real("eta_m");
+                          gaussian.sigma = p.real("sigma");
+                          if (const auto pm = p.optional("pm"))
+                              polynomial.probability = uniform.probability = gaussian.probability = *pm;
+                          a.mutation.learning = {p.real("epsilon"), p.real("alpha"), p.real("gamma")};
+                          return a;
+                      });
     e.memory = population_memory(3);
     registry.add(std::move(e));
 }
@@ -228,7 +230,8 @@ void add_iqga(AlgorithmRegistry& registry) {
     e.name = "iqga";
     e.family = "ga";
     e.summary =
-        "Zhang et al.'s (2025) IQGA on chains: SITP initial paths, region tournaments with SA acceptance (eqs. 14-18), elite "
+        "Zhang et al.'s (2025) IQGA on chains: SITP initial paths, region tournaments with SA acceptance (eqs. 14-18), "
+        "elite "
         "two-point crossover, three mutations chosen by Q-learning (eq. 19); N = 40 on grids";
     e.params = {
         population_param(40, 2, "population size (on grids 40 unless given, as Zhang et al. (2025))"),
@@ -238,7 +241,8 @@ void add_iqga(AlgorithmRegistry& registry) {
         real("epsilon", 0.1, 0.0, 1.0, "Q-learning: probability of a random action"),
         real("alpha", 0.1, 0.0, 1.0, "Q-learning: learning rate"),
         real("gamma", 0.9, 0.0, 1.0, "Q-learning: discount factor"),
-        flag("sitp", true, "initial chains from SITP walks (Zhang et al. 2025, section 2.2); the grid spec's init sets it"),
+        flag("sitp", true,
+             "initial chains from SITP walks (Zhang et al. 2025, section 2.2); the grid spec's init sets it"),
         flag("regions", true,
              "region-partitioned tournaments (eqs. 14-16); false: all N tournaments over the whole population"),
         flag("elite_crossover", true,

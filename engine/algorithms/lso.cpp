@@ -48,31 +48,31 @@ std::vector<ParamSpec> params(bool improved) {
 }  // namespace
 
 void register_lso(AlgorithmRegistry& registry) {
-    auto lso = box_algorithm(
-        "lso", "lso",
-        "lion swarm (Wan and Gao 2022, eqs. 1-9): king, lionesses, cubs; N 20, beta 0.2, step r*(mean high - mean low) with r "
-        "~ U(0,1) per run",
-        params(false), [](const Params& p) {
-            Family a = configure(p);
-            a.weight = UnitWeight{};
-            return a;
-        });
+    auto lso = box_algorithm("lso", "lso",
+                             "lion swarm (Wan and Gao 2022, eqs. 1-9): king, lionesses, cubs; N 20, beta 0.2, step "
+                             "r*(mean high - mean low) with r "
+                             "~ U(0,1) per run",
+                             params(false), [](const Params& p) {
+                                 Family a = configure(p);
+                                 a.weight = UnitWeight{};
+                                 return a;
+                             });
     lso.memory = population_memory(2);  // positions and personal bests
     registry.add(std::move(lso));
 
-    auto ilso = box_algorithm(
-        "ilso", "lso",
-        "improved lion swarm (Wan and Gao 2022, eqs. 10-12): LSO with inertia 0.99 -> 0.35 (quadratic), cub threshold 3/10, "
-        "starting from the problem's suggestions (rough-set rule walks on grids)",
-        params(true), [](const Params& p) {
-            Family a = configure(p);
-            a.id = "ilso";
-            QuadraticInertia w;
-            w.start = p.real("w_max");
-            w.end = p.real("w_min");
-            a.weight = w;
-            return a;
-        });
+    auto ilso = box_algorithm("ilso", "lso",
+                              "improved lion swarm (Wan and Gao 2022, eqs. 10-12): LSO with inertia 0.99 -> 0.35 "
+                              "(quadratic), cub threshold 3/10, "
+                              "starting from the problem's suggestions (rough-set rule walks on grids)",
+                              params(true), [](const Params& p) {
+                                  Family a = configure(p);
+                                  a.id = "ilso";
+                                  QuadraticInertia w;
+                                  w.start = p.real("w_max");
+                                  w.end = p.real("w_min");
+                                  a.weight = w;
+                                  return a;
+                              });
     ilso.memory = population_memory(2);
     registry.add(std::move(ilso));
 }

@@ -72,12 +72,12 @@ void add(AlgorithmRegistry& registry, const std::string& name, const std::string
 void register_woa(AlgorithmRegistry& registry) {
     add(registry, "woa", "whale optimisation (Mirjalili and Lewis 2016, reference code WOA.m), a 2 -> 0, b = 1", false,
         false);
-    add(registry, "woa-hs", "WOA with HS-WOA's harmony second step only (Cai and Du 2021, eq. 8, HMCR 0.8, PAR 0.3)", true,
-        false);
-    add(registry, "woa-balance", "WOA with HS-WOA's balance factor only (Cai and Du 2021, eq. 9, balance 0.8, thr 2)", false,
-        true);
-    add(registry, "hswoa", "HS-WOA (Cai and Du 2021): WOA, harmony second step and balance factor with reconstruction", true,
-        true);
+    add(registry, "woa-hs", "WOA with HS-WOA's harmony second step only (Cai and Du 2021, eq. 8, HMCR 0.8, PAR 0.3)",
+        true, false);
+    add(registry, "woa-balance", "WOA with HS-WOA's balance factor only (Cai and Du 2021, eq. 9, balance 0.8, thr 2)",
+        false, true);
+    add(registry, "hswoa", "HS-WOA (Cai and Du 2021): WOA, harmony second step and balance factor with reconstruction",
+        true, true);
 }
 
 }  // namespace pride::engine

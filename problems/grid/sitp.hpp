@@ -15,7 +15,8 @@
 // one cell. So, like RandomWalker, it reaches the end whenever the end can be reached, entering
 // each cell at most once, and reports when it cannot.
 //
-// Project decisions where Zhang et al. (2025) are silent or unclear (the project's decision says only "three bands of rows"):
+// Project decisions where Zhang et al. (2025) are silent or unclear (the project's decision says only "three bands of
+// rows"):
 //   - bands: eq. 3 splits rows by (y_s + y_e) / 3, which is a third of the rows only when the
 //     start is on row 0; the bands here are the three near-equal thirds of the rows from
 //     min(y_s, y_g) to max(y_s, y_g) (band b: rows lo + floor(b n / 3) .. lo + floor((b + 1) n / 3)
