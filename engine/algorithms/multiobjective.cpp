@@ -60,10 +60,11 @@ std::vector<ParamSpec> variation_params(double eta_c, double p_c) {
 
 /// NSGA-II's settings on chains (nsga2.hpp's header): the chain mutations and the chain space's.
 std::vector<ParamSpec> chain_params() {
-    std::vector<ParamSpec> out{choice("mutations", {"all", "segment", "iqga"}, "all",
-                                      "on chains, the mutations drawn from: the GA's segment regeneration, file "
-                                      "002's three (IQGA's deletion, mid-point, turning point), or the four")
-                                   .only_on_chains()};
+    std::vector<ParamSpec> out{
+        choice("mutations", {"all", "segment", "iqga"}, "all",
+               "on chains, the mutations drawn from: the GA's segment regeneration, Zhang et al.'s "
+               "(2025) three (IQGA's deletion, mid-point, turning point), or the four")
+            .only_on_chains()};
     for (auto& s : chain_space_params({.sitp_score = "length"})) out.push_back(std::move(s));
     return out;
 }
