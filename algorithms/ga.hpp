@@ -9,7 +9,7 @@
 // One generation, one loop for points and chains (Ga::generations; what differs, storage,
 // initialisation, copies, the operators' signatures and evaluation, sits in a population adapter,
 // algorithms/parts/ga_population.hpp):
-//   (1) as many children as the Replacement policy asks for (N - elitism for the spec's elitist
+//   (1) as many children as the Replacement policy asks for (N - elitism for the project's elitist
 //       replacement): two parents by the Selection policy, two children (copies of the parents) by
 //       the Crossover policy, each child through the Mutation policy and, for points, the Bounds
 //       policy;
@@ -35,9 +35,9 @@
 // Variants as policies: IAGA's adaptive pc and pm (adaptive_rates.hpp), ICGA's catastrophe
 // (catastrophe.hpp, a hook), Q-learning choice among mutation operators (q_learning.hpp), IQGA's
 // region selection, elite crossover and Q-learning mutations on chains (iqga_operators.hpp; IqgaGa).
-// Spec defaults (shared/spec/algorithms.md): tournament of 2, SBX eta 15 with probability 0.9,
+// Defaults (docs/algorithms.md): tournament of 2, SBX eta 15 with probability 0.9,
 // polynomial mutation eta 20 with probability 1/D per gene, elitist replacement with elitism 1.
-// Decided by this project where the spec is silent: when an odd number of children is asked for,
+// Decided by this project where the papers are silent: when an odd number of children is asked for,
 // the second child of the last pair is dropped; when the budget ends inside a generation the
 // children not evaluated get fitness +inf, the generation is recorded, and the run stops.
 #include <algorithm>
@@ -175,7 +175,7 @@ class Ga {
 /// The GA on chains (grid paths, ...): the same skeleton with the chain operator policies.
 using ChainGa = Ga<TournamentSelection, ChainCrossover, ChainMutation>;
 
-/// File 002's IQGA on chain spaces with regions, two-point crossover and numbered mutations
+/// Zhang et al.'s (2025) IQGA on chain spaces with regions, two-point crossover and numbered mutations
 /// (iqga_operators.hpp); elitist replacement with elitism 1. Its initial chains are the problem's
 /// (on grids: SITP walks when the space is set so, as the registry entry iqga does by default).
 using IqgaGa = Ga<RegionTournamentSelection, EliteCrossover, IqgaMutation>;

@@ -16,7 +16,7 @@
 //   (2) the Bounds policy puts it into the box; it is evaluated;
 //   (3) it replaces the worst member when strictly better.
 // Defaults: HMCR 0.9 and PAR 0.3 (within Yang's ranges, the values most ports use), BW 0.01 of
-// each range (file 003's choice), HMS 30 (this project: the population of the WOA comparisons).
+// each range (Cai and Du's (2021) choice), HMS 30 (this project: the population of the WOA comparisons).
 // Decided by this project where the papers are open: an iteration (one history entry) is HMS
 // improvisations; the budget may end inside one.
 #include <cstdint>

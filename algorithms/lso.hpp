@@ -4,7 +4,7 @@
 //   Liu, S., Yang, Y. and Zhou, Y. (2018). A swarm intelligence algorithm: lion swarm optimization.
 //     Pattern Recognition and Artificial Intelligence 31(5), 431-441 (LSO).
 //   Wan, R. and Gao, Y. (2022). Robot path planning based on rough set reduction and lion swarm
-//     optimization. J. Zhengzhou Univ. (Nat. Sci.) 54(2), 32-38 (file 000: eqs. 1-12, ILSO).
+//     optimization. J. Zhengzhou Univ. (Nat. Sci.) 54(2), 32-38 (Wan and Gao 2022: eqs. 1-12, ILSO).
 //
 // N lions; nLeader = ceil(N beta) within [2, N/2] (eqs. 1-2). The initial pride (run_setup.hpp,
 // shared with PSO and the GA): positions by the Init policy, then the Bounds policy, evaluated and
@@ -24,14 +24,14 @@
 // ILSO = Weight QuadraticInertia (0.99 -> 0.35), cub thresholds 3/10 and 2/3 (eq. 12), and an
 // initialiser that takes the problem's starting points (rough-set rule walks on grids).
 //
-// Decided by the spec or this project where file 000 is open: eq. (6) is read as exp(-30 (t/T)^10)
+// Decided by this project where Wan and Gao (2022) are open: eq. (6) is read as exp(-30 (t/T)^10)
 // (the printed exp(-30t/T)^10 vanishes after 2 % of the run, against the paper's own text);
 // beta = 0.2 fixed (the paper draws it at random); r of eq. 5 drawn once per run (`step` sets a
 // fixed factor instead, 0.1 in the original LSO); gamma is one N(0,1) draw per lion per iteration,
 // for every role; t counts the iterations that move, 1..T, so w reaches w_min and alpha_c reaches 0
 // on the last one; moves are synchronous (all from the p of the previous iteration); with a single
 // lioness (nLeader = 2) her partner is the king; g_bar of eq. (8) is low + high - g per coordinate
-// (the spec; the paper's overlined low and high, means over the coordinates as in eq. 5, give the
+// (the project's decision; the paper's overlined low and high, means over the coordinates as in eq. 5, give the
 // same point on a cubic box and differ on others); T is the iteration limit or the iterations the
 // evaluation budget allows, and when the budget ends inside an iteration the lions left over are
 // not evaluated and keep their personal bests. As stated, the king's p_i is g, so eq. (3) puts the
@@ -76,7 +76,7 @@ class Lso {
     std::int64_t population = 20;
     double beta = 0.2;                  // share of adult lions, eqs. (1)-(2)
     std::optional<double> step_factor;  // eq. (5): r fixed instead of drawn (0.1: original LSO)
-    // One gamma per coordinate instead of one per lion: not file 000's reading (every move then
+    // One gamma per coordinate instead of one per lion: not Wan and Gao's (2022) reading (every move then
     // scales a whole vector along one ray); an option to measure what that reading costs.
     bool gamma_per_coordinate = false;
     Weight weight{};
@@ -196,10 +196,10 @@ class Lso {
     }
 };
 
-/// LSO as file 000 section 1.1 states it.
+/// LSO as section 1.1 of Wan and Gao (2022) states it.
 using LsoAlgorithm = Lso<UnitWeight, LsoCubs, Clamp, UniformInit>;
 
-/// ILSO (file 000 section 2.3): the same skeleton with the inertia weight of eq. (10), the cub
+/// ILSO (Wan and Gao 2022, section 2.3): the same skeleton with the inertia weight of eq. (10), the cub
 /// thresholds of eq. (12) and the problem's starting points (rough-set rule walks on grids).
 template <class Bounds = Clamp, class Init = SuggestedInit>
 Lso<QuadraticInertia, IlsoCubs, Bounds, Init> make_ilso() {

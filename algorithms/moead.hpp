@@ -1,5 +1,5 @@
 #pragma once
-// MOEA/D with Tchebycheff decomposition on boxes (issue 28).
+// MOEA/D with Tchebycheff decomposition on boxes.
 //
 //   Zhang, Q. and Li, H. (2007). MOEA/D: a multiobjective evolutionary algorithm based on
 //     decomposition. IEEE Transactions on Evolutionary Computation 11(6), 712-731.

@@ -1,5 +1,5 @@
 #pragma once
-// NSGA-II on boxes and on chains (issue 28).
+// NSGA-II on boxes and on chains.
 //
 //   Deb, K., Pratap, A., Agarwal, S. and Meyarivan, T. (2002). A fast and elitist multiobjective
 //     genetic algorithm: NSGA-II. IEEE Transactions on Evolutionary Computation 6(2), 182-197.

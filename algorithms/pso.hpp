@@ -17,7 +17,7 @@
 //   (2) v_id <- clamp(v_id, -vmax_d, vmax_d)                          (VelocityClamp policy)
 //   (3) x_id <- x_id + v_id, then the Bounds policy puts x back into the box
 //   (4) p_i <- x_i if f(x_i) < f(p_i);  g <- the best p after the whole sweep (synchronous update)
-// Spec defaults (shared/spec/algorithms.md): w 0.9 -> 0.4 linearly, c1 = c2 = 2, vmax = 0.2 (high - low),
+// Defaults (docs/algorithms.md): w 0.9 -> 0.4 linearly, c1 = c2 = 2, vmax = 0.2 (high - low),
 // clamping to the box.
 // Decided by this project where the papers are silent: initial velocities are U(-vmax, vmax);
 // w(t) runs over the horizon T = the iteration limit, or the iterations the evaluation budget

@@ -1,5 +1,5 @@
 #pragma once
-// SMS-EMOA on boxes (issue 28).
+// SMS-EMOA on boxes.
 //
 //   Beume, N., Naujoks, B. and Emmerich, M. (2007). SMS-EMOA: Multiobjective selection based on
 //     dominated hypervolume. European Journal of Operational Research 181(3), 1653-1669.

@@ -2,8 +2,8 @@
 // The whale optimisation algorithm (WOA) and HS-WOA: one skeleton, three policies.
 //
 //   Mirjalili, S. and Lewis, A. (2016). The whale optimization algorithm. Advances in Engineering
-//     Software 95, 51-67, and the authors' reference code WOA.m (file 003 eqs. 1-7).
-//   File 003 (harmony-search-based balanced WOA, HS-WOA): eq. 8 and the harmony second step
+//     Software 95, 51-67, and the authors' reference code WOA.m (Cai and Du 2021, eqs. 1-7).
+//   Cai and Du (2021) (harmony-search-based balanced WOA, HS-WOA): eq. 8 and the harmony second step
 //     (section 2.1), the balance factor and the reconstruction (eq. 9, section 2.2).
 //   Geem, Z. W., Kim, J. H. and Loganathan, G. V. (2001). A new heuristic optimization algorithm:
 //     harmony search. Simulation 76(2), 60-68 (the improvisation).
@@ -19,7 +19,7 @@
 //     balance (HS-WOA): explore: search (eqs. 6-7); else p < 0.5: encircle, p >= 0.5: spiral.
 //   Positions are replaced (no greedy selection); then the Bounds policy; the pod is evaluated in
 //   one batch and X* updated from the evaluations.
-//   SecondStep harmony (file 003 section 2.1): each whale moves by eq. 8 (towards X* by a U(0,1)
+//   SecondStep harmony (Cai and Du 2021, section 2.1): each whale moves by eq. 8 (towards X* by a U(0,1)
 //   fraction if f_i < f_avg, towards a random whale otherwise), Bounds, the pod is evaluated; then
 //   N improvisations from the pod (HMCR, PAR, BW), each evaluated and replacing the current worst
 //   whale when strictly better.
@@ -31,8 +31,8 @@
 // shortened by the line-of-sight shortcut), and each move of eqs. 1-8 moves a whale towards its
 // target through the space's TowardMoves capability; the improvisation and the reconstruction are
 // chain operations too. whale_pods.hpp says how each equation's factor becomes a share of the
-// target's course (the spec leaves that open).
-// Decided by the spec or this project where the papers are open: as in WOA.m, whales move one
+// target's course (the papers leave that open).
+// Decided by this project where the papers are open: as in WOA.m, whales move one
 // after another in place, so a random whale drawn for whale i may already have moved this
 // iteration (and is not yet clamped: clamping is applied to the whole pod before evaluation); the
 // random whale may be whale i itself; per-coordinate draws keep r and q per whale; eq. 8 uses one
@@ -89,7 +89,7 @@ struct ConvergenceMode {
     void validate(const std::string&) const {}
 };
 
-/// Mode: file 003's balance factor (eq. 9) chooses exploration with probability `balance`.
+/// Mode: Cai and Du's (2021) balance factor (eq. 9) chooses exploration with probability `balance`.
 struct BalanceMode {
     static constexpr bool balanced = true;
     double start = 0.8;    // the balance at the start and after a reconstruction
@@ -112,7 +112,7 @@ struct NoSecondStep {
     static constexpr std::int64_t evaluations_per_whale = 0;
     void validate(const std::string&) const {}
 };
-/// SecondStep: eq. 8 then harmony improvisations (file 003 section 2.1).
+/// SecondStep: eq. 8 then harmony improvisations (Cai and Du 2021, section 2.1).
 struct HarmonySecondStep {
     static constexpr std::int64_t evaluations_per_whale = 2;
     whale::HarmonyRates rates{0.8, 0.3, 0.01};

@@ -1,7 +1,7 @@
-// The continuous benchmark of issue 2: each algorithm on rastrigin, rosenbrock, ackley, griewank and
+// The continuous benchmark: each algorithm on rastrigin, rosenbrock, ackley, griewank and
 // schwefel (D = 30 unless --dims names others, pagmo's boxes), population 50, exactly 100,000
 // evaluations, seeds 1..10. pagmo2's counterparts of the algorithms asked for run beside them with
-// the same population and budget (issue 27 added de/jde against pagmo's de/sade and cmaes against
+// the same population and budget (de/jde against pagmo's de/sade and cmaes against
 // pagmo's cmaes): pso and pso-constriction -> pso, ga and ga-plus -> sga, de -> de (variant 7,
 // rand/1/bin), jde -> sade (variant 7, jDE adaptation), cmaes -> cmaes. An algorithm the registry
 // does not have (cmaes before it lands) is skipped with a line on stderr, and so is its pair.
@@ -62,7 +62,7 @@ using namespace pride;
 using namespace pride::continuous;
 
 struct Settings {
-    std::vector<std::int64_t> dims{30};  // issue 2's D; issue 27 asks 10, 30 and 100 (--dims)
+    std::vector<std::int64_t> dims{30};  // the usual D; 10 and 100 by --dims
     std::int64_t pop = 50;
     std::int64_t evals = 100000;
     std::int64_t seeds = 10;
@@ -382,7 +382,7 @@ int main(int argc, char** argv) {
     app.add_option("--algos", s.algos,
                    "algorithms (default: pso pso-constriction ga ga-plus lso ilso nlopt:LN_SBPLX nlopt:GN_CRS2_LM)")
         ->delimiter(',');
-    app.add_option("--dims", s.dims, "dimensions (default 30; issue 27: 10,30,100)")
+    app.add_option("--dims", s.dims, "dimensions (default 30: 10,30,100)")
         ->delimiter(',')
         ->check(CLI::Range(1, 100000));
     app.add_flag("!--no-pagmo", s.pagmo,

@@ -1,25 +1,25 @@
-// The grid benchmark of issue 3; prints numbers, asserts nothing.
+// The grid benchmark; prints numbers, asserts nothing.
 //   1. A*: expansions per second and time per query on the larger Moving AI scenario maps
 //      (every line of each scenario file given on the command line): `astar,FILE,queries,
 //      expansions,exp/s first pass,ms/query first pass,worst length error,exp/s warm` (warm: the
 //      same queries repeated on the same AStar for 100 ms).
 //   2. Decoding and evaluating one `line` genotype (repair connector, objective cells) on a 20x20
-//      map (the bundled file002-20x20.map) and on a 100x100 map with 20 % random obstacles, in the
+//      map (the bundled zhang2025-20x20.map) and on a 100x100 map with 20 % random obstacles, in the
 //      engine's types (linear objective, connector chosen at run time) beside the fixed types.
 //   3. PSO, LSO and ILSO (N = 20, T = 50, line + repair, objective cells) on the bundled 10x10 map,
 //      run through the engine, and the one-off construction of the rough-set rule book that
 //      ILSO's walks use.
-//   4. With --sitp only: the time to make N = 40 SITP paths (file 002's initial population) on
+//   4. With --sitp only: the time to make N = 40 SITP paths (Zhang et al.'s (2025) initial population) on
 //      the bundled 40x40 map, beside N = 40 random walks, through the chain space (objective iqga).
 //   5. With --pareto, only: the exact Pareto fronts (problems/grid/pareto.hpp) of (length, turns),
 //      (length, angle_penalty) and all three, and the iqga optimum over the 3-D front, on the
 //      bundled 20x20 and 40x40 maps and on the 100x100 map with 20 % random obstacles.
 //   6. With --whales only: HS-WOA and WOA (N = 20, 50 iterations, chain encoding, objective
-//      hswoa) on the bundled 50x50 map (file 003), run through the engine, 51 seeds: the median
+//      hswoa) on the bundled 50x50 map (Cai and Du 2021), run through the engine, 51 seeds: the median
 //      and least wall time of a run (RunState's clock) and its median processor time (std::clock,
 //      steadier than the wall clock on a loaded machine).
-//   7. With --init-table only: file 002's table 2, 30 SITP and 30 random-walk initial paths on
-//      each bundled file002 map (longest, shortest, mean length, share of legal paths).
+//   7. With --init-table only: Zhang et al.'s (2025) table 2, 30 SITP and 30 random-walk initial paths on
+//      each bundled zhang2025 map (longest, shortest, mean length, share of legal paths).
 // Usage: grid_bench [--scen FILE.scen ...] [--maps DIR] [--sitp | --pareto | --whales | --init-table | --decode |
 //        --astar] [--rounds N] [--decode-map NAME] (--decode: only part 2; --astar: only part 1; --rounds: decode
 //        rounds, for callgrind; --decode-map: only the decode figures of that map)
@@ -146,7 +146,7 @@ void bench_decode(const std::string& label, std::shared_ptr<const GridMap> map, 
 /// through the engine: the median wall time of a run (RunState's clock: initialisation, walks and
 /// all evaluations).
 void bench_swarm(const std::string& maps, const std::string& algorithm) {
-    const Bundled b = bundled(maps, "file000-10x10");
+    const Bundled b = bundled(maps, "wan2022-10x10");
     engine::GridSpec spec;
     spec.map = b.map;
     spec.start = b.start;
@@ -162,7 +162,7 @@ void bench_swarm(const std::string& maps, const std::string& algorithm) {
         best += r.best_f / 200.0;
     }
     std::sort(wall.begin(), wall.end());
-    fmt::print("{},file000-10x10,200 runs,median_ms {:.4f},mean_best_cells {:.3f}\n", algorithm, wall[wall.size() / 2],
+    fmt::print("{},wan2022-10x10,200 runs,median_ms {:.4f},mean_best_cells {:.3f}\n", algorithm, wall[wall.size() / 2],
                best);
 }
 
@@ -178,7 +178,7 @@ void bench_rule_book() {
 /// Milliseconds to make a population of 40 chains (the median of `repeats` populations, each from
 /// a fresh chain space and seed), and the mean cells and length of the chains.
 void bench_sitp(const std::string& maps, int repeats = 51) {
-    const Bundled b = bundled(maps, "file002-40x40");
+    const Bundled b = bundled(maps, "zhang2025-40x40");
     const GridProblem<IqgaObjective> problem(b.map, b.start, b.goal);
     fmt::print("part,init,paths,ms_per_population_median,ms_min,mean_cells,mean_length\n");
     for (const Walks init : {Walks::sitp, Walks::random}) {
@@ -206,9 +206,9 @@ void bench_sitp(const std::string& maps, int repeats = 51) {
     }
 }
 
-/// HS-WOA and WOA, file 003's setting, on the bundled 50x50 map (section 6 of the header).
+/// HS-WOA and WOA, Cai and Du's (2021) setting, on the bundled 50x50 map (section 6 of the header).
 void bench_whales(const std::string& maps) {
-    const Bundled b = bundled(maps, "file003-50x50");
+    const Bundled b = bundled(maps, "cai2021-50x50");
     engine::GridSpec spec;
     spec.map = b.map;
     spec.start = b.start;
@@ -233,17 +233,17 @@ void bench_whales(const std::string& maps) {
         }
         std::sort(wall.begin(), wall.end());
         std::sort(cpu.begin(), cpu.end());
-        fmt::print("{},file003-50x50,{},{:.2f},{:.2f},{:.2f},{:.0f},{:.3f}\n", algorithm, runs, wall[wall.size() / 2],
+        fmt::print("{},cai2021-50x50,{},{:.2f},{:.2f},{:.2f},{:.0f},{:.3f}\n", algorithm, runs, wall[wall.size() / 2],
                    wall.front(), cpu[cpu.size() / 2], evaluations, value);
     }
 }
 
-/// File 002's table 2: 30 initial paths by SITP and by the goal-biased random walk (the chain GA's
-/// random initial population) on each bundled file002 map, seed 1: longest, shortest and mean
+/// Zhang et al.'s (2025) table 2: 30 initial paths by SITP and by the goal-biased random walk (the chain GA's
+/// random initial population) on each bundled zhang2025 map, seed 1: longest, shortest and mean
 /// length, and the share of legal paths (checked by path_violation).
 void bench_init_table(const std::string& maps) {
     fmt::print("part,map,init,paths,longest,shortest,mean_length,feasible_share\n");
-    for (const char* name : {"file002-20x20", "file002-40x40"}) {
+    for (const char* name : {"zhang2025-20x20", "zhang2025-40x40"}) {
         const Bundled b = bundled(maps, name);
         const GridProblem<IqgaObjective> problem(b.map, b.start, b.goal);
         for (const Walks init : {Walks::sitp, Walks::random}) {
@@ -301,10 +301,10 @@ void bench_pareto(const std::string& label, const GridMap& map, Cell s, Cell g, 
 
 void bench_paretos(const std::string& maps) {
     fmt::print("part,map,objectives,front_points,labels,median_ms\n");
-    const Bundled m20 = bundled(maps, "file002-20x20");
-    bench_pareto("file002-20x20", *m20.map, m20.start, m20.goal, 11);
-    const Bundled m40 = bundled(maps, "file002-40x40");
-    bench_pareto("file002-40x40", *m40.map, m40.start, m40.goal, 5);
+    const Bundled m20 = bundled(maps, "zhang2025-20x20");
+    bench_pareto("zhang2025-20x20", *m20.map, m20.start, m20.goal, 11);
+    const Bundled m40 = bundled(maps, "zhang2025-40x40");
+    bench_pareto("zhang2025-40x40", *m40.map, m40.start, m40.goal, 5);
     bench_pareto("random-100x100-20%", random_map(100, 100, 0.2, 3), {0, 0}, {99, 99}, 3);
 }
 
@@ -322,11 +322,12 @@ int main(int argc, char** argv) {
     app.add_option("--rounds", g_decode_rounds, "rounds of 64 genotypes per decode figure (default 2000)")
         ->check(CLI::PositiveNumber);
     app.add_option("--decode-map", g_decode_map,
-                   "only the decode figures of the maps whose name holds this (file002, random)");
+                   "only the decode figures of the maps whose name holds this (zhang2025, random)");
     app.add_flag("--sitp", sitp, "only: the time to make N = 40 SITP paths on the bundled 40x40 map");
     app.add_flag("--pareto", pareto, "only the exact Pareto fronts (20x20, 40x40, random 100x100)");
     app.add_flag("--whales", whales, "only: HS-WOA and WOA, N = 20, 50 iterations, on the bundled 50x50 map");
-    app.add_flag("--init-table", init_table, "only: file 002's table 2 (30 SITP and 30 random-walk paths per map)");
+    app.add_flag("--init-table", init_table,
+                 "only: Zhang et al.'s (2025) table 2 (30 SITP and 30 random-walk paths per map)");
     CLI11_PARSE(app, argc, argv);
     try {
         if (init_table) {
@@ -352,8 +353,8 @@ int main(int argc, char** argv) {
             for (const auto& s : scens) bench_astar(s);
         if (astar_only) return 0;
         fmt::print("part,map,genes,ns_per_decode_and_evaluate,ns_with_fixed_types\n");
-        const Bundled m20 = bundled(maps, "file002-20x20");
-        bench_decode("file002-20x20", m20.map, m20.start, m20.goal);
+        const Bundled m20 = bundled(maps, "zhang2025-20x20");
+        bench_decode("zhang2025-20x20", m20.map, m20.start, m20.goal);
         bench_decode("random-100x100-20%", std::make_shared<const GridMap>(random_map(100, 100, 0.2, 3)), {0, 0},
                      {99, 99});
         if (!decode_only) bench_swarms(maps);

@@ -1,4 +1,4 @@
-// The multi-objective benchmark of issue 28: pride's NSGA-II and MOEA/D beside pagmo2's nsga2 and
+// The multi-objective benchmark: pride's NSGA-II and MOEA/D beside pagmo2's nsga2 and
 // moead (when pagmo was found at build time), and pride's SMS-EMOA and NSGA-III (M = 3) beside
 // them, on ZDT1-4, 6 (n = 30, 30, 30, 10, 10) and DTLZ1, 2 (M = 3, the papers' k). The pairs share
 // their settings: NSGA-II population 100, SBX eta_c 20 with p_c 0.9, polynomial mutation eta_m 20

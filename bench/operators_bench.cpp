@@ -7,7 +7,7 @@
 //   pso / ga / iaga / icga / woa / hs / hswoa on sphere: the typed Pso<>, Ga<> and the Ga of iaga
 //     (adaptive pc and pm) and icga (the catastrophe hook), Woa<>, HarmonySearch<> and the Woa of
 //     hswoa (balance factor and harmony second step), registry defaults, for 100,000 evaluations:
-//     their ratios to pso's figure are issue 15's "within 2x of PSO" with sphere's few ns included
+//     their ratios to pso's figure are the measure of "within 2x of PSO", with sphere's few ns included
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 

@@ -1,4 +1,4 @@
-// The grid planners of issue 29 on Moving AI scenarios; prints numbers, asserts nothing.
+// The grid planners on Moving AI scenarios; prints numbers, asserts nothing.
 //   JPS against A* (the same octile lengths; a mismatch is reported): expansions and microseconds
 //   per query, medians over the file's queries; Theta* and Lazy Theta*: microseconds, line-of-sight
 //   tests per query (medians) and the mean length as a share of A*'s; with --oracle, the exact
@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
     bool oracle = false, with_ompl = false;
     OmplBench ompl;
     int ompl_queries = 20;
-    CLI::App app{"JPS against A*, Theta* and Lazy Theta* on Moving AI scenarios (issue 29)"};
+    CLI::App app{"JPS against A*, Theta* and Lazy Theta* on Moving AI scenarios"};
     app.add_option("--scen", scens, "Moving AI scenario files")->required();
     app.add_option("--reps", reps, "runs per query and planner; the least time is kept (default 3)")
         ->check(CLI::PositiveNumber);

@@ -1,4 +1,4 @@
-// Issue 30: cheaper forms of the real-coded GA's roots, measured before any is adopted.
+// Cheaper forms of the real-coded GA's roots, measured before any is adopted.
 //   SBX (eta_c 15) takes two 16th roots per crossed coordinate, the polynomial mutation (eta_m 20)
 //   a 21st root per mutated gene (algorithms/parts/power.hpp: four correctly rounded square roots,
 //   four lanes per instruction; std::pow). This program
@@ -10,7 +10,7 @@
 //       density 0.5 (eta+1) beta^eta for beta <= 1, 0.5 (eta+1) / beta^(eta+2) beyond; the
 //       mutation's delta density 0.5 (eta+1) (1 - |delta|)^eta), and the largest difference in ulps
 //       between the two roots on the same draws. CSV `operator,setting,form,...`.
-// The candidates (not used by the library; docs: /work/notes/ga30.md, issue 30):
+// The candidates (not used by the library; the measurements are in docs/benchmarks.md):
 //   root16_float: x^(1/16) from four float square roots (x rounded to float; eight lanes per AVX
 //     instruction), refined by one Halley step in double (Traub 1964, sec. 8.4: cubic convergence;
 //     the float estimate's relative error, about 1e-7, becomes about 1e-20); x outside float's
@@ -319,7 +319,7 @@ int main(int argc, char** argv) {
         "candidates' output distributions against the exact roots'"};
     app.add_option("--rounds", rounds, "repetitions of each timing; the least is printed (default 200)")
         ->check(CLI::Range(1, 100000));
-    app.add_option("--draws", draws, "instead: this many draws per operator, setting and form (issue 30: 1e6)")
+    app.add_option("--draws", draws, "instead: this many draws per operator, setting and form (1e6)")
         ->check(CLI::Range(std::int64_t{1000}, std::int64_t{100'000'000}));
     CLI11_PARSE(app, argc, argv);
     if (draws > 0)

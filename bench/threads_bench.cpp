@@ -1,4 +1,4 @@
-// Parallel evaluation inside one run (issue 15): a user function that costs about 1 ms per
+// Parallel evaluation inside one run: a user function that costs about 1 ms per
 // evaluation (a fixed amount of arithmetic, calibrated once at start-up, so every evaluation does
 // the same work on any thread; not a sleep, which would model waiting rather than computing),
 // population 40, run through the engine at 1, 2, ... threads. Prints CSV

@@ -1,6 +1,6 @@
 #pragma once
 // The subcommands, separated from argument parsing so that each reads like its contract in
-// shared/spec/cli.md. Each writes its whole output only once it has succeeded.
+// docs/cli.md. Each writes its whole output only once it has succeeded.
 #include <cstdint>
 #include <iosfwd>
 #include <optional>

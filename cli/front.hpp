@@ -1,5 +1,5 @@
 #pragma once
-// `pride front` (issue 28): one run of a multi-objective algorithm, on a catalog problem (ZDT,
+// `pride front`: one run of a multi-objective algorithm, on a catalog problem (ZDT,
 // DTLZ) or on a grid with two to four criteria; prints the non-dominated set it found and its
 // quality against the problem's reference front (the analytic front sampled, or the grid's exact
 // front), as text or JSON, and on grids draws the set's paths.

@@ -1,6 +1,6 @@
 #pragma once
 // `pride path` (one run on a grid) and `pride scen` (A* against Moving AI scenario files), as in
-// shared/spec/cli.md.
+// docs/cli.md.
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
@@ -22,7 +22,7 @@ struct PathOptions {
     std::string objective = "cells";
     std::string encoding;  // empty: the algorithm's native one
     std::string connector = "repair";
-    // uniform, walk (random feasible walks) or rules (file 000's rough-set rule walks); empty: the
+    // uniform, walk (random feasible walks) or rules (Wan and Gao's (2022) rough-set rule walks); empty: the
     // algorithm's own choice (rules for ilso, uniform for the others)
     std::string init;
     std::optional<std::int64_t> pop;

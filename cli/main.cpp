@@ -1,4 +1,4 @@
-// pride: the command line of the framework (shared/spec/cli.md). Exit status 0 on success, 2 on
+// pride: the command line of the framework (docs/cli.md). Exit status 0 on success, 2 on
 // bad input (one line on stderr naming what and where), 1 on an internal failure.
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -152,8 +152,8 @@ int run_main(int argc, char** argv) {
     path_cmd->add_option("--connector", path.connector, "repair (default) or penalty");
     path_cmd->add_option(
         "--init", path.init,
-        "uniform, walk (random feasible walks), rules (file 000's rough-set rule walks) or sitp (file "
-        "002's SITP walks; also for --encoding chain); default: rules for ilso, uniform for the others");
+        "uniform, walk (random feasible walks), rules (rough-set rule walks, Wan and Gao 2022) or sitp (SITP walks, "
+        "Zhang et al. 2025; also for --encoding chain); default: rules for ilso, uniform for the others");
     path_cmd->add_option("--pop", path.pop, "population size (default 20)")->check(integer_in(1, max_count));
     auto* path_iters =
         path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)")
@@ -224,7 +224,8 @@ int run_main(int argc, char** argv) {
                           "clearance (default length,turns)");
     front_cmd->add_option("--encoding", front.encoding,
                           "grids: line (default), free, or chain (cell chains with the chain operators: nsga2, nsga3)");
-    front_cmd->add_option("--init", front.init, "grids on chains: walk (random walks, default) or sitp (file 002's)");
+    front_cmd->add_option("--init", front.init,
+                          "grids on chains: walk (random walks, default) or sitp (Zhang et al. 2025)");
     front_cmd->add_option("--connector", front.connector, "grids: repair (default) or penalty");
     front_cmd->add_option("--waypoints", front.waypoints, "waypoints of the free encoding (default 3)")
         ->check(integer_in(1, 1000));
@@ -322,7 +323,7 @@ int run_main(int argc, char** argv) {
     auto* roughset_cmd = app.add_subcommand("roughset", "reduce a decision table: core, reducts and minimal rules");
     roughset_cmd->add_option("table", roughset.table, "CSV file: a header of names, the last column the decision")
         ->check(a_path());
-    roughset_cmd->add_flag("--grid", roughset.grid, "file 000's grid decision table instead of a file");
+    roughset_cmd->add_flag("--grid", roughset.grid, "Wan and Gao's (2022) grid decision table instead of a file");
     roughset_cmd->add_flag("--json", roughset.json, "print one JSON object");
 
     try {

@@ -1,5 +1,5 @@
 #pragma once
-// `pride pareto` (shared/spec/cli.md): the exact Pareto front of a grid path's length, turns,
+// `pride pareto` (docs/cli.md): the exact Pareto front of a grid path's length, turns,
 // angle penalty and clearance (problems/grid/pareto.hpp), as text or JSON, and drawn.
 #include <cstdint>
 #include <iosfwd>

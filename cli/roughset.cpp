@@ -146,7 +146,7 @@ int roughset_command(const RoughsetOptions& o, std::ostream& out) {
     const auto& book = grid::grid_rule_book();
     const DecisionTable& t = book.table;
     const Analysis a = analyse(t, roughset::GivenRules{book.reduct, book.rules, "the grid rule book's reduct"});
-    // File 000 reports its own table's sizes (4374 rows -> 5 attributes, 162 rows -> 80 rules).
+    // Wan and Gao (2022) report their own table's sizes (4374 rows -> 5 attributes, 162 rows -> 80 rules).
     if (o.json) {
         s = fmt::format(
             "{{\"table\": \"grid\", {}, \"sizes\": {{\"rows\": {}, \"attributes\": {}, \"reduced_rows\": {}, "
@@ -154,14 +154,14 @@ int roughset_command(const RoughsetOptions& o, std::ostream& out) {
             "80}}}}\n",
             json_body(t, a), t.rows(), book.reduct.size(), book.reduced_rows, book.rules.size());
     } else {
-        s = "table: the grid decision table of file 000 section 2.2 (X1..X8: the neighbours clockwise from the goal\n"
-            "direction, 1 = blocked, 2 = visited, 3 = free; Y: the neighbour to move to, 9 = back)\n";
-        s += fmt::format("{:<30}{:>8}{:>10}\n", "sizes", "pride", "file 000");
-        s += fmt::format("  {:<28}{:>8}{:>10}\n", "rows of the full table", t.rows(), 4374);
-        s += fmt::format("  {:<28}{:>8}{:>10}   {}\n", "attributes kept", book.reduct.size(), 5,
+        s = "table: the grid decision table of Wan and Gao (2022), section 2.2 (X1..X8: the neighbours clockwise\n"
+            "from the goal direction, 1 = blocked, 2 = visited, 3 = free; Y: the neighbour to move to, 9 = back)\n";
+        s += fmt::format("{:<30}{:>8}{:>20}\n", "sizes", "pride", "Wan and Gao (2022)");
+        s += fmt::format("  {:<28}{:>8}{:>20}\n", "rows of the full table", t.rows(), 4374);
+        s += fmt::format("  {:<28}{:>8}{:>20}   {}\n", "attributes kept", book.reduct.size(), 5,
                          names_of(t, book.reduct));
-        s += fmt::format("  {:<28}{:>8}{:>10}\n", "rows on the reduct", book.reduced_rows, 162);
-        s += fmt::format("  {:<28}{:>8}{:>10}\n", "minimal rules", book.rules.size(), 80);
+        s += fmt::format("  {:<28}{:>8}{:>20}\n", "rows on the reduct", book.reduced_rows, 162);
+        s += fmt::format("  {:<28}{:>8}{:>20}\n", "minimal rules", book.rules.size(), 80);
         print_human(t, a, s);
     }
     out << s;

@@ -1,6 +1,6 @@
 #pragma once
-// pride roughset: reduce a decision table (a CSV file, or file 000's grid table) and print its
-// consistency, positive region, core, reducts and minimal rules (shared/spec/cli.md).
+// pride roughset: reduce a decision table (a CSV file, or Wan and Gao's (2022) grid table) and print its
+// consistency, positive region, core, reducts and minimal rules (docs/cli.md).
 #include <iosfwd>
 #include <string>
 
@@ -8,7 +8,7 @@ namespace pride::cli {
 
 struct RoughsetOptions {
     std::string table;  // CSV path; empty with `grid`
-    bool grid = false;  // file 000's grid decision table (problems/grid/rough_rules.hpp)
+    bool grid = false;  // Wan and Gao's (2022) grid decision table (problems/grid/rough_rules.hpp)
     bool json = false;
 };
 

@@ -2,7 +2,7 @@
 // Writing to standard error from the command line's error paths. A message that cannot be
 // written (stderr on a full disk, a closed pipe with SIGPIPE ignored) is lost, never an
 // exception: fmt::print(stderr, ...) throws there, and from main's error handler that aborted
-// the process (SIGABRT, 134) instead of exiting with the error's own status (issue 25).
+// the process (SIGABRT, 134) instead of exiting with the error's own status.
 #include <fmt/format.h>
 
 #include <string_view>

@@ -82,22 +82,25 @@ struct ChainSpaceDefaults {
 /// The chain space's settings (problems/grid/chain.hpp) as parameters of an algorithm that plans
 /// on chains: the same names, choices and meaning for every such algorithm, refused on boxes.
 inline std::vector<ParamSpec> chain_space_params(const ChainSpaceDefaults& d) {
-    return {choice("shortcut", {"none", "line", "elbow"}, d.shortcut,
-                   "the chain space's shortcut on every chain an operator makes, at no evaluation: line of sight "
-                   "(file 003), or one-turn elbows first (this project's)")
-                .only_on_chains(),
-            flag("shortcut_keep", false,
-                 "keep a shortcut only when the objective does not rise (two counted evaluations per changed chain)")
-                .only_on_chains(),
-            choice("walks", {"eq10", "octile"}, d.walks,
-                   "random walks' roulette: file 003's eq. 10 (D - distance to the goal) or exp(-2 x octile change)")
-                .only_on_chains(),
-            choice("sitp_column", {"random", "midpoint"}, "random",
-                   "SITP's transition column: random between start and goal (file 002's text) or eq. 3's midpoint")
-                .only_on_chains(),
-            choice("sitp_score", {"objective", "length"}, d.sitp_score,
-                   "SITP keeps the best of N/8 walks by the objective (counted evaluations) or by length")
-                .only_on_chains()};
+    return {
+        choice("shortcut", {"none", "line", "elbow"}, d.shortcut,
+               "the chain space's shortcut on every chain an operator makes, at no evaluation: line of sight "
+               "(Cai and Du 2021), or one-turn elbows first (this project's)")
+            .only_on_chains(),
+        flag("shortcut_keep", false,
+             "keep a shortcut only when the objective does not rise (two counted evaluations per changed chain)")
+            .only_on_chains(),
+        choice(
+            "walks", {"eq10", "octile"}, d.walks,
+            "random walks' roulette: Cai and Du's (2021) eq. 10 (D - distance to the goal) or exp(-2 x octile change)")
+            .only_on_chains(),
+        choice(
+            "sitp_column", {"random", "midpoint"}, "random",
+            "SITP's transition column: random between start and goal (Zhang et al.'s (2025) text) or eq. 3's midpoint")
+            .only_on_chains(),
+        choice("sitp_score", {"objective", "length"}, d.sitp_score,
+               "SITP keeps the best of N/8 walks by the objective (counted evaluations) or by length")
+            .only_on_chains()};
 }
 
 /// A run's copy of the chain space with the algorithm's settings.

@@ -64,7 +64,7 @@ void prepare_grid(MoPrepared& out, const MoGridSpec& s) {
     require(!g.oracle, "oracle", "a multi-objective grid problem's reference is its exact front");
     if (g.encoding == "chain")
         require(g.init.empty() || g.init == "walk" || g.init == "sitp", "init",
-                "chains start from random walks (walk) or file 002's SITP walks (sitp), got " + g.init);
+                "chains start from random walks (walk) or Zhang et al.'s (2025) SITP walks (sitp), got " + g.init);
     else
         require(g.init.empty() || g.init == "uniform", "init",
                 "the multi-objective algorithms start from uniform points on line and free, got " + g.init);

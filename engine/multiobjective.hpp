@@ -1,5 +1,5 @@
 #pragma once
-// Multi-objective runs (issue 28): problems with M objectives by name (ZDT, DTLZ), grids with two
+// Multi-objective runs: problems with M objectives by name (ZDT, DTLZ), grids with two
 // to four criteria searched through the line or free encoding, and a user's function returning M
 // values; the multi-objective algorithms of the one registry (engine/registry.hpp:
 // run_multiobjective); a run's non-dominated set, with its paths on grids; and its quality against

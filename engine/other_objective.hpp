@@ -1,6 +1,6 @@
 #pragma once
 // The grid objectives that are not linear in a path's metrics, as one type, so that every
-// algorithm is compiled once for all of them: file 002's iqga, or a user's objective on paths
+// algorithm is compiled once for all of them: Zhang et al.'s (2025) iqga, or a user's objective on paths
 // (GridSpec::path_objective: from Python, a callable on the path's cells). Type erasure stays at
 // this edge: one call of the user's function per evaluation, one predictable branch for iqga.
 #include <cmath>

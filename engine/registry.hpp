@@ -91,15 +91,15 @@ struct AlgorithmEntry {
     /// process-wide seed generator, and time limits).
     bool reproducible = true;
     /// The population on grids when none is given (for entries with a `pop` parameter): the papers'
-    /// N = 20, IQGA's N = 40 (file 002, table 1; shared/spec/algorithms.md).
+    /// N = 20, IQGA's N = 40 (Zhang et al. 2025, table 1; docs/algorithms.md).
     std::int64_t grid_population = 20;
     /// Bytes a run needs besides the problem, for a population algorithm in `dimension`; checked
     /// against the machine's memory before anything is allocated.
     std::function<double(const Params&, std::size_t dimension)> memory;
 
     /// The grid encoding it plans on when neither the run nor the problem names one: the one its
-    /// paper plans on (`chain` for file 002's and file 003's planners; `line` for PSO, LSO, ILSO
-    /// and the GA, as file 000 plans with them, and for every box algorithm). Filled in by the
+    /// paper plans on (`chain` for Zhang et al.'s (2025) and Cai and Du's (2021) planners; `line` for PSO, LSO, ILSO
+    /// and the GA, as Wan and Gao (2022) plan with them, and for every box algorithm). Filled in by the
     /// registry when left empty; whole-map algorithms (A*, exact) plan on the grid itself.
     std::string native_encoding;
 

@@ -42,11 +42,11 @@ struct Prepared {
 
 const std::vector<NamedItem>& grid_objectives() {
     static const std::vector<NamedItem> items{
-        {"cells", "grids: number of cells, start and goal included (file 000 eq. 13)"},
-        {"length", "grids: sum of step lengths, 1 or sqrt(2) (file 002 eq. 8)"},
+        {"cells", "grids: number of cells, start and goal included (Wan and Gao 2022, eq. 13)"},
+        {"length", "grids: sum of step lengths, 1 or sqrt(2) (Zhang et al. 2025, eq. 8)"},
         {"weighted", "grids: w_len length + w_turn turns + w_angle angle_penalty (--weights, default 1,1,0.1)"},
-        {"iqga", "grids: -(1/length + 1/angle_penalty + 1/turns) (file 002 eq. 12)"},
-        {"hswoa", "grids: length + lambda turns (file 003; --lambda, default 1)"}};
+        {"iqga", "grids: -(1/length + 1/angle_penalty + 1/turns) (Zhang et al. 2025, eq. 12)"},
+        {"hswoa", "grids: length + lambda turns (Cai and Du 2021; --lambda, default 1)"}};
     return items;
 }
 
@@ -68,10 +68,11 @@ const std::vector<NamedItem>& grid_connectors() {
 }
 
 const std::vector<NamedItem>& grid_inits() {
-    static const std::vector<NamedItem> items{{"uniform", "uniform genotypes in the box"},
-                                              {"walk", "genotypes read off goal-biased random walks with taboo list"},
-                                              {"rules", "genotypes read off file 000's rough-set rule walks"},
-                                              {"sitp", "genotypes or chains from file 002's SITP walks (eqs. 3-7)"}};
+    static const std::vector<NamedItem> items{
+        {"uniform", "uniform genotypes in the box"},
+        {"walk", "genotypes read off goal-biased random walks with taboo list"},
+        {"rules", "genotypes read off Wan and Gao's (2022) rough-set rule walks"},
+        {"sitp", "genotypes or chains from Zhang et al.'s (2025) SITP walks (eqs. 3-7)"}};
     return items;
 }
 

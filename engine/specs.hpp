@@ -44,7 +44,7 @@ struct GridSpec {
     std::string encoding;              // line, free, chain (see encodings()); empty: each algorithm's native one
     std::string connector = "repair";  // repair, penalty (line and free)
     std::int64_t waypoints = 3;        // free
-    // uniform, walk (random feasible walks) or rules (file 000's rough-set rule walks); empty: the
+    // uniform, walk (random feasible walks) or rules (Wan and Gao's (2022) rough-set rule walks); empty: the
     // algorithm's own choice (its walk_init parameter)
     std::string init;
     bool corner_cutting = false;

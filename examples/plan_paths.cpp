@@ -1,6 +1,6 @@
 // The grid half of the README's main job: on each bundled map of the papers (examples/maps), the
 // exact optimum of the objective `cells` beside PSO, the GA, LSO and ILSO (whose starting points are
-// file 000's rough-set rule walks) through the `line` encoding with the `repair` connector, and the
+// Wan and Gao's (2022) rough-set rule walks) through the `line` encoding with the `repair` connector, and the
 // GA on `chain` paths, with the papers' settings N = 20, T = 50 and
 // seeds 1..10: mean value, mean gap to the optimum, share of runs that reached it, time per run.
 // Usage: plan_paths [MAPS_DIR]   (default: examples/maps)
@@ -78,7 +78,8 @@ int main(int argc, char** argv) {
     const std::string dir = argc > 1 ? argv[1] : "examples/maps";
     try {
         fmt::print("objective cells, N = 20, T = 50, seeds 1..{}\n\n", kSeeds);
-        for (const char* name : {"file000-10x10", "file000-13x13", "file002-20x20", "file002-40x40", "file003-50x50"})
+        for (const char* name :
+             {"wan2022-10x10", "wan2022-13x13", "zhang2025-20x20", "zhang2025-40x40", "cai2021-50x50"})
             compare(dir, name);
     } catch (const std::exception& e) {
         fmt::print(stderr, "plan_paths: {}\n", e.what());

@@ -904,7 +904,7 @@ void prepare(Campaign& c) {
     require(c.problems.size() <= max_campaign_problems, file,
             fmt::format("{} problems; a campaign has at most {}", c.problems.size(), max_campaign_problems));
     // Every problem is built, and the list of runs made (a task and a stored key per run), before
-    // any run starts: both are checked here, before either is (issue 25: 128 bytes a run was less
+    // any run starts: both are checked here, before either is (128 bytes a run was less
     // than a key with its two ids takes, and the problems' own 12 kB each were not counted).
     std::size_t problem_id = 0, algorithm_id = 0;
     double built = 0.0;
@@ -923,7 +923,7 @@ void prepare(Campaign& c) {
                         "({} for the problems, {} to list the runs), more than the {} this machine has",
                         c.problems.size(), runs, c.algorithms.size(), c.seeds, format_bytes(built + listed),
                         format_bytes(built), format_bytes(listed), format_bytes(available_memory())));
-    // Names as the store keeps and the summaries print them (issue 25): one root for the campaign
+    // Names as the store keeps and the summaries print them: one root for the campaign
     // files and Python; the name itself is not shown (it may hold the very character refused).
     if (const std::string why = name_problem(c.name); !why.empty()) throw InputError(file, "name " + why);
     for (const auto& p : c.problems)

@@ -113,7 +113,7 @@ std::string name_problem(const std::string& name);
 
 /// At most this many problems in one campaign (COCO's largest suites have a few thousand): a short
 /// instance list or suite must not start hours of building (each problem takes about 12 kB and
-/// 80 us to build before its rotation, issue 25: a 6.9 MB file asked for a million).
+/// 80 us to build before its rotation: a 6.9 MB file asked for a million).
 inline constexpr std::size_t max_campaign_problems = 100'000;
 
 /// The memory a problem takes once prepare() has built it, estimated from its spec before any of

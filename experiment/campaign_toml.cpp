@@ -26,7 +26,7 @@ std::string at(const std::string& file, const toml::node& node) {
     return fmt::format("{}:{}", file, node.source().begin.line);
 }
 
-/// FILE:LINE:COLUMN of a node, for the checks added with issue 25 (the older ones give the line).
+/// FILE:LINE:COLUMN of a node, for the newer checks (the older ones give the line).
 std::string at_column(const std::string& file, const toml::node& node) {
     return fmt::format("{}:{}:{}", file, node.source().begin.line, node.source().begin.column);
 }
@@ -168,7 +168,7 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
     return p;
 }
 
-/// The problems the file has asked for so far, counted before each table expands (issue 25: a
+/// The problems the file has asked for so far, counted before each table expands (a
 /// 6.9 MB instance list or a 15 KB suite asked for hundreds of thousands of problems, 12 kB each,
 /// and met std::bad_alloc after gigabytes): a table that would pass max_campaign_problems or the
 /// memory of the problems built (problem_memory) is refused at its key, before it expands.
@@ -359,7 +359,7 @@ void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const
         const auto fixed = entry.fixed_dim;
         // Fixed-dimension functions (Yao's F14-F23) have one instance: they run once, at instance 0,
         // when the list asks for it; a list without it is refused, never run at an instance it
-        // does not name (issue 25: instances = [1] ran instance 0 and said nothing).
+        // does not name (instances = [1] ran instance 0 and said nothing).
         const bool single = entry.instances == continuous::Instances::none;
         if (single && std::find(instances.begin(), instances.end(), 0) == instances.end())
             fail(at_column(file, *t.get("instances")),

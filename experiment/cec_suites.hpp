@@ -1,5 +1,5 @@
 #pragma once
-// The CEC suites as campaigns take them (issue 26): their functions (registered as cec2017-fN and
+// The CEC suites as campaigns take them: their functions (registered as cec2017-fN and
 // cec2022-fN, problems/continuous/catalog.cpp, with the dimensions of the official data in
 // CatalogEntry::dims), and the budget and number of runs each competition prescribes (section 2.1,
 // "Experimental Settings", of each technical report): CEC 2017, "Runs / problem: 51", "MaxFES:

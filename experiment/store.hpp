@@ -161,7 +161,7 @@ class Store {
             exec(
                 "CREATE TABLE IF NOT EXISTS problems (id TEXT PRIMARY KEY, type TEXT NOT NULL, dim INTEGER NOT NULL, "
                 "map TEXT, start TEXT, goal TEXT)");
-            // The campaign's algorithms (issue 23): their registered type, and whether they evaluate
+            // The campaign's algorithms: their registered type, and whether they evaluate
             // the objective (whole-map planners such as A* do not), for the equal-evaluation check
             // of reports. Stores from before it have none, and their reports check every algorithm.
             exec(
@@ -172,16 +172,16 @@ class Store {
             exec(
                 "CREATE TABLE IF NOT EXISTS claims (problem TEXT NOT NULL, algorithm TEXT NOT NULL, seed INTEGER NOT "
                 "NULL, owner TEXT NOT NULL, UNIQUE (problem, algorithm, seed))");
-            // Columns added with the suites (issue 10); a store from before gains them, empty.
+            // Columns added with the suites; a store from before gains them, empty.
             add_column("campaign", "precisions", "TEXT");
-            add_column("campaign", "target_precision", "REAL");  // [budget] precision (issue 24)
-            // What identifies the runs (issue 24: a campaign grows by seeds, problems and
+            add_column("campaign", "target_precision", "REAL");  // [budget] precision
+            // What identifies the runs (a campaign grows by seeds, problems and
             // algorithms): the budget, and each problem's and algorithm's definition. NULL in
             // stores from before, which then take only their own campaign file.
             add_column("campaign", "budget", "TEXT");
             add_column("problems", "definition", "TEXT");
             add_column("algorithms", "definition", "TEXT");
-            // What each problem is beyond its definition's text (issue 25: a map edited between an
+            // What each problem is beyond its definition's text (a map edited between an
             // interrupted campaign and its resume): SHA-256 digests of its content, compared on
             // every resume. NULL in stores from before, filled on their next resume.
             add_column("problems", "digest", "TEXT");
@@ -193,10 +193,10 @@ class Store {
             add_column("problems", "suite", "TEXT");
             add_column("problems", "fid", "INTEGER");
             add_column("runs", "target_hits", "TEXT NOT NULL DEFAULT '[]'");
-            // What a grid run planned on (issue 23: one campaign may mix encodings); '' for boxes
+            // What a grid run planned on (one campaign may mix encodings); '' for boxes
             // and for runs stored before it.
             add_column("runs", "encoding", "TEXT NOT NULL DEFAULT ''");
-            // COCO's trace of each run (issue 24: what its .dat and .tdat files hold); '[]' for runs
+            // COCO's trace of each run (what its .dat and .tdat files hold); '[]' for runs
             // stored before it.
             add_column("runs", "trace_targets", "TEXT NOT NULL DEFAULT '[]'");
             add_column("runs", "trace_evaluations", "TEXT NOT NULL DEFAULT '[]'");
@@ -205,7 +205,7 @@ class Store {
             add_column("runs", "max_evaluations", "INTEGER");
             add_column("runs", "checkpoints", "TEXT NOT NULL DEFAULT '[]'");
             // Every grid path's metrics, whoever planned it, and a polyline planner's polyline
-            // (issue 29); NULL for other runs and for runs stored before them.
+            //; NULL for other runs and for runs stored before them.
             add_column("runs", "path_metrics", "TEXT");
             // 0 for an algorithm registered as not reproducible (AlgorithmEntry::reproducible):
             // merges and reports of several stores compare its runs by definition, not values.
@@ -259,7 +259,7 @@ class Store {
                         ? std::nullopt
                         : std::optional<std::string>(reinterpret_cast<const char*>(sqlite3_column_text(s, 3)));
                 sqlite3_finalize(s);
-                // Every run of a store records hits of the same targets (issue 24 went from COCO's
+                // Every run of a store records hits of the same targets (pride went from COCO's
                 // 11 precisions to its 51): new runs cannot join runs that recorded others. A store
                 // from before precisions (its runs record none) takes today's.
                 const std::string current = json_array(coco_precisions());

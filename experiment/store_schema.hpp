@@ -4,14 +4,14 @@
 // pride bench, report and export refuse a store that a newer pride wrote, rather than misread it.
 //   0: stores from before the version was recorded (migrated on the next pride bench)
 //   1: runs.encoding, campaign.target_precision, campaign.budget and the problems' and
-//      algorithms' definitions (issues 23 and 24)
-//   2: runs.trace_targets and runs.trace_evaluations, COCO's trace of each run (issue 24)
-//   3: problems.digest, SHA-256 digests of each problem's map and settings (issue 25); NULL in a
+//      algorithms' definitions
+//   2: runs.trace_targets and runs.trace_evaluations, COCO's trace of each run
+//   3: problems.digest, SHA-256 digests of each problem's map and settings; NULL in a
 //      store migrated from before, filled from the campaign of its first resume
 //   4: runs.max_evaluations and runs.checkpoints, each run's evaluation budget and its best values
-//      at the CEC reports' checkpoints (issue 26); NULL and '[]' for runs stored before
+//      at the CEC reports' checkpoints; NULL and '[]' for runs stored before
 //   5: runs.path_metrics and runs.polyline, every grid path's metrics and a polyline planner's
-//      polyline (issue 29), NULL for other runs and runs stored before; algorithms.reproducible,
+//      polyline, NULL for other runs and runs stored before; algorithms.reproducible,
 //      0 for algorithms whose runs are compared by definition (OMPL's), 1 before
 namespace pride::engine {
 

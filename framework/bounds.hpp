@@ -7,7 +7,7 @@
 
 namespace pride {
 
-/// Puts each coordinate on the nearest face of the box (the spec's default); NaN goes to the
+/// Puts each coordinate on the nearest face of the box (the project's default); NaN goes to the
 /// lower face.
 struct Clamp {
     static constexpr const char* name = "clamp";

@@ -36,12 +36,12 @@ concept ChainProblem = ChainOperators<P> && requires(const typename P::chain_typ
 namespace pride {
 
 // Optional capabilities of a chain problem, for algorithms that need more than the four operators
-// above (file 002's IQGA). An algorithm asks for them through these concepts (`if constexpr
+// above (Zhang et al.'s (2025) IQGA). An algorithm asks for them through these concepts (`if constexpr
 // (NumberedMutations<P>)`, or as a requirement), never through a problem's types.
 
 /// Several numbered mutation operators, so that a policy can pick operator k (IQGA's Q-learning
 /// actions order three of them). `badness` in [0, 1] says how bad the chain is in its population
-/// (file 002 eq. 20's B: 0 the best, 1 the worst); operators that ignore it may; 0 when unknown.
+/// (Zhang et al. 2025, eq. 20's B: 0 the best, 1 the worst); operators that ignore it may; 0 when unknown.
 template <class P>
 concept NumberedMutations = ChainOperators<P> &&
     requires(P& p, const P& cp, Rng& rng, typename P::chain_type& a, std::size_t k, double badness) {
@@ -51,14 +51,14 @@ concept NumberedMutations = ChainOperators<P> &&
 };
 
 /// Chains fall into numbered regions of the search space, 0..region_count() - 1 (IQGA's
-/// region-partitioned selection, file 002 eqs. 14-16).
+/// region-partitioned selection, eqs. 14-16) of Zhang et al. (2025).
 template <class P>
 concept RegionOf = ChainProblem<P> && requires(const P& cp, const typename P::chain_type& a) {
     { cp.region_count() } -> std::convertible_to<std::size_t>;
     { cp.region(a) } -> std::convertible_to<std::size_t>;
 };
 
-/// A crossover at two cut points that swaps the parts between them (file 002 fig. 7); false, the
+/// A crossover at two cut points that swaps the parts between them (Zhang et al. 2025, fig. 7); false, the
 /// parents left as they were, when the two cannot be crossed.
 template <class P>
 concept TwoPointCrossover = ChainProblem<P> &&
@@ -66,7 +66,7 @@ concept TwoPointCrossover = ChainProblem<P> &&
     { p.crossover_two_point(a, b, rng) } -> std::same_as<bool>;
 };
 
-/// The length of a chain (on grids: the path's length, file 002 eq. 8), for operators whose choices
+/// The length of a chain (on grids: the path's length, eq. 8) of Zhang et al. (2025), for operators whose choices
 /// follow the best path's length rather than its value (IQGA's Q-learning states).
 template <class P>
 concept ChainLength = ChainProblem<P> && requires(const P& cp, const typename P::chain_type& a) {
@@ -84,7 +84,7 @@ concept SegmentRegeneration = ChainProblem<P> && requires(P& p, Rng& rng, typena
 
 namespace pride {
 
-/// Moving one chain towards another (file 003's whale moves on grids): `a` takes a share `w` in
+/// Moving one chain towards another (Cai and Du's (2021) whale moves on grids): `a` takes a share `w` in
 /// [0, 1] of `b`'s course (0 barely, 1 as much as the space allows), stays feasible, and `b` may be
 /// `a` itself (a perturbation of `a`'s own course).
 template <class P>
@@ -93,7 +93,7 @@ concept TowardMoves = ChainProblem<P> &&
     { p.toward(a, b, w, rng) } -> std::same_as<void>;
 };
 
-/// A chain made shorter in place and kept feasible (on grids: file 003's line-of-sight shortcut),
+/// A chain made shorter in place and kept feasible (on grids: Cai and Du's (2021) line-of-sight shortcut),
 /// for algorithms that shorten every chain they make.
 template <class P>
 concept Shortening = ChainProblem<P> && requires(P& p, typename P::chain_type& a) {

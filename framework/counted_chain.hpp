@@ -1,7 +1,7 @@
 #pragma once
 // The counted route to a chain problem's objective. Some chain operators score candidates with
-// the objective while they build a chain (file 002's SITP keeps the best of N/8 walks per segment
-// by it); every such call is an evaluation like any other (shared/spec/architecture.md: "every
+// the objective while they build a chain (Zhang et al.'s (2025) SITP keeps the best of N/8 walks per segment
+// by it); every such call is an evaluation like any other (docs/architecture.md: "every
 // call, of a whole solution or a partial one, is counted and bounded by the budget"). A chain
 // space offers those operators in a scored form, `op(..., score)`, whose last argument is the
 // only way they may reach the objective; CountedChains is the chain problem an algorithm's

@@ -1,5 +1,5 @@
 #pragma once
-// The run driver of multi-objective algorithms (issue 28), as run_state.hpp is of the others: the
+// The run driver of multi-objective algorithms, as run_state.hpp is of the others: the
 // evaluation guard (exact budget; a point with a NaN or +-inf objective gets +inf in every one,
 // worse than every point with finite values), the
 // stopping rules, the evaluations after each iteration, the observer calls and the wall clock.

@@ -1,5 +1,5 @@
 #pragma once
-// Problems with several objectives (issue 28): what a multi-objective algorithm needs of a box
+// Problems with several objectives: what a multi-objective algorithm needs of a box
 // problem. The number of objectives M is known before a run (objectives()), and one evaluation
 // writes all M values at once (an objective evaluated on its own is still one evaluation of the
 // problem: the budget counts points, not objective values). A single-objective algorithm never
@@ -48,7 +48,7 @@ concept BatchMultiObjectiveProblem = MultiObjectiveProblem<P> && requires(P& p, 
 
 /// The scalar problem sum_i w_i f_i(x) of a multi-objective problem: a view that evaluates the
 /// problem it holds (a problem shares its definition between copies, as every problem does), so
-/// that the weighted single-objective algorithms of the papers (file 002's eq. 12) and the
+/// that the weighted single-objective algorithms of the papers (Zhang et al.'s (2025) eq. 12) and the
 /// multi-objective ones search the same objectives. Each call of evaluate() is one evaluation of
 /// the multi-objective problem.
 template <MultiObjectiveProblem P>

@@ -1,5 +1,5 @@
 #pragma once
-// Parallel evaluation of one population inside one run (issue 15): a batch of points is cut into
+// Parallel evaluation of one population inside one run: a batch of points is cut into
 // as many contiguous slices as there are threads, and slice k is evaluated by copy k of the
 // problem (problems keep scratch buffers, so each thread owns a copy). Values land in the caller's
 // span at their column's place, and the evaluation guard (RunState::evaluate_columns) then counts

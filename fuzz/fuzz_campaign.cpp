@@ -10,7 +10,7 @@
 #include "fuzz/fuzz_support.hpp"
 #include "problems/grid/rough_rules.hpp"
 
-// Built once per process, not per input: file 000's rule book (the reducts of the grid decision
+// Built once per process, not per input: Wan and Gao's (2022) rule book (the reducts of the grid decision
 // table, 0.6 s in this build) and the registry, so that the first input is not charged with them
 // against the 1 s hang limit.
 extern "C" int LLVMFuzzerInitialize(int*, char***) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerates docs/results/baselines.md (issue 27's baselines) from its campaigns, or checks it.
+"""Regenerates docs/results/baselines.md (the baselines) from its campaigns, or checks it.
 
     /usr/bin/python3 scripts/baselines_page.py run [--build build] [--stores DIR] [--jobs 2]
         runs (or resumes) the page's campaigns into DIR (default build/results): the BBOB one
@@ -242,7 +242,7 @@ def lshade_block(data):
         for r in csv.DictReader(fh):
             official.setdefault((int(r["function"]), int(r["dimension"])), []).append(snap(float(r["error"])))
     variants = [a for a in ("lshade", "lshade-paper") if any(k[2] == a for k in ours)]
-    # Only what has all its runs (a campaign resumed over sessions fills the rest).
+    # Only what has all its runs (a campaign resumed later fills the rest).
     keys = sorted(k for k in official if all(len(ours.get((k[0], k[1], a), [])) == len(official[k]) for a in variants))
     ps = {a: [rp.rank_sum(official[k], [snap(e) for e in ours[(k[0], k[1], a)]]) for k in keys] for a in variants}
     adj = {a: rp.holm(ps[a]) for a in variants}
@@ -265,7 +265,7 @@ def jso_block(data):
     with open(data / "jso-published-cec2017.csv", newline="") as fh:
         for r in csv.DictReader(fh):
             pub[(int(r["function"]), int(r["dimension"]))] = r
-    # Only what has all its runs (a campaign resumed over sessions fills the rest).
+    # Only what has all its runs (a campaign resumed later fills the rest).
     keys = sorted(k for k in pub if len(ours.get((k[0], k[1], "jso"), [])) == int(pub[k]["runs"]))
     out = []
     for fn, dim in keys:

@@ -30,11 +30,11 @@ runs += [
     "run --problem sphere --dim 2 --algo pso --iters 0 --seed 1 --json",
 ]
 maps = [
-    ("examples/maps/file000-10x10.map", "0,0", "9,9"),
-    ("examples/maps/file000-13x13.map", "0,0", "12,12"),
-    ("examples/maps/file002-20x20.map", "0,19", "19,0"),
-    ("examples/maps/file002-40x40.map", "1,38", "38,1"),
-    ("examples/maps/file003-50x50.map", "0,49", "49,0"),
+    ("examples/maps/wan2022-10x10.map", "0,0", "9,9"),
+    ("examples/maps/wan2022-13x13.map", "0,0", "12,12"),
+    ("examples/maps/zhang2025-20x20.map", "0,19", "19,0"),
+    ("examples/maps/zhang2025-40x40.map", "1,38", "38,1"),
+    ("examples/maps/cai2021-50x50.map", "0,49", "49,0"),
 ]
 paths = []
 box_algos = ["pso", "pso-constriction", "ga", "ga-plus", "lso", "ilso", "nlopt:LN_SBPLX"]
@@ -90,7 +90,7 @@ paths += [
     "path --map $PRIDE_DATA/movingai/random-32-32-20.map --start 1,1 --goal 30,30 --algo pso --encoding free --objective length --oracle --seed 1 --json",
     "path --map $PRIDE_DATA/movingai/maze-32-32-4.map --start 1,1 --goal 29,29 --algo ga --encoding chain --objective length --oracle --seed 2 --json",
 ]
-# Added with the suites and the new algorithms (session 4: issues 10-12); appended, so that the
+# Added with the suites and the new algorithms; appended, so that the
 # lines above keep their numbers.
 later = []
 for algo in ["pso", "ga-plus", "woa", "woa-hs", "woa-balance", "hswoa", "hs", "iaga", "icga", "ga-q"]:
@@ -108,25 +108,25 @@ for m, s, g in maps:
         later.append(f"{base} --algo {a} --encoding chain --objective length --iters 10 --oracle --seed 3 --json")
     later.append(f"{base} --algo ga --encoding chain --init sitp --objective iqga --iters 10 --oracle --seed 4 --json")
     later.append(f"{base} --algo pso --init sitp --objective cells --iters 10 --oracle --seed 5 --json")
-# Added in session 5 (issues 11, 12, 15): WOA and HS-WOA on chains and file 003's maps, IQGA's
+# Added later: WOA and HS-WOA on chains and Cai and Du's (2021) maps, IQGA's
 # ablation flags, IAGA's pm floor off, ga-sga, threads and the largest seed; appended.
-f3 = ("examples/maps/file003-50x50.map", "0,49", "49,0")
+f3 = ("examples/maps/cai2021-50x50.map", "0,49", "49,0")
 for a in ["woa", "woa-hs", "woa-balance", "hswoa"]:
     later.append(f"path --map {f3[0]} --start {f3[1]} --goal {f3[2]} --encoding chain --objective hswoa --algo {a} --iters 10 --seed 1 --json")
-for m, s, g in [("examples/maps/file003-env1-30x30.map", "0,29", "29,0"), ("examples/maps/file003-env2-30x30.map", "0,29", "29,0"),
-                ("examples/maps/file003-env3-60x60.map", "0,59", "59,0")]:
+for m, s, g in [("examples/maps/cai2021-env1-30x30.map", "0,29", "29,0"), ("examples/maps/cai2021-env2-30x30.map", "0,29", "29,0"),
+                ("examples/maps/cai2021-env3-60x60.map", "0,59", "59,0")]:
     base = f"path --map {m} --start {s} --goal {g}"
     later.append(f"{base} --encoding chain --objective hswoa --algo hswoa --iters 10 --oracle --seed 1 --json")
     later.append(f"{base} --algo exact --objective hswoa --json")
     later.append(f"{base} --algo astar --json")
-f2 = "path --map examples/maps/file002-20x20.map --start 0,19 --goal 19,0 --algo iqga --encoding chain --objective iqga --iters 20"
+f2 = "path --map examples/maps/zhang2025-20x20.map --start 0,19 --goal 19,0 --algo iqga --encoding chain --objective iqga --iters 20"
 for flag in ["regions", "elite_crossover", "qlearning", "sitp"]:
     later.append(f"{f2} --param {flag}=0 --seed 3 --json")
 later.append("run --problem rastrigin --dim 10 --algo iaga --evals 5000 --param pm_min=0 --seed 3 --json")
 for problem, dim, evals, seed in [("rastrigin", 10, 5000, 1), ("rastrigin", 10, 5000, 7), ("rosenbrock", 5, 3000, 3)]:
     later.append(f"run --problem {problem} --dim {dim} --algo ga-sga --evals {evals} --seed {seed} --json")
 for t in [1, 2]:
-    later.append(f"path --map examples/maps/file002-40x40.map --start 1,38 --goal 38,1 --algo pso --iters 10 --threads {t} --seed 4 --json")
+    later.append(f"path --map examples/maps/zhang2025-40x40.map --start 1,38 --goal 38,1 --algo pso --iters 10 --threads {t} --seed 4 --json")
 later.append("run --problem sphere --dim 2 --algo pso --evals 100 --seed 18446744073709551615 --json")
 for c in runs + paths + later:
     print(c)

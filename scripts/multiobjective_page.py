@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerates docs/results/multiobjective.md (issue 28) from its runs, or checks it.
+"""Regenerates docs/results/multiobjective.md from its runs, or checks it.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/multiobjective_page.py run
         runs every (instance, algorithm, seed) of the page through pride's Python module (the runs
@@ -18,7 +18,7 @@
 The runs: NSGA-II, MOEA/D and SMS-EMOA with their registry defaults (population 100, 100 MOEA/D
 subproblems), through the `free` encoding (three waypoints, repair connector), and NSGA-II on cell
 chains with the chain operators (from random walks, and from SITP walks), 20,000 evaluations
-each, seeds 1-15; IQGA (file 002) with its registry defaults on its own weighted objective and
+each, seeds 1-15; IQGA (Zhang et al. 2025) with its registry defaults on its own weighted objective and
 space (chains, N = 40) at the same 20,000 evaluations. Indicators: engine/multiobjective.hpp's
 (normalised by the exact front; hypervolume ratio with the reference point 1.1; IGD+; exact
 points found). Statistics: results_pages.py's Kruskal-Wallis and two-sided rank-sum tests with
@@ -42,14 +42,14 @@ CSV = "multiobjective-grids.csv"
 # maps with a scenario line each (the public data of others, read from $PRIDE_DATA/movingai by the
 # runs; the line's start and goal).
 INSTANCES = [
-    ("file002-20x20", "examples/maps/file002-20x20.map", (0, 19), (19, 0)),
-    ("file002-40x40", "examples/maps/file002-40x40.map", (1, 38), (38, 1)),
-    ("file003-50x50", "examples/maps/file003-50x50.map", (0, 49), (49, 0)),
-    ("file003-env3-60x60", "examples/maps/file003-env3-60x60.map", (0, 59), (59, 0)),
+    ("zhang2025-20x20", "examples/maps/zhang2025-20x20.map", (0, 19), (19, 0)),
+    ("zhang2025-40x40", "examples/maps/zhang2025-40x40.map", (1, 38), (38, 1)),
+    ("cai2021-50x50", "examples/maps/cai2021-50x50.map", (0, 49), (49, 0)),
+    ("cai2021-env3-60x60", "examples/maps/cai2021-env3-60x60.map", (0, 59), (59, 0)),
     ("den312d", "$PRIDE_DATA/movingai/den312d.map", (58, 37), (4, 56)),
 ]
 # (label, algorithm, encoding, init): the three on `free`, and NSGA-II on cell chains with the chain
-# operators, from random walks and from file 002's SITP walks.
+# operators, from random walks and from Zhang et al.'s (2025) SITP walks.
 ENTRANTS = [
     ("nsga2", "nsga2", "free", None),
     ("moead", "moead", "free", None),

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerates docs/results/planners.md (issue 29) from its runs, or checks it.
+"""Regenerates docs/results/planners.md from its runs, or checks it.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/planners_page.py run
         runs every (instance, planner, seed) of the page through pride's Python module (the runs
@@ -14,8 +14,8 @@
 The runs, all on the length objective with the gaps to the exact grid and any-angle optima
 (docs/grid.md, "Polylines and their metrics"): the whole-map planners A*, JPS, Theta*, Lazy Theta*
 and the exact any-angle path once each (no seed, no budget); OMPL's RRT*, Informed RRT*, BIT* and
-PRM* (the grid's plane, validity checks as evaluations) and the metaheuristics ILSO (file 000,
-line encoding, rough-set rule walks), IQGA (file 002, chains), HS-WOA (file 003, chains) and PSO
+PRM* (the grid's plane, validity checks as evaluations) and the metaheuristics ILSO (Wan and Gao 2022,
+line encoding, rough-set rule walks), IQGA (Zhang et al. 2025, chains), HS-WOA (Cai and Du 2021, chains) and PSO
 on the `free` encoding (three waypoints, repair connector), each with its registry defaults at the
 same 5,000 evaluations, seeds 1-10. Statistics: results_pages.py's rank-sum tests with Holm's
 correction, checked there against scipy.
@@ -44,11 +44,11 @@ def last_scenario_line(name):
 # of others, read from $PRIDE_DATA/movingai by the runs) with the start and goal of the last line of
 # their scenario files `NAME-even-1.scen` (the runs check them against the files).
 PAPER_MAPS = [
-    ("file000-13x13", "examples/maps/file000-13x13.map", (0, 0), (12, 12)),
-    ("file002-20x20", "examples/maps/file002-20x20.map", (0, 19), (19, 0)),
-    ("file002-40x40", "examples/maps/file002-40x40.map", (1, 38), (38, 1)),
-    ("file003-50x50", "examples/maps/file003-50x50.map", (0, 49), (49, 0)),
-    ("file003-env3-60x60", "examples/maps/file003-env3-60x60.map", (0, 59), (59, 0)),
+    ("wan2022-13x13", "examples/maps/wan2022-13x13.map", (0, 0), (12, 12)),
+    ("zhang2025-20x20", "examples/maps/zhang2025-20x20.map", (0, 19), (19, 0)),
+    ("zhang2025-40x40", "examples/maps/zhang2025-40x40.map", (1, 38), (38, 1)),
+    ("cai2021-50x50", "examples/maps/cai2021-50x50.map", (0, 49), (49, 0)),
+    ("cai2021-env3-60x60", "examples/maps/cai2021-env3-60x60.map", (0, 59), (59, 0)),
 ]
 MOVINGAI = [
     ("den312d", (46, 40), (52, 37)),

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Regenerates docs/results/file002.md and docs/results/file003.md from nothing, or checks them.
+"""Regenerates docs/results/zhang2025.md and docs/results/cai2021.md from nothing, or checks them.
 
-    /usr/bin/python3 scripts/results_pages.py [--build DIR] [--jobs N] [--page file002|file003]
-        runs every campaign of the pages (examples/campaigns/file002*.toml, file003*.toml) into
+    /usr/bin/python3 scripts/results_pages.py [--build DIR] [--jobs N] [--page zhang2025|cai2021]
+        runs every campaign of the pages (examples/campaigns/zhang2025*.toml, cai2021*.toml) into
         fresh stores under DIR/results (DIR: build), writes their compact stores to
         docs/results/data/, the exact references and the processor times beside them, the figures
         to docs/results/img/, and the pages' generated blocks; prints how long it took.
@@ -63,16 +63,16 @@ def map_file(name):
     return pathlib.Path(root) / name[len(prefix):]
 
 PAGES = {
-    "file002": {
-        "page": "docs/results/file002.md",
-        "campaigns": ["file002", "file002-generations", "file002-iqga"],
-        "module": "file002_tables",
+    "zhang2025": {
+        "page": "docs/results/zhang2025.md",
+        "campaigns": ["zhang2025", "zhang2025-generations", "zhang2025-iqga"],
+        "module": "zhang2025_tables",
     },
-    "file003": {
-        "page": "docs/results/file003.md",
-        "campaigns": ["file003-sweep", "file003-sweep-iterations", "file003-ablation", "file003-ablation-iterations",
-                      "file003-envs", "file003-envs-iterations"],
-        "module": "file003_tables",
+    "cai2021": {
+        "page": "docs/results/cai2021.md",
+        "campaigns": ["cai2021-sweep", "cai2021-sweep-iterations", "cai2021-ablation", "cai2021-ablation-iterations",
+                      "cai2021-envs", "cai2021-envs-iterations"],
+        "module": "cai2021_tables",
     },
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // What tests/test_algorithms.cpp and tests/test_algorithm_settings.cpp share: probes that record
 // every evaluated point, the algorithms in their test settings, and for_each_algorithm (every
-// registered box algorithm, for the suites that every algorithm must pass). One file before
-// issue 30; split so that neither translation unit takes over 30 s to compile.
+// registered box algorithm, for the suites that every algorithm must pass). Once one file;
+// split so that neither translation unit takes over 30 s to compile.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -237,7 +237,7 @@ void for_each_algorithm(std::int64_t population, F&& f) {
     f("pso-constriction", pso_constriction(population));
     f("ga", ga(population));
     f("ga-plus", ga_plus(population));
-    // The GA variants of file 002 (algorithms/parts/adaptive_rates.hpp, catastrophe.hpp,
+    // The GA variants of Zhang et al. (2025) (algorithms/parts/adaptive_rates.hpp, catastrophe.hpp,
     // q_learning.hpp; tests/test_ga_variants.cpp): the catastrophe every 2 generations here.
     pride::Ga<pride::TournamentSelection, pride::AdaptiveSbxCrossover, pride::AdaptivePolynomialMutation> iaga;
     iaga.id = "iaga";

@@ -85,7 +85,7 @@ inline std::vector<GridInstance> random_instances(std::uint64_t seed, int maps) 
 
 /// The brute-force fronts' turn cost, worked out apart from problems/grid/path.hpp: the angle
 /// between two step vectors in whole degrees (the arc cosine of 2 / (sqrt 2 sqrt 2) is not exactly
-/// 0 in floating point), and the spec's W for it (0, 10 below 90 degrees, 20 at 90, 50 above).
+/// 0 in floating point), and the project's W for it (0, 10 below 90 degrees, 20 at 90, 50 above).
 inline double angle_between(int ax, int ay, int bx, int by) {
     const double c = (ax * bx + ay * by) / (std::hypot(ax, ay) * std::hypot(bx, by));
     return std::round(std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.14159265358979323846);

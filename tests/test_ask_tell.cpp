@@ -132,7 +132,7 @@ TEST_CASE("observed runs: the observer sees every iteration and false stops the 
     CHECK_THAT(
         input_error_message([&] {
             engine::GridSpec g;
-            g.map = engine::load_map(std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map");
+            g.map = engine::load_map(std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map");
             g.start = {0, 9};
             g.goal = {9, 0};
             engine::run({"astar", {}}, engine::Problem(g), {}, 1, [](const pride::IterationView&) { return true; });

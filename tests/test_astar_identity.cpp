@@ -1,4 +1,4 @@
-// A* must stay bit for bit what it was when it was made faster (issue 15): the same paths (so the
+// A* must stay bit for bit what it was when it was made faster: the same paths (so the
 // same tie-breaking), the same lengths to the last bit and the same number of expansions, on the
 // Moving AI scenarios and on random maps with windows and corner cutting. The reference digests
 // were taken with the A* of main at 8834815, before the speed work.
@@ -115,7 +115,7 @@ TEST_CASE("A*'s key rounding equals std::llround where the keys need it", "[grid
 
 namespace {
 
-/// The radix heap A* used before OpenList (session 6), kept as the reference for monotone keys
+/// The radix heap A* used before OpenList, kept as the reference for monotone keys
 /// (no key below the last popped), where its order is "least key, then the last push".
 class OldRadixHeap {
   public:

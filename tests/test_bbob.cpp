@@ -338,7 +338,7 @@ TEST_CASE("bbob: f23's table of powers of two has the bits of std::pow(2, j) it 
 }
 
 TEST_CASE("bbob: the catalog's batch route gives the scalar route's bits on every function", "[bbob]") {
-    // f1's batch form interleaves two points' sums, and affine() sweeps columns (issue 30): both
+    // f1's batch form interleaves two points' sums, and affine() sweeps columns: both
     // must keep COCO's order of operations, which the scalar route is tested against above. Odd
     // and even numbers of points, so that f1's pairs and its last single point are both taken.
     pride::Rng rng(11);

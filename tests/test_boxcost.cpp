@@ -1,4 +1,4 @@
-// Issue 15 (framework cost per evaluation): the faster forms of PSO's move, harmony search's
+// The framework's cost per evaluation: the faster forms of PSO's move, harmony search's
 // improvisation (and its integer coin tests), SBX's selects and vector passes and FixedPower's
 // powers of two give the same bits as the plain forms they replace.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Tests of `pride bench` (shared/spec/cli.md, cli/campaign.hpp) through the real executable: every
+// Tests of `pride bench` (docs/cli.md, cli/campaign.hpp) through the real executable: every
 // campaign-file error (exit 2, one line naming the file, the line and the key, no store created);
 // --jobs 1 and --jobs 2 storing the same values; resuming after a real SIGKILL with no run lost or
 // run twice; re-running a finished campaign; refusing a store made from another campaign file. The
@@ -50,7 +50,7 @@ using Clock = std::chrono::steady_clock;
 // Files and processes
 
 fs::path bundled_map() {
-    return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "file000-10x10.map";
+    return fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "wan2022-10x10.map";
 }
 fs::path bundled_campaigns() {
     return fs::path(PRIDE_SOURCE_DIR) / "examples" / "campaigns";
@@ -276,7 +276,7 @@ long long integer_of(const std::string& tagged) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The grid, read and solved here independently of the library (shared/spec/grid.md)
+// The grid, read and solved here independently of the library (docs/grid.md)
 
 struct Cell {
     int x, y;
@@ -637,9 +637,9 @@ TEST_CASE("bench: unknown problems, algorithms and parameters are named", "[cli]
 }
 
 TEST_CASE("bench: bad grid problems are named with their line", "[cli][bench][errors]") {
-    expect_campaign_error(replace(grid_base(), "file000-10x10.map", "nosuchmap-10x10.map"),
+    expect_campaign_error(replace(grid_base(), "wan2022-10x10.map", "nosuchmap-10x10.map"),
                           {"FILE:5:", "'g1'", "nosuchmap-10x10.map"});
-    // (5, 1) is an obstacle of file000-10x10.map
+    // (5, 1) is an obstacle of wan2022-10x10.map
     expect_campaign_error(replace(grid_base(), "start = [0, 0]", "start = [5, 1]"),
                           {"FILE:5:", "'g1'", "start", "(5,1)"});
     expect_campaign_error(replace(grid_base(), "goal = [9, 9]", "goal = [10, 9]"), {"FILE:5:", "'g1'", "goal"});
@@ -985,7 +985,7 @@ TEST_CASE("bench: an SQLite database that is not a pride store is refused and le
 }
 
 // ---------------------------------------------------------------------------------------------
-// 5. Campaigns under faults (issue 14): signals, two processes on one store, read-only and full
+// 5. Campaigns under faults: signals, two processes on one store, read-only and full
 // file systems, a store deleted meanwhile, a store of a campaign that stored nothing
 
 namespace {

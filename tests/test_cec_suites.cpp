@@ -1,4 +1,4 @@
-// The CEC suites in campaigns and reports (issue 26): [[suite]] name = "cec2017" / "cec2022" and
+// The CEC suites in campaigns and reports: [[suite]] name = "cec2017" / "cec2022" and
 // what they expand to, their refusals (instances, a dimension without official data, an unknown
 // function) through `pride bench`, the suites' default budgets and runs; the best value so far that
 // every run records at exact evaluation counts, and `pride report --format cec` on a store of
@@ -493,7 +493,7 @@ TEST_CASE("cec suites: problems without a known f* are left out of the CEC table
                                         "start = [0, 0]\ngoal = [9, 9]\n"
                                         "[[problem]]\nid = \"sph\"\ntype = \"sphere\"\ndim = 2\n"
                                         "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n",
-                                        std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map"));
+                                        std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map"));
     const std::string store = dir.file("g.sqlite");
     auto c = pride::engine::read_campaign(file);
     (void)pride::engine::run_campaign(c, store, 1);

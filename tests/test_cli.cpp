@@ -1,4 +1,4 @@
-// Tests of the `pride` command as a user runs it (shared/spec/cli.md): exit statuses and error
+// Tests of the `pride` command as a user runs it (docs/cli.md): exit statuses and error
 // lines, the JSON of `run` and `list`, the values printed by `eval`.
 #include <catch2/catch.hpp>
 

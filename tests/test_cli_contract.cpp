@@ -34,7 +34,7 @@ struct Row {
 class Inputs {
   public:
     Inputs() {
-        const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+        const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
         dir_.write("m.map", pride::test::slurp(map));
         dir_.write("empty.map", "");
         dir_.write("binary.map", std::string("\x7f"
@@ -67,7 +67,7 @@ class Inputs {
                                     "\n[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n" + problem +
                                     "\n[[algorithm]]\nid = \"p\"\ntype = \"pso\"\n" + algorithm + "\n");
     }
-    /// A campaign file with one grid problem on m.map (the 10x10 map of file 000).
+    /// A campaign file with one grid problem on m.map (the 10x10 map of Wan and Gao (2022)).
     std::string grid_campaign(const std::string& name, const std::string& problem) const {
         return dir_.write(name,
                           "name = \"g\"\nseeds = 1\n[budget]\niterations = 5\n[[problem]]\nid = \"g\"\n"

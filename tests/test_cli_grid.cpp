@@ -1,4 +1,4 @@
-// Tests of `pride path` and `pride scen` (shared/spec/cli.md, shared/spec/grid.md) through the real
+// Tests of `pride path` and `pride scen` (docs/cli.md, docs/grid.md) through the real
 // executable: every algorithm and encoding on every bundled map (examples/maps), with the JSON
 // parsed and every path and metric re-checked here, independently of the library (own map reader,
 // own legality rules, own metrics, own breadth-first search); Moving AI scenario files; every input
@@ -241,7 +241,17 @@ const std::vector<Bundled>& bundled() {
             if (b.grid.width != w || b.grid.height != h) throw std::runtime_error("bundled scenario size: " + file);
             out.push_back(std::move(b));
         }
-        std::sort(out.begin(), out.end(), [](const Bundled& a, const Bundled& b) { return a.name < b.name; });
+        // The papers in the order of docs/papers.md (Wan and Gao, Zhang et al., Cai and Du), then
+        // by name: the tests below pick maps by index.
+        const auto paper = [](const std::string& name) {
+            return name.starts_with("wan2022")     ? 0
+                   : name.starts_with("zhang2025") ? 1
+                   : name.starts_with("cai2021")   ? 2
+                                                   : 3;
+        };
+        std::sort(out.begin(), out.end(), [&](const Bundled& a, const Bundled& b) {
+            return std::pair(paper(a.name), a.name) < std::pair(paper(b.name), b.name);
+        });
         return out;
     }();
     return maps;
@@ -451,7 +461,8 @@ TEST_CASE("cli grid: the independent checker itself, on hand-made paths", "[cli]
 }
 
 TEST_CASE("cli grid: the bundled maps are all found", "[cli][grid]") {
-    REQUIRE(bundled().size() == 8);  // files 000, 002 and 003, with file 003's three environments
+    REQUIRE(bundled().size() == 8);  // Wan and Gao (2022), Zhang et al. (2025) and Cai and Du (2021), with Cai and Du's
+                                     // (2021) three environments
     for (const auto& b : bundled()) {
         INFO(b.name);
         CHECK(b.grid.free(b.start.x, b.start.y));
@@ -541,10 +552,10 @@ TEST_CASE("cli grid: lso and ilso with the line and free encodings on every bund
                     // 10x10 cells 12 against 16, weighted 48.3 against 67.2); with the free encoding
                     // they need not (three waypoints read
                     // off a walk lose most of it), so only the line encoding is compared. Nor on
-                    // file 003's env2, whose walls with 1-2 cell gaps send rule walks round them
+                    // Cai and Du's (2021) env2, whose walls with 1-2 cell gaps send rule walks round them
                     // (measured with ilso: cells 62 against 60, length 69.7 against 66.9): a
                     // measured property of the other seven maps, not a law.
-                    if (h.encoding == "line" && b.name != "file003-env2-30x30.map") {
+                    if (h.encoding == "line" && b.name != "cai2021-env2-30x30.map") {
                         const std::string args =
                             "path " + b.endpoints() + " " + h.args + " " + objective.args + " --init uniform --json";
                         INFO(args);
@@ -979,19 +990,19 @@ TEST_CASE("cli grid: pictures carry a legend under the map", "[cli][grid][draw]"
     const TempDir dir;
     // A 40 x 40 map at 20 pixels a cell (800 x 800), then the legend: start, goal, the path and
     // the optimum, 18 pixels a line and 6 above and below: 84.
-    REQUIRE(run_pride("path --map " PRIDE_SOURCE_DIR "/examples/maps/file002-40x40.map --start 1,38 --goal 38,1 "
+    REQUIRE(run_pride("path --map " PRIDE_SOURCE_DIR "/examples/maps/zhang2025-40x40.map --start 1,38 --goal 38,1 "
                       "--algo ga --encoding chain --objective length --oracle --png " +
                       dir.file("p.png"))
                 .status == 0);
     CHECK(size(slurp(dir.file("p.png"))) == std::make_pair(800u, 884u));
     // Without --oracle, no optimum line: 66.
-    REQUIRE(run_pride("path --map " PRIDE_SOURCE_DIR "/examples/maps/file002-40x40.map --start 1,38 --goal 38,1 "
+    REQUIRE(run_pride("path --map " PRIDE_SOURCE_DIR "/examples/maps/zhang2025-40x40.map --start 1,38 --goal 38,1 "
                       "--algo astar --png " +
                       dir.file("a.png"))
                 .status == 0);
     CHECK(size(slurp(dir.file("a.png"))) == std::make_pair(800u, 866u));
     // A Pareto front of 5 points on a 20 x 20 map: start, goal and one line per point.
-    REQUIRE(run_pride("pareto --map " PRIDE_SOURCE_DIR "/examples/maps/file002-20x20.map --start 0,19 --goal 19,0 "
+    REQUIRE(run_pride("pareto --map " PRIDE_SOURCE_DIR "/examples/maps/zhang2025-20x20.map --start 0,19 --goal 19,0 "
                       "--objectives length,turns --png " +
                       dir.file("f.png"))
                 .status == 0);

@@ -14,7 +14,7 @@ TEST_CASE("cli: a run that cannot fit in memory is refused before it starts", "[
     check_input_error(run_pride("run --problem sphere --dim 100000000 --algo pso"), {"pso", "memory"});
     check_input_error(run_pride("run --problem rastrigin --dim 4000000000000 --algo ga"), {"--dim", "memory"});
     check_input_error(run_pride("run --problem sphere --dim 10 --algo ga-plus --param pop=3e9"), {"ga-plus", "memory"});
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     check_input_error(run_pride("path --map '" + map + "' --start 0,0 --goal 9,9 --algo lso --pop 3000000000"),
                       {"lso", "memory"});
     check_input_error(

@@ -536,7 +536,7 @@ TEST_CASE("coco: a store written by pride bench, read back and checked against i
                                          "[[problem]]\nid = \"sphere4\"\ntype = \"sphere\"\ndim = 4\n"
                                          "[[problem]]\nid = \"grid\"\ntype = \"grid\"\nmap = \"" +
                                              std::string(PRIDE_SOURCE_DIR) +
-                                             "/examples/maps/file000-10x10.map\"\nstart = [0, 0]\ngoal = [9, 9]\n"
+                                             "/examples/maps/wan2022-10x10.map\"\nstart = [0, 0]\ngoal = [9, 9]\n"
                                              "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n"
                                              "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n");
     const std::string store = dir.file("c.sqlite");

@@ -1,4 +1,4 @@
-// Every call of an objective is an evaluation (shared/spec/architecture.md): counted from outside,
+// Every call of an objective is an evaluation (docs/architecture.md): counted from outside,
 // by the objective itself, for every registered algorithm on every space and encoding it runs on
 // and every grid objective, the calls must equal the result's `evaluations` and stay within the
 // budget. Iterated over the registry, so that an algorithm registered tomorrow is covered.
@@ -36,12 +36,12 @@ std::vector<Space> grid_spaces(const engine::AlgorithmEntry& entry) {
     return out;
 }
 
-/// One run on file 002's 20 x 20 map (obstacles on the way, where SITP, shortcuts and repairs all
+/// One run on Zhang et al.'s (2025) 20 x 20 map (obstacles on the way, where SITP, shortcuts and repairs all
 /// have work), the objective counting its calls.
 engine::RunResult counted_run(const std::string& algo, const Space& s, const std::string& objective,
                               engine::Budget budget, std::int64_t& calls) {
     engine::GridSpec g;
-    g.map = engine::load_map((std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/file002-20x20.map").string());
+    g.map = engine::load_map((std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/zhang2025-20x20.map").string());
     g.start = {0, 19};
     g.goal = {19, 0};
     g.objective = objective;
@@ -100,7 +100,7 @@ TEST_CASE("counting: the chain space's scoring settings spend counted evaluation
             INFO(algo << " " << setting);
             engine::GridSpec g;
             g.map = engine::load_map(
-                (std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/file002-20x20.map").string());
+                (std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/zhang2025-20x20.map").string());
             g.start = {0, 19};
             g.goal = {19, 0};
             g.objective = algo == "iqga" ? "iqga" : "hswoa";
@@ -158,7 +158,7 @@ TEST_CASE("counting: a user's objective on paths runs with every grid algorithm,
     };
     user->step_cost = [](int, int d) { return d % 2 == 0 ? 1.0 : std::sqrt(2.0); };
     engine::GridSpec g;
-    g.map = engine::load_map((std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/file002-20x20.map").string());
+    g.map = engine::load_map((std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/zhang2025-20x20.map").string());
     g.start = {0, 19};
     g.goal = {19, 0};
     g.objective = "user";

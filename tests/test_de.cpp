@@ -1,4 +1,4 @@
-// Differential evolution (issue 27): de, jde, jade, shade, lshade, jso. Each strategy's mutant
+// Differential evolution: de, jde, jade, shade, lshade, jso. Each strategy's mutant
 // and the crossover on scripted draws, the repair, the memory updates (weighted Lehmer and
 // arithmetic means, the terminal value, jSO's halving) and jSO's schedules on hand-computed
 // numbers, the archive's rules, L-SHADE's and jSO's populations shrinking from N_init to N_min as

@@ -1,4 +1,4 @@
-// The `line` and `free` decoders (LoopFreeChain fed by the connectors' segments, issue 15) against
+// The `line` and `free` decoders (LoopFreeChain fed by the connectors' segments) against
 // the algorithm they replaced, kept here as the reference: the raw chain of every join stored as
 // cells, then cut_loops over the whole of it. Same cells in the same order, same violations, same
 // objective values to the bit, on random maps (dense ones, narrow ones, start and goal in corners)

@@ -298,7 +298,7 @@ TEST_CASE("docs: every command the docs show prints what they show", "[docs]") {
 
 TEST_CASE("docs: the README's main-job command builds every program it runs and the test command all",
           "[docs][readme]") {
-    // The main job's command builds only its own targets (issue 30: the first result does not wait
+    // The main job's command builds only its own targets (the first result does not wait
     // for the tests); a program it runs that is not among them would be missing on a fresh clone,
     // which the test above cannot see, since it runs the commands against this whole build.
     std::vector<std::string> commands;

@@ -37,7 +37,7 @@ engine::AlgorithmSpec algo(const std::string& name, std::initializer_list<std::p
 }
 
 std::string map_file() {
-    return (std::filesystem::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "file000-10x10.map").string();
+    return (std::filesystem::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "wan2022-10x10.map").string();
 }
 
 }  // namespace
@@ -319,7 +319,7 @@ TEST_CASE("engine: errors name the spec's fields, never a front end's flags", "[
     CHECK_THAT(refused(algo("ga", {{"eta_c", 3}}), engine::Problem(chain)), Contains("eta_c"));
     engine::GridSpec iqga = g;
     iqga.objective = "iqga";
-    // iqga has an exact optimum too (issue 11: the best point of the 3-D Pareto front).
+    // iqga has an exact optimum too (the best point of the 3-D Pareto front).
     CHECK(refused(algo("exact"), engine::Problem(iqga)) == "<nothing thrown>");
     CHECK(engine::Problem(iqga).has_optimum());
     CHECK(engine::run(algo("astar"), engine::Problem(iqga).with_oracle(), evals(1), 1).grid->optimum.has_value());

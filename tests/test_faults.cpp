@@ -1,4 +1,4 @@
-// Faults outside the campaign engine (issue 14), through the real `pride` executable: write
+// Faults outside the campaign engine, through the real `pride` executable: write
 // errors on standard output (a full device, a closed stream) for every subcommand; pictures onto
 // devices, onto /dev/stdout and twice onto one file; IOHprofiler folders from algorithm ids that
 // are not file names; `--version`; `report --plots` on a store the plotting script cannot read;
@@ -45,7 +45,7 @@ CliOutput run_redirected(const std::string& args, const std::string& redirect) {
 }
 
 std::string map_file() {
-    return std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    return std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
 }
 
 /// A small store written by pride bench, with the algorithm ids given.
@@ -248,7 +248,7 @@ TEST_CASE("report, export: a truncated store says so, with the sizes", "[report]
 }
 
 TEST_CASE("faults: an error message that cannot be written still exits with the error's status", "[faults][cli]") {
-    // Issue 25: fmt's print threw from main's error handler when stderr could not be written, and
+    // fmt's print used to throw from main's error handler when stderr could not be written, and
     // the process aborted (SIGABRT, 134). The message is lost; the status is the error's.
     const std::string map = map_file();
     const std::vector<std::pair<std::string, int>> failing{

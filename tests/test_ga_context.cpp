@@ -371,8 +371,8 @@ TEST_CASE("GA hook: a catastrophe through renew() keeps the budget exact and the
 
 TEST_CASE("GA hook: the same hooks run on chains", "[ga][context][hook][chain]") {
     using namespace pride::grid;
-    auto map = std::make_shared<const GridMap>(read_map(bundled_map("file002-20x20.map").string()));
-    const auto scen = read_scenario(bundled_map("file002-20x20.map.scen").string());
+    auto map = std::make_shared<const GridMap>(read_map(bundled_map("zhang2025-20x20.map").string()));
+    const auto scen = read_scenario(bundled_map("zhang2025-20x20.map.scen").string());
     REQUIRE(scen.size() == 1);
     const ChainSpace<CellsObjective> space(GridProblem<CellsObjective>(map, scen[0].start, scen[0].goal));
 

@@ -79,8 +79,8 @@ std::filesystem::path bundled_map(const std::string& name) {
 }
 
 grid::GridProblem<grid::CellsObjective> bundled_grid() {
-    auto map = std::make_shared<const grid::GridMap>(grid::read_map(bundled_map("file002-20x20.map").string()));
-    const auto scen = grid::read_scenario(bundled_map("file002-20x20.map.scen").string());
+    auto map = std::make_shared<const grid::GridMap>(grid::read_map(bundled_map("zhang2025-20x20.map").string()));
+    const auto scen = grid::read_scenario(bundled_map("zhang2025-20x20.map.scen").string());
     REQUIRE(scen.size() == 1);
     return grid::GridProblem<grid::CellsObjective>(map, scen[0].start, scen[0].goal);
 }
@@ -699,7 +699,7 @@ TEST_CASE("GA variants: registry entries, their parameters and ranges", "[ga-var
 
     // On a grid's chains, through the registry.
     engine::GridSpec g;
-    g.map = engine::load_map(bundled_map("file000-10x10.map").string());
+    g.map = engine::load_map(bundled_map("wan2022-10x10.map").string());
     g.start = {0, 0};
     g.goal = {9, 9};
     g.encoding = "chain";

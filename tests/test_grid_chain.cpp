@@ -1,4 +1,4 @@
-// Tests of the `chain` encoding (problems/grid/chain.hpp, shared/spec/grid.md "Encodings") and of
+// Tests of the `chain` encoding (problems/grid/chain.hpp, docs/grid.md "Encodings") and of
 // the GA on chains (algorithms/ga.hpp, ChainGa and its plus-replacement variant):
 //   - ChainSpace's operators on many random maps: every chain they make is a legal simple path
 //     from start to goal; crossover splices one parent's head to the other's tail at a common
@@ -193,7 +193,7 @@ fs::path bundled_maps() {
 
 /// A bundled map (examples/maps/NAME.map) with its scenario's start and goal, for `Objective`.
 template <class Objective>
-GridProblem<Objective> bundled_problem(const std::string& name = "file002-20x20", Objective objective = {}) {
+GridProblem<Objective> bundled_problem(const std::string& name = "zhang2025-20x20", Objective objective = {}) {
     auto map = std::make_shared<const GridMap>(read_map((bundled_maps() / (name + ".map")).string()));
     const auto scen = read_scenario((bundled_maps() / (name + ".map.scen")).string());
     REQUIRE(scen.size() == 1);
@@ -447,7 +447,7 @@ TEST_CASE("chain GA: on the bundled maps the best of five seeds reaches the orac
         const char* map;
         double each;  // bound on every seed's gap
     };
-    for (const Case c : {Case{"file002-20x20", 0.02}, Case{"file002-40x40", 0.05}, Case{"file003-50x50", 0.05}}) {
+    for (const Case c : {Case{"zhang2025-20x20", 0.02}, Case{"zhang2025-40x40", 0.05}, Case{"cai2021-50x50", 0.05}}) {
         const auto problem = bundled_problem<LengthObjective>(c.map);
         Oracle oracle;
         const double optimum = oracle.solve(problem.map(), problem.start(), problem.goal(), LengthObjective{});
@@ -489,7 +489,7 @@ TEST_CASE("chain GA: with pride path's defaults (N = 20, T = 50) on the bundled 
         const char* map;
         double each;
     };
-    for (const Case c : {Case{"file002-20x20", 0.02}, Case{"file002-40x40", 0.08}, Case{"file003-50x50", 0.15}}) {
+    for (const Case c : {Case{"zhang2025-20x20", 0.02}, Case{"zhang2025-40x40", 0.08}, Case{"cai2021-50x50", 0.15}}) {
         const auto problem = bundled_problem<LengthObjective>(c.map);
         Oracle oracle;
         const double optimum = oracle.solve(problem.map(), problem.start(), problem.goal(), LengthObjective{});

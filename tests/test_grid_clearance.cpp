@@ -541,7 +541,7 @@ TEST_CASE("clearance: on the bundled maps the fronts' ends are A*'s length and D
 // pride pareto
 
 TEST_CASE("clearance: pride pareto prints clearance when it is among the objectives", "[clearance][pareto][cli]") {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-40x40.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-40x40.map";
     const GridMap m = grid::read_map(map);
     const auto front = grid::pareto_front(m, {1, 38}, {38, 1}, Criteria{true, false, false, true});
     REQUIRE(front.size() > 1);

@@ -1,8 +1,8 @@
 // Tests of the grid map and scenario readers (problems/grid/map_io.hpp) and of the map conventions
-// of shared/spec/grid.md they rely on: both formats, lenient line ends, every error with its
+// of docs/grid.md they rely on: both formats, lenient line ends, every error with its
 // FILE:LINE:COL, the Moving AI files of $PRIDE_DATA/movingai (sizes, free endpoints and, on a sample,
 // the recorded optimal lengths), the bundled maps of examples/maps, random-input robustness, the
-// papers' cell numbering (file 002 eq. 2) and obstacle inflation (file 003 section 3.1).
+// papers' cell numbering (Zhang et al. 2025, eq. 2) and obstacle inflation (Cai and Du 2021, section 3.1).
 #include <unistd.h>
 #include <catch2/catch.hpp>
 
@@ -539,14 +539,14 @@ TEST_CASE("grid io: the bundled maps of examples/maps", "[grid][io][bundled]") {
         const char* name;
         int size;
         Cell start, goal;
-        long paper_start, paper_goal;  // file 002 eq. 2 numbers
+        long paper_start, paper_goal;  // eq. 2 of Zhang et al. (2025) numbers
     };
     const Expected expected[] = {
-        {"file000-10x10.map", 10, {0, 0}, {9, 9}, 90, 9},  // top-left to bottom-right
-        {"file000-13x13.map", 13, {0, 0}, {12, 12}, 156, 12},
-        {"file002-20x20.map", 20, {0, 19}, {19, 0}, 0, 399},    // paper (1,1) to (20,20)
-        {"file002-40x40.map", 40, {1, 38}, {38, 1}, 41, 1558},  // paper (2,2) to (39,39)
-        {"file003-50x50.map", 50, {0, 49}, {49, 0}, 0, 2499},
+        {"wan2022-10x10.map", 10, {0, 0}, {9, 9}, 90, 9},  // top-left to bottom-right
+        {"wan2022-13x13.map", 13, {0, 0}, {12, 12}, 156, 12},
+        {"zhang2025-20x20.map", 20, {0, 19}, {19, 0}, 0, 399},    // paper (1,1) to (20,20)
+        {"zhang2025-40x40.map", 40, {1, 38}, {38, 1}, 41, 1558},  // paper (2,2) to (39,39)
+        {"cai2021-50x50.map", 50, {0, 49}, {49, 0}, 0, 2499},
     };
     for (const auto& x : expected) {
         INFO(x.name);
@@ -567,8 +567,8 @@ TEST_CASE("grid io: the bundled maps of examples/maps", "[grid][io][bundled]") {
         CHECK(m.paper_number(e.goal) == x.paper_goal);
         CHECK(std::abs(octile_distance(m, e.start, e.goal) - e.optimal) <= 1e-6);
     }
-    // File 003 section 4.1: an obstacle coverage of 20 %.
-    const GridMap m50 = read_map((dir / "file003-50x50.map").string());
+    // Section 4.1 of Cai and Du (2021): an obstacle coverage of 20 %.
+    const GridMap m50 = read_map((dir / "cai2021-50x50.map").string());
     std::size_t blocked = 0;
     for (std::size_t i = 0; i < m50.size(); ++i) blocked += m50.free_index(i) ? 0 : 1;
     CHECK(blocked == 500);
@@ -650,7 +650,7 @@ TEST_CASE("grid io: random input never crashes or hangs", "[grid][io][fuzz]") {
 // ---------------------------------------------------------------------------------------------
 // Conventions of map.hpp used with the files: paper numbering and inflation
 
-TEST_CASE("grid io: paper numbering (file 002 eq. 2)", "[grid][io][paper]") {
+TEST_CASE("grid io: paper numbering (Zhang et al. 2025, eq. 2)", "[grid][io][paper]") {
     // 3 columns, 2 rows. The papers number cells from 0, left to right and bottom to top:
     //   y = 0 (first line):  3 4 5
     //   y = 1 (bottom line): 0 1 2
@@ -674,13 +674,13 @@ TEST_CASE("grid io: paper numbering (file 002 eq. 2)", "[grid][io][paper]") {
         for (int x = 0; x < 7; ++x) CHECK(big.from_paper_number(big.paper_number({x, y})) == Cell{x, y});
     CHECK_THAT(error_of([&] { (void)m.from_paper_number(6); }), Contains("out of range"));
     CHECK_THAT(error_of([&] { (void)m.from_paper_number(-1); }), Contains("out of range"));
-    // File 002's 20 x 20 start (1, 1) and goal (20, 20) are the bottom-left and top-right cells.
+    // Zhang et al.'s (2025) 20 x 20 start (1, 1) and goal (20, 20) are the bottom-left and top-right cells.
     const GridMap m20(20, 20, std::vector<std::uint8_t>(400, 0));
     CHECK(m20.from_paper_number(0) == Cell{0, 19});
     CHECK(m20.from_paper_number(399) == Cell{19, 0});
 }
 
-TEST_CASE("grid io: obstacle inflation by r = 1 (file 003 section 3.1)", "[grid][io][inflate]") {
+TEST_CASE("grid io: obstacle inflation by r = 1 (Cai and Du 2021, section 3.1)", "[grid][io][inflate]") {
     const GridMap m = parse_map(
         "type octile\nheight 5\nwidth 6\nmap\n"
         "@.....\n"

@@ -1,4 +1,4 @@
-// Tests of searching and decoding on grids (shared/spec/grid.md): A* against the optimal lengths
+// Tests of searching and decoding on grids (docs/grid.md): A* against the optimal lengths
 // recorded in the Moving AI scenario files, the exact oracle against brute force, the path
 // metrics, loop cutting and straight lines on hand-made examples, the random walker, the `line`
 // and `free` decoders under both connectors, and the grid problem's input errors.

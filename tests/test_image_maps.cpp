@@ -417,7 +417,7 @@ TEST_CASE("pride path: --start-world and --goal-world on a map_server map, path_
           "[grid][map][ros][cli]") {
     using pride::test::expect_input_error;
     // A map without a frame has no path_world.
-    const std::string movingai = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string movingai = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     const auto plain =
         pride::test::run_pride("path --map '" + movingai + "' --start 0,0 --goal 9,9 --algo astar --json");
     REQUIRE(plain.status == 0);

@@ -1,4 +1,4 @@
-// Tests of file 002's IQGA as GA policies (algorithms/parts/iqga_operators.hpp, IqgaGa in
+// Tests of Zhang et al.'s (2025) IQGA as GA policies (algorithms/parts/iqga_operators.hpp, IqgaGa in
 // algorithms/ga.hpp) and its registry entry iqga (engine/algorithms/ga.cpp):
 //   - eqs. 16-18 (selections per region, B, the SA acceptance P_j) and eq. 20's badness on worked
 //     numbers;
@@ -108,19 +108,19 @@ struct LegalityChecker {
 /// The chain space, counting every call of its objective (tests/counting_space.hpp).
 using CountedSpace = test::CountingSpace<Space>;
 
-Instance file002_40() {
-    auto map = std::make_shared<const grid::GridMap>(grid::read_map((bundled_maps() / "file002-40x40.map").string()));
-    const auto scen = grid::read_scenario((bundled_maps() / "file002-40x40.map.scen").string());
+Instance zhang2025_40() {
+    auto map = std::make_shared<const grid::GridMap>(grid::read_map((bundled_maps() / "zhang2025-40x40.map").string()));
+    const auto scen = grid::read_scenario((bundled_maps() / "zhang2025-40x40.map.scen").string());
     return {map, scen.at(0).start, scen.at(0).goal, false};
 }
 
-Instance file002_20() {
-    auto map = std::make_shared<const grid::GridMap>(grid::read_map((bundled_maps() / "file002-20x20.map").string()));
-    const auto scen = grid::read_scenario((bundled_maps() / "file002-20x20.map.scen").string());
+Instance zhang2025_20() {
+    auto map = std::make_shared<const grid::GridMap>(grid::read_map((bundled_maps() / "zhang2025-20x20.map").string()));
+    const auto scen = grid::read_scenario((bundled_maps() / "zhang2025-20x20.map.scen").string());
     return {map, scen.at(0).start, scen.at(0).goal, false};
 }
 
-/// The spec's pool, written out directly from the documented draws (iqga_operators.hpp).
+/// The pool of docs/algorithms.md, written out directly from the documented draws (iqga_operators.hpp).
 std::vector<std::size_t> expected_pool(std::span<const double> f, std::span<const std::size_t> regions, Rng& rng) {
     const std::size_t n = f.size();
     std::vector<std::vector<std::size_t>> in(3);
@@ -318,7 +318,7 @@ TEST_CASE("iqga: every pair holds an elite member, EliteCrossover refuses a pair
     }
 
     // EliteCrossover: two non-elite parents are not crossed (and draw nothing).
-    const Instance in = file002_20();
+    const Instance in = zhang2025_20();
     Space space = space_of(in);
     Rng rng(9);
     grid::Path p, q;
@@ -377,7 +377,7 @@ struct PairChecker {
 TEST_CASE("iqga: the pairing rule holds in every pair of a run", "[iqga]") {
     Ga<RegionTournamentSelection, PairChecker, IqgaMutation> ga;
     ga.population = 40;
-    const Instance in = file002_40();
+    const Instance in = zhang2025_40();
     const auto r = ga.run(space_of(in), max_iterations(30), 4);
     CHECK(r.iterations == 30);
     CHECK(*ga.crossover.pairs == 30 * 20);
@@ -412,7 +412,7 @@ TEST_CASE("iqga: the Q-table learns once per generation, from the generation's b
     ga.mutation.weights = {1.0, 0.0, 0.0};  // action a_i is operator i
     ga.mutation.learning.epsilon = 0.0;
     ga.mutation.probability = 1.0;
-    const Instance in = file002_20();
+    const Instance in = zhang2025_20();
     const auto r = ga.run(space_of(in), max_iterations(60), 3);
     REQUIRE(calls->size() == 60 * 20);
     OperatorQLearning replay(ga.mutation.learning, ga.mutation.action_table());
@@ -446,7 +446,7 @@ TEST_CASE("iqga: the Q-table learns once per generation, from the generation's b
 TEST_CASE("iqga: reproducible bit for bit", "[iqga]") {
     IqgaGa ga;
     ga.population = 40;
-    const Instance in = file002_40();
+    const Instance in = zhang2025_40();
     const auto a = ga.run(space_of(in), max_iterations(40), 7);
     const auto b = ga.run(space_of(in), max_iterations(40), 7);
     REQUIRE(same_bits(a.best_f, b.best_f));
@@ -483,7 +483,7 @@ TEST_CASE("iqga: every member of every population is legal, on every bundled map
 }
 
 TEST_CASE("iqga: budgets are exact", "[iqga]") {
-    const Instance in = file002_20();
+    const Instance in = zhang2025_20();
     for (const std::int64_t budget : {1, 7, 39, 40, 41, 79, 250, 601}) {
         INFO("budget " << budget);
         IqgaGa ga;
@@ -534,8 +534,8 @@ TEST_CASE("iqga: registry entry, defaults, N = 40 on grids, SITP by default, cha
     }
 
     engine::GridSpec g;
-    g.map = engine::load_map((bundled_maps() / "file002-20x20.map").string());
-    const auto scen = grid::read_scenario((bundled_maps() / "file002-20x20.map.scen").string());
+    g.map = engine::load_map((bundled_maps() / "zhang2025-20x20.map").string());
+    const auto scen = grid::read_scenario((bundled_maps() / "zhang2025-20x20.map.scen").string());
     g.start = scen.at(0).start;
     g.goal = scen.at(0).goal;
     g.encoding = "chain";
@@ -617,7 +617,7 @@ TEST_CASE("iqga: the Q-learning states follow the best path's length", "[iqga]")
     ga.mutation.by_length = true;
     CHECK(IqgaMutation{}.by_length);
     CHECK(IqgaMutation{}.probability == 0.1);
-    const Instance in = file002_40();
+    const Instance in = zhang2025_40();
     // Real crossovers move the best path: the IQGA operators do the variation, the recording
     // mutation only watches (so the lengths come from crossover and selection).
     BestLengthRecorder lengths;
@@ -683,7 +683,7 @@ TEST_CASE("iqga: the ablation flags each remove one change, and only that one", 
     }
 
     // elite_only = false: a pair of two non-elite members is crossed too.
-    const Instance in = file002_20();
+    const Instance in = zhang2025_20();
     Space space = space_of(in);
     Rng rng(9);
     std::vector<double> g{-3.0, -2.0, -1.0, -0.5};  // elite: members 0 and 1
@@ -726,8 +726,8 @@ TEST_CASE("iqga: the ablation flags through the engine: defaults, legal results,
         CHECK(*p->default_value == 1.0);
     }
     engine::GridSpec g;
-    g.map = engine::load_map((bundled_maps() / "file002-20x20.map").string());
-    const auto scen = grid::read_scenario((bundled_maps() / "file002-20x20.map.scen").string());
+    g.map = engine::load_map((bundled_maps() / "zhang2025-20x20.map").string());
+    const auto scen = grid::read_scenario((bundled_maps() / "zhang2025-20x20.map.scen").string());
     g.start = scen.at(0).start;
     g.goal = scen.at(0).goal;
     g.encoding = "chain";

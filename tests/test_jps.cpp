@@ -106,7 +106,7 @@ TEST_CASE("jps: start equal to goal, hand-drawn forced neighbours, and bad input
 
 TEST_CASE("jps: pride path --algo jps finds the length of astar with fewer expansions, refuses corner cutting") {
     const std::string where = std::string("path --map '") + PRIDE_SOURCE_DIR +
-                              "/examples/maps/file002-40x40.map' --start 1,38 --goal 38,1 --objective length --json";
+                              "/examples/maps/zhang2025-40x40.map' --start 1,38 --goal 38,1 --objective length --json";
     const auto jps = test::run_pride(where + " --algo jps");
     const auto astar = test::run_pride(where + " --algo astar");
     REQUIRE(jps.status == 0);

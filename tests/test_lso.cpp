@@ -1,4 +1,4 @@
-// LSO and ILSO (file 000): each equation on hand-computed values with fixed draws, the inertia
+// LSO and ILSO (Wan and Gao 2022): each equation on hand-computed values with fixed draws, the inertia
 // schedule's end points, one whole iteration replayed draw by draw, bounds, parameters, and the
 // behaviour on continuous problems that the shift experiment relies on.
 #include <catch2/catch.hpp>
@@ -92,7 +92,7 @@ TEST_CASE("eqs. 4 and 11: a lioness with her partner, without and with the inert
     CHECK(out[1] == Approx(0.7).epsilon(1e-15));
 }
 
-TEST_CASE("the moves with one gamma per coordinate (an option, not file 000's reading)", "[lso][equations]") {
+TEST_CASE("the moves with one gamma per coordinate (an option, not Wan and Gao's (2022) reading)", "[lso][equations]") {
     const Vec g{1.0, 2.0}, p{4.0, 6.0}, gamma{0.5, -0.2};  // ||p - g|| = 5
     Vec out(2);
     pride::lion::king(g, p, gamma, out);  // (1 * 3.5, 2 * 0)

@@ -29,7 +29,7 @@ struct Space {
 engine::GridSpec grid(const std::string& encoding, const std::string& connector) {
     engine::GridSpec g;
     // A path, not string concatenation: GCC 12 warns (-Warray-bounds, falsely) on the latter here.
-    g.map = engine::load_map((std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/file000-10x10.map").string(), 0);
+    g.map = engine::load_map((std::filesystem::path(PRIDE_SOURCE_DIR) / "examples/maps/wan2022-10x10.map").string(), 0);
     g.start = {0, 0};
     g.goal = {9, 9};
     g.encoding = encoding;

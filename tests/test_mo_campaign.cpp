@@ -1,4 +1,4 @@
-// Multi-objective campaigns (issue 28): problems of several objectives in campaign files, each
+// Multi-objective campaigns: problems of several objectives in campaign files, each
 // run stored with its whole front and, as its value, its hypervolume gap; the stored record is
 // the engine's run; the report says what the values are; bad entries are refused at their line.
 #include <catch2/catch.hpp>
@@ -29,7 +29,7 @@ std::string campaign_text(const std::string& extra_problem = "", const std::stri
         "[[problem]]\nid = \"dtlz2\"\ntype = \"dtlz2\"\nobjectives = 3\n"
         "[[problem]]\nid = \"grid\"\ntype = \"grid\"\nmap = \"" +
         kMaps +
-        "file002-20x20.map\"\nstart = [0, 19]\ngoal = [19, 0]\n"
+        "zhang2025-20x20.map\"\nstart = [0, 19]\ngoal = [19, 0]\n"
         "objectives = [\"length\", \"turns\", \"clearance\"]\nencoding = \"free\"\n" +
         extra_problem;
     std::size_t from = 0;
@@ -132,10 +132,10 @@ TEST_CASE("multi-objective campaign entries are refused at their line when they 
     refused(campaign_text("[[problem]]\nid = \"z\"\ntype = \"zdt1\"\ninstance = 2\n"), {"unknown key 'instance'"});
     refused(campaign_text("[[problem]]\nid = \"z\"\ntype = \"zdt1\"\nobjectives = 3\n"), {"zdt1", "2 objectives"});
     refused(campaign_text("[[problem]]\nid = \"g2\"\ntype = \"grid\"\nmap = \"" + kMaps +
-                          "file002-20x20.map\"\nstart = [0, 19]\ngoal = [19, 0]\nobjectives = \"length,speed\"\n"),
+                          "zhang2025-20x20.map\"\nstart = [0, 19]\ngoal = [19, 0]\nobjectives = \"length,speed\"\n"),
             {"objectives", "speed"});
     refused(campaign_text("[[problem]]\nid = \"g2\"\ntype = \"grid\"\nmap = \"" + kMaps +
-                          "file002-20x20.map\"\nstart = [0, 19]\ngoal = [19, 0]\nobjectives = [\"length\", "
+                          "zhang2025-20x20.map\"\nstart = [0, 19]\ngoal = [19, 0]\nobjectives = [\"length\", "
                           "\"turns\"]\nobjective = \"length\"\n"),
             {"objective"});
 }

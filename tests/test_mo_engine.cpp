@@ -370,7 +370,7 @@ TEST_CASE("pride front prints a front, its quality, and as JSON the same numbers
 TEST_CASE("pride front on a grid reports the exact front's share and draws the paths") {
     const std::string maps = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/";
     const auto r = test::run_pride("front --algo nsga2 --map " + maps +
-                                   "file002-20x20.map --start 0,0 --goal 19,19 --objectives length,turns --json");
+                                   "zhang2025-20x20.map --start 0,0 --goal 19,19 --objectives length,turns --json");
     REQUIRE(r.status == 0);
     const auto doc = test::parse_json(r.out);
     CHECK(doc.at("problem").text == "grid");
@@ -389,7 +389,7 @@ TEST_CASE("pride front and pride pareto draw the set in objective space") {
     const std::string svg = test::slurp(dir.file("f.svg"));
     CHECK(svg.rfind("<?xml", 0) == 0);
     CHECK(svg.size() > 10000);  // 1000 reference points and the set, as markers
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
     const auto p = test::run_pride("pareto --map " + map +
                                    " --start 0,19 --goal 19,0 --objectives turns,length --plot " + dir.file("p.svg"));
     REQUIRE(p.status == 0);
@@ -401,7 +401,7 @@ TEST_CASE("pride front and pride pareto draw the set in objective space") {
 }
 
 TEST_CASE("pride front refuses bad input with one line") {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
     test::expect_input_error("front --algo nsga2 --problem sphere", {"sphere", "pride run"});
     test::expect_input_error("front --algo pso --problem zdt1", {"pso", "one objective"});
     test::expect_input_error("front --algo nsga2", {"--problem", "--map"});
@@ -509,7 +509,7 @@ TEST_CASE("on chains NSGA-III runs too, and the chain settings are checked") {
 }
 
 TEST_CASE("pride front plans on chains from the command line") {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
     const auto r = test::run_pride("front --algo nsga2 --map " + map +
                                    " --start 0,19 --goal 19,0 --encoding chain --init sitp --evals 4000 --json");
     REQUIRE(r.status == 0);

@@ -1,4 +1,4 @@
-// Tests of the multi-objective box problems (problems/multiobjective/, issue 28): ZDT1-4, 6 and
+// Tests of the multi-objective box problems (problems/multiobjective/): ZDT1-4, 6 and
 // DTLZ1-7 at hand-computed points, points of their Pareto-optimal sets onto the analytic fronts,
 // the fronts and distances of fronts.hpp, the concept, WeightedSum over a ZDT problem, jMetal's
 // published reference fronts ($PRIDE_DATA/jmetal-fronts/, docs/multiobjective.md), and every error path.

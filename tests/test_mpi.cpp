@@ -56,7 +56,7 @@ TEST_CASE("bench: mpirun -np 2 stores the same values as a threaded run", "[benc
         f << "name = \"mpi\"\nseeds = 3\n[budget]\niterations = 20\n"
              "[[problem]]\nid = \"rastrigin\"\ntype = \"shifted-rastrigin\"\ndim = 6\n"
              "[[problem]]\nid = \"map\"\ntype = \"grid\"\nmap = \""
-          << (maps / "file000-10x10.map").string()
+          << (maps / "wan2022-10x10.map").string()
           << "\"\nstart = [0, 0]\ngoal = [9, 9]\n"
              "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n"
              "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";

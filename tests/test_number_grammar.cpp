@@ -59,7 +59,7 @@ TEST_CASE("numbers: the command line takes the same spellings everywhere", "[cli
 
 TEST_CASE("cli: an option the run would ignore is refused: --waypoints off the free encoding, a one-objective front",
           "[cli]") {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     const std::string path = "path --map " + map + " --start 0,0 --goal 9,9 --evals 40 ";
     const auto native = run_pride(path + "--algo pso --waypoints 5");
     CHECK(native.status == 2);

@@ -101,7 +101,7 @@ TEST_CASE("ompl engine: refused without an evaluation budget and on objectives o
     CHECK_THROWS_WITH(engine::check(engine::AlgorithmSpec{"ompl:RRTstar", {}}, problem, none),
                       "evaluations: ompl:RRTstar needs an evaluation budget (its state and motion validity checks: "
                       "--evals N)");
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     test::expect_input_error("path --map '" + map + "' --start 0,0 --goal 9,9 --algo ompl:BITstar --objective length",
                              {"--evals", "needs an evaluation budget"});
     test::expect_input_error("path --map '" + map + "' --start 0,0 --goal 9,9 --algo ompl:BITstar --evals 100",
@@ -118,7 +118,7 @@ TEST_CASE("ompl engine: merges and reports compare OMPL runs by definition, othe
           "[ompl][planners][merge]") {
     if (!ompl_built()) return;
     const test::TempDir dir;
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     const std::string toml =
         dir.write("c.toml",
                   "name = \"o\"\nseeds = 1\n[budget]\nevaluations = 2000\n[[problem]]\nid = \"g\"\ntype = \"grid\"\n"

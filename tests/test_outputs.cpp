@@ -1,4 +1,4 @@
-// Outputs complete or absent (issue 25, docs/reliability.md "Outputs: complete or absent"):
+// Outputs complete or absent (docs/reliability.md "Outputs: complete or absent"):
 // framework/output_files.hpp on its own (commit, discard, a rename that fails, a write that fails),
 // then every command that writes files, through the real `pride`: a full disk simulated with
 // RLIMIT_FSIZE (writes past N bytes fail with EFBIG, SIGXFSZ ignored) and standard output on
@@ -97,7 +97,7 @@ CliOutput run_limited(const std::string& args, rlim_t max_bytes) {
 }
 
 std::string map_file() {
-    return std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    return std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
 }
 
 /// A store of two problems (a sphere and a grid) and two algorithms, written by pride bench.

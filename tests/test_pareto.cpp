@@ -345,9 +345,9 @@ TEST_CASE("pareto: on the bundled maps every front is non-empty, legal and non-d
         const char* file;
         Cell s, g;
     };
-    for (const Case& k : {Case{"file000-10x10.map", {0, 0}, {9, 9}}, Case{"file000-13x13.map", {0, 0}, {12, 12}},
-                          Case{"file002-20x20.map", {0, 19}, {19, 0}}, Case{"file002-40x40.map", {1, 38}, {38, 1}},
-                          Case{"file003-50x50.map", {0, 49}, {49, 0}}}) {
+    for (const Case& k : {Case{"wan2022-10x10.map", {0, 0}, {9, 9}}, Case{"wan2022-13x13.map", {0, 0}, {12, 12}},
+                          Case{"zhang2025-20x20.map", {0, 19}, {19, 0}}, Case{"zhang2025-40x40.map", {1, 38}, {38, 1}},
+                          Case{"cai2021-50x50.map", {0, 49}, {49, 0}}}) {
         INFO(k.file);
         const GridMap map = grid::read_map(std::string(PRIDE_SOURCE_DIR) + "/examples/maps/" + k.file);
         grid::AStar astar;
@@ -368,7 +368,7 @@ TEST_CASE("pareto: on the bundled maps every front is non-empty, legal and non-d
 
 TEST_CASE("pareto: pride path --algo exact --objective iqga and --oracle give the front's iqga optimum",
           "[pareto][cli]") {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
     const GridMap m = grid::read_map(map);
     const auto expected = grid::iqga_optimum(m, {0, 19}, {19, 0});
     REQUIRE(expected.has_value());
@@ -396,7 +396,7 @@ TEST_CASE("pareto: pride path --algo exact --objective iqga and --oracle give th
 // pride pareto
 
 TEST_CASE("pareto: pride pareto prints the front as text and JSON and draws it", "[pareto][cli]") {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
     const GridMap m = grid::read_map(map);
     const auto front = grid::pareto_front(m, {0, 19}, {19, 0}, kLTA);
     const std::string args = "pareto --map '" + map + "' --start 0,19 --goal 19,0 --objectives length,angle,turns";
@@ -482,7 +482,7 @@ TEST_CASE("pareto: pride pareto's --inflate and --corner-cutting are those of pr
 }
 
 TEST_CASE("pareto: pride pareto's bad input: one line naming the flag, exit 2", "[pareto][cli]") {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
     const std::string base = "pareto --map '" + map + "' ";
     test::TempDir dir;
     const std::string walled = dir.write("walled.txt", "0 1 0\n0 1 0\n0 1 0\n");

@@ -1,4 +1,4 @@
-// framework/pareto/ (issue 28): dominance, non-dominated sorting and crowding, the hypervolume
+// framework/pareto/: dominance, non-dominated sorting and crowding, the hypervolume
 // (2-D and 3-D sweeps, WFG) and its contributions, IGD, IGD+, GD, GD+ and the additive epsilon
 // indicator. Hand-computed sets (the arithmetic in comments), an independent oracle
 // (inclusion-exclusion over all subsets), the algorithms against each other, and properties.

@@ -1,4 +1,4 @@
-// framework/pareto/ against pagmo2's own algorithms (issue 28's oracles), on random sets at M = 2, 3
+// framework/pareto/ against pagmo2's own algorithms (as oracles), on random sets at M = 2, 3
 // and 5: the hypervolume against pagmo's hv2d, hv3d and hvwfg, the non-dominated sort against its
 // fast_non_dominated_sorting, the crowding distance against its crowding_distance. Compiled only
 // when the build found pagmo2 (scripts/deps.sh --bench installs it); pride itself does not depend

@@ -1,4 +1,4 @@
-// Where each algorithm plans on a grid (shared/spec/architecture.md: every algorithm declares its
+// Where each algorithm plans on a grid (docs/architecture.md: every algorithm declares its
 // native space; front ends use it when the user names none, and refuse a space the algorithm
 // cannot use with the ones it can): the encoding a run names, else the problem's, else the
 // algorithm's native one; one grid problem then holds planners on every space side by side, in one
@@ -21,9 +21,9 @@ namespace {
 
 using namespace pride;
 
-const std::string kMap = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+const std::string kMap = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
 
-engine::GridSpec file002_20(const std::string& encoding = "") {
+engine::GridSpec zhang2025_20(const std::string& encoding = "") {
     engine::GridSpec g;
     g.map = engine::load_map(kMap);
     g.start = {0, 19};
@@ -41,7 +41,7 @@ engine::RunResult run(const std::string& algo, const engine::Problem& p, const s
     return engine::run(a, p, b, 1);
 }
 
-/// A campaign file on file 002's 20 x 20 map with `objective`, A* first among its algorithms, then
+/// A campaign file on Zhang et al.'s (2025) 20 x 20 map with `objective`, A* first among its algorithms, then
 /// `algorithms` (TOML [[algorithm]] tables), under `budget` (the [budget] table's lines).
 std::string campaign_toml(const std::string& name, const std::string& budget, const std::string& objective,
                           const std::string& algorithms) {
@@ -80,7 +80,7 @@ TEST_CASE("planning spaces: every algorithm declares its native encoding, its pa
 }
 
 TEST_CASE("planning spaces: the run's encoding, else the problem's, else the native one", "[grid][spaces]") {
-    const engine::Problem unnamed(file002_20());
+    const engine::Problem unnamed(zhang2025_20());
     CHECK(run("pso", unnamed).grid->encoding == "line");
     CHECK(run("ga", unnamed).grid->encoding == "line");
     CHECK(run("iqga", unnamed).grid->encoding == "chain");
@@ -89,11 +89,11 @@ TEST_CASE("planning spaces: the run's encoding, else the problem's, else the nat
     // The run names its own: it wins over the problem's and the native one.
     CHECK(run("ga", unnamed, {"encoding=chain"}).grid->encoding == "chain");
     CHECK(run("hswoa", unnamed, {"encoding=line"}).grid->encoding == "line");
-    const engine::Problem named(file002_20("free"));
+    const engine::Problem named(zhang2025_20("free"));
     CHECK(run("pso", named).grid->encoding == "free");
     CHECK(run("ga", named, {"encoding=chain"}).grid->encoding == "chain");
     // The same plan gives the same run whether the problem or the run names it.
-    const auto by_problem = run("ga", engine::Problem(file002_20("chain")));
+    const auto by_problem = run("ga", engine::Problem(zhang2025_20("chain")));
     const auto by_run = run("ga", unnamed, {"encoding=chain"});
     CHECK(by_problem.history == by_run.history);
     CHECK(by_problem.grid->path == by_run.grid->path);
@@ -103,12 +103,13 @@ TEST_CASE("planning spaces: the run's encoding, else the problem's, else the nat
 }
 
 TEST_CASE("planning spaces: a space the algorithm cannot use is refused with the ones it can", "[grid][spaces]") {
-    const engine::Problem unnamed(file002_20());
+    const engine::Problem unnamed(zhang2025_20());
     const std::string iqga_line = test::input_error_message([&] { run("iqga", unnamed, {"encoding=line"}); });
     CHECK(iqga_line ==
           "encoding line: iqga runs on chain, not on line: name no encoding (iqga's own is chain) or "
           "choose another algorithm");
-    const std::string pso_chain = test::input_error_message([&] { run("pso", engine::Problem(file002_20("chain"))); });
+    const std::string pso_chain =
+        test::input_error_message([&] { run("pso", engine::Problem(zhang2025_20("chain"))); });
     CHECK(pso_chain ==
           "encoding chain: pso runs on line or free, not on chain: name no encoding (pso's own is line) "
           "or choose another algorithm");

@@ -160,7 +160,7 @@ TEST_CASE("polyline planners: without path_gaps no gap is computed", "[polyline]
 }
 
 TEST_CASE("polyline planners: pride path prints the polyline, its metrics and gaps", "[polyline][planners][cli]") {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     const auto json = test::run_pride("path --map '" + map +
                                       "' --start 0,0 --goal 9,9 --algo theta-star --objective length --gaps --json");
     INFO(json.err);
@@ -207,7 +207,7 @@ TEST_CASE("polyline planners: pride path prints the polyline, its metrics and ga
 TEST_CASE("polyline planners: a campaign stores every path's metrics and a polyline planner's polyline",
           "[polyline][planners][bench]") {
     const test::TempDir dir;
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     const std::string toml =
         dir.write("c.toml",
                   "name = \"paths\"\nseeds = 2\n[budget]\nevaluations = 200\n[[problem]]\nid = \"g\"\ntype = "
@@ -319,7 +319,7 @@ TEST_CASE("polyline planners: a polyline through an obstacle is never reported a
 TEST_CASE("polyline planners: whole-map work beyond a campaign's budget, and stores of schema 4, are reported",
           "[polyline][planners][bench]") {
     const test::TempDir dir;
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
     const std::string toml =
         dir.write("w.toml",
                   "name = \"w\"\nseeds = 1\n[budget]\nevaluations = 5\n[[problem]]\nid = \"g\"\ntype = \"grid\"\n"

@@ -1,4 +1,4 @@
-// Readers of outside data under streams and sizes no real file has (issue 14): every reader is
+// Readers of outside data under streams and sizes no real file has: every reader is
 // capped, so an endless stream (/dev/zero, `yes`) is one line and exit 2 after a bounded read,
 // never unbounded memory; a one-row CSV table of 100,000 columns is analysed in linear time; a CSV
 // table that is not UTF-8 is refused, so `pride roughset --json` never prints invalid UTF-8.

@@ -27,7 +27,7 @@ std::string quote(const std::string& s) {
 /// A campaign of two BBOB problems (precisions, ERT and ECDF) and one grid map (paths, Pareto
 /// front), two algorithms, three seeds; its store in `dir`.
 std::string small_campaign(const fs::path& dir) {
-    const fs::path map = fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "file002-20x20.map";
+    const fs::path map = fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "zhang2025-20x20.map";
     const std::string config = (dir / "c.toml").string();
     std::ofstream(config) << "name = \"html-test\"\nseeds = 3\n[budget]\nevaluations = 600\n"
                              "[[suite]]\nname = \"bbob\"\nfunctions = [1]\ninstances = [1, 2]\ndimensions = [2]\n"
@@ -268,7 +268,7 @@ TEST_CASE("report --html: a map that is gone, or a store from before maps were s
 TEST_CASE("report --html: whole-map planners as lines, x in iterations when runs record no evaluations",
           "[report][html]") {
     const TempDir dir("pride-html-grid");
-    const fs::path map = fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "file000-10x10.map";
+    const fs::path map = fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "wan2022-10x10.map";
     const std::string config = dir.write("g.toml",
                                          "name = \"g\"\nseeds = 3\n[budget]\niterations = 8\n"
                                          "[[problem]]\nid = \"m\"\ntype = \"grid\"\nmap = \"" +

@@ -1,4 +1,4 @@
-// `pride report STORE --html DIR` on a multi-objective campaign (issue 28): per problem the
+// `pride report STORE --html DIR` on a multi-objective campaign: per problem the
 // attainment surfaces of two objectives, each algorithm's median front against the reference
 // front and, on grids, that front's paths on the map; the surfaces drawn are attainment.hpp's of
 // the stored fronts; a damaged front is a note on the page. Also --plots' matplotlib figures of them.
@@ -37,7 +37,7 @@ std::string quote(const std::string& s) {
 
 /// Two objectives on a box and on a grid, three on a box; two algorithms, three seeds, tiny budgets.
 std::string campaign_text() {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
     return "name = \"mo-html\"\nseeds = 3\n[budget]\nevaluations = 600\n"
            "[[problem]]\nid = \"zdt1\"\ntype = \"zdt1\"\ndim = 6\n"
            "[[problem]]\nid = \"dtlz2\"\ntype = \"dtlz2\"\nobjectives = 3\ndim = 6\n"

@@ -28,7 +28,7 @@ TEST_CASE("report: --plots writes convergence, final-value and path figures", "[
         f << "name = \"plots\"\nseeds = 3\n[budget]\niterations = 10\n"
              "[[problem]]\nid = \"sphere\"\ntype = \"sphere\"\ndim = 4\n"
              "[[problem]]\nid = \"map\"\ntype = \"grid\"\nmap = \""
-          << (maps / "file000-10x10.map").string()
+          << (maps / "wan2022-10x10.map").string()
           << "\"\nstart = [0, 0]\ngoal = [9, 9]\n"
              "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n";
     }

@@ -1,4 +1,4 @@
-// Reports in precision (issue 24): where a continuous problem's optimum f_opt is known, pride report
+// Reports in precision: where a continuous problem's optimum f_opt is known, pride report
 // gives f - f_opt (COCO's precision), its mean as the gap and the share within 1e-8 as optimal; --raw
 // gives the values f; `[budget] precision` sets the target f_opt + precision per problem. Every
 // figure is checked against the store's own values, computed here.
@@ -166,7 +166,7 @@ TEST_CASE("report: a grid campaign with A* plots against evaluations, A* as a li
     std::ofstream(dir / "g.toml") << "name = \"g\"\nseeds = 2\n[budget]\nevaluations = 200\n"
                                      "[[problem]]\nid = \"g\"\ntype = \"grid\"\nmap = \""
                                   << PRIDE_SOURCE_DIR
-                                  << "/examples/maps/file000-10x10.map\"\n"
+                                  << "/examples/maps/wan2022-10x10.map\"\n"
                                      "start = [0, 0]\ngoal = [9, 9]\n"
                                      "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n"
                                      "[[algorithm]]\nid = \"astar\"\ntype = \"astar\"\n";
@@ -234,7 +234,7 @@ TEST_CASE("campaign: evaluations_per_dim budgets each problem by its dimension",
                Catch::Contains("bad.toml:4: 'evaluations_per_dim' must be in [1, 1000000000000000], got 0"));
     CHECK_THAT(refused("name = \"d\"\nseeds = 1\n[budget]\nevaluations_per_dim = 10\n"
                        "[[problem]]\nid = \"g\"\ntype = \"grid\"\nmap = \"" PRIDE_SOURCE_DIR
-                       "/examples/maps/file000-10x10.map\"\nstart = [0, 0]\ngoal = [9, 9]\n"
+                       "/examples/maps/wan2022-10x10.map\"\nstart = [0, 0]\ngoal = [9, 9]\n"
                        "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n"),
                Catch::Contains("problem 'g': evaluations_per_dim: a grid problem has no dimension"));
 }

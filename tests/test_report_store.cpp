@@ -40,7 +40,7 @@ std::string quote(const std::string& s) {
 /// A tiny campaign with a target, a grid problem (an optimum) and continuous ones (values with
 /// all 17 digits), run by pride bench; its store.
 std::string bench_store(const TempDir& dir) {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file000-10x10.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     const std::string config = dir.write("tiny.toml",
                                          "name = \"tiny\"\nseeds = 3\n[budget]\niterations = 8\ntarget = 14\n"
                                          "[[problem]]\nid = \"sphere\"\ntype = \"sphere\"\ndim = 3\n"

@@ -1,4 +1,4 @@
-// Tests of file 000's grid decision rules (problems/grid/rough_rules.hpp) and the walk they drive
+// Tests of Wan and Gao's (2022) grid decision rules (problems/grid/rough_rules.hpp) and the walk they drive
 // (problems/grid/rule_walk.hpp): the table's sizes at every step, the rules against the labelling
 // policy and the full table, hand-made situations, completeness against A* on random maps, the
 // bundled maps, determinism.
@@ -375,7 +375,7 @@ TEST_CASE("rule walk: the bundled maps, and walk lengths beside the random walk"
             REQUIRE(random.walk(map, s, g, rng, path));
             random_sum += metrics(path).length;
         }
-        // The spec asks for walks that differ: with the goal direction drawn between the two
+        // The project's decision asks for walks that differ: with the goal direction drawn between the two
         // directions that bracket the goal angle they do, on every bundled map.
         CHECK(distinct.size() > 5);
         WARN(entry.path().filename().string()
@@ -383,11 +383,12 @@ TEST_CASE("rule walk: the bundled maps, and walk lengths beside the random walk"
              << " distinct; without jitter " << fixed_sum / kWalks << ", " << distinct_fixed.size()
              << " distinct; random walk " << random_sum / kWalks << "; A* optimum " << optimum);
     }
-    CHECK(maps == 8);  // files 000, 002 and 003, with file 003's three environments
+    CHECK(maps == 8);  // Wan and Gao (2022), Zhang et al. (2025) and Cai and Du (2021), with Cai and Du's (2021) three
+                       // environments
 }
 
 TEST_CASE("rule walk: the same seed gives the same path, different seeds differ", "[grid][roughset]") {
-    const GridMap map = read_map((bundled_maps() / "file000-10x10.map").string());
+    const GridMap map = read_map((bundled_maps() / "wan2022-10x10.map").string());
     RuleWalker a, b;
     Path pa, pb;
     std::vector<Path> distinct;

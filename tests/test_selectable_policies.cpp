@@ -171,7 +171,7 @@ TEST_CASE("selectable policies: one GA instantiation is ga and ga-plus", "[selec
 }
 
 TEST_CASE("selectable policies: one chain GA instantiation is ga and ga-plus on chains", "[selectable][ga][chain]") {
-    const grid::ChainSpace<grid::CellsObjective> space(bundled_grid("file002-20x20"));
+    const grid::ChainSpace<grid::CellsObjective> space(bundled_grid("zhang2025-20x20"));
     SECTION("elitist") {
         OneChainGa one;
         one.population = 12;
@@ -211,7 +211,7 @@ TEST_CASE("selectable policies: one LSO instantiation is lso and ilso", "[select
         auto fixed = make_ilso<Clamp, SelectableInit>();
         require_same_runs(one, fixed, rastrigin, rosenbrock);
         // On a grid, with the problem's starting points (rough-set rule walks).
-        const auto problem = bundled_grid("file000-13x13");
+        const auto problem = bundled_grid("wan2022-13x13");
         const Encoded<grid::GridProblem<grid::CellsObjective>, grid::LineEncoding<>> line(
             problem, grid::LineEncoding<>(problem));
         one.init.suggestions = fixed.init.suggestions = true;

@@ -1,4 +1,4 @@
-// Tests of file 002's SITP initialisation (problems/grid/sitp.hpp) and of the IQGA operators the
+// Tests of Zhang et al.'s (2025) SITP initialisation (problems/grid/sitp.hpp) and of the IQGA operators the
 // chain space offers as optional capabilities (problems/grid/iqga_moves.hpp, framework/chain.hpp):
 //   - eq. 7's weights on hand-computed angles; the three bands of rows and the transition points;
 //   - the regions of eqs. 14-15 on the paper's 10x10 layout (fig. 4) and a non-square rectangle;
@@ -122,7 +122,7 @@ ChainSpace<Objective> sitp_space(const Instance& in) {
 
 std::vector<Instance> bundled_instances() {
     std::vector<Instance> out;
-    for (const char* name : {"file000-10x10", "file000-13x13", "file002-20x20", "file002-40x40", "file003-50x50"}) {
+    for (const char* name : {"wan2022-10x10", "wan2022-13x13", "zhang2025-20x20", "zhang2025-40x40", "cai2021-50x50"}) {
         auto map = std::make_shared<const GridMap>(read_map((bundled_maps() / (std::string(name) + ".map")).string()));
         const auto scen = read_scenario((bundled_maps() / (std::string(name) + ".map.scen")).string());
         out.push_back({map, scen.at(0).start, scen.at(0).goal, false});
@@ -558,7 +558,7 @@ TEST_CASE("sitp: the mutation rules on paths whose regeneration is forced", "[si
 TEST_CASE("sitp: init sitp through the engine for chains and line genotypes, error paths", "[sitp]") {
     namespace engine = pride::engine;
     engine::GridSpec g;
-    g.map = engine::load_map((bundled_maps() / "file002-20x20.map").string());
+    g.map = engine::load_map((bundled_maps() / "zhang2025-20x20.map").string());
     g.start = {0, 19};
     g.goal = {19, 0};
     g.objective = "iqga";
@@ -595,7 +595,7 @@ TEST_CASE("sitp: init sitp through the engine for chains and line genotypes, err
 }
 
 TEST_CASE("sitp: pride path --algo ga --encoding chain --init sitp", "[sitp][cli]") {
-    const std::string map = (bundled_maps() / "file002-20x20.map").string();
+    const std::string map = (bundled_maps() / "zhang2025-20x20.map").string();
     const std::string args = "path --map '" + map +
                              "' --start 0,19 --goal 19,0 --algo ga --encoding chain --objective iqga "
                              "--iters 5 --json --init sitp";
@@ -617,7 +617,7 @@ TEST_CASE("sitp: pride path --algo ga --encoding chain --init sitp", "[sitp][cli
 
 TEST_CASE("sitp: campaign files take init = \"sitp\"", "[sitp][cli]") {
     const pride::test::TempDir dir;
-    const std::string map = (bundled_maps() / "file002-20x20.map").string();
+    const std::string map = (bundled_maps() / "zhang2025-20x20.map").string();
     auto campaign = [&](const std::string& init, const std::string& encoding) {
         return "name = \"s\"\nseeds = 2\n[budget]\niterations = 3\n[[problem]]\nid = \"p\"\ntype = \"grid\"\nmap = \"" +
                map + "\"\nstart = [0, 19]\ngoal = [19, 0]\nobjective = \"iqga\"\nencoding = \"" + encoding +
@@ -667,7 +667,7 @@ TEST_CASE("sitp: the weight table holds sitp_step_weight's own bits, direction()
 }
 
 TEST_CASE("sitp: the ablation flags and IAGA's pm_min out of range are input errors naming them", "[sitp][cli]") {
-    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/file002-20x20.map";
+    const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/zhang2025-20x20.map";
     const std::string base = "path --map " + map + " --start 0,19 --goal 19,0 --encoding chain --objective iqga ";
     for (const char* bad :
          {"--algo iqga --param regions=2", "--algo iqga --param elite_crossover=-1",

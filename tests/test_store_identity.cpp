@@ -1,4 +1,4 @@
-// Issue 25, campaigns and stores: no silent mixing (docs/reliability.md). A store remembers what
+// Campaigns and stores: no silent mixing (docs/reliability.md). A store remembers what
 // each problem was (SHA-256 digests of its map and settings, store schema 3) and refuses a resume
 // or a merge on another problem under the same id; pride bench and pride merge check a store as
 // pride report does before trusting it; a classic suite without instance 0 is refused; a campaign
@@ -32,7 +32,7 @@ using pride::test::slurp;
 using pride::test::TempDir;
 
 std::string bundled_map_text() {
-    return slurp(std::filesystem::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "file000-10x10.map");
+    return slurp(std::filesystem::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "wan2022-10x10.map");
 }
 
 /// A grid campaign on m.map (beside the file) and a continuous problem: 2 x 1 x `seeds` runs.
@@ -139,7 +139,7 @@ TEST_CASE("store identity: a store from schema 2 is migrated on resume, its dige
     dir.write("c.toml", grid_campaign(1));
     const std::string store = dir.file("c.sqlite");
     REQUIRE(bench(dir, "c.toml", store).status == 0);
-    // As pride wrote it before issue 25: no digest column, schema 2.
+    // As older versions of pride wrote it: no digest column, schema 2.
     exec_sql(store, "ALTER TABLE problems DROP COLUMN digest; PRAGMA user_version = 2");
     const auto old_report = run_pride("report '" + store + "' --format csv");
     CHECK(old_report.status == 0);  // report reads old stores as they are

@@ -133,7 +133,7 @@ std::string input_error_message(Fn&& f) {
     return "<no InputError thrown>";
 }
 
-/// The bad-input contract of every subcommand (shared/spec/cli.md): exit status 2, nothing on
+/// The bad-input contract of every subcommand (docs/cli.md): exit status 2, nothing on
 /// stdout, exactly one non-empty line on stderr, "pride: " first and '\n' last, naming each of
 /// `words`. `R` is any outcome with `status`, `out` and `err`.
 template <class R>

@@ -1,4 +1,4 @@
-// Parallel evaluation inside one run (issue 15; framework/parallel.hpp, Budget::threads): the same
+// Parallel evaluation inside one run (framework/parallel.hpp, Budget::threads): the same
 // result, bit for bit, on 1, 2 and 4 threads for callbacks and grid encodings under several
 // algorithms; errors of user code come back from worker threads; bad thread counts and callbacks
 // not marked thread-safe are refused, by the engine, the command line and campaign files.
@@ -127,7 +127,7 @@ TEST_CASE("threads: a batch callback is handed slices of the population, with th
 TEST_CASE("threads: grid runs (line and free encodings, walk starts) give the same paths on 1, 2 and 4 threads",
           "[threads][grid]") {
     engine::GridSpec g;
-    g.map = engine::load_map(example_map("file002-20x20.map"));
+    g.map = engine::load_map(example_map("zhang2025-20x20.map"));
     g.start = {0, 19};
     g.goal = {19, 0};
     for (const char* encoding : {"line", "free"}) {
@@ -219,14 +219,14 @@ TEST_CASE("threads: bad thread counts and callbacks not marked thread-safe are r
                              "path --map MAP --start 0,0 --goal 9,9 --algo pso --iters 2 --threads -2"}) {
         std::string line = args;
         if (const auto at = line.find("MAP"); at != std::string::npos)
-            line.replace(at, 3, "'" + example_map("file000-10x10.map") + "'");
+            line.replace(at, 3, "'" + example_map("wan2022-10x10.map") + "'");
         INFO(line);
         const auto r = pride::test::run_pride(line);
         CHECK(r.status == 2);
         CHECK_THAT(r.err, Contains("--threads") && Contains("[1, 256]"));
         CHECK(r.out.empty());
     }
-    const auto ok = pride::test::run_pride("path --map '" + example_map("file000-10x10.map") +
+    const auto ok = pride::test::run_pride("path --map '" + example_map("wan2022-10x10.map") +
                                            "' --start 0,0 --goal 9,9 --algo pso --iters 3 --threads 2");
     CHECK(ok.status == 0);
 

@@ -1,4 +1,4 @@
-// WOA, harmony search and HS-WOA on boxes (issue 12, file 003): each equation on hand-computed
+// WOA, harmony search and HS-WOA on boxes (Cai and Du (2021)): each equation on hand-computed
 // values with fixed draws, one sweep replayed draw by draw, the schedules' end points, the balance
 // switch and the reconstruction, reproducibility, exact budgets, bounds, and WOA on the sphere.
 #include <catch2/catch.hpp>

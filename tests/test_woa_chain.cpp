@@ -1,4 +1,4 @@
-// Tests of WOA and HS-WOA on chains (file 003 on grids): the whale chain moves of
+// Tests of WOA and HS-WOA on chains (Cai and Du (2021) on grids): the whale chain moves of
 // problems/grid/whale_chain.hpp on hand-made maps (the line-of-sight shortcut, moving a whale
 // towards another inside a window around the target's section, a whale towards itself), and the
 // Woa skeleton on ChainSpace (algorithms/parts/whale_pods.hpp): every whale of every iteration a
@@ -295,7 +295,7 @@ TEST_CASE("woa on chains: every whale legal on every bundled map and 200 random 
 }
 
 TEST_CASE("woa on chains: reproducible bit for bit, never worse than the first pod", "[woa][chain]") {
-    const Instance in = bundled("file003-50x50.map");
+    const Instance in = bundled("cai2021-50x50.map");
     HsWoa a;
     a.population = 20;
     const auto r1 = a.run(space_of(in), max_iterations(20), 11);
@@ -316,7 +316,7 @@ TEST_CASE("woa on chains: reproducible bit for bit, never worse than the first p
 }
 
 TEST_CASE("woa on chains: budgets are exact", "[woa][chain]") {
-    const Instance in = bundled("file003-env1-30x30.map");
+    const Instance in = bundled("cai2021-env1-30x30.map");
     for (const std::int64_t budget : {1, 19, 20, 21, 59, 60, 61, 333}) {
         INFO("budget " << budget);
         for (int which = 0; which < 2; ++which) {
@@ -359,14 +359,14 @@ TEST_CASE("woa on chains: budgets are exact", "[woa][chain]") {
 TEST_CASE("woa on chains: per-coordinate draws are refused", "[woa][chain]") {
     Woa<PerCoordinateDraws> a;
     a.population = 5;
-    CHECK_THROWS_AS(a.run(space_of(bundled("file003-env1-30x30.map")), max_iterations(2), 1), InputError);
+    CHECK_THROWS_AS(a.run(space_of(bundled("cai2021-env1-30x30.map")), max_iterations(2), 1), InputError);
 }
 
 TEST_CASE("woa entries on grids: the chain encoding, N = 20 and 50 iterations, objective hswoa",
           "[woa][chain][engine]") {
     engine::GridSpec g;
-    g.map = engine::load_map((bundled_maps() / "file003-50x50.map").string());
-    const auto scen = grid::read_scenario((bundled_maps() / "file003-50x50.map.scen").string());
+    g.map = engine::load_map((bundled_maps() / "cai2021-50x50.map").string());
+    const auto scen = grid::read_scenario((bundled_maps() / "cai2021-50x50.map.scen").string());
     g.start = scen.at(0).start;
     g.goal = scen.at(0).goal;
     g.encoding = "chain";

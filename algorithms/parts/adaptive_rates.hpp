@@ -1,6 +1,6 @@
 #pragma once
 // IAGA's adaptive crossover and mutation probabilities (the "improved adaptive GA" [30] that file
-// 002 compares with; shared/spec/algorithms.md, GA), as GA operator policies on boxes and chains.
+// 002 compares with; docs/algorithms.md, GA), as GA operator policies on boxes and chains.
 //
 //   Srinivas, M. and Patnaik, L. M. (1994). Adaptive probabilities of crossover and mutation in
 //     genetic algorithms. IEEE Transactions on Systems, Man, and Cybernetics 24(4), 656-667.
@@ -29,7 +29,7 @@
 //     best and the near-best are copied unchanged, the population fills with their copies and the
 //     run stalls: rastrigin 10-D, 50,000 evaluations, seeds 1-5, best 27.6-67.5 (ga: 0.002-0.025);
 //     with 0.005: 0.04-0.71; rosenbrock 10-D 85-76,879 against 0.3-300 (docs/algorithms.md).
-//     The spec says only "adaptive probabilities (Srinivas and Patnaik)"; k1..k4 stay the authors'.
+//     The project's decision says only "adaptive probabilities (Srinivas and Patnaik)"; k1..k4 stay the authors'.
 #include <algorithm>
 #include <cmath>
 #include <optional>

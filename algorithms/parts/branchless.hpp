@@ -1,7 +1,7 @@
 #pragma once
 // A select without a branch, for tests on random coins: GCC turns `c ? a : b` on doubles into a
 // conditional jump when it judges that cheaper, and a jump on a coin is mispredicted every other
-// time (issue 15: SBX's swap and its two spread-factor tests were three such jumps per crossed
+// time (SBX's swap and its two spread-factor tests were three such jumps per crossed
 // coordinate). The value is a or b, bit for bit.
 #include <bit>
 #include <cstdint>

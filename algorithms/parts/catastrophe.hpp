@@ -1,10 +1,10 @@
 #pragma once
-// ICGA's catastrophe (the "improved catastrophe GA" [31] that file 002 compares with;
-// shared/spec/algorithms.md, GA: "a catastrophe step that re-seeds all but the elite after k
+// ICGA's catastrophe (the "improved catastrophe GA" [31] that Zhang et al. (2025) compare with;
+// docs/algorithms.md, GA: "a catastrophe step that re-seeds all but the elite after k
 // generations without improvement"), as a GA per-generation hook (generation_hook.hpp).
 //
 //   Xu, X., Yu, X., Zhao, Y. et al. (2022). Global path planning of mobile robot based on improved
-//     genetic algorithm. Computer Integrated Manufacturing Systems 28(6), 1659-1672 (file 002's [31]).
+//     genetic algorithm. Computer Integrated Manufacturing Systems 28(6), 1659-1672 (Zhang et al.'s (2025) [31]).
 //
 // After generation t's replacement, when the best value the run has found has not improved for
 // k generations (context.stagnation = k, and again at 2k, 3k, ... while it still does not), the
@@ -12,7 +12,7 @@
 // Init policy then the Bounds policy on boxes, by the problem's random chains on chains, evaluated
 // in order through the run's budget guard (population.renew). A catastrophe that finds a better
 // member restarts the count.
-// Decided by this project (file 002 gives neither value, and [31] is not at hand): k = 10 and
+// Decided by this project (Zhang et al. (2025) give neither value, and [31] is not at hand): k = 10 and
 // elite = 1 (the GA's own elitism); the elite are the `elite` smallest values, ties to the lower
 // index; the re-seeded members are renewed in increasing index order.
 #include <algorithm>

@@ -178,7 +178,7 @@ class SbxCrossover::Prepared {
     /// The roots' arguments of m crossed coordinates: arg[k] for the first child (spread factor
     /// beta = 1 + 2 (y1 - low) / (y2 - y1)), arg[m + k] for the second (1 + 2 (high - y2) / (y2 - y1)).
     /// Four coordinates per instruction where the processor has AVX and beta^(eta+1) is repeated
-    /// squaring (eta + 1 a power of two, as the spec's 15); the same operations in the same order
+    /// squaring (eta + 1 a power of two, as the project's 15); the same operations in the same order
     /// as the scalar form, so the same bits.
     void arguments(std::size_t m, const double* y1, const double* y2, const double* low, const double* high,
                    const double* u, double* arg) const noexcept {

@@ -10,7 +10,7 @@
 namespace pride {
 
 /// w falls linearly from `start` at the first iteration to `end` at the last (Shi and Eberhart
-/// 1998; 0.9 -> 0.4 is the spec's PSO default).
+/// 1998; 0.9 -> 0.4 is the project's PSO default).
 struct LinearInertia {
     double start = 0.9;
     double end = 0.4;
@@ -33,9 +33,9 @@ struct ConstantInertia {
     }
 };
 
-/// File 000 eq. (10): w = w_max - (w_max - w_min) t^2 / T^2, with the paper's t = 1..T counting
+/// Eq. (10) of Wan and Gao (2022): w = w_max - (w_max - w_min) t^2 / T^2, with the paper's t = 1..T counting
 /// the iterations that move (t = our 0-based index + 1): it starts just below w_max, falls slowly
-/// early and fast late, and reaches w_min on the last iteration. Defaults 0.99 and 0.35 (file 000).
+/// early and fast late, and reaches w_min on the last iteration. Defaults 0.99 and 0.35 (Wan and Gao 2022).
 struct QuadraticInertia {
     double start = 0.99;
     double end = 0.35;

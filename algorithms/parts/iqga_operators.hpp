@@ -1,5 +1,5 @@
 #pragma once
-// File 002's IQGA (shared/spec/algorithms.md, IQGA) as GA policies (ga.hpp), over any chain space
+// Zhang et al.'s (2025) IQGA (docs/algorithms.md, IQGA) as GA policies (ga.hpp), over any chain space
 // with the capabilities of framework/chain.hpp (RegionOf, TwoPointCrossover, NumberedMutations):
 //   RegionTournamentSelection  eqs. 14-18: a mating pool built once per generation from tournaments
 //                              of three inside each region, then the parents drawn from it in
@@ -11,7 +11,7 @@
 //                              Q-learning choice among the three (q_learning.hpp, eq. 19), its
 //                              states from the length of the generation's best path (ChainLength).
 //
-// What the paper says (file 002 eqs. 16-18) and what is done here. Eq. 16: s_1 = n_1 if n_1 <= N/3,
+// What the paper says (Zhang et al. 2025, eqs. 16-18) and what is done here. Eq. 16: s_1 = n_1 if n_1 <= N/3,
 // else N/3; s_2 likewise; s_3 = N - s_1 - s_2 (n_i the members in region i; N/3 is read as
 // floor(N/3), the same test for whole n_i). Eq. 17: B = F_best - (21/20) F_worst, F the maximised
 // fitness of the current population. Eq. 18: P_j = (F_i - F_worst) / (F_best - F_worst), F_i the
@@ -19,8 +19,8 @@
 // gives no temperature and no cooling schedule: its "simulated annealing" is only this acceptance of
 // a worse member with probability P_j, which changes as the population does; none is added here.
 // Text after eq. 18: if B > 0, the second is kept on P_r < P_j and the worst with probability 1/2;
-// if B <= 0 the worst with probability 1/2 (the spec: the worst with 1/2 in either case).
-// Decided by this project (paper and spec silent):
+// if B <= 0 the worst with probability 1/2 (the project's decision: the worst with 1/2 in either case).
+// Decided by this project (the paper silent):
 //   - F = -f, f the value the GA minimises (objective iqga is -(1/f1 + 1/f2 + 1/f3), so F is the
 //     paper's positive eq. 12 fitness); members not evaluated (+inf) get P_j = 0;
 //     F_best = F_worst gives P_j = 1;
@@ -38,7 +38,7 @@
 //     pairing rule lives; EliteCrossover does not cross a pair without an elite member, so the rule
 //     also holds behind another selection (with this one no pair is refused);
 //   - the elite: the E = min(elite, floor(N/2)) best members of the current population by f (ties
-//     by index), so E = 20 for N >= 40 and N/2 below, as the spec says for elite = 20;
+//     by index), so E = 20 for N >= 40 and N/2 below, as the project's decision says for elite = 20;
 //   - eq. 20's badness B = (f_max - f_i)/(f_max - f_min) in the paper's maximised fitness, here
 //     (f_i - f_min)/(f_max - f_min) on the minimised values, with f_i the value of the parent the
 //     child was copied from (the child itself is not evaluated yet); 0.5 when f_max = f_min or a
@@ -117,7 +117,7 @@ inline double badness(double v, double best, double worst) noexcept {
 struct RegionTournamentSelection {
     static constexpr bool uses_regions = true;  // the GA fills GenerationContext::regions for it
     std::int64_t elite = 20;                    // the pairing rule's elite: min(elite, N/2) best
-    // Ablations (file 002's changes removed one at a time): without `regions` the whole population
+    // Ablations (Zhang et al.'s (2025) changes removed one at a time): without `regions` the whole population
     // is one region and all N tournaments draw from it; without `pairing` the second parent is
     // drawn from the whole pool like the first (no elite pairing rule).
     bool regions = true;
@@ -260,7 +260,7 @@ struct NumberedChainMutation {
 /// probabilities of the action Q-learning chooses once per generation (a1..a3: 0.6 / 0.2 / 0.2 on
 /// deletion, mid-point, turning point in turn).
 /// The states follow the length of the best member (the first of the smallest values) when the
-/// space has lengths (ChainLength; the grid's ChainSpace has), as the spec says; else its value.
+/// space has lengths (ChainLength; the grid's ChainSpace has), as the project's decision says; else its value.
 struct IqgaMutation : QLearningMutation<NumberedChainMutation<0>, NumberedChainMutation<1>, NumberedChainMutation<2>> {
     static constexpr bool uses_best_length = true;  // the GA fills GenerationContext::best_length
     IqgaMutation() {

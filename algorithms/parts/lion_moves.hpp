@@ -1,5 +1,5 @@
 #pragma once
-// The moves of the lion swarm (file 000 section 1.1 and 2.3; Liu, Yang and Zhou 2018), one
+// The moves of the lion swarm (Wan and Gao 2022, section 1.1 and 2.3; Liu, Yang and Zhou 2018), one
 // function per equation and no randomness inside: the caller draws gamma, q and the partners and
 // passes them in, so each equation can be checked by hand on fixed draws (tests/test_lso.cpp).
 // Positions are spans of equal length; `out` may not alias an input.
@@ -30,7 +30,7 @@ inline double step(double r, std::span<const double> low, std::span<const double
     return r * (hi / n - lo / n);
 }
 
-/// Eq. (6) as the spec reads it: alpha_f = step exp(-30 (t/T)^10), t = 1..T (see lso.hpp).
+/// Eq. (6) as the project's decision reads it: alpha_f = step exp(-30 (t/T)^10), t = 1..T (see lso.hpp).
 inline double alpha_f(double step, std::int64_t t, std::int64_t horizon) {
     const double ratio = static_cast<double>(t) / static_cast<double>(horizon);
     return step * std::exp(-30.0 * std::pow(ratio, 10));
@@ -63,7 +63,7 @@ inline void midpoint_move(std::span<const double> a, std::span<const double> b, 
     for (std::size_t d = 0; d < a.size(); ++d) out[d] = (a[d] + b[d]) * factor;
 }
 
-/// The same moves with one gamma per coordinate (Lso::gamma_per_coordinate, not file 000's reading):
+/// The same moves with one gamma per coordinate (Lso::gamma_per_coordinate, not Wan and Gao's (2022) reading):
 /// x_d = g_d (1 + gamma_d ||p_i - g||) and x_d = w (a_d + b_d)/2 (1 + alpha gamma_d).
 inline void king(std::span<const double> g, std::span<const double> p_i, std::span<const double> gamma,
                  std::span<double> out) {

@@ -13,7 +13,7 @@
 namespace pride {
 
 /// Polynomial mutation, bounded form (Deb and Goyal 1996; the form of Deb's NSGA-II code and
-/// pagmo2). Each coordinate mutates with probability pm (pm < 0 means 1/D, the spec's default):
+/// pagmo2). Each coordinate mutates with probability pm (pm < 0 means 1/D, the project's default):
 ///   d1 = (y - low)/(high - low), d2 = (high - y)/(high - low), u ~ U(0,1)
 ///   u <= 1/2: dq = (2u + (1 - 2u)(1 - d1)^(eta+1))^(1/(eta+1)) - 1
 ///   u >  1/2: dq = 1 - (2(1 - u) + 2(u - 1/2)(1 - d2)^(eta+1))^(1/(eta+1))
@@ -101,8 +101,8 @@ class PolynomialMutation {
 ///   u >  1/2: delta = 1 - (2(1 - u))^(1/(eta+1)),  y <- y + delta (high - y)
 /// then clamped. Which coordinates mutate is decided as PolynomialMutation decides it (32 bits of
 /// a generator step against pm 2^32), so the two forms draw alike. For a coordinate in the middle
-/// of its box the step is half the bounded form's, and it shrinks towards a face: issue 15 measured
-/// this as what makes pagmo2's sga reach better medians than ga-plus (docs/benchmarks.md).
+/// of its box the step is half the bounded form's, and it shrinks towards a face: measured,
+/// this is what makes pagmo2's sga reach better medians than ga-plus (docs/benchmarks.md).
 class SimplePolynomialMutation {
   public:
     double eta = 20.0;

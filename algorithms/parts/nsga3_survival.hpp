@@ -1,6 +1,6 @@
 #pragma once
 // NSGA-III's survival, the Survival policy of the NSGA-II skeleton (algorithms/nsga2.hpp) that
-// makes it NSGA-III (issue 28):
+// makes it NSGA-III:
 //
 //   Deb, K. and Jain, H. (2014). An evolutionary many-objective optimization algorithm using
 //     reference-point-based nondominated sorting approach, part I: solving problems with box

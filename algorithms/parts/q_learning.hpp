@@ -1,20 +1,21 @@
 #pragma once
-// Adaptive operator selection by Q-learning, as file 002 (IQGA, section 2.4, eq. 19) uses it to
+// Adaptive operator selection by Q-learning, as Zhang et al. (2025) (IQGA, section 2.4, eq. 19) uses it to
 // choose the probabilities of its mutation operators, written for any set of operators on boxes or
-// chains (shared/spec/algorithms.md, IQGA: Q-learning).
+// chains (docs/algorithms.md, IQGA: Q-learning).
 //
 //   Watkins, C. J. C. H. and Dayan, P. (1992). Q-learning. Machine Learning 8, 279-292.
-//   File 002, eq. 19:  Q(s_t, a_t) <- Q(s_t, a_t) + alpha (r_{t+1} + gamma max_a' Q(s_{t+1}, a') - Q(s_t, a_t)).
+//   Zhang et al. 2025, eq. 19:
+//     Q(s_t, a_t) <- Q(s_t, a_t) + alpha (r_{t+1} + gamma max_a' Q(s_{t+1}, a') - Q(s_t, a_t)).
 //
 // States: how this generation's best value (the population's smallest, GenerationContext::best)
 // compares with the previous generation's: 1 = smaller (better), 2 = equal, 3 = larger (worse);
 // with `by_length` (IQGA), how the best member's length (GenerationContext::best_length) does, as
-// file 002 and the spec word it, when the population gives one (else the best value).
+// Zhang et al. (2025) and the project's decision word it, when the population gives one (else the best value).
 // Actions: assignments of probabilities to the operators; by default the distinct orderings of a
 // weight vector, for three operators of (0.6, 0.2, 0.2) (the paper's values): a1 = (0.6, 0.2, 0.2),
 // a2 = (0.2, 0.6, 0.2), a3 = (0.2, 0.2, 0.6). Reward: r_t = u - w for a move from state s_t = u to
 // s_{t+1} = w (the paper's definition, which rewards a move to a better state only with the states
-// numbered from best to worst, as the spec numbers them). Choice: epsilon-greedy (epsilon = 0.1),
+// numbered from best to worst, as the project's decision numbers them). Choice: epsilon-greedy (epsilon = 0.1),
 // alpha = 0.1, gamma = 0.9 (the paper's values).
 //
 // Once per generation (OperatorQLearning::begin_generation, at the start of the generation, before
@@ -83,7 +84,7 @@ inline std::vector<std::vector<double>> orderings(std::vector<double> weights) {
     return out;
 }
 
-/// The default weights for m operators: (0.6, 0.2, 0.2) for three, as file 002; otherwise 0.6 for
+/// The default weights for m operators: (0.6, 0.2, 0.2) for three, as Zhang et al. (2025); otherwise 0.6 for
 /// the first and 0.4 shared by the others, (1) for one.
 inline std::vector<double> default_operator_weights(std::size_t m) {
     if (m <= 1) return std::vector<double>(m, 1.0);
@@ -218,7 +219,7 @@ class QLearningMutation {
     QLearningSettings learning{};
     double probability = 1.0;  // of mutating a child at all (then one operator is chosen)
     // States from the best member's length (GenerationContext::best_length, when the population
-    // gives one) instead of the best value: IQGA's states (file 002: "the best path length").
+    // gives one) instead of the best value: IQGA's states (Zhang et al. 2025: "the best path length").
     bool by_length = false;
 
     /// The table of actions the learner chooses among.

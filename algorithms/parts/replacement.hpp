@@ -28,7 +28,7 @@ inline void best_first(std::span<const double> f, std::size_t k, std::vector<std
     std::iota(order.begin(), order.end(), std::size_t{0});
     const auto before = [&](std::size_t a, std::size_t b) { return f[a] < f[b] || (f[a] == f[b] && a < b); };
     // The order is total (ties by index), so any sort gives the same first k. For k near n (ga-plus:
-    // the best 50 of 100) a full introsort costs half of partial_sort's heap (issue 15's profile).
+    // the best 50 of 100) a full introsort costs half of partial_sort's heap (measured in a profile).
     if (2 * k >= f.size())
         std::sort(order.begin(), order.end(), before);
     else
@@ -36,7 +36,7 @@ inline void best_first(std::span<const double> f, std::size_t k, std::vector<std
 }
 }  // namespace detail
 
-/// Generational with elitism (the spec's GA): the `elitism` best parents pass on unchanged, the
+/// Generational with elitism (the project's GA): the `elitism` best parents pass on unchanged, the
 /// other N - elitism places go to the children in the order they were made.
 struct ElitistReplacement {
     std::int64_t elitism = 1;
@@ -70,7 +70,7 @@ struct PlusReplacement {
         // The parents come best first after every generation of this replacement (its own output
         // order); then only the children that can enter are sorted and merged with them: the same
         // order as the whole pool's sort (total: ties by index, so a parent goes before a child of
-        // equal value), at a fraction of its cost (issue 30: that sort of 100 was a quarter of
+        // equal value), at a fraction of its cost (that sort of 100 was a quarter of
         // ga-plus's run at D = 30). Unsorted parents (the first generation) take the full sort.
         if (chosen.size() <= fp.size() && std::is_sorted(fp.begin(), fp.end())) {
             merge_children(fp, fc, chosen, scratch.order);

@@ -10,7 +10,7 @@
 namespace pride {
 
 /// k-tournament with replacement: k members drawn uniformly, the fittest wins (the first drawn on
-/// ties). The spec's GA uses k = 2.
+/// ties). The project's GA uses k = 2.
 struct TournamentSelection {
     std::int64_t size = 2;
     std::size_t operator()(std::span<const double> fitness, Rng& rng) const noexcept {

@@ -44,7 +44,7 @@ struct ConstrictionVelocity {
     }
 };
 
-/// |v_i| <= fraction * (high_i - low_i) (the spec: 0.2).
+/// |v_i| <= fraction * (high_i - low_i) (the project's decision: 0.2).
 struct RangeVelocityClamp {
     double fraction = 0.2;
     double limit(double low, double high) const noexcept { return fraction * (high - low); }

@@ -1,6 +1,6 @@
 #pragma once
-// The moves of WOA (file 003 eqs. 1-7; Mirjalili and Lewis 2016), of harmony search (Geem, Kim and
-// Loganathan 2001) and HS-WOA's second step and balance factor (file 003 eqs. 8-9), as functions of
+// The moves of WOA (Cai and Du 2021, eqs. 1-7; Mirjalili and Lewis 2016), of harmony search (Geem, Kim and
+// Loganathan 2001) and HS-WOA's second step and balance factor (Cai and Du 2021, eqs. 8-9), as functions of
 // given draws, so that each equation can be checked on hand-computed values. `Draws` is anything
 // with uniform() in [0, 1) and below(n) in [0, n): the run's Rng, or a scripted source in tests.
 #include <algorithm>
@@ -171,7 +171,7 @@ inline bool balance_step(BalanceState& s, bool improved, double start, std::int6
     return true;
 }
 
-/// The whales kept by the reconstruction (file 003 section 2.2): the best, then binary tournaments
+/// The whales kept by the reconstruction (Cai and Du 2021, section 2.2): the best, then binary tournaments
 /// among the whales not yet kept until `keep` are kept. `order` (size N) is workspace; the kept
 /// indices are its first `keep` entries, the best first.
 template <class Draws>

@@ -8,7 +8,7 @@
 // Boxes: the whales are the columns of a matrix and move coordinate by coordinate (Woa::sweep).
 // Chains: the whales are the problem's chains and every move is the space's TowardMoves
 // capability (framework/chain.hpp): a whale takes a share of its target's course. The share is
-// decided here where the spec is silent on how eqs. 1-8 map onto paths: for the encircling and the
+// decided here where the papers are silent on how eqs. 1-8 map onto paths: for the encircling and the
 // search (eqs. 1-2, 6-7) 1 / (1 + |A|), for the spiral (eq. 5) 1 / (1 + |e^{bl} cos(2 pi l)|) (the
 // closer the equation puts the whale to its target, the larger the share; C has no part), for
 // eq. 8 its U(0,1) fraction r. A harmony on chains is a memory member (HMCR), pitch-adjusted (PAR)

@@ -2,7 +2,7 @@
 // ga-plus ((mu + lambda) replacement), two configurations of one instantiation on boxes and one on
 // chains (the replacement is chosen once per generation); and the variants as policies of the same
 // skeleton: iaga (Srinivas and Patnaik's adaptive pc and pm), icga (the catastrophe hook) on boxes
-// and chains, ga-q (Q-learning choice among three box mutations) on boxes, iqga (file 002's IQGA:
+// and chains, ga-q (Q-learning choice among three box mutations) on boxes, iqga (Zhang et al.'s (2025) IQGA:
 // region selection, elite crossover, Q-learning among three mutations) on chains only.
 #include "algorithms/ga.hpp"
 
@@ -102,7 +102,7 @@ std::vector<ParamSpec> iaga_params() {
 void add_iaga(AlgorithmRegistry& registry) {
     auto e = box_algorithm("iaga", "ga",
                            "GA with Srinivas and Patnaik's adaptive crossover and mutation probabilities (IAGA of "
-                           "file 002): SBX / polynomial mutation on boxes, chain operators on chains",
+                           "Zhang et al. (2025)): SBX / polynomial mutation on boxes, chain operators on chains",
                            iaga_params(), [](const Params& p) {
                                IagaBox a;
                                iaga_common(a, p);
@@ -115,7 +115,7 @@ void add_iaga(AlgorithmRegistry& registry) {
         return a;
     });
     e.memory = population_memory(3);
-    e.native_encoding = "chain";  // file 002 compares them with IQGA on paths
+    e.native_encoding = "chain";  // Zhang et al. (2025) compare them with IQGA on paths
     registry.add(std::move(e));
 }
 
@@ -143,22 +143,23 @@ void add_icga(AlgorithmRegistry& registry) {
     v.insert(v.end() - 1,
              integer("k", 10, 1, 1'000'000'000, "generations without improvement of the best before a catastrophe"));
     v.insert(v.end() - 1, integer("elite", 1, 0, 100'000'000, "best members a catastrophe keeps, fewer than pop"));
-    auto e = box_algorithm("icga", "ga",
-                           "GA with a catastrophe (ICGA of file 002): after k generations without improvement all "
-                           "but the elite are re-seeded; on chains too",
-                           std::move(v), [](const Params& p) {
-                               IcgaBox a;
-                               icga_common(a, p);
-                               box_operators(a, p);
-                               return a;
-                           });
+    auto e = box_algorithm(
+        "icga", "ga",
+        "GA with a catastrophe (ICGA of Zhang et al. (2025)): after k generations without improvement all "
+        "but the elite are re-seeded; on chains too",
+        std::move(v), [](const Params& p) {
+            IcgaBox a;
+            icga_common(a, p);
+            box_operators(a, p);
+            return a;
+        });
     add_chain_runner(e, [](const Params& p) {
         IcgaChain a;
         icga_common(a, p);
         return a;
     });
     e.memory = population_memory(4);  // parents, next generation, children, re-seeded members
-    e.native_encoding = "chain";      // file 002 compares them with IQGA on paths
+    e.native_encoding = "chain";      // Zhang et al. (2025) compare them with IQGA on paths
     registry.add(std::move(e));
 }
 
@@ -181,31 +182,32 @@ void add_ga_q(AlgorithmRegistry& registry) {
         real("alpha", 0.1, 0.0, 1.0, "Q-learning: learning rate"),
         real("gamma", 0.9, 0.0, 1.0, "Q-learning: discount factor"),
         walk_init_param(false)};
-    auto e = box_algorithm("ga-q", "ga",
-                           "GA whose mutation is polynomial, uniform or Gaussian by probabilities (0.6/0.2/0.2 in "
-                           "some order) that Q-learning chooses once per generation (file 002, eq. 19); boxes only",
-                           std::move(v), [](const Params& p) {
-                               GaQBox a;
-                               a.id = "ga-q";
-                               a.population = p.integer("pop");
-                               a.replacement.elitism = p.integer("elitism");
-                               a.selection.size = p.integer("tournament");
-                               a.init.suggestions = p.flag("walk_init");
-                               a.crossover.eta = p.real("eta_c");
-                               a.crossover.probability = p.real("pc");
-                               auto& [polynomial, uniform, gaussian] = a.mutation.operators;
-                               polynomial.eta = p.real("eta_m");
-                               gaussian.sigma = p.real("sigma");
-                               if (const auto pm = p.optional("pm"))
-                                   polynomial.probability = uniform.probability = gaussian.probability = *pm;
-                               a.mutation.learning = {p.real("epsilon"), p.real("alpha"), p.real("gamma")};
-                               return a;
-                           });
+    auto e =
+        box_algorithm("ga-q", "ga",
+                      "GA whose mutation is polynomial, uniform or Gaussian by probabilities (0.6/0.2/0.2 in "
+                      "some order) that Q-learning chooses once per generation (Zhang et al. 2025, eq. 19); boxes only",
+                      std::move(v), [](const Params& p) {
+                          GaQBox a;
+                          a.id = "ga-q";
+                          a.population = p.integer("pop");
+                          a.replacement.elitism = p.integer("elitism");
+                          a.selection.size = p.integer("tournament");
+                          a.init.suggestions = p.flag("walk_init");
+                          a.crossover.eta = p.real("eta_c");
+                          a.crossover.probability = p.real("pc");
+                          auto& [polynomial, uniform, gaussian] = a.mutation.operators;
+                          polynomial.eta = p.real("eta_m");
+                          gaussian.sigma = p.real("sigma");
+                          if (const auto pm = p.optional("pm"))
+                              polynomial.probability = uniform.probability = gaussian.probability = *pm;
+                          a.mutation.learning = {p.real("epsilon"), p.real("alpha"), p.real("gamma")};
+                          return a;
+                      });
     e.memory = population_memory(3);
     registry.add(std::move(e));
 }
 
-// --- iqga: file 002's IQGA on chains (algorithms/parts/iqga_operators.hpp) ---
+// --- iqga: Zhang et al.'s (2025) IQGA on chains (algorithms/parts/iqga_operators.hpp) ---
 
 IqgaGa configure_iqga(const Params& p) {
     IqgaGa a;
@@ -216,7 +218,7 @@ IqgaGa configure_iqga(const Params& p) {
     a.crossover.probability = p.real("pc");
     a.mutation.probability = p.real("pm");
     a.mutation.learning = {p.real("epsilon"), p.real("alpha"), p.real("gamma")};
-    // The ablations of docs/results/file002.md: each flag removes one of file 002's changes.
+    // The ablations of docs/results/zhang2025.md: each flag removes one of Zhang et al.'s (2025) changes.
     a.selection.regions = p.flag("regions");
     a.selection.pairing = a.crossover.elite_only = p.flag("elite_crossover");
     if (!p.flag("qlearning")) a.mutation.actions = {{1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0}};  // one fixed action
@@ -228,17 +230,19 @@ void add_iqga(AlgorithmRegistry& registry) {
     e.name = "iqga";
     e.family = "ga";
     e.summary =
-        "file 002's IQGA on chains: SITP initial paths, region tournaments with SA acceptance (eqs. 14-18), elite "
+        "Zhang et al.'s (2025) IQGA on chains: SITP initial paths, region tournaments with SA acceptance (eqs. 14-18), "
+        "elite "
         "two-point crossover, three mutations chosen by Q-learning (eq. 19); N = 40 on grids";
     e.params = {
-        population_param(40, 2, "population size (on grids 40 unless given, as file 002)"),
+        population_param(40, 2, "population size (on grids 40 unless given, as Zhang et al. (2025))"),
         integer("elite", 20, 1, 100'000'000, "elite of the crossover pairing: the min(elite, pop/2) best"),
         real("pc", 0.9, 0.0, 1.0, "crossover probability per pair with an elite member"),
         real("pm", 0.1, 0.0, 1.0, "mutation probability per child"),
         real("epsilon", 0.1, 0.0, 1.0, "Q-learning: probability of a random action"),
         real("alpha", 0.1, 0.0, 1.0, "Q-learning: learning rate"),
         real("gamma", 0.9, 0.0, 1.0, "Q-learning: discount factor"),
-        flag("sitp", true, "initial chains from SITP walks (file 002 section 2.2); the grid spec's init sets it"),
+        flag("sitp", true,
+             "initial chains from SITP walks (Zhang et al. 2025, section 2.2); the grid spec's init sets it"),
         flag("regions", true,
              "region-partitioned tournaments (eqs. 14-16); false: all N tournaments over the whole population"),
         flag("elite_crossover", true,
@@ -262,7 +266,7 @@ void add_iqga(AlgorithmRegistry& registry) {
     registry.add(std::move(e));
 }
 
-// --- ga-sga: ga-plus with pagmo2's polynomial mutation (issue 15; mutation.hpp) ---
+// --- ga-sga: ga-plus with pagmo2's polynomial mutation (mutation.hpp) ---
 
 using SgaBox = Ga<TournamentSelection, SbxCrossover, SimplePolynomialMutation, Clamp, SelectableInit, PlusReplacement>;
 

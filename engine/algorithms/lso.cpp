@@ -36,7 +36,7 @@ std::vector<ParamSpec> params(bool improved) {
             .open_above(),
         real("cub_second", 2.0 / 3.0, 0.0, 1.0, "second cub threshold (eqs. 9, 12: 2/3)").open_below().open_above(),
         flag("gamma_per_coordinate", false,
-             "one gamma per coordinate instead of one per lion (not file 000's reading)"),
+             "one gamma per coordinate instead of one per lion (not Wan and Gao's (2022) reading)"),
         walk_init_param(improved)};
     if (improved) {
         v.insert(v.begin() + 3, real("w_max", 0.99, 0.0, 1.5, "inertia weight of eq. 10 at the start"));
@@ -48,31 +48,31 @@ std::vector<ParamSpec> params(bool improved) {
 }  // namespace
 
 void register_lso(AlgorithmRegistry& registry) {
-    auto lso = box_algorithm(
-        "lso", "lso",
-        "lion swarm (file 000 eqs. 1-9): king, lionesses, cubs; N 20, beta 0.2, step r*(mean high - mean low) with r "
-        "~ U(0,1) per run",
-        params(false), [](const Params& p) {
-            Family a = configure(p);
-            a.weight = UnitWeight{};
-            return a;
-        });
+    auto lso = box_algorithm("lso", "lso",
+                             "lion swarm (Wan and Gao 2022, eqs. 1-9): king, lionesses, cubs; N 20, beta 0.2, step "
+                             "r*(mean high - mean low) with r "
+                             "~ U(0,1) per run",
+                             params(false), [](const Params& p) {
+                                 Family a = configure(p);
+                                 a.weight = UnitWeight{};
+                                 return a;
+                             });
     lso.memory = population_memory(2);  // positions and personal bests
     registry.add(std::move(lso));
 
-    auto ilso = box_algorithm(
-        "ilso", "lso",
-        "improved lion swarm (file 000 eqs. 10-12): LSO with inertia 0.99 -> 0.35 (quadratic), cub threshold 3/10, "
-        "starting from the problem's suggestions (rough-set rule walks on grids)",
-        params(true), [](const Params& p) {
-            Family a = configure(p);
-            a.id = "ilso";
-            QuadraticInertia w;
-            w.start = p.real("w_max");
-            w.end = p.real("w_min");
-            a.weight = w;
-            return a;
-        });
+    auto ilso = box_algorithm("ilso", "lso",
+                              "improved lion swarm (Wan and Gao 2022, eqs. 10-12): LSO with inertia 0.99 -> 0.35 "
+                              "(quadratic), cub threshold 3/10, "
+                              "starting from the problem's suggestions (rough-set rule walks on grids)",
+                              params(true), [](const Params& p) {
+                                  Family a = configure(p);
+                                  a.id = "ilso";
+                                  QuadraticInertia w;
+                                  w.start = p.real("w_max");
+                                  w.end = p.real("w_min");
+                                  a.weight = w;
+                                  return a;
+                              });
     ilso.memory = population_memory(2);
     registry.add(std::move(ilso));
 }

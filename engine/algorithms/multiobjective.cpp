@@ -1,9 +1,9 @@
-// The multi-objective algorithms (issue 28): NSGA-II and NSGA-III (algorithms/nsga2.hpp,
+// The multi-objective algorithms: NSGA-II and NSGA-III (algorithms/nsga2.hpp,
 // nsga3.hpp), MOEA/D (moead.hpp) and SMS-EMOA (smsemoa.hpp). Each runner visits the target once
 // (engine/mo_targets.hpp) and runs typed; the defaults are the papers' (their headers cite them).
 // NSGA-II and NSGA-III also run on grid chains with the chain operators (run_multiobjective_chain).
 // Decided by this project: p_m on chains is a probability per child, 0.1 unless given (IQGA's
-// Pm, file 002, as the GA on chains), since the paper's 1/n per variable has no chain form.
+// Pm, Zhang et al. (2025), as the GA on chains), since the paper's 1/n per variable has no chain form.
 #include <fmt/format.h>
 
 #include <cstddef>
@@ -60,10 +60,11 @@ std::vector<ParamSpec> variation_params(double eta_c, double p_c) {
 
 /// NSGA-II's settings on chains (nsga2.hpp's header): the chain mutations and the chain space's.
 std::vector<ParamSpec> chain_params() {
-    std::vector<ParamSpec> out{choice("mutations", {"all", "segment", "iqga"}, "all",
-                                      "on chains, the mutations drawn from: the GA's segment regeneration, file "
-                                      "002's three (IQGA's deletion, mid-point, turning point), or the four")
-                                   .only_on_chains()};
+    std::vector<ParamSpec> out{
+        choice("mutations", {"all", "segment", "iqga"}, "all",
+               "on chains, the mutations drawn from: the GA's segment regeneration, Zhang et al.'s "
+               "(2025) three (IQGA's deletion, mid-point, turning point), or the four")
+            .only_on_chains()};
     for (auto& s : chain_space_params({.sitp_score = "length"})) out.push_back(std::move(s));
     return out;
 }

@@ -1,7 +1,7 @@
-// The whale family (algorithms/woa.hpp): woa, the two halves of file 003's ablation (woa-hs: the
+// The whale family (algorithms/woa.hpp): woa, the two halves of Cai and Du's (2021) ablation (woa-hs: the
 // harmony second step only; woa-balance: the balance factor only) and hswoa (both), four
 // configurations of one instantiation (the policies are chosen once per iteration), on boxes and
-// on chains (grids with the chain encoding: N = 20 and 50 iterations by default, as file 003).
+// on chains (grids with the chain encoding: N = 20 and 50 iterations by default, as Cai and Du (2021)).
 #include "algorithms/woa.hpp"
 
 #include "engine/family.hpp"
@@ -60,10 +60,10 @@ void add(AlgorithmRegistry& registry, const std::string& name, const std::string
          bool balanced) {
     auto e = box_algorithm(name, "woa", summary, whale_params(harmony, balanced), configure(name, harmony, balanced));
     // On chains the same configuration runs the chain pod (algorithms/parts/whale_pods.hpp).
-    // File 003 plans on chains from eq. 10's walks, shortened by the line of sight.
+    // Cai and Du (2021) plan on chains from eq. 10's walks, shortened by the line of sight.
     add_chain_runner(e, configure(name, harmony, balanced), {"line", "eq10"});
     e.memory = population_memory(2);  // the pod and the reconstruction's copy
-    e.native_encoding = "chain";      // file 003 plans on paths
+    e.native_encoding = "chain";      // Cai and Du (2021) plan on paths
     registry.add(std::move(e));
 }
 
@@ -72,12 +72,12 @@ void add(AlgorithmRegistry& registry, const std::string& name, const std::string
 void register_woa(AlgorithmRegistry& registry) {
     add(registry, "woa", "whale optimisation (Mirjalili and Lewis 2016, reference code WOA.m), a 2 -> 0, b = 1", false,
         false);
-    add(registry, "woa-hs", "WOA with HS-WOA's harmony second step only (file 003 eq. 8, HMCR 0.8, PAR 0.3)", true,
-        false);
-    add(registry, "woa-balance", "WOA with HS-WOA's balance factor only (file 003 eq. 9, balance 0.8, thr 2)", false,
-        true);
-    add(registry, "hswoa", "HS-WOA (file 003): WOA, harmony second step and balance factor with reconstruction", true,
-        true);
+    add(registry, "woa-hs", "WOA with HS-WOA's harmony second step only (Cai and Du 2021, eq. 8, HMCR 0.8, PAR 0.3)",
+        true, false);
+    add(registry, "woa-balance", "WOA with HS-WOA's balance factor only (Cai and Du 2021, eq. 9, balance 0.8, thr 2)",
+        false, true);
+    add(registry, "hswoa", "HS-WOA (Cai and Du 2021): WOA, harmony second step and balance factor with reconstruction",
+        true, true);
 }
 
 }  // namespace pride::engine

@@ -1,5 +1,5 @@
 #pragma once
-// The HTML report's figures of a problem of several objectives (issue 28), from the fronts its
+// The HTML report's figures of a problem of several objectives, from the fronts its
 // runs stored: per algorithm the 25 %, 50 % and 75 % empirical attainment surfaces over its runs
 // (two objectives; framework/pareto/attainment.hpp, Fonseca et al.), the front of its median run
 // against the problem's reference front (the analytic front sampled, or a grid's exact front), and

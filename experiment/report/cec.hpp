@@ -1,5 +1,5 @@
 #pragma once
-// The CEC competitions' way of reporting (issue 26), for `pride report --format cec`: per problem
+// The CEC competitions' way of reporting, for `pride report --format cec`: per problem
 // and algorithm, the error f - f* of the best value so far at the end of the runs and at the
 // checkpoints the suite's technical report prescribes, as best / worst / median / mean / std over
 // the runs, errors below 1e-8 taken as 0. MaxFES is each run's evaluation budget.
@@ -24,7 +24,7 @@
 //   variance values of function error values for the 30 runs."
 //
 // Where pride decides:
-// - Errors below 1e-8 are 0 for both suites (the 2017 rule, as issue 26 asks); the 2022 report's
+// - Errors below 1e-8 are 0 for both suites (the 2017 rule, kept for both so that they compare); the 2022 report's
 //   "record 10^-8" would print such errors as 1e-8 instead. Runs do not stop at 1e-8 (a campaign
 //   spends its budget): since the best value so far never rises, every later checkpoint is below
 //   1e-8 too, so the tables are those of runs that stopped.

@@ -1,5 +1,5 @@
 #pragma once
-// The statistics a comparison of optimisers needs (the campaign report of issue 4): ranks with
+// The statistics a comparison of optimisers needs (the campaign report): ranks with
 // ties, the Wilcoxon rank-sum (Mann-Whitney U) test, Holm's step-down correction, and Friedman's
 // average ranks and test. The distributions come from Boost.Math; the formulas are those of
 // scipy.stats (mannwhitneyu with method="asymptotic", friedmanchisquare), against which

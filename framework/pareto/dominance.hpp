@@ -1,5 +1,5 @@
 #pragma once
-// Pareto dominance between objective vectors, every objective minimised (issue 28). A set of
+// Pareto dominance between objective vectors, every objective minimised. A set of
 // objective vectors is a Matrix with one column per point (M rows), as a population is.
 #include <Eigen/Core>
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-// Reference directions on the unit simplex (issue 28): the weight vectors of decomposition-based
+// Reference directions on the unit simplex: the weight vectors of decomposition-based
 // algorithms (MOEA/D: algorithms/moead.hpp; NSGA-III) and the lattice the DTLZ1-4 fronts are
 // sampled on (problems/multiobjective/fronts.hpp). The project's one simplex lattice.
 //

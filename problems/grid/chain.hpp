@@ -1,5 +1,5 @@
 #pragma once
-// The `chain` encoding of shared/spec/grid.md: the individual is the cell chain itself, searched
+// The `chain` encoding of docs/grid.md: the individual is the cell chain itself, searched
 // with discrete operators, not through a box. ChainSpace turns a GridProblem into a ChainProblem
 // (framework/chain.hpp), so the GA runs on paths without a line of grid code of its own:
 //   random_chain: the goal-biased random walk with taboo list and backtracking (walk.hpp);
@@ -10,17 +10,17 @@
 //                 replaced by a new random walk between the same two cells (spec: "mutation by
 //                 replacing the segment between two random cells of the path with a new random
 //                 feasible segment"); loops are cut.
-// Initial chains come from those random walks, or, with set_init(Walks::sitp), from file 002's SITP
+// Initial chains come from those random walks, or, with set_init(Walks::sitp), from Zhang et al.'s (2025) SITP
 // walks (sitp.hpp), whose transition-point band cycles 0, 1, 2 over the chains a space makes, so
 // that a population of N has N / 3 per band (step 1 of section 2.2).
-// The optional capabilities of framework/chain.hpp (file 002's IQGA operators, iqga_moves.hpp):
+// The optional capabilities of framework/chain.hpp (Zhang et al.'s (2025) IQGA operators, iqga_moves.hpp):
 //   region(c)                      eqs. 14-15, 0..2 (RegionOf);
 //   crossover_two_point(a, b, rng) fig. 7 (TwoPointCrossover);
 //   mutate(k, c, rng, badness)     section 2.4.3: 0 deletion, 1 mid-point, 2 turning point
 //                                  (NumberedMutations);
 //   regenerate(c, i, j, rng)       the SITP walk between c[i] and c[j] (SegmentRegeneration);
 //   length(c)                      the path's length, eq. 8 (ChainLength).
-// File 003's whale moves (whale_chain.hpp), for HS-WOA on grids:
+// Cai and Du's (2021) whale moves (whale_chain.hpp), for HS-WOA on grids:
 //   toward(c, t, w, rng)           c's section regenerated within a window around t's (TowardMoves);
 //   shorten(c)                     the space's shortcut on c (Shortening).
 // Every operator keeps the chain legal: joins happen at shared cells, walks take legal steps.
@@ -29,13 +29,13 @@
 // improves solutions belongs to the space, not to the algorithm that first used it):
 //   shortcut  none | line | elbow: applied to every chain an operator makes or changes (random
 //             chains, children, mutants, regenerated and moved chains), at no evaluation: `line` is
-//             grid.md's straight line-of-sight join (file 003), `elbow` this project's addition (a
+//             grid.md's straight line-of-sight join (Cai and Du 2021), `elbow` this project's addition (a
 //             one-turn octile elbow tried first, the straight line after); neither lengthens a
 //             chain. With keep_if_not_worse the shortened chain replaces the chain only when its
 //             objective is not higher, which costs two counted evaluations whenever it differs;
-//   walks     the random walk's bias (walk.hpp: file 003's eq. 10 or the octile exp rule);
-//   sitp      the transition column (random, as file 002's text under eq. 3 says, or eq. 3's
-//             midpoint) and how a segment's N/8 walks are ranked (by the objective, file 002's
+//   walks     the random walk's bias (walk.hpp: Cai and Du's (2021) eq. 10 or the octile exp rule);
+//   sitp      the transition column (random, as Zhang et al.'s (2025) text under eq. 3 says, or eq. 3's
+//             midpoint) and how a segment's N/8 walks are ranked (by the objective, Zhang et al.'s (2025)
 //             reading, each call a counted evaluation; or by length, no evaluation).
 // An operator that scores a chain by the objective does so only through the `score` it is given
 // (framework/counted_chain.hpp: the run's evaluation guard); the forms without it refuse to.

@@ -1,5 +1,5 @@
 #pragma once
-// Connector policies (shared/spec/grid.md): how the `line` and `free` encodings join two
+// Connector policies (docs/grid.md): how the `line` and `free` encodings join two
 // consecutive waypoints. Each gives the cells after `a` up to and including `b` as map indices
 // (a segment for LoopFreeChain): a straight line or a shortest path.
 #include <algorithm>

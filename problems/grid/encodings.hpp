@@ -1,5 +1,5 @@
 #pragma once
-// The `line` and `free` encodings of shared/spec/grid.md: a point in a box becomes a chain of
+// The `line` and `free` encodings of docs/grid.md: a point in a box becomes a chain of
 // cells through waypoints joined by a Connector policy. Both fit the framework's EncodingFor
 // concept unchanged, so Encoded<GridProblem<O>, LineEncoding<C>> is a BoxProblem and every box
 // algorithm (PSO, GA, NLopt) plans on grids without a line of grid code of its own.
@@ -44,7 +44,7 @@ void join_waypoints(const GridProblem<Objective>& p, int count, Waypoint&& waypo
     if (out.violations > 0) out.violations = count_violations(map, out.path, 1, p.corner_cutting());
 }
 
-/// Builds what the problem's walks need before any run starts: file 000's rule book is built once
+/// Builds what the problem's walks need before any run starts: Wan and Gao's (2022) rule book is built once
 /// per process at its first use, and building it here keeps that out of every run's clock.
 template <class Objective>
 void prepare_walks(const GridProblem<Objective>& p) {
@@ -93,7 +93,7 @@ inline int to_coordinate(double v, int extent) {
 /// Decoding rounds it, snaps a blocked (or unreachable) waypoint to the nearest reachable cell of
 /// the same line (ties: nearer the straight start-goal line, then the lower coordinate), joins
 /// start, waypoints and goal with the Connector, and cuts loops. The "serial-number" encoding of
-/// file 000.
+/// Wan and Gao (2022).
 template <class Connector = RepairConnector>
 class LineEncoding {
   public:

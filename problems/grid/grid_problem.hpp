@@ -45,10 +45,10 @@ inline std::vector<std::uint8_t> reachable_from(const GridMap& map, Cell start, 
     return seen;
 }
 
-/// Which walks the problem's suggested starting points are read off: file 000's rough-set rule
+/// Which walks the problem's suggested starting points are read off: Wan and Gao's (2022) rough-set rule
 /// walks (the default: what ILSO's initialiser asks the problem for) or the goal-biased random
-/// walk with taboo list (files 002 and 003), or file 002's SITP walks through a transition point
-/// (sitp.hpp).
+/// walk with taboo list (Zhang et al. (2025) and Cai and Du (2021)), or Zhang et al.'s (2025) SITP walks through a
+/// transition point (sitp.hpp).
 enum class Walks { rules, random, sitp };
 
 template <class Objective>

@@ -1,5 +1,5 @@
 #pragma once
-// File 002's IQGA operators on grid paths (sections 2.3-2.4; shared/spec/algorithms.md "IQGA"),
+// Zhang et al.'s (2025) IQGA operators on grid paths (sections 2.3-2.4; docs/algorithms.md "IQGA"),
 // which ChainSpace (chain.hpp) offers as the optional chain capabilities of framework/chain.hpp:
 //   region      eqs. 14-15: which of three regions of the start-goal rectangle a path lies in;
 //   crossover   fig. 7: two common cells of the parents are the cut points, the parts between them
@@ -12,9 +12,9 @@
 // step by step (free cell, legal step, corner rule), joins happen at shared cells, and loops are
 // cut (cut_loops, as the other chain operators do).
 //
-// Project decisions where file 002 and the spec are silent:
+// Project decisions where Zhang et al. (2025) are silent:
 //   - regions: the paper's eq. 15 assumes the start at the bottom left and its boundary constants
-//     contradict its own excluded points, so the spec's words decide: the two lines are parallel
+//     contradict its own excluded points, so the project's words decide: the two lines are parallel
 //     to the start-goal diagonal, shifted from it by l = floor(L / 2) along the axis of the
 //     shorter side (x when |dx| <= |dy|, the paper's first case). A cell strictly beyond a line is
 //     in region 0 (D1: right of the direction start -> goal, as drawn on the screen) or 1 (D2:

@@ -1,5 +1,5 @@
 #pragma once
-// The grid map of shared/spec/grid.md: H rows by W columns of free or blocked cells; a cell is
+// The grid map of docs/grid.md: H rows by W columns of free or blocked cells; a cell is
 // (x, y), x the column from the left, y the row from the first line of the file downwards (the
 // Moving AI convention). The papers' bottom-left numbering is only a conversion (paper_number,
 // from_paper_number), never a second convention inside the code.
@@ -153,7 +153,7 @@ class GridMap {
     /// The index offset of a step in direction d.
     std::ptrdiff_t offset(int d) const noexcept { return static_cast<std::ptrdiff_t>(kDy[d]) * width_ + kDx[d]; }
 
-    /// Obstacle inflation (file 003, section 3.1): every cell within Chebyshev distance r of a
+    /// Obstacle inflation (Cai and Du 2021, section 3.1): every cell within Chebyshev distance r of a
     /// blocked cell becomes blocked.
     GridMap inflated(int r) const {
         require(r >= 0, "inflate", "radius must be >= 0, got " + std::to_string(r));
@@ -178,7 +178,7 @@ class GridMap {
         return m;
     }
 
-    /// File 002 eq. 2 numbers cells from 0, left to right and bottom to top.
+    /// Eq. 2 of Zhang et al. (2025) numbers cells from 0, left to right and bottom to top.
     long paper_number(Cell c) const noexcept { return static_cast<long>(height_ - 1 - c.y) * width_ + c.x; }
     Cell from_paper_number(long g) const {
         require(g >= 0 && g < static_cast<long>(size()), name_, "paper cell number out of range: " + std::to_string(g));

@@ -1,5 +1,5 @@
 #pragma once
-// Reading maps and scenarios (shared/spec/grid.md, "Maps"). The map formats are told apart by
+// Reading maps and scenarios (docs/grid.md, "Maps"). The map formats are told apart by
 // their content, never by the file name:
 //   - Moving AI `.map`: `type octile`, `height H`, `width W`, `map` (in this order), then H lines of
 //     W characters; `.` `G` `S` are free, `@` `O` `T` `W` blocked.

@@ -1,6 +1,6 @@
 #pragma once
-// Grid planning with several objectives (issue 28): two to four of length, turns, angle penalty
-// (file 002's eqs. 8, 11 and 10) and clearance (clearance.hpp), in that order (pareto.hpp's
+// Grid planning with several objectives: two to four of length, turns, angle penalty
+// (Zhang et al.'s (2025) eqs. 8, 11 and 10) and clearance (clearance.hpp), in that order (pareto.hpp's
 // Criteria), the same criteria whose exact front ParetoSearch computes. Searched as a box through
 // an encoding (`line` or `free`, encodings.hpp): MultiObjectivePaths is a MultiObjectiveProblem
 // (framework/multi_objective.hpp), so every multi-objective algorithm plans on it unchanged.

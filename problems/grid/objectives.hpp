@@ -1,5 +1,5 @@
 #pragma once
-// The objectives of shared/spec/grid.md as policy types, all minimised. Each turns a path's
+// The objectives of docs/grid.md as policy types, all minimised. Each turns a path's
 // metrics into a value. The additive ones (all but iqga) also say what one step and one turn cost,
 // which is what the exact oracle searches over:
 //     value = start_cost() + sum over steps of step_cost(d) + sum over turns of turn_cost(k),
@@ -12,7 +12,7 @@
 
 namespace pride::grid {
 
-/// cells: the number of cells (file 000 eq. 13, f = d).
+/// cells: the number of cells (Wan and Gao 2022, eq. 13, f = d).
 struct CellsObjective {
     static constexpr std::string_view name = "cells";
     static constexpr bool additive = true;
@@ -24,7 +24,7 @@ struct CellsObjective {
     double turn_cost(int) const noexcept { return 0.0; }
 };
 
-/// length: the sum of step lengths (file 002 f1, eq. 8).
+/// length: the sum of step lengths (Zhang et al. (2025) f1, eq. 8).
 struct LengthObjective {
     static constexpr std::string_view name = "length";
     static constexpr bool additive = true;
@@ -37,7 +37,7 @@ struct LengthObjective {
 };
 
 /// weighted: w_len * length + w_turn * turns + w_angle * angle_penalty (grid.md's general form).
-/// The defaults (1, 1, 0.1) are this project's choice: the spec leaves the weights to the user.
+/// The defaults (1, 1, 0.1) are this project's choice: the papers leave the weights to the user.
 struct WeightedObjective {
     static constexpr std::string_view name = "weighted";
     static constexpr bool additive = true;
@@ -58,7 +58,7 @@ struct WeightedObjective {
     }
 };
 
-/// hswoa: length + lambda * turns (file 003 names length and turning points; its formula is lost).
+/// hswoa: length + lambda * turns (Cai and Du (2021) name length and turning points; its formula is lost).
 struct HswoaObjective {
     static constexpr std::string_view name = "hswoa";
     static constexpr bool additive = true;
@@ -106,7 +106,7 @@ struct LinearObjective {
     double bound(double cells) const noexcept { return cells * (w_cells + w_len * kSqrt2 + w_turn + 50.0 * w_angle); }
 };
 
-/// iqga: -(1/f1 + 1/f2 + 1/f3), f1 = length, f2 = angle_penalty, f3 = turns (file 002 eq. 12,
+/// iqga: -(1/f1 + 1/f2 + 1/f3), f1 = length, f2 = angle_penalty, f3 = turns (Zhang et al. 2025, eq. 12,
 /// maximised there, so negated here). A zero term reads as twice the reciprocal of the smallest
 /// positive value the term can take (grid.md): 1/f1 = 2, 1/f2 = 0.2, 1/f3 = 2. Not additive: the
 /// oracle does not apply.

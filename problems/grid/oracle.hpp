@@ -1,5 +1,5 @@
 #pragma once
-// The exact optimum of shared/spec/grid.md ("Exact optimum (the oracle)") for every additive
+// The exact optimum of docs/grid.md ("Exact optimum (the oracle)") for every additive
 // objective (cells, length, weighted, hswoa; not iqga): such an objective is
 //     start_cost() + sum over steps of step_cost(d) + sum over turns of turn_cost(k)
 // (objectives.hpp), so its optimum is a shortest path over the states (cell, direction of the last

@@ -1,6 +1,6 @@
 #pragma once
 // The exact Pareto front of a path's cost vector over a subset of {length, turns, angle_penalty,
-// clearance} (shared/spec/grid.md's metrics, clearance.hpp's clearance; shared/spec/cli.md's
+// clearance} (docs/grid.md's metrics, clearance.hpp's clearance; docs/cli.md's
 // `pride pareto`), by multi-objective label
 // setting (Martins' algorithm, with the octile distance guiding the length) over the oracle's
 // states (cell, direction of the last step), with the oracle's moves: 8-connected, no corner

@@ -1,5 +1,5 @@
 #pragma once
-// Paths on a grid (shared/spec/grid.md): the chain of cells from start to goal, consecutive cells
+// Paths on a grid (docs/grid.md): the chain of cells from start to goal, consecutive cells
 // one legal step apart; their five metrics; loop cutting; and the straight 8-connected cell line
 // that joins two distant cells.
 #include <algorithm>
@@ -22,14 +22,14 @@ inline constexpr double kSqrt2 = 1.4142135623730951;
 
 /// The five metrics of grid.md, for every path.
 struct PathMetrics {
-    int cells = 0;           // start and goal included (file 000 eq. 13)
-    double length = 0.0;     // sum of step lengths, 1 or sqrt(2) (file 002 eq. 8)
-    int turns = 0;           // interior cells where the direction changes (file 002 eq. 11)
+    int cells = 0;           // start and goal included (Wan and Gao 2022, eq. 13)
+    double length = 0.0;     // sum of step lengths, 1 or sqrt(2) (Zhang et al. 2025, eq. 8)
+    int turns = 0;           // interior cells where the direction changes (Zhang et al. 2025, eq. 11)
     int turn_angle_deg = 0;  // sum of the direction changes, multiples of 45
-    int angle_penalty = 0;   // sum of W(theta): 10 below 90, 20 at 90, 50 above (file 002 eq. 10)
+    int angle_penalty = 0;   // sum of W(theta): 10 below 90, 20 at 90, 50 above (Zhang et al. 2025, eq. 10)
 };
 
-/// W(theta) of file 002 eq. 10 for a turn of k * 45 degrees.
+/// W(theta) of eq. 10 of Zhang et al. (2025) for a turn of k * 45 degrees.
 inline constexpr int angle_penalty_of_turn(int k) {
     return k == 0 ? 0 : (k == 1 ? 10 : (k == 2 ? 20 : 50));
 }

@@ -1,7 +1,7 @@
 #pragma once
-// File 000 section 2.2 on this project's grid: the decision table "eight neighbours X1..X8 of the
+// Section 2.2 of Wan and Gao (2022) on this project's grid: the decision table "eight neighbours X1..X8 of the
 // current cell -> the move Y", reduced and minimised with the rough-set module
-// (shared/spec/algorithms.md, "Rough-set decision rules"). The walk (rule_walk.hpp) asks the minimal
+// (docs/algorithms.md, "Rough-set decision rules"). The walk (rule_walk.hpp) asks the minimal
 // rules through GridRuleBook::decide; the labelling policy below only builds the table.
 #include <array>
 #include <cmath>

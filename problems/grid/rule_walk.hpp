@@ -1,5 +1,5 @@
 #pragma once
-// Feasible paths from file 000's rough-set rules (section 2.2): a depth-first walk whose next cell
+// Feasible paths from Wan and Gao's (2022) rough-set rules (section 2.2): a depth-first walk whose next cell
 // is the move the minimal rules of grid_rule_book() prescribe for the current neighbourhood. Same
 // contract as RandomWalker (walk.hpp): a legal path that never repeats a cell, false exactly when the
 // goal cannot be reached, each cell entered at most once per walk.
@@ -51,7 +51,7 @@ class RuleWalker {
             if ((k == 2 && values[7] == kOpen) || (k == 3 && values[6] == kOpen)) {
                 if (rng.below(2) == 1) k = 10 - k;
             }
-            // Project decision: file 000 says only "backtrack", but a walk that backs up while a
+            // Project decision: Wan and Gao (2022) say only "backtrack", but a walk that backs up while a
             // backward-facing neighbour is still free and unvisited can strand itself at the start
             // with the goal reachable (a start in a pocket facing the goal), so "back" first tries
             // X4/X6 (drawn when both are open), then X5, and only then steps back one cell.

@@ -1,8 +1,8 @@
 #pragma once
-// SITP, file 002's "segmented intermediate transition point" initialisation (section 2.2, eqs.
-// 3-7; shared/spec/algorithms.md "IQGA"): a path from s to g through a transition point on the
+// SITP, Zhang et al.'s (2025) "segmented intermediate transition point" initialisation (section 2.2, eqs.
+// 3-7; docs/algorithms.md "IQGA"): a path from s to g through a transition point on the
 // column x_r, drawn in one of three bands of rows. x_r is "a random integer between the start's
-// and the end's x" as the text under eq. 3 says (随机整数; the spec follows the text): uniform
+// and the end's x" as the text under eq. 3 says (随机整数; the project's decision follows the text): uniform
 // over the columns from min(x_s, x_g) to max(x_s, x_g), both included; eq. 3's own formula,
 // floor((x_s + x_g) / 2), is the option `midpoint_column`. Each half (s to the
 // transition point, the transition point to g) is the best of `walks_per_segment` angle walks; the
@@ -15,7 +15,8 @@
 // one cell. So, like RandomWalker, it reaches the end whenever the end can be reached, entering
 // each cell at most once, and reports when it cannot.
 //
-// Project decisions where file 002 is silent or unclear (the spec says only "three bands of rows"):
+// Project decisions where Zhang et al. (2025) are silent or unclear (the project's decision says only "three bands of
+// rows"):
 //   - bands: eq. 3 splits rows by (y_s + y_e) / 3, which is a third of the rows only when the
 //     start is on row 0; the bands here are the three near-equal thirds of the rows from
 //     min(y_s, y_g) to max(y_s, y_g) (band b: rows lo + floor(b n / 3) .. lo + floor((b + 1) n / 3)

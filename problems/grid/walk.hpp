@@ -1,6 +1,6 @@
 #pragma once
 // Feasible random paths: a randomised walk with a taboo list and backtracking from dead ends
-// (file 003 section 3.2, file 002 step 2), biased towards the goal. A depth-first search whose
+// (Cai and Du 2021, section 3.2, Zhang et al. (2025) step 2), biased towards the goal. A depth-first search whose
 // next cell is drawn by roulette: every visited cell stays taboo, so the walk ends at the goal
 // whenever the goal can be reached, and reports when it cannot, after at most one visit per cell.
 #include <cmath>
@@ -71,8 +71,8 @@ class TabooRouletteWalk {
 };
 
 /// How a random walk weighs the neighbours it draws from.
-///   eq10:       file 003's eq. 10 as this project reads it (the text around the equation is lost;
-///               the spec says only "biased towards the goal"): the fitness of a neighbour n is
+///   eq10:       Cai and Du's (2021) eq. 10 as this project reads it (the text around the equation is lost;
+///               the project's decision says only "biased towards the goal"): the fitness of a neighbour n is
 ///               D - dist(n, goal), D the map's diagonal sqrt(W^2 + H^2) and dist the Euclidean
 ///               distance, used as its roulette weight (always > 0: no cell is D from another);
 ///   octile_exp: this project's earlier stand-in, exp(-bias * (the change of the octile distance

@@ -1,9 +1,9 @@
 #pragma once
-// File 003's whale moves on chains (shared/spec/algorithms.md, HS-WOA on grids): the operators
+// Cai and Du's (2021) whale moves on chains (docs/algorithms.md, HS-WOA on grids): the operators
 // behind framework/chain.hpp's TowardMoves and Shortening capabilities, which ChainSpace offers.
 //   shortcut(c)          the line-of-sight shortcut: scan from the start and join each cell to the
 //                        farthest later cell it can reach by a legal join, then cut loops. The
-//                        join is grid.md's straight cell line (file 003's line of sight); with
+//                        join is grid.md's straight cell line (Cai and Du's (2021) line of sight); with
 //                        `elbows` (this project's addition) an octile elbow (diagonal run then
 //                        straight run, or the other way round: at most one turn) is tried first
 //                        (all three are as short, and the straight line of a slope other than 0,
@@ -17,12 +17,12 @@
 //                        on to c's last cell of the section, that stay inside a window around t's
 //                        section (its bounding box grown by `margin` cells) whenever they can;
 //                        loops are cut. t may be c itself (a perturbation around c's own section).
-// Decided here where the spec is open: the section is at least two steps of c; "inside a window
+// Decided here where the papers are open: the section is at least two steps of c; "inside a window
 // when possible" weights a step leaving the window 1e-9 times one that stays (so the walk, a
 // complete depth-first search, still always arrives, and leaves the window only when it must);
 // within the window the steps are biased towards the leg's end as RandomWalker's octile rule is
 // (bias 2), whatever rule makes new chains (`walks`): eq. 10's weak pull wanders inside the window,
-// and measured on file 003's env1-env3 (docs/results/file003.md's campaigns) it made the whales
+// and measured on Cai and Du's (2021) env1-env3 (docs/results/cai2021.md's campaigns) it made the whales
 // 5-15x slower and rarer to find the shortest length (env1, woa: 56 % of runs to 10 %).
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// What every multi-objective box problem here shares (issue 28): its box, its number of
+// What every multi-objective box problem here shares: its box, its number of
 // objectives, and the limits on their sizes. Each problem is then one small class adding its
 // formula (zdt.hpp, dtlz.hpp); fronts.hpp samples their analytic Pareto fronts.
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// The multi-objective box problems by name (issue 28): ZDT1-4, 6 and DTLZ1-7 as one type, so that
+// The multi-objective box problems by name: ZDT1-4, 6 and DTLZ1-7 as one type, so that
 // each multi-objective algorithm is compiled once for all of them (as continuous::Function is one
 // type for the single-objective catalog). The problem is chosen once, when it is built; a batch
 // dispatches once, a single point once per evaluation (a switch over twelve cases, no virtual call).

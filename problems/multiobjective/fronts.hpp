@@ -1,6 +1,6 @@
 #pragma once
 // The analytic Pareto fronts of the ZDT and DTLZ problems (zdt.hpp, dtlz.hpp), sampled, and the
-// distance of a point to them (issue 28).
+// distance of a point to them.
 //
 //   Matrix reference_front(name, M, points)   M rows, one column per point of the front
 //   Matrix reference_front(problem, points)   the same for a problem object (its name and M)

@@ -182,7 +182,7 @@ def plan_front(grid, start, goal, *, algo="nsga2", objectives="length,turns", en
     """A multi-objective run on a grid, as ``pride front --map``: ``objectives`` two to four of
     length, turns, angle and clearance, searched through the ``line`` or ``free`` encoding, or on
     cell chains with ``encoding="chain"`` (nsga2 and nsga3: crossover at a common cell, the GA's and
-    IQGA's mutations; ``init="sitp"`` for file 002's SITP walks, else random walks). The
+    IQGA's mutations; ``init="sitp"`` for Zhang et al.'s (2025) SITP walks, else random walks). The
     result has ``f`` (n, M), ``paths`` (a list of (k, 2) arrays of (x, y)), ``legal`` (n,) and,
     unless ``reference=False``, ``quality`` against the exact front (``exact_found``: how many of
     its points the run found)."""

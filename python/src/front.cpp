@@ -1,4 +1,4 @@
-// pride.front and pride.plan_front (issue 28): multi-objective runs from Python, on a catalog
+// pride.front and pride.plan_front: multi-objective runs from Python, on a catalog
 // problem, a Python function of M objectives, or a grid with several criteria; the result as
 // numpy arrays (one row per point), with its quality against the problem's reference front.
 #include <cstring>

@@ -1,4 +1,4 @@
-"""Issue 25 from Python: a Campaign resumed on another problem under the same id (another Grid,
+"""No silent mixing, from Python: a Campaign resumed on another problem under the same id (another Grid,
 other bounds) is refused rather than answered "already"; a damaged store is refused before it is
 trusted; names with control characters are refused as the campaign files refuse them."""
 import numpy as np

@@ -68,7 +68,7 @@ def test_scalar_vectorized_and_ask_tell_are_one_run():
 
 @pytest.mark.parametrize("encoding, init", [("free", None), ("chain", None), ("chain", "sitp")])
 def test_a_grid_front_holds_legal_paths_scored_as_paths(encoding, init):
-    g = pride.Grid.load(os.path.join(MAPS, "file002-20x20.map"))
+    g = pride.Grid.load(os.path.join(MAPS, "zhang2025-20x20.map"))
     r = pride.plan_front(g, (0, 0), (19, 19), objectives=["length", "turns", "clearance"], encoding=encoding,
                          init=init, evals=20000)
     exact = pride.pareto(g, (0, 0), (19, 19), objectives="length,turns,clearance")
@@ -133,7 +133,7 @@ def test_a_users_exception_comes_through_unchanged():
 
 
 def test_a_python_campaign_stores_multiobjective_runs(tmp_path):
-    grid = pride.Grid.load(os.path.join(MAPS, "file002-20x20.map"))
+    grid = pride.Grid.load(os.path.join(MAPS, "zhang2025-20x20.map"))
     c = pride.Campaign("mo", seeds=2, evals=1500, algorithms=["nsga2"],
                        problems=[{"id": "zdt1", "problem": "zdt1"},
                                  {"id": "dtlz1", "problem": "dtlz1", "objectives": 4},

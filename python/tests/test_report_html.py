@@ -8,7 +8,7 @@ import pytest
 import pride
 from conftest import REPO, cli
 
-MAP = REPO / "examples" / "maps" / "file002-20x20.map"
+MAP = REPO / "examples" / "maps" / "zhang2025-20x20.map"
 
 
 @pytest.fixture(scope="module")

@@ -1,7 +1,7 @@
-"""The results pages docs/results/file002.md and docs/results/file003.md say what their committed
+"""The results pages docs/results/zhang2025.md and docs/results/cai2021.md say what their committed
 data give: every generated block of a page (between `<!-- generated: NAME -->` and `<!-- end
 generated: NAME -->`) is rendered again from the compact stores in docs/results/data/ by the scripts
-that wrote it (scripts/results_pages.py, file002_tables.py, file003_tables.py) and compared with the
+that wrote it (scripts/results_pages.py, zhang2025_tables.py, cai2021_tables.py) and compared with the
 page's text, so that neither can change without the other. Needs nothing but the repository (no
 build, no pride, no scipy); the full regeneration, which runs the campaigns, is the documented
 command `/usr/bin/python3 scripts/results_pages.py`, not a test."""
@@ -16,11 +16,11 @@ import pytest
 REPO = pathlib.Path(os.environ.get("PRIDE_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 sys.path.insert(0, str(REPO / "scripts"))
 
-import file002_tables  # noqa: E402
-import file003_tables  # noqa: E402
+import zhang2025_tables  # noqa: E402
+import cai2021_tables  # noqa: E402
 import results_pages as rp  # noqa: E402
 
-PROBLEMS = {**file002_tables.PROBLEMS, **file003_tables.PROBLEMS}
+PROBLEMS = {**zhang2025_tables.PROBLEMS, **cai2021_tables.PROBLEMS}
 
 
 @pytest.mark.parametrize("page", sorted(rp.PAGES))
@@ -76,7 +76,7 @@ def test_every_stored_path_is_legal():
                 for (x0, y0), (x1, y1) in zip(cells, cells[1:]):
                     assert grid[y1][x1] == "." and grid[y0][x1] == "." and grid[y1][x0] == ".", \
                         (name, r.problem, r.algorithm, r.seed, (x1, y1))
-                if name.startswith("file003"):
+                if name.startswith("cai2021"):
                     assert abs(r.best - (r.length + r.turns)) < 1e-9, (name, r.problem, r.algorithm, r.seed)
 
 
@@ -89,12 +89,12 @@ def test_the_same_run_in_two_stores_is_the_same():
         return {(r.problem, r.seed): (r.best, r.evaluations, r.iterations, r.conv_iter, r.conv_evals, r.path)
                 for r in rp.read_campaign(name, data) if r.algorithm == algorithm}
 
-    pairs = [(("file002", "iqga"), ("file002-iqga", "iqga")),
-             (("file002", "ga"), ("file002-generations", "ga")),  # 7,840 evaluations are its 200 generations
-             (("file003-sweep", "thr2"), ("file003-ablation", "hswoa")),
-             (("file003-sweep-iterations", "thr2"), ("file003-ablation-iterations", "hswoa")),
-             (("file003-ablation", "woa"), ("file003-ablation-iterations", "woa")),  # 1,020 evaluations = 50 iterations
-             (("file003-envs", "woa"), ("file003-envs-iterations", "woa"))]
+    pairs = [(("zhang2025", "iqga"), ("zhang2025-iqga", "iqga")),
+             (("zhang2025", "ga"), ("zhang2025-generations", "ga")),  # 7,840 evaluations are its 200 generations
+             (("cai2021-sweep", "thr2"), ("cai2021-ablation", "hswoa")),
+             (("cai2021-sweep-iterations", "thr2"), ("cai2021-ablation-iterations", "hswoa")),
+             (("cai2021-ablation", "woa"), ("cai2021-ablation-iterations", "woa")),  # 1,020 evaluations = 50 iterations
+             (("cai2021-envs", "woa"), ("cai2021-envs-iterations", "woa"))]
     for a, b in pairs:
         x, y = runs(*a), runs(*b)
         assert x and x == y, (a, b)

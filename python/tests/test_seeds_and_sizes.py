@@ -1,5 +1,5 @@
 """Seeds over the command line's whole range, sizes checked before anything of that size is built,
-and the smaller contracts of issue 25: a campaign's target is a finite number, ask() after the end
+and the smaller contracts of the module: a campaign's target is a finite number, ask() after the end
 is refused as tell() is, a run that found nothing finite has no best point, ids are not empty."""
 import math
 import os

@@ -27,7 +27,7 @@ class F1 : public BbobFunction {
     }
     /// evaluate() on two points at a time, their sums interleaved: each is still one chain of
     /// additions in COCO's order (the same bits), but the two chains overlap. Point by point, the
-    /// batch route was 1.2x slower than the scalar one at D = 40 (issue 30), the overlap of one
+    /// batch route was 1.2x slower than the scalar one at D = 40, the overlap of one
     /// point's chain with the next depending on the code around the loop.
     void evaluate_batch(MatrixView points, std::span<double> values) noexcept {
         const auto n = static_cast<std::size_t>(points.rows());

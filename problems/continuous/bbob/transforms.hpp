@@ -58,7 +58,7 @@ inline void shift(std::span<const double> x, std::span<const double> offset, std
 /// column j (M is stored by columns) to every out[i] at once: D independent sums that vectorise,
 /// where the row-by-row loop was one chain of D dependent additions per row, whose speed depended on
 /// where the compiler placed it (the batch route was 1.3x slower than the scalar one at D = 40 on
-/// f6, f12 and f13: issue 30). Out of line, so the scalar and batch routes run this one copy.
+/// f6, f12 and f13). Out of line, so the scalar and batch routes run this one copy.
 [[gnu::noinline]] inline void affine(const AffineMatrix& m, std::span<const double> x, std::span<double> out,
                                      double b = 0.0) noexcept {
     const auto n = static_cast<Eigen::Index>(x.size());

@@ -142,7 +142,7 @@ class F23 : public BbobFunction {
   public:
     static constexpr int id = 23;
     /// 2^j for j = 0..32, made once: the same bits as std::pow(2.0, j) (powers of two are exact),
-    /// which COCO calls 32 D times per evaluation (issue 30: 5x faster than the calls).
+    /// which COCO calls 32 D times per evaluation (5x faster than the calls).
     static constexpr std::array<double, 33> powers_of_two = [] {
         std::array<double, 33> p{};
         double v = 1.0;

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The generated blocks of docs/results/file003.md (file 003's tables 1 and 3-6 with the exact
+"""The generated blocks of docs/results/cai2021.md (Cai and Du's (2021) tables 1 and 3-6 with the exact
 optimum beside them, the tests of its claims, processor times), from the compact stores in
 docs/results/data/ that scripts/results_pages.py writes. Usage:
 
-    /usr/bin/python3 scripts/file003_tables.py [DATA_DIR]     # prints every block
+    /usr/bin/python3 scripts/cai2021_tables.py [DATA_DIR]     # prints every block
 
 Columns, per (map, algorithm) over its runs: the hswoa value (length + turns) of the final path,
 mean and standard deviation; its length (least, mean) and turns (mean), measured from the cells
@@ -25,13 +25,13 @@ import tempfile
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import results_pages as rp  # noqa: E402
-from file002_tables import regeneration_table  # noqa: E402
+from zhang2025_tables import regeneration_table  # noqa: E402
 
 PROBLEMS = {
-    "map50": ("examples/maps/file003-50x50.map", "0,49", "49,0"),
-    "env1": ("examples/maps/file003-env1-30x30.map", "0,29", "29,0"),
-    "env2": ("examples/maps/file003-env2-30x30.map", "0,29", "29,0"),
-    "env3": ("examples/maps/file003-env3-60x60.map", "0,59", "59,0"),
+    "map50": ("examples/maps/cai2021-50x50.map", "0,49", "49,0"),
+    "env1": ("examples/maps/cai2021-env1-30x30.map", "0,29", "29,0"),
+    "env2": ("examples/maps/cai2021-env2-30x30.map", "0,29", "29,0"),
+    "env3": ("examples/maps/cai2021-env3-60x60.map", "0,59", "59,0"),
 }
 SWEEP = ["thr0", "thr1", "thr2", "thr3", "thr4", "thr6", "balance0.5", "balance0.6", "balance0.7", "balance0.9",
          "pop10", "pop30", "pop40", "pop50"]
@@ -177,25 +177,25 @@ def cpu_table(meta):
 
 
 def blocks(campaigns, meta):
-    gs, gsi = group(campaigns["file003-sweep"]), group(campaigns["file003-sweep-iterations"])
-    ga, gai = group(campaigns["file003-ablation"]), group(campaigns["file003-ablation-iterations"])
-    ge = group(campaigns["file003-envs"])
-    gei = group(campaigns["file003-envs-iterations"])
+    gs, gsi = group(campaigns["cai2021-sweep"]), group(campaigns["cai2021-sweep-iterations"])
+    ga, gai = group(campaigns["cai2021-ablation"]), group(campaigns["cai2021-ablation-iterations"])
+    ge = group(campaigns["cai2021-envs"])
+    gei = group(campaigns["cai2021-envs-iterations"])
     return {
-        "file003-regeneration": regeneration_table(meta),
-        "file003-references": references_table(meta),
-        "file003-sweep-equal": value_table(gs, "map50", SWEEP, "thr2", meta),
-        "file003-sweep-iterations": value_table(gsi, "map50", SWEEP, "thr2", meta),
-        "file003-sweep-tests": sweep_tests(gs, gsi),
-        "file003-ablation-equal": value_table(ga, "map50", ABLATION, "hswoa", meta),
-        "file003-ablation-iterations": value_table(gai, "map50", ABLATION, "hswoa", meta),
-        "file003-ablation-tests": ablation_tests(ga, gai),
-        "file003-envs-equal": "\n\n".join(value_table(ge, p, ENVS, "hswoa", meta) for p in ("env1", "env2", "env3")),
-        "file003-envs-iterations": "\n\n".join(value_table(gei, p, ENVS, "hswoa", meta)
+        "cai2021-regeneration": regeneration_table(meta),
+        "cai2021-references": references_table(meta),
+        "cai2021-sweep-equal": value_table(gs, "map50", SWEEP, "thr2", meta),
+        "cai2021-sweep-iterations": value_table(gsi, "map50", SWEEP, "thr2", meta),
+        "cai2021-sweep-tests": sweep_tests(gs, gsi),
+        "cai2021-ablation-equal": value_table(ga, "map50", ABLATION, "hswoa", meta),
+        "cai2021-ablation-iterations": value_table(gai, "map50", ABLATION, "hswoa", meta),
+        "cai2021-ablation-tests": ablation_tests(ga, gai),
+        "cai2021-envs-equal": "\n\n".join(value_table(ge, p, ENVS, "hswoa", meta) for p in ("env1", "env2", "env3")),
+        "cai2021-envs-iterations": "\n\n".join(value_table(gei, p, ENVS, "hswoa", meta)
                                                for p in ("env1", "env2", "env3")),
-        "file003-envs-tests": envs_tests(ge, gei),
-        "file003-settings-tests": settings_tests(ge),
-        "file003-cpu": cpu_table(meta),
+        "cai2021-envs-tests": envs_tests(ge, gei),
+        "cai2021-settings-tests": settings_tests(ge),
+        "cai2021-cpu": cpu_table(meta),
     }
 
 
@@ -233,17 +233,17 @@ def extras(pride, stores, img):
                 ms[pid][col] = round(1000.0 * (cpu[1] - cpu[0]) / CPU_RUNS, 2)
     cpu = {"columns": columns, "ms": ms, "watch": watch.stop()}
     with tempfile.TemporaryDirectory() as tmp:
-        rp.run([pride, "report", stores / "file003-envs.sqlite", "--plots", tmp])
+        rp.run([pride, "report", stores / "cai2021-envs.sqlite", "--plots", tmp])
         for pid in ("env1", "env2", "env3"):
             for kind in ("convergence", "paths"):
-                shutil.copyfile(pathlib.Path(tmp) / f"{pid}-{kind}.png", img / f"file003-{pid}-{kind}.png")
+                shutil.copyfile(pathlib.Path(tmp) / f"{pid}-{kind}.png", img / f"cai2021-{pid}-{kind}.png")
     with tempfile.TemporaryDirectory() as tmp:
-        rp.run([pride, "report", stores / "file003-ablation.sqlite", "--plots", tmp])
-        shutil.copyfile(pathlib.Path(tmp) / "map50-convergence.png", img / "file003-map50-convergence.png")
+        rp.run([pride, "report", stores / "cai2021-ablation.sqlite", "--plots", tmp])
+        shutil.copyfile(pathlib.Path(tmp) / "map50-convergence.png", img / "cai2021-map50-convergence.png")
     return {"references": refs, "cpu": cpu}
 
 
 if __name__ == "__main__":
     data = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else rp.DATA
-    for name, text in rp.render("file003", data).items():
+    for name, text in rp.render("cai2021", data).items():
         print(f"{rp.begin(name)}\n{text}\n{rp.end(name)}\n")

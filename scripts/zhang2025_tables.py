@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The generated blocks of docs/results/file002.md (file 002's tables 5 and 6, IQGA's readings and
+"""The generated blocks of docs/results/zhang2025.md (Zhang et al.'s (2025) tables 5 and 6, IQGA's readings and
 ablation, the exact references), from the compact stores in docs/results/data/ that
 scripts/results_pages.py writes. Usage:
 
-    /usr/bin/python3 scripts/file002_tables.py [DATA_DIR]     # prints every block
+    /usr/bin/python3 scripts/zhang2025_tables.py [DATA_DIR]     # prints every block
 
 Definitions, per map and algorithm, means over the runs: evaluations (every objective call, IQGA's
 SITP walk scores included); generations (iterations after the initial population); length, turn
@@ -25,13 +25,13 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import results_pages as rp  # noqa: E402
 
 PROBLEMS = {
-    "file002-20x20": ("examples/maps/file002-20x20.map", "0,19", "19,0"),
-    "file002-40x40": ("examples/maps/file002-40x40.map", "1,38", "38,1"),
+    "zhang2025-20x20": ("examples/maps/zhang2025-20x20.map", "0,19", "19,0"),
+    "zhang2025-40x40": ("examples/maps/zhang2025-40x40.map", "1,38", "38,1"),
 }
 ORDER = ["ga", "iaga", "icga", "iqga", "iqga-midpoint"]
 VARIANTS = [  # (id, what it changes) in the order of the table
     ("iqga", "the default: random column, pm 0.1, SITP walks ranked by the objective"),
-    ("iqga-midpoint", "`sitp_column=midpoint` (eq. 3's formula; the pages' reading before issue 23)"),
+    ("iqga-midpoint", "`sitp_column=midpoint` (eq. 3's formula; the reading of earlier versions of the pages)"),
     ("iqga-pm1", "`pm=1` (every child mutated, section 2.4's reading)"),
     ("iqga-midpoint-pm1", "`sitp_column=midpoint pm=1`"),
     ("iqga-score-length", "`sitp_score=length` (SITP ranks its walks by length, at no evaluation)"),
@@ -202,15 +202,15 @@ def regeneration_table(meta):
 
 def blocks(campaigns, meta):
     return {
-        "file002-regeneration": regeneration_table(meta),
-        "file002-references": references_table(meta),
-        "file002-init": init_table(meta),
-        "file002-equal": main_table(campaigns["file002"], meta),
-        "file002-generations": main_table(campaigns["file002-generations"], meta),
-        "file002-stats-equal": stats_table(campaigns["file002"]),
-        "file002-stats-generations": stats_table(campaigns["file002-generations"]),
-        "file002-tests": claims_tests(campaigns["file002"], campaigns["file002-generations"]),
-        "file002-iqga": variants_table(campaigns["file002-iqga"], meta),
+        "zhang2025-regeneration": regeneration_table(meta),
+        "zhang2025-references": references_table(meta),
+        "zhang2025-init": init_table(meta),
+        "zhang2025-equal": main_table(campaigns["zhang2025"], meta),
+        "zhang2025-generations": main_table(campaigns["zhang2025-generations"], meta),
+        "zhang2025-stats-equal": stats_table(campaigns["zhang2025"]),
+        "zhang2025-stats-generations": stats_table(campaigns["zhang2025-generations"]),
+        "zhang2025-tests": claims_tests(campaigns["zhang2025"], campaigns["zhang2025-generations"]),
+        "zhang2025-iqga": variants_table(campaigns["zhang2025-iqga"], meta),
     }
 
 
@@ -241,7 +241,7 @@ def extras(pride, stores, img):
         import io
         out["init_table"] = {"rows": [r for r in csv.DictReader(io.StringIO(p.stdout)) if r["part"] == "init"]}
     with tempfile.TemporaryDirectory() as tmp:
-        rp.run([pride, "report", stores / "file002.sqlite", "--plots", tmp])
+        rp.run([pride, "report", stores / "zhang2025.sqlite", "--plots", tmp])
         for pid in PROBLEMS:
             for kind in ("convergence", "final", "paths"):
                 shutil.copyfile(pathlib.Path(tmp) / f"{pid}-{kind}.png", img / f"{pid}-{kind}.png")
@@ -250,5 +250,5 @@ def extras(pride, stores, img):
 
 if __name__ == "__main__":
     data = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else rp.DATA
-    for name, text in rp.render("file002", data).items():
+    for name, text in rp.render("zhang2025", data).items():
         print(f"{rp.begin(name)}\n{text}\n{rp.end(name)}\n")

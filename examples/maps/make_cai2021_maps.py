@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Makes file 003's three environments (tables 4-6): file003-env1-30x30.map, file003-env2-30x30.map
-and file003-env3-60x60.map, with their .map.scen files (optimal length by check_maps.py's Dijkstra).
+"""Makes Cai and Du's (2021) three environments (tables 4-6): cai2021-env1-30x30.map, cai2021-env2-30x30.map
+and cai2021-env3-60x60.map, with their .map.scen files (optimal length by check_maps.py's Dijkstra).
 
-    python3 make_file003_maps.py        # rewrites the six files next to this script
+    python3 make_cai2021_maps.py        # rewrites the six files next to this script
 
 The paper's maps are pictures we do not have; its text says environment 2 has the size of
 environment 1 with more obstacles and narrower passages, and environment 3 is larger and denser.
@@ -12,7 +12,7 @@ Our reading (sizes and coverages are ours):
         2 cells at random rows, so every path threads narrow passages;
   env3: 60 x 60, rectangles 1 to 5 cells a side until 30 % of the cells are blocked.
 Start at the bottom-left cell, goal at the top-right one (paper (1, 1) to (W, H)), their 3 x 3
-neighbourhoods kept free, as on file003-50x50.map. Each map comes from Python's random.Random with
+neighbourhoods kept free, as on cai2021-50x50.map. Each map comes from Python's random.Random with
 the seed below; a draw whose goal cannot be reached is thrown away and drawing goes on (the printed
 attempt counts say how many), so the files are the same on every run.
 """
@@ -82,16 +82,16 @@ def write(name, w, h, blocked, free, length, attempt):
 def main():
     env1 = lambda rng, b: rectangles(rng, 30, 30, b, 0.15, 3)
     blocked1, free1, length1, attempt1 = draw(3001, 30, 30, env1)
-    write("file003-env1-30x30.map", 30, 30, blocked1, free1, length1, attempt1)
+    write("cai2021-env1-30x30.map", 30, 30, blocked1, free1, length1, attempt1)
 
     def env2(rng, b):
         for y in range(30):
             b[y][:] = blocked1[y]
         walls(rng, 30, 30, b)
 
-    write("file003-env2-30x30.map", 30, 30, *draw(3002, 30, 30, env2))
+    write("cai2021-env2-30x30.map", 30, 30, *draw(3002, 30, 30, env2))
     env3 = lambda rng, b: rectangles(rng, 60, 60, b, 0.30, 5)
-    write("file003-env3-60x60.map", 60, 60, *draw(3003, 60, 60, env3))
+    write("cai2021-env3-60x60.map", 60, 60, *draw(3003, 60, 60, env3))
 
 
 if __name__ == "__main__":
