@@ -1,11 +1,11 @@
 #pragma once
 // NSGA-III (Deb and Jain 2014): the NSGA-II skeleton (algorithms/nsga2.hpp) with the survival by
-// reference directions (algorithms/parts/nsga3_survival.hpp), and the paper's settings.
+// reference directions (algorithms/parts/nsga3/survival.hpp), and the paper's settings.
 #include <cstdint>
 #include <utility>
 
 #include "algorithms/nsga2.hpp"
-#include "algorithms/parts/nsga3_survival.hpp"
+#include "algorithms/parts/nsga3/survival.hpp"
 
 namespace pride {
 
