@@ -44,10 +44,10 @@
 #include <variant>
 #include <vector>
 
-#include "algorithms/parts/cma_restarts.hpp"
-#include "algorithms/parts/cma_search.hpp"
-#include "algorithms/parts/cma_stopping.hpp"
-#include "algorithms/parts/run_setup.hpp"
+#include "algorithms/parts/cma/restarts.hpp"
+#include "algorithms/parts/cma/search.hpp"
+#include "algorithms/parts/cma/stopping.hpp"
+#include "algorithms/parts/common/run_setup.hpp"
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Differential evolution: one skeleton for DE, jDE, JADE, SHADE, L-SHADE and jSO, the variable
-// parts policies (algorithms/parts/de_mutation.hpp, de_control.hpp, de_population.hpp,
+// parts policies (algorithms/parts/de/mutation.hpp, de_control.hpp, de_population.hpp,
 // de_archive.hpp; their comments hold the equations (M1)-(M5), (C), (R), (P1)-(P5), (U1)-(U4),
 // (S1)-(S3), (L) with their papers).
 //
@@ -61,11 +61,11 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/parts/de_archive.hpp"
-#include "algorithms/parts/de_control.hpp"
-#include "algorithms/parts/de_mutation.hpp"
-#include "algorithms/parts/de_population.hpp"
-#include "algorithms/parts/run_setup.hpp"
+#include "algorithms/parts/de/archive.hpp"
+#include "algorithms/parts/de/control.hpp"
+#include "algorithms/parts/de/mutation.hpp"
+#include "algorithms/parts/de/population.hpp"
+#include "algorithms/parts/common/run_setup.hpp"
 #include "framework/bounds.hpp"
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"
@@ -75,18 +75,10 @@
 #include "framework/result.hpp"
 #include "framework/run_state.hpp"
 #include "framework/termination.hpp"
+#include "framework/visit_policy.hpp"
 
 namespace pride {
 namespace de {
-
-/// The policy itself, or each alternative of a OneOf.
-template <class Policy, class F>
-decltype(auto) visit(const Policy& policy, F&& f) {
-    if constexpr (requires { policy.visit(f); })
-        return policy.visit(f);
-    else
-        return f(policy);
-}
 
 /// What start_box_run needs to draw the initial population of N_init (run_setup.hpp).
 template <class Init>
@@ -152,19 +144,19 @@ class De {
     /// The smallest N_init the mutation and the reduction work with.
     std::int64_t min_population() const {
         std::int64_t least = 0;
-        de::visit(mutation, [&](const auto& m) { least = std::decay_t<decltype(m)>::min_population; });
-        de::visit(reduction, [&](const auto& r) { least = std::max(least, r.min_population()); });
+        visit_policy(mutation, [&](const auto& m) { least = std::decay_t<decltype(m)>::min_population; });
+        visit_policy(reduction, [&](const auto& r) { least = std::max(least, r.min_population()); });
         return least;
     }
 
     void validate() const {
         std::int64_t by_strategy = 0, by_reduction = 0;
         std::string strategy;
-        de::visit(mutation, [&](const auto& m) {
+        visit_policy(mutation, [&](const auto& m) {
             by_strategy = std::decay_t<decltype(m)>::min_population;
             strategy = std::decay_t<decltype(m)>::name;
         });
-        de::visit(reduction, [&](const auto& r) { by_reduction = r.min_population(); });
+        visit_policy(reduction, [&](const auto& r) { by_reduction = r.min_population(); });
         require(population >= 0, name(),
                 "pop must be 0 (the paper's rule) or positive, got " + std::to_string(population));
         require(population == 0 || population >= by_strategy, name(),
@@ -176,9 +168,9 @@ class De {
         require(population == 0 || population >= by_reduction, name(),
                 "pop must be 0 (the paper's rule) or >= n_min = " + std::to_string(by_reduction) +
                     " (the population size reduction's floor), got " + std::to_string(population));
-        de::visit(mutation, [&](const auto& m) { m.validate(name()); });
-        de::visit(control, [&](const auto& c) { c.validate(name()); });
-        de::visit(reduction, [&](const auto& r) { r.validate(name()); });
+        visit_policy(mutation, [&](const auto& m) { m.validate(name()); });
+        visit_policy(control, [&](const auto& c) { c.validate(name()); });
+        visit_policy(reduction, [&](const auto& r) { r.validate(name()); });
         archive.validate(name());
     }
 
@@ -186,7 +178,7 @@ class De {
     std::int64_t initial_population(std::size_t dim) const {
         if (population > 0) return population;
         std::int64_t n = 0;
-        de::visit(size, [&](const auto& s) { n = s(dim); });
+        visit_policy(size, [&](const auto& s) { n = s(dim); });
         return std::max(n, min_population());
     }
 
@@ -194,9 +186,9 @@ class De {
     bool needs_evaluation_limit() const {
         bool scheduled = false;
         auto check = [&](const auto& p) { scheduled = scheduled || std::decay_t<decltype(p)>::scheduled; };
-        de::visit(mutation, check);
-        de::visit(control, check);
-        de::visit(reduction, check);
+        visit_policy(mutation, check);
+        visit_policy(control, check);
+        visit_policy(reduction, check);
         return scheduled;
     }
 
@@ -206,7 +198,7 @@ class De {
         const auto n = static_cast<double>(initial_population(dim));
         const auto a = static_cast<double>(archive.storage(static_cast<std::size_t>(initial_population(dim))));
         std::int64_t slots = 0;
-        de::visit(control, [&](const auto& c) { slots = c.memory_slots(); });
+        visit_policy(control, [&](const auto& c) { slots = c.memory_slots(); });
         const double d = static_cast<double>(dim);
         return 8.0 * ((2.0 * n + a) * d + 12.0 * n + 2.0 * static_cast<double>(slots) + 4.0 * d);
     }
@@ -238,7 +230,7 @@ class De {
         std::vector<char> replaced(n0);
         de::Archive archived(dim, n0, archive);
         de::Adaptation adaptation;
-        de::visit(control, [&](const auto& c) { c.start(adaptation, n0); });
+        visit_policy(control, [&](const auto& c) { c.start(adaptation, n0); });
         de::Successes successes(n0);
         const std::int64_t limit = termination.max_evaluations.value_or(0);
 
@@ -247,16 +239,16 @@ class De {
             const de::Spent spent{state.progress().evaluations, limit};
             const auto order_n = std::span<std::size_t>(order).first(n);
             std::size_t leading = 0;
-            de::visit(mutation, [&](const auto& m) { leading = m.ranked(n, spent); });
+            visit_policy(mutation, [&](const auto& m) { leading = m.ranked(n, spent); });
             de::rank(fx, order_n, leading);  // (1)
             // The draws of (2) and (3) come from a local copy of the generator, put back after:
             // its state stays in registers (the same draws in the same order).
             Rng local = rng;
-            de::visit(control, [&](const auto& c) {  // (2)
+            visit_policy(control, [&](const auto& c) {  // (2)
                 for (std::size_t i = 0; i < n; ++i) params[i] = c.sample(adaptation, i, spent, local);
             });
             const de::Generation g{x, order_n, &archived.members(), archived.size(), spent};
-            de::visit(mutation, [&](const auto& m) {  // (3)
+            visit_policy(mutation, [&](const auto& m) {  // (3)
                 for (std::size_t i = 0; i < n; ++i) {
                     const auto& p = params[i];
                     de::make_trial(m, g, i, p.f, p.cr, p.fw, local, std::span<double>(scratch),
@@ -264,7 +256,7 @@ class De {
                 }
             });
             rng = local;
-            de::visit(repair, [&](const auto& r) {
+            visit_policy(repair, [&](const auto& r) {
                 for (std::size_t i = 0; i < n; ++i) {
                     const auto k = static_cast<Eigen::Index>(i);
                     r(column(u, k), column(std::as_const(x), k), lo, hi);
@@ -287,15 +279,15 @@ class De {
                     fx[i] = fu[i];
                 }
             }
-            de::visit(control, [&](const auto& c) {  // jDE's F_i, CR_i go with the vector
+            visit_policy(control, [&](const auto& c) {  // jDE's F_i, CR_i go with the vector
                 for (std::size_t i = 0; i < evaluated; ++i)
                     if (replaced[i]) c.keep(adaptation, i, params[i]);
             });
             archived.end_generation(rng);  // (6)
-            de::visit(control, [&](const auto& c) { c.update(adaptation, successes); });
+            visit_policy(control, [&](const auto& c) { c.update(adaptation, successes); });
             const de::Spent after{state.progress().evaluations, limit};  // (7)
             std::size_t next = n;
-            de::visit(reduction, [&](const auto& r) { next = r.next(n, n0, after); });
+            visit_policy(reduction, [&](const auto& r) { next = r.next(n, n0, after); });
             if (next < n) {
                 de::remove_worst(x, fx, adaptation, n - next);
                 n = next;

@@ -8,7 +8,7 @@
 //
 // One generation, one loop for points and chains (Ga::generations; what differs, storage,
 // initialisation, copies, the operators' signatures and evaluation, sits in a population adapter,
-// algorithms/parts/ga_population.hpp):
+// algorithms/parts/ga/population.hpp):
 //   (1) as many children as the Replacement policy asks for (N - elitism for the project's elitist
 //       replacement): two parents by the Selection policy, two children (copies of the parents) by
 //       the Crossover policy, each child through the Mutation policy and, for points, the Bounds
@@ -49,18 +49,18 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/parts/adaptive_rates.hpp"
-#include "algorithms/parts/catastrophe.hpp"
-#include "algorithms/parts/chain_operators.hpp"
-#include "algorithms/parts/crossover.hpp"
-#include "algorithms/parts/ga_population.hpp"
-#include "algorithms/parts/generation_context.hpp"
-#include "algorithms/parts/generation_hook.hpp"
-#include "algorithms/parts/iqga_operators.hpp"
-#include "algorithms/parts/mutation.hpp"
-#include "algorithms/parts/q_learning.hpp"
-#include "algorithms/parts/replacement.hpp"
-#include "algorithms/parts/selection.hpp"
+#include "algorithms/parts/ga/adaptive_rates.hpp"
+#include "algorithms/parts/ga/catastrophe.hpp"
+#include "algorithms/parts/variation/chain_operators.hpp"
+#include "algorithms/parts/variation/crossover.hpp"
+#include "algorithms/parts/ga/population.hpp"
+#include "algorithms/parts/ga/generation_context.hpp"
+#include "algorithms/parts/ga/generation_hook.hpp"
+#include "algorithms/parts/iqga/operators.hpp"
+#include "algorithms/parts/variation/mutation.hpp"
+#include "algorithms/parts/iqga/q_learning.hpp"
+#include "algorithms/parts/ga/replacement.hpp"
+#include "algorithms/parts/ga/selection.hpp"
 #include "framework/bounds.hpp"
 #include "framework/chain.hpp"
 #include "framework/initializer.hpp"

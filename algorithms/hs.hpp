@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/parts/run_setup.hpp"
-#include "algorithms/parts/whale_moves.hpp"
+#include "algorithms/parts/common/run_setup.hpp"
+#include "algorithms/parts/whale/moves.hpp"
 #include "framework/bounds.hpp"
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"

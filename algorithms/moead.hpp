@@ -60,8 +60,8 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/parts/crossover.hpp"
-#include "algorithms/parts/mutation.hpp"
+#include "algorithms/parts/variation/crossover.hpp"
+#include "algorithms/parts/variation/mutation.hpp"
 #include "framework/error.hpp"
 #include "framework/mo_run_state.hpp"
 #include "framework/multi_objective.hpp"

@@ -20,7 +20,7 @@
 // On chains (grid paths) the skeleton is the same and only the variation differs: the issue's
 // chain operators as policies (Nsga2<ChainCrossover, ChainMutationChoice>: crossover at a common
 // cell with p_c = 0.9, then per child, with probability p_m, one of the GA's and IQGA's mutations;
-// algorithms/parts/chain_operators.hpp). The paper's p_m = 1/n per variable has no chain form;
+// algorithms/parts/variation/chain_operators.hpp). The paper's p_m = 1/n per variable has no chain form;
 // decided by this project: p_m per child (the registry's default says which value).
 // The result: the non-dominated members of the final population.
 //
@@ -44,9 +44,9 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/parts/chain_operators.hpp"
-#include "algorithms/parts/crossover.hpp"
-#include "algorithms/parts/mutation.hpp"
+#include "algorithms/parts/variation/chain_operators.hpp"
+#include "algorithms/parts/variation/crossover.hpp"
+#include "algorithms/parts/variation/mutation.hpp"
 #include "framework/error.hpp"
 #include "framework/mo_run_state.hpp"
 #include "framework/multi_objective.hpp"

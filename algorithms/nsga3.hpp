@@ -1,12 +1,12 @@
 #pragma once
 // NSGA-III (Deb and Jain 2014): the NSGA-II skeleton (algorithms/nsga2.hpp) with the survival by
-// reference directions (algorithms/parts/nsga3_survival.hpp), and the paper's settings. Where the
+// reference directions (algorithms/parts/nsga3/survival.hpp), and the paper's settings. Where the
 // paper is silent this project decided in those two headers (degenerate hyperplanes, ties, p_m).
 #include <cstdint>
 #include <utility>
 
 #include "algorithms/nsga2.hpp"
-#include "algorithms/parts/nsga3_survival.hpp"
+#include "algorithms/parts/nsga3/survival.hpp"
 
 namespace pride {
 

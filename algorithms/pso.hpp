@@ -36,8 +36,8 @@
 #include <emmintrin.h>
 #endif
 
-#include "algorithms/parts/run_setup.hpp"
-#include "algorithms/parts/velocity.hpp"
+#include "algorithms/parts/common/run_setup.hpp"
+#include "algorithms/parts/swarm/velocity.hpp"
 #include "framework/bounds.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"

@@ -50,8 +50,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/parts/crossover.hpp"
-#include "algorithms/parts/mutation.hpp"
+#include "algorithms/parts/variation/crossover.hpp"
+#include "algorithms/parts/variation/mutation.hpp"
 #include "framework/error.hpp"
 #include "framework/mo_run_state.hpp"
 #include "framework/multi_objective.hpp"

@@ -49,10 +49,10 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/parts/run_setup.hpp"
-#include "algorithms/parts/visit_policy.hpp"
-#include "algorithms/parts/whale_moves.hpp"
-#include "algorithms/parts/whale_pods.hpp"
+#include "algorithms/parts/common/run_setup.hpp"
+#include "framework/visit_policy.hpp"
+#include "algorithms/parts/whale/moves.hpp"
+#include "algorithms/parts/whale/pods.hpp"
 #include "framework/bounds.hpp"
 #include "framework/chain.hpp"
 #include "framework/error.hpp"

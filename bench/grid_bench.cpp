@@ -37,7 +37,7 @@
 #include "engine/run.hpp"
 #include "engine/targets.hpp"
 #include "framework/encoding.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/chain.hpp"
 #include "problems/grid/encodings.hpp"
 #include "problems/grid/map_io.hpp"

@@ -3,7 +3,7 @@
 //   per query, medians over the file's queries; Theta* and Lazy Theta*: microseconds, line-of-sight
 //   tests per query (medians) and the mean length as a share of A*'s; with --oracle, the exact
 //   any-angle oracle too (microseconds per query, and the mean of Theta*'s length over the oracle's);
-//   with --ompl (when built with OMPL), each OMPL planner of problems/grid/ompl_planner.hpp on the
+//   with --ompl (when built with OMPL), each OMPL planner of problems/grid/planners/ompl_planner.hpp on the
 //   file's first --ompl-queries queries, each run once with a budget of --ompl-checks validity
 //   checks and seed 1: the median milliseconds to its first solution (over the solved queries) and
 //   the share of queries solved.
@@ -19,13 +19,13 @@
 #include <map>
 #include <vector>
 
-#include "problems/grid/any_angle.hpp"
-#include "problems/grid/astar.hpp"
-#include "problems/grid/jps.hpp"
+#include "problems/grid/planners/any_angle.hpp"
+#include "problems/grid/planners/astar.hpp"
+#include "problems/grid/planners/jps.hpp"
 #include "problems/grid/map_io.hpp"
-#include "problems/grid/theta_star.hpp"
+#include "problems/grid/planners/theta_star.hpp"
 #ifdef PRIDE_HAVE_OMPL
-#include "problems/grid/ompl_planner.hpp"
+#include "problems/grid/planners/ompl_planner.hpp"
 #endif
 
 namespace {

@@ -1,6 +1,6 @@
 // Cheaper forms of the real-coded GA's roots, measured before any is adopted.
 //   SBX (eta_c 15) takes two 16th roots per crossed coordinate, the polynomial mutation (eta_m 20)
-//   a 21st root per mutated gene (algorithms/parts/power.hpp: four correctly rounded square roots,
+//   a 21st root per mutated gene (algorithms/parts/common/power.hpp: four correctly rounded square roots,
 //   four lanes per instruction; std::pow). This program
 //   (1) times each form per value (the least of --rounds batches), CSV `what,ns_per_value`;
 //   (2) with --draws N, draws N outputs of each operator with the exact root and, from another
@@ -32,7 +32,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/parts/power.hpp"
+#include "algorithms/parts/common/power.hpp"
 #include "bench/best_time.hpp"
 #include "framework/random.hpp"
 

@@ -31,14 +31,8 @@ int run_command(const RunOptions& o, std::ostream& out) {
     const engine::Problem problem(engine::ContinuousSpec{o.problem, o.dim, o.instance});
     const std::int64_t instance = problem.instance();
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
-    engine::Budget budget;
-    budget.evaluations = o.evals;
-    budget.iterations = o.iters;
-    budget.target = o.target;
-    budget.wall_ms = o.wall_ms;
-    budget.threads = o.threads;
-    engine::check(algorithm, problem, budget);
-    const engine::RunResult r = engine::run(algorithm, problem, budget, o.seed);
+    engine::check(algorithm, problem, o.budget);
+    const engine::RunResult r = engine::run(algorithm, problem, o.budget, o.seed);
     if (o.json) {
         out << fmt::format(
             "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"instance\": {}, \"seed\": {}, \"best_f\": {}, "
@@ -97,7 +91,7 @@ int eval_command(const EvalOptions& o, std::istream& in, std::ostream& out) {
         dim = coords.size();
     }
     if (o.dim)
-        require(*o.dim >= 1, "dim", "must be an integer in [1, 1000000000000000], got " + std::to_string(*o.dim));
+        require(*o.dim >= 1, "dim", fmt::format("must be an integer in [1, {}], got {}", engine::max_budget, *o.dim));
     if (o.dim)
         require(static_cast<std::int64_t>(dim) == *o.dim, o.x == "-" ? "stdin" : "--x",
                 "expected " + std::to_string(*o.dim) + " coordinates (--dim), got " + std::to_string(dim));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/params.hpp"
+#include "engine/specs.hpp"
 
 namespace pride::cli {
 
@@ -16,13 +17,9 @@ struct RunOptions {
     std::int64_t dim = 0;
     std::optional<std::int64_t> instance;
     std::string algo;
-    std::optional<std::int64_t> evals;
-    std::optional<std::int64_t> iters;
-    std::optional<double> target;
-    std::optional<double> wall_ms;
+    engine::Budget budget;  // --evals, --iters, --target, --wall-ms, --threads
     std::optional<std::int64_t> pop;
     std::uint64_t seed = 1;           // every 64-bit value is a seed (flags.hpp: max_seed)
-    std::int64_t threads = 1;         // evaluation threads (engine::Budget::threads)
     std::vector<std::string> params;  // "name=value"
     bool json = false;
 };

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "cli/numbers.hpp"
+#include "framework/utf8.hpp"
 
 namespace pride::cli {
 
@@ -32,33 +33,6 @@ std::string user_message(const InputError& e) {
     if (it == flags.end()) return printable(e.what());
     return printable(it->second + rest + ": " + e.detail());
 }
-
-namespace {
-/// The length of the UTF-8 sequence starting at s[i] (2 to 4 bytes, no overlong forms, no
-/// surrogates, nothing past U+10FFFF), or 0 when there is none.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-    const unsigned char c = byte(i);
-    std::size_t n = 0;
-    unsigned char lo = 0x80, hi = 0xBF;  // the range of the second byte
-    if (c >= 0xC2 && c <= 0xDF)
-        n = 2;
-    else if (c >= 0xE0 && c <= 0xEF) {
-        n = 3;
-        if (c == 0xE0) lo = 0xA0;
-        if (c == 0xED) hi = 0x9F;
-    } else if (c >= 0xF0 && c <= 0xF4) {
-        n = 4;
-        if (c == 0xF0) lo = 0x90;
-        if (c == 0xF4) hi = 0x8F;
-    }
-    if (n == 0 || i + n > s.size()) return 0;
-    if (byte(i + 1) < lo || byte(i + 1) > hi) return 0;
-    for (std::size_t k = 2; k < n; ++k)
-        if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
-    return n;
-}
-}  // namespace
 
 std::string printable(std::string_view text) {
     std::string out;

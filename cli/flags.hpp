@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "engine/run.hpp"
 #include "framework/error.hpp"
 
 namespace pride::cli {
@@ -36,10 +37,9 @@ CLI::Validator finite_in(double min = -std::numeric_limits<double>::infinity(),
 /// has it; a flag given '' was ignored as if not given).
 CLI::Validator a_path();
 
-/// The largest count (evaluations, iterations, population, dimension) a flag accepts: 10^15,
-/// beyond any run that can finish and far from the int64 limit, so that counts never overflow;
-/// what does not fit in memory is refused before anything is allocated (engine::check).
-inline constexpr std::uint64_t max_count = 1'000'000'000'000'000;
+/// The largest count (evaluations, iterations, population, dimension) a flag accepts: the
+/// engine's (engine::max_budget).
+inline constexpr std::uint64_t max_count = engine::max_budget;
 /// Seeds: the random generators take 64 bits, so every seed in [0, 2^64 - 1] is its own stream.
 inline constexpr std::uint64_t max_seed = std::numeric_limits<std::uint64_t>::max();
 /// Instances are numbered by signed 64-bit integers.

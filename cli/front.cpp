@@ -68,12 +68,8 @@ int front_command(const FrontOptions& o, std::ostream& out) {
     const engine::MoProblemSpec spec = problem_spec(o);
     const engine::MoProblem problem(spec);
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
-    engine::Budget budget;
-    budget.evaluations = o.evals;
-    budget.iterations = o.iters;
-    budget.wall_ms = o.wall_ms;
-    engine::check(algorithm, problem, budget);
-    const engine::MoRunResult r = engine::run(algorithm, problem, budget, o.seed);
+    engine::check(algorithm, problem, o.budget);
+    const engine::MoRunResult r = engine::run(algorithm, problem, o.budget, o.seed);
     std::optional<engine::MoQuality> q;
     if (!o.no_reference) q = engine::quality(problem, r.f);
 

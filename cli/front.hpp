@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/specs.hpp"
+
 namespace pride::cli {
 
 struct FrontOptions {
@@ -26,8 +28,8 @@ struct FrontOptions {
     std::int64_t inflate = 0;
     bool unknown_free = false;  // images and map_server maps: unknown cells free
     bool corner_cutting = false;
-    std::optional<std::int64_t> evals, iters, pop;
-    std::optional<double> wall_ms;
+    engine::Budget budget;  // --evals, --iters, --wall-ms
+    std::optional<std::int64_t> pop;
     std::uint64_t seed = 1;
     std::vector<std::string> params;
     bool json = false;

@@ -16,7 +16,7 @@
 #include "engine/scenarios.hpp"
 #include "experiment/html/draw.hpp"
 #include "framework/error.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/map_io.hpp"
 
@@ -101,13 +101,9 @@ engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec_out) {
         o.goal_world.empty() ? parse_cell(o.goal, "--goal") : parse_world_cell(o.goal_world, *spec.map, "--goal-world");
     const engine::Problem problem(spec);
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
-    engine::Budget budget;
-    budget.iterations = o.iters;
-    budget.evaluations = o.evals;
-    budget.threads = o.threads;
-    engine::check(algorithm, problem, budget);
+    engine::check(algorithm, problem, o.budget);
     if (spec_out) *spec_out = spec;
-    return engine::run(algorithm, problem, budget, o.seed);
+    return engine::run(algorithm, problem, o.budget, o.seed);
 }
 
 int path_command(const PathOptions& o, std::ostream& out) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/run.hpp"
+#include "engine/specs.hpp"
 
 namespace pride::cli {
 
@@ -26,10 +27,8 @@ struct PathOptions {
     // algorithm's own choice (rules for ilso, uniform for the others)
     std::string init;
     std::optional<std::int64_t> pop;
-    std::optional<std::int64_t> iters;
-    std::optional<std::int64_t> evals;
+    engine::Budget budget;  // --iters, --evals, --threads
     std::uint64_t seed = 1;
-    std::int64_t threads = 1;  // evaluation threads (engine::Budget::threads)
     std::int64_t inflate = 0;
     std::optional<std::int64_t> waypoints;  // free only (default 3); named with another encoding: refused
     std::optional<std::string> weights;     // "L,T,A" for the weighted objective

@@ -97,16 +97,16 @@ int run_main(int argc, char** argv) {
                      "instance: 0 = the function as defined (default; BBOB: 1), K >= 1 shifted and rotated")
         ->check(integer_in(0, max_instance));
     run_cmd->add_option("--algo", run.algo, box_names + " or nlopt:NAME (see 'pride list')")->required();
-    auto* evals = run_cmd->add_option("--evals", run.evals, "evaluation budget (default 10000 * dim)")
+    auto* evals = run_cmd->add_option("--evals", run.budget.evaluations, "evaluation budget (default 10000 * dim)")
                       ->check(integer_in(1, max_count));
-    run_cmd->add_option("--iters", run.iters, "iteration limit")->excludes(evals)->check(integer_in(0, max_count));
-    run_cmd->add_option("--target", run.target, "stop once the best value is <= this")->check(finite_in());
-    run_cmd->add_option("--wall-ms", run.wall_ms, "stop after this many milliseconds")->check(finite_in());
+    run_cmd->add_option("--iters", run.budget.iterations, "iteration limit")->excludes(evals)->check(integer_in(0, max_count));
+    run_cmd->add_option("--target", run.budget.target, "stop once the best value is <= this")->check(finite_in());
+    run_cmd->add_option("--wall-ms", run.budget.wall_ms, "stop after this many milliseconds")->check(finite_in());
     run_cmd->add_option("--pop", run.pop, "population size (NLopt: evaluations per recorded iteration)")
         ->check(integer_in(1, max_count));
     run_cmd->add_option("--seed", run.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
     run_cmd
-        ->add_option("--threads", run.threads,
+        ->add_option("--threads", run.budget.threads,
                      "threads evaluating a population (default 1; continuous functions use one: they are cheaper "
                      "than a thread's wake-up)")
         ->check(integer_in(1, 256));
@@ -156,14 +156,14 @@ int run_main(int argc, char** argv) {
         "Zhang et al. 2025; also for --encoding chain); default: rules for ilso, uniform for the others");
     path_cmd->add_option("--pop", path.pop, "population size (default 20)")->check(integer_in(1, max_count));
     auto* path_iters =
-        path_cmd->add_option("--iters", path.iters, "iteration limit (default 50 when --evals is not given)")
+        path_cmd->add_option("--iters", path.budget.iterations, "iteration limit (default 50 when --evals is not given)")
             ->check(integer_in(0, max_count));
-    path_cmd->add_option("--evals", path.evals, "evaluation limit")
+    path_cmd->add_option("--evals", path.budget.evaluations, "evaluation limit")
         ->excludes(path_iters)
         ->check(integer_in(1, max_count));
     path_cmd->add_option("--seed", path.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
     path_cmd
-        ->add_option("--threads", path.threads,
+        ->add_option("--threads", path.budget.threads,
                      "threads evaluating a population of genotypes (line and free encodings; default 1); the "
                      "same result as one thread")
         ->check(integer_in(1, 256));
@@ -235,12 +235,12 @@ int run_main(int argc, char** argv) {
         ->check(integer_in(0, 1000));
     front_cmd->add_flag("--corner-cutting", front.corner_cutting, "allow diagonal steps past a blocked corner");
     auto* front_evals =
-        front_cmd->add_option("--evals", front.evals, "evaluation budget (default 10000 * n; grids: 50 iterations)")
+        front_cmd->add_option("--evals", front.budget.evaluations, "evaluation budget (default 10000 * n; grids: 50 iterations)")
             ->check(integer_in(1, max_count));
-    front_cmd->add_option("--iters", front.iters, "iteration limit")
+    front_cmd->add_option("--iters", front.budget.iterations, "iteration limit")
         ->excludes(front_evals)
         ->check(integer_in(0, max_count));
-    front_cmd->add_option("--wall-ms", front.wall_ms, "stop after this many milliseconds")->check(finite_in());
+    front_cmd->add_option("--wall-ms", front.budget.wall_ms, "stop after this many milliseconds")->check(finite_in());
     front_cmd->add_option("--pop", front.pop, "population size")->check(integer_in(1, max_count));
     front_cmd->add_option("--seed", front.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
     front_cmd->add_option("--param", front.params, "algorithm parameter NAME=VALUE (repeatable)");

@@ -36,12 +36,12 @@ install(TARGETS ${pride_exported} EXPORT prideTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS pride RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
-# Headers only (engine/algorithms/ holds registration sources, nothing to include). The prefix is
+# Headers only (engine/entries/ holds registration sources, nothing to include). The prefix is
 # include/pride, as the targets' $<INSTALL_INTERFACE:include/pride> says.
 install(DIRECTORY framework roughset problems algorithms engine experiment
         DESTINATION include/pride
         FILES_MATCHING PATTERN "*.hpp"
-        REGEX "/engine/algorithms$" EXCLUDE
+        REGEX "/engine/entries$" EXCLUDE
         REGEX "/experiment/html$" EXCLUDE  # pride_html (the report page, cairo) is the command's and Python's
         REGEX "/experiment/store.hpp$" EXCLUDE)  # the campaign runner's own, not an interface
 

@@ -1,5 +1,5 @@
 #pragma once
-// What an algorithm family's registration file (engine/algorithms/*.cpp) uses to turn a typed
+// What an algorithm family's registration file (engine/entries/*.cpp) uses to turn a typed
 // algorithm into registry entries: the runners visit the target once and call the algorithm's
 // typed run(), so every (algorithm type, problem type) pair is instantiated in that one file.
 // Include this only from registration files: it pulls in every problem type.

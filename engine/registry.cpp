@@ -7,7 +7,7 @@
 
 namespace pride::engine {
 
-void register_builtin_algorithms(AlgorithmRegistry& registry);  // made by CMake from engine/algorithms/
+void register_builtin_algorithms(AlgorithmRegistry& registry);  // made by CMake from engine/entries/
 
 std::vector<std::string> AlgorithmEntry::spaces() const {
     std::vector<std::string> out;

@@ -1,7 +1,7 @@
 #pragma once
 // The algorithm registry: every algorithm by name, with a one-line summary, the spaces it runs on
 // and its parameters declared once. Each family registers itself in its own file under
-// engine/algorithms/ (see docs/adding-an-algorithm.md); the list of those files is made by CMake,
+// engine/entries/ (see docs/adding-an-algorithm.md); the list of those files is made by CMake,
 // so adding an algorithm is adding one file. `pride list`, the help texts, parameter checking in
 // every front end and the parameter tables of docs/cli.md all come from here.
 //

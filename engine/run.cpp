@@ -17,10 +17,10 @@
 #include "engine/targets.hpp"
 #include "framework/error.hpp"
 #include "framework/parallel.hpp"
-#include "problems/grid/any_angle.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/any_angle.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map_io.hpp"
-#include "problems/grid/oracle.hpp"
+#include "problems/grid/planners/oracle.hpp"
 #include "problems/grid/pareto.hpp"
 
 namespace pride::engine {
@@ -204,8 +204,8 @@ void require_problem_memory(const ContinuousSpec& c) {
     require(item != nullptr || !is_multiobjective_problem(c.function), "problem",
             c.function + " has several objectives: its runs are multi-objective ones (pride front, pride.front)");
     require(item != nullptr, "problem", "unknown problem '" + c.function + "'");
-    require(c.dim >= 1 && c.dim <= 1'000'000'000'000'000, "dim",
-            "must be an integer in [1, 1000000000000000], got " + std::to_string(c.dim));
+    require(c.dim >= 1 && c.dim <= max_budget, "dim",
+            fmt::format("must be an integer in [1, {}], got {}", max_budget, c.dim));
     // Bounds, an optimum and scratch vectors per coordinate, and a rotation (dim^2) for an
     // instance that has one.
     const double n = static_cast<double>(c.dim);

@@ -10,7 +10,7 @@
 
 #include "framework/error.hpp"
 #include "framework/termination.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/map_io.hpp"
 

@@ -992,9 +992,9 @@ void prepare(Campaign& c) {
                 require(!std::holds_alternative<GridSpec>(p.spec), "evaluations_per_dim",
                         "a grid problem has no dimension; give the campaign an absolute budget (evaluations)");
                 const double n = static_cast<double>(*c.evaluations_per_dim) * static_cast<double>(p.dimension());
-                require(n <= 1e15, "evaluations_per_dim",
-                        fmt::format("{} x {} dimensions is more than 10^15 evaluations", *c.evaluations_per_dim,
-                                    p.dimension()));
+                require(n <= static_cast<double>(max_budget), "evaluations_per_dim",
+                        fmt::format("{} x {} dimensions is more than {} evaluations", *c.evaluations_per_dim,
+                                    p.dimension(), max_budget));
                 p.evaluations = *c.evaluations_per_dim * static_cast<std::int64_t>(p.dimension());
             }
         } catch (const InputError& e) {

@@ -15,6 +15,7 @@
 
 #include "framework/error.hpp"
 #include "framework/read_file.hpp"
+#include "framework/utf8.hpp"
 #include "roughset/roughset.hpp"
 
 namespace pride::roughset {
@@ -128,21 +129,7 @@ void check_utf8(std::string_view s, const std::string& source) {
             throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + what);
         };
         if (c == 0) fail("NUL byte (\\x00): this is a binary file, not a CSV table");
-        std::size_t len = c < 0x80                   ? 1
-                          : (c >= 0xC2 && c <= 0xDF) ? 2
-                          : (c >= 0xE0 && c <= 0xEF) ? 3
-                          : (c >= 0xF0 && c <= 0xF4) ? 4
-                                                     : 0;
-        std::uint32_t v = len == 1 ? c : len == 2 ? c & 0x1Fu : len == 3 ? c & 0x0Fu : c & 0x07u;
-        for (std::size_t k = 1; k < len; ++k) {
-            if (i + k >= s.size() || (static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) {
-                len = 0;
-                break;
-            }
-            v = v << 6 | (static_cast<unsigned char>(s[i + k]) & 0x3Fu);
-        }
-        if ((len == 3 && (v < 0x800 || (v >= 0xD800 && v <= 0xDFFF))) || (len == 4 && (v < 0x10000 || v > 0x10FFFF)))
-            len = 0;
+        const std::size_t len = utf8_length(s, i);
         if (len == 0)
             fail(std::string("byte \\x") + hex[c >> 4] + hex[c & 15] + " is not UTF-8: a CSV table must be UTF-8 text");
         if (c == '\n' || (c == '\r' && (i + 1 >= s.size() || s[i + 1] != '\n'))) {

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libnlopt-cxx-dev catch2 libfmt-dev libcli11-dev libcairo2-dev libfontconfig-dev libboost-dev libtomlplusplus-dev libsqlite3-dev sqlite3 python3-matplotlib libopenmpi-dev openmpi-bin python3-dev pybind11-dev python3-numpy python3-pytest python3-pandas)
 # Map images and ROS map_server files (problems/grid/image_map.cpp, ros_map.cpp).
 packages+=(libpng-dev libnetpbm-dev libyaml-cpp-dev)
-# Optional OMPL planners (problems/grid/ompl_planner.cpp): OMPL's CMake file names the Boost libraries without depending on them.
+# Optional OMPL planners (problems/grid/planners/ompl_planner.cpp): OMPL's CMake file names the Boost libraries without depending on them.
 packages+=(libompl-dev libboost-filesystem-dev libboost-serialization-dev)
 # The browser that tests/test_report_html.cpp opens the HTML report in (headless).
 packages+=(chromium)

@@ -22,12 +22,12 @@
 #include "algorithms/ga.hpp"
 #include "algorithms/lso.hpp"
 #include "algorithms/nlopt.hpp"
-#include "algorithms/parts/crossover.hpp"
-#include "algorithms/parts/inertia.hpp"
-#include "algorithms/parts/mutation.hpp"
-#include "algorithms/parts/power.hpp"
-#include "algorithms/parts/selection.hpp"
-#include "algorithms/parts/velocity.hpp"
+#include "algorithms/parts/variation/crossover.hpp"
+#include "algorithms/parts/swarm/inertia.hpp"
+#include "algorithms/parts/variation/mutation.hpp"
+#include "algorithms/parts/common/power.hpp"
+#include "algorithms/parts/ga/selection.hpp"
+#include "algorithms/parts/swarm/velocity.hpp"
 #include "algorithms/pso.hpp"
 #include "framework/bounds.hpp"
 #include "framework/error.hpp"
@@ -202,7 +202,7 @@ inline GaPlus ga_plus(std::int64_t population = 50) {
     return a;
 }
 
-// The differential evolution family as the registry configures it (engine/algorithms/de.cpp): one
+// The differential evolution family as the registry configures it (engine/entries/de_entries.cpp): one
 // type, so its four configurations share one instantiation per problem type.
 using DeFamily = pride::De<pride::de::SelectableMutation, pride::de::SelectableControl, pride::de::SelectableRepair,
                            pride::de::SelectableSize, pride::de::SelectableReduction>;
@@ -237,7 +237,7 @@ void for_each_algorithm(std::int64_t population, F&& f) {
     f("pso-constriction", pso_constriction(population));
     f("ga", ga(population));
     f("ga-plus", ga_plus(population));
-    // The GA variants of Zhang et al. (2025) (algorithms/parts/adaptive_rates.hpp, catastrophe.hpp,
+    // The GA variants of Zhang et al. (2025) (algorithms/parts/ga/adaptive_rates.hpp, catastrophe.hpp,
     // q_learning.hpp; tests/test_ga_variants.cpp): the catastrophe every 2 generations here.
     pride::Ga<pride::TournamentSelection, pride::AdaptiveSbxCrossover, pride::AdaptivePolynomialMutation> iaga;
     iaga.id = "iaga";

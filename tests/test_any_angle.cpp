@@ -1,4 +1,4 @@
-// Any-angle planning (problems/grid/any_angle.hpp, theta_star.hpp): the exact segment test on hand
+// Any-angle planning (problems/grid/planners/any_angle.hpp, theta_star.hpp): the exact segment test on hand
 // cases, the exact oracle on hand-computed geometry and against a brute-force visibility graph
 // over every grid point and cell centre, and Theta* and Lazy Theta* between the oracle and A*.
 #include <catch2/catch.hpp>
@@ -9,10 +9,10 @@
 
 #include "framework/random.hpp"
 #include "grid_support.hpp"
-#include "problems/grid/any_angle.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/any_angle.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map_io.hpp"
-#include "problems/grid/theta_star.hpp"
+#include "problems/grid/planners/theta_star.hpp"
 
 using namespace pride;
 using namespace pride::grid;

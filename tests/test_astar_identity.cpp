@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/path.hpp"

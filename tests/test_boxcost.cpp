@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/parts/crossover.hpp"
-#include "algorithms/parts/power.hpp"
-#include "algorithms/parts/whale_moves.hpp"
+#include "algorithms/parts/variation/crossover.hpp"
+#include "algorithms/parts/common/power.hpp"
+#include "algorithms/parts/whale/moves.hpp"
 #include "algorithms/pso.hpp"
 #include "framework/bounds.hpp"
 #include "framework/random.hpp"

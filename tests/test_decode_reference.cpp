@@ -16,7 +16,7 @@
 
 #include "framework/random.hpp"
 #include "grid_support.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/connectors.hpp"
 #include "problems/grid/encodings.hpp"
 #include "problems/grid/objectives.hpp"

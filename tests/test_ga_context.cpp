@@ -26,8 +26,8 @@
 #include <vector>
 
 #include "algorithms/ga.hpp"
-#include "algorithms/parts/generation_context.hpp"
-#include "algorithms/parts/generation_hook.hpp"
+#include "algorithms/parts/ga/generation_context.hpp"
+#include "algorithms/parts/ga/generation_hook.hpp"
 #include "framework/error.hpp"
 #include "framework/one_of.hpp"
 #include "framework/termination.hpp"

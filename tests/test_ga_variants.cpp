@@ -1,5 +1,5 @@
-// Tests of the GA variants as policies (algorithms/parts/adaptive_rates.hpp, catastrophe.hpp,
-// q_learning.hpp) and their registry entries iaga, icga, ga-q (engine/algorithms/ga.cpp):
+// Tests of the GA variants as policies (algorithms/parts/ga/adaptive_rates.hpp, catastrophe.hpp,
+// q_learning.hpp) and their registry entries iaga, icga, ga-q (engine/entries/ga_entries.cpp):
 //   - IAGA: Srinivas and Patnaik's probabilities at their end points (the best, the mean, below the
 //     mean), worked by hand, from the GenerationContext of a pair and of a child; with every k = 0
 //     nothing varies;

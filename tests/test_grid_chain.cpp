@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "algorithms/ga.hpp"
-#include "algorithms/parts/replacement.hpp"
+#include "algorithms/parts/ga/replacement.hpp"
 #include "framework/chain.hpp"
 #include "framework/error.hpp"
 #include "framework/random.hpp"
@@ -32,7 +32,7 @@
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/objectives.hpp"
-#include "problems/grid/oracle.hpp"
+#include "problems/grid/planners/oracle.hpp"
 #include "problems/grid/path.hpp"
 
 namespace {

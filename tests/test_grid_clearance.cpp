@@ -22,7 +22,7 @@
 
 #include "cli_runner.hpp"
 #include "json_reader.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/clearance.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/pareto.hpp"

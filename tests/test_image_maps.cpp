@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "framework/error.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/image_map.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"

@@ -1,5 +1,5 @@
-// Tests of Zhang et al.'s (2025) IQGA as GA policies (algorithms/parts/iqga_operators.hpp, IqgaGa in
-// algorithms/ga.hpp) and its registry entry iqga (engine/algorithms/ga.cpp):
+// Tests of Zhang et al.'s (2025) IQGA as GA policies (algorithms/parts/iqga/operators.hpp, IqgaGa in
+// algorithms/ga.hpp) and its registry entry iqga (engine/entries/ga_entries.cpp):
 //   - eqs. 16-18 (selections per region, B, the SA acceptance P_j) and eq. 20's badness on worked
 //     numbers;
 //   - the mating pool: a replay of the documented draws gives it exactly; the population's best is

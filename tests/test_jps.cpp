@@ -1,4 +1,4 @@
-// Jump Point Search (problems/grid/jps.hpp) against A*: the same length on every line of the Moving
+// Jump Point Search (problems/grid/planners/jps.hpp) against A*: the same length on every line of the Moving
 // AI scenario files and of the bundled maps' files, and on random maps; legal full cell chains;
 // the same answer when the goal cannot be reached; bad input refused.
 #include <catch2/catch.hpp>
@@ -11,8 +11,8 @@
 #include "framework/random.hpp"
 #include "grid_support.hpp"
 #include "json_reader.hpp"
-#include "problems/grid/astar.hpp"
-#include "problems/grid/jps.hpp"
+#include "problems/grid/planners/astar.hpp"
+#include "problems/grid/planners/jps.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/path.hpp"
 

@@ -1,4 +1,4 @@
-// OMPL's planners as registered algorithms (engine/algorithms/ompl.cpp), when OMPL is built:
+// OMPL's planners as registered algorithms (engine/entries/ompl_entries.cpp), when OMPL is built:
 // seeded runs on the length objective whose validity checks are their evaluations, within the
 // budget; free polylines no shorter than the exact any-angle path; refused without an evaluation
 // budget; in pride path and campaigns; and merged and reported by definition (not reproducible).
@@ -16,7 +16,7 @@
 #include "engine/run.hpp"
 #include "framework/error.hpp"
 #include "grid_support.hpp"
-#include "problems/grid/any_angle.hpp"
+#include "problems/grid/planners/any_angle.hpp"
 #include "test_support.hpp"
 
 using namespace pride;

@@ -1,5 +1,5 @@
 // The segment and point tests for any points (problems/grid/segment.cpp) against the exact
-// half-lattice test, and OMPL's planners on the grid's plane (problems/grid/ompl_planner.hpp, when
+// half-lattice test, and OMPL's planners on the grid's plane (problems/grid/planners/ompl_planner.hpp, when
 // built with OMPL): solved, free, no shorter than the exact optimum, within their budget, seeded
 // runs reproducible in this process and in fresh ones.
 #include <catch2/catch.hpp>
@@ -13,10 +13,10 @@
 
 #include "framework/random.hpp"
 #include "grid_support.hpp"
-#include "problems/grid/any_angle.hpp"
+#include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/map_io.hpp"
 #ifdef PRIDE_HAVE_OMPL
-#include "problems/grid/ompl_planner.hpp"
+#include "problems/grid/planners/ompl_planner.hpp"
 #endif
 
 using namespace pride;

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "problems/grid/any_angle.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/any_angle.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 #include "problems/grid/polyline.hpp"

@@ -1,4 +1,4 @@
-// Polyline planners in the engine (engine/algorithms/any_angle.cpp) and the metrics every grid path
+// Polyline planners in the engine (engine/entries/any_angle_entries.cpp) and the metrics every grid path
 // gets (engine::run, problems/grid/polyline.hpp): theta-star, lazy-theta-star and any-angle-exact
 // run by name on the length objective only; their polylines are free, between the exact any-angle
 // length and A*'s; every chain's polyline is its cells with the chain's metrics; the gaps to the
@@ -22,8 +22,8 @@
 #include "framework/error.hpp"
 #include "grid_support.hpp"
 #include "json_reader.hpp"
-#include "problems/grid/any_angle.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/any_angle.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/path.hpp"
 #include "problems/grid/polyline.hpp"
 #include "test_support.hpp"

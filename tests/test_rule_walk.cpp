@@ -16,7 +16,7 @@
 
 #include "framework/random.hpp"
 #include "roughset/roughset.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/path.hpp"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "algorithms/hs.hpp"
-#include "algorithms/parts/whale_moves.hpp"
+#include "algorithms/parts/whale/moves.hpp"
 #include "algorithms/woa.hpp"
 #include "framework/error.hpp"
 #include "framework/termination.hpp"

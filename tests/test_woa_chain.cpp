@@ -1,7 +1,7 @@
 // Tests of WOA and HS-WOA on chains (Cai and Du (2021) on grids): the whale chain moves of
 // problems/grid/whale_chain.hpp on hand-made maps (the line-of-sight shortcut, moving a whale
 // towards another inside a window around the target's section, a whale towards itself), and the
-// Woa skeleton on ChainSpace (algorithms/parts/whale_pods.hpp): every whale of every iteration a
+// Woa skeleton on ChainSpace (algorithms/parts/whale/pods.hpp): every whale of every iteration a
 // legal simple path on every bundled map and on 200 random maps, reproducible bit for bit, budgets
 // exact, and the registry entries on grids with the chain encoding (N = 20, 50 iterations).
 #include <catch2/catch.hpp>
@@ -24,7 +24,7 @@
 #include "framework/chain.hpp"
 #include "framework/error.hpp"
 #include "framework/termination.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/chain.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/map.hpp"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "framework/error.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 

@@ -37,7 +37,7 @@
 #include <optional>
 #include <vector>
 
-#include "problems/grid/any_angle.hpp"
+#include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 

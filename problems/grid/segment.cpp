@@ -5,7 +5,7 @@
 // a rounding error here would let a path through a squeeze point or a blocked corner.
 #include <cmath>
 
-#include "problems/grid/any_angle.hpp"
+#include "problems/grid/planners/any_angle.hpp"
 
 namespace pride::grid {
 

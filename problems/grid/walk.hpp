@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "problems/grid/astar.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
 #include "problems/grid/search_arrays.hpp"

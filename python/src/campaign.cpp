@@ -78,7 +78,8 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
     const auto check_size = [&](const engine::ProblemSpec& spec, std::int64_t dimension) {
         engine::Budget b = budget;
         if (evals_per_dim) {
-            if (static_cast<double>(*evals_per_dim) * static_cast<double>(dimension) > 1e15)
+            if (static_cast<double>(*evals_per_dim) * static_cast<double>(dimension) >
+                static_cast<double>(engine::max_budget))
                 return;  // prepare() says so
             b.evaluations = *evals_per_dim * dimension;
         }
@@ -245,7 +246,7 @@ std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seed
     count("evals", evals, 1);
     count("iters", iters, 0);
     require(!evals_per_dim || (*evals_per_dim >= 1 && *evals_per_dim <= engine::max_budget), "evals_per_dim",
-            "must be in [1, 1000000000000000], got " + std::to_string(evals_per_dim.value_or(0)));
+            fmt::format("must be in [1, {}], got {}", engine::max_budget, evals_per_dim.value_or(0)));
     require(!(target && precision), "precision", "give target (an absolute value) or precision, not both");
     require(!precision || (std::isfinite(*precision) && *precision > 0), "precision",
             "must be a finite number > 0 (a target f_opt + precision)");

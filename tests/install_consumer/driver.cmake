@@ -29,7 +29,7 @@ file(REMOVE_RECURSE ${WORK_DIR})
 
 step("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} --config ${CONFIG})
 foreach(f IN ITEMS include/pride/engine/run.hpp include/pride/framework/problem.hpp
-                   include/pride/algorithms/parts/velocity.hpp include/pride/problems/grid/map.hpp
+                   include/pride/algorithms/parts/swarm/velocity.hpp include/pride/problems/grid/map.hpp
                    include/pride/problems/continuous/catalog.hpp include/pride/roughset/roughset.hpp
                    include/pride/experiment/campaign.hpp
                    bin/pride)
