@@ -61,11 +61,11 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/parts/common/run_setup.hpp"
 #include "algorithms/parts/de/archive.hpp"
 #include "algorithms/parts/de/control.hpp"
 #include "algorithms/parts/de/mutation.hpp"
 #include "algorithms/parts/de/population.hpp"
-#include "algorithms/parts/common/run_setup.hpp"
 #include "framework/bounds.hpp"
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"

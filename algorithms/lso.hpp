@@ -44,9 +44,9 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/parts/swarm/inertia.hpp"
-#include "algorithms/parts/lion/moves.hpp"
 #include "algorithms/parts/common/run_setup.hpp"
+#include "algorithms/parts/lion/moves.hpp"
+#include "algorithms/parts/swarm/inertia.hpp"
 #include "framework/bounds.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"

@@ -50,7 +50,6 @@
 #include <vector>
 
 #include "algorithms/parts/common/run_setup.hpp"
-#include "framework/visit_policy.hpp"
 #include "algorithms/parts/whale/moves.hpp"
 #include "algorithms/parts/whale/pods.hpp"
 #include "framework/bounds.hpp"
@@ -64,6 +63,7 @@
 #include "framework/result.hpp"
 #include "framework/run_state.hpp"
 #include "framework/termination.hpp"
+#include "framework/visit_policy.hpp"
 
 namespace pride {
 

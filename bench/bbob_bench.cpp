@@ -33,7 +33,9 @@ int main(int argc, char** argv) {
     app.add_option("--dims", dims, "dimensions")->capture_default_str();
     app.add_option("--functions", functions, "BBOB function numbers (default 1-24)");
     app.add_option("--points", points, "points per dimension")->check(CLI::Range(1L, 100000L))->capture_default_str();
-    app.add_option("--instance", instance, "the BBOB instance number")->check(CLI::Range(1, 100))->capture_default_str();
+    app.add_option("--instance", instance, "the BBOB instance number")
+        ->check(CLI::Range(1, 100))
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     if (functions.empty())
         for (int f = 1; f <= 24; ++f) functions.push_back(f);

@@ -37,12 +37,12 @@
 #include "engine/run.hpp"
 #include "engine/targets.hpp"
 #include "framework/encoding.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/chain.hpp"
 #include "problems/grid/encodings.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/pareto.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/rough_rules.hpp"
 
 namespace {

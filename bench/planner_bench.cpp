@@ -19,10 +19,10 @@
 #include <map>
 #include <vector>
 
+#include "problems/grid/map_io.hpp"
 #include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/planners/astar.hpp"
 #include "problems/grid/planners/jps.hpp"
-#include "problems/grid/map_io.hpp"
 #include "problems/grid/planners/theta_star.hpp"
 #ifdef PRIDE_HAVE_OMPL
 #include "problems/grid/planners/ompl_planner.hpp"

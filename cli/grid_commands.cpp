@@ -16,9 +16,9 @@
 #include "engine/scenarios.hpp"
 #include "experiment/html/draw.hpp"
 #include "framework/error.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/map_io.hpp"
+#include "problems/grid/planners/astar.hpp"
 
 namespace pride::cli {
 namespace {

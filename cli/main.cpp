@@ -99,7 +99,9 @@ int run_main(int argc, char** argv) {
     run_cmd->add_option("--algo", run.algo, box_names + " or nlopt:NAME (see 'pride list')")->required();
     auto* evals = run_cmd->add_option("--evals", run.budget.evaluations, "evaluation budget (default 10000 * dim)")
                       ->check(integer_in(1, max_count));
-    run_cmd->add_option("--iters", run.budget.iterations, "iteration limit")->excludes(evals)->check(integer_in(0, max_count));
+    run_cmd->add_option("--iters", run.budget.iterations, "iteration limit")
+        ->excludes(evals)
+        ->check(integer_in(0, max_count));
     run_cmd->add_option("--target", run.budget.target, "stop once the best value is <= this")->check(finite_in());
     run_cmd->add_option("--wall-ms", run.budget.wall_ms, "stop after this many milliseconds")->check(finite_in());
     run_cmd->add_option("--pop", run.pop, "population size (NLopt: evaluations per recorded iteration)")
@@ -156,7 +158,8 @@ int run_main(int argc, char** argv) {
         "Zhang et al. 2025; also for --encoding chain); default: rules for ilso, uniform for the others");
     path_cmd->add_option("--pop", path.pop, "population size (default 20)")->check(integer_in(1, max_count));
     auto* path_iters =
-        path_cmd->add_option("--iters", path.budget.iterations, "iteration limit (default 50 when --evals is not given)")
+        path_cmd
+            ->add_option("--iters", path.budget.iterations, "iteration limit (default 50 when --evals is not given)")
             ->check(integer_in(0, max_count));
     path_cmd->add_option("--evals", path.budget.evaluations, "evaluation limit")
         ->excludes(path_iters)
@@ -234,9 +237,10 @@ int run_main(int argc, char** argv) {
     front_cmd->add_option("--inflate", front.inflate, "obstacle inflation radius in cells (default 0)")
         ->check(integer_in(0, 1000));
     front_cmd->add_flag("--corner-cutting", front.corner_cutting, "allow diagonal steps past a blocked corner");
-    auto* front_evals =
-        front_cmd->add_option("--evals", front.budget.evaluations, "evaluation budget (default 10000 * n; grids: 50 iterations)")
-            ->check(integer_in(1, max_count));
+    auto* front_evals = front_cmd
+                            ->add_option("--evals", front.budget.evaluations,
+                                         "evaluation budget (default 10000 * n; grids: 50 iterations)")
+                            ->check(integer_in(1, max_count));
     front_cmd->add_option("--iters", front.budget.iterations, "iteration limit")
         ->excludes(front_evals)
         ->check(integer_in(0, max_count));

@@ -17,11 +17,11 @@
 #include "engine/targets.hpp"
 #include "framework/error.hpp"
 #include "framework/parallel.hpp"
+#include "problems/grid/map_io.hpp"
+#include "problems/grid/pareto.hpp"
 #include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/planners/astar.hpp"
-#include "problems/grid/map_io.hpp"
 #include "problems/grid/planners/oracle.hpp"
-#include "problems/grid/pareto.hpp"
 
 namespace pride::engine {
 

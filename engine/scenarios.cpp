@@ -10,9 +10,9 @@
 
 #include "framework/error.hpp"
 #include "framework/termination.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/map_io.hpp"
+#include "problems/grid/planners/astar.hpp"
 
 namespace pride::engine {
 

@@ -9,9 +9,9 @@
 
 #include "framework/random.hpp"
 #include "grid_support.hpp"
+#include "problems/grid/map_io.hpp"
 #include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/planners/astar.hpp"
-#include "problems/grid/map_io.hpp"
 #include "problems/grid/planners/theta_star.hpp"
 
 using namespace pride;

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "tests/grid_support.hpp"
 
 using namespace pride::grid;

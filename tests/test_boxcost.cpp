@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/parts/variation/crossover.hpp"
 #include "algorithms/parts/common/power.hpp"
+#include "algorithms/parts/variation/crossover.hpp"
 #include "algorithms/parts/whale/moves.hpp"
 #include "algorithms/pso.hpp"
 #include "framework/bounds.hpp"

@@ -12,7 +12,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <tuple>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -26,6 +25,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -880,8 +880,8 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
          "the budget 'evaluations = 2000', this campaign 'evaluations = 2001'"},
         {"a problem redefined", replace(kSmallContinuous, "dim = 4", "dim = 5"),
          "problem 'sphere-4' is stored as sphere dim 4 instance 0, here it is sphere dim 5 instance 0"},
-        {"an algorithm redefined", replace(kSmallContinuous, "pop = 12\n[[algorithm]]\nid = \"ga\"",
-                                           "pop = 13\n[[algorithm]]\nid = \"ga\""),
+        {"an algorithm redefined",
+         replace(kSmallContinuous, "pop = 12\n[[algorithm]]\nid = \"ga\"", "pop = 13\n[[algorithm]]\nid = \"ga\""),
          "algorithm 'pso' is stored as pso pop=12, here it is pso pop=13"},
         {"another campaign", kContinuous, "another campaign"},
     };
@@ -909,9 +909,10 @@ TEST_CASE("bench: a store of another campaign is refused and left untouched", "[
 TEST_CASE("bench: a campaign grows by seeds, algorithms and problems, and only the new runs run", "[cli][bench]") {
     const TempDir dir;
     const std::string store = dir.file("c.sqlite");
-    const std::string base = "name = \"grow\"\nseeds = 2\n[budget]\nevaluations = 300\n"
-                             "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 3\n"
-                             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";
+    const std::string base =
+        "name = \"grow\"\nseeds = 2\n[budget]\nevaluations = 300\n"
+        "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 3\n"
+        "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";
     check_summary(bench_ok({"bench", dir.write("a.toml", base), "--jobs", "1", "--out", store}), 2, 0, 2, store);
     const auto before = runs_of(store, true);  // wall times included: rows never rewritten
     // A comment, three seeds, one more algorithm and one more problem: 3 x 2 x 2 runs, 2 stored.
@@ -939,15 +940,17 @@ TEST_CASE("bench: a campaign grows by seeds, algorithms and problems, and only t
 TEST_CASE("bench: a store from before definitions grows after one resume with its own file", "[cli][bench]") {
     const TempDir dir;
     const std::string store = dir.file("c.sqlite");
-    const std::string base = "name = \"old\"\nseeds = 1\n[budget]\nevaluations = 100\n"
-                             "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
-                             "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";
+    const std::string base =
+        "name = \"old\"\nseeds = 1\n[budget]\nevaluations = 100\n"
+        "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
+        "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";
     const std::string a = dir.write("a.toml", base);
     bench_ok({"bench", a, "--jobs", "1", "--out", store});
     {  // as a store written before definitions were kept
         Db db(store);
-        REQUIRE(db.query("UPDATE campaign SET budget = NULL; UPDATE problems SET definition = NULL; "
-                         "UPDATE algorithms SET definition = NULL"));
+        REQUIRE(
+            db.query("UPDATE campaign SET budget = NULL; UPDATE problems SET definition = NULL; "
+                     "UPDATE algorithms SET definition = NULL"));
     }
     const std::string grown = dir.write("b.toml", replace(base, "seeds = 1", "seeds = 2"));
     check_input_error(run({"bench", grown, "--jobs", "1", "--out", store}), {store, "before campaigns could grow"});

@@ -16,11 +16,11 @@
 
 #include "framework/random.hpp"
 #include "grid_support.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/connectors.hpp"
 #include "problems/grid/encodings.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/astar.hpp"
 
 using namespace pride::grid;
 using pride::Rng;

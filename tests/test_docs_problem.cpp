@@ -163,8 +163,7 @@ TEST_CASE("docs: adding-a-problem.md shows tests/example_problem's class as it i
     CHECK(shown == 1);
 }
 
-TEST_CASE("docs: adding-a-problem.md's registration diff applies to the sources as they are and compiles",
-          "[docs]") {
+TEST_CASE("docs: adding-a-problem.md's registration diff applies to the sources as they are and compiles", "[docs]") {
     namespace fs = std::filesystem;
     std::vector<ProblemDocBlock> diffs;
     for (const auto& block : problem_doc_blocks())
@@ -203,10 +202,11 @@ TEST_CASE("docs: adding-a-problem.md's registration diff applies to the sources 
 
     // The two files that compile the variant, patched, with the class: as the scratch copy's build
     // compiles them (syntax and every template instantiation; no code generated).
-    std::string command = std::string(kDocProblemCompiler) + " -std=c++20 -fsyntax-only -I'" + top.path().string() + "'";
+    std::string command =
+        std::string(kDocProblemCompiler) + " -std=c++20 -fsyntax-only -I'" + top.path().string() + "'";
     for (const char* dir : kDocProblemIncludes) command += " -I'" + std::string(dir) + "'";
-    command += " '" + top.file("problems/continuous/catalog.cpp") + "' '" + top.file("problems/continuous/function.cpp") +
-               "' >'" + top.file("compiler.out") + "' 2>&1";
+    command += " '" + top.file("problems/continuous/catalog.cpp") + "' '" +
+               top.file("problems/continuous/function.cpp") + "' >'" + top.file("compiler.out") + "' 2>&1";
     const int status = std::system(command.c_str());
     INFO(command << "\n" << pride::test::slurp(top.file("compiler.out")));
     CHECK(status == 0);

@@ -10,10 +10,10 @@
 
 #include "algorithms/ga.hpp"
 #include "algorithms/pso.hpp"
-#include "experiment/campaign.hpp"
 #include "engine/params.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "experiment/campaign.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/functions.hpp"
 #include "tests/test_support.hpp"

@@ -252,8 +252,8 @@ TEST_CASE("faults: an error message that cannot be written still exits with the 
     // the process aborted (SIGABRT, 134). The message is lost; the status is the error's.
     const std::string map = map_file();
     const std::vector<std::pair<std::string, int>> failing{
-        {"run --problem x --dim 2 --algo pso", 2},                       // bad input
-        {"run --problem sphere --dim 2 --algo pso --no-such-flag", 2},   // a parse error
+        {"run --problem x --dim 2 --algo pso", 2},                      // bad input
+        {"run --problem sphere --dim 2 --algo pso --no-such-flag", 2},  // a parse error
         {"path --map " + quote(map) + " --start 0,0 --goal 99,99 --algo astar", 2},
         {"report " + quote("/nonexistent/s.sqlite"), 2},
     };

@@ -32,8 +32,8 @@
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/objectives.hpp"
-#include "problems/grid/planners/oracle.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/oracle.hpp"
 
 namespace {
 

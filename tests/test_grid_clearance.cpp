@@ -22,10 +22,10 @@
 
 #include "cli_runner.hpp"
 #include "json_reader.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/clearance.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/pareto.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "tests/grid_support.hpp"
 #include "tests/test_support.hpp"
 

@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "framework/error.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/image_map.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/ros_map.hpp"
 #include "tests/cli_runner.hpp"
 

@@ -11,10 +11,10 @@
 #include "framework/random.hpp"
 #include "grid_support.hpp"
 #include "json_reader.hpp"
-#include "problems/grid/planners/astar.hpp"
-#include "problems/grid/planners/jps.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/astar.hpp"
+#include "problems/grid/planners/jps.hpp"
 
 using namespace pride;
 using namespace pride::grid;

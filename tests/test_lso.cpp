@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "algorithms/lso.hpp"
-#include "algorithms/parts/swarm/inertia.hpp"
 #include "algorithms/parts/lion/moves.hpp"
+#include "algorithms/parts/swarm/inertia.hpp"
 #include "algorithms/pso.hpp"
 #include "framework/error.hpp"
 #include "framework/termination.hpp"

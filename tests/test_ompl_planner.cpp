@@ -13,8 +13,8 @@
 
 #include "framework/random.hpp"
 #include "grid_support.hpp"
-#include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/map_io.hpp"
+#include "problems/grid/planners/any_angle.hpp"
 #ifdef PRIDE_HAVE_OMPL
 #include "problems/grid/planners/ompl_planner.hpp"
 #endif

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "experiment/campaign.hpp"
-#include "experiment/campaign_toml.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "experiment/campaign.hpp"
+#include "experiment/campaign_toml.hpp"
 #include "framework/error.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"

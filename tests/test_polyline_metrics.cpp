@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "problems/grid/planners/any_angle.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/any_angle.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/polyline.hpp"
 #include "tests/grid_support.hpp"
 

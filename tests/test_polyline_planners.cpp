@@ -22,9 +22,9 @@
 #include "framework/error.hpp"
 #include "grid_support.hpp"
 #include "json_reader.hpp"
+#include "problems/grid/path.hpp"
 #include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/planners/astar.hpp"
-#include "problems/grid/path.hpp"
 #include "problems/grid/polyline.hpp"
 #include "test_support.hpp"
 

@@ -15,14 +15,14 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "roughset/roughset.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/rough_rules.hpp"
 #include "problems/grid/rule_walk.hpp"
 #include "problems/grid/walk.hpp"
+#include "roughset/roughset.hpp"
 #include "tests/grid_support.hpp"
 
 using namespace pride::grid;

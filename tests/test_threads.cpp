@@ -14,8 +14,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include "experiment/campaign_toml.hpp"
 #include "engine/run.hpp"
+#include "experiment/campaign_toml.hpp"
 #include "framework/parallel.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"

@@ -5,8 +5,8 @@
 // value is its Euclidean length, which the chain objectives (cells, turns, angle penalties) do
 // not define.
 #include "problems/grid/planners/any_angle.hpp"
-#include "problems/grid/polyline.hpp"
 #include "problems/grid/planners/theta_star.hpp"
+#include "problems/grid/polyline.hpp"
 
 #include "engine/family.hpp"
 

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "framework/error.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/astar.hpp"
 
 namespace pride::grid {
 

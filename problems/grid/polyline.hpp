@@ -37,9 +37,9 @@
 #include <optional>
 #include <vector>
 
-#include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/any_angle.hpp"
 
 namespace pride::grid {
 

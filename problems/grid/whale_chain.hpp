@@ -30,9 +30,9 @@
 #include <vector>
 
 #include "framework/random.hpp"
-#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/astar.hpp"
 #include "problems/grid/walk.hpp"
 
 namespace pride::grid {

@@ -16,11 +16,11 @@
 
 #include "algorithms/parts/cma/stopping.hpp"
 #include "algorithms/parts/cma/strategy.hpp"
-#include "framework/visit_policy.hpp"
 #include "framework/error.hpp"
 #include "framework/one_of.hpp"
 #include "framework/problem.hpp"
 #include "framework/random.hpp"
+#include "framework/visit_policy.hpp"
 
 namespace pride::cma {
 

@@ -36,8 +36,8 @@
 #include <span>
 #include <string>
 
-#include "algorithms/parts/variation/crossover.hpp"
 #include "algorithms/parts/ga/generation_context.hpp"
+#include "algorithms/parts/variation/crossover.hpp"
 #include "algorithms/parts/variation/mutation.hpp"
 #include "framework/chain.hpp"
 #include "framework/error.hpp"

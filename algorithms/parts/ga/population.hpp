@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/parts/ga/generation_context.hpp"
 #include "algorithms/parts/common/run_setup.hpp"
+#include "algorithms/parts/ga/generation_context.hpp"
 #include "framework/chain.hpp"
 #include "framework/counted_chain.hpp"
 #include "framework/problem.hpp"

@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/map.hpp"
+#include "problems/grid/planners/any_angle.hpp"
 
 namespace pride::grid {
 

@@ -27,9 +27,9 @@
 #include <vector>
 
 #include "framework/error.hpp"
-#include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/path.hpp"
+#include "problems/grid/planners/any_angle.hpp"
 #include "problems/grid/search_arrays.hpp"
 
 namespace pride::grid {
