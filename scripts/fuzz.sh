@@ -12,7 +12,7 @@
 #
 # Seeds: fuzz/corpus/TARGET/ (checked in) plus, collected at run time, the maps and scenarios of
 # examples/maps and PRIDE_DATA/movingai, nav2's maps of PRIDE_DATA/ros, the CSV tables of
-# reference-data/roughset and the campaign files of examples/campaigns. New inputs libFuzzer finds go to build-fuzz/corpus/TARGET/ (kept
+# PRIDE_DATA/roughset and the campaign files of examples/campaigns. New inputs libFuzzer finds go to build-fuzz/corpus/TARGET/ (kept
 # between runs, so later runs start where earlier ones stopped).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -49,7 +49,7 @@ collect() {
     map) for f in examples/maps/*.map ${data:+"$data"/movingai/*.map}; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
     rosyaml) for f in ${data:+"$data"/ros/*.yaml}; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
     scenario) for f in examples/maps/*.scen ${data:+"$data"/movingai/*.scen}; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
-    roughset) for f in reference-data/roughset/*.csv; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
+    roughset) for f in ${data:+"$data"/roughset/*.csv}; do [[ -f $f ]] && cp "$f" "$dir/"; done ;;
     campaign) for f in examples/campaigns/*.toml; do cp "$f" "$dir/"; done ;;
   esac
   find "$dir" -type f -size +"$((len / 1024))"k -delete

@@ -257,7 +257,7 @@ TEST_CASE("cli: eval prints 17 significant digits", "[cli][eval]") {
     CHECK(expect_success("eval --problem sphere --x ' 1 , +2 '") == "5\n");
     CHECK(expect_success("eval --problem sphere --x 0.1") == "0.010000000000000002\n");
 
-    // Reference values from pagmo2's tests (reference-data/continuous/reference_values.md), rel 1e-15.
+    // Reference values from pagmo2's tests ($PRIDE_DATA/continuous/reference_values.md), rel 1e-15.
     struct Case {
         const char* problem;
         const char* x;

@@ -2,7 +2,7 @@
 // external references, known optima, the shift transform, the catalog and the boxes.
 //
 // Every reference value in the first test cases is copied from
-//   reference-data/continuous/reference_values.md
+//   $PRIDE_DATA/continuous/reference_values.md
 // (section 1: pagmo2 unit tests, esa/pagmo2 commit bd9c91e7; section 2: estripling/fbench
 // tests/test_function.py commit 0a2ffb01 and pyBlindOpt; section 3: the [computed] table), with the
 // tolerances that file states. pagmo's BOOST_CHECK_CLOSE(..., 1e-13) is a relative tolerance of

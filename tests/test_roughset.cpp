@@ -1,11 +1,12 @@
 // Tests of the rough-set module (roughset/): every result published for the reference
-// tables in reference-data/roughset/README.md, properties on random tables checked against brute
+// tables of $PRIDE_DATA/roughset (its README.md), properties on random tables checked against brute
 // force, and the CSV reader's edge cases and error messages.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -13,18 +14,23 @@
 #include "framework/error.hpp"
 #include "framework/random.hpp"
 #include "roughset/roughset.hpp"
+#include "tests/test_support.hpp"
 
 using namespace pride::roughset;
 
 namespace {
 
-const std::string data_dir = std::string(PRIDE_REFERENCE_DATA) + "/roughset/";
-
-DecisionTable pawlak72() {
-    return read_csv(data_dir + "pawlak1991_p72.csv");
+/// Pawlak's published tables ($PRIDE_DATA/roughset), or nothing (the test then says it is skipped).
+std::optional<DecisionTable> pawlak(const std::string& name) {
+    const auto path = pride::test::shared_data("roughset/" + name, "Pawlak's decision tables");
+    if (!path) return std::nullopt;
+    return read_csv(path->string());
 }
-DecisionTable pawlak8() {
-    return read_csv(data_dir + "pawlak_8obj.csv");
+std::optional<DecisionTable> pawlak72() {
+    return pawlak("pawlak1991_p72.csv");
+}
+std::optional<DecisionTable> pawlak8() {
+    return pawlak("pawlak_8obj.csv");
 }
 
 // Column indices of the named attributes, sorted.
@@ -117,7 +123,9 @@ std::string error_of(std::string_view csv) {
 // Pawlak 1991, p. 72
 
 TEST_CASE("roughset: pawlak1991_p72, c is dispensable, the only reduct is {a,b,d}", "[roughset]") {
-    const auto t = pawlak72();
+    const auto table = pawlak72();
+    if (!table) return;
+    const auto& t = *table;
     REQUIRE(t.rows() == 7);
     REQUIRE(t.columns() == 5);
     const auto C = t.conditions(), D = t.decision();
@@ -129,12 +137,16 @@ TEST_CASE("roughset: pawlak1991_p72, c is dispensable, the only reduct is {a,b,d
 }
 
 TEST_CASE("roughset: pawlak1991_p72, the relative core is {a,b,d}", "[roughset]") {
-    const auto t = pawlak72();
+    const auto table = pawlak72();
+    if (!table) return;
+    const auto& t = *table;
     CHECK(core(t, t.conditions(), t.decision()) == attrs(t, {"a", "b", "d"}));
 }
 
 TEST_CASE("roughset: pawlak1991_p72, the value cores per object", "[roughset]") {
-    const auto t = pawlak72();
+    const auto table = pawlak72();
+    if (!table) return;
+    const auto& t = *table;
     const std::vector<Attributes> expected = {
         attrs(t, {"b"}), attrs(t, {"a"}), attrs(t, {"a"}), attrs(t, {"b", "d"}), attrs(t, {"d"}), {}, {}};
     // The same on the reduct (where Pawlak computes them) and on all four conditions.
@@ -143,7 +155,9 @@ TEST_CASE("roughset: pawlak1991_p72, the value cores per object", "[roughset]") 
 }
 
 TEST_CASE("roughset: pawlak1991_p72, value cores are the intersections of the value reducts", "[roughset]") {
-    const auto t = pawlak72();
+    const auto table = pawlak72();
+    if (!table) return;
+    const auto& t = *table;
     const auto B = attrs(t, {"a", "b", "d"});
     const auto cores = value_cores(t, B, t.decision());
     const auto reds = value_reducts(t, B, t.decision());
@@ -164,7 +178,9 @@ TEST_CASE("roughset: pawlak1991_p72, value cores are the intersections of the va
 }
 
 TEST_CASE("roughset: pawlak1991_p72, the minimal rules are those of Table 11", "[roughset]") {
-    const auto t = pawlak72();
+    const auto table = pawlak72();
+    if (!table) return;
+    const auto& t = *table;
     const auto a = *t.find("a"), b = *t.find("b"), d = *t.find("d"), e = *t.find("e");
     const auto rules = minimal_rules(t, attrs(t, {"a", "b", "d"}), t.decision());
     auto code = [&](std::size_t col, const char* label) { return *t.code(col, label); };
@@ -195,7 +211,9 @@ TEST_CASE("roughset: pawlak1991_p72, the minimal rules are those of Table 11", "
 // Pawlak's 8-object system
 
 TEST_CASE("roughset: pawlak_8obj, absolute reduct and core of {a,b,c}", "[roughset]") {
-    const auto t = pawlak8();
+    const auto table = pawlak8();
+    if (!table) return;
+    const auto& t = *table;
     const auto B = attrs(t, {"a", "b", "c"});
     CHECK(reducts(t, B, B) == std::vector<Attributes>{attrs(t, {"a", "b"})});
     CHECK(core(t, B, B) == attrs(t, {"a", "b"}));
@@ -205,7 +223,9 @@ TEST_CASE("roughset: pawlak_8obj, absolute reduct and core of {a,b,c}", "[roughs
 }
 
 TEST_CASE("roughset: pawlak_8obj, indiscernibility classes", "[roughset]") {
-    const auto t = pawlak8();
+    const auto table = pawlak8();
+    if (!table) return;
+    const auto& t = *table;
     const auto a = indiscernibility(t, attrs(t, {"a"}));
     CHECK(as_set(a) == std::set<Objects>{objs({2, 8}), objs({1, 4, 5}), objs({3, 6, 7})});
     // Classes in the order of their first object.
@@ -216,7 +236,9 @@ TEST_CASE("roughset: pawlak_8obj, indiscernibility classes", "[roughset]") {
 }
 
 TEST_CASE("roughset: pawlak_8obj, approximations of X = {1,2,3,4,5}", "[roughset]") {
-    const auto t = pawlak8();
+    const auto table = pawlak8();
+    if (!table) return;
+    const auto& t = *table;
     const auto B = attrs(t, {"a", "b", "c"});
     const auto X = objs({1, 2, 3, 4, 5});
     CHECK(lower_approximation(t, B, X) == objs({1, 3, 4, 5}));
@@ -225,7 +247,9 @@ TEST_CASE("roughset: pawlak_8obj, approximations of X = {1,2,3,4,5}", "[roughset
 }
 
 TEST_CASE("roughset: pawlak_8obj, {a,b,c} => {d,e} is inconsistent, POS = {3,4,6,7}", "[roughset]") {
-    const auto t = pawlak8();
+    const auto table = pawlak8();
+    if (!table) return;
+    const auto& t = *table;
     const auto C = attrs(t, {"a", "b", "c"}), D = attrs(t, {"d", "e"});
     CHECK_FALSE(consistent(t, C, D));
     CHECK(positive_region(t, C, D) == objs({3, 4, 6, 7}));

@@ -1,6 +1,6 @@
 #pragma once
 // The classic test functions, in the conventions of pagmo2 (formulas and boxes as listed in
-// reference-data/continuous/reference_values.md). Each evaluates in the same order of operations as
+// $PRIDE_DATA/continuous/reference_values.md). Each evaluates in the same order of operations as
 // pagmo2, so values agree with it to the last bit or nearly so.
 #include <cmath>
 #include <numbers>

@@ -1,5 +1,5 @@
-"""Shared fixtures: the command line (results are compared with its JSON), the reference data, the
-public data of others found through PRIDE_DATA."""
+"""Shared fixtures: the command line (results are compared with its JSON) and the public data of
+others found through PRIDE_DATA."""
 import json
 import os
 import pathlib
@@ -17,14 +17,9 @@ def pride_exe():
     return exe
 
 
-def reference_data():
-    """The repository's reference-data/ (facts restated from public sources, with the sources named)."""
-    return pathlib.Path(os.environ.get("PRIDE_REFERENCE_DATA", str(REPO / "reference-data")))
-
-
 def shared_data(relative, what):
     """$PRIDE_DATA/relative: a file or folder of the public data written by others that the
-    repository does not hold (Moving AI maps, nav2's ROS maps, jMetal's fronts). Without
+    repository does not hold (Moving AI maps, nav2's ROS maps, jMetal's fronts, Pawlak's tables). Without
     PRIDE_DATA, or without that file under it, the test is skipped with the one line saying why."""
     root = os.environ.get("PRIDE_DATA")
     if not root:
@@ -57,8 +52,9 @@ def roughset_as_cli(result):
 
 
 def reference_roughset(name):
-    """A reference decision table's path and `pride roughset --json`'s answer on it (as roughset_as_cli)."""
-    path = reference_data() / "roughset" / name
+    """A reference decision table's path ($PRIDE_DATA/roughset) and `pride roughset --json`'s answer
+    on it (as roughset_as_cli)."""
+    path = shared_data("roughset/" + name, "Pawlak's decision tables")
     return path, roughset_as_cli(cli("roughset", path, "--json"))
 
 

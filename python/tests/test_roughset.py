@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import pride
-from conftest import ROUGHSET_TABLES as TABLES, roughset_as_cli as strip, reference_data, reference_roughset
+from conftest import ROUGHSET_TABLES as TABLES, roughset_as_cli as strip, reference_roughset, shared_data
 
 
 @pytest.mark.parametrize("name", TABLES)
@@ -21,7 +21,7 @@ def test_reference_tables_equal_cli(name):
 
 
 def test_pawlak_p72_known_answer():
-    path = reference_data() / "roughset" / "pawlak1991_p72.csv"
+    path = shared_data("roughset/pawlak1991_p72.csv", "Pawlak's decision tables")
     r = pride.roughset(str(path))
     assert r["core"] == ["a", "b", "d"] and r["reducts"] == [["a", "b", "d"]] and r["consistent"]
     for rule in r["rules"]:

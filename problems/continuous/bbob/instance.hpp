@@ -2,7 +2,7 @@
 // COCO's instance data for the bbob suite: its legacy random generators and what it builds from
 // them (x_opt, f_opt, rotations, Gallagher's peaks). Every number here must equal COCO's bit for
 // bit, so each function follows the order of operations of COCO's suite_bbob_legacy_code.c (and
-// f_gallagher.c for the peaks); see reference-data/bbob/README.md for the conventions.
+// f_gallagher.c for the peaks); see $PRIDE_DATA/bbob/README.md for the conventions.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
