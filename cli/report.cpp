@@ -120,7 +120,7 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
     const fs::path target(folder);
     fs::path scratch;
     try {
-        files.make_folder(target);
+        files.output_folder(target);
         scratch = files.scratch_folder(target);
     } catch (const InputError& e) {
         throw InputError("--plots", e.what());

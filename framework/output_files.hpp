@@ -102,11 +102,22 @@ class OutputFiles {
     OutputFiles& operator=(const OutputFiles&) = delete;
     ~OutputFiles() { discard(); }
 
+    /// The folder a command writes its files into, as the user named it (a link there is
+    /// followed), made if need be. Inside it this output writes only through what it finds or
+    /// makes there itself: a symbolic link in the place of one of its files is replaced by the
+    /// file, never followed, and a link in the place of a folder it writes into is refused, so a
+    /// link planted in a shared folder cannot send the output elsewhere.
+    void output_folder(const std::filesystem::path& folder) {
+        make_folder(folder);
+        roots_.push_back(folder.lexically_normal());
+    }
+
     /// Makes `folder` and its missing parents for the files of this output; those it made are
-    /// removed again by discard(). InputError "PATH: exists and is not a folder" or "PATH: cannot
-    /// create the folder: REASON".
+    /// removed again by discard(). InputError "PATH: exists and is not a folder", "PATH: cannot
+    /// create the folder: REASON" or, inside an output_folder(), "PATH: is a symbolic link ...".
     void make_folder(const std::filesystem::path& folder) {
         namespace fs = std::filesystem;
+        refuse_links_inside(folder);
         std::vector<fs::path> missing;
         for (fs::path p = folder.lexically_normal(); !p.empty(); p = p.parent_path()) {
             if (p.filename().empty() && p.has_relative_path()) continue;  // "dir/" names "dir"
@@ -251,8 +262,9 @@ class OutputFiles {
     File& add(const std::filesystem::path& path) {
         namespace fs = std::filesystem;
         const std::string shown = path.string();
+        const bool inside = refuse_links_inside(path.parent_path());
         struct stat st {};
-        const bool exists = ::stat(path.c_str(), &st) == 0;
+        const bool exists = inside ? ::lstat(path.c_str(), &st) == 0 : ::stat(path.c_str(), &st) == 0;
         if (path.filename().empty() || (exists && S_ISDIR(st.st_mode)))
             throw InputError(shown + ": cannot write: it is a folder");
         std::error_code ec;
@@ -262,10 +274,12 @@ class OutputFiles {
         auto file = std::unique_ptr<File>(new File());
         file->path_ = shown;
         file->key_ = key;
-        file->direct_ = writes_directly(path);
+        // Inside an output folder a link in the file's place is replaced (renamed over), so the file
+        // is written there whatever the link names.
+        file->direct_ = !inside && writes_directly(path);
         if (!file->direct_) {
             struct stat own {};
-            const bool link = ::lstat(path.c_str(), &own) == 0 && S_ISLNK(own.st_mode);
+            const bool link = !inside && ::lstat(path.c_str(), &own) == 0 && S_ISLNK(own.st_mode);
             const fs::path target = link ? fs::canonical(path, ec) : path;
             if (ec) throw InputError(shown + ": cannot write: " + ec.message());
             file->final_ = target.string();
@@ -274,6 +288,28 @@ class OutputFiles {
         names_.insert(key);
         files_.push_back(std::move(file));
         return *files_.back();
+    }
+
+    /// Whether `folder` is an output_folder() or inside one; InputError when a folder between
+    /// that output folder and `folder` is a symbolic link (not followed: refused).
+    bool refuse_links_inside(const std::filesystem::path& folder) const {
+        const std::filesystem::path f = folder.lexically_normal();
+        for (const auto& root : roots_) {
+            const std::filesystem::path rest = f.lexically_relative(root);
+            if (rest.empty() || *rest.begin() == "..") continue;
+            std::filesystem::path p = root;
+            for (const auto& part : rest) {
+                if (part == "." || part.empty()) continue;
+                p /= part;
+                struct stat st {};
+                if (::lstat(p.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+                    throw InputError(p.string() +
+                                     ": is a symbolic link: inside an output folder pride writes only into folders "
+                                     "it finds or makes there, never through a link");
+            }
+            return true;
+        }
+        return false;
     }
 
     /// ".NAME.pride-PID-N.KIND" beside `path`: hidden, unique within the process and its threads.
@@ -292,6 +328,7 @@ class OutputFiles {
     std::vector<std::unique_ptr<File>> files_;
     std::set<std::string> names_;                 // every file's path, resolved: none named twice
     std::vector<std::filesystem::path> made_;     // folders this output made, outermost first
+    std::vector<std::filesystem::path> roots_;    // output_folder()s: no link followed inside them
     std::vector<std::filesystem::path> scratch_;  // scratch folders, removed whatever happens
 };
 

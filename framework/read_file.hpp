@@ -1,12 +1,14 @@
 #pragma once
 // Reading a whole input file with a cap on its size, for every reader of outside data (maps,
 // scenarios, CSV tables, campaign files). The cap is checked before each chunk is kept, so an
-// endless stream (/dev/zero, a pipe) is refused after at most `max_bytes` of memory, not when the
-// machine runs out of it; a regular file is refused from its size before anything is read.
+// endless standard input (`yes | pride path --map /dev/stdin`) is refused after at most
+// `max_bytes` of memory, not when the machine runs out of it; a regular file is refused from its
+// size before anything is read.
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -15,37 +17,59 @@
 
 namespace pride {
 
-/// The content of the file at `path`, at most `max_bytes` of it. InputError "PATH: cannot open:
-/// REASON", "PATH: is a folder, not a file", "PATH: cannot read: REASON" or "PATH: too large:
-/// more than N MiB (WHAT files are far smaller)" otherwise.
+/// The content of the file at `path`, at most `max_bytes` of it. Only regular files are read, and
+/// standard input named /dev/stdin (a pipe there is the user's own): a FIFO, device or socket
+/// elsewhere is refused at once, never waited on (a FIFO without a writer would block forever).
+/// InputError "PATH: cannot open: REASON", "PATH: is a folder, not a file", "PATH: not a regular
+/// file (KIND): ...", "PATH: cannot read: REASON" or "PATH: too large: more than N MiB (WHAT files
+/// are far smaller)" otherwise.
 inline std::string read_capped_file(const std::string& path, std::size_t max_bytes, const std::string& what) {
     struct Closer {
-        void operator()(std::FILE* f) const { std::fclose(f); }
+        int fd;
+        ~Closer() { ::close(fd); }
     };
     const auto too_large = [&] {
         return InputError(path + ": too large: more than " + std::to_string(max_bytes >> 20) + " MiB (" + what +
                           " files are far smaller)");
     };
-    errno = 0;
-    std::unique_ptr<std::FILE, Closer> f(std::fopen(path.c_str(), "rb"));
-    if (!f) throw InputError(path + ": cannot open: " + std::strerror(errno));
-    struct stat st {};
-    if (fstat(fileno(f.get()), &st) == 0) {
-        if (S_ISDIR(st.st_mode)) throw InputError(path + ": is a folder, not a file");
-        if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_bytes) throw too_large();
+    const bool standard_input = path == "/dev/stdin" || path == "/dev/fd/0" || path == "/proc/self/fd/0";
+    // O_NONBLOCK: opening a FIFO does not wait for a writer; fstat then refuses it.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | (standard_input ? 0 : O_NONBLOCK));
+    if (fd < 0) {
+        const int e = errno;
+        throw InputError(path + ": cannot open: " + std::strerror(e));
     }
+    const Closer closer{fd};
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) {
+        const int e = errno;
+        throw InputError(path + ": cannot read: " + std::strerror(e));
+    }
+    if (S_ISDIR(st.st_mode)) throw InputError(path + ": is a folder, not a file");
+    if (!S_ISREG(st.st_mode) && !standard_input) {
+        const char* kind = S_ISFIFO(st.st_mode)   ? "a FIFO"
+                           : S_ISCHR(st.st_mode)  ? "a character device"
+                           : S_ISBLK(st.st_mode)  ? "a block device"
+                           : S_ISSOCK(st.st_mode) ? "a socket"
+                                                  : "not a file";
+        throw InputError(path + ": not a regular file (" + kind + "): " + what +
+                         " files are read from regular files, or from standard input as /dev/stdin");
+    }
+    if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_bytes) throw too_large();
+    if (!standard_input) ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
     std::string data;
     if (S_ISREG(st.st_mode)) data.reserve(static_cast<std::size_t>(st.st_size));
     char buffer[1 << 16];
     for (;;) {
-        const std::size_t n = std::fread(buffer, 1, sizeof buffer, f.get());
-        if (n > max_bytes - data.size()) throw too_large();
-        data.append(buffer, n);
-        if (n < sizeof buffer) break;
-    }
-    if (std::ferror(f.get())) {
-        const int err = errno;
-        throw InputError(path + ": cannot read: " + (err ? std::strerror(err) : "read error"));
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            const int e = errno;
+            throw InputError(path + ": cannot read: " + std::strerror(e));
+        }
+        if (n == 0) break;
+        if (static_cast<std::size_t>(n) > max_bytes - data.size()) throw too_large();
+        data.append(buffer, static_cast<std::size_t>(n));
     }
     return data;
 }

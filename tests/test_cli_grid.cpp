@@ -819,6 +819,28 @@ TEST_CASE("cli grid: scen input errors name the file and line", "[cli][grid][sce
     const std::string version = dir.write("version.scen", "version 7\n");
     expect_input_error("scen " + q(version) + " --json", {version + ":1"});
     expect_input_error("scen " + q(dir.file("missing.scen")) + " --json", {"missing.scen"});
+    // A file that is no map, named on the command line or by a scenario or a campaign file: the
+    // error places it and says what was expected, and shows nothing it holds.
+    const std::string secret = dir.write("secret.txt", "SECRET-LINE-1234 password\nmore\n");
+    for (const std::string& numbers : {std::string("1234 5678\n"), std::string("SECRET\n")}) {
+        dir.write("secret.txt", numbers);
+        const auto r = run_pride("path --map " + q(secret) + " --start 0,0 --goal 1,1 --algo astar");
+        CHECK(r.status == 2);
+        CHECK_THAT(r.err, Catch::Contains("secret.txt:1:1:") && !Catch::Contains("1234") && !Catch::Contains("SECRET"));
+    }
+    dir.write("secret.txt", "SECRET-LINE-1234 password\nmore\n");
+    const std::string leak = dir.write("leak.scen", "version 1\n0\tsecret.txt\t8\t8\t1\t0\t6\t1\t5.4\n");
+    const auto via_scenario = run_pride("scen " + q(leak) + " --json");
+    CHECK(via_scenario.status == 2);
+    CHECK_THAT(via_scenario.err, Catch::Contains("secret.txt:1:1: not a map") && !Catch::Contains("SECRET"));
+    const std::string campaign =
+        dir.write("leak.toml",
+                  "name = \"leak\"\nseeds = 1\n[budget]\niterations = 5\n[[problem]]\nid = \"g\"\ntype = \"grid\"\nmap "
+                  "= \"secret.txt\"\n"
+                  "start = [0, 0]\ngoal = [1, 1]\n[[algorithm]]\nid = \"a\"\ntype = \"astar\"\n");
+    const auto via_campaign = run_pride("bench " + q(campaign) + " --out " + q(dir.file("leak.sqlite")));
+    CHECK(via_campaign.status == 2);
+    CHECK_THAT(via_campaign.err, Catch::Contains("secret.txt:1:1: not a map") && !Catch::Contains("SECRET"));
     // a start on a blocked cell of the map
     dir.write("wall.map", "type octile\nheight 3\nwidth 3\nmap\n...\n.@.\n...\n");
     const std::string blocked = dir.write("blocked.scen", "version 1\n0\twall.map\t3\t3\t1\t1\t0\t0\t1.41421356\n");

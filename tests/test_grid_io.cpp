@@ -174,18 +174,19 @@ TEST_CASE("grid io: CRLF, trailing blanks, final newline, blank lines and BOM ar
 // ---------------------------------------------------------------------------------------------
 // Errors: every one names the file, the line and (where it makes sense) the column
 
-TEST_CASE("grid io: unknown characters are named, printable or not", "[grid][io][errors]") {
+TEST_CASE("grid io: unknown characters are placed and their kind named, never shown", "[grid][io][errors]") {
+    // A map path may name any readable file: its errors give where and what was expected, nothing
+    // of what it holds.
     auto e = map_error(kHeader + "...\n.x.\n");
-    CHECK_THAT(e, StartsWith("m.map:6:2: "));
-    CHECK_THAT(e, Contains("unknown character 'x'"));
+    CHECK(e == "m.map:6:2: unknown map character (a character) in map row 2 (free: . G S, blocked: @ O T W)");
     e = map_error(kHeader + "..#\n...\n");
     CHECK_THAT(e, StartsWith("m.map:5:3: "));
-    CHECK_THAT(e, Contains("'#'"));
+    CHECK_THAT(e, !Contains("#"));
     e = map_error(kHeader + "...\n.\x01.\n");
     CHECK_THAT(e, StartsWith("m.map:6:2: "));
-    CHECK_THAT(e, Contains("\\x01"));
+    CHECK_THAT(e, Contains("a control character"));
     e = map_error(kHeader + "...\n.\x7f.\n");
-    CHECK_THAT(e, Contains("\\x7F"));
+    CHECK_THAT(e, Contains("a control character"));
     e = map_error(kHeader + "...\n.\t.\n");
     CHECK_THAT(e, StartsWith("m.map:6:2: "));
     CHECK_THAT(e, Contains("tab"));
@@ -195,10 +196,10 @@ TEST_CASE("grid io: unknown characters are named, printable or not", "[grid][io]
     // Valid UTF-8 that is not a map character: the column counts characters, not bytes.
     e = map_error(kHeader + "...\n.\xC3\xA9.\n");
     CHECK_THAT(e, StartsWith("m.map:6:2: "));
-    CHECK_THAT(e, Contains("U+00E9"));
+    CHECK_THAT(e, !Contains("U+00E9"));
     e = map_error(kHeader + "...\n\xE2\x96\x88..\n");  // a block character
     CHECK_THAT(e, StartsWith("m.map:6:1: "));
-    CHECK_THAT(e, Contains("U+2588"));
+    CHECK_THAT(e, !Contains("U+2588"));
 }
 
 TEST_CASE("grid io: short, long and empty rows say expected against got", "[grid][io][errors]") {
@@ -232,10 +233,10 @@ TEST_CASE("grid io: missing, malformed and misordered header lines", "[grid][io]
     CHECK_THAT(e, Contains("missing") && Contains("`map`"));
     e = map_error("type octile\nheight x\nwidth 3\nmap\n...\n...\n");
     CHECK_THAT(e, StartsWith("m.map:2:8: "));
-    CHECK_THAT(e, Contains("height") && Contains("`x`"));
+    CHECK_THAT(e, Contains("height") && !Contains("x"));
     e = map_error("type octile\nheight 2\nwidth 3.5\nmap\n...\n...\n");
     CHECK_THAT(e, StartsWith("m.map:3:7: "));
-    CHECK_THAT(e, Contains("width") && Contains("`3.5`"));
+    CHECK_THAT(e, Contains("width") && !Contains("3.5"));
     e = map_error("type octile\nheight 0\nwidth 3\nmap\n");
     CHECK_THAT(e, StartsWith("m.map:2:8: "));
     CHECK_THAT(e, Contains("at least 1"));
@@ -249,10 +250,10 @@ TEST_CASE("grid io: missing, malformed and misordered header lines", "[grid][io]
     CHECK_THAT(e, Contains("needs a value"));
     e = map_error("type octile\nheight 2 3\nwidth 3\nmap\n");
     CHECK_THAT(e, StartsWith("m.map:2:10: "));
-    CHECK_THAT(e, Contains("unexpected `3`"));
+    CHECK_THAT(e, Contains("unexpected text after `height` and its value") && !Contains("3"));
     e = map_error("type grid\nheight 2\nwidth 3\nmap\n...\n...\n");
     CHECK_THAT(e, StartsWith("m.map:1:6: "));
-    CHECK_THAT(e, Contains("unsupported map type `grid`"));
+    CHECK_THAT(e, Contains("unsupported map type: only `type octile` is read") && !Contains("grid"));
     e = map_error("type octile\ntype octile\nheight 2\nwidth 3\nmap\n");
     CHECK_THAT(e, StartsWith("m.map:2:1: "));
     CHECK_THAT(e, Contains("duplicate"));
@@ -309,14 +310,14 @@ TEST_CASE("grid io: empty and binary files", "[grid][io][errors]") {
     CHECK_THAT(e, Contains("NUL"));
     e = map_error(kHeader + "...\n.\xff.\n");
     CHECK_THAT(e, StartsWith("m.map:6:2: "));
-    CHECK_THAT(e, Contains("\\xFF") && Contains("UTF-8"));
+    CHECK_THAT(e, Contains("not UTF-8") && !Contains("\\xFF"));
     // A PNG signature makes it an image (image_map.hpp): a cut one is a bad PNG, not text.
     e = map_error("\x89PNG\r\n\x1a\n");
     CHECK_THAT(e, StartsWith("m.map: "));
     CHECK_THAT(e, Contains("PNG") && Contains("truncated"));
     e = map_error("\x89PNX\r\n\x1a\n");
     CHECK_THAT(e, StartsWith("m.map:1:1: "));
-    CHECK_THAT(e, Contains("\\x89"));
+    CHECK_THAT(e, Contains("not UTF-8") && !Contains("\\x89"));
     e = map_error("type octile\nheight 2\nwidth 3\nmap\n..\xC3");  // cut inside a UTF-8 sequence
     CHECK_THAT(e, StartsWith("m.map:5:3: "));
     // Old Mac line ends leave carriage returns inside a line.
@@ -331,13 +332,13 @@ TEST_CASE("grid io: empty and binary files", "[grid][io][errors]") {
 TEST_CASE("grid io: matrix errors", "[grid][io][errors]") {
     auto e = map_error("0 1 0\n0 2 0\n");
     CHECK_THAT(e, StartsWith("m.map:2:3: "));
-    CHECK_THAT(e, Contains("0 (free) or 1 (blocked)") && Contains("`2`"));
+    CHECK_THAT(e, Contains("0 (free) or 1 (blocked)") && !Contains("`2`"));
     e = map_error("010\n0x0\n");
     CHECK_THAT(e, StartsWith("m.map:2:2: "));
-    CHECK_THAT(e, Contains("'x'"));
+    CHECK_THAT(e, !Contains("'x'"));
     e = map_error("0 10\n0 0\n");  // a token of two characters is not two cells
     CHECK_THAT(e, StartsWith("m.map:1:3: "));
-    CHECK_THAT(e, Contains("`10`"));
+    CHECK_THAT(e, !Contains("10"));
     e = map_error("2 0\n0 0\n");
     CHECK_THAT(e, StartsWith("m.map:1:1: "));
     e = map_error("010\n00\n");
@@ -355,10 +356,10 @@ TEST_CASE("grid io: matrix errors", "[grid][io][errors]") {
     CHECK_THAT(e, Contains("empty matrix cell"));
     e = map_error("0;1\n");
     CHECK_THAT(e, StartsWith("m.map:1:2: "));
-    CHECK_THAT(e, Contains("';'"));
+    CHECK_THAT(e, !Contains(";"));
     e = map_error("01\xC3\xA9\n");
     CHECK_THAT(e, StartsWith("m.map:1:3: "));
-    CHECK_THAT(e, Contains("U+00E9"));
+    CHECK_THAT(e, !Contains("U+00E9"));
 }
 
 TEST_CASE("grid io: every message is one line", "[grid][io][errors]") {
@@ -459,12 +460,12 @@ TEST_CASE("grid io: scenario errors", "[grid][io][scen][errors]") {
     CHECK_THAT(e, Contains("got 10"));
     e = scen_error(v1 + "x\ta.map\t8\t8\t1\t0\t6\t1\t5.4\n");
     CHECK_THAT(e, StartsWith("s.scen:2:"));
-    CHECK_THAT(e, Contains("bucket") && Contains("`x`"));
+    CHECK_THAT(e, Contains("bucket") && !Contains("x"));
     e = scen_error(v1 + "0\ta.map\t0\t8\t0\t0\t0\t0\t0\n");
     CHECK_THAT(e, StartsWith("s.scen:2:"));
     CHECK_THAT(e, Contains("width"));
     e = scen_error(v1 + "0\ta.map\t8\tten\t1\t0\t6\t1\t5.4\n");
-    CHECK_THAT(e, Contains("height") && Contains("`ten`"));
+    CHECK_THAT(e, Contains("height") && !Contains("ten"));
     e = scen_error(v1 + "0\ta.map\t8\t8\t8\t0\t6\t1\t5.4\n");
     CHECK_THAT(e, StartsWith("s.scen:2:"));
     CHECK_THAT(e, Contains("start x 8") && Contains("outside"));
@@ -473,7 +474,7 @@ TEST_CASE("grid io: scenario errors", "[grid][io][scen][errors]") {
     e = scen_error(v1 + "0\ta.map\t8\t4\t1\t0\t6\t4\t5.4\n");
     CHECK_THAT(e, Contains("goal y 4") && Contains("height 4"));
     e = scen_error(v1 + "0\ta.map\t8\t8\t1\t0\t6.5\t1\t5.4\n");
-    CHECK_THAT(e, Contains("goal x") && Contains("`6.5`"));
+    CHECK_THAT(e, Contains("goal x") && !Contains("6.5"));
     for (const char* opt : {"nan", "inf", "-1", "abc", "1.5.2"}) {
         e = scen_error(v1 + "0\ta.map\t8\t8\t1\t0\t6\t1\t" + opt + "\n");
         INFO(opt);

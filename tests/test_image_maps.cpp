@@ -265,7 +265,7 @@ TEST_CASE("image maps: CSV 0/1 matrices", "[grid][map]") {
     std::string e = error_of([] { (void)parse_map("0,1,0\n1,,0\n", "m.csv"); });
     CHECK(e == "m.csv:2:3: empty matrix cell: expected 0 (free) or 1 (blocked)");
     e = error_of([] { (void)parse_map("0,1,0\n1,2,0\n", "m.csv"); });
-    CHECK(e == "m.csv:2:3: matrix cell must be 0 (free) or 1 (blocked), got `2`");
+    CHECK(e == "m.csv:2:3: matrix cell must be 0 (free) or 1 (blocked)");
     e = error_of([] { (void)parse_map("0,1,0\n1,0\n", "m.csv"); });
     CHECK_THAT(e, StartsWith("m.csv:2:"));
     CHECK_THAT(e, Contains("short matrix row"));
@@ -323,15 +323,15 @@ TEST_CASE("ros maps: the YAML's errors are one line with the file, line and colu
     CHECK(read("image: m.pgm\nresolution: -0.05\norigin: [0, 0, 0]\n") ==
           f + ":2:13: resolution must be > 0 (metres per pixel), got -0.05");
     CHECK(read("image: m.pgm\nresolution: abc\norigin: [0, 0, 0]\n") ==
-          f + ":2:13: resolution must be a finite number, got `abc`");
+          f + ":2:13: resolution must be a finite number");
     CHECK(read("image: m.pgm\nresolution: .nan\norigin: [0, 0, 0]\n") ==
-          f + ":2:13: resolution must be a finite number, got `.nan`");
+          f + ":2:13: resolution must be a finite number");
     CHECK(read("image: m.pgm\nresolution: 1\norigin: [0, 0]\n") ==
           f + ":3:9: origin must be [x, y, yaw] (3 numbers), got 2 values");
     CHECK(read("image: m.pgm\nresolution: 1\n") ==
           f + ":1:1: missing `origin:` ([x, y, yaw] of the map's bottom-left corner)");
-    CHECK(read(yaml("m.pgm", "mode: fancy\n")) == f + ":4:7: mode must be trinary, scale or raw, got `fancy`");
-    CHECK(read(yaml("m.pgm", "negate: 2\n")) == f + ":4:9: negate must be 0 or 1, got `2`");
+    CHECK(read(yaml("m.pgm", "mode: fancy\n")) == f + ":4:7: mode must be trinary, scale or raw");
+    CHECK(read(yaml("m.pgm", "negate: 2\n")) == f + ":4:9: negate must be 0 or 1");
     CHECK(read(yaml("m.pgm", "occupied_thresh: 1.5\n")) == f + ":4:18: occupied_thresh must be in [0, 1], got 1.5");
     CHECK(read(yaml("m.pgm", "occupied_thresh: 0.2\nfree_thresh: 0.3\n")) ==
           f + ":5:14: free_thresh 0.3 is above occupied_thresh 0.2");

@@ -311,6 +311,53 @@ TEST_CASE("outputs: a full disk leaves no part of any command's files", "[output
     }
 }
 
+TEST_CASE("outputs: links planted inside an output folder are replaced or refused, never followed", "[outputs][cli]") {
+    // Before: out/index.html a link to a file elsewhere made `report --html out` write the report
+    // into that file, and a link planted as an export's folder received the export.
+    const TempDir dir("pride-out-links");
+    const std::string store = small_store(dir);
+    const std::string bbob = bbob_store(dir);
+    std::vector<std::pair<std::string, std::string>> cases{
+        {"export --ioh", "export " + quote(store) + " --ioh "},
+        {"export --coco", "export " + quote(bbob) + " --coco "},
+        {"report --html", "report " + quote(bbob) + " --html "},
+    };
+    if (has_matplotlib()) cases.emplace_back("report --plots", "report " + quote(bbob) + " --plots ");
+    const std::string victim = dir.write("victim.txt", "keep me\n");
+    const fs::path victims = dir.file("victims");
+    fs::create_directories(victims);
+    for (const auto& [name, args] : cases) {
+        INFO(name);
+        const std::string reference = dir.file("reference-" + std::to_string(&name - &cases.front().first));
+        REQUIRE(run_pride(args + quote(reference)).status == 0);
+        for (const auto& entry : fs::directory_iterator(reference)) {
+            const std::string planted = entry.path().filename().string();
+            INFO(planted);
+            const fs::path out = dir.file("out");
+            fs::remove_all(out);
+            fs::create_directories(out);
+            fs::create_symlink(entry.is_directory() ? victims : fs::path(victim), out / planted);
+            const CliOutput r = run_pride(args + quote(out.string()));
+            if (entry.is_directory()) {
+                check_input_error(r, {(out / planted).string(), "is a symbolic link"});
+            } else {
+                INFO(r.err);
+                REQUIRE(r.status == 0);
+                CHECK(fs::is_regular_file(fs::symlink_status(out / planted)));
+                CHECK(fs::file_size(out / planted) > 0);
+            }
+            CHECK(slurp(victim) == "keep me\n");
+            CHECK(fs::is_empty(victims));
+        }
+    }
+    // The folder the user names may itself be a link: it is followed, as documented.
+    const fs::path linked = dir.file("linked");
+    fs::create_directories(dir.file("real"));
+    fs::create_directory_symlink(dir.file("real"), linked);
+    REQUIRE(run_pride("report " + quote(bbob) + " --html " + quote(linked.string())).status == 0);
+    CHECK(fs::is_regular_file(dir.file("real/index.html")));
+}
+
 TEST_CASE("outputs: files are committed only once standard output was written", "[outputs][cli]") {
     const TempDir dir("pride-out-stdout");
     const std::string store = small_store(dir);

@@ -642,7 +642,7 @@ PageSummary write_report_page(const std::string& store, const std::string& dir, 
     PageSummary summary;
     summary.index = (target / "index.html").string();
     try {
-        files.make_folder(target);
+        files.output_folder(target);
         files.scratch_folder(target);  // that the folder can be written, known before the figures are drawn
         const FontSession fonts;       // one for all the figures
         Page page;

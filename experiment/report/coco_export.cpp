@@ -95,6 +95,7 @@ CocoExportSummary export_coco(const std::string& store_path, const std::string& 
     for (const auto& entry : runs) ids.push_back(entry.first);
     const auto folders = engine::unique_file_names(ids);
     summary.algorithms = runs.size();
+    files.output_folder(folder);
     for (auto& [algorithm, by_fid] : runs) {
         const std::filesystem::path dir = std::filesystem::path(folder) / folders.at(algorithm);
         for (auto& [fid, by_dim] : by_fid) {

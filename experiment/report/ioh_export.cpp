@@ -87,6 +87,7 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
     std::vector<std::string> ids;
     for (const auto& entry : runs) ids.push_back(entry.first);
     const auto folders = engine::unique_file_names(ids);
+    files.output_folder(folder);
     for (const auto& [algorithm, by_problem] : runs) {
         // Suite problems (a suite and a fid, e.g. bbob) as IOHexperimenter writes them: one
         // function per fid (file IOHprofiler_f<fid>_<function>), all its instances and seeds as

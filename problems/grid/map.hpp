@@ -89,12 +89,30 @@ class GridMap {
 
     /// The world frame, when the map came with one (a map_server YAML); none otherwise.
     const std::optional<WorldFrame>& frame() const noexcept { return frame_; }
-    /// Gives the map a world frame: a finite resolution > 0 and a finite origin.
+    /// Gives the map a world frame; InputError naming the map when check_frame() refuses it.
     void set_frame(const WorldFrame& f) {
-        require(std::isfinite(f.resolution) && f.resolution > 0.0, name_,
-                "resolution must be a number > 0 (metres per cell), got " + std::to_string(f.resolution));
-        require(std::isfinite(f.origin_x) && std::isfinite(f.origin_y), name_, "the origin must be finite");
+        check_frame(f, width_, height_, name_);
         frame_ = f;
+    }
+    /// The largest world coordinate (metres, either sign) a frame may reach, and the least
+    /// resolution relative to it: cells stay apart (1e-10 leaves some 20 of a double's 52 bits of
+    /// precision below a cell) and every coordinate prints as a number.
+    static constexpr double max_world = 1e15, min_relative_resolution = 1e-10;
+    /// A finite resolution > 0 and a finite origin, whose cells of a width x height map all have
+    /// finite world coordinates within max_world and can be told apart.
+    static void check_frame(const WorldFrame& f, int width, int height, const std::string& name) {
+        require(std::isfinite(f.resolution) && f.resolution > 0.0, name,
+                "resolution must be a number > 0 (metres per cell), got " + std::to_string(f.resolution));
+        require(std::isfinite(f.origin_x) && std::isfinite(f.origin_y), name, "the origin must be finite");
+        const double far_x = f.origin_x + static_cast<double>(width) * f.resolution;
+        const double far_y = f.origin_y + static_cast<double>(height) * f.resolution;
+        const double reach =
+            std::max({std::fabs(f.origin_x), std::fabs(f.origin_y), std::fabs(far_x), std::fabs(far_y)});
+        require(reach <= max_world, name,
+                "the world frame reaches beyond 1e15 metres (origin plus the map's size times the resolution)");
+        require(f.resolution >= min_relative_resolution * reach, name,
+                "the resolution is too small beside the origin: cells could not be told apart in world "
+                "coordinates (it must be at least 1e-10 of the largest coordinate)");
     }
     /// The world point (metres) of the centre of cell c; the map must have a frame.
     WorldPoint world(Cell c) const {

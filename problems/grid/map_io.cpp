@@ -35,76 +35,19 @@ constexpr std::size_t kMaxFileBytes = std::size_t{64} << 20;
     throw InputError(msg);
 }
 
-std::string hex_byte(unsigned char c) {
-    static constexpr char kHex[] = "0123456789ABCDEF";
-    return std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
-}
+// Nothing of a file that did not parse is quoted in its errors, only its name, line, column and
+// what was expected there: a map or scenario path can name any readable file (a downloaded
+// scenario or campaign file names its own), and an error must not show what such a file holds.
 
-std::string code_point(char32_t v) {
-    static constexpr char kHex[] = "0123456789ABCDEF";
-    std::string digits;
-    for (char32_t x = v; x > 0 || digits.size() < 4; x >>= 4) digits.insert(digits.begin(), kHex[x & 15]);
-    return "U+" + digits;
-}
-
-/// Whether a non-ASCII code point may be shown as itself in a one-line message (no controls, no
-/// invisible or direction-changing formatting characters, no combining marks).
-bool shows_as_itself(char32_t v) {
-    if (v < 0xA0) return false;
-    if (v == 0xAD || (v >= 0x300 && v <= 0x36F)) return false;
-    if (v >= 0x2000 && v <= 0x206F) return false;
-    if (v == 0xFEFF || (v >= 0xFFF0 && v <= 0xFFFF)) return false;
-    if (v >= 0xE000 && v <= 0xF8FF) return false;
-    return true;
-}
-
-/// A name for the (valid UTF-8) character at s[i]: 'x', ' ' (space), \x01, 'é' (U+00E9).
-std::string describe_char(std::string_view s, std::size_t i) {
+/// What kind of character stands at s[i], without showing it: "a space", "a tab", "a control
+/// character", "a character".
+std::string char_kind(std::string_view s, std::size_t i) {
     const auto c = static_cast<unsigned char>(s[i]);
-    if (c == ' ') return "' ' (space)";
-    if (c == '\t') return "'\\t' (tab)";
-    if (c == '\r') return "'\\r' (carriage return)";
-    if (c > 0x20 && c < 0x7F) return std::string("'") + static_cast<char>(c) + "'";
-    if (c < 0x80) return hex_byte(c) + " (control character)";
-    char32_t v = 0;
-    const std::size_t len = utf8_length(s, i, &v);
-    if (len == 0) return hex_byte(c) + " (not UTF-8)";
-    if (shows_as_itself(v)) return "'" + std::string(s.substr(i, len)) + "' (" + code_point(v) + ")";
-    return code_point(v);
-}
-
-/// `text` between backquotes, control and invisible characters escaped, cut after 40 characters.
-std::string quote(std::string_view text) {
-    std::string out = "`";
-    std::size_t shown = 0;
-    for (std::size_t i = 0; i < text.size();) {
-        if (shown == 40) {
-            out += "...";
-            break;
-        }
-        const auto c = static_cast<unsigned char>(text[i]);
-        char32_t v = 0;
-        const std::size_t len = utf8_length(text, i, &v);
-        if (len == 0) {
-            out += hex_byte(c);
-            ++i;
-        } else if (len == 1) {
-            if (c >= 0x20 && c < 0x7F)
-                out += static_cast<char>(c);
-            else if (c == '\t')
-                out += "\\t";
-            else if (c == '\r')
-                out += "\\r";
-            else
-                out += hex_byte(c);
-            i += 1;
-        } else {
-            out += shows_as_itself(v) ? std::string(text.substr(i, len)) : "<" + code_point(v) + ">";
-            i += len;
-        }
-        ++shown;
-    }
-    return out + "`";
+    if (c == ' ') return "a space";
+    if (c == '\t') return "a tab";
+    if (c == '\r') return "a carriage return";
+    if (c < 0x20 || c == 0x7F) return "a control character";
+    return "a character";
 }
 
 /// 1-based column (in characters) of byte `pos` of a line that is valid UTF-8 up to pos.
@@ -140,7 +83,7 @@ std::string_view check_text(std::string_view text, const std::string& name) {
         const std::size_t len = utf8_length(text, i);
         if (len == 0)
             fail(name, line, column(text.substr(line_start), i - line_start),
-                 "byte " + hex_byte(c) + " is not UTF-8 text: a map or scenario must be a text file");
+                 "a byte that is not UTF-8 text: a map or scenario must be a text file");
         i += len;
     }
     return text;
@@ -293,12 +236,12 @@ GridMap parse_movingai(const std::vector<Line>& lines, std::size_t first, std::s
                 fail(name, ln.number, 0,
                      "missing header line " + expected + ": this looks like a map row, but the header (" +
                          std::string(kHeaderAll) + ") is not complete");
-            fail(name, ln.number, col, "expected header line " + expected + ", got " + quote(ln.text));
+            fail(name, ln.number, col, "expected header line " + expected);
         }
         if (k == 3) {  // map
             if (tok.size() > 1)
                 fail(name, ln.number, column(ln.text, tok[1].pos),
-                     "unexpected " + quote(tok[1].text) + " after `map`: the map rows start on the next line");
+                     "unexpected text after `map`: the map rows start on the next line");
             continue;
         }
         const std::string key(kKeywords[k]);
@@ -306,19 +249,15 @@ GridMap parse_movingai(const std::vector<Line>& lines, std::size_t first, std::s
             fail(name, ln.number, column(ln.text, ln.text.size()), "`" + key + "` needs a value: " + expected);
         if (tok.size() > 2)
             fail(name, ln.number, column(ln.text, tok[2].pos),
-                 "unexpected " + quote(tok[2].text) + " after " +
-                     quote(ln.text.substr(0, tok[1].pos + tok[1].text.size())));
+                 "unexpected text after `" + key + "` and its value: expected " + expected);
         const Token& value = tok[1];
         const std::size_t vcol = column(ln.text, value.pos);
         if (k == 0) {
-            if (value.text != "octile")
-                fail(name, ln.number, vcol,
-                     "unsupported map type " + quote(value.text) + ": only `type octile` is read");
+            if (value.text != "octile") fail(name, ln.number, vcol, "unsupported map type: only `type octile` is read");
             continue;
         }
         long long v = 0;
-        if (!parse_integer(value.text, v, true))
-            fail(name, ln.number, vcol, key + " must be a whole number >= 1, got " + quote(value.text));
+        if (!parse_integer(value.text, v, true)) fail(name, ln.number, vcol, key + " must be a whole number >= 1");
         if (v < 1) fail(name, ln.number, vcol, key + " must be at least 1, got " + std::to_string(v));
         if (v > INT_MAX) fail(name, ln.number, vcol, key + " too large: " + std::to_string(v));
         dims[k - 1] = v;
@@ -342,7 +281,7 @@ GridMap parse_movingai(const std::vector<Line>& lines, std::size_t first, std::s
         for (std::size_t p = 0; p < s.size(); ++p)
             if (map_char(s[p]) < 0)
                 fail(name, ln.number, column(s, p),
-                     "unknown character " + describe_char(s, p) + " in map row " + std::to_string(r + 1) +
+                     "unknown map character (" + char_kind(s, p) + ") in map row " + std::to_string(r + 1) +
                          " (free: . G S, blocked: @ O T W)");
         const auto w = static_cast<std::size_t>(width);
         if (s.size() < w)
@@ -389,9 +328,7 @@ GridMap parse_matrix(const std::vector<Line>& lines, std::size_t first, const st
             if (csv && cell.empty())
                 fail(name, ln.number, column(s, pos), "empty matrix cell: expected 0 (free) or 1 (blocked)");
             if (cell != "0" && cell != "1")
-                fail(name, ln.number, column(s, pos),
-                     "matrix cell must be 0 (free) or 1 (blocked), got " +
-                         (spaced || csv ? quote(cell) : describe_char(s, pos)));
+                fail(name, ln.number, column(s, pos), "matrix cell must be 0 (free) or 1 (blocked)");
             if (width_line != 0 && count == width) extra_pos = pos;
             ++count;
             blocked.push_back(cell == "1" ? 1 : 0);
@@ -467,7 +404,7 @@ GridMap parse_map(std::string_view text, const std::string& name, const MapReadO
              "missing Moving AI header: a .map file starts with " + std::string(kHeaderAll) +
                  ", but this line is already a map row");
     fail(name, ln.number, column(ln.text, tok[0].pos),
-         "not a map: expected a Moving AI header (`type octile`) or a row of 0/1 matrix cells, got " + quote(ln.text));
+         "not a map: expected a Moving AI header (`type octile`) or a row of 0/1 matrix cells");
 }
 
 GridMap read_map(const std::string& path, const MapReadOptions& options) {
@@ -490,12 +427,10 @@ std::vector<ScenarioEntry> parse_scenario(std::string_view text, const std::stri
         const Line& ln = lines[first];
         const auto tok = tokens(ln.text);
         if (tok[0].text != "version")
-            fail(name, ln.number, 0, "missing `version 1` line: a scenario file starts with it, got " + quote(ln.text));
+            fail(name, ln.number, 0, "missing `version 1` line: a scenario file starts with it");
         if (tok.size() < 2) fail(name, ln.number, 0, "`version` needs a value: `version 1`");
         if (tok.size() > 2 || (tok[1].text != "1" && tok[1].text != "1.0"))
-            fail(name, ln.number, 0,
-                 "unsupported scenario version " + quote(ln.text.substr(tok[1].pos)) +
-                     ": expected `version 1` or `version 1.0`");
+            fail(name, ln.number, 0, "unsupported scenario version: expected `version 1` or `version 1.0`");
     }
 
     std::vector<ScenarioEntry> out;
@@ -511,8 +446,7 @@ std::vector<ScenarioEntry> parse_scenario(std::string_view text, const std::stri
         const auto integer = [&](std::size_t k, const char* field, long long lo) {
             long long v = 0;
             if (!parse_integer(tok[k].text, v, true))
-                fail(name, ln.number, where(k),
-                     std::string(field) + " must be a whole number, got " + quote(tok[k].text));
+                fail(name, ln.number, where(k), std::string(field) + " must be a whole number");
             if (v < lo)
                 fail(name, ln.number, where(k),
                      std::string(field) + " must be at least " + std::to_string(lo) + ", got " + std::to_string(v));
@@ -530,8 +464,7 @@ std::vector<ScenarioEntry> parse_scenario(std::string_view text, const std::stri
         for (std::size_t k = 0; k < 4; ++k) {
             long long v = 0;
             if (!parse_integer(tok[4 + k].text, v, true))
-                fail(name, ln.number, where(4 + k),
-                     std::string(names[k]) + " must be a whole number, got " + quote(tok[4 + k].text));
+                fail(name, ln.number, where(4 + k), std::string(names[k]) + " must be a whole number");
             const int extent = (k % 2 == 0) ? e.width : e.height;
             if (v < 0 || v >= extent)
                 fail(name, ln.number, where(4 + k),
@@ -547,7 +480,7 @@ std::vector<ScenarioEntry> parse_scenario(std::string_view text, const std::stri
             double v = 0.0;
             const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
             if (ec != std::errc{} || ptr != s.data() + s.size() || !std::isfinite(v) || v < 0.0)
-                fail(name, ln.number, where(8), "optimal length must be a number >= 0, got " + quote(s));
+                fail(name, ln.number, where(8), "optimal length must be a number >= 0");
             e.optimal = v;
         }
         out.push_back(std::move(e));

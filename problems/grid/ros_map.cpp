@@ -38,12 +38,36 @@ std::string printable(const std::string& text) {
                      printable(what));
 }
 
-/// A short, one-line form of a scalar for messages.
-std::string shown(const YAML::Node& node) {
-    if (!node.IsScalar()) return node.IsSequence() ? "a list" : node.IsMap() ? "a mapping" : "nothing";
-    std::string s = node.Scalar();
-    if (s.size() > 40) s = s.substr(0, 40) + "...";
-    return "`" + s + "`";  // fail() escapes control characters
+/// ", got a list" (a mapping, nothing) where a node is not a value; a value is never shown: nothing of a file that did
+/// not parse as a map YAML is quoted (map_io.cpp says why).
+std::string got(const YAML::Node& node) {
+    if (node.IsScalar()) return "";
+    return node.IsSequence() ? ", got a list" : node.IsMap() ? ", got a mapping" : ", got nothing";
+}
+
+// A map_server YAML names one image and a few numbers: a few hundred bytes. yaml-cpp holds some 140
+// times its input's size, so the text is bounded before it builds anything, and so is the nesting
+// of flow collections ([ and {), which it follows by recursion.
+constexpr std::size_t kMaxYamlBytes = std::size_t{64} << 10;
+constexpr int kMaxYamlNesting = 16;
+
+void check_yaml_bounds(std::string_view text, const std::string& name) {
+    if (text.size() > kMaxYamlBytes)
+        throw InputError(name +
+                         ": too large for a map_server YAML file: more than 64 KiB (it names an image and "
+                         "a few numbers)");
+    int depth = 0;
+    std::size_t line = 1;
+    for (const char c : text) {
+        if (c == '\n') ++line;
+        if (c == '[' || c == '{') {
+            if (++depth > kMaxYamlNesting)
+                throw InputError(name + ":" + std::to_string(line) + ": lists or mappings nested deeper than " +
+                                 std::to_string(kMaxYamlNesting) + " levels: not a map_server YAML file");
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
 }
 
 std::string number_text(double v) {
@@ -53,10 +77,10 @@ std::string number_text(double v) {
 }
 
 double number(const YAML::Node& node, const std::string& key, const std::string& name) {
-    if (!node.IsScalar()) fail(name, node.Mark(), key + " must be a number, got " + shown(node));
+    if (!node.IsScalar()) fail(name, node.Mark(), key + " must be a number" + got(node));
     double v = 0.0;
     if (!YAML::convert<double>::decode(node, v) || !std::isfinite(v))
-        fail(name, node.Mark(), key + " must be a finite number, got " + shown(node));
+        fail(name, node.Mark(), key + " must be a finite number" + got(node));
     return v;
 }
 
@@ -85,6 +109,7 @@ bool looks_like_ros_yaml(std::string_view text) noexcept {
 }
 
 RosMapInfo parse_ros_yaml(std::string_view text, const std::string& name) {
+    check_yaml_bounds(text, name);
     YAML::Node doc;
     try {
         doc = YAML::Load(std::string(text));
@@ -97,7 +122,7 @@ RosMapInfo parse_ros_yaml(std::string_view text, const std::string& name) {
         const YAML::Node image = doc["image"];
         if (!image) fail(name, doc.Mark(), "missing `image:` (the map's image file)");
         if (!image.IsScalar() || image.Scalar().empty())
-            fail(name, image.Mark(), "image must name the image file, got " + shown(image));
+            fail(name, image.Mark(), "image must name the image file" + got(image));
         info.image = image.Scalar();
         if (info.image.find('\0') != std::string::npos) fail(name, image.Mark(), "image holds a NUL byte");
 
@@ -112,11 +137,16 @@ RosMapInfo parse_ros_yaml(std::string_view text, const std::string& name) {
         if (!origin) fail(name, doc.Mark(), "missing `origin:` ([x, y, yaw] of the map's bottom-left corner)");
         if (!origin.IsSequence() || origin.size() != 3)
             fail(name, origin.Mark(),
-                 "origin must be [x, y, yaw] (3 numbers), got " +
-                     (origin.IsSequence() ? std::to_string(origin.size()) + " values" : shown(origin)));
+                 "origin must be [x, y, yaw] (3 numbers)" +
+                     (origin.IsSequence() ? ", got " + std::to_string(origin.size()) + " values" : got(origin)));
         info.frame.origin_x = number(origin[0], "origin x", name);
         info.frame.origin_y = number(origin[1], "origin y", name);
         info.yaw = number(origin[2], "origin yaw", name);
+        try {
+            GridMap::check_frame(info.frame, 1, 1, "");  // what no map can use; its size is checked with the image
+        } catch (const InputError& e) {
+            fail(name, origin.Mark(), e.detail());
+        }
         if (info.yaw != 0.0)
             fail(name, origin[2].Mark(), "origin yaw " + number_text(info.yaw) + " is not supported: rotate the image");
 
@@ -135,7 +165,7 @@ RosMapInfo parse_ros_yaml(std::string_view text, const std::string& name) {
             else if (s == "1" || s == "true" || s == "True")
                 o.negate = true;
             else
-                fail(name, negate.Mark(), "negate must be 0 or 1, got " + shown(negate));
+                fail(name, negate.Mark(), "negate must be 0 or 1" + got(negate));
         }
         if (const YAML::Node mode = doc["mode"]) {
             const std::string s = mode.IsScalar() ? mode.Scalar() : "";
@@ -146,7 +176,7 @@ RosMapInfo parse_ros_yaml(std::string_view text, const std::string& name) {
             else if (s == "raw")
                 o.mode = MapMode::raw;
             else
-                fail(name, mode.Mark(), "mode must be trinary, scale or raw, got " + shown(mode));
+                fail(name, mode.Mark(), "mode must be trinary, scale or raw" + got(mode));
         }
     } catch (const YAML::Exception& e) {  // a lookup into a node of the wrong kind
         fail(name, e.mark, "bad YAML: " + e.msg);

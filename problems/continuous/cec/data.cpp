@@ -1,5 +1,7 @@
 #include "problems/continuous/cec/data.hpp"
 
+#include <Eigen/LU>
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -48,7 +50,7 @@ class Tokens {
         double v = 0;
         const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
         if (ec != std::errc() || end != token.data() + token.size() || !std::isfinite(v))
-            throw InputError(where(), "'" + std::string(token.substr(0, 40)) + "' is not a finite number");
+            throw InputError(where(), "expected a finite number (the file is not CEC data)");
         return v;
     }
     long long integer(std::size_t wanted) {
@@ -56,7 +58,7 @@ class Tokens {
         long long v = 0;
         const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
         if (ec != std::errc() || end != token.data() + token.size())
-            throw InputError(where(), "'" + std::string(token.substr(0, 40)) + "' is not an integer");
+            throw InputError(where(), "expected an integer (the file is not CEC data)");
         return v;
     }
     /// What fscanf's "%*[^\n]%*c" does after a row: the rest of the current line is skipped.
@@ -100,6 +102,34 @@ class Tokens {
 std::string read(const std::string& directory, const std::string& file) {
     const std::string path = directory + "/" + file;
     return read_capped_file(path, kMaxFileBytes, "CEC data");
+}
+
+// What the data may hold, so that a damaged or hostile file cannot make every value infinite or
+// the function lose a dimension: the official files hold shifts within [-80, 80] and matrices of
+// full rank with entries within [-3, 3]. A shift must lie in the suites' search box [-100, 100]
+// (an optimum outside it is no CEC problem); a matrix's entries within [-1000, 1000] and the
+// matrix of full rank (a singular one, an all-zero one say, is refused, not run).
+constexpr double kSearchBound = 100.0, kMaxMatrixEntry = 1000.0;
+
+void check_shifts(const std::vector<double>& shift, const std::string& name) {
+    for (std::size_t i = 0; i < shift.size(); ++i)
+        if (std::fabs(shift[i]) > kSearchBound)
+            throw InputError(name, "shift value " + std::to_string(i + 1) +
+                                       " lies outside the search box [-100, 100] (a damaged file)");
+}
+
+void check_matrices(const std::vector<double>& rows, std::size_t count, std::size_t dim, const std::string& name) {
+    for (std::size_t c = 0; c < count; ++c) {
+        const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> m(
+            rows.data() + c * dim * dim, static_cast<Eigen::Index>(dim), static_cast<Eigen::Index>(dim));
+        const std::string which = "matrix " + std::to_string(c + 1) + " of " + std::to_string(count);
+        if (m.cwiseAbs().maxCoeff() > kMaxMatrixEntry)
+            throw InputError(name, which + " has an entry outside [-1000, 1000] (a damaged file)");
+        const Eigen::FullPivLU<Eigen::MatrixXd> lu(m);
+        if (lu.rank() < static_cast<Eigen::Index>(dim))
+            throw InputError(name, which + " is singular (rank " + std::to_string(lu.rank()) + " of " +
+                                       std::to_string(dim) + "): a damaged file");
+    }
 }
 
 }  // namespace
@@ -208,10 +238,12 @@ std::shared_ptr<const Data> load(Suite suite, int function, std::size_t dim, Nee
                 for (std::size_t j = 0; j < dim; ++j)
                     data->rotation[c * dim * dim + j * dim + i] = by_rows[c * dim * dim + i * dim + j];
     }
+    check_matrices(by_rows, needs.components, dim, directory + "/" + m_file);
     const std::string s_file = "shift_data_" + f + ".txt";
     const std::string shift_text = read(directory, s_file);
     data->shift = needs.components == 1 ? read_numbers(shift_text, dim, directory + "/" + s_file)
                                         : read_rows(shift_text, needs.components, dim, directory + "/" + s_file);
+    check_shifts(data->shift, directory + "/" + s_file);
     if (needs.shuffles > 0) {
         const std::string p_file = "shuffle_data_" + f + "_D" + d + ".txt";
         data->shuffle = read_permutations(read(directory, p_file), needs.shuffles, dim, directory + "/" + p_file);
