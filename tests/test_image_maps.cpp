@@ -183,6 +183,14 @@ TEST_CASE("image maps: world points and cells round trip", "[grid][map][image]")
     CHECK_THROWS_AS(m.set_frame({0.0, 0.0, 0.0}), pride::InputError);
     CHECK_THROWS_AS(m.set_frame({-1.0, 0.0, 0.0}), pride::InputError);
     CHECK_THROWS_AS(m.set_frame({1.0, INFINITY, 0.0}), pride::InputError);
+    // Frames whose coordinates overflow or whose cells cannot be told apart: refused, the map's
+    // size counted (a frame fine for one cell may not be for 37).
+    CHECK_THROWS_WITH(m.set_frame({1e308, 0.0, 0.0}), Contains("beyond 1e15 metres"));
+    CHECK_THROWS_WITH(m.set_frame({1e-300, 1e300, 0.0}), Contains("beyond 1e15 metres"));
+    CHECK_THROWS_WITH(m.set_frame({1e-6, 1e5, 0.0}), Contains("cells could not be told apart"));
+    CHECK_NOTHROW(GridMap::check_frame({1e14, 0.0, 0.0}, 1, 1, "m"));
+    CHECK_THROWS_WITH(m.set_frame({1e14, 0.0, 0.0}), Contains("beyond 1e15 metres"));
+    CHECK_NOTHROW(m.set_frame({0.01, 6.4e6, -3.0e6}));  // centimetres at Earth-centred coordinates
 }
 
 TEST_CASE("image maps: map_server modes, negate and thresholds at their boundaries", "[grid][map][image]") {
@@ -338,6 +346,19 @@ TEST_CASE("ros maps: the YAML's errors are one line with the file, line and colu
     CHECK(read(yaml("m.pgm", "origin2: [1, 2\n")).rfind(f + ":", 0) == 0);  // unclosed flow sequence
     CHECK_THAT(read(yaml("m.pgm", "origin2: [1, 2\n")), Contains("bad YAML: "));
     CHECK(read(yaml("[a, b]")) == f + ":1:8: image must name the image file, got a list");
+    CHECK(read("image: m.pgm\nresolution: 1e308\norigin: [0, 0, 0]\n") ==
+          f + ":3:9: the world frame reaches beyond 1e15 metres (origin plus the map's size times the resolution)");
+    CHECK_THAT(read("image: m.pgm\nresolution: 1e-300\norigin: [1e10, 0, 0]\n"),
+               StartsWith(f + ":3:9: the resolution is too small beside the origin"));
+    // A 6e14 m cell passes the YAML (one cell), not the 2 x 2 image: the map's name, no line.
+    CHECK_THAT(read("image: m.pgm\nresolution: 6e14\norigin: [0, 0, 0]\n"), Contains("beyond 1e15 metres"));
+    // Bounded before yaml-cpp builds anything: size and flow nesting.
+    CHECK(read(yaml("m.pgm", "# " + std::string(70000, 'x') + "\n")) ==
+          f + ": too large for a map_server YAML file: more than 64 KiB (it names an image and a few numbers)");
+    CHECK(read(yaml("m.pgm", "deep: " + std::string(17, '[') + std::string(17, ']') + "\n")) ==
+          f + ":4: lists or mappings nested deeper than 16 levels: not a map_server YAML file");
+    CHECK_NOTHROW(
+        read_map(dir.write("m.yaml", yaml("m.pgm", "deep: " + std::string(16, '[') + std::string(16, ']') + "\n"))));
     // The image: relative to the YAML's folder (whatever the working directory), or missing.
     CHECK(read(yaml("nothere.pgm")) ==
           f + ": image: " + (dir.path / "nothere.pgm").string() + ": cannot open: No such file or directory");
