@@ -195,13 +195,13 @@ TEST_CASE("readers: the core by halves equals its definition on random tables", 
 TEST_CASE("readers: a CSV table that is not UTF-8 is refused at its line and column", "[readers][roughset]") {
     const TempDir dir;
     const std::string latin1 = dir.write("latin1.csv", "name,d\ncaf\xE9,yes\nx,no\n");
-    expect_input_error("roughset --json '" + latin1 + "'", {"latin1.csv:2:4:", "\\xE9", "not UTF-8"});
+    expect_input_error("roughset --json '" + latin1 + "'", {"latin1.csv:2:4:", "not UTF-8"});
     const std::string nul = dir.write("nul.csv", std::string("a,d\r\n1,\0\r\n", 10));
     expect_input_error("roughset '" + nul + "'", {"nul.csv:2:3:", "NUL byte"});
     const std::string surrogate = dir.write("surrogate.csv", "a,d\n\xED\xA0\x80,1\n");
-    expect_input_error("roughset '" + surrogate + "'", {"surrogate.csv:2:1:", "\\xED"});
+    expect_input_error("roughset '" + surrogate + "'", {"surrogate.csv:2:1:", "not UTF-8"});
     const std::string truncated = dir.write("truncated.csv", "a,d\n1,\xC3");
-    expect_input_error("roughset '" + truncated + "'", {"truncated.csv:2:3:", "\\xC3"});
+    expect_input_error("roughset '" + truncated + "'", {"truncated.csv:2:3:", "not UTF-8"});
     // Valid UTF-8 (a BOM, accents, 4-byte characters) is read and printed as it is.
     const std::string utf8 =
         dir.write("utf8.csv", "\xEF\xBB\xBFnom,d\xC3\xA9\x63ision\ncaf\xC3\xA9,\xF0\x9F\x99\x82\nth\xC3\xA9,no\n");
