@@ -6,32 +6,39 @@
 #include <map>
 
 #include "cli/numbers.hpp"
+#include "framework/error_place.hpp"
 #include "framework/utf8.hpp"
 
 namespace pride::cli {
 
 std::string user_message(const InputError& e) {
-    static const std::map<std::string, std::string> flags{{"dim", "--dim"},           {"problem", "--problem"},
-                                                          {"algo", "--algo"},         {"start", "--start"},
-                                                          {"goal", "--goal"},         {"objective", "--objective"},
-                                                          {"encoding", "--encoding"}, {"connector", "--connector"},
-                                                          {"init", "--init"},         {"waypoints", "--waypoints"},
-                                                          {"weights", "--weights"},   {"lambda", "--lambda"},
-                                                          {"inflate", "--inflate"},   {"iterations", "--iters"},
-                                                          {"evaluations", "--evals"}, {"wall_ms", "--wall-ms"},
-                                                          {"target", "--target"},     {"oracle", "--oracle"},
-                                                          {"seed", "--seed"},         {"map", "--map"},
-                                                          {"jobs", "--jobs"},         {"threads", "--threads"},
-                                                          {"instance", "--instance"}, {"objectives", "--objectives"},
-                                                          {"html", "--html"}};
-    const std::string& where = e.where();
-    if (where.empty()) return printable(e.what());
-    const auto space = where.find(' ');
-    const std::string head = where.substr(0, space), rest = space == std::string::npos ? "" : where.substr(space);
-    if (head == "parameter") return printable("--param" + rest + ": " + e.detail());
-    const auto it = flags.find(head);
-    if (it == flags.end()) return printable(e.what());
-    return printable(it->second + rest + ": " + e.detail());
+    static const std::map<std::string, std::string, std::less<>> flags{{"parameter", "--param"},
+                                                                       {"dim", "--dim"},
+                                                                       {"problem", "--problem"},
+                                                                       {"algo", "--algo"},
+                                                                       {"start", "--start"},
+                                                                       {"goal", "--goal"},
+                                                                       {"objective", "--objective"},
+                                                                       {"encoding", "--encoding"},
+                                                                       {"connector", "--connector"},
+                                                                       {"init", "--init"},
+                                                                       {"waypoints", "--waypoints"},
+                                                                       {"weights", "--weights"},
+                                                                       {"lambda", "--lambda"},
+                                                                       {"inflate", "--inflate"},
+                                                                       {"iterations", "--iters"},
+                                                                       {"evaluations", "--evals"},
+                                                                       {"wall_ms", "--wall-ms"},
+                                                                       {"target", "--target"},
+                                                                       {"oracle", "--oracle"},
+                                                                       {"seed", "--seed"},
+                                                                       {"map", "--map"},
+                                                                       {"jobs", "--jobs"},
+                                                                       {"threads", "--threads"},
+                                                                       {"instance", "--instance"},
+                                                                       {"objectives", "--objectives"},
+                                                                       {"html", "--html"}};
+    return printable(renamed_message(e, flags).value_or(e.what()));
 }
 
 std::string printable(std::string_view text) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <set>
 #include <span>
 #include <stdexcept>
@@ -16,6 +17,7 @@
 #include "framework/bounds.hpp"
 #include "framework/encoding.hpp"
 #include "framework/error.hpp"
+#include "framework/error_place.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
 #include "framework/problem.hpp"
@@ -848,4 +850,14 @@ TEST_CASE("framework: Registry add, find and order", "[framework][registry]") {
     CHECK(r.find("Mu") == nullptr);    // case-sensitive
     CHECK(r.find("alph") == nullptr);  // whole names only
     CHECK(r.find("") == nullptr);
+}
+
+TEST_CASE("renamed_message: the first word of an error's place in a front end's words", "[framework][errors]") {
+    const std::map<std::string, std::string, std::less<>> names{{"evaluations", "--evals"}, {"parameter", "--param"}};
+    CHECK(pride::renamed_message(pride::InputError("evaluations", "must be >= 1"), names) == "--evals: must be >= 1");
+    CHECK(pride::renamed_message(pride::InputError("parameter pop", "must be >= 4, got 2"), names) ==
+          "--param pop: must be >= 4, got 2");
+    CHECK_FALSE(pride::renamed_message(pride::InputError("start", "outside the map"), names));
+    CHECK_FALSE(pride::renamed_message(pride::InputError("a whole message"), names));
+    CHECK_FALSE(pride::renamed_message(pride::InputError("evaluationsx", "d"), names));  // whole words only
 }

@@ -8,6 +8,7 @@
 #include "common.hpp"
 #include "engine/ask_tell.hpp"
 #include "engine/registry.hpp"
+#include "framework/error_place.hpp"
 #include "problems/continuous/catalog.hpp"
 
 namespace pride::python {
@@ -30,14 +31,9 @@ void count_in(const char* name, std::int64_t value, std::int64_t lo) {
 /// The command line's one-line message (cli/flags.cpp) with the Python keyword where the command
 /// line names its flag: "dim: ..." for "--dim: ...", "evals: ..." for "--evals: ...".
 std::string python_message(const InputError& e) {
-    static const std::map<std::string, std::string> keywords{{"evaluations", "evals"}, {"iterations", "iters"}};
-    const std::string& where = e.where();
-    if (where.empty()) return e.what();
-    const auto space = where.find(' ');
-    const std::string head = where.substr(0, space), rest = space == std::string::npos ? "" : where.substr(space);
-    const auto it = keywords.find(head);
-    if (it == keywords.end()) return e.what();
-    return it->second + rest + ": " + e.detail();
+    static const std::map<std::string, std::string, std::less<>> keywords{{"evaluations", "evals"},
+                                                                          {"iterations", "iters"}};
+    return renamed_message(e, keywords).value_or(e.what());
 }
 
 py::dict param_dict(const engine::ParamSpec& p) {
