@@ -17,7 +17,7 @@
 //       its rank and crowding distance for the tournaments of (1).
 // The initial population: uniform in the box (on chains: the space's random chains), evaluated,
 // ranked and crowded, recorded as iteration 0.
-// On chains (grid paths) the skeleton is the same and only the variation differs: the issue's
+// On chains (grid paths) the skeleton is the same and only the variation differs: the
 // chain operators as policies (Nsga2<ChainCrossover, ChainMutationChoice>: crossover at a common
 // cell with p_c = 0.9, then per child, with probability p_m, one of the GA's and IQGA's mutations;
 // algorithms/parts/variation/chain_operators.hpp). The paper's p_m = 1/n per variable has no chain form;
@@ -172,52 +172,8 @@ struct Nsga2 {
     template <MultiObjectiveProblem P, class O = NoObserver>
     MultiObjectiveResult run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
         auto start = begin(problem, termination, seed);
-        const std::size_t m = start.objectives;
-        Rng& rng = start.rng;
-        MultiObjectiveRunState& state = start.state;
-        const std::size_t dim = problem.dimension();
-        const auto n = static_cast<std::size_t>(population);
-        const auto rows = static_cast<Eigen::Index>(dim), mrows = static_cast<Eigen::Index>(m);
-        const auto cols = static_cast<Eigen::Index>(n);
-        const auto lo = problem.lower(), hi = problem.upper();
-
-        // R_t = [P_t | Q_t]: parents in the first N columns, children in the last N.
-        Matrix r(rows, 2 * cols), fr(mrows, 2 * cols), next(rows, cols), fnext(mrows, cols);
-        for (Eigen::Index j = 0; j < cols; ++j)
-            for (std::size_t i = 0; i < dim; ++i) r(static_cast<Eigen::Index>(i), j) = rng.uniform(lo[i], hi[i]);
-        state.evaluate_columns(problem, r.leftCols(cols), fnext);
-        fr.leftCols(cols) = fnext;
-        Generation g(n);
-        g.rank_initial(*this, fnext, rng);
-        next = r.leftCols(cols);
-        state.end_iteration(observer, next, fnext);
-
-        const auto cross = crossover.prepare(dim);
-        const auto mutate = mutation.prepare(dim);
-        Matrix fq(mrows, cols);
-        while (!state.done()) {
-            // (1)
-            g.mate(*this, fr, rng, [&](std::size_t a, std::size_t b, std::size_t child) {
-                const auto c1 = cols + static_cast<Eigen::Index>(child), c2 = c1 + 1;
-                r.col(c1) = r.col(static_cast<Eigen::Index>(a));
-                r.col(c2) = r.col(static_cast<Eigen::Index>(b));
-                cross(column(r, c1), column(r, c2), lo, hi, rng);
-                mutate(column(r, c1), lo, hi, rng);
-                mutate(column(r, c2), lo, hi, rng);
-            });
-            // (2)
-            state.evaluate_columns(problem, r.rightCols(cols), fq);
-            fr.rightCols(cols) = fq;
-            // (3)
-            g.survive(*this, fr, fnext, rng);
-            for (std::size_t k = 0; k < n; ++k)
-                next.col(static_cast<Eigen::Index>(k)) = r.col(static_cast<Eigen::Index>(g.chosen[k]));
-            r.leftCols(cols) = next;
-            fr.leftCols(cols) = fnext;
-            state.end_iteration(observer, next, fnext);
-        }
-        const auto front = g.first_front();
-        return state.finish(next, fnext, front);
+        BoxPopulation<P> population(problem, static_cast<std::size_t>(this->population), crossover, mutation);
+        return generations(population, start, observer);
     }
 
     /// On chains (grid paths, framework/multi_objective.hpp's MultiObjectiveChainProblem): the same
@@ -230,49 +186,124 @@ struct Nsga2 {
         const requires std::invocable<const Crossover&, P&, typename P::chain_type&, typename P::chain_type&, Rng&> &&
         std::invocable<const Mutation&, P&, typename P::chain_type&, Rng&> {
         auto start = begin(problem, termination, seed);
-        const std::size_t m = start.objectives;
-        Rng& rng = start.rng;
-        MultiObjectiveRunState& state = start.state;
-        const auto n = static_cast<std::size_t>(population);
-        const auto mrows = static_cast<Eigen::Index>(m), cols = static_cast<Eigen::Index>(n);
-
-        using Chain = typename P::chain_type;
-        std::vector<Chain> r(2 * n), next(n);  // R_t = P_t (the first N) and Q_t (the last N)
-        Matrix fr(mrows, 2 * cols), fnext(mrows, cols), fq(mrows, cols);
-        for (std::size_t j = 0; j < n; ++j) problem.random_chain(rng, r[j]);
-        state.evaluate_chains(problem, std::span<const Chain>(r).first(n), fnext);
-        fr.leftCols(cols) = fnext;
-        Generation g(n);
-        g.rank_initial(*this, fnext, rng);
-        std::copy(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n), next.begin());
-        state.end_iteration(observer, next, fnext);
-
-        while (!state.done()) {
-            // (1)
-            g.mate(*this, fr, rng, [&](std::size_t a, std::size_t b, std::size_t child) {
-                Chain& c1 = r[n + child];
-                Chain& c2 = r[n + child + 1];
-                c1 = r[a];  // assignment keeps the child's storage: no allocation once warmed up
-                c2 = r[b];
-                crossover(problem, c1, c2, rng);
-                mutation(problem, c1, rng);
-                mutation(problem, c2, rng);
-            });
-            // (2)
-            state.evaluate_chains(problem, std::span<const Chain>(r).subspan(n, n), fq);
-            fr.rightCols(cols) = fq;
-            // (3)
-            g.survive(*this, fr, fnext, rng);
-            for (std::size_t k = 0; k < n; ++k) next[k] = r[g.chosen[k]];
-            for (std::size_t k = 0; k < n; ++k) r[k] = next[k];
-            fr.leftCols(cols) = fnext;
-            state.end_iteration(observer, next, fnext);
-        }
-        const auto front = g.first_front();
-        return state.finish(next, fnext, front);
+        ChainPopulation<P> population{problem, crossover, mutation, static_cast<std::size_t>(this->population)};
+        return generations(population, start, observer);
     }
 
   private:
+    /// One run's generations, whatever the members are (sec. III-C; BoxPopulation, ChainPopulation):
+    /// R_t's 2N members, parents in the first N and children in the last N.
+    template <class Population, class O>
+    auto generations(Population& pop, MultiObjectiveStart& start, O& observer) const {
+        Rng& rng = start.rng;
+        MultiObjectiveRunState& state = start.state;
+        const std::size_t n = pop.n;
+        const auto mrows = static_cast<Eigen::Index>(start.objectives), cols = static_cast<Eigen::Index>(n);
+        Matrix fr(mrows, 2 * cols), fnext(mrows, cols), fq(mrows, cols);
+        pop.initialise(rng, state, fnext);
+        fr.leftCols(cols) = fnext;
+        Generation g(n);
+        g.rank_initial(*this, fnext, rng);
+        pop.keep_parents();
+        state.end_iteration(observer, pop.next, fnext);
+        while (!state.done()) {
+            // (1)
+            g.mate(*this, fr, rng,
+                   [&](std::size_t a, std::size_t b, std::size_t child) { pop.breed(a, b, child, rng); });
+            // (2)
+            pop.evaluate_children(state, fq);
+            fr.rightCols(cols) = fq;
+            // (3)
+            g.survive(*this, fr, fnext, rng);
+            pop.keep(g.chosen);
+            fr.leftCols(cols) = fnext;
+            state.end_iteration(observer, pop.next, fnext);
+        }
+        const auto front = g.first_front();
+        return state.finish(pop.next, fnext, front);
+    }
+
+    /// Points of a box as matrix columns: R_t in `r`, P_{t+1} in `next`.
+    template <class P>
+    struct BoxPopulation {
+        P& problem;
+        std::size_t n, dim;
+        Eigen::Index cols;
+        std::span<const double> lo, hi;
+        Matrix r, next;
+        decltype(std::declval<const Crossover&>().prepare(std::size_t{})) cross;
+        decltype(std::declval<const Mutation&>().prepare(std::size_t{})) mutate;
+
+        BoxPopulation(P& p, std::size_t size, const Crossover& crossover, const Mutation& mutation)
+            : problem(p),
+              n(size),
+              dim(p.dimension()),
+              cols(static_cast<Eigen::Index>(size)),
+              lo(p.lower()),
+              hi(p.upper()),
+              r(static_cast<Eigen::Index>(dim), 2 * cols),
+              next(static_cast<Eigen::Index>(dim), cols),
+              cross(crossover.prepare(dim)),
+              mutate(mutation.prepare(dim)) {}
+
+        void initialise(Rng& rng, MultiObjectiveRunState& state, Matrix& f) {
+            for (Eigen::Index j = 0; j < cols; ++j)
+                for (std::size_t i = 0; i < dim; ++i) r(static_cast<Eigen::Index>(i), j) = rng.uniform(lo[i], hi[i]);
+            state.evaluate_columns(problem, r.leftCols(cols), f);
+        }
+        void keep_parents() { next = r.leftCols(cols); }
+        void breed(std::size_t a, std::size_t b, std::size_t child, Rng& rng) {
+            const auto c1 = cols + static_cast<Eigen::Index>(child), c2 = c1 + 1;
+            r.col(c1) = r.col(static_cast<Eigen::Index>(a));
+            r.col(c2) = r.col(static_cast<Eigen::Index>(b));
+            cross(column(r, c1), column(r, c2), lo, hi, rng);
+            mutate(column(r, c1), lo, hi, rng);
+            mutate(column(r, c2), lo, hi, rng);
+        }
+        void evaluate_children(MultiObjectiveRunState& state, Matrix& f) {
+            state.evaluate_columns(problem, r.rightCols(cols), f);
+        }
+        void keep(const std::vector<std::size_t>& chosen) {
+            for (std::size_t k = 0; k < n; ++k)
+                next.col(static_cast<Eigen::Index>(k)) = r.col(static_cast<Eigen::Index>(chosen[k]));
+            r.leftCols(cols) = next;
+        }
+    };
+
+    /// Cell chains: R_t in `r`, P_{t+1} in `next`; assignments keep each chain's storage, so no
+    /// allocation once the run is warmed up.
+    template <class P>
+    struct ChainPopulation {
+        using Chain = typename P::chain_type;
+        P& problem;
+        const Crossover& crossover;
+        const Mutation& mutation;
+        std::size_t n;
+        std::vector<Chain> r = std::vector<Chain>(2 * n), next = std::vector<Chain>(n);
+
+        void initialise(Rng& rng, MultiObjectiveRunState& state, Matrix& f) {
+            for (std::size_t j = 0; j < n; ++j) problem.random_chain(rng, r[j]);
+            state.evaluate_chains(problem, std::span<const Chain>(r).first(n), f);
+        }
+        void keep_parents() { std::copy(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n), next.begin()); }
+        void breed(std::size_t a, std::size_t b, std::size_t child, Rng& rng) {
+            Chain& c1 = r[n + child];
+            Chain& c2 = r[n + child + 1];
+            c1 = r[a];
+            c2 = r[b];
+            crossover(problem, c1, c2, rng);
+            mutation(problem, c1, rng);
+            mutation(problem, c2, rng);
+        }
+        void evaluate_children(MultiObjectiveRunState& state, Matrix& f) {
+            state.evaluate_chains(problem, std::span<const Chain>(r).subspan(n, n), f);
+        }
+        void keep(const std::vector<std::size_t>& chosen) {
+            for (std::size_t k = 0; k < n; ++k) next[k] = r[chosen[k]];
+            for (std::size_t k = 0; k < n; ++k) r[k] = next[k];
+        }
+    };
+
     /// Every check of the parameters and the stopping rules, then the run's generator and guard.
     template <class P>
     MultiObjectiveStart begin(P& problem, const Termination& termination, std::uint64_t seed) const {
