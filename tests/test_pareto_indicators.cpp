@@ -552,3 +552,31 @@ TEST_CASE("pareto: bad input is refused with one line naming what", "[pareto]") 
     CHECK_THROWS_WITH(pp::crowding_distance(nan, members, distance, scratch),
                       Contains("point 1 has a non-finite objective value"));
 }
+
+TEST_CASE("pareto: exact hypervolumes beyond their measured bound are refused, not run for minutes",
+          "[pareto][hypervolume]") {
+    // Before: 60 objectives and 30 points held pride.hypervolume (and Ctrl-C) for 30 s; 1000
+    // objectives took 3.9 GB of WFG scratch and ended as bad_alloc.
+    using Catch::Contains;
+    pride::Rng rng(11);
+    for (const std::size_t m : {4u, 8u, 12u, 16u, 40u}) {
+        INFO(m);
+        const auto most = static_cast<Eigen::Index>(pp::exact_hypervolume_points(m));
+        const std::vector<double> r(m, 1.1);
+        const Matrix at = sphere_front(rng, static_cast<Eigen::Index>(m), std::min<Eigen::Index>(most, 64));
+        CHECK(pp::hypervolume(at, r) > 0.0);
+        const Matrix beyond = sphere_front(rng, static_cast<Eigen::Index>(m), most + 1);
+        CHECK_THROWS_WITH(pp::hypervolume(beyond, r), Contains("hypervolume: an exact hypervolume of " +
+                                                               std::to_string(most + 1) + " non-dominated points"));
+        CHECK_THROWS_WITH(pp::contributions(beyond, r), Contains("contributions: an exact hypervolume contribution"));
+    }
+    // Dominated points do not count: a large set with a small non-dominated part is computed.
+    Matrix many(8, 2000);
+    for (Eigen::Index j = 0; j < many.cols(); ++j) many.col(j).setConstant(0.5 + 0.0001 * static_cast<double>(j));
+    CHECK(pp::hypervolume(many, std::vector<double>(8, 1.0)) == Approx(std::pow(0.5, 8)));
+    // A thousand objectives: two points at most, and the scratch is checked before it is made.
+    CHECK(pp::exact_hypervolume_points(1000) == 2);
+    CHECK_THROWS_WITH(pp::hypervolume(sphere_front(rng, 1000, 3), std::vector<double>(1000, 1.1)),
+                      Contains("at most 2 points in 1000 objectives"));
+    CHECK(pp::hypervolume(sphere_front(rng, 1000, 2), std::vector<double>(1000, 1.1)) > 0.0);
+}

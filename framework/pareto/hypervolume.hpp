@@ -55,6 +55,16 @@ inline void check_hypervolume_input(const char* who, const MatrixView& f, std::s
             "point " + std::to_string(minus_infinity) + " has an objective at -infinity (an infinite volume)");
 }
 
+/// The scratch of WFG for n points in m objectives, in bytes: m + 1 limit sets of n points.
+inline double wfg_scratch_bytes(std::size_t n, std::size_t m) {
+    return 8.0 * static_cast<double>(m + 1) * static_cast<double>(n) * (static_cast<double>(m) + 1.0);
+}
+
+/// Refuses an exact computation (`who`: hypervolume or contributions) of n mutually non-dominated
+/// points in m objectives beyond exact_hypervolume_points() (for contributions, half of it: each
+/// point's exclusive volume is a WFG call of its own) or beyond 256 MiB of scratch.
+inline void check_exact_size(const char* who, std::size_t n, std::size_t m, bool contributions);
+
 /// The points of f that strictly dominate ref, flat (M apart), with their column indices.
 struct Dominating {
     std::vector<double> values;
@@ -95,14 +105,15 @@ inline double hypervolume_with_base(const MatrixView& f, std::span<const double>
     check_hypervolume_input("hypervolume", f, ref);
     Dominating d = dominating(f, ref);
     const std::size_t m = d.m;
-    WfgScratch s;
-    s.prepare(d.size(), m, base);
     std::size_t n = d.size();
     if (m > 3) {  // WFG's cost grows fast with N: dominated points go first
         std::size_t kept = 0;
         for (std::size_t k = 0; k < n; ++k) kept = add_nondominated(d.values.data(), kept, d.at(k), m, m);
         n = kept;
+        check_exact_size("hypervolume", n, m, false);
     }
+    WfgScratch s;
+    s.prepare(n, m, base);
     return hypervolume_flat(d.values.data(), n, m, ref.data(), s);
 }
 
@@ -160,6 +171,32 @@ inline void contributions_2d(const Dominating& d, const double* ref, std::vector
 
 }  // namespace detail
 
+/// The most mutually non-dominated points whose hypervolume is computed exactly in m objectives.
+/// WFG's time grows exponentially with M; measured in its worst case (points spread on the unit
+/// sphere, none dominated: DTLZ2's front), each bound takes 0.05 to 0.9 s on the 2-core machine
+/// (docs/multiobjective.md gives the table), so that a wall-time limit or Ctrl-C is never held up
+/// longer inside one computation. M <= 3 (sweeps, O(N log N)) has no bound but memory's.
+inline std::size_t exact_hypervolume_points(std::size_t m) {
+    constexpr std::size_t by_objectives[] = {8000, 4000, 1000, 400, 150, 100, 64, 48, 40, 32, 28, 24, 24};  // M = 4..16
+    if (m <= 3) return std::numeric_limits<std::size_t>::max();
+    if (m <= 16) return by_objectives[m - 4];
+    return std::max<std::size_t>(2, 384 / m);  // past 16 objectives each point costs its M coordinates
+}
+
+namespace detail {
+inline void check_exact_size(const char* who, std::size_t n, std::size_t m, bool contributions) {
+    const std::size_t most = contributions ? exact_hypervolume_points(m) / 2 : exact_hypervolume_points(m);
+    require(n <= most, who,
+            "an exact " + std::string(contributions ? "hypervolume contribution" : "hypervolume") + " of " +
+                std::to_string(n) + " non-dominated points in " + std::to_string(m) +
+                " objectives is beyond what is computed in about a second (at most " + std::to_string(most) +
+                " points in " + std::to_string(m) + " objectives; fewer points or objectives)");
+    require(wfg_scratch_bytes(n, m) <= 256.0 * 1024 * 1024, who,
+            "an exact hypervolume of " + std::to_string(n) + " points in " + std::to_string(m) +
+                " objectives needs more than 256 MiB of scratch memory (fewer points or objectives)");
+}
+}  // namespace detail
+
 /// The hypervolume of the columns of `f` (M rows) with respect to `ref` (M values). Points that do
 /// not strictly dominate ref add nothing; the set need not be non-dominated.
 inline double hypervolume(const MatrixView& f, std::span<const double> ref) {
@@ -177,6 +214,7 @@ inline std::vector<double> contributions(const MatrixView& f, std::span<const do
         detail::contributions_2d(d, ref.data(), out);
         return out;
     }
+    detail::check_exact_size("contributions", n, m, true);
     detail::WfgScratch s;
     s.prepare(n, m, 3);
     double* limit = s.limit[m].data();  // WFG in m objectives works in limit[m - 1] and below
