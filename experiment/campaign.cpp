@@ -228,6 +228,12 @@ std::string digest_difference(const std::string& stored, const std::string& now)
 
 std::string name_problem(const std::string& name) {
     if (name.empty()) return "must not be empty";
+    // Reports and exports name files and folders after ids, a figure after a problem and an
+    // algorithm together: two ids of 100 bytes and their suffixes stay within the 255 bytes of a
+    // file name, so that a stored run can always be reported.
+    if (name.size() > kMaxNameBytes)
+        return fmt::format("must be at most {} bytes long (it has {}): reports and exports name files after it",
+                           kMaxNameBytes, name.size());
     for (std::size_t i = 0; i < name.size(); ++i) {
         const auto u = static_cast<unsigned char>(name[i]);
         // C0 controls and DEL, and C1 controls (U+0080-U+009F, two bytes in UTF-8): a terminal

@@ -109,6 +109,7 @@ std::string digest_difference(const std::string& stored, const std::string& now)
 /// A name as a store keeps it (the campaign's name, problem and algorithm ids): an empty one, a
 /// NUL (SQLite would cut the name there) or another control character (printed raw on a
 /// terminal) gives what is wrong, else an empty string.
+inline constexpr std::size_t kMaxNameBytes = 100;
 std::string name_problem(const std::string& name);
 
 /// At most this many problems in one campaign (COCO's largest suites have a few thousand): a short

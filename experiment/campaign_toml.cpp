@@ -425,8 +425,22 @@ Campaign parse_campaign(const std::string& path) {
     try {
         root = toml::parse(c.text, path);
     } catch (const toml::parse_error& e) {
+        // toml++'s words up to the first quote: what it quotes after is text of the file, and a
+        // file that is no TOML (a path a scenario or a user named by mistake) is never shown.
+        std::string_view words = e.description();
+        words = words.substr(0, words.find('\''));
+        const auto trim = [&] {
+            while (!words.empty() && (words.back() == ' ' || words.back() == ',' || words.back() == ':'))
+                words.remove_suffix(1);
+        };
+        trim();
+        for (const std::string_view cut : {std::string_view("saw"), std::string_view("expected")})
+            if (words.ends_with(cut)) {
+                words.remove_suffix(cut.size());
+                trim();
+            }
         throw InputError(
-            fmt::format("{}:{}:{}: {}", path, e.source().begin.line, e.source().begin.column, e.description()));
+            fmt::format("{}:{}:{}: not valid TOML: {}", path, e.source().begin.line, e.source().begin.column, words));
     }
     const auto folder = std::filesystem::path(path).parent_path();
     bool suites_read = false;

@@ -111,7 +111,9 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
                             version, store_schema, version > store_schema ? "; or use the newer pride" : ""));
     }
     const std::string part = out + ".part";
-    std::filesystem::remove(part);
+    // A folder the user cannot write is the user's error: one line, exit 2, nothing left behind.
+    if (std::error_code ec; !std::filesystem::remove(part, ec) && ec && ec != std::errc::no_such_file_or_directory)
+        throw InputError(out + ": cannot write the merged store: " + ec.message());
     MergeSummary summary;
     try {
         {

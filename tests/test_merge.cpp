@@ -16,14 +16,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kProblems = "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 3\n"
-                              "[[problem]]\nid = \"f3\"\ntype = \"bbob-f3\"\ndim = 2\ninstance = 1\n";
+const std::string kProblems =
+    "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 3\n"
+    "[[problem]]\nid = \"f3\"\ntype = \"bbob-f3\"\ndim = 2\ninstance = 1\n";
 const std::string kPso = "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n";
 const std::string kGa = "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n";
 
 std::string campaign(int seeds, const std::string& algorithms, int evaluations = 300) {
-    return "name = \"m\"\nseeds = " + std::to_string(seeds) + "\n[budget]\nevaluations = " +
-           std::to_string(evaluations) + "\n" + kProblems + algorithms;
+    return "name = \"m\"\nseeds = " + std::to_string(seeds) +
+           "\n[budget]\nevaluations = " + std::to_string(evaluations) + "\n" + kProblems + algorithms;
 }
 
 /// Every run of a store but its wall time, in key order, as text.
@@ -124,4 +125,10 @@ TEST_CASE("merge: what cannot be merged is refused, naming it, and nothing is wr
     const auto exists = pride::test::run_pride("merge '" + a + "' '" + a + "' --out '" + a + "'");
     CHECK(exists.status == 2);
     CHECK_THAT(exists.err, Catch::Contains("exists already"));
+    // An output whose folder cannot be written (here: a file in the folder's place) is the user's
+    // error, one line and exit 2 (it was "internal error: filesystem error ...", exit 1).
+    const std::string file = dir.write("plain", "x");
+    const auto unwritable = pride::test::run_pride("merge '" + a + "' '" + a + "' --out '" + file + "/m.sqlite'");
+    CHECK(unwritable.status == 2);
+    CHECK_THAT(unwritable.err, Catch::Contains(file + "/m.sqlite: cannot write the merged store: Not a directory"));
 }

@@ -306,6 +306,11 @@ TEST_CASE("store identity: empty names and names with NUL or control characters 
         {"name = \"n\"", "name = \"x\\u001b[31my\"", ":1:8: 'name' must not contain control characters (U+001B"},
         {"id = \"pso\"", "id = \"p\\u009bq\"", ":10:6: 'id' must not contain control characters (U+009B"},
         {"id = \"pso\"", "id = \"p\\tq\"", ":10:6: 'id' must not contain control characters (U+0009"},
+        // Before: a 5,000-byte id was stored, and every later report --html and export failed.
+        {"id = \"s\"", "id = \"" + std::string(5000, 's') + "\"",
+         ":6:6: 'id' must be at most 100 bytes long (it has 5000): reports and exports name files after it"},
+        {"id = \"pso\"", "id = \"" + std::string(101, 'p') + "\"",
+         ":10:6: 'id' must be at most 100 bytes long (it has 101)"},
     };
     for (const auto& c : cases) {
         INFO(c.to);
@@ -322,6 +327,14 @@ TEST_CASE("store identity: empty names and names with NUL or control characters 
                   "functions = [1]\ndimensions = [2]\n[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n");
     check_input_error(run_pride("bench '" + suite + "' --out '" + dir.file("s.sqlite") + "'"),
                       {suite + ":7:6: 'id' must not contain control characters (U+0007"});
+    // A prefix within the bound whose ids are not: the ids the suite makes are checked too.
+    const std::string long_suite =
+        dir.write("l.toml", "name = \"n\"\nseeds = 1\n[budget]\nevaluations = 20\n[[suite]]\nname = \"bbob\"\nid = \"" +
+                                std::string(95, 'b') +
+                                "\"\nfunctions = [1]\ndimensions = [2]\n[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n");
+    check_input_error(run_pride("bench '" + long_suite + "' --out '" + dir.file("s.sqlite") + "'"),
+                      {"problem id must be at most 100 bytes long"});
+    CHECK(!std::filesystem::exists(dir.file("s.sqlite")));
 }
 
 TEST_CASE("store identity: campaigns built in code get the same name checks (prepare)", "[store-identity]") {
