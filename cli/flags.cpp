@@ -28,6 +28,7 @@ std::string user_message(const InputError& e) {
                                                                        {"inflate", "--inflate"},
                                                                        {"iterations", "--iters"},
                                                                        {"evaluations", "--evals"},
+                                                                       {"corner_cutting", "--corner-cutting"},
                                                                        {"wall_ms", "--wall-ms"},
                                                                        {"target", "--target"},
                                                                        {"oracle", "--oracle"},

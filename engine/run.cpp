@@ -304,6 +304,12 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
         require(!entry.plans_polylines || g->objective == "length", "objective",
                 entry.name + " plans polylines, whose value is their length: it runs on the length objective, not " +
                     g->objective);
+        // Its polylines never pass between two blocked cells that touch at a corner: a setting it
+        // cannot honour is refused, never ignored.
+        require(!entry.plans_polylines || !g->corner_cutting, "corner_cutting",
+                entry.name +
+                    " plans polylines in the free plane, which has no corner cutting (leave it off, or plan "
+                    "with astar)");
         return params;
     }
     if (p.encoding_error) throw *p.encoding_error;

@@ -692,6 +692,27 @@ TEST_CASE("cli grid: start equal to goal is a one-cell path", "[cli][grid][path]
     const JsonValue j = check_path_json(success("path " + where + " --algo ga --encoding chain --json --oracle"),
                                         b.grid, {3, 3}, {3, 3}, cells_objective(), "ga", true);
     CHECK(j.at("path").items.size() == 1);
+    // Polyline planners: the one-vertex polyline (their path is [] as always).
+    for (const std::string& algo : {std::string("theta-star"), std::string("any-angle-exact")}) {
+        const JsonValue p = parse_json(success("path " + where + " --algo " + algo + " --objective length --json"));
+        CHECK(p.at("feasible").boolean);
+        REQUIRE(p.at("polyline").items.size() == 1);
+        CHECK(p.at("objective_value").number == 0);
+    }
+}
+
+TEST_CASE("cli grid: polyline planners refuse corner cutting, which they cannot honour", "[cli][grid][path]") {
+    // Before: on .@ / @. astar --corner-cutting found the diagonal, while theta-star and the others
+    // took the flag and answered "feasible no" with exit 0.
+    TempDir dir;
+    const std::string map = dir.write("x.map", "type octile\nheight 2\nwidth 2\nmap\n.@\n@.\n");
+    const std::string where = "path --map " + q(map) + " --start 0,0 --goal 1,1 --objective length --corner-cutting ";
+    CHECK(parse_json(success(where + "--algo astar --json")).at("feasible").boolean);
+    for (const std::string& algo :
+         {std::string("theta-star"), std::string("lazy-theta-star"), std::string("any-angle-exact")})
+        expect_input_error(
+            where + "--algo " + algo,
+            {"--corner-cutting: " + algo + " plans polylines in the free plane, which has no corner cutting"});
 }
 
 TEST_CASE("cli grid: corner cutting and obstacle inflation", "[cli][grid][path]") {
