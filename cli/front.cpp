@@ -69,6 +69,7 @@ int front_command(const FrontOptions& o, std::ostream& out) {
     const engine::MoProblem problem(spec);
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
     engine::check(algorithm, problem, o.budget);
+    if (!o.no_reference) engine::check_quality(problem);
     const engine::MoRunResult r = engine::run(algorithm, problem, o.budget, o.seed);
     std::optional<engine::MoQuality> q;
     if (!o.no_reference) q = engine::quality(problem, r.f);

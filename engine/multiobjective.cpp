@@ -342,6 +342,18 @@ std::string front_json(const MoRunResult& r) {
     return "[" + points + "]";
 }
 
+void check_quality(const MoProblem& problem) {
+    if (problem.is_grid() || !std::holds_alternative<MoBenchmarkSpec>(problem.prepared().spec)) return;
+    const std::size_t m = problem.objectives(), most = pareto::exact_hypervolume_points(m);
+    if (m <= 3) return;
+    const auto points = static_cast<std::size_t>(problem.reference_front().cols());
+    require(points <= most, "objectives",
+            fmt::format("{} objectives: the hypervolume of the reference front ({} points) is beyond what is computed "
+                        "exactly in {} objectives ({} points at most); give fewer objectives, or run without the "
+                        "reference front",
+                        m, points, m, most));
+}
+
 MoQuality quality(const MoProblem& problem, const Matrix& f) {
     const Matrix& front = problem.reference_front();
     require(front.cols() > 0, "problem", "the reference front is empty (the goal cannot be reached)");

@@ -130,4 +130,10 @@ struct MoQuality {
 /// InputError("problem", ...) for a problem without a reference front (a callback).
 MoQuality quality(const MoProblem& problem, const Matrix& f);
 
+/// Before any run that will be measured: InputError("objectives", ...) when a catalog problem's
+/// reference front is beyond an exact hypervolume's bound in its number of objectives
+/// (pareto::exact_hypervolume_points), so that nothing runs, and no store is written, for a
+/// quality that cannot be computed. Grids (whose exact front is found, not sampled) pass.
+void check_quality(const MoProblem& problem);
+
 }  // namespace pride::engine

@@ -1019,6 +1019,15 @@ void prepare(Campaign& c) {
         if (m.empty()) m = map_digest(*g->map);
         p.digest = compose_digest(m, p);
     }
+    // A quality every run of a problem records must be computable before anything runs.
+    for (const auto& p : c.problems) {
+        if (!p.multiobjective) continue;
+        try {
+            check_quality(*p.multiobjective);
+        } catch (const InputError& e) {
+            throw InputError(where_of(c, p.line, "problem '" + p.id + "'"), e.what());
+        }
+    }
     for (const auto& a : c.algorithms) {
         const std::string where = where_of(c, a.line, "algorithm '" + a.id + "'");
         for (const auto& p : c.problems) {

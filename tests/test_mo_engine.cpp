@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <filesystem>
 #include <memory>
 
 #include "engine/ask_tell.hpp"
@@ -519,4 +520,25 @@ TEST_CASE("pride front plans on chains from the command line") {
     test::expect_input_error("front --algo nsga2 --problem zdt1 --init sitp", {"--init", "--map"});
     test::expect_input_error("front --algo moead --map " + map + " --start 0,19 --goal 19,0 --encoding chain",
                              {"moead", "chain"});
+}
+
+TEST_CASE("mo engine: a reference front beyond exact hypervolume's bound is refused before anything runs",
+          "[mo][engine][sizes]") {
+    // Before: a campaign of dtlz2 with 1000 objectives took 3.9 GB and ended as "internal error:
+    // std::bad_alloc", leaving a store.
+    CHECK_NOTHROW(engine::check_quality(MoProblem(MoBenchmarkSpec{"dtlz2", 0, 5})));
+    CHECK_THROWS_WITH(engine::check_quality(MoProblem(MoBenchmarkSpec{"dtlz2", 0, 1000})),
+                      Catch::Contains("objectives: 1000 objectives: the hypervolume of the reference front (1000 "
+                                      "points) is beyond what is computed exactly"));
+    const test::TempDir dir;
+    const std::string file =
+        dir.write("mo.toml",
+                  "name = \"mo\"\nseeds = 2\n[budget]\nevaluations = 200\n[[problem]]\nid = \"d\"\n"
+                  "type = \"dtlz2\"\nobjectives = 1000\n[[algorithm]]\nid = \"n\"\ntype = \"nsga2\"\n");
+    test::check_input_error(test::run_pride("bench '" + file + "' --out '" + dir.file("mo.sqlite") + "'"),
+                            {file + ":5: objectives: 1000 objectives"});
+    CHECK(!std::filesystem::exists(dir.file("mo.sqlite")));
+    // Without the reference front the run is made.
+    CHECK(test::run_pride("front --algo nsga2 --problem dtlz2 --objectives 1000 --evals 100 --no-reference").status ==
+          0);
 }

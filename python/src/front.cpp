@@ -139,6 +139,7 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
     std::optional<engine::MoProblem> prepared;
     prepared.emplace(spec);
     engine::check(algorithm, *prepared, b);
+    if (reference) engine::check_quality(*prepared);
     const auto r = mo_run_released(algorithm, *prepared, b, seed, function, errors);
     return finish(r, *prepared, reference, seed);
 }
