@@ -188,7 +188,7 @@ TEST_CASE("export --coco: bad input is one line, exit 2", "[coco][export]") {
     // A file where the folder should be.
     std::ofstream(dir / "file") << "x";
     expect_input_error("export '" + store + "' --coco '" + (dir / "file").string() + "'",
-                       {(dir / "file").string(), "cannot create the folder"});
+                       {(dir / "file").string() + ": exists and is not a folder"});
 
     // Only problems outside bbob: nothing to write.
     std::ofstream(dir / "r.toml") << "name = \"r\"\nseeds = 1\n[budget]\nevaluations = 50\n"
