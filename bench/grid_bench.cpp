@@ -35,7 +35,7 @@
 #include <vector>
 
 #include "engine/run.hpp"
-#include "engine/targets.hpp"
+#include "engine/target.hpp"
 #include "framework/encoding.hpp"
 #include "problems/grid/chain.hpp"
 #include "problems/grid/encodings.hpp"

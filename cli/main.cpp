@@ -86,7 +86,7 @@ int run_main(int argc, char** argv) {
             continue;
         }
         all_names += (all_names.empty() ? "" : ", ") + a.name;
-        if (a.run_box) box_names += (box_names.empty() ? "" : ", ") + a.name;
+        if (a.runs(pride::engine::Kind::box)) box_names += (box_names.empty() ? "" : ", ") + a.name;
     }
     RunOptions run;
     auto* run_cmd = app.add_subcommand("run", "one run of an algorithm on a continuous problem");

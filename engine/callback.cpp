@@ -1,5 +1,6 @@
 #include "engine/callback.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "framework/error.hpp"
@@ -48,6 +49,33 @@ void CallbackProblem::starting_points(Rng& rng, Matrix& out) const {
         shared_->starts(rng, out);
     else
         UniformInit{}(*this, rng, out);
+}
+
+MoCallbackProblem::MoCallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper,
+                                     std::size_t objectives, Scalar scalar, Batch batch)
+    : shared_(std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), objectives,
+                                                    std::move(scalar), std::move(batch)})) {}
+
+void MoCallbackProblem::evaluate(std::span<const double> x, std::span<double> f) {
+    if (shared_->scalar) {
+        shared_->scalar(x, f);
+        return;
+    }
+    // Only a batch function: a one-column batch.
+    const Eigen::Map<const Matrix> point(x.data(), static_cast<Eigen::Index>(x.size()), 1);
+    one_.resize(static_cast<Eigen::Index>(f.size()), 1);
+    shared_->batch(point, one_);
+    std::copy(one_.data(), one_.data() + f.size(), f.begin());
+}
+
+void MoCallbackProblem::evaluate_batch(MatrixView points, Matrix& values) {
+    if (shared_->batch) {
+        shared_->batch(points, values);
+        return;
+    }
+    const auto n = static_cast<std::size_t>(points.rows()), m = objectives();
+    for (Eigen::Index j = 0; j < points.cols(); ++j)
+        shared_->scalar(std::span<const double>(points.col(j).data(), n), std::span<double>(values.col(j).data(), m));
 }
 
 }  // namespace pride::engine

@@ -1,6 +1,7 @@
 #pragma once
-// A box problem over a user function (C++ callable, Python function): type erasure at the edge,
-// so every box algorithm can optimise code the engine was not compiled with. With a batch
+// Box problems over a user function (C++ callable, Python function) of one objective or of several
+// (MoCallbackProblem): type erasure at the edge, so every box algorithm can optimise code the
+// engine was not compiled with. With a batch
 // function the evaluation guard hands it the whole population (or what is left of the budget) in
 // one call; registered problems keep their fully typed hot loop and never pass through here.
 #include <functional>
@@ -49,6 +50,37 @@ class CallbackProblem {
         Starts starts;
     };
     std::shared_ptr<const Shared> shared_;  // copies per run share the function and the box
+};
+
+/// A user's function of M objectives: the edge where a call goes through std::function. With a
+/// batch function, a population is one call.
+class MoCallbackProblem {
+  public:
+    using Scalar = std::function<void(std::span<const double>, std::span<double>)>;
+    using Batch = std::function<void(MatrixView, Matrix&)>;
+
+    MoCallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, std::size_t objectives,
+                      Scalar scalar, Batch batch);
+
+    std::size_t dimension() const noexcept { return shared_->lower.size(); }
+    std::span<const double> lower() const noexcept { return shared_->lower; }
+    std::span<const double> upper() const noexcept { return shared_->upper; }
+    std::size_t objectives() const noexcept { return shared_->objectives; }
+    const std::string& name() const noexcept { return shared_->name; }
+
+    void evaluate(std::span<const double> x, std::span<double> f);
+    void evaluate_batch(MatrixView points, Matrix& values);
+
+  private:
+    struct Shared {
+        std::string name;
+        std::vector<double> lower, upper;
+        std::size_t objectives;
+        Scalar scalar;
+        Batch batch;
+    };
+    std::shared_ptr<const Shared> shared_;
+    Matrix one_;  // scratch of the batch-only route
 };
 
 }  // namespace pride::engine

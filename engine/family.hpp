@@ -1,16 +1,17 @@
 #pragma once
 // What an algorithm family's registration file (engine/entries/*.cpp) uses to turn a typed
-// algorithm into registry entries: the runners visit the target once and call the algorithm's
-// typed run(), so every (algorithm type, problem type) pair is instantiated in that one file.
-// Include this only from registration files: it pulls in every problem type.
+// algorithm into registry entries: an entry's runner visits the target once and calls the
+// algorithm's typed run(), so every (algorithm type, problem type) pair is instantiated in that one
+// file. Include this only from registration files: it pulls in every problem type.
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <variant>
 #include <vector>
 
 #include "engine/registry.hpp"
-#include "engine/targets.hpp"
+#include "engine/target.hpp"
 
 namespace pride::engine {
 
@@ -35,6 +36,21 @@ inline auto population_memory(double matrices) {
     };
 }
 
+/// Adds a kind of run to an entry: `run(request, target)`, on the target's alternative T, returns
+/// that kind's result. The entry's runner becomes one that runs T itself and hands any other kind
+/// to the runner it had, so an entry of several kinds is still one runner (one std::function call
+/// and one visit per run).
+template <class T, class Run>
+void add_runner(AlgorithmEntry& e, Kind kind, Run run) {
+    e.kinds.add(kind);
+    e.run = [previous = std::move(e.run), run = std::move(run)](const RunRequest& request,
+                                                                const Target& target) -> Outcome {
+        if (const T* own = std::get_if<T>(&target)) return Outcome(run(request, *own));
+        if (!previous) throw std::logic_error("a target of a kind the entry does not declare");
+        return previous(request, target);
+    };
+}
+
 /// Calls the engine's observer when there is one (box_algorithm's runners).
 struct ForwardingObserver {
     const BoxObserver* observer = nullptr;
@@ -54,21 +70,13 @@ AlgorithmEntry box_algorithm(std::string name, std::string family, std::string s
     e.params = std::move(params);
     // One typed run per (algorithm, problem type), observed or not: the observer is tested once
     // per iteration.
-    auto runner = [configure](const Params& p, const BoxTarget& target, const Termination& termination,
-                              std::uint64_t seed, const BoxObserver* observer) -> Result {
-        const auto algorithm = configure(p);
-        ForwardingObserver forward{observer};
+    add_runner<BoxTarget>(e, Kind::box, [configure](const RunRequest& r, const BoxTarget& target) -> Result {
+        const auto algorithm = configure(r.params);
+        const ForwardingObserver forward{r.observer};
         return std::visit(
-            [&](const auto& problem) -> Result { return algorithm.run(problem, termination, seed, forward); },
+            [&](const auto& problem) -> Result { return algorithm.run(problem, r.termination, r.seed, forward); },
             target.problem);
-    };
-    e.run_box = [runner](const Params& p, const BoxTarget& target, const Termination& termination, std::uint64_t seed) {
-        return runner(p, target, termination, seed, nullptr);
-    };
-    e.run_box_observed = [runner](const Params& p, const BoxTarget& target, const Termination& termination,
-                                  std::uint64_t seed, const BoxObserver& observer) {
-        return runner(p, target, termination, seed, &observer);
-    };
+    });
     return e;
 }
 
@@ -121,17 +129,16 @@ void configure_space(Space& space, const Params& p) {
 template <class Configure>
 void add_chain_runner(AlgorithmEntry& e, Configure configure, const ChainSpaceDefaults& defaults = {}) {
     for (auto& spec : chain_space_params(defaults)) e.params.push_back(std::move(spec));
-    e.run_chain = [configure](const Params& p, const ChainTarget& target, const Termination& termination,
-                              std::uint64_t seed) -> ChainResult {
-        const auto algorithm = configure(p);
+    add_runner<ChainTarget>(e, Kind::chain, [configure](const RunRequest& r, const ChainTarget& target) {
+        const auto algorithm = configure(r.params);
         return std::visit(
             [&](const auto& problem) -> ChainResult {
                 auto space = problem;
-                configure_space(space, p);
-                return algorithm.run(std::move(space), termination, seed);
+                configure_space(space, r.params);
+                return algorithm.run(std::move(space), r.termination, r.seed);
             },
             target.problem);
-    };
+    });
 }
 
 }  // namespace pride::engine

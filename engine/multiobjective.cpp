@@ -7,10 +7,12 @@
 #include <cmath>
 #include <mutex>
 
+#include "engine/grid_names.hpp"
+#include "engine/grid_plan.hpp"
 #include "engine/json.hpp"
-#include "engine/mo_targets.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "engine/target.hpp"
 #include "framework/error.hpp"
 #include "framework/memory.hpp"
 #include "framework/pareto/dominance.hpp"
@@ -24,8 +26,10 @@ struct MoPrepared {
     MoProblemSpec spec;
     std::string name;
     std::vector<std::string> objective_names;
-    std::optional<MoTarget> target;
-    std::optional<MoChainTarget> chain;  // grids on the chain encoding (then no target)
+    // A MoBoxTarget, or a MoChainTarget for grids on the chain encoding.
+    std::optional<Target> target;
+    const MoBoxTarget* box() const { return target ? std::get_if<MoBoxTarget>(&*target) : nullptr; }
+    const MoChainTarget* chain() const { return target ? std::get_if<MoChainTarget>(&*target) : nullptr; }
     // The reference front, made at first use and shared by the problem's copies.
     mutable std::once_flag front_once;
     mutable Matrix front;
@@ -52,7 +56,7 @@ void prepare_benchmark(MoPrepared& out, const MoBenchmarkSpec& s) {
     multiobjective::Benchmark b(s.problem, static_cast<std::size_t>(s.dim), static_cast<std::size_t>(s.objectives));
     out.name = std::string(b.name());
     for (std::size_t i = 1; i <= b.objectives(); ++i) out.objective_names.push_back(fmt::format("f{}", i));
-    out.target = MoTarget{std::move(b)};
+    out.target.emplace(std::in_place_type<MoBoxTarget>, MoBoxTarget{std::move(b)});
 }
 
 void prepare_grid(MoPrepared& out, const MoGridSpec& s) {
@@ -76,28 +80,22 @@ void prepare_grid(MoPrepared& out, const MoGridSpec& s) {
     out.clearance = criteria.clearance();
     out.objective_names = grid::criteria_names(out.criteria);
     out.name = "grid";
-    grid::GridProblem<grid::CellsObjective> problem(g.map, g.start, g.goal, {}, g.corner_cutting);
-    if (g.encoding == "chain") {
-        grid::ChainSpace<grid::CellsObjective> space(problem);
-        if (g.init == "sitp") space.set_init(grid::Walks::sitp);
-        MoGridChain p(std::move(space), std::move(criteria));
-        p.count_calls(g.objective_calls);
-        out.chain = MoChainTarget{std::move(p)};
-        return;
-    }
-    const grid::SelectableConnector connector(g.connector == "penalty" ? grid::SelectableConnector::Kind::penalty
-                                                                       : grid::SelectableConnector::Kind::repair);
-    if (g.encoding == "free") {
-        grid::FreeEncoding<grid::SelectableConnector> e(problem, static_cast<int>(g.waypoints), connector);
-        MoGridFree p(problem, std::move(e), std::move(criteria));
-        p.count_calls(g.objective_calls);
-        out.target = MoTarget{std::move(p)};
-    } else {
-        grid::LineEncoding<grid::SelectableConnector> e(problem, connector);
-        MoGridLine p(problem, std::move(e), std::move(criteria));
-        p.count_calls(g.objective_calls);
-        out.target = MoTarget{std::move(p)};
-    }
+    const grid::GridProblem<grid::CellsObjective> problem(g.map, g.start, g.goal, {}, g.corner_cutting);
+    std::visit(
+        [&](auto&& plan) {
+            using Plan = std::decay_t<decltype(plan)>;
+            if constexpr (std::is_same_v<Plan, grid::ChainSpace<grid::CellsObjective>>) {
+                MoGridChain p(std::move(plan), std::move(criteria));
+                p.count_calls(g.objective_calls);
+                out.target.emplace(std::in_place_type<MoChainTarget>, MoChainTarget{std::move(p)});
+            } else {
+                using Paths = std::conditional_t<std::is_same_v<Plan, LinePlan>, MoGridLine, MoGridFree>;
+                Paths p(problem, std::move(plan), std::move(criteria));
+                p.count_calls(g.objective_calls);
+                out.target.emplace(std::in_place_type<MoBoxTarget>, MoBoxTarget{std::move(p)});
+            }
+        },
+        plan_grid(g, problem));
 }
 
 void prepare_callback(MoPrepared& out, const MoCallbackSpec& s) {
@@ -111,8 +109,9 @@ void prepare_callback(MoPrepared& out, const MoCallbackSpec& s) {
     require(static_cast<bool>(s.scalar) || static_cast<bool>(s.batch), "function", "no function given");
     out.name = s.name;
     for (std::int64_t i = 1; i <= s.objectives; ++i) out.objective_names.push_back(fmt::format("f{}", i));
-    out.target = MoTarget{
-        MoCallbackProblem(s.name, s.lower, s.upper, static_cast<std::size_t>(s.objectives), s.scalar, s.batch)};
+    out.target.emplace(std::in_place_type<MoBoxTarget>,
+                       MoBoxTarget{MoCallbackProblem(s.name, s.lower, s.upper, static_cast<std::size_t>(s.objectives),
+                                                     s.scalar, s.batch)});
 }
 
 /// The grid's exact front over the same criteria (ParetoSearch within the machine's memory).
@@ -157,8 +156,8 @@ bool MoProblem::is_grid() const {
     return std::holds_alternative<MoGridSpec>(prepared_->spec);
 }
 std::size_t MoProblem::dimension() const {
-    if (prepared_->chain) return 0;  // chains have no fixed dimension
-    return std::visit([](const auto& p) { return p.dimension(); }, prepared_->target->problem);
+    if (prepared_->chain()) return 0;  // chains have no fixed dimension
+    return std::visit([](const auto& p) { return p.dimension(); }, prepared_->box()->problem);
 }
 std::size_t MoProblem::objectives() const {
     return prepared_->objective_names.size();
@@ -173,7 +172,7 @@ const Matrix& MoProblem::reference_front() const {
             p.name + " is a user's function: it has no reference front");
     std::call_once(p.front_once, [&] {
         try {
-            if (const auto* b = p.target ? std::get_if<multiobjective::Benchmark>(&p.target->problem) : nullptr)
+            if (const auto* b = p.box() ? std::get_if<multiobjective::Benchmark>(&p.box()->problem) : nullptr)
                 p.front = b->reference_front(reference_points);
             else
                 exact_front(p);
@@ -186,7 +185,7 @@ const Matrix& MoProblem::reference_front() const {
 }
 
 bool MoProblem::is_chain() const {
-    return prepared_->chain.has_value();
+    return prepared_->chain() != nullptr;
 }
 
 const std::vector<grid::Path>& MoProblem::reference_paths() const {
@@ -206,10 +205,10 @@ const AlgorithmEntry& multiobjective_entry(const AlgorithmSpec& algorithm, const
                                      std::to_string(problem.objectives()) + " (multi-objective algorithms: " + names +
                                      ")");
     }
-    if (problem.is_chain() && !entry.run_multiobjective_chain) {
+    if (problem.is_chain() && !entry.runs(Kind::multiobjective_chain)) {
         std::string names;
         for (const auto& e : algorithms().entries())
-            if (e.run_multiobjective_chain) names += (names.empty() ? "" : ", ") + e.name;
+            if (e.runs(Kind::multiobjective_chain)) names += (names.empty() ? "" : ", ") + e.name;
         throw InputError("algo", entry.name + " has no chain operators; the chain encoding takes " + names);
     }
     return entry;
@@ -291,11 +290,12 @@ MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const 
     const AlgorithmEntry& entry = multiobjective_entry(algorithm, problem);
     const Params params(entry.name, entry.params, algorithm.params);
     check_space_params(entry, params, problem);
-    const Termination termination = mo_termination(problem, budget);
+    const RunRequest request{params, mo_termination(problem, budget), seed};
     check_memory(params, problem);
+    const Target& target = *problem.prepared().target;
     std::vector<std::size_t> keep;
     if (problem.is_chain()) {
-        MoChainResult r = entry.run_multiobjective_chain(params, *problem.prepared().chain, termination, seed);
+        MoChainResult r = std::get<MoChainResult>(entry.run(request, target));
         MoRunResult out = listed_run(entry, r, keep);
         for (const std::size_t i : keep) {
             out.paths.push_back(std::move(r.x[i]));
@@ -303,7 +303,7 @@ MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const 
         }
         return out;
     }
-    MultiObjectiveResult r = entry.run_multiobjective(params, *problem.prepared().target, termination, seed);
+    MultiObjectiveResult r = std::get<MultiObjectiveResult>(entry.run(request, target));
     MoRunResult out = listed_run(entry, r, keep);
     out.x.resize(r.x.rows(), static_cast<Eigen::Index>(keep.size()));
     for (std::size_t k = 0; k < keep.size(); ++k)
@@ -321,7 +321,7 @@ MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const 
                     }
                 }
             },
-            problem.prepared().target->problem);
+            problem.prepared().box()->problem);
     }
     return out;
 }

@@ -1,9 +1,9 @@
 #pragma once
 // Multi-objective runs: problems with M objectives by name (ZDT, DTLZ), grids with two
 // to four criteria searched through the line or free encoding, and a user's function returning M
-// values; the multi-objective algorithms of the one registry (engine/registry.hpp:
-// run_multiobjective); a run's non-dominated set, with its paths on grids; and its quality against
-// the problem's reference front (the analytic front sampled, or a grid's exact front).
+// values; the multi-objective algorithms of the one registry (engine/registry.hpp,
+// Kind::multiobjective); a run's non-dominated set, with its paths on grids; and its quality
+// against the problem's reference front (the analytic front sampled, or a grid's exact front).
 //
 // Indicators are computed on normalised objectives: each objective o maps to (o - ideal) /
 // (nadir - ideal), ideal and nadir those of the reference front (a range of 0 counts as 1); the

@@ -11,18 +11,18 @@ void register_builtin_algorithms(AlgorithmRegistry& registry);  // made by CMake
 
 std::vector<std::string> AlgorithmEntry::spaces() const {
     std::vector<std::string> out;
-    if (run_box) out.emplace_back("box");
-    if (run_chain) out.emplace_back("chain");
+    if (runs(Kind::box)) out.emplace_back("box");
+    if (runs(Kind::chain)) out.emplace_back("chain");
     if (whole_map()) out.emplace_back("grid");
-    if (run_multiobjective) out.emplace_back("multi-objective");
-    if (run_multiobjective_chain) out.emplace_back("multi-objective chain");
+    if (runs(Kind::multiobjective)) out.emplace_back("multi-objective");
+    if (runs(Kind::multiobjective_chain)) out.emplace_back("multi-objective chain");
     return out;
 }
 
 std::vector<std::string> AlgorithmEntry::encodings() const {
     std::vector<std::string> out;
-    if (run_box) out.insert(out.end(), {"line", "free"});
-    if (run_chain) out.emplace_back("chain");
+    if (runs(Kind::box)) out.insert(out.end(), {"line", "free"});
+    if (runs(Kind::chain)) out.emplace_back("chain");
     return out;
 }
 
@@ -35,15 +35,18 @@ const ParamSpec* AlgorithmEntry::param(std::string_view wanted) const {
 void AlgorithmRegistry::add(AlgorithmEntry entry) {
     if (entry.name.empty()) throw std::logic_error("an algorithm is registered without a name");
     if (find(entry.name)) throw std::logic_error("algorithm '" + entry.name + "' is registered twice");
-    if (!entry.run_box && !entry.run_chain && !entry.whole_map() && !entry.run_multiobjective)
+    if (!static_cast<bool>(entry.run) || entry.kinds.empty())  // a cast, not `!`: Target may be incomplete here
         throw std::logic_error("algorithm '" + entry.name + "' is registered without a runner");
-    if (entry.run_multiobjective && (entry.run_box || entry.run_chain || entry.whole_map()))
-        throw std::logic_error("algorithm '" + entry.name + "' is multi-objective and has another runner");
-    if (entry.run_multiobjective_chain && !entry.run_multiobjective)
+    const bool searches = entry.runs(Kind::box) || entry.runs(Kind::chain);
+    if (entry.runs(Kind::multiobjective) && (searches || entry.whole_map()))
+        throw std::logic_error("algorithm '" + entry.name + "' is multi-objective and runs on other kinds");
+    if (entry.runs(Kind::multiobjective_chain) && !entry.runs(Kind::multiobjective))
         throw std::logic_error("algorithm '" + entry.name + "' runs on multi-objective chains only");
+    if (entry.whole_map() && (searches || (entry.runs(Kind::grid) && entry.runs(Kind::sampled_grid))))
+        throw std::logic_error("algorithm '" + entry.name + "' plans on the whole map and runs on other kinds");
     // How it plans on a grid, the same three names for every algorithm that plans through an
     // encoding (none of them has a default: the run's value is the problem's, else the native one).
-    if (entry.run_box || entry.run_chain) {
+    if (searches) {
         const auto encodings = entry.encodings();
         if (entry.native_encoding.empty()) entry.native_encoding = encodings.front();
         if (std::find(encodings.begin(), encodings.end(), entry.native_encoding) == encodings.end())
@@ -57,7 +60,7 @@ void AlgorithmRegistry::add(AlgorithmEntry entry) {
         entry.params.push_back(grid_choice("encoding", encodings,
                                            "grids: the encoding it plans through (default: the problem's, else " +
                                                entry.native_encoding + ", its native one)"));
-        if (entry.run_box)
+        if (entry.runs(Kind::box))
             entry.params.push_back(grid_choice("connector", {"repair", "penalty"},
                                                "grids, line and free: how waypoints are joined (default: the "
                                                "problem's, else repair)"));

@@ -5,53 +5,19 @@
 // so adding an algorithm is adding one file. `pride list`, the help texts, parameter checking in
 // every front end and the parameter tables of docs/cli.md all come from here.
 //
-// Type erasure happens here, once per run: a runner receives a target (a variant of the concrete
-// problem types, engine/targets.hpp) and visits it, so the run itself is fully typed.
+// Type erasure happens here, once per run: an entry's one runner receives a target (a variant of
+// the concrete problem types, engine/target.hpp) and visits it, so the run itself is fully typed.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "engine/params.hpp"
-#include "framework/mo_run_state.hpp"
-#include "framework/observer.hpp"
-#include "framework/result.hpp"
-#include "framework/termination.hpp"
-#include "problems/grid/path.hpp"
-#include "problems/grid/polyline.hpp"
+#include "engine/runner.hpp"
 
 namespace pride::engine {
-
-struct BoxTarget;      // engine/targets.hpp
-struct ChainTarget;    // engine/targets.hpp
-struct GridTarget;     // engine/targets.hpp
-struct MoTarget;       // engine/mo_targets.hpp
-struct MoChainTarget;  // engine/mo_targets.hpp
-
-using ChainResult = BasicResult<grid::Path>;
-using MoChainResult = BasicMultiObjectiveResult<std::vector<grid::Path>>;
-
-/// What an observed box run calls at the end of every iteration (iteration 0: the initial
-/// population); once per iteration, never per evaluation.
-using BoxObserver = std::function<void(const IterationView&)>;
-
-/// What a whole-map algorithm (A*, the exact optimum) returns: a legal path and the work it took
-/// (A*: node expansions). A polyline planner (AlgorithmEntry::plans_polylines) returns its
-/// polyline instead, empty when it found none.
-struct GridSolution {
-    grid::Path path;
-    grid::Polyline polyline;
-    /// The polyline's points as the planner checked them (any_angle.hpp's plane, cell (x, y) =
-    /// [x, x + 1] x [y, y + 1]), when it has them: the engine checks these, not a conversion.
-    std::vector<grid::Point> plane;
-    std::int64_t work = 0;
-    /// The planner's own time when it measures it (OMPL's: without waiting for its lock); else the
-    /// engine's clock around the call.
-    std::optional<double> planning_ms;
-};
 
 struct AlgorithmEntry {
     std::string name;     // pso, ga-plus, nlopt:LN_SBPLX, ...
@@ -59,27 +25,12 @@ struct AlgorithmEntry {
     std::string summary;  // one line
     std::vector<ParamSpec> params;
 
-    /// Runs on a box (continuous problems, grids through the line and free encodings, callbacks).
-    std::function<Result(const Params&, const BoxTarget&, const Termination&, std::uint64_t seed)> run_box;
-    /// run_box with an observer (engine::run with an observer; box_algorithm sets both, one
-    /// instantiation for the two). Empty: the entry's box runs cannot be observed.
-    std::function<Result(const Params&, const BoxTarget&, const Termination&, std::uint64_t seed, const BoxObserver&)>
-        run_box_observed;
-    /// Runs on cell chains (grids with the chain encoding).
-    std::function<ChainResult(const Params&, const ChainTarget&, const Termination&, std::uint64_t seed)> run_chain;
-    /// Runs on a problem of several objectives (engine/multiobjective.hpp): its result is the
-    /// non-dominated set. A multi-objective algorithm has no other runner.
-    std::function<MultiObjectiveResult(const Params&, const MoTarget&, const Termination&, std::uint64_t seed)>
-        run_multiobjective;
-    /// Runs on a grid of several criteria searched on cell chains (the chain encoding); only a
-    /// multi-objective entry may have it.
-    std::function<MoChainResult(const Params&, const MoChainTarget&, const Termination&, std::uint64_t seed)>
-        run_multiobjective_chain;
-    /// Solves a grid as a whole (baselines): no budget, no seed.
-    std::function<GridSolution(const GridTarget&)> solve_grid;
-    /// Plans on a grid's plane as a whole with a seed and a budget (sampling-based planners: OMPL's):
-    /// its validity checks are its evaluations, counted (GridSolution::work) and within the budget.
-    std::function<GridSolution(const Params&, const GridTarget&, const Termination&, std::uint64_t seed)> sample_grid;
+    /// The kinds of run it takes (runner.hpp); everything the registry says about where it runs
+    /// (spaces, encodings, whether it evaluates) is read from here.
+    Kinds kinds;
+    /// Runs it: visits the target once (one of `kinds`) and runs typed code. The builders of
+    /// engine/family.hpp make it; a builder that adds a kind wraps the runner it had.
+    Runner run;
     /// Whole-map algorithms that return the exact optimum say so: the objective must have one
     /// (GridTarget::has_optimum), and the run records it beside the result.
     bool needs_optimum = false;
@@ -105,15 +56,16 @@ struct AlgorithmEntry {
 
     /// "box", "chain", "grid", "multi-objective": the spaces it runs on.
     std::vector<std::string> spaces() const;
-    /// The grid encodings it can plan through: line and free with a box runner, chain with a chain one.
+    /// The grid encodings it can plan through: line and free on boxes, chain on chains.
     std::vector<std::string> encodings() const;
     /// False for whole-map planners (A*, exact), which do not evaluate the objective: they have no
     /// evaluation budget, and comparisons at equal evaluations exempt them. A sampling planner's
     /// validity checks are its evaluations.
-    bool evaluates() const { return !solve_grid; }
-    /// Plans on the whole map (no encoding): solve_grid or sample_grid.
-    bool whole_map() const { return solve_grid || sample_grid; }
-    bool multiobjective() const { return static_cast<bool>(run_multiobjective); }
+    bool evaluates() const { return !runs(Kind::grid); }
+    /// Plans on the whole map (no encoding): solved or sampled.
+    bool whole_map() const { return runs(Kind::grid) || runs(Kind::sampled_grid); }
+    bool multiobjective() const { return runs(Kind::multiobjective); }
+    bool runs(Kind kind) const { return kinds.has(kind); }
     const ParamSpec* param(std::string_view name) const;
 };
 

@@ -21,6 +21,14 @@
 
 namespace pride::engine {
 
+/// The largest weight a grid objective takes (--weights, --lambda): a path of a billion cells
+/// at this weight still has a finite value and a finite penalty bound.
+inline constexpr double max_weight = 1e9;
+/// The largest count every front end accepts (evaluations, iterations, population, dimension):
+/// beyond any run that can finish, and far from the int64 limit, so that counts never overflow;
+/// what does not fit in memory is refused before anything is allocated.
+inline constexpr std::int64_t max_budget = 1'000'000'000'000'000;
+
 /// A registered continuous function in a dimension and an instance (empty: the function's default,
 /// 0 = as defined; 1 for BBOB).
 struct ContinuousSpec {

@@ -47,7 +47,7 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 
 TEST_CASE("ask and tell: every box algorithm gives engine::run's result bit for bit", "[engine][ask_tell]") {
     for (const auto& entry : engine::algorithms().entries()) {
-        if (!entry.run_box) continue;
+        if (!entry.runs(engine::Kind::box)) continue;
         INFO(entry.name);
         engine::AskTell run({entry.name, {}}, lower, upper, evals(200), 6);
         std::int64_t told = 0;

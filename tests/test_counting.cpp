@@ -29,10 +29,10 @@ struct Space {
 /// The spaces of a grid `entry` plans on: the box encodings with each connector, and chains.
 std::vector<Space> grid_spaces(const engine::AlgorithmEntry& entry) {
     std::vector<Space> out;
-    if (entry.run_box)
+    if (entry.runs(engine::Kind::box))
         for (const char* encoding : {"line", "free"})
             for (const char* connector : {"repair", "penalty"}) out.push_back({encoding, connector});
-    if (entry.run_chain) out.push_back({"chain", "repair"});
+    if (entry.runs(engine::Kind::chain)) out.push_back({"chain", "repair"});
     return out;
 }
 
@@ -61,7 +61,7 @@ TEST_CASE("counting: every grid algorithm's objective calls are its evaluations,
           "[counting][grid]") {
     int covered = 0;
     for (const auto& entry : engine::algorithms().entries()) {
-        if (entry.solve_grid) continue;  // A*, the exact optimum: no objective evaluations
+        if (entry.runs(engine::Kind::grid)) continue;  // A*, the exact optimum: no objective evaluations
         if (entry.name.rfind("nlopt:", 0) == 0 && entry.name != "nlopt:LN_SBPLX" && entry.name != "nlopt:GN_CRS2_LM")
             continue;  // one adapter for every NLopt algorithm: two of them stand for the rest
         for (const Space& s : grid_spaces(entry))
@@ -124,7 +124,7 @@ TEST_CASE("counting: the chain space's scoring settings spend counted evaluation
 TEST_CASE("counting: every box algorithm's calls of a user function are its evaluations", "[counting][box]") {
     int covered = 0;
     for (const auto& entry : engine::algorithms().entries()) {
-        if (!entry.run_box) continue;
+        if (!entry.runs(engine::Kind::box)) continue;
         INFO(entry.name);
         ++covered;
         for (const std::int64_t n : {1, 61, 300}) {
@@ -166,7 +166,8 @@ TEST_CASE("counting: a user's objective on paths runs with every grid algorithm,
     const engine::Problem problem(g);
     int covered = 0;
     for (const auto& entry : engine::algorithms().entries()) {
-        if (entry.solve_grid || (entry.name.rfind("nlopt:", 0) == 0 && entry.name != "nlopt:LN_SBPLX")) continue;
+        if (entry.runs(engine::Kind::grid) || (entry.name.rfind("nlopt:", 0) == 0 && entry.name != "nlopt:LN_SBPLX"))
+            continue;
         for (const std::string& encoding : entry.encodings()) {
             INFO(entry.name << " on " << encoding);
             ++covered;

@@ -78,7 +78,7 @@ TEST_CASE("engine: choice parameters take one of their names, nothing else", "[e
                 REQUIRE(p.default_value.has_value());
                 CHECK(*p.default_value < static_cast<double>(p.choices.size()));
             }
-        if (!e.run_chain) continue;
+        if (!e.runs(engine::Kind::chain)) continue;
         for (const char* name : {"shortcut", "shortcut_keep", "walks", "sitp_column", "sitp_score"}) {
             INFO(e.name << " " << name);
             REQUIRE(e.param(name) != nullptr);

@@ -664,9 +664,9 @@ TEST_CASE("GA variants: registry entries, their parameters and ranges", "[ga-var
     CHECK(iaga->family == "ga");
     CHECK(icga->family == "ga");
     CHECK(gaq->family == "ga");
-    CHECK(iaga->run_chain);
-    CHECK(icga->run_chain);
-    CHECK_FALSE(gaq->run_chain);
+    CHECK(iaga->runs(engine::Kind::chain));
+    CHECK(icga->runs(engine::Kind::chain));
+    CHECK_FALSE(gaq->runs(engine::Kind::chain));
     auto param = [](const engine::AlgorithmEntry* e, const std::string& name) -> const engine::ParamSpec& {
         const auto it = std::find_if(e->params.begin(), e->params.end(), [&](const auto& p) { return p.name == name; });
         REQUIRE(it != e->params.end());

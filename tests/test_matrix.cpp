@@ -40,14 +40,14 @@ engine::GridSpec grid(const std::string& encoding, const std::string& connector)
 /// The spaces `entry` runs on.
 std::vector<Space> spaces_of(const engine::AlgorithmEntry& entry) {
     std::vector<Space> out;
-    if (entry.run_box) {
+    if (entry.runs(engine::Kind::box)) {
         out.push_back({"sphere 3-D", engine::Problem(engine::ContinuousSpec{"sphere", 3})});
         for (const char* encoding : {"line", "free"})
             for (const char* connector : {"repair", "penalty"})
                 out.push_back(
                     {fmt::format("grid {} {}", encoding, connector), engine::Problem(grid(encoding, connector))});
     }
-    if (entry.run_chain) out.push_back({"grid chain", engine::Problem(grid("chain", "repair"))});
+    if (entry.runs(engine::Kind::chain)) out.push_back({"grid chain", engine::Problem(grid("chain", "repair"))});
     return out;
 }
 
@@ -83,7 +83,8 @@ TEST_CASE("matrix: every box algorithm spends budgets exactly and repeats itself
           "[matrix][algorithms][budget]") {
     int covered = 0;
     for (const auto& entry : engine::algorithms().entries()) {
-        if (!entry.run_box && !entry.run_chain) continue;  // A*, the exact optimum: no budget to spend
+        if (!entry.runs(engine::Kind::box) && !entry.runs(engine::Kind::chain))
+            continue;  // A*, the exact optimum: no budget to spend
         for (const Space& s : spaces_of(entry)) {
             INFO(entry.name << " on " << s.name);
             ++covered;
@@ -153,7 +154,7 @@ TEST_CASE("matrix: NaN is never the best value of any box algorithm", "[matrix][
     };
     const engine::Problem problem(cb);
     for (const auto& entry : engine::algorithms().entries()) {
-        if (!entry.run_box) continue;
+        if (!entry.runs(engine::Kind::box)) continue;
         // NLopt's algorithms included: nlopt:LN_NEWUOA_BOUND once looped inside NLopt on this
         // function without evaluating (algorithms/nlopt.hpp now hands it finite values only).
         INFO(entry.name);

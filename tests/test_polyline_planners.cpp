@@ -15,9 +15,10 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "engine/family.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
-#include "engine/targets.hpp"
+#include "engine/target.hpp"
 #include "experiment/html/page_store.hpp"
 #include "framework/error.hpp"
 #include "grid_support.hpp"
@@ -286,15 +287,16 @@ const engine::Registration straight_line{[] {
     e.family = "test";
     e.summary = "tests only: the straight segment from start to goal, obstacles or not";
     e.plans_polylines = true;
-    e.solve_grid = [](const engine::GridTarget& target) {
-        return std::visit(
-            [](const auto& g) {
-                engine::GridSolution s;
-                s.polyline = {{double(g.start().x), double(g.start().y)}, {double(g.goal().x), double(g.goal().y)}};
-                return s;
-            },
-            target.problem);
-    };
+    engine::add_runner<engine::GridTarget>(
+        e, engine::Kind::grid, [](const engine::RunRequest&, const engine::GridTarget& target) {
+            return std::visit(
+                [](const auto& g) {
+                    engine::GridSolution s;
+                    s.polyline = {{double(g.start().x), double(g.start().y)}, {double(g.goal().x), double(g.goal().y)}};
+                    return s;
+                },
+                target.problem);
+        });
     return e;
 }()};
 

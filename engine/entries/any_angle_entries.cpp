@@ -23,7 +23,7 @@ AlgorithmEntry theta_star(bool lazy) {
                      : "grids only: Theta* (Nash, Daniel, Koenig and Felner 2007), any-angle paths between cell "
                        "centres";
     e.plans_polylines = true;
-    e.solve_grid = [lazy](const GridTarget& target) {
+    add_runner<GridTarget>(e, Kind::grid, [lazy](const RunRequest&, const GridTarget& target) {
         return std::visit(
             [lazy](const auto& g) {
                 grid::ThetaStar search(lazy);
@@ -35,7 +35,7 @@ AlgorithmEntry theta_star(bool lazy) {
                 return s;
             },
             target.problem);
-    };
+    });
     // Its records (g, parent, stamp: 16 bytes) for every cell of the map, and its heap.
     e.memory = [](const Params&, std::size_t cells) { return 32.0 * static_cast<double>(cells); };
     return e;
@@ -53,7 +53,7 @@ void register_any_angle(AlgorithmRegistry& registry) {
         "grids only: the exact any-angle shortest path (visibility graph over the obstacles' convex "
         "corners, A*), the polylines' optimum";
     e.plans_polylines = true;
-    e.solve_grid = [](const GridTarget& target) {
+    add_runner<GridTarget>(e, Kind::grid, [](const RunRequest&, const GridTarget& target) {
         return std::visit(
             [](const auto& g) {
                 grid::AnyAngleOracle oracle(g.map());
@@ -67,7 +67,7 @@ void register_any_angle(AlgorithmRegistry& registry) {
                 return s;
             },
             target.problem);
-    };
+    });
     // Per cell at most one corner, with its g, parent, flags and heap entry (about 40 bytes).
     e.memory = [](const Params&, std::size_t cells) { return 40.0 * static_cast<double>(cells); };
     registry.add(std::move(e));

@@ -10,7 +10,7 @@ void register_astar(AlgorithmRegistry& registry) {
     e.name = "astar";
     e.family = "astar";
     e.summary = "grids only: A* with the octile heuristic, the shortest path by length";
-    e.solve_grid = [](const GridTarget& target) {
+    add_runner<GridTarget>(e, Kind::grid, [](const RunRequest&, const GridTarget& target) {
         return std::visit(
             [](const auto& g) {
                 grid::AStar astar;
@@ -20,7 +20,7 @@ void register_astar(AlgorithmRegistry& registry) {
                 return s;
             },
             target.problem);
-    };
+    });
     // Its records (g, parent, stamp: 16 bytes) for every cell of the map.
     e.memory = [](const Params&, std::size_t cells) { return 16.0 * static_cast<double>(cells); };
     registry.add(std::move(e));

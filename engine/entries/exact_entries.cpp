@@ -13,7 +13,7 @@ void register_exact(AlgorithmRegistry& registry) {
     e.family = "exact";
     e.summary = "grids only: the exact optimum, over (cell, last direction); iqga: over the 3-D Pareto front";
     e.needs_optimum = true;
-    e.solve_grid = [](const GridTarget& target) {
+    add_runner<GridTarget>(e, Kind::grid, [](const RunRequest&, const GridTarget& target) {
         GridSolution s;
         if (!target.additive()) {
             grid_optimum(target, &s.path);
@@ -28,7 +28,7 @@ void register_exact(AlgorithmRegistry& registry) {
                 return s;  // work 0: the oracle's expansions are not evaluations
             },
             target.problem);
-    };
+    });
     registry.add(std::move(e));
 }
 

@@ -250,18 +250,17 @@ void add_iqga(AlgorithmRegistry& registry) {
         flag("qlearning", true, "Q-learning chooses the mutation probabilities (eq. 19); false: fixed 1/3 each")};
     for (auto& spec : chain_space_params({})) e.params.push_back(std::move(spec));
     e.grid_population = 40;
-    e.run_chain = [](const Params& p, const ChainTarget& target, const Termination& termination,
-                     std::uint64_t seed) -> ChainResult {
-        const auto algorithm = configure_iqga(p);
+    add_runner<ChainTarget>(e, Kind::chain, [](const RunRequest& r, const ChainTarget& target) {
+        const auto algorithm = configure_iqga(r.params);
         return std::visit(
             [&](const auto& problem) -> ChainResult {
                 auto space = problem;
-                configure_space(space, p);
-                if (p.flag("sitp")) space.set_init(grid::Walks::sitp);
-                return algorithm.run(std::move(space), termination, seed);
+                configure_space(space, r.params);
+                if (r.params.flag("sitp")) space.set_init(grid::Walks::sitp);
+                return algorithm.run(std::move(space), r.termination, r.seed);
             },
             target.problem);
-    };
+    });
     e.memory = population_memory(4);  // parents, next generation, children, the mating pool
     registry.add(std::move(e));
 }

@@ -11,7 +11,7 @@ void register_jps(AlgorithmRegistry& registry) {
     e.name = "jps";
     e.family = "jps";
     e.summary = "grids only: Jump Point Search (no corner cutting), the shortest path by length as A*, faster";
-    e.solve_grid = [](const GridTarget& target) {
+    add_runner<GridTarget>(e, Kind::grid, [](const RunRequest&, const GridTarget& target) {
         return std::visit(
             [](const auto& g) {
                 grid::JumpPointSearch jps;
@@ -21,7 +21,7 @@ void register_jps(AlgorithmRegistry& registry) {
                 return s;
             },
             target.problem);
-    };
+    });
     // Its records (g, parent, stamp: 16 bytes) for every cell of the map.
     e.memory = [](const Params&, std::size_t cells) { return 16.0 * static_cast<double>(cells); };
     registry.add(std::move(e));

@@ -1,7 +1,7 @@
 // The multi-objective algorithms: NSGA-II and NSGA-III (algorithms/nsga2.hpp,
 // nsga3.hpp), MOEA/D (moead.hpp) and SMS-EMOA (smsemoa.hpp). Each runner visits the target once
-// (engine/mo_targets.hpp) and runs typed; the defaults are the papers' (their headers cite them).
-// NSGA-II and NSGA-III also run on grid chains with the chain operators (run_multiobjective_chain).
+// (engine/target.hpp) and runs typed; the defaults are the papers' (their headers cite them).
+// NSGA-II and NSGA-III also run on grid chains with the chain operators (Kind::multiobjective_chain).
 // Decided by this project: p_m on chains is a probability per child, 0.1 unless given (IQGA's
 // Pm, Zhang et al. (2025), as the GA on chains), since the paper's 1/n per variable has no chain form.
 #include <fmt/format.h>
@@ -17,7 +17,6 @@
 #include "algorithms/nsga3.hpp"
 #include "algorithms/smsemoa.hpp"
 #include "engine/family.hpp"
-#include "engine/mo_targets.hpp"
 #include "engine/registry.hpp"
 #include "framework/pareto/reference_directions.hpp"
 
@@ -33,15 +32,14 @@ AlgorithmEntry mo_algorithm(std::string name, std::string summary, std::vector<P
     e.family = std::move(name);
     e.summary = std::move(summary);
     e.params = std::move(params);
-    e.run_multiobjective = [configure](const Params& p, const MoTarget& target, const Termination& termination,
-                                       std::uint64_t seed) -> MultiObjectiveResult {
+    add_runner<MoBoxTarget>(e, Kind::multiobjective, [configure](const RunRequest& r, const MoBoxTarget& target) {
         return std::visit(
             [&](const auto& problem) -> MultiObjectiveResult {
-                const auto algorithm = configure(p, problem.objectives());
-                return algorithm.run(problem, termination, seed);
+                const auto algorithm = configure(r.params, problem.objectives());
+                return algorithm.run(problem, r.termination, r.seed);
             },
             target.problem);
-    };
+    });
     return e;
 }
 
@@ -80,24 +78,25 @@ void configure_variation(A& a, const Params& p) {
 template <class Box>
 void add_mo_chain_runner(AlgorithmEntry& e, Box box_algorithm) {
     for (auto& s : chain_params()) e.params.push_back(std::move(s));
-    e.run_multiobjective_chain = [box_algorithm](const Params& p, const MoChainTarget& target,
-                                                 const Termination& termination, std::uint64_t seed) -> MoChainResult {
-        const auto box = box_algorithm(p, target.problem.objectives());
-        Nsga2<ChainCrossover, ChainMutationChoice, std::decay_t<decltype(box.survival)>> a;
-        a.population = box.population;
-        a.survival = box.survival;
-        a.tournament = box.tournament;
-        a.crossover = ChainCrossover{p.real("p_c")};
-        const std::string& set = p.choice("mutations");
-        a.mutation =
-            ChainMutationChoice{p.optional("p_m").value_or(kChainMutation), set == "segment" ? ChainMutationSet::segment
-                                                                            : set == "iqga"  ? ChainMutationSet::iqga
-                                                                                             : ChainMutationSet::all};
-        auto problem = target.problem;
-        configure_space(problem.space(), p);
-        problem.configured();
-        return a.run(std::move(problem), termination, seed);
-    };
+    add_runner<MoChainTarget>(e, Kind::multiobjective_chain,
+                              [box_algorithm](const RunRequest& r, const MoChainTarget& target) {
+                                  const Params& p = r.params;
+                                  const auto box = box_algorithm(p, target.problem.objectives());
+                                  Nsga2<ChainCrossover, ChainMutationChoice, std::decay_t<decltype(box.survival)>> a;
+                                  a.population = box.population;
+                                  a.survival = box.survival;
+                                  a.tournament = box.tournament;
+                                  a.crossover = ChainCrossover{p.real("p_c")};
+                                  const std::string& set = p.choice("mutations");
+                                  a.mutation = ChainMutationChoice{p.optional("p_m").value_or(kChainMutation),
+                                                                   set == "segment" ? ChainMutationSet::segment
+                                                                   : set == "iqga"  ? ChainMutationSet::iqga
+                                                                                    : ChainMutationSet::all};
+                                  auto problem = target.problem;
+                                  configure_space(problem.space(), p);
+                                  problem.configured();
+                                  return a.run(std::move(problem), r.termination, r.seed);
+                              });
 }
 
 nsga::Tournament tournament(const Params& p) {

@@ -46,15 +46,14 @@ void register_ompl(AlgorithmRegistry& registry) {
         e.params = {flag("simplify", false,
                          "OMPL's PathSimplifier::simplifyMax on the path found, with a tenth of the evaluations "
                          "kept for it (planning and simplifying within the budget)")};
-        e.sample_grid = [planner](const Params& params, const GridTarget& target, const Termination& termination,
-                                  std::uint64_t seed) {
+        add_runner<GridTarget>(e, Kind::sampled_grid, [planner](const RunRequest& r, const GridTarget& target) {
             grid::OmplRequest request;
             request.planner = planner;
-            request.max_checks = termination.max_evaluations.value_or(0);
-            if (termination.wall_time)
-                request.time_limit_s = std::chrono::duration<double>(*termination.wall_time).count();
-            request.simplify = params.flag("simplify");
-            request.seed = seed;
+            request.max_checks = r.termination.max_evaluations.value_or(0);
+            if (r.termination.wall_time)
+                request.time_limit_s = std::chrono::duration<double>(*r.termination.wall_time).count();
+            request.simplify = r.params.flag("simplify");
+            request.seed = r.seed;
             return std::visit(
                 [&](const auto& g) {
                     const grid::OmplOutcome o = grid::plan_with_ompl(g.map(), g.start(), g.goal(), request);
@@ -68,7 +67,7 @@ void register_ompl(AlgorithmRegistry& registry) {
                     return s;
                 },
                 target.problem);
-        };
+        });
         registry.add(std::move(e));
     }
 }

@@ -65,9 +65,10 @@ class TabooRouletteWalk {
 
   private:
     VisitMarks visited_;  // generation stamps: no clearing between walks
-    Cell candidates_[8];
-    std::size_t indices_[8];
-    double weights_[8];
+    // Scratch of one step; zeroed only so that copying a fresh walk reads no indeterminate value.
+    Cell candidates_[8]{};
+    std::size_t indices_[8]{};
+    double weights_[8]{};
 };
 
 /// How a random walk weighs the neighbours it draws from.

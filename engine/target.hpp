@@ -1,9 +1,11 @@
 #pragma once
-// The concrete problem types the engine runs, as variants: each algorithm family's file visits a
-// target once per run and then executes fully typed code (no virtual call per evaluation). Grid
-// objectives linear in a path's metrics share one type (LinearObjective), and the connector is a
-// run-time setting, so the grid contributes four box types and two chain types; the continuous
-// functions one (catalog.hpp).
+// The concrete problem types the engine runs, one struct per kind of run (the alternatives of
+// Target, engine/runner.hpp): an entry's runner visits the target once per run and then executes
+// fully typed code (no virtual call per evaluation). Grid objectives linear in a path's metrics
+// share one type (LinearObjective), and the connector is a run-time setting, so the grid
+// contributes four box types and two chain types; the continuous functions one (catalog.hpp).
+// With several objectives: the catalog (one type for ZDT and DTLZ), a grid through each of the two
+// box encodings and a user's function, and a grid on cell chains.
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -11,12 +13,16 @@
 
 #include "engine/callback.hpp"
 #include "engine/other_objective.hpp"
+#include "engine/runner.hpp"
 #include "framework/encoding.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/grid/chain.hpp"
+#include "problems/grid/connectors.hpp"
 #include "problems/grid/encodings.hpp"
 #include "problems/grid/grid_problem.hpp"
+#include "problems/grid/multiobjective.hpp"
 #include "problems/grid/objectives.hpp"
+#include "problems/multiobjective/catalog.hpp"
 
 namespace pride::engine {
 
@@ -81,6 +87,22 @@ struct GridTarget {
             return !o->objective().user || o->objective().has_steps();
         return true;
     }
+};
+
+using MoGridLine = grid::MultiObjectivePaths<grid::LineEncoding<grid::SelectableConnector>>;
+using MoGridFree = grid::MultiObjectivePaths<grid::FreeEncoding<grid::SelectableConnector>>;
+using MoVariant = std::variant<multiobjective::Benchmark, MoGridLine, MoGridFree, MoCallbackProblem>;
+
+/// A problem of several objectives searched as a box: its result is the non-dominated set.
+struct MoBoxTarget {
+    MoVariant problem;
+};
+
+/// A grid of several criteria on cell chains (the chain encoding), for the algorithms that have
+/// chain operators (Kind::multiobjective_chain).
+using MoGridChain = grid::MultiObjectiveChains;
+struct MoChainTarget {
+    MoGridChain problem;
 };
 
 /// The exact optimum of the target's objective and one optimal path (into `out` when given), or

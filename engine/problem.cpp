@@ -1,0 +1,272 @@
+#include "engine/problem.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+
+#include "engine/grid_names.hpp"
+#include "engine/grid_plan.hpp"
+#include "engine/multiobjective.hpp"
+#include "engine/prepared.hpp"
+#include "engine/registry.hpp"
+#include "framework/error.hpp"
+#include "framework/memory.hpp"
+
+namespace pride::engine {
+
+namespace {
+
+void check_grid_spec(const GridSpec& g) {
+    check_grid_names(g);
+    require(g.map != nullptr, "map", "no map given");
+}
+
+grid::LinearObjective linear_objective(const GridSpec& g) {
+    if (g.objective == "cells") return grid::LinearObjective::of(grid::CellsObjective{});
+    if (g.objective == "length") return grid::LinearObjective::of(grid::LengthObjective{});
+    if (g.objective == "weighted") {
+        grid::WeightedObjective w;
+        if (!g.weights.empty()) {
+            require(g.weights.size() == 3, "weights",
+                    "expected L,T,A (three weights), got " + std::to_string(g.weights.size()));
+            for (const double w : g.weights)
+                require(std::isfinite(w) && w >= 0 && w <= max_weight, "weights",
+                        fmt::format("each weight must be a finite number in [0, {}], got {}", max_weight, w));
+            w.w_len = g.weights[0];
+            w.w_turn = g.weights[1];
+            w.w_angle = g.weights[2];
+        }
+        w.validate();
+        return grid::LinearObjective::of(w);
+    }
+    grid::HswoaObjective h;
+    h.lambda = g.lambda.value_or(h.lambda);
+    require(std::isfinite(h.lambda) && h.lambda >= 0 && h.lambda <= max_weight, "lambda",
+            fmt::format("must be a finite number in [0, {}], got {}", max_weight, h.lambda));
+    h.validate();
+    return grid::LinearObjective::of(h);
+}
+
+}  // namespace
+
+std::string no_optimum(const GridSpec& g) {
+    return g.objective == "user" ? "the user objective has no per-step costs (step_cost)"
+                                 : "the " + g.objective + " objective is not a sum of step and turn costs";
+}
+
+namespace {
+
+void require_oracle(const GridSpec& g, const GridTarget& target) {
+    require(target.has_optimum(), "oracle", no_optimum(g) + ", so it has no exact oracle");
+}
+
+template <class Objective>
+void prepare_grid(Prepared& out, const GridSpec& g, Objective objective) {
+    grid::GridProblem<Objective> problem(g.map, g.start, g.goal, objective, g.corner_cutting);
+    problem.count_calls(g.objective_calls);
+    out.whole_grid.emplace(std::in_place_type<GridTarget>, GridTarget{problem});
+    if (g.oracle) require_oracle(g, *out.grid());
+    if (g.encoding.empty()) return;  // planned per run (planned_grid): A* and exact need none
+    try {
+        std::visit(
+            [&](auto&& plan) {
+                using Plan = std::decay_t<decltype(plan)>;
+                if constexpr (std::is_same_v<Plan, grid::ChainSpace<Objective>>) {
+                    out.searched.emplace(std::in_place_type<ChainTarget>, ChainTarget{std::move(plan)});
+                } else {
+                    grid::GridProblem<Objective> suggesting = problem;
+                    suggesting.set_walks(suggested_walks(g));
+                    out.dimension = plan.dimension(problem);
+                    using Box =
+                        std::conditional_t<std::is_same_v<Plan, LinePlan>, GridLine<Objective>, GridFree<Objective>>;
+                    out.searched.emplace(std::in_place_type<BoxTarget>,
+                                         BoxTarget{Box(std::move(suggesting), std::move(plan))});
+                }
+            },
+            plan_grid(g, problem));
+    } catch (const InputError& e) {
+        out.encoding_error = e;
+    }
+}
+
+}  // namespace
+
+/// The checks of a continuous problem's size, before any of it is allocated.
+void require_problem_memory(const ContinuousSpec& c) {
+    const auto* item = continuous::catalog().find(c.function);
+    require(item != nullptr || !is_multiobjective_problem(c.function), "problem",
+            c.function + " has several objectives: its runs are multi-objective ones (pride front, pride.front)");
+    require(item != nullptr, "problem", "unknown problem '" + c.function + "'");
+    require(c.dim >= 1 && c.dim <= max_budget, "dim",
+            fmt::format("must be an integer in [1, {}], got {}", max_budget, c.dim));
+    // Bounds, an optimum and scratch vectors per coordinate, and a rotation (dim^2) for an
+    // instance that has one.
+    const double n = static_cast<double>(c.dim);
+    const bool rotated = c.instance.value_or(continuous::default_instance(item->entry)) != 0;
+    require_memory(8.0 * (8.0 * n + (rotated ? 2.0 * n * n : 0.0)), "dim",
+                   fmt::format("{} in dimension {}", c.function, c.dim));
+}
+
+namespace {
+
+std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
+    auto out = std::make_shared<Prepared>();
+    out->spec = spec;
+    if (const auto* c = std::get_if<ContinuousSpec>(&spec)) {
+        require_problem_memory(*c);
+        out->name = c->function;
+        out->dimension = static_cast<std::size_t>(c->dim);
+        out->searched.emplace(std::in_place_type<BoxTarget>,
+                              BoxTarget{continuous::make_function(c->function, c->dim, c->instance)});
+    } else if (const auto* g = std::get_if<GridSpec>(&spec)) {
+        check_grid_spec(*g);
+        out->name = "grid";
+        if (g->objective == "user")
+            prepare_grid(*out, *g, OtherObjective{g->path_objective});
+        else if (g->objective == "iqga")
+            prepare_grid(*out, *g, OtherObjective::iqga());
+        else
+            prepare_grid(*out, *g, linear_objective(*g));
+    } else {
+        const auto& cb = std::get<CallbackSpec>(spec);
+        require(!cb.f_opt || std::isfinite(*cb.f_opt), "f_opt", "must be a finite number");
+        out->name = cb.name;
+        out->dimension = cb.lower.size();
+        out->searched.emplace(
+            std::in_place_type<BoxTarget>,
+            BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch, cb.thread_safe)});
+    }
+    return out;
+}
+
+/// A grid problem's variant planned on another encoding, connector or init (Problem::planned_for):
+/// the same grid target (its tables and its cached optimum), the encoding's target built anew.
+void prepare_plan(Prepared& v, const GridSpec& plan) {
+    check_grid_spec(plan);
+    const std::optional<Target> grid = v.whole_grid;
+    if (plan.objective == "user")
+        prepare_grid(v, plan, OtherObjective{plan.path_objective});
+    else if (plan.objective == "iqga")
+        prepare_grid(v, plan, OtherObjective::iqga());
+    else
+        prepare_grid(v, plan, linear_objective(plan));
+    v.whole_grid = grid;
+}
+
+}  // namespace
+
+/// The prepared variants of one grid problem, by how a run plans on it (encoding, connector,
+/// init), shared by the problem's copies and built once each.
+struct Problem::Variants {
+    std::mutex mutex;
+    std::map<std::string, std::shared_ptr<const Prepared>> by_plan;
+};
+
+Problem::Problem(const ProblemSpec& spec) : Problem(prepare(spec)) {}
+Problem::Problem(std::shared_ptr<const Prepared> prepared)
+    : prepared_(std::move(prepared)), variants_(std::make_shared<Variants>()) {}
+
+namespace {
+
+/// The grid a run of `entry` plans on: the encoding, connector and init the run names (its
+/// parameters), else the problem's, else the algorithm's native encoding (its paper's space).
+/// A space the algorithm cannot use is refused, naming the ones it can.
+GridSpec planned_grid(const AlgorithmEntry& entry, const GridSpec& g, const ParamValues& given) {
+    GridSpec out = g;
+    if (entry.whole_map()) return out;
+    auto named = [&](const char* key) -> const std::string* {
+        const auto it = given.names().find(key);
+        if (it == given.names().end()) return nullptr;
+        // A name among no choice is refused here; an encoding the algorithm cannot use, below,
+        // with the ones it can.
+        const bool encoding = std::string_view(key) == "encoding" && named_in(grid_encodings(), it->second);
+        if (const ParamSpec* spec = entry.param(key); spec && !encoding) spec->choice_index(it->second, entry.name);
+        return &it->second;
+    };
+    const std::string* encoding = named("encoding");
+    if (encoding) out.encoding = *encoding;
+    if (out.encoding.empty()) out.encoding = entry.native_encoding;
+    if (const std::string* c = named("connector")) out.connector = *c;
+    if (const std::string* i = named("init")) out.init = *i;
+    if (out.encoding == "chain") out.connector = "repair";  // chains need none: the problem's is for line and free
+    const auto can = entry.encodings();
+    if (std::find(can.begin(), can.end(), out.encoding) == can.end()) {
+        std::string list;
+        for (std::size_t k = 0; k < can.size(); ++k)
+            list += (k == 0 ? "" : k + 1 == can.size() ? " or " : ", ") + can[k];
+        throw InputError("encoding " + out.encoding, entry.name + " runs on " + list + ", not on " + out.encoding +
+                                                         ": name no encoding (" + entry.name + "'s own is " +
+                                                         entry.native_encoding + ") or choose another algorithm");
+    }
+    return out;
+}
+
+}  // namespace
+
+std::shared_ptr<const Prepared> Problem::planned_for(const AlgorithmSpec& algorithm) const {
+    const auto* g = std::get_if<GridSpec>(&prepared_->spec);
+    if (!g) return prepared_;
+    const AlgorithmEntry& entry = algorithms().at(algorithm.name);
+    const GridSpec plan = planned_grid(entry, *g, algorithm.params);
+    if (plan.encoding == g->encoding && plan.connector == g->connector && plan.init == g->init) return prepared_;
+    const std::string key = plan.encoding + "|" + plan.connector + "|" + plan.init;
+    const std::lock_guard lock(variants_->mutex);
+    auto& variant = variants_->by_plan[key];
+    if (!variant) {
+        auto v = std::make_shared<Prepared>(*prepared_);
+        v->spec = plan;
+        v->searched.reset();
+        v->encoding_error.reset();
+        v->dimension = 0;
+        prepare_plan(*v, plan);
+        variant = std::move(v);
+    }
+    return variant;
+}
+
+bool Problem::is_grid() const {
+    return prepared_->grid() != nullptr;
+}
+bool Problem::additive() const {
+    return prepared_->grid() && prepared_->grid()->additive();
+}
+bool Problem::has_optimum() const {
+    return prepared_->grid() && prepared_->grid()->has_optimum();
+}
+Problem Problem::with_oracle() const {
+    const auto* g = std::get_if<GridSpec>(&prepared_->spec);
+    require(g != nullptr, "oracle", "only grid problems have an exact optimum");
+    require_oracle(*g, *prepared_->grid());
+    auto copy = std::make_shared<Prepared>(*prepared_);  // the targets share their tables
+    std::get<GridSpec>(copy->spec).oracle = true;
+    return Problem(std::move(copy));
+}
+std::size_t Problem::dimension() const {
+    return prepared_->dimension;
+}
+const ProblemSpec& Problem::spec() const {
+    return prepared_->spec;
+}
+std::string Problem::name() const {
+    return prepared_->name;
+}
+std::int64_t Problem::instance() const {
+    const auto* f = prepared_->box() ? std::get_if<continuous::Function>(&prepared_->box()->problem) : nullptr;
+    return f ? f->instance() : 0;
+}
+std::optional<double> optimum_of(const Prepared& p) {
+    if (const auto* cb = std::get_if<CallbackSpec>(&p.spec)) return cb->f_opt;
+    const auto* f = p.box() ? std::get_if<continuous::Function>(&p.box()->problem) : nullptr;
+    if (!f) return std::nullopt;
+    const double v = f->optimum_value();
+    return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+std::optional<double> Problem::optimum_value() const {
+    return optimum_of(*prepared_);
+}
+
+}  // namespace pride::engine
