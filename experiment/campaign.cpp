@@ -19,8 +19,8 @@
 
 #include "engine/json.hpp"
 #include "experiment/file_name.hpp"
+#include "experiment/storage/digest.hpp"
 #include "experiment/store.hpp"
-#include "experiment/store_digest.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/functions.hpp"
@@ -118,7 +118,7 @@ std::string problem_definition(const CampaignProblem& p) {
 namespace {
 
 std::string map_digest(const grid::GridMap& m) {
-    Sha256 h;
+    storage::Sha256 h;
     h.field("grid map v1");
     const std::int64_t size[2] = {m.width(), m.height()};
     h.add(size, sizeof size);
@@ -136,7 +136,7 @@ std::string map_digest(const grid::GridMap& m) {
 }
 
 std::string settings_digest(const CampaignProblem& p) {
-    Sha256 h;
+    storage::Sha256 h;
     const auto number = [&](double v) { h.field(json_number(v)); };
     if (p.is_multiobjective()) h.field("objectives v1").field(*p.objectives);
     if (const auto* f = std::get_if<ContinuousSpec>(&p.spec)) {
