@@ -18,14 +18,13 @@
 #include <tuple>
 
 #include "engine/json.hpp"
-#include "experiment/cec_suites.hpp"
 #include "experiment/file_name.hpp"
-#include "experiment/report/cec.hpp"
+#include "experiment/storage/digest.hpp"
 #include "experiment/store.hpp"
-#include "experiment/store_digest.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/functions.hpp"
+#include "problems/continuous/cec/suites.hpp"
 
 #ifdef PRIDE_HAVE_MPI
 #include <mpi.h>
@@ -119,7 +118,7 @@ std::string problem_definition(const CampaignProblem& p) {
 namespace {
 
 std::string map_digest(const grid::GridMap& m) {
-    Sha256 h;
+    storage::Sha256 h;
     h.field("grid map v1");
     const std::int64_t size[2] = {m.width(), m.height()};
     h.add(size, sizeof size);
@@ -137,7 +136,7 @@ std::string map_digest(const grid::GridMap& m) {
 }
 
 std::string settings_digest(const CampaignProblem& p) {
-    Sha256 h;
+    storage::Sha256 h;
     const auto number = [&](double v) { h.field(json_number(v)); };
     if (p.is_multiobjective()) h.field("objectives v1").field(*p.objectives);
     if (const auto* f = std::get_if<ContinuousSpec>(&p.spec)) {
@@ -853,9 +852,9 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
 
 /// The CEC suite of a problem's function by the catalog (cec2017-fN and cec2022-fN, from a
 /// [[suite]] or a [[problem]] alike), or nullptr.
-const cec::SuiteRules* cec_rules_of(const ContinuousSpec& f) {
+const continuous::cec::SuiteRules* cec_rules_of(const ContinuousSpec& f) {
     const auto* item = continuous::catalog().find(f.function);
-    return item ? cec::suite_rules(item->entry.suite) : nullptr;
+    return item ? continuous::cec::suite_rules(item->entry.suite) : nullptr;
 }
 
 }  // namespace
@@ -867,19 +866,19 @@ void apply_suite_rules(Campaign& c) {
     const CampaignProblem* no_budget = nullptr;  // the first problem without a default budget
     for (const auto& p : c.problems) {
         const auto* f = std::get_if<ContinuousSpec>(&p.spec);
-        const cec::SuiteRules* rules = f ? cec_rules_of(*f) : nullptr;
+        const continuous::cec::SuiteRules* rules = f ? cec_rules_of(*f) : nullptr;
         if (rules)
             suites.insert(rules->name);
         else if (!other)
             other = &p;
-        if (!no_budget && !(rules && cec::default_evaluations(rules->name, f->dim))) no_budget = &p;
+        if (!no_budget && !(rules && continuous::cec::default_evaluations(rules->name, f->dim))) no_budget = &p;
     }
     if (c.seeds < 1) {
         require(c.seeds == 0 && !other && suites.size() == 1, file,
                 suites.empty() ? std::string("missing key 'seeds'")
                                : "missing key 'seeds': only a campaign of one CEC suite's problems has a default (51 "
                                  "runs for cec2017, 30 for cec2022)");
-        c.seeds = cec::suite_rules(*suites.begin())->runs;
+        c.seeds = continuous::cec::suite_rules(*suites.begin())->runs;
     }
     if (no_budget && !c.budget.evaluations && !c.budget.iterations && !c.evaluations_per_dim)
         throw InputError(file, suites.empty() ? std::string("missing [budget] with 'evaluations', "
@@ -892,8 +891,8 @@ void apply_suite_rules(Campaign& c) {
     if (!c.budget.evaluations && !c.evaluations_per_dim)
         for (auto& p : c.problems)
             if (const auto* f = std::get_if<ContinuousSpec>(&p.spec))
-                if (const cec::SuiteRules* rules = cec_rules_of(*f))
-                    p.evaluations = cec::default_evaluations(rules->name, f->dim);
+                if (const continuous::cec::SuiteRules* rules = cec_rules_of(*f))
+                    p.evaluations = continuous::cec::default_evaluations(rules->name, f->dim);
 }
 
 void prepare(Campaign& c) {
@@ -1103,7 +1102,7 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     const AlgorithmEntry* entry = algorithms().find(a.spec.name);
     if (!entry || entry->evaluates()) r.max_evaluations = with_targets.evaluations;
     if (optimum && with_targets.evaluations)
-        with_targets.recorded_evaluations = report::cec::recorded_evaluations(
+        with_targets.recorded_evaluations = continuous::cec::recorded_evaluations(
             *with_targets.evaluations, static_cast<std::int64_t>(std::max<std::size_t>(p.problem->dimension(), 1)));
     const RunResult result = run(a.spec, *p.problem, with_targets, static_cast<std::uint64_t>(seed));
     if (result.grid) {

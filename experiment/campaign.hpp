@@ -163,7 +163,7 @@ struct RunRecord {
     std::string trace_targets = "[]", trace_evaluations = "[]";
     // The run's evaluation budget (MaxFES; empty under an iteration budget alone) and, for problems
     // with a known optimum, JSON [e0, f0, e1, f1, ...]: the best value so far after each of the
-    // CEC reports' checkpoints of that budget (experiment/report/cec.hpp: recorded_evaluations).
+    // CEC reports' checkpoints of that budget (problems/continuous/cec/suites.hpp: recorded_evaluations).
     std::optional<std::int64_t> max_evaluations;
     std::string checkpoints = "[]";
     // Grid runs that found a path: its metrics (engine::json_path_metrics; with the problem's

@@ -13,11 +13,11 @@
 
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
-#include "experiment/cec_suites.hpp"
 #include "framework/error.hpp"
 #include "framework/memory.hpp"
 #include "framework/read_file.hpp"
 #include "problems/continuous/catalog.hpp"
+#include "problems/continuous/cec/suites.hpp"
 
 namespace pride::engine {
 namespace {
@@ -223,9 +223,9 @@ void add_problem(std::vector<CampaignProblem>& out, const std::string& file, con
 /// [[suite]] name = "cec2017" (F1-F30) or "cec2022" (F1-F12), with `functions` (default: all) and
 /// `dimensions`: one problem per (function, dimension), "PREFIX-fN-dD" on cecYYYY-fN. CEC functions
 /// have no instances (the key is refused), and a dimension the official data does not cover for
-/// a function is refused at the key, naming both (cec_suites.hpp), before any data is read.
+/// a function is refused at the key, naming both (problems/continuous/cec/suites.hpp), before any data is read.
 void add_cec_suite(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t,
-                   const cec::SuiteRules& rules, Expansion& expansion) {
+                   const continuous::cec::SuiteRules& rules, Expansion& expansion) {
     const int line = static_cast<int>(t.source().begin.line);
     const std::string where = fmt::format("{}:{}", file, line);
     const std::string name(rules.name);
@@ -302,8 +302,8 @@ void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const
             fail(at(file, value), "unknown key '" + std::string(key.str()) +
                                       "' in a [[suite]] (name, id, functions, instances, dimensions)");
     const std::string name = need_string(file, t, "name", where);
-    if (cec::suite_rules(name)) {
-        add_cec_suite(out, file, t, *cec::suite_rules(name), expansion);
+    if (continuous::cec::suite_rules(name)) {
+        add_cec_suite(out, file, t, *continuous::cec::suite_rules(name), expansion);
         return;
     }
     if (name != "bbob" && name != "classic")

@@ -11,7 +11,7 @@
 
 #include "experiment/campaign.hpp"
 #include "experiment/report/store.hpp"
-#include "experiment/store_schema.hpp"
+#include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"
 
 namespace pride::engine {
@@ -105,10 +105,11 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
         const int version = v.empty() ? 0 : std::stoi(*v[0][0]);
         if (db.rows("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'campaign'").empty())
             throw InputError(in + ": not a campaign store (it has no campaign table)");
-        require(version == store_schema, in,
+        require(version == storage::schema_version, in,
                 fmt::format("has store schema {}, merge reads schema {} (run its campaign with pride bench once to "
                             "migrate it{})",
-                            version, store_schema, version > store_schema ? "; or use the newer pride" : ""));
+                            version, storage::schema_version,
+                            version > storage::schema_version ? "; or use the newer pride" : ""));
     }
     const std::string part = out + ".part";
     // A folder the user cannot write is the user's error: one line, exit 2, nothing left behind.

@@ -31,7 +31,7 @@
 #include "engine/registry.hpp"
 #include "experiment/campaign.hpp"
 #include "experiment/report/store.hpp"
-#include "experiment/store_schema.hpp"
+#include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 
@@ -133,13 +133,13 @@ class Store {
             throw InputError(
                 path + ": is not a pride store (an SQLite database with other tables); choose another store file");
         }
-        if (const int version = user_version(); version > store_schema) {
+        if (const int version = user_version(); version > storage::schema_version) {
             sqlite3_close(db_);
             db_ = nullptr;
             throw InputError(
                 fmt::format("{}: was written by a newer pride (store schema {}; this pride knows 0 to "
                             "{}); use that pride, or another store file",
-                            path, version, store_schema));
+                            path, version, storage::schema_version));
         }
         // A new store is made without waiting for the disk (five syncs, 15-30 ms that every
         // campaign paid before its first run): a kill cannot hurt it either way, and a power cut
@@ -186,7 +186,8 @@ class Store {
             // every resume. NULL in stores from before, filled on their next resume.
             add_column("problems", "digest", "TEXT");
             // Written only when it changes: a store that needs nothing is not touched (its bytes stay).
-            if (user_version() != store_schema) exec(fmt::format("PRAGMA user_version = {}", store_schema).c_str());
+            if (user_version() != storage::schema_version)
+                exec(fmt::format("PRAGMA user_version = {}", storage::schema_version).c_str());
             add_column("problems", "function", "TEXT");
             add_column("problems", "instance", "INTEGER NOT NULL DEFAULT 0");
             add_column("problems", "f_opt", "REAL");

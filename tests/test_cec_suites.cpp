@@ -22,6 +22,7 @@
 #include "experiment/report/cec.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/report/store.hpp"
+#include "problems/continuous/cec/suites.hpp"
 #include "tests/cec_synthetic.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/sqlite_support.hpp"
@@ -34,10 +35,11 @@ using pride::test::input_error_message;
 using pride::test::run_pride;
 using pride::test::TempDir;
 namespace cec = pride::report::cec;
+namespace cec_suites = pride::continuous::cec;  // the checkpoints themselves, which runs record
 
 namespace {
 
-std::vector<std::int64_t> evaluations_of(const std::vector<cec::Checkpoint>& checkpoints) {
+std::vector<std::int64_t> evaluations_of(const std::vector<cec_suites::Checkpoint>& checkpoints) {
     std::vector<std::int64_t> out;
     for (const auto& c : checkpoints) out.push_back(c.evaluations);
     return out;
@@ -63,7 +65,7 @@ std::vector<std::string> ids_of(const pride::engine::Campaign& c) {
 
 TEST_CASE("cec suites: the checkpoints are those of the CEC 2017 and CEC 2022 reports", "[cec-suites]") {
     // CEC 2017, section 2.2: (0.01, 0.02, 0.03, 0.05, 0.1, 0.2, ..., 1.0) x MaxFES.
-    const auto y2017 = cec::checkpoints_2017(100000);
+    const auto y2017 = cec_suites::checkpoints_2017(100000);
     CHECK(evaluations_of(y2017) == std::vector<std::int64_t>{1000, 2000, 3000, 5000, 10000, 20000, 30000, 40000, 50000,
                                                              60000, 70000, 80000, 90000, 100000});
     CHECK(y2017.front().label == "0.01");
@@ -71,23 +73,23 @@ TEST_CASE("cec suites: the checkpoints are those of the CEC 2017 and CEC 2022 re
     CHECK(y2017.back().label == "1.0");
     // CEC 2022, section 2.2: floor(D^(k/5-3) x MaxFES), k = 0..15, at its two settings (the floors
     // worked out with 50-digit decimals).
-    const auto d10 = cec::checkpoints_2022(200000, 10);
+    const auto d10 = cec_suites::checkpoints_2022(200000, 10);
     CHECK(evaluations_of(d10) == std::vector<std::int64_t>{200, 316, 502, 796, 1261, 2000, 3169, 5023, 7962, 12619,
                                                            20000, 31697, 50237, 79621, 126191, 200000});
     CHECK(d10.front().label == "k=0");
     CHECK(d10.back().label == "k=15");
-    CHECK(evaluations_of(cec::checkpoints_2022(1000000, 20)) ==
+    CHECK(evaluations_of(cec_suites::checkpoints_2022(1000000, 20)) ==
           std::vector<std::int64_t>{125, 227, 414, 754, 1373, 2500, 4551, 8286, 15085, 27464, 50000, 91028, 165722,
                                     301708, 549280, 1000000});
-    CHECK(evaluations_of(cec::checkpoints("cec2022", 200000, 10)) == evaluations_of(d10));
-    CHECK(evaluations_of(cec::checkpoints("bbob", 100000, 10)) == evaluations_of(y2017));
+    CHECK(evaluations_of(cec_suites::checkpoints("cec2022", 200000, 10)) == evaluations_of(d10));
+    CHECK(evaluations_of(cec_suites::checkpoints("bbob", 100000, 10)) == evaluations_of(y2017));
     // Floors of a budget that 100 does not divide, and never below 1 evaluation.
-    CHECK(evaluations_of(cec::checkpoints_2017(250)) ==
+    CHECK(evaluations_of(cec_suites::checkpoints_2017(250)) ==
           std::vector<std::int64_t>{2, 5, 7, 12, 25, 50, 75, 100, 125, 150, 175, 200, 225, 250});
-    CHECK(evaluations_of(cec::checkpoints_2017(50)).front() == 1);
-    CHECK(evaluations_of(cec::checkpoints_2022(100, 10)).front() == 1);
+    CHECK(evaluations_of(cec_suites::checkpoints_2017(50)).front() == 1);
+    CHECK(evaluations_of(cec_suites::checkpoints_2022(100, 10)).front() == 1);
     // What a campaign records: both lists, each count once, increasing.
-    const auto both = cec::recorded_evaluations(2000, 10);
+    const auto both = cec_suites::recorded_evaluations(2000, 10);
     CHECK(both == std::vector<std::int64_t>{2,   3,   5,   7,   12,  20,  31,   40,   50,   60,   79,   100,  126, 200,
                                             316, 400, 502, 600, 796, 800, 1000, 1200, 1261, 1400, 1600, 1800, 2000});
 }
@@ -300,13 +302,13 @@ const double e27 = std::ldexp(1.0, -27);  // 7.45e-9: taken as 0
 
 void fill(const HandStore& s) {
     // s10, CEC 2017's checkpoints of 2000 evaluations: 20, 40, 60, 100, 200, 400, ..., 2000.
-    const auto y2017 = evaluations_of(cec::checkpoints_2017(2000));
+    const auto y2017 = evaluations_of(cec_suites::checkpoints_2017(2000));
     s.set("s10", 1, 2000, y2017, {64, 32, 16, 8, 4, 2, 1, 0.5, 0.25, 0.125, std::ldexp(1.0, -20), e26, e27, e27});
     s.set("s10", 2, 2000, y2017, {128, 64, 64, 32, 32, 16, 8, 8, 4, 4, 2, 2, 1, 0.5});
     // Seed 3 ended after 1000 evaluations with 103: its best so far at 1200 ... 2000 is 103.
     s.set("s10", 3, 1000, y2017, {96, 48, 24, 12, 6, 3, 3, 3, 3});
     // t10, CEC 2022's checkpoints of 2000 evaluations in D = 10: 2, 3, 5, 7, 12, 20, ..., 2000.
-    const auto y2022 = evaluations_of(cec::checkpoints_2022(2000, 10));
+    const auto y2022 = evaluations_of(cec_suites::checkpoints_2022(2000, 10));
     std::vector<double> halving, ones(16, 1.0);
     for (int k = 0; k < 15; ++k) halving.push_back(std::ldexp(1.0, 15 - k));
     halving.push_back(e27);
@@ -462,7 +464,7 @@ TEST_CASE("cec suites: a campaign stores each run's budget and its best values a
         CHECK(run.max_evaluations == 500);
         std::vector<std::int64_t> counts;
         for (const auto& t : run.checkpoints) counts.push_back(t.evaluations);
-        const auto wanted = cec::recorded_evaluations(500, 2);
+        const auto wanted = cec_suites::recorded_evaluations(500, 2);
         // A run that stopped early (subplex converged) records the counts it reached.
         const auto reached =
             static_cast<std::size_t>(std::upper_bound(wanted.begin(), wanted.end(), run.evaluations) - wanted.begin());

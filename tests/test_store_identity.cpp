@@ -17,8 +17,8 @@
 #include "cli_runner.hpp"
 #include "experiment/campaign.hpp"
 #include "experiment/campaign_toml.hpp"
-#include "experiment/store_digest.hpp"
-#include "experiment/store_schema.hpp"
+#include "experiment/storage/digest.hpp"
+#include "experiment/storage/schema.hpp"
 #include "tests/sqlite_support.hpp"
 #include "tests/test_support.hpp"
 
@@ -90,7 +90,7 @@ pride::test::CliOutput run_pride_limited(long kb, const std::string& args) {
 }  // namespace
 
 TEST_CASE("store identity: SHA-256 as FIPS 180-4's examples give it", "[store-identity]") {
-    using pride::engine::Sha256;
+    using pride::storage::Sha256;
     CHECK(Sha256().hex() == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
     CHECK(Sha256().add("abc").hex() == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
     CHECK(Sha256().add("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq").hex() ==
@@ -111,7 +111,7 @@ TEST_CASE("store identity: a map edited between a campaign and its resume is ref
     dir.write("c.toml", grid_campaign(2));
     const std::string store = dir.file("c.sqlite");
     REQUIRE(bench(dir, "c.toml", store).status == 0);
-    CHECK(scalar(store, "PRAGMA user_version") == std::to_string(pride::engine::store_schema));
+    CHECK(scalar(store, "PRAGMA user_version") == std::to_string(pride::storage::schema_version));
     CHECK(scalar(store, "SELECT digest FROM problems WHERE id = 'g'").rfind("map sha256:", 0) == 0);
     const std::string bytes = slurp(store);
 
@@ -144,7 +144,7 @@ TEST_CASE("store identity: a store from schema 2 is migrated on resume, its dige
     const auto old_report = run_pride("report '" + store + "' --format csv");
     CHECK(old_report.status == 0);  // report reads old stores as they are
     REQUIRE(bench(dir, "c.toml", store).status == 0);
-    CHECK(scalar(store, "PRAGMA user_version") == std::to_string(pride::engine::store_schema));
+    CHECK(scalar(store, "PRAGMA user_version") == std::to_string(pride::storage::schema_version));
     CHECK(scalar(store, "SELECT digest FROM problems WHERE id = 'g'").rfind("map sha256:", 0) == 0);
     CHECK(run_pride("report '" + store + "' --format csv").out == old_report.out);
     // From then on an edit is seen.

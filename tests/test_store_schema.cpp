@@ -1,11 +1,11 @@
-// The store's schema version (experiment/store_schema.hpp): written by pride bench, and a store from a
+// The store's schema version (experiment/storage/schema.hpp): written by pride bench, and a store from a
 // newer pride refused by bench, report and export alike, one line naming the store and both versions.
 #include <sqlite3.h>
 #include <catch2/catch.hpp>
 
 #include <string>
 
-#include "experiment/store_schema.hpp"
+#include "experiment/storage/schema.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 
@@ -30,22 +30,23 @@ int user_version(const std::string& store, int set = -1) {
 
 TEST_CASE("store: its schema version is written, and a newer one refused", "[store][schema]") {
     const pride::test::TempDir tmp("pride-schema");
-    const std::string file = tmp.write("c.toml", "name = \"v\"\nseeds = 1\n[budget]\nevaluations = 50\n"
-                                                 "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
-                                                 "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n");
+    const std::string file = tmp.write("c.toml",
+                                       "name = \"v\"\nseeds = 1\n[budget]\nevaluations = 50\n"
+                                       "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
+                                       "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 10\n");
     const std::string store = tmp.file("c.sqlite");
     REQUIRE(pride::test::run_pride("bench '" + file + "' --out '" + store + "'").status == 0);
-    CHECK(user_version(store) == pride::engine::store_schema);
+    CHECK(user_version(store) == pride::storage::schema_version);
     // A store of schema 0 (before the version was kept) is migrated by the next bench.
     user_version(store, 0);
     REQUIRE(pride::test::run_pride("bench '" + file + "' --out '" + store + "'").status == 0);
-    CHECK(user_version(store) == pride::engine::store_schema);
+    CHECK(user_version(store) == pride::storage::schema_version);
     CHECK(pride::test::run_pride("report '" + store + "'").status == 0);
 
-    user_version(store, pride::engine::store_schema + 1);
-    const std::string newer = std::to_string(pride::engine::store_schema + 1);
+    user_version(store, pride::storage::schema_version + 1);
+    const std::string newer = std::to_string(pride::storage::schema_version + 1);
     for (const std::string& command : {"bench '" + file + "' --out '" + store + "'", "report '" + store + "'",
-                                      "export '" + store + "' --ioh '" + tmp.file("ioh") + "'"}) {
+                                       "export '" + store + "' --ioh '" + tmp.file("ioh") + "'"}) {
         INFO(command);
         const auto r = pride::test::run_pride(command);
         CHECK(r.status == 2);
@@ -53,5 +54,5 @@ TEST_CASE("store: its schema version is written, and a newer one refused", "[sto
                                             newer + "; this pride knows 0 to "));
         CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     }
-    CHECK(user_version(store) == pride::engine::store_schema + 1);  // left as it was
+    CHECK(user_version(store) == pride::storage::schema_version + 1);  // left as it was
 }

@@ -42,33 +42,15 @@
 #include <vector>
 
 #include "experiment/report/store.hpp"
+#include "problems/continuous/cec/suites.hpp"
 
 namespace pride::report::cec {
 
+// The checkpoints are the suites' (problems/continuous/cec/suites.hpp), which campaigns record too.
+using continuous::cec::Checkpoint;
+
 /// Errors below this are taken as 0.
 inline constexpr double zero_below = 1e-8;
-
-/// One checkpoint: its label ("0.05" of MaxFES for 2017, "k=3" for 2022) and its evaluations.
-struct Checkpoint {
-    std::string label;
-    std::int64_t evaluations = 0;
-};
-
-/// CEC 2017's 14 checkpoints for a budget of `max_evaluations`: floor((0.01, 0.02, 0.03, 0.05,
-/// 0.1, 0.2, ..., 0.9, 1.0) x MaxFES), each at least 1.
-std::vector<Checkpoint> checkpoints_2017(std::int64_t max_evaluations);
-
-/// CEC 2022's 16 checkpoints: floor(D^(k/5-3) x MaxFES) for k = 0..15, each at least 1 (k = 15
-/// is MaxFES itself).
-std::vector<Checkpoint> checkpoints_2022(std::int64_t max_evaluations, std::int64_t dim);
-
-/// The checkpoints of a problem of `suite` ("cec2022": 2022's; any other: 2017's).
-std::vector<Checkpoint> checkpoints(std::string_view suite, std::int64_t max_evaluations, std::int64_t dim);
-
-/// What a campaign records in every run of a problem with a known f* (RunResult::checkpoints):
-/// the evaluations of both suites' checkpoints, increasing, each once, so that a store answers
-/// for either convention.
-std::vector<std::int64_t> recorded_evaluations(std::int64_t max_evaluations, std::int64_t dim);
 
 /// An error as the CEC reports count it: f - f*, 0 below 1e-8 (negative rounding included).
 double error_of(double f, double f_opt);

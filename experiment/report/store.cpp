@@ -15,7 +15,7 @@
 #include <string_view>
 #include <type_traits>
 
-#include "experiment/store_schema.hpp"
+#include "experiment/storage/schema.hpp"
 
 namespace pride::report {
 namespace {
@@ -376,11 +376,11 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
         q.where = "the store's schema version";
         const std::int64_t version =
             q.next() ? q.integer(0, "user_version", std::numeric_limits<std::int64_t>::min()) : 0;
-        if (version > engine::store_schema)
+        if (version > storage::schema_version)
             throw InputError(
                 fmt::format("{}: was written by a newer pride (store schema {}; this pride knows 0 to {}); "
                             "use that pride",
-                            path, version, engine::store_schema));
+                            path, version, storage::schema_version));
     }
     for (const char* table : {"campaign", "runs"})
         if (!tables.count(table)) throw DamagedStore(path, fmt::format("it has no table {}", table));

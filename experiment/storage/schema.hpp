@@ -13,8 +13,8 @@
 //   5: runs.path_metrics and runs.polyline, every grid path's metrics and a polyline planner's
 //      polyline, NULL for other runs and runs stored before; algorithms.reproducible,
 //      0 for algorithms whose runs are compared by definition (OMPL's), 1 before
-namespace pride::engine {
+namespace pride::storage {
 
-inline constexpr int store_schema = 5;
+inline constexpr int schema_version = 5;
 
-}  // namespace pride::engine
+}  // namespace pride::storage

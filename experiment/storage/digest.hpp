@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace pride::engine {
+namespace pride::storage {
 
 class Sha256 {
   public:
@@ -101,4 +101,4 @@ class Sha256 {
     std::uint64_t length_ = 0;
 };
 
-}  // namespace pride::engine
+}  // namespace pride::storage

@@ -1,5 +1,5 @@
 #pragma once
-// The CEC suites as campaigns take them: their functions (registered as cec2017-fN and
+// The CEC suites as campaigns take them and their reports count them: their functions (registered as cec2017-fN and
 // cec2022-fN, problems/continuous/catalog.cpp, with the dimensions of the official data in
 // CatalogEntry::dims), and the budget and number of runs each competition prescribes (section 2.1,
 // "Experimental Settings", of each technical report): CEC 2017, "Runs / problem: 51", "MaxFES:
@@ -7,9 +7,11 @@
 // MaxFES for the D = 2 the official 2022 code also defines).
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
-namespace pride::engine::cec {
+namespace pride::continuous::cec {
 
 struct SuiteRules {
     std::string_view name;  // "cec2017", "cec2022"
@@ -34,4 +36,27 @@ inline std::optional<std::int64_t> default_evaluations(std::string_view suite, s
     return std::nullopt;
 }
 
-}  // namespace pride::engine::cec
+/// One checkpoint: its label ("0.05" of MaxFES for 2017, "k=3" for 2022) and its evaluations
+/// (each suite's section 2.2, "Results Record", quoted in experiment/report/cec.hpp).
+struct Checkpoint {
+    std::string label;
+    std::int64_t evaluations = 0;
+};
+
+/// CEC 2017's 14 checkpoints for a budget of `max_evaluations`: floor((0.01, 0.02, 0.03, 0.05,
+/// 0.1, 0.2, ..., 0.9, 1.0) x MaxFES), each at least 1.
+std::vector<Checkpoint> checkpoints_2017(std::int64_t max_evaluations);
+
+/// CEC 2022's 16 checkpoints: floor(D^(k/5-3) x MaxFES) for k = 0..15, each at least 1 (k = 15
+/// is MaxFES itself).
+std::vector<Checkpoint> checkpoints_2022(std::int64_t max_evaluations, std::int64_t dim);
+
+/// The checkpoints of a problem of `suite` ("cec2022": 2022's; any other: 2017's).
+std::vector<Checkpoint> checkpoints(std::string_view suite, std::int64_t max_evaluations, std::int64_t dim);
+
+/// What a campaign records in every run of a problem with a known f* (RunResult::checkpoints):
+/// the evaluations of both suites' checkpoints, increasing, each once, so that a store answers
+/// for either convention.
+std::vector<std::int64_t> recorded_evaluations(std::int64_t max_evaluations, std::int64_t dim);
+
+}  // namespace pride::continuous::cec
