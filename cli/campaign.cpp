@@ -14,8 +14,8 @@
 #include <ostream>
 #include <thread>
 
-#include "experiment/campaign.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/run.hpp"
+#include "experiment/campaign/toml.hpp"
 
 namespace pride::cli {
 namespace {

@@ -1,5 +1,5 @@
 #pragma once
-// `pride report`: the comparison tables a paper needs, from a campaign store (campaign.hpp).
+// `pride report`: the comparison tables a paper needs, from a campaign store.
 #include <iosfwd>
 #include <string>
 #include <vector>

@@ -9,7 +9,7 @@
 #include <optional>
 #include <set>
 
-#include "experiment/campaign.hpp"
+#include "experiment/campaign/identity.hpp"
 #include "experiment/report/store.hpp"
 #include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"

@@ -29,7 +29,10 @@
 
 #include "engine/json.hpp"
 #include "engine/registry.hpp"
-#include "experiment/campaign.hpp"
+#include "experiment/campaign/identity.hpp"
+#include "experiment/campaign/prepare.hpp"
+#include "experiment/campaign/run.hpp"
+#include "experiment/campaign/run_one.hpp"
 #include "experiment/report/store.hpp"
 #include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"

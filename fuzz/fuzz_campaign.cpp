@@ -6,7 +6,8 @@
 #include <filesystem>
 
 #include "engine/registry.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/campaign.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "fuzz/fuzz_support.hpp"
 #include "problems/grid/rough_rules.hpp"
 

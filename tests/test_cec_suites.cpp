@@ -17,8 +17,10 @@
 #include <vector>
 
 #include "engine/run.hpp"
-#include "experiment/campaign.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/identity.hpp"
+#include "experiment/campaign/prepare.hpp"
+#include "experiment/campaign/run.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "experiment/report/cec.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/report/store.hpp"

@@ -9,8 +9,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/numbers.hpp"
-#include "experiment/campaign_toml.hpp"
 #include "engine/params.hpp"
+#include "experiment/campaign/campaign.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "experiment/report/ioh_export.hpp"
 #include "experiment/report/report.hpp"
 #include "problems/grid/map_io.hpp"

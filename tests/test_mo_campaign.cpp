@@ -8,8 +8,10 @@
 #include <string>
 
 #include "engine/multiobjective.hpp"
-#include "experiment/campaign.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/identity.hpp"
+#include "experiment/campaign/run.hpp"
+#include "experiment/campaign/run_one.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "experiment/report/report.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/json_reader.hpp"

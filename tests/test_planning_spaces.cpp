@@ -11,8 +11,8 @@
 
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
-#include "experiment/campaign.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/run_one.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "framework/error.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "engine/multiobjective.hpp"
-#include "experiment/campaign.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/identity.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "experiment/html/front_figures.hpp"
 #include "experiment/html/page_store.hpp"
 #include "experiment/report/store.hpp"

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "cli_runner.hpp"
-#include "experiment/campaign.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/prepare.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "experiment/storage/digest.hpp"
 #include "experiment/storage/schema.hpp"
 #include "tests/sqlite_support.hpp"

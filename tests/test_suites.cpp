@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "experiment/campaign.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/run.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "tests/sqlite_support.hpp"
 #include "tests/test_support.hpp"
 

@@ -15,7 +15,8 @@
 #include <thread>
 
 #include "engine/run.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/campaign.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "framework/parallel.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"

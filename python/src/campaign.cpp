@@ -10,8 +10,9 @@
 #include <type_traits>
 
 #include "common.hpp"
-#include "experiment/campaign.hpp"
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/prepare.hpp"
+#include "experiment/campaign/run.hpp"
+#include "experiment/campaign/toml.hpp"
 #include "experiment/html/report_page.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/report/store.hpp"

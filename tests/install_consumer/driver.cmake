@@ -31,7 +31,7 @@ step("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix
 foreach(f IN ITEMS include/pride/engine/run.hpp include/pride/framework/problem.hpp
                    include/pride/algorithms/parts/swarm/velocity.hpp include/pride/problems/grid/map.hpp
                    include/pride/problems/continuous/catalog.hpp include/pride/roughset/roughset.hpp
-                   include/pride/experiment/campaign.hpp
+                   include/pride/experiment/campaign/identity.hpp
                    bin/pride)
   if(NOT EXISTS ${prefix}/${f})
     message(FATAL_ERROR "install test: ${prefix}/${f} was not installed")

@@ -6,7 +6,7 @@
 
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
-#include "experiment/campaign.hpp"
+#include "experiment/campaign/identity.hpp"
 #include "framework/error.hpp"
 
 namespace {

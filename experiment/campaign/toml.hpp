@@ -4,7 +4,7 @@
 // InputErrors naming the file, line and key. docs/campaigns.md describes the format.
 #include <string>
 
-#include "experiment/campaign.hpp"
+#include "experiment/campaign/campaign.hpp"
 
 namespace pride::engine {
 

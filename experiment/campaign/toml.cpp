@@ -1,4 +1,6 @@
-#include "experiment/campaign_toml.hpp"
+#include "experiment/campaign/toml.hpp"
+#include "experiment/campaign/identity.hpp"
+#include "experiment/campaign/prepare.hpp"
 
 #include <fmt/format.h>
 
