@@ -40,25 +40,25 @@ void catch_signals() {
 }  // namespace
 
 int bench_command(const BenchOptions& o, std::ostream& out) {
-    const engine::Campaign c = engine::read_campaign(o.config);
+    const campaign::Campaign c = campaign::read_campaign(o.config);
     // By default in the working folder, not beside the campaign file (which may be in a
     // checkout or a read-only place); the summary line says where.
     const std::string store =
         o.out.empty() ? std::filesystem::path(o.config).filename().replace_extension(".sqlite").string() : o.out;
     // Under mpirun every rank is a process of its own: one thread each unless --jobs says more.
     const std::int64_t jobs =
-        o.jobs.value_or(engine::launched_ranks() > 1 ? 1 : std::max(1u, std::thread::hardware_concurrency()));
+        o.jobs.value_or(campaign::launched_ranks() > 1 ? 1 : std::max(1u, std::thread::hardware_concurrency()));
     const bool show_progress = isatty(STDERR_FILENO) != 0;
-    engine::Progress progress;
+    campaign::Progress progress;
     if (show_progress)
         progress = [](std::size_t done, std::size_t total, double seconds) {
             print_stderr("\r{}/{} runs, {:.0f} s elapsed   ", done, total, seconds);
         };
-    engine::Stop stop;
+    campaign::Stop stop;
     stop.signal = &stop_signal;
     // The store is closed when this is called: the process ends here, abandoning the runs in
     // progress (nothing of theirs is in the store), with 128 + the signal as a shell reports it.
-    stop.on_stop = [&](const engine::Interrupted& i) {
+    stop.on_stop = [&](const campaign::Interrupted& i) {
         if (show_progress) print_stderr("\n");
         std::fflush(stdout);
         print_stderr("pride: interrupted by {}: {} of {} runs are stored in {}; run the same command again to resume\n",
@@ -70,7 +70,7 @@ int bench_command(const BenchOptions& o, std::ostream& out) {
         std::_Exit(128 + i.signal);
     };
     catch_signals();
-    const engine::BenchSummary s = engine::run_campaign(c, store, jobs, progress, stop);
+    const campaign::BenchSummary s = campaign::run_campaign(c, store, jobs, progress, stop);
     if (show_progress) print_stderr("\n");
     if (s.ranks == 0) return 0;  // another MPI rank than 0: rank 0 prints the summary
     std::string extra = s.ranks > 1 ? fmt::format("; {} MPI ranks", s.ranks) : "";

@@ -248,7 +248,7 @@ class Store {
 
     /// Records the campaign, or checks that the store holds this very campaign. A store that
     /// holds no run yet (a campaign that failed before its first) takes the new campaign.
-    void claim(const Campaign& c) {
+    void claim(const campaign::Campaign& c) {
         exec("BEGIN IMMEDIATE");
         try {
             sqlite3_stmt* s =
@@ -266,7 +266,7 @@ class Store {
                 // Every run of a store records hits of the same targets (pride went from COCO's
                 // 11 precisions to its 51): new runs cannot join runs that recorded others. A store
                 // from before precisions (its runs record none) takes today's.
-                const std::string current = json_array(coco_precisions());
+                const std::string current = json_array(campaign::coco_precisions());
                 if (!precisions) {
                     sqlite3_stmt* u = prepare("UPDATE campaign SET precisions = ? WHERE id = 1");
                     sqlite3_bind_text(u, 1, current.c_str(), -1, SQLITE_TRANSIENT);
@@ -377,13 +377,13 @@ class Store {
     /// Finished runs in one transaction with the release of their claims: once this returns, a
     /// kill cannot lose them. A run another process stored meanwhile (same inputs, same values)
     /// is kept once. Returns the number of rows added.
-    std::size_t insert(const std::vector<RunRecord>& records) {
+    std::size_t insert(const std::vector<campaign::RunRecord>& records) {
         if (records.empty()) return 0;
         check_same_file();
         std::size_t added = 0;
         exec("BEGIN IMMEDIATE");
         try {
-            for (const RunRecord& r : records) added += insert_one(r);
+            for (const campaign::RunRecord& r : records) added += insert_one(r);
             exec("COMMIT");
         } catch (...) {
             rollback();
@@ -392,7 +392,7 @@ class Store {
         check_same_file();
         return added;
     }
-    std::size_t insert(const RunRecord& r) { return insert(std::vector<RunRecord>{r}); }
+    std::size_t insert(const campaign::RunRecord& r) { return insert(std::vector<campaign::RunRecord>{r}); }
 
     /// The claims of this process, dropped (runs it took and will not finish).
     void release() {
@@ -454,7 +454,7 @@ class Store {
     /// every stored problem and algorithm id defined as before; new seeds, problems and algorithms
     /// are new runs. The campaign's text and report target become the new file's; the problems
     /// and algorithms it adds are recorded. Anything else is refused, naming what differs.
-    void grow(const Campaign& c, const std::string& stored_name) {
+    void grow(const campaign::Campaign& c, const std::string& stored_name) {
         const std::string refuse =
             "; a campaign grows by seeds, problems and algorithms only (choose another store file)";
         if (stored_name != c.name)
@@ -473,17 +473,19 @@ class Store {
             throw InputError(path_ + ": holds the results of another campaign ('" + stored_name +
                              "', or an edited version of this file; the store was written before campaigns could "
                              "grow); choose another store file");
-        if (*budget != budget_definition(c))
+        if (*budget != campaign::budget_definition(c))
             throw InputError(path_ + ": its runs have the budget '" + *budget + "', this campaign '" +
-                             budget_definition(c) + "'" + refuse);
+                             campaign::budget_definition(c) + "'" + refuse);
         for (const auto& p : c.problems)
-            if (const auto it = problems.find(p.id); it != problems.end() && *it->second != problem_definition(p))
+            if (const auto it = problems.find(p.id);
+                it != problems.end() && *it->second != campaign::problem_definition(p))
                 throw InputError(path_ + ": problem '" + p.id + "' is stored as " + *it->second + ", here it is " +
-                                 problem_definition(p) + refuse);
+                                 campaign::problem_definition(p) + refuse);
         for (const auto& a : c.algorithms)
-            if (const auto it = algorithms.find(a.id); it != algorithms.end() && *it->second != algorithm_definition(a))
+            if (const auto it = algorithms.find(a.id);
+                it != algorithms.end() && *it->second != campaign::algorithm_definition(a))
                 throw InputError(path_ + ": algorithm '" + a.id + "' is stored as " + *it->second + ", here it is " +
-                                 algorithm_definition(a) + refuse);
+                                 campaign::algorithm_definition(a) + refuse);
         check_digests(c);
         fill_digests(c);
         s = prepare("UPDATE campaign SET text = ?, target = ?, target_precision = ? WHERE id = 1");
@@ -500,7 +502,7 @@ class Store {
     /// Every problem of `c` stored under its id with another digest (problem_digest: its map's
     /// cells and size, its settings) is refused, naming the id and what differs: the runs
     /// stored are of another problem. A NULL digest (a store from before them) is not compared.
-    void check_digests(const Campaign& c) {
+    void check_digests(const campaign::Campaign& c) {
         std::map<std::string, std::string> stored;
         sqlite3_stmt* s = prepare("SELECT id, digest FROM problems WHERE digest IS NOT NULL");
         int rc;
@@ -511,7 +513,8 @@ class Store {
         if (rc != SQLITE_DONE) fail("cannot read the store");
         for (const auto& p : c.problems)
             if (const auto it = stored.find(p.id); it != stored.end() && it->second != p.digest)
-                throw InputError(path_ + ": problem '" + p.id + "' " + digest_difference(it->second, p.digest) +
+                throw InputError(path_ + ": problem '" + p.id + "' " +
+                                 campaign::digest_difference(it->second, p.digest) +
                                  "; a store never mixes the runs of two problems under one id (give the problem "
                                  "another id, or choose another store file)");
     }
@@ -519,7 +522,7 @@ class Store {
     /// The digests of this campaign's problems, recorded where the store has none (a store from
     /// before them: its problems are taken as they are now, an edit made before cannot be seen).
     /// Nothing is written when none is missing.
-    void fill_digests(const Campaign& c) {
+    void fill_digests(const campaign::Campaign& c) {
         sqlite3_stmt* s = prepare("SELECT COUNT(*) FROM problems WHERE digest IS NULL");
         const bool missing = sqlite3_step(s) == SQLITE_ROW && sqlite3_column_int64(s, 0) > 0;
         sqlite3_finalize(s);
@@ -535,7 +538,7 @@ class Store {
     /// A store written before definitions were kept, resumed with its very campaign: the
     /// definitions are this campaign's, recorded where missing, so that it can grow from now on.
     /// Nothing is written when none is missing (the store's bytes stay).
-    void fill_definitions(const Campaign& c) {
+    void fill_definitions(const campaign::Campaign& c) {
         sqlite3_stmt* s = prepare(
             "SELECT (SELECT COUNT(*) FROM campaign WHERE budget IS NULL) + (SELECT COUNT(*) FROM problems WHERE "
             "definition IS NULL) + (SELECT COUNT(*) FROM algorithms WHERE definition IS NULL)");
@@ -543,7 +546,7 @@ class Store {
         sqlite3_finalize(s);
         fill_digests(c);
         if (!missing) return;
-        const std::string budget = budget_definition(c);
+        const std::string budget = campaign::budget_definition(c);
         s = prepare("UPDATE campaign SET budget = ? WHERE budget IS NULL");
         sqlite3_bind_text(s, 1, budget.c_str(), -1, SQLITE_TRANSIENT);
         step_done(s, "cannot write the store");
@@ -554,8 +557,8 @@ class Store {
             sqlite3_bind_text(u, 2, id.c_str(), -1, SQLITE_TRANSIENT);
             step_done(u, "cannot write the store");
         };
-        for (const auto& p : c.problems) define("problems", p.id, problem_definition(p));
-        for (const auto& a : c.algorithms) define("algorithms", a.id, algorithm_definition(a));
+        for (const auto& p : c.problems) define("problems", p.id, campaign::problem_definition(p));
+        for (const auto& a : c.algorithms) define("algorithms", a.id, campaign::algorithm_definition(a));
     }
 
     static void bind_optional(sqlite3_stmt* s, int i, const std::optional<double>& v) {
@@ -565,7 +568,7 @@ class Store {
             sqlite3_bind_null(s, i);
     }
 
-    void record(const Campaign& c) {
+    void record(const campaign::Campaign& c) {
         sqlite3_stmt* s = prepare(
             "INSERT INTO campaign (id, name, text, target, precisions, target_precision, budget) VALUES (1, ?, ?, ?, "
             "?, "
@@ -573,21 +576,21 @@ class Store {
         sqlite3_bind_text(s, 1, c.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, c.text.c_str(), -1, SQLITE_TRANSIENT);
         bind_optional(s, 3, c.target);
-        const std::string precisions = json_array(coco_precisions());
+        const std::string precisions = json_array(campaign::coco_precisions());
         sqlite3_bind_text(s, 4, precisions.c_str(), -1, SQLITE_TRANSIENT);
         bind_optional(s, 5, c.target_precision);
-        const std::string budget = budget_definition(c);
+        const std::string budget = campaign::budget_definition(c);
         sqlite3_bind_text(s, 6, budget.c_str(), -1, SQLITE_TRANSIENT);
         step_done(s, "cannot write the store");
         for (const auto& a : c.algorithms) record_algorithm(a);
         for (const auto& p : c.problems) record_problem(p);
     }
 
-    void record_algorithm(const CampaignAlgorithm& a) {
+    void record_algorithm(const campaign::CampaignAlgorithm& a) {
         sqlite3_stmt* s =
             prepare("INSERT INTO algorithms (id, type, evaluates, definition, reproducible) VALUES (?, ?, ?, ?, ?)");
         const AlgorithmEntry* entry = algorithms().find(a.spec.name);
-        const std::string definition = algorithm_definition(a);
+        const std::string definition = campaign::algorithm_definition(a);
         sqlite3_bind_text(s, 1, a.id.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_text(s, 2, a.spec.name.c_str(), -1, SQLITE_TRANSIENT);
         sqlite3_bind_int(s, 3, !entry || entry->evaluates() ? 1 : 0);
@@ -597,7 +600,7 @@ class Store {
     }
 
     /// A problem as resolved here (map paths made absolute), for reports and plots.
-    void record_problem(const CampaignProblem& p) {
+    void record_problem(const campaign::CampaignProblem& p) {
         {
             sqlite3_stmt* s = prepare(
                 "INSERT INTO problems (id, type, dim, map, start, goal, function, instance, f_opt, suite, fid, "
@@ -631,7 +634,7 @@ class Store {
                 sqlite3_bind_text(s, 10, suite.c_str(), -1, SQLITE_TRANSIENT);
                 sqlite3_bind_int64(s, 11, item->entry.number);
             }
-            const std::string definition = problem_definition(p);
+            const std::string definition = campaign::problem_definition(p);
             sqlite3_bind_text(s, 12, definition.c_str(), -1, SQLITE_TRANSIENT);
             sqlite3_bind_text(s, 13, p.digest.c_str(), -1, SQLITE_TRANSIENT);
             step_done(s, "cannot write the store");
@@ -651,7 +654,7 @@ class Store {
         if (rc != SQLITE_DONE) fail(doing);
     }
 
-    std::size_t insert_one(const RunRecord& r) {
+    std::size_t insert_one(const campaign::RunRecord& r) {
         sqlite3_stmt* s = cached(
             insert_,
             "INSERT OR IGNORE INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, "

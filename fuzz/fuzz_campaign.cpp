@@ -42,9 +42,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // 3 s, over the 1 s hang limit, as its mutants do). Larger campaigns are parsed and
         // checked only; prepare's checks are the same for every problem and are reached by
         // the smaller ones.
-        const engine::Campaign parsed = engine::parse_campaign(path);
+        const campaign::Campaign parsed = campaign::parse_campaign(path);
         if (parsed.problems.size() > max_prepared_problems) return 0;
-        const engine::Campaign c = engine::read_campaign(path);
+        const campaign::Campaign c = campaign::read_campaign(path);
         fuzz::expect(c.seeds >= 1, "a campaign with no seeds accepted");
     } catch (const InputError&) {
     }

@@ -57,7 +57,7 @@ std::string campaign(const std::string& head, const std::string& body) {
     return "name = \"cec\"\n" + head + body + "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n";
 }
 
-std::vector<std::string> ids_of(const pride::engine::Campaign& c) {
+std::vector<std::string> ids_of(const pride::campaign::Campaign& c) {
     std::vector<std::string> ids;
     for (const auto& p : c.problems) ids.push_back(p.id);
     return ids;
@@ -157,7 +157,7 @@ TEST_CASE("cec suites: [[suite]] cec2017 and cec2022 expand to one problem per f
                                                           "[[suite]]\nname = \"cec2022\"\nid = \"c22\"\n"
                                                           "dimensions = [20]\n"));
     // Without building a problem: no data is read.
-    const auto c = pride::engine::parse_campaign(file);
+    const auto c = pride::campaign::parse_campaign(file);
     std::vector<std::string> expected{"cec2017-f1-d10",  "cec2017-f1-d30",  "cec2017-f11-d10",
                                       "cec2017-f11-d30", "cec2017-f22-d10", "cec2017-f22-d30"};
     for (int f = 1; f <= 12; ++f) expected.push_back("c22-f" + std::to_string(f) + "-d20");  // all 12 by default
@@ -176,8 +176,8 @@ TEST_CASE("cec suites: [[suite]] cec2017 and cec2022 expand to one problem per f
     // The campaign shipped as an example (docs/campaigns.md): cec2017 F1 and F22 at D = 10, with
     // the suite's budget and runs.
     auto example =
-        pride::engine::parse_campaign(std::string(PRIDE_SOURCE_DIR) + "/examples/campaigns/cec2017-small.toml");
-    pride::engine::apply_suite_rules(example);
+        pride::campaign::parse_campaign(std::string(PRIDE_SOURCE_DIR) + "/examples/campaigns/cec2017-small.toml");
+    pride::campaign::apply_suite_rules(example);
     CHECK(ids_of(example) == std::vector<std::string>{"cec2017-f1-d10", "cec2017-f22-d10"});
     CHECK(example.seeds == 51);
     for (const auto& p : example.problems) CHECK(p.evaluations == 100000);
@@ -186,8 +186,8 @@ TEST_CASE("cec suites: [[suite]] cec2017 and cec2022 expand to one problem per f
 TEST_CASE("cec suites: a campaign without a budget or seeds takes the suites' rules", "[cec-suites]") {
     const TempDir dir;
     const auto applied = [&](const std::string& head, const std::string& body) {
-        auto c = pride::engine::parse_campaign(dir.write("c.toml", campaign(head, body)));
-        pride::engine::apply_suite_rules(c);
+        auto c = pride::campaign::parse_campaign(dir.write("c.toml", campaign(head, body)));
+        pride::campaign::apply_suite_rules(c);
         return c;
     };
     const std::string y2017 = "[[suite]]\nname = \"cec2017\"\nfunctions = [3]\ndimensions = [10, 50]\n";
@@ -197,7 +197,7 @@ TEST_CASE("cec suites: a campaign without a budget or seeds takes the suites' ru
     CHECK(a.seeds == 51);
     CHECK(a.problems[0].evaluations == 100000);
     CHECK(a.problems[1].evaluations == 500000);
-    CHECK(pride::engine::budget_definition(a) == "evaluations by the CEC suites' rules");
+    CHECK(pride::campaign::budget_definition(a) == "evaluations by the CEC suites' rules");
     // CEC 2022: 200,000 at D = 10, 1,000,000 at D = 20, 30 runs; a [[problem]] on a CEC function too.
     const auto b = applied("", y2022 + "[[problem]]\nid = \"one\"\ntype = \"cec2022-f4\"\ndim = 10\n");
     CHECK(b.seeds == 30);
@@ -208,11 +208,11 @@ TEST_CASE("cec suites: a campaign without a budget or seeds takes the suites' ru
     const auto c = applied("seeds = 7\n[budget]\nevaluations = 5000\n", y2017);
     CHECK(c.seeds == 7);
     CHECK(!c.problems[0].evaluations);
-    CHECK(pride::engine::budget_definition(c) == "evaluations = 5000");
+    CHECK(pride::campaign::budget_definition(c) == "evaluations = 5000");
     // An iteration budget alone leaves the suites' MaxFES (runs end at whichever comes first).
     const auto d = applied("[budget]\niterations = 10\n", y2017);
     CHECK(d.problems[1].evaluations == 500000);
-    CHECK(pride::engine::budget_definition(d) == "iterations = 10; evaluations by the CEC suites' rules");
+    CHECK(pride::campaign::budget_definition(d) == "iterations = 10; evaluations by the CEC suites' rules");
     // Refused: seeds for two suites at once, a budget for a problem of no CEC suite or at a
     // dimension whose MaxFES no rule gives.
     const auto refused = [&](const std::string& head, const std::string& body) {
@@ -275,8 +275,8 @@ struct HandStore {
                                            "[[problem]]\nid = \"s10\"\ntype = \"sphere\"\ndim = 10\n"
                                            "[[problem]]\nid = \"t10\"\ntype = \"sphere\"\ndim = 10\n"
                                            "[[algorithm]]\nid = \"a\"\ntype = \"pso\"\n");
-        auto c = pride::engine::read_campaign(file);
-        (void)pride::engine::run_campaign(c, store, 1);
+        auto c = pride::campaign::read_campaign(file);
+        (void)pride::campaign::run_campaign(c, store, 1);
         // f* = 100 for both; t10 reported as a CEC 2022 problem (its checkpoints).
         exec_sql(store,
                  "UPDATE problems SET f_opt = 100; UPDATE problems SET suite = 'cec2022', fid = 1 WHERE id = "
@@ -456,9 +456,9 @@ TEST_CASE("cec suites: a campaign stores each run's budget and its best values a
                                        "dimensions = [2]\n"
                                        "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n"
                                        "[[algorithm]]\nid = \"sbplx\"\ntype = \"nlopt:LN_SBPLX\"\n");
-    auto c = pride::engine::read_campaign(file);
+    auto c = pride::campaign::read_campaign(file);
     const std::string path = dir.file("k.sqlite");
-    (void)pride::engine::run_campaign(c, path, 2);
+    (void)pride::campaign::run_campaign(c, path, 2);
     const auto store = pride::report::read_store(path);
     REQUIRE(store.runs.size() == 8);
     for (const auto& run : store.runs) {
@@ -479,8 +479,8 @@ TEST_CASE("cec suites: a campaign stores each run's budget and its best values a
                                              "name = \"i\"\nseeds = 1\n[budget]\niterations = 3\n"
                                              "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
                                              "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n");
-    auto ci = pride::engine::read_campaign(iterations);
-    (void)pride::engine::run_campaign(ci, dir.file("i.sqlite"), 1);
+    auto ci = pride::campaign::read_campaign(iterations);
+    (void)pride::campaign::run_campaign(ci, dir.file("i.sqlite"), 1);
     const auto si = pride::report::read_store(dir.file("i.sqlite"));
     REQUIRE(si.runs.size() == 1);
     CHECK(!si.runs[0].max_evaluations);
@@ -499,8 +499,8 @@ TEST_CASE("cec suites: problems without a known f* are left out of the CEC table
                                         "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n",
                                         std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map"));
     const std::string store = dir.file("g.sqlite");
-    auto c = pride::engine::read_campaign(file);
-    (void)pride::engine::run_campaign(c, store, 1);
+    auto c = pride::campaign::read_campaign(file);
+    (void)pride::campaign::run_campaign(c, store, 1);
     const auto r = run_pride("report " + quoted(store) + " --format cec");
     REQUIRE(r.status == 0);
     CHECK_THAT(r.out, Contains("| sph | pso | 2 | 300 | 2 | "));

@@ -22,6 +22,7 @@
 
 using Catch::Matchers::Contains;
 using pride::test::input_error_message;
+namespace campaign = pride::campaign;
 namespace engine = pride::engine;
 
 namespace {
@@ -362,12 +363,12 @@ TEST_CASE("engine: a grid run returns a legal path, the optimum, and the papers'
 
 TEST_CASE("engine: a campaign built from structs reads each map once and stores every run", "[engine][campaign]") {
     pride::test::TempDir dir;
-    engine::Campaign c;
+    campaign::Campaign c;
     c.name = "from structs";
     c.seeds = 2;
     c.budget.iterations = 5;
     for (const char* id : {"a", "b"}) {
-        engine::CampaignProblem p;
+        campaign::CampaignProblem p;
         p.id = id;
         engine::GridSpec g;
         g.start = {0, 0};
@@ -377,34 +378,34 @@ TEST_CASE("engine: a campaign built from structs reads each map once and stores 
         p.map_file = map_file();
         c.problems.push_back(p);
     }
-    engine::CampaignProblem s;
+    campaign::CampaignProblem s;
     s.id = "s";
     s.spec = engine::ContinuousSpec{"sphere", 3};
     c.algorithms.push_back({"ga", algo("ga"), 0});
     c.algorithms.push_back({"exact", algo("exact"), 0});
-    engine::prepare(c);
+    campaign::prepare(c);
     const auto& ga = std::get<engine::GridSpec>(c.problems[0].spec);
     const auto& gb = std::get<engine::GridSpec>(c.problems[1].spec);
     CHECK(ga.map == gb.map);  // one map, read once
     CHECK(ga.oracle);         // the exact optimum beside every run of an additive objective
     CHECK_FALSE(c.text.empty());
-    const auto summary = engine::run_campaign(c, dir.file("s.sqlite"), 2);
+    const auto summary = campaign::run_campaign(c, dir.file("s.sqlite"), 2);
     CHECK(summary.stored == 2 * 2 * 2);
     CHECK(summary.total == 8);
-    const auto again = engine::run_campaign(c, dir.file("s.sqlite"), 1);
+    const auto again = campaign::run_campaign(c, dir.file("s.sqlite"), 1);
     CHECK(again.stored == 0);
     CHECK(again.already == 8);
-    const auto one = engine::run_one(c.problems[1], c.algorithms[0], c.budget, 2);
+    const auto one = campaign::run_one(c.problems[1], c.algorithms[0], c.budget, 2);
     CHECK(one.feasible);
     CHECK(one.optimum == 12.0);
 
     // Bad input names the item.
-    engine::Campaign bad = c;
+    campaign::Campaign bad = c;
     bad.algorithms.push_back({"p", algo("pso"), 0});  // pso on the chain problem
-    CHECK_THAT(input_error_message([&] { engine::prepare(bad); }),
+    CHECK_THAT(input_error_message([&] { campaign::prepare(bad); }),
                Contains("'p'") && Contains("'b'") && Contains("chain"));
     bad = c;
     bad.problems.push_back(s);
     bad.problems.push_back(s);
-    CHECK_THAT(input_error_message([&] { engine::prepare(bad); }), Contains("duplicate problem id 's'"));
+    CHECK_THAT(input_error_message([&] { campaign::prepare(bad); }), Contains("duplicate problem id 's'"));
 }

@@ -65,7 +65,7 @@ TEST_CASE("fuzz regressions: every checked-in input is read or refused as bad in
     }
     for (const auto& p : inputs("campaign")) {
         INFO(p);
-        accepted([&] { engine::read_campaign(p.string()); });
+        accepted([&] { campaign::read_campaign(p.string()); });
     }
     for (const auto& p : inputs("store")) {
         INFO(p);

@@ -49,18 +49,18 @@ std::string campaign_text(const std::string& extra_problem = "", const std::stri
 TEST_CASE("a multi-objective campaign stores each run's front and its hypervolume gap, as the engine runs it") {
     const test::TempDir dir("pride-mo-campaign");
     const std::string file = dir.write("mo.toml", campaign_text());
-    engine::Campaign c = engine::read_campaign(file);
+    campaign::Campaign c = campaign::read_campaign(file);
     REQUIRE(c.problems.size() == 3);
     for (const auto& p : c.problems) CHECK(p.is_multiobjective());
     CHECK(c.problems[1].multiobjective->objectives() == 3);
     CHECK(c.problems[0].multiobjective->dimension() == 12);
-    const auto summary = engine::run_campaign(c, dir.file("mo.sqlite"), 2);
+    const auto summary = campaign::run_campaign(c, dir.file("mo.sqlite"), 2);
     CHECK(summary.stored == 12);
-    CHECK(engine::run_campaign(c, dir.file("mo.sqlite"), 2).stored == 0);  // resumed: nothing left
+    CHECK(campaign::run_campaign(c, dir.file("mo.sqlite"), 2).stored == 0);  // resumed: nothing left
 
     // The stored record is the engine's run: the same front, the value 1 - its hypervolume ratio.
     for (const auto& p : c.problems) {
-        const engine::RunRecord r = engine::run_one(p, c.algorithms[1], c.budget, 2);
+        const campaign::RunRecord r = campaign::run_one(p, c.algorithms[1], c.budget, 2);
         const auto direct = engine::run(c.algorithms[1].spec, *p.multiobjective, c.budget, 2);
         const auto q = engine::quality(*p.multiobjective, direct.f);
         INFO(p.id);
@@ -90,12 +90,12 @@ TEST_CASE("a multi-objective campaign stores each run's front and its hypervolum
     for (const auto& row : report.fronts) {
         INFO(row.problem << " " << row.algorithm);
         const auto& p = *std::find_if(c.problems.begin(), c.problems.end(),
-                                      [&](const engine::CampaignProblem& q) { return q.id == row.problem; });
+                                      [&](const campaign::CampaignProblem& q) { return q.id == row.problem; });
         const auto& a = *std::find_if(c.algorithms.begin(), c.algorithms.end(),
-                                      [&](const engine::CampaignAlgorithm& q) { return q.id == row.algorithm; });
+                                      [&](const campaign::CampaignAlgorithm& q) { return q.id == row.algorithm; });
         std::vector<double> igd, ratio;
         for (std::int64_t seed = 1; seed <= 2; ++seed) {
-            const auto doc = test::parse_json(engine::run_one(p, a, c.budget, seed).solution);
+            const auto doc = test::parse_json(campaign::run_one(p, a, c.budget, seed).solution);
             igd.push_back(doc.at("igd_plus").number);
             ratio.push_back(doc.at("hypervolume_ratio").number);
         }
@@ -123,7 +123,7 @@ TEST_CASE("multi-objective campaign entries are refused at their line when they 
     const test::TempDir dir("pride-mo-campaign-errors");
     const auto refused = [&](const std::string& text, const std::vector<std::string>& words) {
         const std::string file = dir.write("bad.toml", text);
-        const std::string message = test::input_error_message([&] { (void)engine::read_campaign(file); });
+        const std::string message = test::input_error_message([&] { (void)campaign::read_campaign(file); });
         INFO(message);
         CHECK(message.find("bad.toml") != std::string::npos);
         for (const auto& w : words) CHECK(message.find(w) != std::string::npos);

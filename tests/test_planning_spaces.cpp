@@ -159,12 +159,12 @@ id = "hswoa"
 type = "hswoa"
 init = "walk"
 )"));
-    const engine::Campaign c = engine::read_campaign(toml);
+    const campaign::Campaign c = campaign::read_campaign(toml);
     REQUIRE(c.algorithms.size() == 5);
     for (const auto& a : c.algorithms)
         for (std::int64_t seed = 1; seed <= 2; ++seed) {
             INFO(a.id << " seed " << seed);
-            const engine::RunRecord r = engine::run_one(c.problems.front(), a, c.budget, seed);
+            const campaign::RunRecord r = campaign::run_one(c.problems.front(), a, c.budget, seed);
             CHECK(r.feasible);
             if (a.id != "astar") CHECK(r.evaluations == 400);
         }

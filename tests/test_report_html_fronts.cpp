@@ -130,12 +130,12 @@ TEST_CASE("report --html: attainment surfaces, median fronts and grid paths of m
     // front (by hypervolume ratio) with its seed named; the reference front is the campaign's.
     const report::CampaignStore s = report::read_store(store);
     const html::PageStore extra = html::read_page_store(store);
-    const engine::Campaign campaign = engine::read_campaign(config);
+    const campaign::Campaign campaign = campaign::read_campaign(config);
     for (const std::string problem : {"zdt1", "grid", "dtlz2"}) {
         const html::ProblemFronts fronts = html::problem_fronts(extra, problem);
         REQUIRE(fronts.algorithms.size() == 2);
         const auto& p = *std::find_if(campaign.problems.begin(), campaign.problems.end(),
-                                      [&](const engine::CampaignProblem& q) { return q.id == problem; });
+                                      [&](const campaign::CampaignProblem& q) { return q.id == problem; });
         CHECK(fronts.objectives == p.multiobjective->objective_names());
         const engine::MoProblem rebuilt = html::stored_problem(s, extra, problem, fronts.objectives);
         CHECK(rebuilt.reference_front() == p.multiobjective->reference_front());

@@ -247,7 +247,7 @@ TEST_CASE("store identity: a classic suite without instance 0 is refused at its 
                       {bad + ":7:13", "'instances' has no instance 0", "yao-f14"});
     CHECK(!std::filesystem::exists(dir.file("s.sqlite")));
     // Without the fixed-dimension functions, or with instance 0 listed, it runs.
-    const auto ok = pride::engine::read_campaign(dir.write(
+    const auto ok = pride::campaign::read_campaign(dir.write(
         "ok.toml",
         head + "[[suite]]\nname = \"classic\"\nfunctions = [1, 2]\ninstances = [1]\ndimensions = [2]\n" + tail));
     CHECK(ok.problems.size() == 2);
@@ -338,20 +338,20 @@ TEST_CASE("store identity: empty names and names with NUL or control characters 
 }
 
 TEST_CASE("store identity: campaigns built in code get the same name checks (prepare)", "[store-identity]") {
-    pride::engine::Campaign c;
+    pride::campaign::Campaign c;
     c.name = "code";
     c.seeds = 1;
     c.budget.evaluations = 10;
-    pride::engine::CampaignProblem p;
+    pride::campaign::CampaignProblem p;
     p.id = std::string("a\0b", 3);
     p.spec = pride::engine::ContinuousSpec{"sphere", 2};
     c.problems.push_back(p);
-    pride::engine::CampaignAlgorithm a;
+    pride::campaign::CampaignAlgorithm a;
     a.id = "pso";
     a.spec.name = "pso";
     c.algorithms.push_back(a);
-    CHECK_THROWS_WITH(pride::engine::prepare(c), Catch::Contains("problem id must not contain a NUL character"));
+    CHECK_THROWS_WITH(pride::campaign::prepare(c), Catch::Contains("problem id must not contain a NUL character"));
     c.problems[0].id = "ok";
     c.name = "\x1b]0;title\x07";
-    CHECK_THROWS_WITH(pride::engine::prepare(c), Catch::Contains("name must not contain control characters (U+001B"));
+    CHECK_THROWS_WITH(pride::campaign::prepare(c), Catch::Contains("name must not contain control characters (U+001B"));
 }

@@ -80,7 +80,7 @@ pop = 10
 TEST_CASE("suites: [[suite]] and instance lists expand to one problem per (function, instance, dimension)",
           "[suites]") {
     const TempDir dir;
-    const auto c = pride::engine::read_campaign(dir.write("c.toml", kSuiteCampaign));
+    const auto c = pride::campaign::read_campaign(dir.write("c.toml", kSuiteCampaign));
     std::vector<std::string> ids;
     for (const auto& p : c.problems) ids.push_back(p.id);
     // bbob: 2 functions x 2 dimensions x 2 instances; classic: F1 in 4 and 6 at instances 0 and 1,
@@ -105,7 +105,7 @@ TEST_CASE("suites: bad suite tables are one line naming the file and line", "[su
     auto error = [&](const std::string& suite) {
         const std::string text = "name = \"x\"\nseeds = 1\n[budget]\nevaluations = 10\n" + suite +
                                  "[[algorithm]]\nid = \"a\"\ntype = \"pso\"\n";
-        return input_error_message([&] { (void)pride::engine::read_campaign(dir.write("bad.toml", text)); });
+        return input_error_message([&] { (void)pride::campaign::read_campaign(dir.write("bad.toml", text)); });
     };
     CHECK_THAT(error("[[suite]]\nname = \"cec\"\ndimensions = [2]\n"),
                Contains("bad.toml:5") && Contains("unknown suite 'cec'"));
@@ -133,8 +133,8 @@ TEST_CASE("suites: a suite campaign stores f_opt, instance, suite, COCO's precis
     const TempDir dir;
     const std::string config = dir.write("c.toml", kSuiteCampaign);
     const std::string store = dir.file("c.sqlite");
-    const auto c = pride::engine::read_campaign(config);
-    const auto summary = pride::engine::run_campaign(c, store, 2);
+    const auto c = pride::campaign::read_campaign(config);
+    const auto summary = pride::campaign::run_campaign(c, store, 2);
     CHECK(summary.stored == 15 * 2);
 
     const auto precisions = rows(store, "SELECT precisions FROM campaign");
@@ -159,7 +159,7 @@ TEST_CASE("suites: a suite campaign stores f_opt, instance, suite, COCO's precis
                            "SELECT r.target_hits, r.best, r.evaluations, p.f_opt FROM runs r JOIN problems p ON "
                            "p.id = r.problem");
     REQUIRE(runs.size() == 30);
-    const std::vector<double>& p = pride::engine::coco_precisions();
+    const std::vector<double>& p = pride::campaign::coco_precisions();
     REQUIRE(p.size() == 51);
     for (const auto& r : runs) {
         INFO(r[0]);
@@ -184,15 +184,15 @@ TEST_CASE("suites: a store written before the suite columns resumes and gains th
     const TempDir dir;
     const std::string config = dir.write("c.toml", kSuiteCampaign);
     const std::string store = dir.file("c.sqlite");
-    const auto c = pride::engine::read_campaign(config);
-    (void)pride::engine::run_campaign(c, store, 1);
+    const auto c = pride::campaign::read_campaign(config);
+    (void)pride::campaign::run_campaign(c, store, 1);
     // Back to the schema of before: no new columns, half the runs.
     exec_sql(
         store,
         "DELETE FROM runs WHERE seed = 2; ALTER TABLE runs DROP COLUMN target_hits; ALTER TABLE campaign DROP COLUMN "
         "precisions; ALTER TABLE problems DROP COLUMN function; ALTER TABLE problems DROP COLUMN instance; ALTER TABLE "
         "problems DROP COLUMN f_opt; ALTER TABLE problems DROP COLUMN suite; ALTER TABLE problems DROP COLUMN fid");
-    const auto summary = pride::engine::run_campaign(c, store, 1);
+    const auto summary = pride::campaign::run_campaign(c, store, 1);
     CHECK(summary.already == 15);
     CHECK(summary.stored == 15);
     const auto hits = rows(store, "SELECT seed, target_hits FROM runs ORDER BY seed");

@@ -23,6 +23,7 @@
 
 using Catch::Matchers::Contains;
 using pride::test::input_error_message;
+namespace campaign = pride::campaign;
 namespace engine = pride::engine;
 
 namespace {
@@ -240,11 +241,11 @@ TEST_CASE("threads: bad thread counts and callbacks not marked thread-safe are r
                                "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n";
     };
     campaign("3");
-    CHECK(engine::read_campaign(file).budget.threads == 3);
+    CHECK(campaign::read_campaign(file).budget.threads == 3);
     for (const char* bad : {"0", "1000", "\"two\""}) {
         INFO(bad);
         campaign(bad);
-        CHECK_THAT(input_error_message([&] { engine::read_campaign(file); }), Contains("threads"));
+        CHECK_THAT(input_error_message([&] { campaign::read_campaign(file); }), Contains("threads"));
     }
     std::filesystem::remove_all(dir);
 }

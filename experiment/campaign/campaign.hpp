@@ -14,18 +14,18 @@
 #include "engine/run.hpp"
 #include "engine/specs.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
 
 struct CampaignProblem {
     std::string id;
-    ProblemSpec spec;      // ContinuousSpec or GridSpec; a grid's map may be left empty...
-    std::string map_file;  // ... and named here (read once per (file, inflate) by prepare())
+    engine::ProblemSpec spec;  // ContinuousSpec or GridSpec; a grid's map may be left empty...
+    std::string map_file;      // ... and named here (read once per (file, inflate) by prepare())
     std::int64_t inflate = 0;
-    bool unknown_free = false;               // a map_server map's unknown cells read as free (grid::MapReadOptions)
-    bool path_gaps = false;                  // each run records its gaps to the shortest grid and any-angle lengths
-    int line = 0;                            // where it stands in the campaign file (0: not from a file)
-    std::string suite;                       // "bbob", "classic" when it came from a suite, else empty
-    std::shared_ptr<const Problem> problem;  // built by prepare()
+    bool unknown_free = false;  // a map_server map's unknown cells read as free (grid::MapReadOptions)
+    bool path_gaps = false;     // each run records its gaps to the shortest grid and any-angle lengths
+    int line = 0;               // where it stands in the campaign file (0: not from a file)
+    std::string suite;          // "bbob", "classic" when it came from a suite, else empty
+    std::shared_ptr<const engine::Problem> problem;  // built by prepare()
     // The evaluations of each run when the campaign budgets per dimension (set by prepare()).
     std::optional<std::int64_t> evaluations;
     std::string digest;  // problem_digest(), set by prepare()
@@ -35,7 +35,7 @@ struct CampaignProblem {
     // the paper's; a GridSpec with the map, ends and encoding). prepare() builds `multiobjective`
     // instead of `problem`; each run stores its front and, as its value, the hypervolume gap.
     std::optional<std::string> objectives;
-    std::shared_ptr<const MoProblem> multiobjective;
+    std::shared_ptr<const engine::MoProblem> multiobjective;
     bool is_multiobjective() const { return objectives.has_value(); }
     /// The dimension of the box its algorithms search (once prepared).
     std::size_t dimension() const { return multiobjective ? multiobjective->dimension() : problem->dimension(); }
@@ -56,7 +56,7 @@ inline const std::vector<double>& coco_precisions() {
 
 struct CampaignAlgorithm {
     std::string id;
-    AlgorithmSpec spec;
+    engine::AlgorithmSpec spec;
     int line = 0;
 };
 
@@ -66,7 +66,7 @@ struct Campaign {
                        // prepare() writes a canonical description
     std::string name;
     std::int64_t seeds = 0;  // seeds 1..seeds
-    Budget budget;           // evaluations and/or iterations
+    engine::Budget budget;   // evaluations and/or iterations
     // Or evaluations per dimension: each continuous problem's runs get this times its dimension
     // (COCO's budgets; excludes budget.evaluations; grids have no dimension and refuse it).
     std::optional<std::int64_t> evaluations_per_dim;
@@ -78,4 +78,4 @@ struct Campaign {
     std::vector<CampaignAlgorithm> algorithms;
 };
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

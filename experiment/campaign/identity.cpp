@@ -11,7 +11,14 @@
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/functions.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
+
+using engine::CallbackSpec;
+using engine::ContinuousSpec;
+using engine::GridSpec;
+using engine::json_array;
+using engine::json_number;
+using engine::json_string;
 
 /// A canonical text of a campaign built in code, so that a store is never mixed with another's.
 std::string campaign_text(const Campaign& c) {
@@ -209,4 +216,4 @@ std::string algorithm_definition(const CampaignAlgorithm& a) {
     return s;
 }
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

@@ -7,7 +7,7 @@
 #include "experiment/campaign/campaign.hpp"
 #include "problems/grid/map.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
 
 /// A canonical text of a campaign built in code (prepare() stores it when the campaign has no file
 /// text), so that a store is never mixed with another's.
@@ -46,4 +46,4 @@ std::string name_problem(const std::string& name);
 std::string map_digest(const grid::GridMap& m);
 std::string compose_digest(const std::string& map_hex, const CampaignProblem& p);
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

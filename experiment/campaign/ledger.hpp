@@ -15,7 +15,7 @@
 #include "experiment/store.hpp"
 #include "framework/error.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
 
 struct Task {
     const CampaignProblem* problem;
@@ -44,7 +44,7 @@ class Ledger {
         // problems or algorithms too: they stay, and are not this campaign's).
         const auto done = store_->done();
         for (std::size_t i = 0; i < tasks_.size(); ++i) {
-            RunKey key{tasks_[i].problem->id, tasks_[i].algorithm->id, tasks_[i].seed};
+            engine::RunKey key{tasks_[i].problem->id, tasks_[i].algorithm->id, tasks_[i].seed};
             if (done.count(key)) {
                 ++already_;
                 continue;
@@ -55,7 +55,7 @@ class Ledger {
     }
 
     const std::vector<Task>& tasks() const { return tasks_; }
-    const Budget& budget() const { return budget_; }
+    const engine::Budget& budget() const { return budget_; }
     std::size_t todo() const { return todo_.size(); }
     std::size_t in_store() const { return already_ + stored_; }
 
@@ -93,7 +93,7 @@ class Ledger {
             // process has died (its claims dropped).
             if (busy_.empty() || !store_->drop_dead_claims()) return out;
             std::vector<std::size_t> todo;
-            std::vector<RunKey> keys;
+            std::vector<engine::RunKey> keys;
             for (const std::size_t at : busy_) {
                 todo.push_back(todo_[at]);
                 keys.push_back(keys_[at]);
@@ -119,14 +119,14 @@ class Ledger {
 
   private:
     std::vector<Task> tasks_;
-    Budget budget_;
-    std::optional<Store> store_;
+    engine::Budget budget_;
+    std::optional<engine::Store> store_;
     std::size_t batch_;
     std::size_t already_ = 0, stored_ = 0;
-    std::vector<std::size_t> todo_;  // task numbers not stored when this process started
-    std::vector<RunKey> keys_;       // their keys
-    std::size_t cursor_ = 0;         // keys_[cursor_...] not looked at yet
-    std::vector<std::size_t> busy_;  // positions in keys_ another process held
+    std::vector<std::size_t> todo_;     // task numbers not stored when this process started
+    std::vector<engine::RunKey> keys_;  // their keys
+    std::size_t cursor_ = 0;            // keys_[cursor_...] not looked at yet
+    std::vector<std::size_t> busy_;     // positions in keys_ another process held
 };
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

@@ -14,7 +14,7 @@
 #include "experiment/campaign/run_one.hpp"
 #include "framework/error.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
 namespace {
 
 // Runs spread over MPI ranks: rank 0 owns the store and hands out task numbers; the other ranks
@@ -242,5 +242,5 @@ void Remotes::release_all() {
     }
 }
 
-}  // namespace pride::engine
+}  // namespace pride::campaign
 #endif

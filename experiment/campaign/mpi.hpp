@@ -15,7 +15,7 @@
 #include <mpi.h>
 #endif
 
-namespace pride::engine {
+namespace pride::campaign {
 
 #ifdef PRIDE_HAVE_MPI
 /// A rank other than 0: `jobs` threads fed by slots, each slot asking rank 0 for a run and sending
@@ -71,4 +71,4 @@ class Remotes {
 };
 #endif
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

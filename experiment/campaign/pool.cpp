@@ -9,7 +9,9 @@
 
 #include "experiment/campaign/run_one.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
+
+using engine::Budget;
 
 BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progress, const Stop& stop,
                        Remotes* remotes) {
@@ -193,4 +195,4 @@ BenchSummary run_local(Ledger& ledger, std::int64_t jobs, const Progress& progre
     return ledger.finish();
 }
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

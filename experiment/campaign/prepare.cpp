@@ -16,7 +16,22 @@
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/suites.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
+
+using engine::check;
+using engine::check_grid_names;
+using engine::check_quality;
+using engine::ContinuousSpec;
+using engine::file_name;
+using engine::GridSpec;
+using engine::load_map;
+using engine::max_budget;
+using engine::MoBenchmarkSpec;
+using engine::MoGridSpec;
+using engine::MoProblem;
+using engine::MoProblemSpec;
+using engine::Problem;
+using engine::ProblemSpec;
 namespace {
 
 std::string where_of(const Campaign& c, int line, const std::string& what) {
@@ -254,4 +269,4 @@ void prepare(Campaign& c) {
     if (c.text.empty()) c.text = campaign_text(c);
 }
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

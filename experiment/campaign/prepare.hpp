@@ -5,10 +5,10 @@
 
 #include "experiment/campaign/campaign.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
 
 /// A multi-objective problem's spec from its campaign entry (the map of a grid as loaded).
-MoProblemSpec multiobjective_spec(const CampaignProblem& p);
+engine::MoProblemSpec multiobjective_spec(const CampaignProblem& p);
 
 /// At most this many problems in one campaign (COCO's largest suites have a few thousand): a short
 /// instance list or suite must not start hours of building (each problem takes about 12 kB and
@@ -19,7 +19,7 @@ inline constexpr std::size_t max_campaign_problems = 100'000;
 /// it is: a built problem's tables (about 11 kB measured; 16 kB counted with its CampaignProblem
 /// and id), a continuous instance's vectors and rotation (8 dim and 2 dim^2 doubles); a grid's
 /// map is counted once per file by load_map.
-double problem_memory(const ProblemSpec& spec);
+double problem_memory(const engine::ProblemSpec& spec);
 
 /// The memory one run of a campaign takes in the lists made before any starts (its task, its key
 /// with both ids, its place in the set of stored keys), for ids of these lengths.
@@ -40,4 +40,4 @@ void apply_suite_rules(Campaign& campaign);
 /// the id), so a campaign that starts will not fail half-way on its input.
 void prepare(Campaign& campaign);
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

@@ -12,7 +12,7 @@
 #include <mpi.h>
 #endif
 
-namespace pride::engine {
+namespace pride::campaign {
 
 int launched_ranks() {
     for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
@@ -82,4 +82,4 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
     return run_local(ledger, jobs, progress, stop, nullptr);
 }
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

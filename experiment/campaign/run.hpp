@@ -10,7 +10,7 @@
 
 #include "experiment/campaign/campaign.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
 
 struct BenchSummary {
     std::size_t stored = 0;   // runs stored by this call
@@ -51,4 +51,4 @@ BenchSummary run_campaign(const Campaign& campaign, const std::string& store, st
 
 /// The number of processes mpirun (Open MPI, or a PMI launcher) started, or 1 outside mpirun.
 int launched_ranks();
-}  // namespace pride::engine
+}  // namespace pride::campaign

@@ -10,7 +10,26 @@
 #include "engine/registry.hpp"
 #include "problems/continuous/cec/suites.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
+
+using engine::AlgorithmEntry;
+using engine::algorithms;
+using engine::Budget;
+using engine::front_json;
+using engine::GridSpec;
+using engine::json_array;
+using engine::json_cells;
+using engine::json_integers;
+using engine::json_number;
+using engine::json_path_metrics;
+using engine::json_polyline;
+using engine::json_string;
+using engine::MoProblem;
+using engine::MoQuality;
+using engine::MoRunResult;
+using engine::quality;
+using engine::run;
+using engine::RunResult;
 
 Budget problem_budget(const Budget& budget, const CampaignProblem& p) {
     Budget b = budget;
@@ -116,4 +135,4 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     return r;
 }
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

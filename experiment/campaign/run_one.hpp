@@ -6,7 +6,7 @@
 
 #include "experiment/campaign/campaign.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
 
 /// One finished run, as stored.
 struct RunRecord {
@@ -40,9 +40,10 @@ struct RunRecord {
 
 /// Runs one (problem, algorithm, seed) of a prepared campaign; the same inputs give the same
 /// record (bar wall_ms), whatever thread or rank runs it.
-RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Budget& budget, std::int64_t seed);
+RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const engine::Budget& budget,
+                  std::int64_t seed);
 
 /// The budget of one problem's runs: the campaign's, with its evaluations per dimension resolved.
-Budget problem_budget(const Budget& budget, const CampaignProblem& p);
+engine::Budget problem_budget(const engine::Budget& budget, const CampaignProblem& p);
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

@@ -21,7 +21,16 @@
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/suites.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
+
+using engine::AlgorithmEntry;
+using engine::algorithms;
+using engine::ContinuousSpec;
+using engine::GridSpec;
+using engine::is_multiobjective_problem;
+using engine::max_budget;
+using engine::ParamSpec;
+using engine::ParamType;
 namespace {
 
 std::string at(const std::string& file, const toml::node& node) {
@@ -527,4 +536,4 @@ Campaign parse_campaign(const std::string& path) {
     return c;
 }
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

@@ -6,7 +6,7 @@
 
 #include "experiment/campaign/campaign.hpp"
 
-namespace pride::engine {
+namespace pride::campaign {
 
 /// Reads, checks and prepares (campaign.hpp: prepare) the campaign file at `path`.
 Campaign read_campaign(const std::string& path);
@@ -15,4 +15,4 @@ Campaign read_campaign(const std::string& path);
 /// expanded, no problem built (so no map or data file read; the campaign's defaults not applied).
 Campaign parse_campaign(const std::string& path);
 
-}  // namespace pride::engine
+}  // namespace pride::campaign

@@ -23,7 +23,7 @@ namespace {
 
 /// A prepared campaign and the first exception its Python functions raised.
 struct PyCampaign {
-    engine::Campaign campaign;
+    campaign::Campaign campaign;
     std::shared_ptr<UserError> errors = std::make_shared<UserError>();
     bool python_functions = false;
 };
@@ -58,15 +58,15 @@ std::optional<T> get(const py::dict& d, const char* key, const std::string& wher
     }
 }
 
-engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t index,
-                                const std::vector<engine::CampaignAlgorithm>& algorithms, const engine::Budget& budget,
-                                std::optional<std::int64_t> evals_per_dim) {
+campaign::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t index,
+                                  const std::vector<campaign::CampaignAlgorithm>& algorithms,
+                                  const engine::Budget& budget, std::optional<std::int64_t> evals_per_dim) {
     const std::string where = "problems[" + std::to_string(index) + "]";
     for (const auto& [k, v] : d) {
         if (!py::isinstance<py::str>(k)) throw py::type_error(where + ": keys must be str, got " + type_name(k));
         require(problem_keys.count(k.cast<std::string>()) != 0, where, "unknown key '" + k.cast<std::string>() + "'");
     }
-    engine::CampaignProblem p;
+    campaign::CampaignProblem p;
     const auto id = get<std::string>(d, "id", where);
     require(id && !id->empty(), where, "needs an id (a non-empty str)");
     p.id = *id;
@@ -192,9 +192,9 @@ engine::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t in
     return p;
 }
 
-engine::CampaignAlgorithm algorithm(const py::handle& item, std::size_t index) {
+campaign::CampaignAlgorithm algorithm(const py::handle& item, std::size_t index) {
     const std::string where = "algorithms[" + std::to_string(index) + "]";
-    engine::CampaignAlgorithm a;
+    campaign::CampaignAlgorithm a;
     if (py::isinstance<py::str>(item)) {
         a.id = a.spec.name = item.cast<std::string>();
         return a;
@@ -273,7 +273,7 @@ std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seed
         k.problems.push_back(problem(p.cast<py::dict>(), *c, i++, k.algorithms, k.budget, evals_per_dim));
     }
     k.budget.stop = UserError::flag(c->errors);
-    engine::prepare(k);
+    campaign::prepare(k);
     return c;
 }
 
@@ -282,7 +282,7 @@ std::shared_ptr<PyCampaign> from_file(const py::object& path) {
     auto c = std::make_shared<PyCampaign>();
     {
         py::gil_scoped_release release;
-        c->campaign = engine::read_campaign(file);
+        c->campaign = campaign::read_campaign(file);
     }
     c->campaign.budget.stop = UserError::flag(c->errors);
     return c;
@@ -298,11 +298,11 @@ py::dict run(PyCampaign& c, const py::object& store_path, const py::object& jobs
     // short is never stored.
     std::atomic<int> signal{0};
     const auto errors = c.errors;
-    const engine::Stop stop{&signal, [errors](const engine::Interrupted&) { errors->stopped.store(true); }};
-    engine::BenchSummary s;
+    const campaign::Stop stop{&signal, [errors](const campaign::Interrupted&) { errors->stopped.store(true); }};
+    campaign::BenchSummary s;
     try {
         // Runs of Python functions take the GIL for each call: threads never run Python at once.
-        s = Call::current().run([&] { return engine::run_campaign(c.campaign, store, jobs, {}, stop); },
+        s = Call::current().run([&] { return campaign::run_campaign(c.campaign, store, jobs, {}, stop); },
                                 [&signal] { signal.store(SIGINT); }, true);
     } catch (...) {
         c.errors->rethrow_or(std::current_exception());

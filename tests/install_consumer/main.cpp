@@ -42,9 +42,9 @@ int main() {
         expect(std::isfinite(result.best_f) && result.best_f < 1.0, "a finite best value below 1");
 
         // The experiment layer (pride::experiment): a campaign's budget as the store identifies it.
-        pride::engine::Campaign campaign;
+        pride::campaign::Campaign campaign;
         campaign.budget.evaluations = 2000;
-        const std::string budget_text = pride::engine::budget_definition(campaign);
+        const std::string budget_text = pride::campaign::budget_definition(campaign);
         std::printf("campaign budget: %s\n", budget_text.c_str());
         expect(budget_text.find("2000") != std::string::npos, "the campaign's budget names its 2000 evaluations");
 
