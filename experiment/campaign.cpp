@@ -18,8 +18,8 @@
 #include <tuple>
 
 #include "engine/json.hpp"
-#include "experiment/file_name.hpp"
 #include "experiment/storage/digest.hpp"
+#include "experiment/storage/file_name.hpp"
 #include "experiment/store.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
@@ -949,13 +949,13 @@ void prepare(Campaign& c) {
     const auto same_file = [&](const auto& items, const char* kind) {
         std::map<std::string, std::string> seen;  // lower-case file name -> id
         for (const auto& item : items) {
-            std::string name = file_name(item.id);
+            std::string name = storage::file_name(item.id);
             for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
             const auto [it, fresh] = seen.emplace(name, item.id);
             if (!fresh)
                 throw InputError(where_of(c, item.line, std::string(kind) + " '" + item.id + "'"),
                                  fmt::format("{} ids '{}' and '{}' would name the same file ('{}'); rename one", kind,
-                                             it->second, item.id, file_name(item.id)));
+                                             it->second, item.id, storage::file_name(item.id)));
         }
     };
     same_file(c.problems, "problem");

@@ -30,7 +30,7 @@
 #include "engine/json.hpp"
 #include "engine/registry.hpp"
 #include "experiment/campaign.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
@@ -87,7 +87,7 @@ class Store {
         // would take its damaged rows for stored runs and report success.
         if (existed) {
             try {
-                report::check_store(path);
+                storage::check_store(path);
             } catch (const InputError& e) {
                 throw InputError(std::string(e.what()) + "; nothing was run (run the campaign into another store)");
             }
