@@ -19,11 +19,11 @@
 
 #include "cli/numbers.hpp"
 #include "cli/output.hpp"
-#include "experiment/file_name.hpp"
 #include "experiment/html/report_page.hpp"
 #include "experiment/report/cec.hpp"
 #include "experiment/report/report.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/file_name.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/error.hpp"
 #include "framework/output_files.hpp"
 
@@ -137,7 +137,7 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
     std::set<std::string> ids;
     for (const auto& row : data.rows) ids.insert(row.problem);
     std::string names;
-    for (const auto& [id, file] : engine::unique_file_names({ids.begin(), ids.end()}))
+    for (const auto& [id, file] : storage::unique_file_names({ids.begin(), ids.end()}))
         names += (names.empty() ? "" : ", ") + json_string(id) + ": " + json_string(file);
     const fs::path names_file = scratch / "names.json";
     std::ofstream names_out(names_file);
@@ -145,7 +145,7 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
     names_out.close();
     if (!names_out) throw unwritable(std::strerror(errno));
     std::vector<std::string> args{
-        store, figures.string(), "--names", names_file.string(), "--uri", report::read_only_uri(store)};
+        store, figures.string(), "--names", names_file.string(), "--uri", storage::read_only_uri(store)};
     if (data.raw) args.push_back("--raw");
     run_script(python, script, args, figures, target);
     if (data.coco && !data.coco->curves.empty()) {

@@ -1,15 +1,16 @@
 # `cmake --install`: the headers under include/pride/ (paths as in the tree, so "engine/run.hpp"
 # reads the same inside and outside), the static libraries, the `pride` command, and a CMake
-# package: find_package(pride) gives pride::engine, pride::experiment (campaigns), pride::framework, pride::algorithms,
-# pride::problems, pride::grid, pride::bbob, pride::roughset (and pride::report or pride::statistics, whichever
-# this tree has). pride_cli_lib is the command's own code, not a library for others: not exported.
+# package: find_package(pride) gives pride::engine, pride::experiment (campaigns), pride::storage (the store's
+# reader), pride::framework, pride::algorithms, pride::problems, pride::grid, pride::bbob, pride::roughset
+# (and pride::report or pride::statistics, whichever this tree has). pride_cli_lib is the command's own
+# code, not a library for others: not exported.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(PRIDE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/pride)
 
 set(pride_exported pride_framework pride_roughset pride_bbob pride_cec pride_continuous pride_problems pride_grid pride_algorithms
-                   pride_engine pride_experiment)
+                   pride_engine pride_storage pride_experiment)
 set(PRIDE_NEEDS_BOOST OFF)
 foreach(t IN ITEMS pride_report pride_statistics)
   if(TARGET ${t})

@@ -10,7 +10,7 @@
 #include <set>
 
 #include "experiment/campaign/identity.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"
 
@@ -98,7 +98,7 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
     for (const auto& in : inputs) require(std::filesystem::is_regular_file(in), in, "no such store");
     // Each input checked as pride report checks it (the same code), then at the current schema
     // (pride bench migrates a store when it opens it): a damaged input is never copied on.
-    for (const auto& in : inputs) report::check_store(in);
+    for (const auto& in : inputs) storage::check_store(in);
     for (const auto& in : inputs) {
         Db db(in, SQLITE_OPEN_READONLY);
         const auto v = db.rows("PRAGMA user_version");

@@ -33,7 +33,7 @@
 #include "experiment/campaign/prepare.hpp"
 #include "experiment/campaign/run.hpp"
 #include "experiment/campaign/run_one.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
@@ -85,12 +85,12 @@ class Store {
             throw InputError(path + ": cannot be the store: " +
                              (std::filesystem::is_directory(path) ? "it is a folder" : "not a regular file") +
                              "; nothing was changed");
-        // A store is checked as pride report checks it (report/store.hpp: check_store, the same
+        // A store is checked as pride report checks it (storage/reader.hpp: check_store, the same
         // code) before anything is trusted or written: resuming on a truncated or bit-flipped store
         // would take its damaged rows for stored runs and report success.
         if (existed) {
             try {
-                report::check_store(path);
+                storage::check_store(path);
             } catch (const InputError& e) {
                 throw InputError(std::string(e.what()) + "; nothing was run (run the campaign into another store)");
             }

@@ -13,9 +13,9 @@ problems), values are precisions f - f_opt on a log axis (precisions below 1e-12
 drawn at 1e-12, and the axis says so), unless --raw. Whole-map planners (A*, exact: no history)
 appear in the convergence figure as a horizontal line at their value. Each figure is written as
 PNG and SVG, named after the problem: pride passes each problem's file name (--names, a JSON
-object of id -> name from experiment/file_name.hpp's unique_file_names, so that "x/y" and "x_y"
+object of id -> name from experiment/storage/file_name.hpp's unique_file_names, so that "x/y" and "x_y"
 get files of their own); without it, safe(id). --uri: the SQLite URI to read STORE with (pride's
-experiment/report/store.hpp read_only_uri).
+experiment/storage/reader.hpp read_only_uri).
 
 Usage: plot_campaign.py STORE DIR [--raw] [--names NAMES.json] [--uri URI]
 """

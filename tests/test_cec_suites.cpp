@@ -23,7 +23,7 @@
 #include "experiment/campaign/toml.hpp"
 #include "experiment/report/cec.hpp"
 #include "experiment/report/report.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "problems/continuous/cec/suites.hpp"
 #include "tests/cec_synthetic.hpp"
 #include "tests/cli_runner.hpp"
@@ -324,7 +324,7 @@ void fill(const HandStore& s) {
 TEST_CASE("cec suites: the CEC table of a store of hand-chosen runs", "[cec-suites]") {
     const HandStore s;
     fill(s);
-    const auto table = cec::make_table(pride::report::read_store(s.store), s.store);
+    const auto table = cec::make_table(pride::storage::read_store(s.store), s.store);
     REQUIRE(table.rows.size() == 2);
     const cec::Row& r = table.rows[0];
     CHECK(r.problem == "s10");
@@ -433,7 +433,7 @@ TEST_CASE("cec suites: --format cec refuses runs without a budget or checkpoints
     INFO(bench.err);
     CHECK(bench.status == 0);
     CHECK_THAT(bench.out, Contains("1 runs stored"));  // (t10, seed 3), deleted above
-    const auto store = pride::report::read_store(s.store);
+    const auto store = pride::storage::read_store(s.store);
     for (const auto& run : store.runs) {
         INFO(run.problem << " " << run.seed);
         const bool new_run = run.problem == "t10" && run.seed == 3;
@@ -459,7 +459,7 @@ TEST_CASE("cec suites: a campaign stores each run's budget and its best values a
     auto c = pride::campaign::read_campaign(file);
     const std::string path = dir.file("k.sqlite");
     (void)pride::campaign::run_campaign(c, path, 2);
-    const auto store = pride::report::read_store(path);
+    const auto store = pride::storage::read_store(path);
     REQUIRE(store.runs.size() == 8);
     for (const auto& run : store.runs) {
         INFO(run.problem << " " << run.algorithm << " " << run.seed);
@@ -481,7 +481,7 @@ TEST_CASE("cec suites: a campaign stores each run's budget and its best values a
                                              "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\n");
     auto ci = pride::campaign::read_campaign(iterations);
     (void)pride::campaign::run_campaign(ci, dir.file("i.sqlite"), 1);
-    const auto si = pride::report::read_store(dir.file("i.sqlite"));
+    const auto si = pride::storage::read_store(dir.file("i.sqlite"));
     REQUIRE(si.runs.size() == 1);
     CHECK(!si.runs[0].max_evaluations);
     CHECK(si.runs[0].checkpoints.empty());

@@ -15,7 +15,7 @@
 
 #include "experiment/report/coco.hpp"
 #include "experiment/report/report.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 
@@ -202,7 +202,7 @@ TEST_CASE("coco: ERT and ECDF worked by hand", "[report][coco]") {
 TEST_CASE("coco: a store with the suite columns read back, analysed and reported", "[report][coco]") {
     TempDir dir("pride-coco");
     const std::string store = suite_store(dir, "suite");
-    const auto s = pride::report::read_store(store);
+    const auto s = pride::storage::read_store(store);
     REQUIRE(s.precisions);
     CHECK(*s.precisions == std::vector<double>{10, 1, 0.1});
     REQUIRE(s.problems);
@@ -344,7 +344,7 @@ TEST_CASE("coco: a store with the suite columns read back, analysed and reported
 TEST_CASE("coco: stores without the suite columns, or with them NULL, read as before", "[report][coco]") {
     TempDir dir("pride-coco-old");
     const std::string old = suite_store(dir, "old", false);
-    const auto s = pride::report::read_store(old);
+    const auto s = pride::storage::read_store(old);
     CHECK(!s.precisions);
     REQUIRE(s.problems);
     for (const auto& p : *s.problems) {
@@ -370,7 +370,7 @@ TEST_CASE("coco: stores without the suite columns, or with them NULL, read as be
     const std::string none = tampered(dir, store, "none",
                                       "UPDATE campaign SET precisions = NULL; UPDATE runs SET target_hits = NULL; "
                                       "UPDATE problems SET function = NULL, instance = NULL, suite = NULL, fid = NULL");
-    const auto n = pride::report::read_store(none);
+    const auto n = pride::storage::read_store(none);
     CHECK(!n.precisions);
     CHECK((*n.problems)[0].instance == 0);
     CHECK(!pride::report::load_report(none).coco);
@@ -380,7 +380,7 @@ TEST_CASE("coco: stores without the suite columns, or with them NULL, read as be
     CHECK(run_pride("report " + quote(empty)).out.find("Expected running time") == std::string::npos);
     const std::string no_precisions = tampered(
         dir, store, "no-precisions", "UPDATE campaign SET precisions = '[]'; UPDATE runs SET target_hits = '[]'");
-    CHECK(pride::report::read_store(no_precisions).precisions->empty());
+    CHECK(pride::storage::read_store(no_precisions).precisions->empty());
     CHECK(!pride::report::load_report(no_precisions).coco);
     // Hits [] in a campaign with precisions: the runs are left out of the analysis.
     const std::string some = tampered(dir, store, "some", "UPDATE runs SET target_hits = '[]' WHERE algorithm = 'b'");
@@ -390,7 +390,7 @@ TEST_CASE("coco: stores without the suite columns, or with them NULL, read as be
     CHECK(a->erts.size() == 3);
     // Precisions but no run with hits (pride bench on grids, no known optimum): no ERT section.
     const std::string grids = tampered(dir, store, "grids", "UPDATE runs SET target_hits = '[]'");
-    CHECK(pride::report::read_store(grids).precisions);
+    CHECK(pride::storage::read_store(grids).precisions);
     CHECK(!pride::report::load_report(grids).coco);
     CHECK(run_pride("report " + quote(grids)).out.find("Expected running time") == std::string::npos);
 }
@@ -455,14 +455,14 @@ TEST_CASE("coco: damaged suite columns are bad input naming the run and the colu
     for (const Case& c : cases) {
         INFO(c.name);
         const std::string path = tampered(dir, store, c.name, c.sql);
-        CHECK(pride::test::input_error_message([&] { pride::report::read_store(path); }) ==
+        CHECK(pride::test::input_error_message([&] { pride::storage::read_store(path); }) ==
               path + ": damaged store: " + c.message);
         check_input_error(run_pride("report " + quote(path)), {path + ": damaged store: " + c.message});
         const std::string out = dir.file(c.name + "-ioh");
         check_input_error(run_pride("export " + quote(path) + " --ioh " + quote(out)), {c.message});
         CHECK(!std::filesystem::exists(out));
     }
-    CHECK_THROWS_AS(pride::report::read_store(dir.file("hits-short.sqlite")), pride::report::DamagedStore);
+    CHECK_THROWS_AS(pride::storage::read_store(dir.file("hits-short.sqlite")), pride::storage::DamagedStore);
     // Without the problems table (as before it existed) the store is reported, with no analysis.
     const std::string no_problems = tampered(dir, store, "no-problems", "DROP TABLE problems");
     CHECK(!pride::report::load_report(no_problems).coco);
@@ -543,7 +543,7 @@ TEST_CASE("coco: a store written by pride bench, read back and checked against i
     const auto bench = run_pride("bench " + quote(config) + " --jobs 2 --out " + quote(store));
     INFO(bench.out << bench.err);
     REQUIRE(bench.status == 0);
-    const auto s = pride::report::read_store(store);
+    const auto s = pride::storage::read_store(store);
     REQUIRE(s.precisions);
     // COCO's 51 targets 10^2, 10^1.8, ..., 10^-8 (every fifth a power of ten, exactly).
     REQUIRE(s.precisions->size() == 51);
@@ -630,7 +630,7 @@ TEST_CASE("coco: a bbob [[suite]] campaign from pride bench to tables, figures a
     const auto bench = run_pride("bench " + quote(config) + " --jobs 2 --out " + quote(store));
     INFO(bench.out << bench.err);
     REQUIRE(bench.status == 0);
-    const auto s = pride::report::read_store(store);
+    const auto s = pride::storage::read_store(store);
     REQUIRE(s.problems->size() == 4);
     for (const auto& p : *s.problems) {
         CHECK(p.suite == "bbob");

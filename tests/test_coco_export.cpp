@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/coco_trace.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/sqlite_support.hpp"
@@ -114,8 +114,8 @@ TEST_CASE("export --coco: COCO's bbob files from a campaign, equal to the stored
     CHECK(r.out == "32 runs of 2 algorithms written as COCO data (20 files) under " + (dir / "coco").string() +
                        "\n4 runs on problems outside the bbob suite not written (not COCO's data)\n");
 
-    const auto s = pride::report::read_store(store);
-    std::map<std::string, const pride::report::StoredProblem*> problems;
+    const auto s = pride::storage::read_store(store);
+    std::map<std::string, const pride::storage::StoredProblem*> problems;
     for (const auto& p : *s.problems) problems[p.id] = &p;
     for (const char* algorithm : {"pso", "ga"}) {
         for (const int fid : {1, 15}) {
@@ -140,7 +140,7 @@ TEST_CASE("export --coco: COCO's bbob files from a campaign, equal to the stored
                     for (const int seed : {1, 2}) {
                         const std::string id = "bbob-f" + std::to_string(fid) + "-i" + std::to_string(instance) + "-d" +
                                                std::to_string(dim);
-                        const pride::report::StoredRun* run = nullptr;
+                        const pride::storage::StoredRun* run = nullptr;
                         for (const auto& x : s.runs)
                             if (x.problem == id && x.algorithm == algorithm && x.seed == seed) run = &x;
                         REQUIRE(run);

@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "experiment/file_name.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/file_name.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/output_files.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/sqlite_support.hpp"
@@ -408,7 +408,7 @@ TEST_CASE("outputs: problem ids x/y and x_y get figures of their own", "[outputs
         "UPDATE problems SET id = 'x/y' WHERE id = 'sphere'; UPDATE runs SET problem = 'x/y' WHERE problem = "
         "'sphere'; UPDATE problems SET id = 'x_y' WHERE id = 'grid'; UPDATE runs SET problem = 'x_y' WHERE problem "
         "= 'grid'");
-    const auto names = pride::engine::unique_file_names({"x/y", "x_y"});
+    const auto names = pride::storage::unique_file_names({"x/y", "x_y"});
     REQUIRE(names.at("x_y") == "x_y");
     REQUIRE(names.at("x/y") != "x_y");
     {
@@ -595,8 +595,8 @@ TEST_CASE("outputs: read_only_uri escapes the name and says mode=ro where the fo
     const std::string made = small_store(dir, "s", 3);
     const std::string odd = dir.file("x?y#z%w.sqlite");
     fs::copy_file(made, odd);
-    const std::string uri = pride::report::read_only_uri(odd);
+    const std::string uri = pride::storage::read_only_uri(odd);
     CHECK(uri.rfind("file:///", 0) == 0);
     CHECK(uri.find("x%3Fy%23z%25w.sqlite?mode=ro") != std::string::npos);
-    CHECK(pride::report::read_store(odd).runs.size() == pride::report::read_store(made).runs.size());
+    CHECK(pride::storage::read_store(odd).runs.size() == pride::storage::read_store(made).runs.size());
 }

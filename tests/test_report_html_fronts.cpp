@@ -17,7 +17,7 @@
 #include "experiment/campaign/toml.hpp"
 #include "experiment/html/front_figures.hpp"
 #include "experiment/html/page_store.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/pareto/attainment.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/json_reader.hpp"
@@ -128,7 +128,7 @@ TEST_CASE("report --html: attainment surfaces, median fronts and grid paths of m
 
     // What the page draws is attainment.hpp's surfaces of the stored fronts, and the median run's
     // front (by hypervolume ratio) with its seed named; the reference front is the campaign's.
-    const report::CampaignStore s = report::read_store(store);
+    const storage::CampaignStore s = storage::read_store(store);
     const html::PageStore extra = html::read_page_store(store);
     const campaign::Campaign campaign = campaign::read_campaign(config);
     for (const std::string problem : {"zdt1", "grid", "dtlz2"}) {

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "experiment/report/report.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 
@@ -321,8 +321,8 @@ TEST_CASE("report, export: a damaged store is bad input, one line naming what an
     // The untouched store is fine, and the library throws a DamagedStore (an InputError).
     CHECK(run_pride("report " + quote(store)).status == 0);
     const std::string bad = dir.file("history-x.sqlite");
-    CHECK_THROWS_AS(pride::report::load_report(bad), pride::report::DamagedStore);
-    CHECK(pride::test::input_error_message([&] { pride::report::read_store(bad); }) ==
+    CHECK_THROWS_AS(pride::report::load_report(bad), pride::storage::DamagedStore);
+    CHECK(pride::test::input_error_message([&] { pride::storage::read_store(bad); }) ==
           bad + ": damaged store: " + row +
               ", column history: expected a JSON list of numbers, got '[1, x]' (wrong at character 5)");
 }

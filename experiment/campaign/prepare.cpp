@@ -11,7 +11,7 @@
 #include "engine/json.hpp"
 #include "experiment/campaign/identity.hpp"
 #include "experiment/campaign/run_one.hpp"
-#include "experiment/file_name.hpp"
+#include "experiment/storage/file_name.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/suites.hpp"
@@ -22,7 +22,7 @@ using engine::check;
 using engine::check_grid_names;
 using engine::check_quality;
 using engine::ContinuousSpec;
-using engine::file_name;
+using storage::file_name;
 using engine::GridSpec;
 using engine::load_map;
 using engine::max_budget;

@@ -113,7 +113,7 @@ ProblemFronts problem_fronts(const PageStore& extra, const std::string& problem)
     return out;
 }
 
-engine::MoProblem stored_problem(const report::CampaignStore& s, const PageStore& extra, const std::string& problem,
+engine::MoProblem stored_problem(const storage::CampaignStore& s, const PageStore& extra, const std::string& problem,
                                  const std::vector<std::string>& objectives) {
     const auto grid =
         std::find_if(extra.grids.begin(), extra.grids.end(), [&](const GridProblemInfo& g) { return g.id == problem; });
@@ -131,14 +131,14 @@ engine::MoProblem stored_problem(const report::CampaignStore& s, const PageStore
     }
     require(s.problems.has_value(), "problem", "the store is from before problems were stored");
     const auto p = std::find_if(s.problems->begin(), s.problems->end(),
-                                [&](const report::StoredProblem& q) { return q.id == problem; });
+                                [&](const storage::StoredProblem& q) { return q.id == problem; });
     require(p != s.problems->end() && p->function && engine::is_multiobjective_problem(*p->function), "problem",
             "the store does not name it as a problem of the multi-objective catalog");
     return engine::MoProblem(
         engine::MoBenchmarkSpec{*p->function, p->dim, static_cast<std::int64_t>(objectives.size())});
 }
 
-void front_figures(Page& page, const report::CampaignStore& s, const PageStore& extra, const std::string& problem) {
+void front_figures(Page& page, const storage::CampaignStore& s, const PageStore& extra, const std::string& problem) {
     const ProblemFronts fronts = problem_fronts(extra, problem);
     for (const auto& note : fronts.notes) page.notes += "<p class=\"note\">" + escape(note) + "</p>\n";
     if (fronts.algorithms.empty()) {
@@ -246,7 +246,7 @@ void front_figures(Page& page, const report::CampaignStore& s, const PageStore& 
             labels.push_back(point_words(names, r.f, j) + (r.legal[static_cast<std::size_t>(j)] ? "" : " (illegal)"));
         // One file per (problem, algorithm); numbered in the rare case two pairs share a name.
         std::string file = page.file("front-paths", problem);
-        file = file.substr(0, file.size() - 4) + "-" + engine::file_name(a.algorithm);
+        file = file.substr(0, file.size() - 4) + "-" + storage::file_name(a.algorithm);
         std::string name = file + ".svg";
         for (int n = 2; used.count(name); ++n) name = fmt::format("{}-{}.svg", file, n);
         used.insert(name);

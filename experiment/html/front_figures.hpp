@@ -11,7 +11,7 @@
 
 #include "engine/multiobjective.hpp"
 #include "experiment/html/page_store.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/problem.hpp"
 
 namespace pride::html {
@@ -50,10 +50,10 @@ ProblemFronts problem_fronts(const PageStore& extra, const std::string& problem)
 /// dimension, or its grid's map, start, goal and corner cutting; `objectives` as its runs name
 /// them), for its reference front. InputError saying why when it cannot be (a store from before
 /// problems were stored, a map given in code or gone).
-engine::MoProblem stored_problem(const report::CampaignStore& s, const PageStore& extra, const std::string& problem,
+engine::MoProblem stored_problem(const storage::CampaignStore& s, const PageStore& extra, const std::string& problem,
                                  const std::vector<std::string>& objectives);
 
 /// Adds the figures of `problem` to the page, and notes under them for what cannot be drawn.
-void front_figures(Page& page, const report::CampaignStore& s, const PageStore& extra, const std::string& problem);
+void front_figures(Page& page, const storage::CampaignStore& s, const PageStore& extra, const std::string& problem);
 
 }  // namespace pride::html

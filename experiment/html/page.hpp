@@ -13,10 +13,10 @@
 #include <fmt/format.h>
 
 #include "engine/specs.hpp"
-#include "experiment/file_name.hpp"
 #include "experiment/html/colour.hpp"
 #include "experiment/html/figure.hpp"
 #include "experiment/html/page_store.hpp"
+#include "experiment/storage/file_name.hpp"
 #include "framework/error.hpp"
 #include "framework/output_files.hpp"
 #include "problems/grid/map.hpp"
@@ -69,7 +69,7 @@ struct Page {
     /// The figure file of a problem (or an ECDF group): "x/y" and "x_y" get files of their own.
     std::string file(const std::string& kind, const std::string& id) const {
         const auto it = names.find(id);
-        return kind + "-" + (it != names.end() ? it->second : engine::file_name(id)) + ".svg";
+        return kind + "-" + (it != names.end() ? it->second : storage::file_name(id)) + ".svg";
     }
     OutputFiles::File& create(const std::string& name) { return files->create(folder / name); }
     /// Writes the figure and puts it on the page with its caption (HTML).

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/error.hpp"
 
 namespace pride::html {
@@ -15,7 +15,7 @@ namespace {
 
 class Reader {
   public:
-    explicit Reader(const std::string& path) : path_(path), db_(report::open_read_only(path)) {}
+    explicit Reader(const std::string& path) : path_(path), db_(storage::open_read_only(path)) {}
     ~Reader() { sqlite3_close(db_); }
     Reader(const Reader&) = delete;
     Reader& operator=(const Reader&) = delete;
@@ -50,7 +50,7 @@ class Reader {
 
     [[noreturn]] void fail(const std::string& where) const {
         const std::string why = sqlite3_errmsg(db_);
-        if (!where.empty()) throw report::DamagedStore(path_, where + ": " + why);
+        if (!where.empty()) throw storage::DamagedStore(path_, where + ": " + why);
         throw InputError(path_ + ": cannot read the store (" + why + ")");
     }
     bool has_table(const std::string& table) const {
@@ -72,7 +72,7 @@ grid::Cell parse_cell(const std::string& text, const std::string& store, const s
     static const std::regex cell(R"((-?\d{1,9}),(-?\d{1,9}))");
     std::smatch m;
     if (!std::regex_match(text, m, cell))
-        throw report::DamagedStore(store, where + ": expected x,y, got '" + text + "'");
+        throw storage::DamagedStore(store, where + ": expected x,y, got '" + text + "'");
     return {std::stoi(m[1].str()), std::stoi(m[2].str())};
 }
 
@@ -204,7 +204,7 @@ void for_each_pair(Reader& db, const std::string& json, const std::string& path,
         const double x = sqlite3_column_double(pairs.get(), 4), y = sqlite3_column_double(pairs.get(), 5);
         if (pairs.text(0) != "array" || sqlite3_column_int64(pairs.get(), 1) != 2 || !ok_type(pairs.text(2)) ||
             !ok_type(pairs.text(3)) || !(std::abs(x) <= 1e9 && std::abs(y) <= 1e9))
-            throw report::DamagedStore(path, where + ": expected a JSON list of [x, y] " + what);
+            throw storage::DamagedStore(path, where + ": expected a JSON list of [x, y] " + what);
         each(x, y);
     }
 }

@@ -1,5 +1,5 @@
 #pragma once
-// What the HTML report reads from a campaign store beyond report::read_store (which it reads
+// What the HTML report reads from a campaign store beyond storage::read_store (which it reads
 // first, so the store is known to be sound): the campaign file's text, where each grid problem's
 // map is, each algorithm's best path on it, and the fronts of multi-objective runs.
 #include <cstdint>
@@ -54,7 +54,7 @@ struct PageStore {
     std::vector<StoredFront> fronts;   // by problem, algorithm, seed
 };
 
-/// Reads them, read-only. InputError when the file cannot be read, report::DamagedStore when a
+/// Reads them, read-only. InputError when the file cannot be read, storage::DamagedStore when a
 /// value is not what pride bench writes (a solution that is not a list of [x, y] cells, a start
 /// that is not "x,y"). A front of the wrong form is kept with its `error` instead: the page says
 /// so under its problem's figures and draws the other runs.

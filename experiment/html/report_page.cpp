@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 
 #include "engine/specs.hpp"
-#include "experiment/file_name.hpp"
 #include "experiment/html/colour.hpp"
 #include "experiment/html/draw.hpp"
 #include "experiment/html/figure.hpp"
@@ -21,7 +20,8 @@
 #include "experiment/html/page_store.hpp"
 #include "experiment/html/provenance.hpp"
 #include "experiment/report/coco.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/file_name.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/error.hpp"
 #include "framework/output_files.hpp"
 #include "problems/grid/pareto.hpp"
@@ -33,7 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 using report::ReportData;
 using report::ReportRow;
-using report::StoredRun;
+using storage::StoredRun;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kFloor = 1e-12;                 // precisions at or below it are drawn at it on log axes
@@ -143,7 +143,7 @@ window.addEventListener("load", function () {
 });
 )js";
 
-std::string provenance_section(const std::string& store, const report::CampaignStore& s, const ReportData& data) {
+std::string provenance_section(const std::string& store, const storage::CampaignStore& s, const ReportData& data) {
     const Provenance p = provenance();
     std::string h = "<section id=\"provenance\"><h2>Provenance</h2>\n<table class=\"kv\">\n";
     const auto row = [&](const std::string& k, const std::string& v) {
@@ -437,7 +437,7 @@ void ert_section(Page& page, const ReportData& r) {
 /// in a grid of two columns where the window is wide enough; notes under them). A problem of
 /// several objectives: the final hypervolume gaps, then its fronts (front_figures.hpp).
 void problem_figures(Page& page, const std::string& problem, const std::vector<const StoredRun*>& runs,
-                     const ReportData& r, const report::CampaignStore& s, const PageStore& extra) {
+                     const ReportData& r, const storage::CampaignStore& s, const PageStore& extra) {
     // Its runs store fronts, and as their value the hypervolume gap; they record no convergence.
     const bool fronts = std::all_of(runs.begin(), runs.end(), [](const StoredRun* x) { return x->front; });
     std::optional<double> f_opt;
@@ -605,7 +605,7 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
 }
 
 void problem_section(Page& page, const std::string& problem, const std::vector<const StoredRun*>& runs,
-                     const ReportData& r, const report::CampaignStore& s, const PageStore& extra) {
+                     const ReportData& r, const storage::CampaignStore& s, const PageStore& extra) {
     page.html += fmt::format("<h3 id=\"problem-{}\">{}</h3>\n<div class=\"figures\">\n", escape(page.names.at(problem)),
                              escape(problem));
     page.notes.clear();
@@ -633,7 +633,7 @@ PageSummary write_report_page(const std::string& store, const std::string& dir, 
                               OutputFiles& files) {
     require(!dir.empty(), "html", "expected a folder, got ''");
     // Everything is read and checked before anything is written.
-    const report::CampaignStore s = report::read_store(store);
+    const storage::CampaignStore s = storage::read_store(store);
     require(!s.runs.empty(), store, "holds no runs yet (run pride bench first)");
     const ReportData data = report::make_report(s, options);
     const PageStore extra = read_page_store(store);
@@ -655,7 +655,7 @@ PageSummary write_report_page(const std::string& store, const std::string& dir, 
         for (const StoredRun& run : s.runs) by_problem[run.problem].push_back(&run);
         std::vector<std::string> problems;
         for (const auto& entry : by_problem) problems.push_back(entry.first);
-        page.names = engine::unique_file_names(problems);
+        page.names = storage::unique_file_names(problems);
 
         page.html = provenance_section(store, s, data);
         page.html +=

@@ -27,7 +27,7 @@ struct PageSummary {
 /// it exists, added to (files of the same names replaced); every file is written to a temporary
 /// name and all are renamed into place at the end, index.html last (framework/output_files.hpp),
 /// so that a failure leaves no half-written report. Figures are named after problems by
-/// engine::unique_file_names: ids such as "x/y" and "x_y" get files of their own. Errors are
+/// storage::unique_file_names: ids such as "x/y" and "x_y" get files of their own. Errors are
 /// InputError: the store's own (read_store), and InputError("html", ...) naming the folder or
 /// file that cannot be written.
 PageSummary write_report_page(const std::string& store, const std::string& dir,

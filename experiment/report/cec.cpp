@@ -23,13 +23,13 @@ using continuous::cec::checkpoints;
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-std::string run_name(const StoredRun& r) {
+std::string run_name(const storage::StoredRun& r) {
     return fmt::format("run (problem '{}', algorithm '{}', seed {})", r.problem, r.algorithm, r.seed);
 }
 
 /// The best value so far of `run` after `evaluations`: its checkpoint there, or its final best
 /// value when it ended before.
-double best_after(const StoredRun& run, std::int64_t evaluations, const std::string& store) {
+double best_after(const storage::StoredRun& run, std::int64_t evaluations, const std::string& store) {
     if (evaluations > run.evaluations) return run.best.value_or(inf);
     const auto it = std::find_if(run.checkpoints.begin(), run.checkpoints.end(),
                                  [&](const TracePoint& t) { return t.evaluations == evaluations; });
@@ -57,21 +57,21 @@ double error_of(double f, double f_opt) {
     return e < zero_below ? 0.0 : e;
 }
 
-Table make_table(const CampaignStore& store, const std::string& name) {
+Table make_table(const storage::CampaignStore& store, const std::string& name) {
     Table table;
     table.campaign = store.name;
     require(store.problems.has_value(), name,
             "has no problems table (a store from before it): the CEC table needs each problem's f* and dimension");
     std::map<std::string, std::size_t> order;  // the campaign's order of problems
-    std::map<std::string, const StoredProblem*> problems;
-    for (const StoredProblem& p : *store.problems) {
+    std::map<std::string, const storage::StoredProblem*> problems;
+    for (const storage::StoredProblem& p : *store.problems) {
         order.emplace(p.id, order.size());
         problems[p.id] = &p;
     }
     // Runs by (problem in the campaign's order, algorithm); read_store orders runs by seed within.
-    std::map<std::pair<std::size_t, std::string>, std::vector<const StoredRun*>> cells;
+    std::map<std::pair<std::size_t, std::string>, std::vector<const storage::StoredRun*>> cells;
     std::set<std::string> left_out;
-    for (const StoredRun& r : store.runs) {
+    for (const storage::StoredRun& r : store.runs) {
         const auto it = problems.find(r.problem);
         if (it == problems.end() || !it->second->f_opt) {
             left_out.insert(r.problem);
@@ -83,8 +83,8 @@ Table make_table(const CampaignStore& store, const std::string& name) {
             "holds no run on a problem with a known optimum f*, so it has no CEC errors (report it with --format "
             "md)");
     for (const auto& [key, runs] : cells) {
-        const StoredRun& first = *runs.front();
-        const StoredProblem& p = *problems.at(first.problem);
+        const storage::StoredRun& first = *runs.front();
+        const storage::StoredProblem& p = *problems.at(first.problem);
         Row row;
         row.problem = p.id;
         row.algorithm = first.algorithm;
@@ -93,7 +93,7 @@ Table make_table(const CampaignStore& store, const std::string& name) {
         row.dim = p.dim;
         row.f_opt = *p.f_opt;
         row.runs = runs.size();
-        for (const StoredRun* r : runs) {
+        for (const storage::StoredRun* r : runs) {
             require(r->max_evaluations.has_value(), name,
                     fmt::format("{} records no evaluation budget (MaxFES): it ran under an iteration budget alone, "
                                 "or was stored before pride recorded budgets and checkpoints (store schema 4); the "
@@ -107,7 +107,8 @@ Table make_table(const CampaignStore& store, const std::string& name) {
         row.max_evaluations = *first.max_evaluations;
         for (const Checkpoint& c : checkpoints(row.suite, row.max_evaluations, row.dim)) {
             std::vector<double> errors;
-            for (const StoredRun* r : runs) errors.push_back(error_of(best_after(*r, c.evaluations, name), row.f_opt));
+            for (const storage::StoredRun* r : runs)
+                errors.push_back(error_of(best_after(*r, c.evaluations, name), row.f_opt));
             row.checkpoints.push_back({c, statistics(errors)});
         }
         table.rows.push_back(std::move(row));

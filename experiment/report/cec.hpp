@@ -41,7 +41,7 @@
 #include <string_view>
 #include <vector>
 
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 #include "problems/continuous/cec/suites.hpp"
 
 namespace pride::report::cec {
@@ -88,7 +88,7 @@ struct Table {
 /// when no run is on such a problem, and naming the run when one has no evaluation budget or was
 /// stored without its checkpoints (before store schema 4), or when the runs of one (problem,
 /// algorithm) had different budgets.
-Table make_table(const CampaignStore& store, const std::string& name);
+Table make_table(const storage::CampaignStore& store, const std::string& name);
 
 /// A heading, what the numbers are, the errors at MaxFES as one table (the reports' "Results"
 /// tables), then one table per problem and algorithm with every checkpoint; 6 significant digits.

@@ -94,7 +94,7 @@ std::string bbob_group_title(const std::string& group) {
 
 namespace {
 /// The ECDF groups a problem's pairs count in: "all", and its BBOB function group.
-std::vector<std::string> groups_of(const StoredProblem& p) {
+std::vector<std::string> groups_of(const storage::StoredProblem& p) {
     std::vector<std::string> in{"all"};
     if (p.suite == "bbob" && p.fid)
         if (const auto g = bbob_group(*p.fid)) in.push_back(*g);
@@ -102,19 +102,19 @@ std::vector<std::string> groups_of(const StoredProblem& p) {
 }
 }  // namespace
 
-std::optional<Analysis> analyse(const CampaignStore& store) {
+std::optional<Analysis> analyse(const storage::CampaignStore& store) {
     if (!store.precisions || store.precisions->empty() || !store.problems) return std::nullopt;
     Analysis a;
     a.precisions = *store.precisions;
     const std::size_t n = a.precisions.size();
-    std::map<std::string, const StoredProblem*> problems;
+    std::map<std::string, const storage::StoredProblem*> problems;
     if (store.problems)
-        for (const StoredProblem& p : *store.problems) problems[p.id] = &p;
+        for (const storage::StoredProblem& p : *store.problems) problems[p.id] = &p;
 
     // (fid or none, function, dim, algorithm) -> the runs, per precision; and their instances.
     using Key = std::tuple<std::int64_t, std::string, std::int64_t, std::string>;
     struct Cell {
-        const StoredProblem* problem = nullptr;
+        const storage::StoredProblem* problem = nullptr;
         std::string function;
         std::vector<std::vector<TargetRun>> per_precision;
         std::set<std::pair<std::string, std::int64_t>> instances;  // (problem id, instance)
@@ -123,14 +123,14 @@ std::optional<Analysis> analyse(const CampaignStore& store) {
     std::map<Key, Cell> cells;
     // group -> algorithm -> (pairs, dims)
     std::map<std::string, std::map<std::string, std::pair<std::vector<TargetRun>, std::set<std::int64_t>>>> groups;
-    for (const StoredRun& r : store.runs) {
+    for (const storage::StoredRun& r : store.runs) {
         if (r.target_hits.empty()) {
             ++a.runs_without_hits;
             continue;
         }
         const auto it = problems.find(r.problem);
         if (it == problems.end()) continue;  // read_store refuses such runs when precisions are recorded
-        const StoredProblem& p = *it->second;
+        const storage::StoredProblem& p = *it->second;
         // Instances are pooled only within one family: BBOB's (all >= 1), or a function's seeded
         // instances k >= 1 (shifted and rotated alike); instance 0, the function as defined (its
         // optimum often at the origin), is a problem of its own.

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 
 namespace pride::report::coco {
 
@@ -107,7 +107,7 @@ struct Analysis {
 /// []), when the store has no problems table, or when no run records hits (pride bench records
 /// none for problems without a known optimum, grids). Runs without recorded hits are left out
 /// (and counted).
-std::optional<Analysis> analyse(const CampaignStore& store);
+std::optional<Analysis> analyse(const storage::CampaignStore& store);
 
 /// The ECDF curves as JSON for scripts/plot_ecdf.py:
 /// {"campaign": ..., "precisions": [...], "groups": [{"group", "title", "dims": [...],

@@ -11,8 +11,8 @@
 #include <tuple>
 #include <vector>
 
-#include "experiment/file_name.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/file_name.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/error.hpp"
 #include "framework/output_files.hpp"
 
@@ -41,7 +41,8 @@ std::string line(std::int64_t evaluations, double best, double f_opt) {
 
 /// A run's block: its header, the trace's lines, and (logger_bbob_free) a last line at the run's
 /// last evaluation when the trace's last line is not there.
-void write_block(OutputFiles::File& out, const std::vector<TracePoint>& trace, const StoredRun& r, double f_opt) {
+void write_block(OutputFiles::File& out, const std::vector<TracePoint>& trace, const storage::StoredRun& r,
+                 double f_opt) {
     std::string block = fmt::format(kHeader, f_opt);
     for (const auto& t : trace) block += line(t.evaluations, t.best, f_opt);
     const double best = r.best.value_or(INFINITY);
@@ -51,7 +52,7 @@ void write_block(OutputFiles::File& out, const std::vector<TracePoint>& trace, c
 
 struct Run {
     std::int64_t instance = 0, seed = 0;
-    const StoredRun* run = nullptr;
+    const storage::StoredRun* run = nullptr;
     double f_opt = 0;
 };
 
@@ -66,18 +67,18 @@ CocoExportSummary export_coco(const std::string& store_path, const std::string& 
 
 CocoExportSummary export_coco(const std::string& store_path, const std::string& folder, OutputFiles& files) {
     require(!folder.empty(), "COCO export", "name the folder to write");
-    const CampaignStore store = read_store(store_path);
-    if (!store.problems) throw DamagedStore(store_path, "it has no table problems");
-    std::map<std::string, const StoredProblem*> problems;
+    const storage::CampaignStore store = storage::read_store(store_path);
+    if (!store.problems) throw storage::DamagedStore(store_path, "it has no table problems");
+    std::map<std::string, const storage::StoredProblem*> problems;
     for (const auto& p : *store.problems) problems[p.id] = &p;
 
     // algorithm -> fid -> dim -> runs, by instance then seed (the order of the .info line).
     std::map<std::string, std::map<std::int64_t, std::map<std::int64_t, std::vector<Run>>>> runs;
     CocoExportSummary summary;
     summary.folder = folder;
-    for (const StoredRun& r : store.runs) {
+    for (const storage::StoredRun& r : store.runs) {
         const auto it = problems.find(r.problem);
-        const StoredProblem* p = it == problems.end() ? nullptr : it->second;
+        const storage::StoredProblem* p = it == problems.end() ? nullptr : it->second;
         if (!p || !p->suite || *p->suite != "bbob" || !p->fid || !p->f_opt || p->instance < 1) {
             ++summary.skipped;
             continue;
@@ -93,7 +94,7 @@ CocoExportSummary export_coco(const std::string& store_path, const std::string& 
 
     std::vector<std::string> ids;
     for (const auto& entry : runs) ids.push_back(entry.first);
-    const auto folders = engine::unique_file_names(ids);
+    const auto folders = storage::unique_file_names(ids);
     summary.algorithms = runs.size();
     files.output_folder(folder);
     for (auto& [algorithm, by_fid] : runs) {

@@ -11,8 +11,8 @@
 #include <tuple>
 #include <vector>
 
-#include "experiment/file_name.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/file_name.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/error.hpp"
 #include "framework/output_files.hpp"
 
@@ -60,7 +60,7 @@ struct Function {
     std::string name, suite;
     bool in_suite = false;  // runs named by instance (IOH) rather than by seed
     // dim -> the runs, each with the instance it names
-    std::map<std::int64_t, std::vector<std::pair<std::int64_t, const StoredRun*>>> runs;
+    std::map<std::int64_t, std::vector<std::pair<std::int64_t, const storage::StoredRun*>>> runs;
 };
 
 }  // namespace
@@ -74,19 +74,19 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
 
 ExportSummary export_ioh(const std::string& store_path, const std::string& folder, OutputFiles& files) {
     require(!folder.empty(), "IOH export", "name the folder to write");
-    const CampaignStore store = read_store(store_path);
+    const storage::CampaignStore store = storage::read_store(store_path);
     // The function ids and dimensions are in this table only.
-    if (!store.problems) throw DamagedStore(store_path, "it has no table problems");
+    if (!store.problems) throw storage::DamagedStore(store_path, "it has no table problems");
     require(!store.runs.empty(), store_path, "holds no runs yet (run pride bench first)");
-    std::map<std::string, std::map<std::string, std::vector<const StoredRun*>>> runs;  // algorithm -> problem
-    for (const StoredRun& r : store.runs) runs[r.algorithm][r.problem].push_back(&r);
+    std::map<std::string, std::map<std::string, std::vector<const storage::StoredRun*>>> runs;  // algorithm -> problem
+    for (const storage::StoredRun& r : store.runs) runs[r.algorithm][r.problem].push_back(&r);
 
     ExportSummary summary;
     summary.folder = folder;
     summary.algorithms = runs.size();
     std::vector<std::string> ids;
     for (const auto& entry : runs) ids.push_back(entry.first);
-    const auto folders = engine::unique_file_names(ids);
+    const auto folders = storage::unique_file_names(ids);
     files.output_folder(folder);
     for (const auto& [algorithm, by_problem] : runs) {
         // Suite problems (a suite and a fid, e.g. bbob) as IOHexperimenter writes them: one
@@ -95,7 +95,7 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
         // their place in the campaign as function id, one function per problem, runs by seed.
         std::map<std::tuple<int, std::int64_t, std::string>, Function> functions;
         for (std::size_t f = 0; f < store.problems->size(); ++f) {
-            const StoredProblem& p = (*store.problems)[f];
+            const storage::StoredProblem& p = (*store.problems)[f];
             const auto it = by_problem.find(p.id);
             if (it == by_problem.end()) continue;
             const bool in_suite = p.suite && p.fid;
@@ -110,12 +110,13 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
             fn.in_suite = in_suite;
             // IOHexperimenter's name of the BBOB suite; problems outside a suite are pride's.
             fn.suite = !in_suite ? "pride" : *p.suite == "bbob" ? "BBOB" : *p.suite;
-            for (const StoredRun* r : it->second) fn.runs[p.dim].emplace_back(in_suite ? p.instance : r->seed, r);
+            for (const storage::StoredRun* r : it->second)
+                fn.runs[p.dim].emplace_back(in_suite ? p.instance : r->seed, r);
         }
         const std::filesystem::path dir = std::filesystem::path(folder) / folders.at(algorithm);
         files.make_folder(dir);
         for (const auto& [key, fn] : functions) {
-            const std::string stem = fmt::format("f{}_{}", fn.id, engine::file_name(fn.name));
+            const std::string stem = fmt::format("f{}_{}", fn.id, storage::file_name(fn.name));
             const std::string data_folder = "data_" + stem;
             files.make_folder(dir / data_folder);
             std::string info;

@@ -33,7 +33,7 @@ struct Cell {                  // one (problem, algorithm): its runs
 };
 
 /// The evaluations at which a run's best value first reached `target` (from its history).
-std::optional<double> evaluations_to(double target, const StoredRun& run) {
+std::optional<double> evaluations_to(double target, const storage::StoredRun& run) {
     for (std::size_t k = 0; k < run.history.size() && k < run.history_evaluations.size(); ++k)
         if (run.history[k] <= target) return static_cast<double>(run.history_evaluations[k]);
     return std::nullopt;
@@ -276,7 +276,7 @@ std::string render_ert(const coco::Analysis& a, bool md) {
 /// Comparisons are made at equal evaluations: the notes of one problem when its compared
 /// algorithms' mean evaluation counts lie more than 5 % apart, and the whole-map planners exempt.
 template <class Cells>
-void equal_evaluations_note(ReportData& report, const CampaignStore& store, const std::string& problem,
+void equal_evaluations_note(ReportData& report, const storage::CampaignStore& store, const std::string& problem,
                             const Cells& by_algorithm) {
     std::vector<std::string> exempt;
     std::vector<std::pair<std::string, double>> counted;
@@ -309,7 +309,7 @@ void equal_evaluations_note(ReportData& report, const CampaignStore& store, cons
     }
 }
 
-ReportData make_report(const CampaignStore& store, const ReportOptions& options) {
+ReportData make_report(const storage::CampaignStore& store, const ReportOptions& options) {
     ReportData report;
     report.campaign = store.name;
     report.target = store.target;
@@ -318,11 +318,11 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
     report.coco = coco::analyse(store);
     std::map<std::string, std::optional<double>> f_opt;  // continuous problems with a known optimum
     if (store.problems)
-        for (const StoredProblem& p : *store.problems)
+        for (const storage::StoredProblem& p : *store.problems)
             if (p.f_opt && std::isfinite(*p.f_opt)) f_opt[p.id] = p.f_opt;
     const bool has_target = store.target || store.target_precision;
     std::map<std::string, std::map<std::string, Cell>> cells;
-    for (const StoredRun& run : store.runs) {
+    for (const storage::StoredRun& run : store.runs) {
         Cell& c = cells[run.problem][run.algorithm];
         const auto optimum = f_opt.count(run.problem) ? f_opt.at(run.problem) : std::nullopt;
         // f - f_opt: exact for the values near f_opt that precisions are about (Sterbenz).
@@ -432,8 +432,8 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
             stats::critical_difference(report.friedman->test.average_ranks, cells.size(), 0.05);
     }
     std::set<std::string> fronts;
-    std::map<std::string, std::map<std::string, std::vector<const StoredRun*>>> by_front;
-    for (const StoredRun& run : store.runs)
+    std::map<std::string, std::map<std::string, std::vector<const storage::StoredRun*>>> by_front;
+    for (const storage::StoredRun& run : store.runs)
         if (run.front && run.igd_plus) {
             fronts.insert(run.problem);
             by_front[run.problem][run.algorithm].push_back(&run);
@@ -447,7 +447,7 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
             r.algorithm = algorithm;
             r.runs = runs.size();
             std::vector<double> ratio, found;
-            for (const StoredRun* run : runs) {
+            for (const storage::StoredRun* run : runs) {
                 ratio.push_back(1.0 - run->best.value_or(1.0));
                 igd[algorithm].push_back(*run->igd_plus);
                 if (run->exact_found) found.push_back(static_cast<double>(*run->exact_found));
@@ -470,13 +470,13 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
         report.fronts.insert(report.fronts.end(), rows.begin(), rows.end());
     }
     // Every grid path scored alike (runs.path_metrics): the planners compared on what they found.
-    std::map<std::string, std::map<std::string, std::vector<const StoredRun*>>> by_path;
-    for (const StoredRun& run : store.runs)
+    std::map<std::string, std::map<std::string, std::vector<const storage::StoredRun*>>> by_path;
+    for (const storage::StoredRun& run : store.runs)
         if (!run.front) by_path[run.problem][run.algorithm].push_back(&run);
     for (const auto& [problem, by_algorithm] : by_path) {
         const bool recorded = std::any_of(by_algorithm.begin(), by_algorithm.end(), [](const auto& a) {
             return std::any_of(a.second.begin(), a.second.end(),
-                               [](const StoredRun* r) { return !r->path_metrics.empty(); });
+                               [](const storage::StoredRun* r) { return !r->path_metrics.empty(); });
         });
         if (!recorded) continue;
         for (const auto& [algorithm, runs] : by_algorithm) {
@@ -484,9 +484,9 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
             r.problem = problem;
             r.algorithm = algorithm;
             r.runs = runs.size();
-            std::vector<std::vector<double>> values(std::size(kPathMetricNames));
+            std::vector<std::vector<double>> values(std::size(storage::kPathMetricNames));
             std::vector<double> wall;
-            for (const StoredRun* run : runs) {
+            for (const storage::StoredRun* run : runs) {
                 wall.push_back(run->wall_ms);
                 if (run->best) ++r.found;  // a path found (runs stored before path metrics too)
                 if (run->path_metrics.empty()) continue;
@@ -513,27 +513,27 @@ ReportData make_report(const CampaignStore& store, const ReportOptions& options)
 }
 
 ReportData load_report(const std::string& path, const ReportOptions& options) {
-    const CampaignStore store = read_store(path);
+    const storage::CampaignStore store = storage::read_store(path);
     require(!store.runs.empty(), path, "holds no runs yet (run pride bench first)");
     return make_report(store, options);
 }
 
-CampaignStore read_stores(const std::vector<std::string>& paths) {
+storage::CampaignStore read_stores(const std::vector<std::string>& paths) {
     require(!paths.empty(), "report", "give a store");
     if (paths.size() == 1) {
-        CampaignStore store = read_store(paths.front());
+        storage::CampaignStore store = storage::read_store(paths.front());
         require(!store.runs.empty(), paths.front(), "holds no runs yet (run pride bench first)");
         return store;
     }
-    CampaignStore all = read_store(paths.front());
-    std::map<std::string, StoredProblem> problems;
+    storage::CampaignStore all = storage::read_store(paths.front());
+    std::map<std::string, storage::StoredProblem> problems;
     if (all.problems)
         for (const auto& p : *all.problems) problems.emplace(p.id, p);
-    std::map<std::tuple<std::string, std::string, std::int64_t>, const StoredRun*> seen;
-    std::vector<CampaignStore> others;
-    for (std::size_t i = 1; i < paths.size(); ++i) others.push_back(read_store(paths[i]));
+    std::map<std::tuple<std::string, std::string, std::int64_t>, const storage::StoredRun*> seen;
+    std::vector<storage::CampaignStore> others;
+    for (std::size_t i = 1; i < paths.size(); ++i) others.push_back(storage::read_store(paths[i]));
     for (std::size_t i = 0; i < others.size(); ++i) {
-        const CampaignStore& s = others[i];
+        const storage::CampaignStore& s = others[i];
         const std::string& path = paths[i + 1];
         if (s.name != all.name && all.name.find(" + " + s.name) == std::string::npos) all.name += " + " + s.name;
         require(s.precisions == all.precisions, path,
@@ -543,7 +543,7 @@ CampaignStore read_stores(const std::vector<std::string>& paths) {
         if (s.problems)
             for (const auto& p : *s.problems) {
                 const auto [it, fresh] = problems.emplace(p.id, p);
-                const StoredProblem& q = it->second;
+                const storage::StoredProblem& q = it->second;
                 require(fresh || (q.dim == p.dim && q.function == p.function && q.instance == p.instance &&
                                   q.f_opt == p.f_opt),
                         path, "problem '" + p.id + "' is another problem in " + paths.front());
@@ -552,14 +552,14 @@ CampaignStore read_stores(const std::vector<std::string>& paths) {
         all.unreproducible_algorithms.insert(s.unreproducible_algorithms.begin(), s.unreproducible_algorithms.end());
     }
     // Runs: each once; a run in two stores must be the same run (its values, not its wall time).
-    std::vector<StoredRun> runs = std::move(all.runs);
+    std::vector<storage::StoredRun> runs = std::move(all.runs);
     for (auto& s : others)
         for (auto& r : s.runs) runs.push_back(std::move(r));
-    std::vector<StoredRun> kept;
-    for (const StoredRun& r : runs) {
+    std::vector<storage::StoredRun> kept;
+    for (const storage::StoredRun& r : runs) {
         const auto [it, fresh] = seen.emplace(std::make_tuple(r.problem, r.algorithm, r.seed), &r);
         if (fresh) continue;
-        const StoredRun& o = *it->second;
+        const storage::StoredRun& o = *it->second;
         if (all.unreproducible_algorithms.count(r.algorithm)) continue;  // the first store's run is kept
         require(o.best == r.best && o.evaluations == r.evaluations && o.history == r.history &&
                     o.history_evaluations == r.history_evaluations && o.target_hits == r.target_hits &&

@@ -11,7 +11,7 @@
 #include "experiment/report/coco.hpp"
 #include "experiment/report/critical_difference.hpp"
 #include "experiment/report/statistics.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 
 namespace pride::report {
 
@@ -98,14 +98,14 @@ struct ReportData {
 };
 
 /// The report of the runs of `store` (no rows when it holds none).
-ReportData make_report(const CampaignStore& store, const ReportOptions& options = {});
+ReportData make_report(const storage::CampaignStore& store, const ReportOptions& options = {});
 /// make_report(read_store(path)); InputError when the store holds no runs yet.
 ReportData load_report(const std::string& path, const ReportOptions& options = {});
 /// Several stores read as one (a campaign run in parts; one store: read_store): their runs
 /// together, a run found in several kept once when equal; InputError naming the stores when they
 /// cannot be read as one (other target precisions or report targets, a problem id of two
 /// definitions, a run that differs) or hold no runs.
-CampaignStore read_stores(const std::vector<std::string>& paths);
+storage::CampaignStore read_stores(const std::vector<std::string>& paths);
 /// The report of several stores read as one (a campaign run in parts): their runs together, a run
 /// found in several kept once when equal; InputError naming the stores when they cannot be read
 /// as one (other target precisions or report targets, a problem id of two definitions, a run

@@ -15,7 +15,7 @@
 #include "experiment/campaign/toml.hpp"
 #include "experiment/html/report_page.hpp"
 #include "experiment/report/report.hpp"
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 
 namespace pride::python {
 
@@ -316,10 +316,10 @@ py::object optional_number(const std::optional<double>& v) {
 
 py::dict read_store(const py::object& store) {
     const std::string path = path_arg(store, "path");
-    report::CampaignStore s;
+    storage::CampaignStore s;
     {
         py::gil_scoped_release release;
-        s = report::read_store(path);
+        s = storage::read_store(path);
     }
     // A COCO trace as an (n, 2) array of rows (evaluations, best so far).
     const auto trace_array = [](const std::vector<TracePoint>& t) {

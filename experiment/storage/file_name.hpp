@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace pride::engine {
+namespace pride::storage {
 
 inline std::string file_name(const std::string& id) {
     std::string s = id.empty() ? std::string("_") : id;
@@ -53,4 +53,4 @@ inline std::map<std::string, std::string> unique_file_names(const std::vector<st
     return out;
 }
 
-}  // namespace pride::engine
+}  // namespace pride::storage

@@ -1,4 +1,4 @@
-#include "experiment/report/store.hpp"
+#include "experiment/storage/reader.hpp"
 
 #include <fmt/format.h>
 #include <sqlite3.h>
@@ -17,7 +17,7 @@
 
 #include "experiment/storage/schema.hpp"
 
-namespace pride::report {
+namespace pride::storage {
 namespace {
 
 /// Text for a message: `text` quoted, or an excerpt around character `at` when it is long (a
@@ -578,4 +578,4 @@ void check_store(const std::string& path) {
     read_checked(path, false);
 }
 
-}  // namespace pride::report
+}  // namespace pride::storage

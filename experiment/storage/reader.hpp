@@ -3,7 +3,8 @@
 // every value the reports and exports use, typed. A store that cannot be used is bad input, never
 // an internal error: InputError "STORE: not a campaign store (...)" for a file that is none, and
 // DamagedStore "STORE: damaged store: WHERE: WHAT" for one whose tables, columns or values are not
-// what pride bench writes.
+// what pride bench writes. It lives beside the schema, not in report/, as the campaign and pride
+// merge check a store with it (check_store) before they trust one, and report/ reads with it.
 #include <cstdint>
 #include <optional>
 #include <set>
@@ -15,7 +16,7 @@
 
 struct sqlite3;
 
-namespace pride::report {
+namespace pride::storage {
 
 /// The SQLite URI that opens the store at `path` for reading without writing anything beside it:
 /// "file:PATH?mode=ro", or, where that cannot read it (a read-only folder or file system, where a
@@ -113,4 +114,4 @@ CampaignStore read_store(const std::string& path);
 /// read_store. An SQLite file without any table (a store being created) passes.
 void check_store(const std::string& path);
 
-}  // namespace pride::report
+}  // namespace pride::storage
