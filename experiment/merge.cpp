@@ -10,6 +10,7 @@
 #include <set>
 
 #include "experiment/campaign/identity.hpp"
+#include "experiment/storage/digest.hpp"
 #include "experiment/storage/reader.hpp"
 #include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"
@@ -174,7 +175,7 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
                                 "{}: problem '{}' {} in {}; stores whose runs are of different problems are not "
                                 "merged",
                                 in, text(other_content[0][0]),
-                                campaign::digest_difference(*other_content[0][2], *other_content[0][1]), inputs[0]));
+                                storage::digest_difference(*other_content[0][2], *other_content[0][1]), inputs[0]));
                     }
                     const auto cols = columns(db, "main", table);
                     db.exec(

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "engine/json.hpp"
+#include "engine/registry.hpp"
 #include "experiment/storage/digest.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/functions.hpp"
@@ -152,13 +153,6 @@ std::string settings_digest(const CampaignProblem& p) {
     return h.hex();
 }
 
-/// The part of a digest after "LABEL sha256:", or empty.
-std::string digest_part(const std::string& digest, const std::string& label) {
-    const std::string key = label + " sha256:";
-    const auto at = digest.find(key);
-    return at == std::string::npos ? std::string() : digest.substr(at + key.size(), 64);
-}
-
 }  // namespace
 
 std::string compose_digest(const std::string& map_hex, const CampaignProblem& p) {
@@ -168,23 +162,6 @@ std::string compose_digest(const std::string& map_hex, const CampaignProblem& p)
 std::string problem_digest(const CampaignProblem& p) {
     const auto* g = std::get_if<GridSpec>(&p.spec);
     return compose_digest(g && g->map ? map_digest(*g->map) : std::string(), p);
-}
-
-std::string digest_difference(const std::string& stored, const std::string& now) {
-    const auto shown = [](const std::string& hex) { return hex.empty() ? std::string("none") : hex.substr(0, 16); };
-    for (const char* part : {"map", "settings"}) {
-        const std::string a = digest_part(stored, part), b = digest_part(now, part);
-        if (a != b)
-            return fmt::format("has {} than the stored one{} ({}; sha256 {}... stored, {}... now)",
-                               part == std::string("map") ? "another map" : "other settings",
-                               part == std::string("map") ? "" : "s",
-                               part == std::string("map") ? "its cells or size differ: the map was edited, or another "
-                                                            "map given"
-                                                          : "its start, goal, objective, weights, bounds or another "
-                                                            "setting differ",
-                               shown(a), shown(b));
-    }
-    return "differs from the stored one (" + stored + " stored, " + now + " now)";
 }
 
 std::string name_problem(const std::string& name) {
@@ -214,6 +191,52 @@ std::string algorithm_definition(const CampaignAlgorithm& a) {
     for (const auto& [k, v] : a.spec.params.values()) s += " " + k + "=" + json_number(v);
     for (const auto& [k, v] : a.spec.params.names()) s += " " + k + "=" + json_string(v);
     return s;
+}
+
+storage::CampaignRows store_rows(const Campaign& c) {
+    storage::CampaignRows rows;
+    rows.name = c.name;
+    rows.text = c.text;
+    rows.target = c.target;
+    rows.target_precision = c.target_precision;
+    rows.precisions = json_array(coco_precisions());
+    rows.budget = budget_definition(c);
+    rows.problems.reserve(c.problems.size());
+    for (const auto& p : c.problems) {
+        storage::ProblemRow& r = rows.problems.emplace_back();
+        const auto* g = std::get_if<GridSpec>(&p.spec);
+        const auto* f = std::get_if<ContinuousSpec>(&p.spec);
+        r.id = p.id;
+        r.type = g ? "grid" : f ? f->function : p.problem->name();
+        r.dim = g ? 2 : static_cast<std::int64_t>(p.dimension());
+        r.map = p.map_file.empty() ? "" : std::filesystem::absolute(p.map_file).string();
+        if (g) {
+            r.start = fmt::format("{},{}", g->start.x, g->start.y);
+            r.goal = fmt::format("{},{}", g->goal.x, g->goal.y);
+        }
+        // A multi-objective problem has no instance and no single optimum (its runs' values are
+        // hypervolume gaps: 0 is the reference front).
+        r.instance = p.problem ? p.problem->instance() : 0;
+        r.f_opt = p.problem ? p.problem->optimum_value() : std::nullopt;
+        if (const auto* item = f ? continuous::catalog().find(f->function) : nullptr;
+            item && !item->entry.suite.empty()) {
+            r.suite = item->entry.suite;
+            r.fid = item->entry.number;
+        }
+        r.definition = problem_definition(p);
+        r.digest = p.digest;
+    }
+    rows.algorithms.reserve(c.algorithms.size());
+    for (const auto& a : c.algorithms) {
+        storage::AlgorithmRow& r = rows.algorithms.emplace_back();
+        const engine::AlgorithmEntry* entry = engine::algorithms().find(a.spec.name);
+        r.id = a.id;
+        r.type = a.spec.name;
+        r.evaluates = !entry || entry->evaluates();
+        r.reproducible = !entry || entry->reproducible;
+        r.definition = algorithm_definition(a);
+    }
+    return rows;
 }
 
 }  // namespace pride::campaign

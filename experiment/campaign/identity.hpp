@@ -5,6 +5,7 @@
 #include <string>
 
 #include "experiment/campaign/campaign.hpp"
+#include "experiment/storage/rows.hpp"
 #include "problems/grid/map.hpp"
 
 namespace pride::campaign {
@@ -31,10 +32,6 @@ std::string algorithm_definition(const CampaignAlgorithm& a);
 /// a step cost) cannot be identified: only that there is one.
 std::string problem_digest(const CampaignProblem& p);
 
-/// What differs between two problem digests, for messages: "has another map than the stored
-/// one (...)" or "has other settings than the stored ones (...)".
-std::string digest_difference(const std::string& stored, const std::string& now);
-
 /// A name as a store keeps it (the campaign's name, problem and algorithm ids): an empty one, a
 /// NUL (SQLite would cut the name there) or another control character (printed raw on a
 /// terminal) gives what is wrong, else an empty string.
@@ -45,5 +42,9 @@ std::string name_problem(const std::string& name);
 /// size and cells, and the whole digest from it (empty for a problem without a map).
 std::string map_digest(const grid::GridMap& m);
 std::string compose_digest(const std::string& map_hex, const CampaignProblem& p);
+
+/// The campaign as a store records it: its rows, with every definition and digest (a prepared
+/// campaign: its problems built and digested).
+storage::CampaignRows store_rows(const Campaign& c);
 
 }  // namespace pride::campaign

@@ -10,9 +10,10 @@
 
 #include <fmt/format.h>
 
+#include "experiment/campaign/identity.hpp"
 #include "experiment/campaign/run.hpp"
 #include "experiment/campaign/run_one.hpp"
-#include "experiment/store.hpp"
+#include "experiment/storage/writer.hpp"
 #include "framework/error.hpp"
 
 namespace pride::campaign {
@@ -39,12 +40,12 @@ class Ledger {
     Ledger(const Campaign& c, const std::string& path, std::size_t batch)
         : tasks_(all_tasks(c)), budget_(c.budget), batch_(std::max<std::size_t>(batch, 1)) {
         store_.emplace(path);
-        store_->claim(c);
+        store_->claim(store_rows(c));
         // The campaign's runs the store holds (a grown store may hold runs of other seeds,
         // problems or algorithms too: they stay, and are not this campaign's).
         const auto done = store_->done();
         for (std::size_t i = 0; i < tasks_.size(); ++i) {
-            engine::RunKey key{tasks_[i].problem->id, tasks_[i].algorithm->id, tasks_[i].seed};
+            storage::RunKey key{tasks_[i].problem->id, tasks_[i].algorithm->id, tasks_[i].seed};
             if (done.count(key)) {
                 ++already_;
                 continue;
@@ -93,7 +94,7 @@ class Ledger {
             // process has died (its claims dropped).
             if (busy_.empty() || !store_->drop_dead_claims()) return out;
             std::vector<std::size_t> todo;
-            std::vector<engine::RunKey> keys;
+            std::vector<storage::RunKey> keys;
             for (const std::size_t at : busy_) {
                 todo.push_back(todo_[at]);
                 keys.push_back(keys_[at]);
@@ -120,13 +121,13 @@ class Ledger {
   private:
     std::vector<Task> tasks_;
     engine::Budget budget_;
-    std::optional<engine::Store> store_;
+    std::optional<storage::Writer> store_;
     std::size_t batch_;
     std::size_t already_ = 0, stored_ = 0;
-    std::vector<std::size_t> todo_;     // task numbers not stored when this process started
-    std::vector<engine::RunKey> keys_;  // their keys
-    std::size_t cursor_ = 0;            // keys_[cursor_...] not looked at yet
-    std::vector<std::size_t> busy_;     // positions in keys_ another process held
+    std::vector<std::size_t> todo_;      // task numbers not stored when this process started
+    std::vector<storage::RunKey> keys_;  // their keys
+    std::size_t cursor_ = 0;             // keys_[cursor_...] not looked at yet
+    std::vector<std::size_t> busy_;      // positions in keys_ another process held
 };
 
 }  // namespace pride::campaign

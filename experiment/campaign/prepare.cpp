@@ -22,7 +22,6 @@ using engine::check;
 using engine::check_grid_names;
 using engine::check_quality;
 using engine::ContinuousSpec;
-using storage::file_name;
 using engine::GridSpec;
 using engine::load_map;
 using engine::max_budget;
@@ -32,6 +31,7 @@ using engine::MoProblem;
 using engine::MoProblemSpec;
 using engine::Problem;
 using engine::ProblemSpec;
+using storage::file_name;
 namespace {
 
 std::string where_of(const Campaign& c, int line, const std::string& what) {

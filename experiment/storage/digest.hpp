@@ -101,4 +101,8 @@ class Sha256 {
     std::uint64_t length_ = 0;
 };
 
+/// What differs between two problem digests, for messages: "has another map than the stored
+/// one (...)" or "has other settings than the stored ones (...)".
+std::string digest_difference(const std::string& stored, const std::string& now);
+
 }  // namespace pride::storage
