@@ -23,7 +23,7 @@
 #include "cli/roughset.hpp"
 #include "cli/stderr.hpp"
 #include "engine/registry.hpp"
-#include "experiment/merge.hpp"
+#include "experiment/storage/merge.hpp"
 #include "framework/error.hpp"
 
 namespace {
@@ -359,7 +359,7 @@ int run_main(int argc, char** argv) {
         if (*report_cmd) return report_command(report, std::cout);
         if (*export_cmd) return export_command(exporting, std::cout);
         if (*merge_cmd) {
-            const auto s = pride::engine::merge_stores(merge_inputs, merge_out);
+            const auto s = pride::storage::merge_stores(merge_inputs, merge_out);
             std::cout << fmt::format(
                 "merged {} stores into {}: {} runs ({} found in more than one store, equal, kept "
                 "once)\n",

@@ -1,4 +1,4 @@
-// pride merge (experiment/merge.hpp): stores of one campaign run in parts (seeds split, an algorithm
+// pride merge (experiment/storage/merge.hpp): stores of one campaign run in parts (seeds split, an algorithm
 // added elsewhere) join into the store one run of the whole would give (bar wall times); a run in
 // two stores is kept once when equal and refused, naming it, when not; incompatible stores are
 // refused naming what differs; the inputs stay as they were and a refused merge writes nothing.

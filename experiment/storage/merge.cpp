@@ -1,4 +1,4 @@
-#include "experiment/merge.hpp"
+#include "experiment/storage/merge.hpp"
 
 #include <fmt/format.h>
 #include <sqlite3.h>
@@ -9,13 +9,12 @@
 #include <optional>
 #include <set>
 
-#include "experiment/campaign/identity.hpp"
 #include "experiment/storage/digest.hpp"
 #include "experiment/storage/reader.hpp"
 #include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"
 
-namespace pride::engine {
+namespace pride::storage {
 namespace {
 
 /// One SQLite connection, closed on every path.
@@ -99,18 +98,18 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
     for (const auto& in : inputs) require(std::filesystem::is_regular_file(in), in, "no such store");
     // Each input checked as pride report checks it (the same code), then at the current schema
     // (pride bench migrates a store when it opens it): a damaged input is never copied on.
-    for (const auto& in : inputs) storage::check_store(in);
+    for (const auto& in : inputs) check_store(in);
     for (const auto& in : inputs) {
         Db db(in, SQLITE_OPEN_READONLY);
         const auto v = db.rows("PRAGMA user_version");
         const int version = v.empty() ? 0 : std::stoi(*v[0][0]);
         if (db.rows("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'campaign'").empty())
             throw InputError(in + ": not a campaign store (it has no campaign table)");
-        require(version == storage::schema_version, in,
+        require(version == schema_version, in,
                 fmt::format("has store schema {}, merge reads schema {} (run its campaign with pride bench once to "
                             "migrate it{})",
-                            version, storage::schema_version,
-                            version > storage::schema_version ? "; or use the newer pride" : ""));
+                            version, schema_version,
+                            version > schema_version ? "; or use the newer pride" : ""));
     }
     const std::string part = out + ".part";
     // A folder the user cannot write is the user's error: one line, exit 2, nothing left behind.
@@ -175,7 +174,7 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
                                 "{}: problem '{}' {} in {}; stores whose runs are of different problems are not "
                                 "merged",
                                 in, text(other_content[0][0]),
-                                storage::digest_difference(*other_content[0][2], *other_content[0][1]), inputs[0]));
+                                digest_difference(*other_content[0][2], *other_content[0][1]), inputs[0]));
                     }
                     const auto cols = columns(db, "main", table);
                     db.exec(
@@ -234,4 +233,4 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
     return summary;
 }
 
-}  // namespace pride::engine
+}  // namespace pride::storage

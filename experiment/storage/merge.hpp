@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace pride::engine {
+namespace pride::storage {
 
 struct MergeSummary {
     std::size_t runs = 0;    // runs in the merged store
@@ -18,4 +18,4 @@ struct MergeSummary {
 /// InputError naming the store and what differs; `out` must not exist.
 MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::string& out);
 
-}  // namespace pride::engine
+}  // namespace pride::storage
