@@ -108,8 +108,7 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
         require(version == schema_version, in,
                 fmt::format("has store schema {}, merge reads schema {} (run its campaign with pride bench once to "
                             "migrate it{})",
-                            version, schema_version,
-                            version > schema_version ? "; or use the newer pride" : ""));
+                            version, schema_version, version > schema_version ? "; or use the newer pride" : ""));
     }
     const std::string part = out + ".part";
     // A folder the user cannot write is the user's error: one line, exit 2, nothing left behind.
