@@ -284,6 +284,7 @@ void check(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budge
     check_space_params(entry, params, problem);
     mo_termination(problem, budget).validate(entry.name);
     check_memory(params, problem);
+    if (entry.check_objectives) entry.check_objectives(params, problem.objectives());
 }
 
 MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budget& budget, std::uint64_t seed) {
@@ -292,6 +293,7 @@ MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const 
     check_space_params(entry, params, problem);
     const RunRequest request{params, mo_termination(problem, budget), seed};
     check_memory(params, problem);
+    if (entry.check_objectives) entry.check_objectives(params, problem.objectives());
     const Target& target = *problem.prepared().target;
     std::vector<std::size_t> keep;
     if (problem.is_chain()) {

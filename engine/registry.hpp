@@ -47,6 +47,9 @@ struct AlgorithmEntry {
     /// Bytes a run needs besides the problem, for a population algorithm in `dimension`; checked
     /// against the machine's memory before anything is allocated.
     std::function<double(const Params&, std::size_t dimension)> memory;
+    /// Multi-objective entries: refuses, before the run, parameters that a run on this many
+    /// objectives cannot honour (SMS-EMOA's population beyond what exact contributions allow).
+    std::function<void(const Params&, std::size_t objectives)> check_objectives;
 
     /// The grid encoding it plans on when neither the run nor the problem names one: the one its
     /// paper plans on (`chain` for Zhang et al.'s (2025) and Cai and Du's (2021) planners; `line` for PSO, LSO, ILSO

@@ -267,6 +267,8 @@ TEST_CASE("cli contract: campaign files name the file, line and key", "[cli][con
                  {"nan-target.toml:5", "'target' must be a finite number"}},
                 {bench(in.campaign("neg-seeds.toml", "evaluations = 10", "", "", "seeds = -1")),
                  {"neg-seeds.toml:2", "seeds"}},
+                {bench(in.campaign("huge-seeds.toml", "evaluations = 10", "", "", "seeds = 18446744073709551615")),
+                 {"huge-seeds.toml:2:", "not valid TOML", "[-9223372036854775808, 9223372036854775807]"}},
                 {bench(in.campaign("neg-dim.toml", "evaluations = 10", "dim = -1", "")), {"neg-dim.toml", "dim"}},
                 {bench(in.grid_campaign("outside.toml", "start = [50, 0]\ngoal = [9, 9]")),
                  {"outside.toml", "start", "outside"}},

@@ -542,3 +542,25 @@ TEST_CASE("mo engine: a reference front beyond exact hypervolume's bound is refu
     CHECK(test::run_pride("front --algo nsga2 --problem dtlz2 --objectives 1000 --evals 100 --no-reference").status ==
           0);
 }
+
+TEST_CASE("SMS-EMOA's population is refused before the run where its exact contributions cannot be computed") {
+    // At 12 objectives exact contributions take at most 40 / 2 = 20 points: pop + 1 of them per step.
+    const MoProblem dtlz2(MoBenchmarkSpec{"dtlz2", 0, 12});
+    throws_naming(
+        [&] {
+            engine::check(AlgorithmSpec{"smsemoa", {}}, dtlz2, evaluations(300));
+        },
+        {"pop", "12 objectives", "pop must be at most 19, got 100"});
+    throws_naming(
+        [&] {
+            (void)engine::run(AlgorithmSpec{"smsemoa", {}}, dtlz2, evaluations(300), 1);
+        },
+        {"pop must be at most 19"});
+    const AlgorithmSpec small{"smsemoa", params_of({"pop=19"})};
+    CHECK_NOTHROW(engine::check(small, dtlz2, evaluations(300)));
+    const auto r = engine::run(small, dtlz2, evaluations(300), 1);
+    CHECK(r.evaluations == 300);
+    // Three objectives have no bound: the sweep computes any number.
+    CHECK_NOTHROW(engine::check(AlgorithmSpec{"smsemoa", params_of({"pop=5000"})},
+                                MoProblem(MoBenchmarkSpec{"dtlz2", 0, 3}), evaluations(10000)));
+}

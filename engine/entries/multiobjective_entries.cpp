@@ -18,6 +18,8 @@
 #include "algorithms/smsemoa.hpp"
 #include "engine/family.hpp"
 #include "engine/registry.hpp"
+#include "framework/error.hpp"
+#include "framework/pareto/hypervolume.hpp"
 #include "framework/pareto/reference_directions.hpp"
 
 namespace pride::engine {
@@ -219,7 +221,7 @@ void register_multiobjective(AlgorithmRegistry& registry) {
     sms_params.push_back(
         real("reference_offset", 1.0, 0.0, 1e300, "the reference point: the worst front's worst values plus this")
             .open_below());
-    registry.add(mo_algorithm(
+    AlgorithmEntry sms = mo_algorithm(
         "smsemoa", "SMS-EMOA (Beume et al. 2007): steady state, the least exact hypervolume contribution leaves",
         std::move(sms_params), [](const Params& p, std::size_t) {
             SmsEmoa<> a;
@@ -227,7 +229,18 @@ void register_multiobjective(AlgorithmRegistry& registry) {
             configure_variation(a, p);
             a.reference_offset = p.real("reference_offset");
             return a;
-        }));
+        });
+    // Each step computes the exact contributions of the worst front, up to pop + 1 points: a
+    // population past their bound would fail at its first step, after the run had started.
+    sms.check_objectives = [](const Params& p, std::size_t objectives) {
+        const std::size_t most = pareto::exact_hypervolume_points(objectives) / 2;
+        const auto pop = static_cast<std::size_t>(p.integer("pop"));
+        require(pop < most, "pop",
+                fmt::format("SMS-EMOA computes exact hypervolume contributions of up to pop + 1 points, and in {} "
+                            "objectives at most {} are computed in about a second: pop must be at most {}, got {}",
+                            objectives, most, most - 1, pop));
+    };
+    registry.add(std::move(sms));
 }
 
 }  // namespace pride::engine

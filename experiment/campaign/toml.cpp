@@ -450,8 +450,14 @@ Campaign parse_campaign(const std::string& path) {
                 words.remove_suffix(cut.size());
                 trim();
             }
-        throw InputError(
-            fmt::format("{}:{}:{}: not valid TOML: {}", path, e.source().begin.line, e.source().begin.column, words));
+        // An integer toml++ cannot hold (seeds = 18446744073709551615, a seed --seed takes): the
+        // range a campaign file can hold, said once here for every key.
+        const std::string range = words.find("integer") != std::string_view::npos
+                                      ? " (a campaign file's integers lie in [-9223372036854775808, "
+                                        "9223372036854775807])"
+                                      : "";
+        throw InputError(fmt::format("{}:{}:{}: not valid TOML: {}{}", path, e.source().begin.line,
+                                     e.source().begin.column, words, range));
     }
     const auto folder = std::filesystem::path(path).parent_path();
     bool suites_read = false;
