@@ -187,12 +187,12 @@ Writer::Writer(const std::string& path) : path_(path), token_(process_token(::ge
         // stored before it.
         add_column("runs", "trace_targets", "TEXT NOT NULL DEFAULT '[]'");
         add_column("runs", "trace_evaluations", "TEXT NOT NULL DEFAULT '[]'");
-        // The run's evaluation budget and its best values at the CEC reports' checkpoints (issue
-        // 26); NULL and '[]' for runs stored before them.
+        // The run's evaluation budget and its best values at the CEC reports' checkpoints; NULL and
+        // '[]' for runs stored before them.
         add_column("runs", "max_evaluations", "INTEGER");
         add_column("runs", "checkpoints", "TEXT NOT NULL DEFAULT '[]'");
-        // Every grid path's metrics, whoever planned it, and a polyline planner's polyline
-        //; NULL for other runs and for runs stored before them.
+        // Every grid path's metrics, whoever planned it, and a polyline planner's polyline; NULL for
+        // other runs and for runs stored before them.
         add_column("runs", "path_metrics", "TEXT");
         // 0 for an algorithm registered as not reproducible (AlgorithmEntry::reproducible):
         // merges and reports of several stores compare its runs by definition, not values.
