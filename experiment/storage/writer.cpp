@@ -244,12 +244,11 @@ void Writer::claim(const CampaignRows& c) {
             // Every run of a store records hits of the same targets (pride went from COCO's
             // 11 precisions to its 51): new runs cannot join runs that recorded others. A store
             // from before precisions (its runs record none) takes today's.
-            const std::string current = c.precisions;
             if (!precisions) {
                 sqlite3_stmt* u = prepare("UPDATE campaign SET precisions = ? WHERE id = 1");
-                sqlite3_bind_text(u, 1, current.c_str(), -1, SQLITE_TRANSIENT);
+                sqlite3_bind_text(u, 1, c.precisions.c_str(), -1, SQLITE_TRANSIENT);
                 step_done(u, "cannot write the store");
-            } else if ((runs > 0 || live_claims() > 0) && *precisions != current)
+            } else if ((runs > 0 || live_claims() > 0) && *precisions != c.precisions)
                 throw InputError(path_ + ": its runs record the target precisions " + *precisions +
                                  ", this pride records COCO's 51 (10^2 ... 10^-8); report it as it is, or run the "
                                  "campaign into a new store");
@@ -493,9 +492,8 @@ void Writer::fill_definitions(const CampaignRows& c) {
     sqlite3_finalize(s);
     fill_digests(c);
     if (!missing) return;
-    const std::string budget = c.budget;
     s = prepare("UPDATE campaign SET budget = ? WHERE budget IS NULL");
-    sqlite3_bind_text(s, 1, budget.c_str(), -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 1, c.budget.c_str(), -1, SQLITE_TRANSIENT);
     step_done(s, "cannot write the store");
     const auto define = [&](const char* table, const std::string& id, const std::string& definition) {
         sqlite3_stmt* u = prepare(
@@ -517,17 +515,14 @@ void Writer::bind_optional(sqlite3_stmt* s, int i, const std::optional<double>& 
 
 void Writer::record(const CampaignRows& c) {
     sqlite3_stmt* s = prepare(
-        "INSERT INTO campaign (id, name, text, target, precisions, target_precision, budget) VALUES (1, ?, ?, ?, "
-        "?, "
-        "?, ?)");
+        "INSERT INTO campaign (id, name, text, target, precisions, target_precision, budget) "
+        "VALUES (1, ?, ?, ?, ?, ?, ?)");
     sqlite3_bind_text(s, 1, c.name.c_str(), -1, SQLITE_TRANSIENT);
     sqlite3_bind_text(s, 2, c.text.c_str(), -1, SQLITE_TRANSIENT);
     bind_optional(s, 3, c.target);
-    const std::string precisions = c.precisions;
-    sqlite3_bind_text(s, 4, precisions.c_str(), -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 4, c.precisions.c_str(), -1, SQLITE_TRANSIENT);
     bind_optional(s, 5, c.target_precision);
-    const std::string budget = c.budget;
-    sqlite3_bind_text(s, 6, budget.c_str(), -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 6, c.budget.c_str(), -1, SQLITE_TRANSIENT);
     step_done(s, "cannot write the store");
     for (const auto& a : c.algorithms) record_algorithm(a);
     for (const auto& p : c.problems) record_problem(p);
@@ -587,9 +582,8 @@ std::size_t Writer::insert_one(const RunRecord& r) {
         insert_,
         "INSERT OR IGNORE INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, "
         "optimum, solution, history, history_evaluations, target_hits, encoding, trace_targets, trace_evaluations, "
-        "max_evaluations, checkpoints, path_metrics, polyline) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-        "?, "
-        "?, ?, ?, ?, ?)");
+        "max_evaluations, checkpoints, path_metrics, polyline) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_TRANSIENT);
     sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_TRANSIENT);
     sqlite3_bind_int64(s, 3, r.seed);
