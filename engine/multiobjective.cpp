@@ -249,6 +249,13 @@ void check_memory(const Params& params, const MoProblem& problem) {
                    fmt::format("a population of {} in dimension {}", params.integer("pop"), problem.dimension()));
 }
 
+/// What check() and run() both refuse before anything is allocated: a run that would not fit in
+/// memory, or parameters the entry cannot honour in this many objectives.
+void check_run_size(const AlgorithmEntry& entry, const Params& params, const MoProblem& problem) {
+    check_memory(params, problem);
+    if (entry.check_objectives) entry.check_objectives(params, problem.objectives());
+}
+
 /// The members a run's result lists: distinct objective vectors only (the first point of each, in
 /// the population's order), in lexicographic order of their objectives.
 std::vector<std::size_t> listed(const Matrix& f) {
@@ -283,8 +290,7 @@ void check(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budge
     const Params params(entry.name, entry.params, algorithm.params);
     check_space_params(entry, params, problem);
     mo_termination(problem, budget).validate(entry.name);
-    check_memory(params, problem);
-    if (entry.check_objectives) entry.check_objectives(params, problem.objectives());
+    check_run_size(entry, params, problem);
 }
 
 MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budget& budget, std::uint64_t seed) {
@@ -292,8 +298,7 @@ MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const 
     const Params params(entry.name, entry.params, algorithm.params);
     check_space_params(entry, params, problem);
     const RunRequest request{params, mo_termination(problem, budget), seed};
-    check_memory(params, problem);
-    if (entry.check_objectives) entry.check_objectives(params, problem.objectives());
+    check_run_size(entry, params, problem);
     const Target& target = *problem.prepared().target;
     std::vector<std::size_t> keep;
     if (problem.is_chain()) {
