@@ -19,7 +19,7 @@
 namespace pride::cli {
 namespace {
 
-engine::MoProblemSpec problem_spec(const FrontOptions& o) {
+engine::ProblemSpec problem_spec(const FrontOptions& o) {
     const bool grid = !o.map.empty();
     require(grid != !o.problem.empty(), "problem", "give either --problem or --map (with --start and --goal)");
     if (!grid) {
@@ -33,7 +33,7 @@ engine::MoProblemSpec problem_spec(const FrontOptions& o) {
         require(engine::is_multiobjective_problem(o.problem), "problem",
                 "unknown multi-objective problem '" + o.problem +
                     "' (zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7; single-objective problems run with pride run)");
-        engine::MoBenchmarkSpec s{o.problem, o.dim.value_or(0), 0};
+        engine::ContinuousSpec s{o.problem, o.dim.value_or(0), std::nullopt, 0};
         if (!o.objectives.empty()) {
             std::int64_t m = 0;
             const auto* end = o.objectives.data() + o.objectives.size();
@@ -47,17 +47,17 @@ engine::MoProblemSpec problem_spec(const FrontOptions& o) {
     require(!o.dim, "dim", "a grid's dimension is its encoding's");
     require(!o.start.empty() && !o.goal.empty(), "map", "a grid needs --start and --goal");
     require(!o.waypoints || o.encoding == "free", "waypoints", "only for the free encoding");
-    engine::MoGridSpec s;
+    engine::GridSpec s;
     grid::MapReadOptions read;
     read.unknown_free = o.unknown_free;
-    s.grid.map = engine::load_map(o.map, o.inflate, read);
-    s.grid.start = parse_cell(o.start, "--start");
-    s.grid.goal = parse_cell(o.goal, "--goal");
-    s.grid.encoding = o.encoding;
-    s.grid.init = o.init;
-    s.grid.connector = o.connector;
-    s.grid.waypoints = o.waypoints.value_or(3);
-    s.grid.corner_cutting = o.corner_cutting;
+    s.map = engine::load_map(o.map, o.inflate, read);
+    s.start = parse_cell(o.start, "--start");
+    s.goal = parse_cell(o.goal, "--goal");
+    s.encoding = o.encoding;
+    s.init = o.init;
+    s.connector = o.connector;
+    s.waypoints = o.waypoints.value_or(3);
+    s.corner_cutting = o.corner_cutting;
     s.objectives = o.objectives.empty() ? "length,turns" : o.objectives;
     return s;
 }
@@ -65,14 +65,15 @@ engine::MoProblemSpec problem_spec(const FrontOptions& o) {
 }  // namespace
 
 int front_command(const FrontOptions& o, std::ostream& out) {
-    const engine::MoProblemSpec spec = problem_spec(o);
-    const engine::MoProblem problem(spec);
+    const engine::ProblemSpec spec = problem_spec(o);
+    const engine::Problem problem(spec);
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
     engine::check(algorithm, problem, o.budget);
     if (!o.no_reference) engine::check_quality(problem);
-    const engine::MoRunResult r = engine::run(algorithm, problem, o.budget, o.seed);
-    std::optional<engine::MoQuality> q;
-    if (!o.no_reference) q = engine::quality(problem, r.f);
+    const engine::RunResult r = engine::run(algorithm, problem, o.budget, o.seed);
+    const engine::Front& front = *r.front;
+    std::optional<engine::FrontQuality> q;
+    if (!o.no_reference) q = engine::quality(problem, front.f);
 
     const auto names = problem.objective_names();
     const bool grid = problem.is_grid();
@@ -81,16 +82,17 @@ int front_command(const FrontOptions& o, std::ostream& out) {
     if (!o.png.empty()) pictures.emplace_back(o.png, html::PictureFormat::png);
     OutputFiles files;  // committed once the front was printed
     if (grid) {
-        const auto& g = std::get<engine::MoGridSpec>(spec).grid;
+        const auto& g = std::get<engine::GridSpec>(spec);
         std::vector<std::string> labels;
-        for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
+        for (Eigen::Index j = 0; j < front.f.cols(); ++j) {
             std::string words;
             for (std::size_t i = 0; i < names.size(); ++i)
-                words += fmt::format("{}{} {:.6g}", i == 0 ? "" : ", ", names[i], r.f(static_cast<Eigen::Index>(i), j));
+                words +=
+                    fmt::format("{}{} {:.6g}", i == 0 ? "" : ", ", names[i], front.f(static_cast<Eigen::Index>(i), j));
             labels.push_back(words);
         }
         html::write_pictures(pictures, files, [&](OutputFiles::File& file, html::PictureFormat format) {
-            html::draw_grid_paths(*g.map, g.start, g.goal, r.paths, labels, file, format);
+            html::draw_grid_paths(*g.map, g.start, g.goal, front.paths, labels, file, format);
         });
     }
 
@@ -107,11 +109,11 @@ int front_command(const FrontOptions& o, std::ostream& out) {
             return std::vector<double>(m.row(i).begin(), m.row(i).end());
         };
         if (q) {
-            const Matrix& front = problem.reference_front();
-            fig.markers(row(front, 0), row(front, 1), html::Rgb{0.6, 0.6, 0.6},
+            const Matrix& reference = problem.reference_front();
+            fig.markers(row(reference, 0), row(reference, 1), html::Rgb{0.6, 0.6, 0.6},
                         grid ? "exact front" : "reference front", html::Marker::circle);
         }
-        fig.markers(row(r.f, 0), row(r.f, 1), html::series_colour(0), r.algorithm, html::Marker::cross);
+        fig.markers(row(front.f, 0), row(front.f, 1), html::series_colour(0), r.algorithm, html::Marker::cross);
         fig.write(files.create(o.plot));
     }
 
@@ -133,12 +135,12 @@ int front_command(const FrontOptions& o, std::ostream& out) {
             "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"objectives\": [{}], \"seed\": {}, \"evaluations\": {}, "
             "\"iterations\": {}, \"wall_ms\": {}, \"front\": {}, \"quality\": {}}}\n",
             json_string(r.algorithm), json_string(problem.name()), problem.dimension(), list, o.seed, r.evaluations,
-            r.iterations, json_number(r.wall_ms), engine::front_json(r), quality);
+            r.iterations, json_number(r.wall_ms), engine::front_json(front), quality);
     } else {
         text = fmt::format(
             "algo         {}\nproblem      {}\nseed         {}\nevaluations  {}\niterations   {}\nwall_ms      {:.3f}\n"
             "points       {} non-dominated\n",
-            r.algorithm, where, o.seed, r.evaluations, r.iterations, r.wall_ms, r.f.cols());
+            r.algorithm, where, o.seed, r.evaluations, r.iterations, r.wall_ms, front.f.cols());
         if (q) {
             text += fmt::format(
                 "hypervolume  {:.6g} of the reference front's {:.6g} (ratio {:.4f}; normalised, "
@@ -149,10 +151,10 @@ int front_command(const FrontOptions& o, std::ostream& out) {
         }
         for (std::size_t i = 0; i < names.size(); ++i) text += (i == 0 ? "" : " ") + names[i];
         text += grid ? " legal\n" : "\n";
-        for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
-            for (Eigen::Index i = 0; i < r.f.rows(); ++i)
-                text += fmt::format("{}{:.10g}", i == 0 ? "" : " ", r.f(i, j));
-            text += grid ? (r.feasible[static_cast<std::size_t>(j)] ? " yes\n" : " no\n") : "\n";
+        for (Eigen::Index j = 0; j < front.f.cols(); ++j) {
+            for (Eigen::Index i = 0; i < front.f.rows(); ++i)
+                text += fmt::format("{}{:.10g}", i == 0 ? "" : " ", front.f(i, j));
+            text += grid ? (front.feasible[static_cast<std::size_t>(j)] ? " yes\n" : " no\n") : "\n";
         }
     }
     print_then_commit(out, text, files);

@@ -17,30 +17,20 @@ AskTell::AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector
                           std::to_string(objectives)
                     : algorithm.name + " optimises one objective, got " + std::to_string(objectives));
     objectives_ = static_cast<std::size_t>(objectives);
-    if (several) {
-        MoCallbackSpec spec;
-        spec.name = "bounds";
-        spec.lower = std::move(lower);
-        spec.upper = std::move(upper);
-        spec.objectives = objectives;
-        spec.batch = [this](MatrixView points, Matrix& values) {
-            exchange(points, std::span<double>(values.data(), static_cast<std::size_t>(values.size())));
-        };
-        MoProblem problem(spec);
-        check(algorithm, problem, budget);
-        worker_ =
-            std::thread([this, algorithm, problem, budget, seed] { work(algorithm, problem, budget, seed, front_); });
-        return;
-    }
     CallbackSpec spec;
     spec.name = "bounds";
     spec.lower = std::move(lower);
     spec.upper = std::move(upper);
-    spec.batch = [this](MatrixView points, std::span<double> values) { exchange(points, values); };
+    spec.objectives = objectives;
+    if (several)
+        spec.values_batch = [this](MatrixView points, Matrix& values) {
+            exchange(points, std::span<double>(values.data(), static_cast<std::size_t>(values.size())));
+        };
+    else
+        spec.batch = [this](MatrixView points, std::span<double> values) { exchange(points, values); };
     Problem problem(spec);
     check(algorithm, problem, budget);
-    worker_ =
-        std::thread([this, algorithm, problem, budget, seed] { work(algorithm, problem, budget, seed, result_); });
+    worker_ = std::thread([this, algorithm, problem, budget, seed] { work(algorithm, problem, budget, seed); });
 }
 
 AskTell::~AskTell() {
@@ -52,9 +42,8 @@ AskTell::~AskTell() {
     if (worker_.joinable()) worker_.join();
 }
 
-template <class P, class R>
-void AskTell::work(AlgorithmSpec algorithm, P problem, Budget budget, std::uint64_t seed, std::optional<R>& out) {
-    std::optional<R> result;
+void AskTell::work(AlgorithmSpec algorithm, Problem problem, Budget budget, std::uint64_t seed) {
+    std::optional<RunResult> result;
     std::exception_ptr failure;
     try {
         result = run(algorithm, problem, budget, seed);
@@ -64,7 +53,7 @@ void AskTell::work(AlgorithmSpec algorithm, P problem, Budget budget, std::uint6
     {
         const std::lock_guard lock(mutex_);
         if (!cancel_) {
-            out = std::move(result);
+            result_ = std::move(result);
             failure_ = failure;
         }
         state_ = State::finished;
@@ -139,21 +128,11 @@ void AskTell::wait_for_result(bool ready) {
 }
 
 const RunResult& AskTell::result() {
-    require(objectives_ == 1, "result", "a multi-objective run's result is its front (front_result)");
     wait_for_result(true);
     const std::lock_guard lock(mutex_);
     require(result_.has_value(), "result",
             "the run has not ended yet: tell the values of every batch until done is true");
     return *result_;
-}
-
-const MoRunResult& AskTell::front_result() {
-    require(objectives_ > 1, "result", "a single-objective run has no front (result)");
-    wait_for_result(true);
-    const std::lock_guard lock(mutex_);
-    require(front_.has_value(), "result",
-            "the run has not ended yet: tell the values of every batch until done is true");
-    return *front_;
 }
 
 }  // namespace pride::engine

@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "engine/multiobjective.hpp"
+#include "engine/problem.hpp"
 #include "engine/run.hpp"
 #include "engine/specs.hpp"
 #include "framework/problem.hpp"
@@ -47,15 +47,12 @@ class AskTell {
     void tell(std::span<const double> values);
     /// True once the run has ended (blocks until the run asks or ends).
     bool done();
-    /// The run's result; InputError("result", ...) before the end. Rethrows what stopped the run
-    /// if it failed.
+    /// The run's result (with several objectives, its `front`); InputError("result", ...) before
+    /// the end. Rethrows what stopped the run if it failed.
     const RunResult& result();
-    /// The same for a multi-objective run: its non-dominated set.
-    const MoRunResult& front_result();
 
   private:
-    template <class P, class R>
-    void work(AlgorithmSpec algorithm, P problem, Budget budget, std::uint64_t seed, std::optional<R>& out);
+    void work(AlgorithmSpec algorithm, Problem problem, Budget budget, std::uint64_t seed);
     /// The state the run ended in, checked for the result (`ready`: the run's kind has one).
     void wait_for_result(bool ready);
     /// The batch function: publishes `points`, waits for tell() (or cancellation).
@@ -76,7 +73,6 @@ class AskTell {
     std::vector<double> values_;
     bool told_ = false;
     std::optional<RunResult> result_;
-    std::optional<MoRunResult> front_;
     std::exception_ptr failure_;
     std::thread worker_;  // last: started once everything above exists
 };

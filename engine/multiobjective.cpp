@@ -10,8 +10,10 @@
 #include "engine/grid_names.hpp"
 #include "engine/grid_plan.hpp"
 #include "engine/json.hpp"
+#include "engine/prepared.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
+#include "engine/run_checks.hpp"
 #include "engine/target.hpp"
 #include "framework/error.hpp"
 #include "framework/memory.hpp"
@@ -21,23 +23,6 @@
 #include "problems/grid/pareto.hpp"
 
 namespace pride::engine {
-
-struct MoPrepared {
-    MoProblemSpec spec;
-    std::string name;
-    std::vector<std::string> objective_names;
-    // A MoBoxTarget, or a MoChainTarget for grids on the chain encoding.
-    std::optional<Target> target;
-    const MoBoxTarget* box() const { return target ? std::get_if<MoBoxTarget>(&*target) : nullptr; }
-    const MoChainTarget* chain() const { return target ? std::get_if<MoChainTarget>(&*target) : nullptr; }
-    // The reference front, made at first use and shared by the problem's copies.
-    mutable std::once_flag front_once;
-    mutable Matrix front;
-    mutable std::vector<grid::Path> front_paths;
-    mutable std::optional<InputError> front_error;
-    grid::Criteria criteria{};                            // grids
-    std::shared_ptr<const grid::MapClearance> clearance;  // grids with clearance
-};
 
 bool is_multiobjective_problem(const std::string& name) {
     return multiobjective::find_problem(name) != nullptr;
@@ -50,17 +35,17 @@ std::int64_t checked_count(std::int64_t v, std::int64_t lo, std::int64_t hi, con
     return v;
 }
 
-void prepare_benchmark(MoPrepared& out, const MoBenchmarkSpec& s) {
+void prepare_benchmark(Prepared& out, const ContinuousSpec& s) {
+    require(!s.instance, "instance", s.function + " has no instances");
     checked_count(s.dim, 0, static_cast<std::int64_t>(multiobjective::kMaxVariables), "dim");
     checked_count(s.objectives, 0, static_cast<std::int64_t>(multiobjective::kMaxObjectives), "objectives");
-    multiobjective::Benchmark b(s.problem, static_cast<std::size_t>(s.dim), static_cast<std::size_t>(s.objectives));
+    multiobjective::Benchmark b(s.function, static_cast<std::size_t>(s.dim), static_cast<std::size_t>(s.objectives));
     out.name = std::string(b.name());
     for (std::size_t i = 1; i <= b.objectives(); ++i) out.objective_names.push_back(fmt::format("f{}", i));
-    out.target.emplace(std::in_place_type<MoBoxTarget>, MoBoxTarget{std::move(b)});
+    out.searched.emplace(std::in_place_type<MoBoxTarget>, MoBoxTarget{std::move(b)});
 }
 
-void prepare_grid(MoPrepared& out, const MoGridSpec& s) {
-    const GridSpec& g = s.grid;
+void prepare_grid(Prepared& out, const GridSpec& g) {
     check_grid_names(g);
     require(g.map != nullptr, "map", "no map given");
     require(g.objective == "cells" && g.weights.empty() && !g.lambda && !g.path_objective, "objective",
@@ -72,10 +57,10 @@ void prepare_grid(MoPrepared& out, const MoGridSpec& s) {
     else
         require(g.init.empty() || g.init == "uniform", "init",
                 "the multi-objective algorithms start from uniform points on line and free, got " + g.init);
-    out.criteria = grid::parse_criteria(s.objectives);
+    out.criteria = grid::parse_criteria(g.objectives);
     grid::ClearanceParams cp;
-    cp.bands = static_cast<int>(checked_count(s.clearance_bands, 1, 63, "clearance_bands"));
-    cp.band_width = static_cast<int>(checked_count(s.clearance_width, 1, 1'000'000, "clearance_width"));
+    cp.bands = static_cast<int>(checked_count(g.clearance_bands, 1, 63, "clearance_bands"));
+    cp.band_width = static_cast<int>(checked_count(g.clearance_width, 1, 1'000'000, "clearance_width"));
     grid::PathCriteria criteria(*g.map, out.criteria, cp);
     out.clearance = criteria.clearance();
     out.objective_names = grid::criteria_names(out.criteria);
@@ -87,125 +72,108 @@ void prepare_grid(MoPrepared& out, const MoGridSpec& s) {
             if constexpr (std::is_same_v<Plan, grid::ChainSpace<grid::CellsObjective>>) {
                 MoGridChain p(std::move(plan), std::move(criteria));
                 p.count_calls(g.objective_calls);
-                out.target.emplace(std::in_place_type<MoChainTarget>, MoChainTarget{std::move(p)});
+                out.searched.emplace(std::in_place_type<MoChainTarget>, MoChainTarget{std::move(p)});
             } else {
                 using Paths = std::conditional_t<std::is_same_v<Plan, LinePlan>, MoGridLine, MoGridFree>;
                 Paths p(problem, std::move(plan), std::move(criteria));
                 p.count_calls(g.objective_calls);
-                out.target.emplace(std::in_place_type<MoBoxTarget>, MoBoxTarget{std::move(p)});
+                out.searched.emplace(std::in_place_type<MoBoxTarget>, MoBoxTarget{std::move(p)});
             }
         },
         plan_grid(g, problem));
 }
 
-void prepare_callback(MoPrepared& out, const MoCallbackSpec& s) {
+void prepare_callback(Prepared& out, const CallbackSpec& s) {
     require(!s.lower.empty(), "bounds", "the box has no coordinate");
     require(s.lower.size() == s.upper.size(), "bounds",
             fmt::format("lower has {} coordinates, upper {}", s.lower.size(), s.upper.size()));
     for (std::size_t i = 0; i < s.lower.size(); ++i)
         require(std::isfinite(s.lower[i]) && std::isfinite(s.upper[i]) && s.lower[i] <= s.upper[i], "bounds",
                 fmt::format("coordinate {} must have finite bounds with lower <= upper", i));
-    checked_count(s.objectives, 2, static_cast<std::int64_t>(multiobjective::kMaxObjectives), "objectives");
-    require(static_cast<bool>(s.scalar) || static_cast<bool>(s.batch), "function", "no function given");
+    checked_count(s.objectives, 1, static_cast<std::int64_t>(multiobjective::kMaxObjectives), "objectives");
+    require(static_cast<bool>(s.values) || static_cast<bool>(s.values_batch), "function",
+            fmt::format("no function of {} objectives given", s.objectives));
+    require(!s.f_opt, "f_opt", "a function of several objectives has no single minimum");
     out.name = s.name;
     for (std::int64_t i = 1; i <= s.objectives; ++i) out.objective_names.push_back(fmt::format("f{}", i));
-    out.target.emplace(std::in_place_type<MoBoxTarget>,
-                       MoBoxTarget{MoCallbackProblem(s.name, s.lower, s.upper, static_cast<std::size_t>(s.objectives),
-                                                     s.scalar, s.batch)});
+    out.searched.emplace(std::in_place_type<MoBoxTarget>,
+                         MoBoxTarget{MoCallbackProblem(s.name, s.lower, s.upper, static_cast<std::size_t>(s.objectives),
+                                                       s.values, s.values_batch)});
 }
 
 /// The grid's exact front over the same criteria (ParetoSearch within the machine's memory).
-void exact_front(const MoPrepared& p) {
-    const auto& s = std::get<MoGridSpec>(p.spec);
-    const grid::GridMap& map = *s.grid.map;
+void exact_front(const Prepared& p, ReferenceFront& out) {
+    const auto& g = std::get<GridSpec>(p.spec);
+    const grid::GridMap& map = *g.map;
     grid::ParetoOptions options;
-    options.corner_cutting = s.grid.corner_cutting;
+    options.corner_cutting = g.corner_cutting;
     options.max_labels = grid::label_limit(map.size(), available_memory(), map.name());
     const grid::MapClearance clearance = p.clearance ? *p.clearance : grid::MapClearance(map);
-    const auto front = grid::pareto_front(map, clearance, s.grid.start, s.grid.goal, p.criteria, options);
+    const auto front = grid::pareto_front(map, clearance, g.start, g.goal, p.criteria, options);
     const auto m = static_cast<Eigen::Index>(p.criteria.count());
-    p.front.resize(m, static_cast<Eigen::Index>(front.size()));
+    out.values.resize(m, static_cast<Eigen::Index>(front.size()));
     for (std::size_t j = 0; j < front.size(); ++j) {
         const auto& q = front[j];
         Eigen::Index k = 0;
         const auto c = static_cast<Eigen::Index>(j);
-        if (p.criteria.length) p.front(k++, c) = q.steps.value();  // as PathCriteria's
-        if (p.criteria.turns) p.front(k++, c) = q.turns;
-        if (p.criteria.angle_penalty) p.front(k++, c) = q.angle_penalty;
-        if (p.criteria.clearance) p.front(k++, c) = q.clearance;
-        p.front_paths.push_back(q.path);
+        if (p.criteria.length) out.values(k++, c) = q.steps.value();  // as PathCriteria's
+        if (p.criteria.turns) out.values(k++, c) = q.turns;
+        if (p.criteria.angle_penalty) out.values(k++, c) = q.angle_penalty;
+        if (p.criteria.clearance) out.values(k++, c) = q.clearance;
+        out.paths.push_back(q.path);
     }
 }
 
 }  // namespace
 
-MoProblem::MoProblem(const MoProblemSpec& spec) : prepared_(std::make_shared<MoPrepared>()) {
-    prepared_->spec = spec;
-    if (const auto* b = std::get_if<MoBenchmarkSpec>(&spec))
-        prepare_benchmark(*prepared_, *b);
-    else if (const auto* g = std::get_if<MoGridSpec>(&spec))
-        prepare_grid(*prepared_, *g);
+bool several_objectives(const ProblemSpec& spec) {
+    if (const auto* c = std::get_if<ContinuousSpec>(&spec)) return is_multiobjective_problem(c->function);
+    if (const auto* g = std::get_if<GridSpec>(&spec)) return !g->objectives.empty();
+    return std::get<CallbackSpec>(spec).objectives != 1;
+}
+
+void prepare_several(Prepared& out) {
+    if (const auto* c = std::get_if<ContinuousSpec>(&out.spec))
+        prepare_benchmark(out, *c);
+    else if (const auto* g = std::get_if<GridSpec>(&out.spec))
+        prepare_grid(out, *g);
     else
-        prepare_callback(*prepared_, std::get<MoCallbackSpec>(spec));
+        prepare_callback(out, std::get<CallbackSpec>(out.spec));
+    out.dimension = out.mo_box() ? std::visit([](const auto& p) { return p.dimension(); }, out.mo_box()->problem) : 0;
+    out.front = std::make_shared<ReferenceFront>();
 }
 
-std::string MoProblem::name() const {
-    return prepared_->name;
-}
-bool MoProblem::is_grid() const {
-    return std::holds_alternative<MoGridSpec>(prepared_->spec);
-}
-std::size_t MoProblem::dimension() const {
-    if (prepared_->chain()) return 0;  // chains have no fixed dimension
-    return std::visit([](const auto& p) { return p.dimension(); }, prepared_->box()->problem);
-}
-std::size_t MoProblem::objectives() const {
-    return prepared_->objective_names.size();
-}
-std::vector<std::string> MoProblem::objective_names() const {
-    return prepared_->objective_names;
-}
-
-const Matrix& MoProblem::reference_front() const {
-    const MoPrepared& p = *prepared_;
-    require(!std::holds_alternative<MoCallbackSpec>(p.spec), "problem",
+const ReferenceFront& reference_front_of(const Prepared& p) {
+    require(p.front != nullptr, "problem", p.name + " has one objective: it has no reference front");
+    require(!std::holds_alternative<CallbackSpec>(p.spec), "problem",
             p.name + " is a user's function: it has no reference front");
-    std::call_once(p.front_once, [&] {
+    ReferenceFront& front = *p.front;
+    std::call_once(front.once, [&] {
         try {
-            if (const auto* b = p.box() ? std::get_if<multiobjective::Benchmark>(&p.box()->problem) : nullptr)
-                p.front = b->reference_front(reference_points);
+            if (const auto* b = p.mo_box() ? std::get_if<multiobjective::Benchmark>(&p.mo_box()->problem) : nullptr)
+                front.values = b->reference_front(Problem::reference_points);
             else
-                exact_front(p);
+                exact_front(p, front);
         } catch (const InputError& e) {
-            p.front_error = e;
+            front.error = e;
         }
     });
-    if (p.front_error) throw *p.front_error;
-    return p.front;
-}
-
-bool MoProblem::is_chain() const {
-    return prepared_->chain() != nullptr;
-}
-
-const std::vector<grid::Path>& MoProblem::reference_paths() const {
-    reference_front();
-    return prepared_->front_paths;
+    if (front.error) throw *front.error;
+    return front;
 }
 
 namespace {
 
-const AlgorithmEntry& multiobjective_entry(const AlgorithmSpec& algorithm, const MoProblem& problem) {
+const AlgorithmEntry& multiobjective_entry(const AlgorithmSpec& algorithm, const Prepared& p) {
     const AlgorithmEntry& entry = algorithms().at(algorithm.name);
     if (!entry.multiobjective()) {
         std::string names;
         for (const auto& e : algorithms().entries())
             if (e.multiobjective()) names += (names.empty() ? "" : ", ") + e.name;
-        throw InputError("algo", entry.name + " optimises one objective; " + problem.name() + " has " +
-                                     std::to_string(problem.objectives()) + " (multi-objective algorithms: " + names +
-                                     ")");
+        throw InputError("algo", entry.name + " optimises one objective; " + p.name + " has " +
+                                     std::to_string(p.objectives()) + " (multi-objective algorithms: " + names + ")");
     }
-    if (problem.is_chain() && !entry.runs(Kind::multiobjective_chain)) {
+    if (p.mo_chain() && !entry.runs(Kind::multiobjective_chain)) {
         std::string names;
         for (const auto& e : algorithms().entries())
             if (e.runs(Kind::multiobjective_chain)) names += (names.empty() ? "" : ", ") + e.name;
@@ -215,45 +183,46 @@ const AlgorithmEntry& multiobjective_entry(const AlgorithmSpec& algorithm, const
 }
 
 /// Parameters of one space given on another (SBX's index on chains, a chain setting on a box).
-void check_space_params(const AlgorithmEntry& entry, const Params& params, const MoProblem& problem) {
+void check_space_params(const AlgorithmEntry& entry, const Params& params, const Prepared& p) {
+    const bool chain = p.mo_chain() != nullptr;
     for (const auto& spec : entry.params) {
         if (!params.given(spec.name)) continue;
-        require(!spec.chain_only || problem.is_chain(), entry.name,
-                spec.name + " is a setting of chains; " + problem.name() + " is not searched on chains");
-        require(!spec.box_only || !problem.is_chain(), entry.name, spec.name + " has no meaning on chains");
+        require(!spec.chain_only || chain, entry.name,
+                spec.name + " is a setting of chains; " + p.name + " is not searched on chains");
+        require(!spec.box_only || !chain, entry.name, spec.name + " has no meaning on chains");
     }
 }
 
-Termination mo_termination(const MoProblem& problem, const Budget& budget) {
+Termination mo_termination(const Prepared& p, const Budget& budget) {
     require(!budget.target, "target", "a multi-objective run has no single value to reach");
     require(budget.recorded_targets.empty() && budget.recorded_evaluations.empty(), "budget",
             "multi-objective runs record no targets or checkpoints");
     require(budget.threads == 1, "threads", "multi-objective runs evaluate on one thread");
-    return budget.termination(problem.dimension(), problem.is_grid());
+    return budget.termination(p.dimension, std::holds_alternative<GridSpec>(p.spec));
 }
 
 /// What a run allocates, checked before it does: about six population-sized matrices of points
 /// and of values (parents, children, the merged set, their copies).
-void check_memory(const Params& params, const MoProblem& problem) {
+void check_memory(const Params& params, const Prepared& p) {
     const double pop = std::max(100.0, static_cast<double>(params.integer("pop")));
     // A chain counted as twice the map's perimeter in cells, two integers each (one double's
     // bytes): a loop-free chain may have as many cells as the map, but counting that would refuse
     // runs on large maps whose paths cover a small part of them.
-    double genes = static_cast<double>(problem.dimension());
-    if (problem.is_chain()) {
-        const grid::GridMap& map = *std::get<MoGridSpec>(problem.prepared().spec).grid.map;
+    double genes = static_cast<double>(p.dimension);
+    if (p.mo_chain()) {
+        const grid::GridMap& map = *std::get<GridSpec>(p.spec).map;
         genes = 4.0 * static_cast<double>(map.width() + map.height());
     }
-    const double per = genes + static_cast<double>(problem.objectives());
+    const double per = genes + static_cast<double>(p.objectives());
     require_memory(8.0 * 6.0 * pop * per, "pop",
-                   fmt::format("a population of {} in dimension {}", params.integer("pop"), problem.dimension()));
+                   fmt::format("a population of {} in dimension {}", params.integer("pop"), p.dimension));
 }
 
 /// What check() and run() both refuse before anything is allocated: a run that would not fit in
 /// memory, or parameters the entry cannot honour in this many objectives.
-void check_run_size(const AlgorithmEntry& entry, const Params& params, const MoProblem& problem) {
-    check_memory(params, problem);
-    if (entry.check_objectives) entry.check_objectives(params, problem.objectives());
+void check_run_size(const AlgorithmEntry& entry, const Params& params, const Prepared& p) {
+    check_memory(params, p);
+    if (entry.check_objectives) entry.check_objectives(params, p.objectives());
 }
 
 /// The members a run's result lists: distinct objective vectors only (the first point of each, in
@@ -269,71 +238,81 @@ std::vector<std::size_t> listed(const Matrix& f) {
 /// A run's record with the members listed() keeps (their indices into the run's result in `keep`)
 /// and their values; their points or paths are for the caller.
 template <class Result>
-MoRunResult listed_run(const AlgorithmEntry& entry, Result& r, std::vector<std::size_t>& keep) {
-    MoRunResult out;
+RunResult listed_run(const AlgorithmEntry& entry, Result& r, std::vector<std::size_t>& keep) {
+    RunResult out;
     out.algorithm = entry.name;
+    out.best_f = std::numeric_limits<double>::quiet_NaN();
     out.evaluations = r.evaluations;
     out.iterations = r.iterations;
     out.wall_ms = r.wall_ms;
     out.history_evaluations = std::move(r.history_evaluations);
     keep = listed(r.f);
-    out.f.resize(r.f.rows(), static_cast<Eigen::Index>(keep.size()));
+    Front& front = out.front.emplace();
+    front.f.resize(r.f.rows(), static_cast<Eigen::Index>(keep.size()));
     for (std::size_t k = 0; k < keep.size(); ++k)
-        out.f.col(static_cast<Eigen::Index>(k)) = r.f.col(static_cast<Eigen::Index>(keep[k]));
+        front.f.col(static_cast<Eigen::Index>(k)) = r.f.col(static_cast<Eigen::Index>(keep[k]));
     return out;
+}
+
+struct CheckedSeveral {
+    const AlgorithmEntry* entry = nullptr;
+    RunRequest request;
+};
+
+CheckedSeveral checked_several(const AlgorithmSpec& algorithm, const Prepared& p, const Budget& budget) {
+    const AlgorithmEntry& entry = multiobjective_entry(algorithm, p);
+    const Params params(entry.name, entry.params, algorithm.params);
+    check_space_params(entry, params, p);
+    CheckedSeveral c{&entry, {params, mo_termination(p, budget)}};
+    c.request.termination.validate(entry.name);
+    check_run_size(entry, params, p);
+    return c;
 }
 
 }  // namespace
 
-void check(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budget& budget) {
-    const AlgorithmEntry& entry = multiobjective_entry(algorithm, problem);
-    const Params params(entry.name, entry.params, algorithm.params);
-    check_space_params(entry, params, problem);
-    mo_termination(problem, budget).validate(entry.name);
-    check_run_size(entry, params, problem);
+void check_several(const AlgorithmSpec& algorithm, const Prepared& p, const Budget& budget) {
+    checked_several(algorithm, p, budget);
 }
 
-MoRunResult run(const AlgorithmSpec& algorithm, const MoProblem& problem, const Budget& budget, std::uint64_t seed) {
-    const AlgorithmEntry& entry = multiobjective_entry(algorithm, problem);
-    const Params params(entry.name, entry.params, algorithm.params);
-    check_space_params(entry, params, problem);
-    const RunRequest request{params, mo_termination(problem, budget), seed};
-    check_run_size(entry, params, problem);
-    const Target& target = *problem.prepared().target;
+RunResult run_several(const AlgorithmSpec& algorithm, const Prepared& p, const Budget& budget, std::uint64_t seed) {
+    CheckedSeveral c = checked_several(algorithm, p, budget);
+    const AlgorithmEntry& entry = *c.entry;
+    c.request.seed = seed;
+    const Target& target = *p.searched;
     std::vector<std::size_t> keep;
-    if (problem.is_chain()) {
-        MoChainResult r = std::get<MoChainResult>(entry.run(request, target));
-        MoRunResult out = listed_run(entry, r, keep);
+    if (p.mo_chain()) {
+        MoChainResult r = std::get<MoChainResult>(entry.run(c.request, target));
+        RunResult out = listed_run(entry, r, keep);
         for (const std::size_t i : keep) {
-            out.paths.push_back(std::move(r.x[i]));
-            out.feasible.push_back(1);  // the chain operators make legal chains only
+            out.front->paths.push_back(std::move(r.x[i]));
+            out.front->feasible.push_back(1);  // the chain operators make legal chains only
         }
         return out;
     }
-    MultiObjectiveResult r = std::get<MultiObjectiveResult>(entry.run(request, target));
-    MoRunResult out = listed_run(entry, r, keep);
-    out.x.resize(r.x.rows(), static_cast<Eigen::Index>(keep.size()));
+    MultiObjectiveResult r = std::get<MultiObjectiveResult>(entry.run(c.request, target));
+    RunResult out = listed_run(entry, r, keep);
+    Front& front = *out.front;
+    front.x.resize(r.x.rows(), static_cast<Eigen::Index>(keep.size()));
     for (std::size_t k = 0; k < keep.size(); ++k)
-        out.x.col(static_cast<Eigen::Index>(k)) = r.x.col(static_cast<Eigen::Index>(keep[k]));
-    if (problem.is_grid()) {
-        std::visit(
-            [&](const auto& target) {
-                using T = std::decay_t<decltype(target)>;
-                if constexpr (std::is_same_v<T, MoGridLine> || std::is_same_v<T, MoGridFree>) {
-                    T decoder = target;
-                    for (Eigen::Index j = 0; j < out.x.cols(); ++j) {
-                        auto [path, legal] = decoder.path(column(std::as_const(out.x), j));
-                        out.paths.push_back(std::move(path));
-                        out.feasible.push_back(legal ? 1 : 0);
-                    }
+        front.x.col(static_cast<Eigen::Index>(k)) = r.x.col(static_cast<Eigen::Index>(keep[k]));
+    std::visit(
+        [&](const auto& problem) {
+            using T = std::decay_t<decltype(problem)>;
+            if constexpr (std::is_same_v<T, MoGridLine> || std::is_same_v<T, MoGridFree>) {
+                T decoder = problem;
+                for (Eigen::Index j = 0; j < front.x.cols(); ++j) {
+                    auto [path, legal] = decoder.path(column(std::as_const(front.x), j));
+                    front.paths.push_back(std::move(path));
+                    front.feasible.push_back(legal ? 1 : 0);
                 }
-            },
-            problem.prepared().box()->problem);
-    }
+            }
+        },
+        p.mo_box()->problem);
     return out;
 }
 
-std::string front_json(const MoRunResult& r) {
+std::string front_json(const Front& r) {
     const auto column = [](const Matrix& m, Eigen::Index j) {
         return json_array(std::vector<double>(m.col(j).data(), m.col(j).data() + m.rows()));
     };
@@ -349,8 +328,8 @@ std::string front_json(const MoRunResult& r) {
     return "[" + points + "]";
 }
 
-void check_quality(const MoProblem& problem) {
-    if (problem.is_grid() || !std::holds_alternative<MoBenchmarkSpec>(problem.prepared().spec)) return;
+void check_quality(const Problem& problem) {
+    if (problem.objectives() < 2 || !std::holds_alternative<ContinuousSpec>(problem.spec())) return;
     const std::size_t m = problem.objectives(), most = pareto::exact_hypervolume_points(m);
     if (m <= 3) return;
     const auto points = static_cast<std::size_t>(problem.reference_front().cols());
@@ -361,12 +340,12 @@ void check_quality(const MoProblem& problem) {
                         m, points, m, most));
 }
 
-MoQuality quality(const MoProblem& problem, const Matrix& f) {
+FrontQuality quality(const Problem& problem, const Matrix& f) {
     const Matrix& front = problem.reference_front();
     require(front.cols() > 0, "problem", "the reference front is empty (the goal cannot be reached)");
     require(f.rows() == front.rows(), "front",
             fmt::format("the set has {} objectives, the problem {}", f.rows(), front.rows()));
-    MoQuality q;
+    FrontQuality q;
     const auto m = front.rows();
     const Eigen::VectorXd ideal = front.rowwise().minCoeff(), nadir = front.rowwise().maxCoeff();
     Eigen::VectorXd range = nadir - ideal;

@@ -2,15 +2,28 @@
 // A problem as the engine holds it once prepared (engine/problem.cpp): its spec and the targets its
 // runs receive. Inside the engine only; front ends hold a Problem.
 #include <cstddef>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "engine/specs.hpp"
 #include "engine/target.hpp"
 #include "framework/error.hpp"
 
 namespace pride::engine {
+
+/// The reference front of a problem of several objectives (M rows, one column per point), made at
+/// first use and shared by the problem's copies: the analytic front sampled, or a grid's exact
+/// front with its paths.
+struct ReferenceFront {
+    std::once_flag once;
+    Matrix values;
+    std::vector<grid::Path> paths;
+    std::optional<InputError> error;
+};
 
 struct Prepared {
     ProblemSpec spec;
@@ -26,9 +39,21 @@ struct Prepared {
     // optimum need no encoding.
     std::optional<InputError> encoding_error;
 
+    // Several objectives: their names (f1, f2, ..., or a grid's criteria), the grid's criteria and
+    // clearance field, and the reference front; empty for one objective.
+    std::vector<std::string> objective_names;
+    grid::Criteria criteria{};
+    std::shared_ptr<const grid::MapClearance> clearance;
+    std::shared_ptr<ReferenceFront> front;
+
+    std::size_t objectives() const { return objective_names.empty() ? 1 : objective_names.size(); }
     const BoxTarget* box() const { return searched ? std::get_if<BoxTarget>(&*searched) : nullptr; }
     const ChainTarget* chain() const { return searched ? std::get_if<ChainTarget>(&*searched) : nullptr; }
     const GridTarget* grid() const { return whole_grid ? std::get_if<GridTarget>(&*whole_grid) : nullptr; }
+    const MoBoxTarget* mo_box() const { return searched ? std::get_if<MoBoxTarget>(&*searched) : nullptr; }
+    const MoChainTarget* mo_chain() const { return searched ? std::get_if<MoChainTarget>(&*searched) : nullptr; }
+    /// Searched on cell chains (the chain encoding), with one objective or several.
+    bool on_chains() const { return chain() != nullptr || mo_chain() != nullptr; }
 };
 
 /// A continuous function's known minimum at its instance, or a callback's f_opt: the reference of
@@ -40,5 +65,16 @@ void require_problem_memory(const ContinuousSpec& c);
 
 /// Why the grid spec's objective has no exact optimum (for messages).
 std::string no_optimum(const GridSpec& g);
+
+// Problems of several objectives (engine/multiobjective.cpp).
+
+/// True for a spec of several objectives: a catalog problem of several (zdt1..dtlz7), a grid with
+/// criteria, a callback of M >= 2.
+bool several_objectives(const ProblemSpec& spec);
+/// Fills `out` (its spec set) with the targets of a problem of several objectives; InputError naming
+/// the field that is wrong.
+void prepare_several(Prepared& out);
+/// The reference front of `p` (InputError for a callback, or a grid's front beyond memory).
+const ReferenceFront& reference_front_of(const Prepared& p);
 
 }  // namespace pride::engine

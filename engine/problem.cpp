@@ -115,8 +115,12 @@ namespace {
 std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
     auto out = std::make_shared<Prepared>();
     out->spec = spec;
-    if (const auto* c = std::get_if<ContinuousSpec>(&spec)) {
+    if (several_objectives(spec)) {
+        prepare_several(*out);
+    } else if (const auto* c = std::get_if<ContinuousSpec>(&spec)) {
         require_problem_memory(*c);
+        require(c->objectives == 0 || c->objectives == 1, "objectives",
+                fmt::format("{} has one objective, got {}", c->function, c->objectives));
         out->name = c->function;
         out->dimension = static_cast<std::size_t>(c->dim);
         out->searched.emplace(std::in_place_type<BoxTarget>,
@@ -208,7 +212,8 @@ GridSpec planned_grid(const AlgorithmEntry& entry, const GridSpec& g, const Para
 
 std::shared_ptr<const Prepared> Problem::planned_for(const AlgorithmSpec& algorithm) const {
     const auto* g = std::get_if<GridSpec>(&prepared_->spec);
-    if (!g) return prepared_;
+    // Several objectives are searched on the spec's encoding, whatever the algorithm.
+    if (!g || prepared_->objectives() > 1) return prepared_;
     const AlgorithmEntry& entry = algorithms().at(algorithm.name);
     const GridSpec plan = planned_grid(entry, *g, algorithm.params);
     if (plan.encoding == g->encoding && plan.connector == g->connector && plan.init == g->init) return prepared_;
@@ -228,7 +233,22 @@ std::shared_ptr<const Prepared> Problem::planned_for(const AlgorithmSpec& algori
 }
 
 bool Problem::is_grid() const {
-    return prepared_->grid() != nullptr;
+    return std::holds_alternative<GridSpec>(prepared_->spec);
+}
+bool Problem::is_chain() const {
+    return prepared_->on_chains();
+}
+std::size_t Problem::objectives() const {
+    return prepared_->objectives();
+}
+std::vector<std::string> Problem::objective_names() const {
+    return prepared_->objective_names;
+}
+const Matrix& Problem::reference_front() const {
+    return reference_front_of(*prepared_).values;
+}
+const std::vector<grid::Path>& Problem::reference_paths() const {
+    return reference_front_of(*prepared_).paths;
 }
 bool Problem::additive() const {
     return prepared_->grid() && prepared_->grid()->additive();
@@ -239,6 +259,8 @@ bool Problem::has_optimum() const {
 Problem Problem::with_oracle() const {
     const auto* g = std::get_if<GridSpec>(&prepared_->spec);
     require(g != nullptr, "oracle", "only grid problems have an exact optimum");
+    require(prepared_->grid() != nullptr, "oracle",
+            "a grid problem of several objectives is measured against its exact front, not an optimum");
     require_oracle(*g, *prepared_->grid());
     auto copy = std::make_shared<Prepared>(*prepared_);  // the targets share their tables
     std::get<GridSpec>(copy->spec).oracle = true;

@@ -6,8 +6,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/specs.hpp"
+#include "problems/grid/path.hpp"
 
 namespace pride::engine {
 
@@ -20,6 +22,23 @@ class Problem {
     explicit Problem(const ProblemSpec& spec);
 
     bool is_grid() const;
+    /// A grid searched on cell chains (the chain encoding); dimension() is then 0.
+    bool is_chain() const;
+    /// M: 1, or the number of objectives of a problem of several (ContinuousSpec::objectives,
+    /// GridSpec::objectives, CallbackSpec::objectives).
+    std::size_t objectives() const;
+    /// f1, f2, ... for boxes; the criteria's names (length, turns, angle_penalty, clearance) on grids;
+    /// empty for one objective.
+    std::vector<std::string> objective_names() const;
+    /// The reference front of a problem of several objectives (M rows, one column per point),
+    /// computed once and shared by copies: the analytic front sampled with at most
+    /// reference_points points (catalog problems), or the grid's exact front (ParetoSearch).
+    /// InputError for a callback or one objective (none), and when a grid's front does not fit in
+    /// memory.
+    const Matrix& reference_front() const;
+    static constexpr std::size_t reference_points = 1000;
+    /// On grids, the exact front's paths, in the columns' order (after reference_front()).
+    const std::vector<grid::Path>& reference_paths() const;
     /// A grid problem whose objective is a sum of step and turn costs (the oracle's objectives).
     bool additive() const;
     /// A grid problem whose objective has an exact optimum: every additive one (the oracle) and
@@ -31,7 +50,8 @@ class Problem {
     /// The dimension of the box an algorithm searches (grids: of the encoding's genotype; chains: 0).
     std::size_t dimension() const;
     const ProblemSpec& spec() const;
-    /// The problem's display name: the function, "grid" or the callback's name.
+    /// The problem's display name: the function (a catalog problem of several objectives: as the
+    /// catalog names it), "grid" or the callback's name.
     std::string name() const;
     /// A continuous function's instance (0: as defined; BBOB: COCO's, from 1); 0 for others.
     std::int64_t instance() const;

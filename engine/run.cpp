@@ -126,6 +126,10 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
                        const IterationObserver* observer) {
     const std::shared_ptr<const Prepared> planned = problem.planned_for(algorithm);
     const Prepared& p = *planned;
+    if (p.objectives() > 1) {
+        require(!observer, "observer", "only runs of one objective are observed");
+        return run_several(algorithm, p, budget, seed);
+    }
     CheckedRun checked = checked_run(algorithm, p, budget);
     const AlgorithmEntry& entry = *checked.entry;
     RunRequest& request = checked.request;

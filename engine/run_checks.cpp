@@ -211,7 +211,11 @@ CheckedRun checked_run(const AlgorithmSpec& algorithm, const Prepared& p, const 
 }
 
 void check(const AlgorithmSpec& algorithm, const Problem& problem, const Budget& budget) {
-    checked_run(algorithm, *problem.planned_for(algorithm), budget);
+    const std::shared_ptr<const Prepared> planned = problem.planned_for(algorithm);
+    if (planned->objectives() > 1)
+        check_several(algorithm, *planned, budget);
+    else
+        checked_run(algorithm, *planned, budget);
 }
 
 void check_before_building(const AlgorithmSpec& algorithm, const ProblemSpec& spec, std::int64_t dimension,

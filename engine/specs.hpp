@@ -29,12 +29,14 @@ inline constexpr double max_weight = 1e9;
 /// what does not fit in memory is refused before anything is allocated.
 inline constexpr std::int64_t max_budget = 1'000'000'000'000'000;
 
-/// A registered continuous function in a dimension and an instance (empty: the function's default,
-/// 0 = as defined; 1 for BBOB).
+/// A registered function in a dimension: a continuous function (sphere, bbob-f1, cec2017-f3) at an
+/// instance (empty: the function's default, 0 = as defined; 1 for BBOB), or a problem of several
+/// objectives (zdt1..zdt6, dtlz1..dtlz7; problems/multiobjective/catalog.hpp), which has no instance.
 struct ContinuousSpec {
     std::string function;
-    std::int64_t dim = 0;
+    std::int64_t dim = 0;  // several objectives: 0 for the paper's n
     std::optional<std::int64_t> instance = std::nullopt;
+    std::int64_t objectives = 0;  // M; 0: the function's own (1; 2 for ZDT, 3 for DTLZ, which takes any)
 };
 
 /// One planning problem on a grid. The map is shared and already parsed (and inflated), so that
@@ -64,15 +66,26 @@ struct GridSpec {
     // When set, counts every evaluation of the objective by every run of the problem (a check of
     // the runs' `evaluations` from outside: tests, pride path --count-calls).
     std::shared_ptr<std::atomic<std::int64_t>> objective_calls;
+    // Several criteria at once: two to four of length, turns, angle, clearance (a problem of several
+    // objectives, searched on the spec's encoding: line by default, free, or chain with init walk or
+    // sitp); empty: the one `objective`. objective, weights, lambda and oracle are then left alone.
+    std::string objectives;
+    std::int64_t clearance_bands = 3;  // B of clearance.hpp
+    std::int64_t clearance_width = 1;  // w of clearance.hpp
 };
 
 /// A user function on a box: type erasure at this edge only. `batch`, when set, evaluates every
-/// column of a matrix (one point per column) in one call, and is used instead of `scalar`.
+/// column of a matrix (one point per column) in one call, and is used instead of `scalar`. With
+/// several objectives, `values` fills a point's M values and `values_batch` the M rows of a matrix
+/// for every column of the points (used instead of `values` when set).
 struct CallbackSpec {
     std::string name = "callback";
     std::vector<double> lower, upper;
     std::function<double(std::span<const double>)> scalar;
     std::function<void(MatrixView, std::span<double>)> batch;
+    std::int64_t objectives = 1;  // M
+    std::function<void(std::span<const double>, std::span<double>)> values = nullptr;
+    std::function<void(MatrixView, Matrix&)> values_batch = nullptr;
     /// The functions may be called from several threads at once (Budget::threads > 1). A run with
     /// threads asks for it and refuses a callback without it (Python functions hold the GIL: leave
     /// it false for them).

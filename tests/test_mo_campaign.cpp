@@ -52,8 +52,8 @@ TEST_CASE("a multi-objective campaign stores each run's front and its hypervolum
     campaign::Campaign c = campaign::read_campaign(file);
     REQUIRE(c.problems.size() == 3);
     for (const auto& p : c.problems) CHECK(p.is_multiobjective());
-    CHECK(c.problems[1].multiobjective->objectives() == 3);
-    CHECK(c.problems[0].multiobjective->dimension() == 12);
+    CHECK(c.problems[1].problem->objectives() == 3);
+    CHECK(c.problems[0].problem->dimension() == 12);
     const auto summary = campaign::run_campaign(c, dir.file("mo.sqlite"), 2);
     CHECK(summary.stored == 12);
     CHECK(campaign::run_campaign(c, dir.file("mo.sqlite"), 2).stored == 0);  // resumed: nothing left
@@ -61,24 +61,24 @@ TEST_CASE("a multi-objective campaign stores each run's front and its hypervolum
     // The stored record is the engine's run: the same front, the value 1 - its hypervolume ratio.
     for (const auto& p : c.problems) {
         const campaign::RunRecord r = campaign::run_one(p, c.algorithms[1], c.budget, 2);
-        const auto direct = engine::run(c.algorithms[1].spec, *p.multiobjective, c.budget, 2);
-        const auto q = engine::quality(*p.multiobjective, direct.f);
+        const auto direct = engine::run(c.algorithms[1].spec, *p.problem, c.budget, 2);
+        const auto q = engine::quality(*p.problem, direct.front->f);
         INFO(p.id);
         CHECK(r.best == 1.0 - q.hypervolume_ratio);
         CHECK(r.evaluations == 1500);
         const auto doc = test::parse_json(r.solution);
         CHECK(doc.at("hypervolume_ratio").number == q.hypervolume_ratio);
         const auto& front = doc.at("front").items;
-        REQUIRE(front.size() == static_cast<std::size_t>(direct.f.cols()));
+        REQUIRE(front.size() == static_cast<std::size_t>(direct.front->f.cols()));
         for (std::size_t j = 0; j < front.size(); ++j)
             for (std::size_t i = 0; i < front[j].at("f").items.size(); ++i)
                 CHECK(front[j].at("f").items[i].number ==
-                      direct.f(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
-        if (p.multiobjective->is_grid()) {
+                      direct.front->f(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+        if (p.problem->is_grid()) {
             CHECK(doc.at("exact_found").kind == test::JsonValue::Kind::number);
             CHECK(front.front().has("path"));
         } else {
-            CHECK(front.front().at("x").items.size() == p.multiobjective->dimension());
+            CHECK(front.front().at("x").items.size() == p.problem->dimension());
         }
     }
     const auto report = report::load_report(dir.file("mo.sqlite"));
@@ -102,7 +102,7 @@ TEST_CASE("a multi-objective campaign stores each run's front and its hypervolum
         CHECK(row.runs == 2);
         CHECK(row.igd_plus == Approx(0.5 * (igd[0] + igd[1])).epsilon(1e-12));
         CHECK(row.hypervolume_ratio == Approx(0.5 * (ratio[0] + ratio[1])).epsilon(1e-12));
-        CHECK(row.exact_found.has_value() == p.multiobjective->is_grid());
+        CHECK(row.exact_found.has_value() == p.problem->is_grid());
     }
     const auto text = test::run_pride("report " + dir.file("mo.sqlite"));
     CHECK(text.status == 0);

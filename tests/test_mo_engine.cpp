@@ -23,8 +23,8 @@
 using namespace pride;
 using engine::AlgorithmSpec;
 using engine::Budget;
-using engine::MoBenchmarkSpec;
-using engine::MoProblem;
+using engine::ContinuousSpec;
+using engine::Problem;
 
 namespace {
 
@@ -52,11 +52,11 @@ std::shared_ptr<const grid::GridMap> walled_map() {
     }));
 }
 
-engine::MoGridSpec walled_spec(const std::string& objectives) {
-    engine::MoGridSpec s;
-    s.grid.map = walled_map();
-    s.grid.start = {0, 0};
-    s.grid.goal = {11, 11};
+engine::GridSpec walled_spec(const std::string& objectives) {
+    engine::GridSpec s;
+    s.map = walled_map();
+    s.start = {0, 0};
+    s.goal = {11, 11};
     s.objectives = objectives;
     return s;
 }
@@ -115,7 +115,7 @@ TEST_CASE("a catalog problem is the problem class it names") {
 }
 
 TEST_CASE("a multi-objective run spends its budget exactly and reruns bit for bit") {
-    const MoProblem zdt1(MoBenchmarkSpec{"zdt1", 0, 0});
+    const Problem zdt1(ContinuousSpec{"zdt1", 0, std::nullopt, 0});
     for (const char* name : {"nsga2", "nsga3", "moead", "smsemoa"}) {
         INFO(name);
         const AlgorithmSpec a{name, {}};
@@ -123,20 +123,20 @@ TEST_CASE("a multi-objective run spends its budget exactly and reruns bit for bi
         CHECK(r.evaluations == 2001);
         CHECK(r.algorithm == name);
         const auto again = engine::run(a, zdt1, evaluations(2001), 7);
-        CHECK(again.f == r.f);
-        CHECK(again.x == r.x);
+        CHECK(again.front->f == r.front->f);
+        CHECK(again.front->x == r.front->x);
         const auto other = engine::run(a, zdt1, evaluations(2001), 8);
-        CHECK(other.f != r.f);
+        CHECK(other.front->f != r.front->f);
         // The set is non-dominated, distinct, in lexicographic order, and each value is the problem's.
-        REQUIRE(r.f.cols() > 0);
-        CHECK(pareto::nondominated(r.f).size() == static_cast<std::size_t>(r.f.cols()));
+        REQUIRE(r.front->f.cols() > 0);
+        CHECK(pareto::nondominated(r.front->f).size() == static_cast<std::size_t>(r.front->f.cols()));
         const multiobjective::Zdt1 direct(30);
-        for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
+        for (Eigen::Index j = 0; j < r.front->f.cols(); ++j) {
             std::vector<double> f(2);
-            direct.evaluate(column(std::as_const(r.x), j), f);
-            CHECK(f[0] == r.f(0, j));
-            CHECK(f[1] == r.f(1, j));
-            if (j > 0) CHECK(r.f(0, j - 1) < r.f(0, j));
+            direct.evaluate(column(std::as_const(r.front->x), j), f);
+            CHECK(f[0] == r.front->f(0, j));
+            CHECK(f[1] == r.front->f(1, j));
+            if (j > 0) CHECK(r.front->f(0, j - 1) < r.front->f(0, j));
         }
     }
 }
@@ -154,9 +154,9 @@ TEST_CASE("the algorithms approach the analytic fronts (hypervolume ratio, IGD+)
                          Case{"moead", "zdt1", 25000, 0.95},      // see below
                          Case{"nsga3", "dtlz2", 30000, 0.92}}) {  // 0.943
         INFO(c.algo << " on " << c.problem);
-        const MoProblem p(MoBenchmarkSpec{c.problem, 0, 0});
+        const Problem p(ContinuousSpec{c.problem, 0, std::nullopt, 0});
         const auto r = engine::run(AlgorithmSpec{c.algo, {}}, p, evaluations(c.evals), 1);
-        const auto q = engine::quality(p, r.f);
+        const auto q = engine::quality(p, r.front->f);
         CHECK(q.hypervolume_ratio > c.least_ratio);
         CHECK(q.hypervolume_ratio <= 1.0 + 1e-9);
         CHECK(q.igd_plus < 0.05);
@@ -165,7 +165,7 @@ TEST_CASE("the algorithms approach the analytic fronts (hypervolume ratio, IGD+)
 }
 
 TEST_CASE("the quality of the reference front itself is perfect") {
-    const MoProblem p(MoBenchmarkSpec{"dtlz1", 0, 3});
+    const Problem p(ContinuousSpec{"dtlz1", 0, std::nullopt, 3});
     const Matrix& front = p.reference_front();
     const auto q = engine::quality(p, front);
     CHECK(q.hypervolume_ratio == Approx(1.0).epsilon(1e-12));
@@ -176,13 +176,13 @@ TEST_CASE("the quality of the reference front itself is perfect") {
 
 TEST_CASE("a grid problem's objectives are its paths' criteria, and its reference is the exact front") {
     const auto spec = walled_spec("length,turns,clearance");
-    const MoProblem p(spec);
+    const Problem p(spec);
     CHECK(p.is_grid());
     CHECK(p.objectives() == 3);
     CHECK(p.objective_names() == std::vector<std::string>{"length", "turns", "clearance"});
     const Matrix& front = p.reference_front();
-    const auto exact = grid::pareto_front(*spec.grid.map, spec.grid.start, spec.grid.goal,
-                                          grid::parse_criteria("length,turns,clearance"));
+    const auto exact =
+        grid::pareto_front(*spec.map, spec.start, spec.goal, grid::parse_criteria("length,turns,clearance"));
     REQUIRE(static_cast<std::size_t>(front.cols()) == exact.size());
     for (std::size_t j = 0; j < exact.size(); ++j) {
         CHECK(front(0, static_cast<Eigen::Index>(j)) == exact[j].steps.value());
@@ -198,59 +198,60 @@ TEST_CASE("on a grid every point of a run is a path it decodes to, scored as the
     for (const char* encoding : {"line", "free"}) {
         INFO(encoding);
         auto spec = walled_spec("length,turns");
-        spec.grid.encoding = encoding;
-        spec.grid.objective_calls = std::make_shared<std::atomic<std::int64_t>>(0);
-        const MoProblem p(spec);
+        spec.encoding = encoding;
+        spec.objective_calls = std::make_shared<std::atomic<std::int64_t>>(0);
+        const Problem p(spec);
         const auto r = engine::run(AlgorithmSpec{"nsga2", {}}, p, evaluations(20000), 3);
         CHECK(r.evaluations == 20000);
-        CHECK(spec.grid.objective_calls->load() == 20000);
-        REQUIRE(r.paths.size() == static_cast<std::size_t>(r.f.cols()));
-        for (std::size_t j = 0; j < r.paths.size(); ++j) {
-            CHECK(r.feasible[j] == 1);
-            CHECK(grid::path_violation(*spec.grid.map, r.paths[j], spec.grid.start, spec.grid.goal).empty());
-            const auto m = grid::metrics(r.paths[j]);
-            CHECK(r.f(0, static_cast<Eigen::Index>(j)) == Approx(m.length).epsilon(1e-14));
-            CHECK(r.f(1, static_cast<Eigen::Index>(j)) == m.turns);
+        CHECK(spec.objective_calls->load() == 20000);
+        REQUIRE(r.front->paths.size() == static_cast<std::size_t>(r.front->f.cols()));
+        for (std::size_t j = 0; j < r.front->paths.size(); ++j) {
+            CHECK(r.front->feasible[j] == 1);
+            CHECK(grid::path_violation(*spec.map, r.front->paths[j], spec.start, spec.goal).empty());
+            const auto m = grid::metrics(r.front->paths[j]);
+            CHECK(r.front->f(0, static_cast<Eigen::Index>(j)) == Approx(m.length).epsilon(1e-14));
+            CHECK(r.front->f(1, static_cast<Eigen::Index>(j)) == m.turns);
         }
         // Every found point is weakly dominated by a point of the exact front.
         const Matrix& front = p.reference_front();
-        for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
+        for (Eigen::Index j = 0; j < r.front->f.cols(); ++j) {
             bool covered = false;
             for (Eigen::Index k = 0; k < front.cols() && !covered; ++k)
-                covered = pareto::weakly_dominates(column(front, k), column(std::as_const(r.f), j));
+                covered = pareto::weakly_dominates(column(front, k), column(std::as_const(r.front->f), j));
             CHECK(covered);
         }
-        const auto q = engine::quality(p, r.f);
+        const auto q = engine::quality(p, r.front->f);
         REQUIRE(q.exact_found.has_value());
         CHECK(*q.exact_found >= 1);
     }
 }
 
 TEST_CASE("a user's multi-objective function: scalar and batch forms give the same run") {
-    engine::MoCallbackSpec scalar;
+    engine::CallbackSpec scalar;
     scalar.name = "schaffer";
     scalar.lower = {-10.0};
     scalar.upper = {10.0};
-    scalar.scalar = [](std::span<const double> x, std::span<double> f) {
+    scalar.objectives = 2;
+    scalar.values = [](std::span<const double> x, std::span<double> f) {
         f[0] = x[0] * x[0];
         f[1] = (x[0] - 2.0) * (x[0] - 2.0);
     };
-    engine::MoCallbackSpec batch = scalar;
-    batch.scalar = nullptr;
-    batch.batch = [](MatrixView x, Matrix& f) {
+    engine::CallbackSpec batch = scalar;
+    batch.values = nullptr;
+    batch.values_batch = [](MatrixView x, Matrix& f) {
         for (Eigen::Index j = 0; j < x.cols(); ++j) {
             f(0, j) = x(0, j) * x(0, j);
             f(1, j) = (x(0, j) - 2.0) * (x(0, j) - 2.0);
         }
     };
-    const auto a = engine::run(AlgorithmSpec{"nsga2", {}}, MoProblem(scalar), evaluations(3000), 5);
-    const auto b = engine::run(AlgorithmSpec{"nsga2", {}}, MoProblem(batch), evaluations(3000), 5);
-    CHECK(a.f == b.f);
+    const auto a = engine::run(AlgorithmSpec{"nsga2", {}}, Problem(scalar), evaluations(3000), 5);
+    const auto b = engine::run(AlgorithmSpec{"nsga2", {}}, Problem(batch), evaluations(3000), 5);
+    CHECK(a.front->f == b.front->f);
     CHECK(a.evaluations == 3000);
     // Schaffer's front: x in [0, 2].
-    CHECK(a.x.minCoeff() >= -1e-3);
-    CHECK(a.x.maxCoeff() <= 2.0 + 1e-3);
-    throws_naming([&] { engine::quality(MoProblem(scalar), a.f); }, {"problem", "reference front"});
+    CHECK(a.front->x.minCoeff() >= -1e-3);
+    CHECK(a.front->x.maxCoeff() <= 2.0 + 1e-3);
+    throws_naming([&] { engine::quality(Problem(scalar), a.front->f); }, {"problem", "reference front"});
 }
 
 TEST_CASE("ask and tell drives a multi-objective algorithm: M values per point, the run's own result") {
@@ -260,12 +261,13 @@ TEST_CASE("ask and tell drives a multi-objective algorithm: M values per point, 
             f(1, j) = (x(0, j) - 2.0) * (x(0, j) - 2.0);
         }
     };
-    engine::MoCallbackSpec spec;
+    engine::CallbackSpec spec;
     spec.name = "bounds";
     spec.lower = {-10.0};
     spec.upper = {10.0};
-    spec.batch = schaffer;
-    const auto direct = engine::run(AlgorithmSpec{"smsemoa", {}}, MoProblem(spec), evaluations(1500), 9);
+    spec.objectives = 2;
+    spec.values_batch = schaffer;
+    const auto direct = engine::run(AlgorithmSpec{"smsemoa", {}}, Problem(spec), evaluations(1500), 9);
     engine::AskTell at(AlgorithmSpec{"smsemoa", {}}, {-10.0}, {10.0}, evaluations(1500), 9, 2);
     CHECK(at.objectives() == 2);
     std::int64_t told = 0;
@@ -281,9 +283,8 @@ TEST_CASE("ask and tell drives a multi-objective algorithm: M values per point, 
         at.tell(std::span<const double>(f.data(), static_cast<std::size_t>(f.size())));
     }
     CHECK(told == 1500);
-    CHECK(at.front_result().f == direct.f);
-    CHECK(at.front_result().x == direct.x);
-    throws_naming([&] { (void)at.result(); }, {"result", "front_result"});
+    CHECK(at.result().front->f == direct.front->f);
+    CHECK(at.result().front->x == direct.front->x);
     throws_naming(
         [] {
             engine::AskTell(AlgorithmSpec{"nsga2", {}}, {0.0}, {1.0}, evaluations(10), 1, 1);
@@ -297,7 +298,7 @@ TEST_CASE("ask and tell drives a multi-objective algorithm: M values per point, 
 }
 
 TEST_CASE("multi-objective errors name what is wrong") {
-    const MoProblem zdt1(MoBenchmarkSpec{"zdt1", 0, 0});
+    const Problem zdt1(ContinuousSpec{"zdt1", 0, std::nullopt, 0});
     throws_naming(
         [&] {
             engine::run(AlgorithmSpec{"pso", {}}, zdt1, evaluations(100), 1);
@@ -308,11 +309,16 @@ TEST_CASE("multi-objective errors name what is wrong") {
             engine::run(AlgorithmSpec{"nsga2", {}}, engine::Problem(engine::ContinuousSpec{"sphere", 5}), {}, 1);
         },
         {"algo", "nsga2", "multi-objective"});
-    throws_naming([] { engine::Problem(engine::ContinuousSpec{"zdt1", 30}); }, {"problem", "zdt1", "pride front"});
-    throws_naming([] { MoProblem(MoBenchmarkSpec{"zdt9", 0, 0}); }, {"zdt9", "zdt1"});
-    throws_naming([] { MoProblem(MoBenchmarkSpec{"zdt1", 0, 3}); }, {"zdt1", "2 objectives"});
-    throws_naming([] { MoProblem(MoBenchmarkSpec{"dtlz2", 2, 3}); }, {"dtlz2", "n >= M"});
-    throws_naming([] { MoProblem(MoBenchmarkSpec{"zdt1", -1, 0}); }, {"dim"});
+    throws_naming(
+        [] {
+            Problem(ContinuousSpec{"sphere", 5, std::nullopt, 2});
+        },
+        {"objectives", "sphere", "one objective"});
+    throws_naming([] { Problem(ContinuousSpec{"zdt1", 30, 1}); }, {"instance", "zdt1"});
+    throws_naming([] { Problem(ContinuousSpec{"zdt9", 0, std::nullopt, 0}); }, {"problem", "unknown", "zdt9"});
+    throws_naming([] { Problem(ContinuousSpec{"zdt1", 0, std::nullopt, 3}); }, {"zdt1", "2 objectives"});
+    throws_naming([] { Problem(ContinuousSpec{"dtlz2", 2, std::nullopt, 3}); }, {"dtlz2", "n >= M"});
+    throws_naming([] { Problem(ContinuousSpec{"zdt1", -1, std::nullopt, 0}); }, {"dim"});
     Budget target = evaluations(100);
     target.target = 0.0;
     throws_naming([&] { engine::check(AlgorithmSpec{"nsga2", {}}, zdt1, target); }, {"target"});
@@ -331,20 +337,59 @@ TEST_CASE("multi-objective errors name what is wrong") {
         },
         {"smsemoa", "w_start"});
     auto tree = walled_spec("length,turns");
-    tree.grid.encoding = "tree";
-    throws_naming([&] { MoProblem{tree}; }, {"encoding", "tree"});
-    throws_naming([] { MoProblem{walled_spec("length")}; }, {"objectives"});
-    throws_naming([] { MoProblem{walled_spec("length,speed")}; }, {"objectives", "speed"});
+    tree.encoding = "tree";
+    throws_naming([&] { Problem{tree}; }, {"encoding", "tree"});
+    throws_naming([] { Problem{walled_spec("length")}; }, {"objectives"});
+    throws_naming([] { Problem{walled_spec("length,speed")}; }, {"objectives", "speed"});
     auto bands = walled_spec("length,clearance");
     bands.clearance_bands = 64;
-    throws_naming([&] { MoProblem{bands}; }, {"clearance_bands"});
-    engine::MoCallbackSpec none;
+    throws_naming([&] { Problem{bands}; }, {"clearance_bands"});
+    engine::CallbackSpec none;
     none.lower = {0.0};
     none.upper = {1.0};
-    throws_naming([&] { MoProblem{none}; }, {"function"});
-    none.scalar = [](std::span<const double>, std::span<double>) {};
+    none.objectives = 2;
+    throws_naming([&] { Problem{none}; }, {"function", "2 objectives"});
+    none.objectives = 0;
+    throws_naming([&] { Problem{none}; }, {"objectives"});
+    none.objectives = 2;
+    none.f_opt = 0.0;
+    none.values = [](std::span<const double>, std::span<double>) {};
+    throws_naming([&] { Problem{none}; }, {"f_opt"});
+    none.f_opt.reset();
     none.upper = {-1.0};
-    throws_naming([&] { MoProblem{none}; }, {"bounds"});
+    throws_naming([&] { Problem{none}; }, {"bounds"});
+}
+
+TEST_CASE("one problem and one run serve one objective and several") {
+    const Problem sphere(ContinuousSpec{"sphere", 3});
+    CHECK(sphere.objectives() == 1);
+    CHECK(sphere.objective_names().empty());
+    const auto one = engine::run(AlgorithmSpec{"pso", {}}, sphere, evaluations(200), 1);
+    CHECK_FALSE(one.front.has_value());
+    CHECK(one.best_f >= 0.0);
+    throws_naming([&] { (void)sphere.reference_front(); }, {"problem", "one objective"});
+
+    const Problem zdt1(ContinuousSpec{"zdt1", 0});
+    CHECK(zdt1.objectives() == 2);
+    CHECK(zdt1.dimension() == 30);
+    CHECK(zdt1.objective_names() == std::vector<std::string>{"f1", "f2"});
+    const auto several = engine::run(AlgorithmSpec{"nsga2", {}}, zdt1, evaluations(200), 1);
+    REQUIRE(several.front.has_value());
+    CHECK(std::isnan(several.best_f));
+    CHECK(several.evaluations == 200);
+    CHECK(several.front->f.rows() == 2);
+    throws_naming(
+        [&] {
+            engine::run(AlgorithmSpec{"nsga2", {}}, zdt1, evaluations(200), 1,
+                        [](const IterationView&) { return true; });
+        },
+        {"observer", "one objective"});
+
+    const Problem grid(walled_spec("length,turns"));
+    CHECK(grid.is_grid());
+    CHECK(grid.objectives() == 2);
+    CHECK_FALSE(grid.has_optimum());
+    throws_naming([&] { (void)grid.with_oracle(); }, {"oracle", "exact front"});
 }
 
 TEST_CASE("pride front prints a front, its quality, and as JSON the same numbers") {
@@ -358,11 +403,11 @@ TEST_CASE("pride front prints a front, its quality, and as JSON the same numbers
     const auto doc = test::parse_json(json.out);
     CHECK(doc.at("evaluations").number == 3000);
     CHECK(doc.at("objectives").items.size() == 2);
-    const auto r =
-        engine::run(AlgorithmSpec{"nsga2", {}}, MoProblem(MoBenchmarkSpec{"zdt1", 0, 0}), evaluations(3000), 1);
-    REQUIRE(doc.at("front").items.size() == static_cast<std::size_t>(r.f.cols()));
+    const auto r = engine::run(AlgorithmSpec{"nsga2", {}}, Problem(ContinuousSpec{"zdt1", 0, std::nullopt, 0}),
+                               evaluations(3000), 1);
+    REQUIRE(doc.at("front").items.size() == static_cast<std::size_t>(r.front->f.cols()));
     for (std::size_t j = 0; j < doc.at("front").items.size(); ++j)
-        CHECK(doc.at("front").items[j].at("f").items[1].number == r.f(1, static_cast<Eigen::Index>(j)));
+        CHECK(doc.at("front").items[j].at("f").items[1].number == r.front->f(1, static_cast<Eigen::Index>(j)));
     const auto q = doc.at("quality");
     CHECK(q.at("hypervolume_ratio").number > 0.0);
     CHECK(q.at("reference_point").number == 1.1);
@@ -421,51 +466,50 @@ TEST_CASE("on chains NSGA-II plans with the chain operators: legal paths, exact 
     for (const char* init : {"walk", "sitp"}) {
         INFO(init);
         auto spec = walled_spec("length,turns,clearance");
-        spec.grid.encoding = "chain";
-        spec.grid.init = init;
-        spec.grid.objective_calls = std::make_shared<std::atomic<std::int64_t>>(0);
-        const MoProblem p(spec);
+        spec.encoding = "chain";
+        spec.init = init;
+        spec.objective_calls = std::make_shared<std::atomic<std::int64_t>>(0);
+        const Problem p(spec);
         CHECK(p.is_chain());
         CHECK(p.dimension() == 0);
         const auto r = engine::run(AlgorithmSpec{"nsga2", {}}, p, evaluations(20000), 5);
         CHECK(r.evaluations == 20000);
-        CHECK(spec.grid.objective_calls->load() == 20000);
-        CHECK(r.x.cols() == 0);
-        REQUIRE(r.paths.size() == static_cast<std::size_t>(r.f.cols()));
-        const grid::PathCriteria criteria(*spec.grid.map, grid::parse_criteria("length,turns,clearance"));
+        CHECK(spec.objective_calls->load() == 20000);
+        CHECK(r.front->x.cols() == 0);
+        REQUIRE(r.front->paths.size() == static_cast<std::size_t>(r.front->f.cols()));
+        const grid::PathCriteria criteria(*spec.map, grid::parse_criteria("length,turns,clearance"));
         std::vector<double> f(3);
-        for (std::size_t j = 0; j < r.paths.size(); ++j) {
-            CHECK(r.feasible[j] == 1);
-            CHECK(grid::path_violation(*spec.grid.map, r.paths[j], spec.grid.start, spec.grid.goal).empty());
-            criteria(r.paths[j], f);
+        for (std::size_t j = 0; j < r.front->paths.size(); ++j) {
+            CHECK(r.front->feasible[j] == 1);
+            CHECK(grid::path_violation(*spec.map, r.front->paths[j], spec.start, spec.goal).empty());
+            criteria(r.front->paths[j], f);
             for (Eigen::Index i = 0; i < 3; ++i)
-                CHECK(r.f(i, static_cast<Eigen::Index>(j)) == f[static_cast<std::size_t>(i)]);
+                CHECK(r.front->f(i, static_cast<Eigen::Index>(j)) == f[static_cast<std::size_t>(i)]);
         }
         // The exact front of this small map is found whole (the box encodings find a part of it).
-        const auto q = engine::quality(p, r.f);
+        const auto q = engine::quality(p, r.front->f);
         REQUIRE(q.exact_found.has_value());
         CHECK(*q.exact_found == q.reference_size);
         CHECK(q.hypervolume_ratio == Approx(1.0));
         // One seed, one result, bit for bit; another seed, another run.
         const auto again = engine::run(AlgorithmSpec{"nsga2", {}}, p, evaluations(20000), 5);
-        CHECK(again.f == r.f);
-        CHECK(again.paths == r.paths);
+        CHECK(again.front->f == r.front->f);
+        CHECK(again.front->paths == r.front->paths);
         const auto other = engine::run(AlgorithmSpec{"nsga2", {}}, p, evaluations(3000), 6);
         const auto first = engine::run(AlgorithmSpec{"nsga2", {}}, p, evaluations(3000), 5);
-        CHECK_FALSE((other.paths == first.paths && other.f == first.f));
+        CHECK_FALSE((other.front->paths == first.front->paths && other.front->f == first.front->f));
     }
 }
 
 TEST_CASE("on chains NSGA-III runs too, and the chain settings are checked") {
     auto spec = walled_spec("length,turns,angle");
-    spec.grid.encoding = "chain";
-    const MoProblem p(spec);
+    spec.encoding = "chain";
+    const Problem p(spec);
     const auto r =
         engine::run(AlgorithmSpec{"nsga3", params_of({"mutations=iqga", "shortcut=elbow"})}, p, evaluations(4000), 2);
     CHECK(r.evaluations == 4000);
-    CHECK_FALSE(r.paths.empty());
-    for (const auto& path : r.paths)
-        CHECK(grid::path_violation(*spec.grid.map, path, spec.grid.start, spec.grid.goal).empty());
+    CHECK_FALSE(r.front->paths.empty());
+    for (const auto& path : r.front->paths) CHECK(grid::path_violation(*spec.map, path, spec.start, spec.goal).empty());
 
     throws_naming(
         [&] {
@@ -494,19 +538,19 @@ TEST_CASE("on chains NSGA-III runs too, and the chain settings are checked") {
         },
         {"mutations", "sideways"});
     auto boxed = walled_spec("length,turns");
-    boxed.grid.encoding = "free";
+    boxed.encoding = "free";
     throws_naming(
         [&] {
-            engine::run(AlgorithmSpec{"nsga2", params_of({"mutations=iqga"})}, MoProblem(boxed), evaluations(100), 1);
+            engine::run(AlgorithmSpec{"nsga2", params_of({"mutations=iqga"})}, Problem(boxed), evaluations(100), 1);
         },
         {"mutations", "chains"});
     auto bad_init = walled_spec("length,turns");
-    bad_init.grid.encoding = "chain";
-    bad_init.grid.init = "uniform";
-    throws_naming([&] { MoProblem{bad_init}; }, {"init", "walk", "sitp"});
-    bad_init.grid.encoding = "line";
-    bad_init.grid.init = "sitp";
-    throws_naming([&] { MoProblem{bad_init}; }, {"init", "uniform"});
+    bad_init.encoding = "chain";
+    bad_init.init = "uniform";
+    throws_naming([&] { Problem{bad_init}; }, {"init", "walk", "sitp"});
+    bad_init.encoding = "line";
+    bad_init.init = "sitp";
+    throws_naming([&] { Problem{bad_init}; }, {"init", "uniform"});
 }
 
 TEST_CASE("pride front plans on chains from the command line") {
@@ -526,8 +570,8 @@ TEST_CASE("mo engine: a reference front beyond exact hypervolume's bound is refu
           "[mo][engine][sizes]") {
     // Before: a campaign of dtlz2 with 1000 objectives took 3.9 GB and ended as "internal error:
     // std::bad_alloc", leaving a store.
-    CHECK_NOTHROW(engine::check_quality(MoProblem(MoBenchmarkSpec{"dtlz2", 0, 5})));
-    CHECK_THROWS_WITH(engine::check_quality(MoProblem(MoBenchmarkSpec{"dtlz2", 0, 1000})),
+    CHECK_NOTHROW(engine::check_quality(Problem(ContinuousSpec{"dtlz2", 0, std::nullopt, 5})));
+    CHECK_THROWS_WITH(engine::check_quality(Problem(ContinuousSpec{"dtlz2", 0, std::nullopt, 1000})),
                       Catch::Contains("objectives: 1000 objectives: the hypervolume of the reference front (1000 "
                                       "points) is beyond what is computed exactly"));
     const test::TempDir dir;
@@ -545,7 +589,7 @@ TEST_CASE("mo engine: a reference front beyond exact hypervolume's bound is refu
 
 TEST_CASE("SMS-EMOA's population is refused before the run where its exact contributions cannot be computed") {
     // At 12 objectives exact contributions take at most 40 / 2 = 20 points: pop + 1 of them per step.
-    const MoProblem dtlz2(MoBenchmarkSpec{"dtlz2", 0, 12});
+    const Problem dtlz2(ContinuousSpec{"dtlz2", 0, std::nullopt, 12});
     throws_naming(
         [&] {
             engine::check(AlgorithmSpec{"smsemoa", {}}, dtlz2, evaluations(300));
@@ -562,5 +606,5 @@ TEST_CASE("SMS-EMOA's population is refused before the run where its exact contr
     CHECK(r.evaluations == 300);
     // Three objectives have no bound: the sweep computes any number.
     CHECK_NOTHROW(engine::check(AlgorithmSpec{"smsemoa", params_of({"pop=5000"})},
-                                MoProblem(MoBenchmarkSpec{"dtlz2", 0, 3}), evaluations(10000)));
+                                Problem(ContinuousSpec{"dtlz2", 0, std::nullopt, 3}), evaluations(10000)));
 }

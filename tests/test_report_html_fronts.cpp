@@ -136,9 +136,9 @@ TEST_CASE("report --html: attainment surfaces, median fronts and grid paths of m
         REQUIRE(fronts.algorithms.size() == 2);
         const auto& p = *std::find_if(campaign.problems.begin(), campaign.problems.end(),
                                       [&](const campaign::CampaignProblem& q) { return q.id == problem; });
-        CHECK(fronts.objectives == p.multiobjective->objective_names());
-        const engine::MoProblem rebuilt = html::stored_problem(s, extra, problem, fronts.objectives);
-        CHECK(rebuilt.reference_front() == p.multiobjective->reference_front());
+        CHECK(fronts.objectives == p.problem->objective_names());
+        const engine::Problem rebuilt = html::stored_problem(s, extra, problem, fronts.objectives);
+        CHECK(rebuilt.reference_front() == p.problem->reference_front());
         for (const html::AlgorithmFronts& a : fronts.algorithms) {
             INFO(problem << " " << a.algorithm);
             const std::vector<Run> runs = stored_runs(store, problem, a.algorithm);

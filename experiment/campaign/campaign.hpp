@@ -29,16 +29,16 @@ struct CampaignProblem {
     // The evaluations of each run when the campaign budgets per dimension (set by prepare()).
     std::optional<std::int64_t> evaluations;
     std::string digest;  // problem_digest(), set by prepare()
-    // A problem of several objectives (engine/multiobjective.hpp) when set: its objectives (a
-    // grid's criteria, "length,turns,clearance"; a catalog problem's M, "3", or "" for the
-    // default), `spec` holding the rest (a ContinuousSpec naming zdt1..dtlz7 with its dim, 0 for
-    // the paper's; a GridSpec with the map, ends and encoding). prepare() builds `multiobjective`
-    // instead of `problem`; each run stores its front and, as its value, the hypervolume gap.
+    // A problem of several objectives (engine/multiobjective.hpp) when set: its objectives as the
+    // campaign file gives them (a grid's criteria, "length,turns,clearance"; a catalog problem's M,
+    // "3", or "" for the default), `spec` holding the rest (a ContinuousSpec naming zdt1..dtlz7
+    // with its dim, 0 for the paper's; a GridSpec with the map, ends and encoding). prepare() puts
+    // them into the spec it builds `problem` from (problem_spec()); each run stores its front and,
+    // as its value, the hypervolume gap.
     std::optional<std::string> objectives;
-    std::shared_ptr<const engine::MoProblem> multiobjective;
     bool is_multiobjective() const { return objectives.has_value(); }
     /// The dimension of the box its algorithms search (once prepared).
-    std::size_t dimension() const { return multiobjective ? multiobjective->dimension() : problem->dimension(); }
+    std::size_t dimension() const { return problem->dimension(); }
 };
 
 /// COCO's 51 target precisions: a continuous problem with a known optimum f_opt records in every

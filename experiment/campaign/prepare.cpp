@@ -25,10 +25,6 @@ using engine::ContinuousSpec;
 using engine::GridSpec;
 using engine::load_map;
 using engine::max_budget;
-using engine::MoBenchmarkSpec;
-using engine::MoGridSpec;
-using engine::MoProblem;
-using engine::MoProblemSpec;
 using engine::Problem;
 using engine::ProblemSpec;
 using storage::file_name;
@@ -48,22 +44,18 @@ const continuous::cec::SuiteRules* cec_rules_of(const ContinuousSpec& f) {
 
 }  // namespace
 
-MoProblemSpec multiobjective_spec(const CampaignProblem& p) {
-    if (const auto* g = std::get_if<GridSpec>(&p.spec)) {
-        MoGridSpec s;
-        s.grid = *g;
-        s.objectives = *p.objectives;
-        return s;
-    }
-    const auto& f = std::get<ContinuousSpec>(p.spec);
-    MoBenchmarkSpec s{f.function, f.dim, 0};
-    if (!p.objectives->empty()) {
+ProblemSpec problem_spec(const CampaignProblem& p) {
+    ProblemSpec spec = p.spec;
+    if (!p.objectives) return spec;
+    if (auto* g = std::get_if<GridSpec>(&spec)) {
+        g->objectives = *p.objectives;
+    } else if (!p.objectives->empty()) {
         const std::string& m = *p.objectives;
         require(m.find_first_not_of("0123456789") == std::string::npos && m.size() <= 6, "objectives",
                 "expected the number of objectives M, got '" + m + "'");
-        s.objectives = std::stoll(m);
+        std::get<ContinuousSpec>(spec).objectives = std::stoll(m);
     }
-    return s;
+    return spec;
 }
 
 double problem_memory(const ProblemSpec& spec) {
@@ -205,7 +197,7 @@ void prepare(Campaign& c) {
                 g->oracle = false;
                 g->path_gaps = p.path_gaps;
                 if (p.is_multiobjective()) {
-                    p.multiobjective = std::make_shared<const MoProblem>(multiobjective_spec(p));
+                    p.problem = std::make_shared<const Problem>(problem_spec(p));
                 } else {
                     Problem problem(p.spec);
                     if (problem.has_optimum()) {
@@ -214,10 +206,8 @@ void prepare(Campaign& c) {
                     }
                     p.problem = std::make_shared<const Problem>(std::move(problem));
                 }
-            } else if (p.is_multiobjective()) {
-                p.multiobjective = std::make_shared<const MoProblem>(multiobjective_spec(p));
             } else {
-                p.problem = std::make_shared<const Problem>(p.spec);
+                p.problem = std::make_shared<const Problem>(problem_spec(p));
             }
             if (c.evaluations_per_dim) {
                 require(!std::holds_alternative<GridSpec>(p.spec), "evaluations_per_dim",
@@ -246,9 +236,9 @@ void prepare(Campaign& c) {
     }
     // A quality every run of a problem records must be computable before anything runs.
     for (const auto& p : c.problems) {
-        if (!p.multiobjective) continue;
+        if (!p.is_multiobjective()) continue;
         try {
-            check_quality(*p.multiobjective);
+            check_quality(*p.problem);
         } catch (const InputError& e) {
             throw InputError(where_of(c, p.line, "problem '" + p.id + "'"), e.what());
         }
@@ -257,10 +247,7 @@ void prepare(Campaign& c) {
         const std::string where = where_of(c, a.line, "algorithm '" + a.id + "'");
         for (const auto& p : c.problems) {
             try {
-                if (p.multiobjective)
-                    check(a.spec, *p.multiobjective, problem_budget(c.budget, p));
-                else
-                    check(a.spec, *p.problem, problem_budget(c.budget, p));
+                check(a.spec, *p.problem, problem_budget(c.budget, p));
             } catch (const InputError& e) {
                 throw InputError(where, "algorithm '" + a.id + "' on problem '" + p.id + "': " + e.what());
             }

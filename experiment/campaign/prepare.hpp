@@ -7,8 +7,9 @@
 
 namespace pride::campaign {
 
-/// A multi-objective problem's spec from its campaign entry (the map of a grid as loaded).
-engine::MoProblemSpec multiobjective_spec(const CampaignProblem& p);
+/// The spec a problem is built from: its campaign entry's, with the objectives of a problem of
+/// several (CampaignProblem::objectives) put into it (the map of a grid as loaded).
+engine::ProblemSpec problem_spec(const CampaignProblem& p);
 
 /// At most this many problems in one campaign (COCO's largest suites have a few thousand): a short
 /// instance list or suite must not start hours of building (each problem takes about 12 kB and

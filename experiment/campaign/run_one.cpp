@@ -15,7 +15,9 @@ namespace pride::campaign {
 using engine::AlgorithmEntry;
 using engine::algorithms;
 using engine::Budget;
+using engine::Front;
 using engine::front_json;
+using engine::FrontQuality;
 using engine::GridSpec;
 using engine::json_array;
 using engine::json_cells;
@@ -24,9 +26,7 @@ using engine::json_number;
 using engine::json_path_metrics;
 using engine::json_polyline;
 using engine::json_string;
-using engine::MoProblem;
-using engine::MoQuality;
-using engine::MoRunResult;
+using engine::Problem;
 using engine::quality;
 using engine::run;
 using engine::RunResult;
@@ -55,20 +55,21 @@ namespace {
 /// "exact_found" (grids), "front": [{"f": [...], "x": [...]} or, on grids, {"f", "legal", "path"}]}.
 RunRecord run_multiobjective(const CampaignProblem& p, const CampaignAlgorithm& a, const Budget& budget,
                              std::int64_t seed, RunRecord r) {
-    const MoProblem& problem = *p.multiobjective;
-    const MoRunResult result = run(a.spec, problem, problem_budget(budget, p), static_cast<std::uint64_t>(seed));
-    const MoQuality q = quality(problem, result.f);
+    const Problem& problem = *p.problem;
+    const RunResult result = run(a.spec, problem, problem_budget(budget, p), static_cast<std::uint64_t>(seed));
+    const Front& front = *result.front;
+    const FrontQuality q = quality(problem, front.f);
     const bool grid = problem.is_grid();
     std::string names;
     for (const auto& n : problem.objective_names()) names += (names.empty() ? "" : ", ") + json_string(n);
     r.solution = fmt::format(
         "{{\"objectives\": [{}], \"hypervolume_ratio\": {}, \"igd_plus\": {}, \"exact_found\": {}, \"front\": {}}}",
         names, json_number(q.hypervolume_ratio), json_number(q.igd_plus),
-        q.exact_found ? std::to_string(*q.exact_found) : std::string("null"), front_json(result));
+        q.exact_found ? std::to_string(*q.exact_found) : std::string("null"), front_json(front));
     r.best = 1.0 - q.hypervolume_ratio;
     // Feasible: a point found (on grids, a legal path).
-    r.feasible = grid ? std::any_of(result.feasible.begin(), result.feasible.end(), [](char c) { return c != 0; })
-                      : result.f.cols() > 0;
+    r.feasible = grid ? std::any_of(front.feasible.begin(), front.feasible.end(), [](char c) { return c != 0; })
+                      : front.f.cols() > 0;
     r.evaluations = result.evaluations;
     r.iterations = result.iterations;
     r.wall_ms = result.wall_ms;
@@ -86,7 +87,7 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
     r.problem = p.id;
     r.algorithm = a.id;
     r.seed = seed;
-    if (p.multiobjective) return run_multiobjective(p, a, budget, seed, std::move(r));
+    if (p.is_multiobjective()) return run_multiobjective(p, a, budget, seed, std::move(r));
     const std::optional<double> optimum = p.problem->optimum_value();
     Budget with_targets = problem_budget(budget, p);
     if (optimum)

@@ -113,29 +113,29 @@ ProblemFronts problem_fronts(const PageStore& extra, const std::string& problem)
     return out;
 }
 
-engine::MoProblem stored_problem(const storage::CampaignStore& s, const PageStore& extra, const std::string& problem,
-                                 const std::vector<std::string>& objectives) {
+engine::Problem stored_problem(const storage::CampaignStore& s, const PageStore& extra, const std::string& problem,
+                               const std::vector<std::string>& objectives) {
     const auto grid =
         std::find_if(extra.grids.begin(), extra.grids.end(), [&](const GridProblemInfo& g) { return g.id == problem; });
     if (grid != extra.grids.end()) {
         require(!grid->map.empty(), "map", "the map was given in code, not as a file");
-        engine::MoGridSpec spec;
+        engine::GridSpec spec;
         grid::MapReadOptions read;
         read.unknown_free = grid->unknown_free;
-        spec.grid.map = engine::load_map(grid->map, grid->inflate, read);
-        spec.grid.start = grid->start;
-        spec.grid.goal = grid->goal;
-        spec.grid.corner_cutting = grid->corner_cutting;
+        spec.map = engine::load_map(grid->map, grid->inflate, read);
+        spec.start = grid->start;
+        spec.goal = grid->goal;
+        spec.corner_cutting = grid->corner_cutting;
         spec.objectives = joined(objectives, ",");
-        return engine::MoProblem(spec);
+        return engine::Problem(spec);
     }
     require(s.problems.has_value(), "problem", "the store is from before problems were stored");
     const auto p = std::find_if(s.problems->begin(), s.problems->end(),
                                 [&](const storage::StoredProblem& q) { return q.id == problem; });
     require(p != s.problems->end() && p->function && engine::is_multiobjective_problem(*p->function), "problem",
             "the store does not name it as a problem of the multi-objective catalog");
-    return engine::MoProblem(
-        engine::MoBenchmarkSpec{*p->function, p->dim, static_cast<std::int64_t>(objectives.size())});
+    return engine::Problem(
+        engine::ContinuousSpec{*p->function, p->dim, std::nullopt, static_cast<std::int64_t>(objectives.size())});
 }
 
 void front_figures(Page& page, const storage::CampaignStore& s, const PageStore& extra, const std::string& problem) {
@@ -148,8 +148,8 @@ void front_figures(Page& page, const storage::CampaignStore& s, const PageStore&
     const auto& names = fronts.objectives;
     const std::size_t m = names.size();
 
-    // The reference front, rebuilt as the campaign had it (the same code: engine::MoProblem).
-    std::optional<engine::MoProblem> reference;
+    // The reference front, rebuilt as the campaign had it (the same code: engine::Problem).
+    std::optional<engine::Problem> reference;
     Matrix front;
     std::string reference_words;
     try {

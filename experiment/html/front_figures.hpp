@@ -50,8 +50,8 @@ ProblemFronts problem_fronts(const PageStore& extra, const std::string& problem)
 /// dimension, or its grid's map, start, goal and corner cutting; `objectives` as its runs name
 /// them), for its reference front. InputError saying why when it cannot be (a store from before
 /// problems were stored, a map given in code or gone).
-engine::MoProblem stored_problem(const storage::CampaignStore& s, const PageStore& extra, const std::string& problem,
-                                 const std::vector<std::string>& objectives);
+engine::Problem stored_problem(const storage::CampaignStore& s, const PageStore& extra, const std::string& problem,
+                               const std::vector<std::string>& objectives);
 
 /// Adds the figures of `problem` to the page, and notes under them for what cannot be drawn.
 void front_figures(Page& page, const storage::CampaignStore& s, const PageStore& extra, const std::string& problem);

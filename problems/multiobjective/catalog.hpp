@@ -49,6 +49,13 @@ inline const CatalogEntry* find_problem(std::string_view name) {
     return nullptr;
 }
 
+/// The catalog's names, comma-separated (for messages).
+inline std::string problem_names() {
+    std::string names;
+    for (const auto& c : kCatalog) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    return names;
+}
+
 /// One of the catalog's problems, chosen by name at construction.
 class Benchmark {
   public:
@@ -101,12 +108,9 @@ class Benchmark {
 
     static Any make(std::string_view name, std::size_t n, std::size_t m, std::string_view where) {
         const CatalogEntry* e = find_problem(name);
-        if (e == nullptr) {
-            std::string names;
-            for (const auto& c : kCatalog) names += (names.empty() ? "" : ", ") + std::string(c.name);
-            throw InputError(std::string(where),
-                             "unknown multi-objective problem '" + std::string(name) + "' (known: " + names + ")");
-        }
+        if (e == nullptr)
+            throw InputError(std::string(where), "unknown multi-objective problem '" + std::string(name) +
+                                                     "' (known: " + problem_names() + ")");
         const std::string w(name);
         if (name.starts_with("zdt")) {
             require(m == 0 || m == 2, w, "has 2 objectives, got " + std::to_string(m));

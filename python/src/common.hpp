@@ -217,7 +217,7 @@ py::array_t<double> point_array(std::span<const double> x);
 /// Copies of points, one per column, as an (n, dim) array, one per row.
 py::array_t<double> rows_array(MatrixView points);
 /// A multi-objective run's result as a dict (front.cpp): f (n, M), x (n, dim), the counts.
-py::dict front_result_dict(const engine::MoRunResult& r, std::size_t objectives);
+py::dict front_result_dict(const engine::RunResult& r, std::size_t objectives);
 py::array_t<int> path_array(const grid::Path& path);
 
 /// A cell (x, y) of integers; `where` names it in messages ("start", "problems[0]: goal").

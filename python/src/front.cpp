@@ -6,11 +6,12 @@
 #include "common.hpp"
 #include "engine/multiobjective.hpp"
 #include "framework/memory.hpp"
+#include "problems/multiobjective/catalog.hpp"
 
 namespace pride::python {
 namespace {
 
-py::object quality_dict(const engine::MoQuality& q) {
+py::object quality_dict(const engine::FrontQuality& q) {
     py::dict d;
     d["hypervolume"] = q.hypervolume;
     d["reference_hypervolume"] = q.reference_hypervolume;
@@ -24,12 +25,12 @@ py::object quality_dict(const engine::MoQuality& q) {
     return d;
 }
 
-py::dict front_dict(const engine::MoRunResult& r, const std::vector<std::string>& names) {
+py::dict front_dict(const engine::RunResult& r, const std::vector<std::string>& names) {
     py::dict d;
     d["algo"] = r.algorithm;
     d["objectives"] = names;
-    d["f"] = rows_array(r.f);
-    d["x"] = rows_array(r.x);
+    d["f"] = rows_array(r.front->f);
+    d["x"] = rows_array(r.front->x);
     d["evaluations"] = r.evaluations;
     d["iterations"] = r.iterations;
     d["wall_ms"] = r.wall_ms;
@@ -42,18 +43,17 @@ py::dict front_dict(const engine::MoRunResult& r, const std::vector<std::string>
 }
 
 /// A Python function of M objectives: f(x) -> M values, or with `vectorized` f(X) (n, dim) -> (n, M).
-engine::MoCallbackSpec mo_callback(const py::object& fn, bool vectorized, std::vector<double> lower,
-                                   std::vector<double> upper, std::int64_t m,
-                                   const std::shared_ptr<UserError>& errors) {
+engine::CallbackSpec mo_callback(const py::object& fn, bool vectorized, std::vector<double> lower,
+                                 std::vector<double> upper, std::int64_t m, const std::shared_ptr<UserError>& errors) {
     auto function = std::make_shared<py::object>(fn);
-    engine::MoCallbackSpec spec;
+    engine::CallbackSpec spec;
     spec.name = "function";
     spec.lower = std::move(lower);
     spec.upper = std::move(upper);
     spec.objectives = m;
     const auto count = static_cast<py::ssize_t>(m);
     if (!vectorized) {
-        spec.scalar = [function, errors, count](std::span<const double> x, std::span<double> f) {
+        spec.values = [function, errors, count](std::span<const double> x, std::span<double> f) {
             python_call(errors, [&] {
                 const auto v = real_array((*function)(point_array(x)), "function: its result (M numbers)");
                 require(v.size() == count, "function",
@@ -62,7 +62,7 @@ engine::MoCallbackSpec mo_callback(const py::object& fn, bool vectorized, std::v
             });
         };
     } else {
-        spec.batch = [function, errors, count](MatrixView points, Matrix& values) {
+        spec.values_batch = [function, errors, count](MatrixView points, Matrix& values) {
             python_call(errors, [&] {
                 const auto n = static_cast<py::ssize_t>(points.cols());
                 const auto v =
@@ -79,9 +79,9 @@ engine::MoCallbackSpec mo_callback(const py::object& fn, bool vectorized, std::v
 }
 
 /// Runs with the GIL released, stopped by Ctrl-C and the interpreter's exit, as run_released.
-engine::MoRunResult mo_run_released(const engine::AlgorithmSpec& algorithm, const engine::MoProblem& problem,
-                                    const engine::Budget& budget, std::uint64_t seed, bool calls_python,
-                                    const std::shared_ptr<UserError>& errors) {
+engine::RunResult mo_run_released(const engine::AlgorithmSpec& algorithm, const engine::Problem& problem,
+                                  const engine::Budget& budget, std::uint64_t seed, bool calls_python,
+                                  const std::shared_ptr<UserError>& errors) {
     engine::Budget stoppable = budget;
     stoppable.stop = UserError::flag(errors);
     try {
@@ -92,15 +92,15 @@ engine::MoRunResult mo_run_released(const engine::AlgorithmSpec& algorithm, cons
     }
 }
 
-py::dict finish(const engine::MoRunResult& r, const engine::MoProblem& problem, bool reference, std::uint64_t seed) {
+py::dict finish(const engine::RunResult& r, const engine::Problem& problem, bool reference, std::uint64_t seed) {
     py::dict d = front_dict(r, problem.objective_names());
     d["problem"] = problem.name();
     d["seed"] = seed;
     if (reference) {
-        std::optional<engine::MoQuality> q;
+        std::optional<engine::FrontQuality> q;
         {
             py::gil_scoped_release release;  // a grid's exact front can take a while
-            q = engine::quality(problem, r.f);
+            q = engine::quality(problem, r.front->f);
         }
         d["quality"] = quality_dict(*q);
     } else {
@@ -116,13 +116,16 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
     auto errors = std::make_shared<UserError>();
     const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     const engine::Budget b = budget(evals, iters, std::nullopt, wall_ms);
-    engine::MoProblemSpec spec;
+    engine::ProblemSpec spec;
     const bool function = !py::isinstance<py::str>(problem);
     if (!function) {
         require(bounds.is_none(), "bounds",
                 "only for Python functions: " + problem.cast<std::string>() + " has its own box");
         require(!vectorized, "vectorized", "only for Python functions");
-        spec = engine::MoBenchmarkSpec{problem.cast<std::string>(), dim.value_or(0), objectives.value_or(0)};
+        const auto name = problem.cast<std::string>();
+        require(engine::is_multiobjective_problem(name), "problem",
+                "unknown multi-objective problem '" + name + "' (known: " + multiobjective::problem_names() + ")");
+        spec = engine::ContinuousSpec{name, dim.value_or(0), std::nullopt, objectives.value_or(0)};
     } else {
         if (!PyCallable_Check(problem.ptr()))
             throw py::type_error("problem: expected a multi-objective problem's name (str) or a callable, got " +
@@ -136,7 +139,7 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
         spec = mo_callback(problem, vectorized, std::move(lower), std::move(upper), m, errors);
         reference = false;  // a function has no reference front
     }
-    std::optional<engine::MoProblem> prepared;
+    std::optional<engine::Problem> prepared;
     prepared.emplace(spec);
     engine::check(algorithm, *prepared, b);
     if (reference) engine::check_quality(*prepared);
@@ -151,21 +154,21 @@ py::dict plan_front(const Grid& g, const py::object& start, const py::object& go
                     std::optional<std::int64_t> iters, std::optional<double> wall_ms, std::uint64_t seed,
                     bool reference, const py::dict& params) {
     auto errors = std::make_shared<UserError>();
-    engine::MoGridSpec spec;
-    spec.grid.map = g.map;
-    spec.grid.start = grid_cell(start, "start");
-    spec.grid.goal = grid_cell(goal, "goal");
-    spec.grid.encoding = encoding;
-    spec.grid.init = init;
-    spec.grid.connector = connector;
-    spec.grid.waypoints = waypoints;
-    spec.grid.corner_cutting = corner_cutting;
+    engine::GridSpec spec;
+    spec.map = g.map;
+    spec.start = grid_cell(start, "start");
+    spec.goal = grid_cell(goal, "goal");
+    spec.encoding = encoding;
+    spec.init = init;
+    spec.connector = connector;
+    spec.waypoints = waypoints;
+    spec.corner_cutting = corner_cutting;
     spec.objectives = objectives;
     spec.clearance_bands = clearance_bands;
     spec.clearance_width = clearance_width;
     const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     const engine::Budget b = budget(evals, iters, std::nullopt, wall_ms);
-    std::optional<engine::MoProblem> problem;
+    std::optional<engine::Problem> problem;
     {
         py::gil_scoped_release release;  // reachability, the encoding's tables, the clearance
         problem.emplace(spec);
@@ -174,10 +177,11 @@ py::dict plan_front(const Grid& g, const py::object& start, const py::object& go
     const auto r = mo_run_released(algorithm, *problem, b, seed, false, errors);
     py::dict d = finish(r, *problem, reference, seed);
     py::list paths;
-    for (const auto& p : r.paths) paths.append(path_array(p));
+    for (const auto& p : r.front->paths) paths.append(path_array(p));
     d["paths"] = paths;
-    py::array_t<bool> legal(static_cast<py::ssize_t>(r.feasible.size()));
-    for (std::size_t j = 0; j < r.feasible.size(); ++j) legal.mutable_data()[j] = r.feasible[j] != 0;
+    const std::vector<char>& feasible = r.front->feasible;
+    py::array_t<bool> legal(static_cast<py::ssize_t>(feasible.size()));
+    for (std::size_t j = 0; j < feasible.size(); ++j) legal.mutable_data()[j] = feasible[j] != 0;
     d["legal"] = legal;
     return d;
 }
@@ -193,7 +197,7 @@ std::function<void(std::int64_t)> multiobjective_box_check(std::int64_t objectiv
     };
 }
 
-py::dict front_result_dict(const engine::MoRunResult& r, std::size_t objectives) {
+py::dict front_result_dict(const engine::RunResult& r, std::size_t objectives) {
     std::vector<std::string> names;
     for (std::size_t i = 1; i <= objectives; ++i) names.push_back("f" + std::to_string(i));
     return front_dict(r, names);

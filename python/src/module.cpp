@@ -230,20 +230,12 @@ class Optimizer {
     }
 
     py::dict result() {
-        if (live().objectives() > 1) {
-            const engine::MoRunResult* r = nullptr;
-            {
-                py::gil_scoped_release release;
-                r = &live().front_result();
-            }
-            return front_result_dict(*r, live().objectives());
-        }
         const engine::RunResult* r = nullptr;
         {
             py::gil_scoped_release release;
             r = &live().result();
         }
-        return result_dict(*r);
+        return live().objectives() > 1 ? front_result_dict(*r, live().objectives()) : result_dict(*r);
     }
 
     std::size_t dimension() { return live().dimension(); }
