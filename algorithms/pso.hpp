@@ -17,6 +17,10 @@
 //   (2) v_id <- clamp(v_id, -vmax_d, vmax_d)                          (VelocityClamp policy)
 //   (3) x_id <- x_id + v_id, then the Bounds policy puts x back into the box
 //   (4) p_i <- x_i if f(x_i) < f(p_i);  g <- the best p after the whole sweep (synchronous update)
+// On a constrained problem (framework/constraints.hpp) the comparisons of (4) and the choice of g
+// are the configured handler's (`constraints`: Deb's feasibility rules, the default, as Deb (2000)
+// applies them to selection and as the constrained PSO literature to p and g; the epsilon level;
+// a static penalty), on (f, v) pairs; the epsilon level's generation is the iteration.
 // Defaults (docs/algorithms.md): w 0.9 -> 0.4 linearly, c1 = c2 = 2, vmax = 0.2 (high - low),
 // clamping to the box.
 // Decided by this project where the papers are silent: initial velocities are U(-vmax, vmax);
@@ -39,6 +43,7 @@
 #include "algorithms/parts/common/run_setup.hpp"
 #include "algorithms/parts/swarm/velocity.hpp"
 #include "framework/bounds.hpp"
+#include "framework/constraint_order.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
 #include "framework/problem.hpp"
@@ -104,6 +109,7 @@ class Pso {
     VelocityClamp velocity_clamp{};
     Bounds bounds{};
     Init init{};
+    ConstraintHandling constraints{};  // constrained problems only
 
     std::string name() const { return id; }
 
@@ -111,6 +117,7 @@ class Pso {
         require(population >= 2, name(), "population must be >= 2, got " + std::to_string(population));
         velocity.validate(name());
         velocity_clamp.validate(name());
+        constraints.validate(name());
     }
 
     template <BoxProblem P, Observer O = NoObserver>
@@ -124,21 +131,25 @@ class Pso {
         RunState& state = run.state;
         Matrix& x = run.x;
         std::vector<double>& fx = run.fx;
+        std::vector<double>& vx = run.vx;
         const auto n = x.cols();
+        auto order = order_for<P>(constraints);
+        order.start(vx);
 
         Matrix v(x.rows(), n), p = x;
-        std::vector<double> fp = fx, vmax(dim), g(dim);
+        std::vector<double> fp = fx, vp = vx, vmax(dim), g(dim);
         for (std::size_t d = 0; d < dim; ++d) vmax[d] = velocity_clamp.limit(lo[d], hi[d]);
         for (Eigen::Index i = 0; i < n; ++i)
             for (std::size_t d = 0; d < dim; ++d) v(static_cast<Eigen::Index>(d), i) = rng.uniform(-vmax[d], vmax[d]);
         auto refresh_global_best = [&] {
-            const auto best = column(p, std::min_element(fp.begin(), fp.end()) - fp.begin());
+            const auto best = column(p, static_cast<Eigen::Index>(best_index(order, fp, vp)));
             std::copy(best.begin(), best.end(), g.begin());
         };
         refresh_global_best();
 
         for (std::int64_t t = 0; !state.done(); ++t) {
             const auto [a, b1, b2] = velocity(t, horizon);
+            order.generation(t + 1);
             // Every particle moves (1)-(3), then the swarm is evaluated in one batch; g is fixed
             // within an iteration, so this is the same run as evaluating particle by particle.
             const auto moving = std::min<Eigen::Index>(n, static_cast<Eigen::Index>(state.remaining()));
@@ -164,13 +175,15 @@ class Pso {
                 if constexpr (!clamp) bounds(column(x, i), lo, hi);
             }
             rng = local;
-            state.evaluate_columns(problem, x.leftCols(moving),
-                                   std::span<double>(fx).first(static_cast<std::size_t>(moving)));
+            state.evaluate_population(problem, x.leftCols(moving),
+                                      std::span<double>(fx).first(static_cast<std::size_t>(moving)),
+                                      std::span<double>(vx).first(static_cast<std::size_t>(moving)));
             for (Eigen::Index i = 0; i < moving; ++i) {
                 const auto ui = static_cast<std::size_t>(i);
-                if (fx[ui] < fp[ui]) {  // (4)
+                if (order.better(fx[ui], vx[ui], fp[ui], vp[ui])) {  // (4)
                     p.col(i) = x.col(i);
                     fp[ui] = fx[ui];
+                    vp[ui] = vx[ui];
                 }
             }
             refresh_global_best();

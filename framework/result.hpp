@@ -2,6 +2,7 @@
 // What every run reports, whatever the algorithm: the best point ever evaluated and its value,
 // the evaluations and iterations used, the best value after each iteration, and the wall time.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "framework/coco_trace.hpp"
@@ -14,6 +15,11 @@ template <class Solution = std::vector<double>>
 struct BasicResult {
     Solution best_x;      // a point: the genotype, which an Encoded problem's decode() turns into the solution
     double best_f = 0.0;  // +inf when no evaluation gave a finite value
+    // Constrained problems (framework/constraints.hpp): the best point's violation (0: feasible;
+    // best_f is then the best feasible value, else the least violating point's f), and the
+    // evaluation that first found a feasible point (empty: none, or no constraints).
+    double best_violation = 0.0;
+    std::optional<std::int64_t> first_feasible;
     std::int64_t evaluations = 0;
     std::int64_t iterations = 0;  // completed iterations after the initial population
     /// history[k]: best value after iteration k (k = 0 is the initial population), and

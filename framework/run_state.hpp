@@ -2,6 +2,12 @@
 // The run driver every algorithm shares: the evaluation guard (exact budget, NaN/inf never best,
 // the best point ever evaluated), the stopping rules, the history and the observer calls, and the
 // wall clock. An algorithm's loop is then only its own equations.
+//
+// On a constrained problem (framework/constraints.hpp) one evaluation gives f and the point's
+// violation v, counted once. The run's best point is the best by Deb's feasibility rules, whatever
+// handler the algorithm compares with: the best feasible point, or while there is none the least
+// violating one. The best value that stopping rules, targets, traces and the history see is the
+// best feasible f (+inf until a feasible point is found).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -12,6 +18,7 @@
 #include <vector>
 
 #include "framework/coco_trace.hpp"
+#include "framework/constraints.hpp"
 #include "framework/observer.hpp"
 #include "framework/problem.hpp"
 #include "framework/result.hpp"
@@ -109,6 +116,41 @@ class BasicRunState {
         return n;
     }
 
+    /// The same for a constrained problem: f into `values` and each point's violation into
+    /// `violations` (+inf past the budget), one counted evaluation per point.
+    template <ConstrainedProblem P>
+    Eigen::Index evaluate_columns(P& problem, MatrixView points, std::span<double> values,
+                                  std::span<double> violations) requires is_point {
+        const Eigen::Index n = std::min<Eigen::Index>(points.cols(), static_cast<Eigen::Index>(remaining()));
+        const auto k = problem.constraint_counts().total();
+        if (constraint_values_.size() != k) constraint_values_.assign(k, 0.0);  // once per run
+        for (Eigen::Index j = 0; j < n; ++j) {
+            const std::span<const double> x(points.col(j).data(), static_cast<std::size_t>(points.rows()));
+            const double f = sanitize(problem.evaluate_constrained(x, constraint_values_));
+            const double v = problem.violation(constraint_values_);
+            const double vs = std::isnan(v) ? kInf : v;
+            values[static_cast<std::size_t>(j)] = f;
+            violations[static_cast<std::size_t>(j)] = vs;
+            record_constrained(x, f, vs);
+        }
+        for (auto j = static_cast<std::size_t>(n); j < static_cast<std::size_t>(points.cols()); ++j) {
+            values[j] = kInf;
+            violations[j] = kInf;
+        }
+        return n;
+    }
+
+    /// One evaluation of a population's columns on any problem: values, and on a constrained one
+    /// violations too (left as they are otherwise: 0 for every point).
+    template <BoxProblem P>
+    Eigen::Index evaluate_population(P& problem, MatrixView points, std::span<double> values,
+                                     std::span<double> violations) requires is_point {
+        if constexpr (ConstrainedProblem<P>)
+            return evaluate_columns(problem, points, values, violations);
+        else
+            return evaluate_columns(problem, points, values);
+    }
+
     bool exhausted() const noexcept { return progress_.evaluations >= limit_; }
     std::int64_t remaining() const noexcept { return limit_ - progress_.evaluations; }
     /// True once a stopping rule holds or the budget is spent.
@@ -149,6 +191,11 @@ class BasicRunState {
         r.trace_targets = std::move(trace_.targets());
         r.trace_evaluations = std::move(trace_.evaluations());
         r.checkpoints = std::move(checkpoints_);
+        if (constrained_) {
+            if (!have_feasible_) r.best_f = infeasible_best_f_;
+            r.best_violation = best_violation_;
+            if (first_feasible_ > 0) r.first_feasible = first_feasible_;
+        }
         return r;
     }
 
@@ -165,6 +212,30 @@ class BasicRunState {
         const auto& wanted = termination_.recorded_evaluations;
         next_checkpoint_ = checkpoints_.size() < wanted.size() ? wanted[checkpoints_.size()]
                                                                : std::numeric_limits<std::int64_t>::max();
+    }
+
+    /// After a counted evaluation of a constrained point: Deb's best point, the best feasible value.
+    void record_constrained(std::span<const double> x, double f, double v) {
+        ++progress_.evaluations;
+        constrained_ = true;
+        const bool feasible = v == 0.0;
+        bool improved_value = false;
+        if (feasible) {
+            if (first_feasible_ == 0) first_feasible_ = progress_.evaluations;
+            improved_value = f < progress_.best;
+            if (!have_feasible_ || improved_value) {
+                have_feasible_ = true;
+                best_violation_ = 0.0;
+                std::copy(x.begin(), x.end(), best_x_.begin());
+            }
+            if (improved_value) improved(f);
+        } else if (!have_feasible_ && v < best_violation_) {
+            best_violation_ = v;
+            infeasible_best_f_ = f;
+            std::copy(x.begin(), x.end(), best_x_.begin());
+        }
+        trace_.record(progress_.evaluations, progress_.best, improved_value);
+        checkpoint();
     }
 
     /// A new best value (rare): the targets it reaches are recorded with the evaluation count.
@@ -186,6 +257,11 @@ class BasicRunState {
     std::vector<TracePoint> checkpoints_;
     std::int64_t next_checkpoint_ = std::numeric_limits<std::int64_t>::max();
     bool started_ = false;
+    // Constrained problems only: the constraint values of the point being evaluated, Deb's best.
+    std::vector<double> constraint_values_;
+    bool constrained_ = false, have_feasible_ = false;
+    double best_violation_ = kInf, infeasible_best_f_ = kInf;
+    std::int64_t first_feasible_ = 0;
 };
 
 using RunState = BasicRunState<>;

@@ -52,13 +52,14 @@ RunStart<Solution> start_run(const Algorithm& algorithm, const Termination& term
     return {horizon, Rng(seed), BasicRunState<Solution>(termination, dimension)};
 }
 
-/// A box run once its initial population is in: x (one column per individual) and its fitness
-/// fx, iteration 0 recorded and shown to the observer.
+/// A box run once its initial population is in: x (one column per individual), its fitness fx
+/// and violations vx (framework/constraints.hpp; 0 for every point of a problem without
+/// constraints), iteration 0 recorded and shown to the observer.
 struct BoxRun : RunStart<> {
     std::span<const double> lo, hi;  // the problem's box (the run's copy of the problem owns it)
     std::size_t dim = 0;
     Matrix x;
-    std::vector<double> fx;
+    std::vector<double> fx, vx;
 };
 
 template <class Algorithm, BoxProblem P, class O>
@@ -70,11 +71,12 @@ BoxRun start_box_run(const Algorithm& algorithm, P& problem, const Termination& 
                problem.upper(),
                problem.dimension(),
                Matrix(static_cast<Eigen::Index>(problem.dimension()), static_cast<Eigen::Index>(algorithm.population)),
-               std::vector<double>(static_cast<std::size_t>(algorithm.population))};
+               std::vector<double>(static_cast<std::size_t>(algorithm.population)),
+               std::vector<double>(static_cast<std::size_t>(algorithm.population), 0.0)};
     seed_noise(problem, seed);
     algorithm.init(problem, run.rng, run.x);
     for (Eigen::Index i = 0; i < run.x.cols(); ++i) algorithm.bounds(column(run.x, i), run.lo, run.hi);
-    run.state.evaluate_columns(problem, run.x, run.fx);
+    run.state.evaluate_population(problem, run.x, run.fx, run.vx);
     run.state.end_iteration(observer, run.x, run.fx);
     return run;
 }

@@ -1,0 +1,211 @@
+// Constraints (framework/constraints.hpp) and their handlers (framework/constraint_handlers.hpp,
+// constraint_order.hpp): the violation as CEC 2006 and 2020 define it, each handler on hand-worked
+// cases from its paper's definition, the run guard's count and its best point by Deb's rules, and
+// PSO on a constrained problem under each handler.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <vector>
+
+#include "algorithms/pso.hpp"
+#include "framework/constraint_handlers.hpp"
+#include "framework/constraint_order.hpp"
+#include "framework/constraints.hpp"
+#include "framework/run_state.hpp"
+
+using namespace pride;
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+/// min x1^2 + x2^2 subject to g(x) = 1 - x1 - x2 <= 0 on [-2, 2]^2: the optimum is 0.5 at
+/// (0.5, 0.5). Counts its calls (shared by copies) so that a test sees every evaluation.
+struct Disc {
+    std::vector<double> lo{-2.0, -2.0}, hi{2.0, 2.0};
+    std::shared_ptr<std::int64_t> constrained_calls = std::make_shared<std::int64_t>(0);
+    std::shared_ptr<std::int64_t> plain_calls = std::make_shared<std::int64_t>(0);
+    std::size_t dimension() const { return 2; }
+    std::span<const double> lower() const { return lo; }
+    std::span<const double> upper() const { return hi; }
+    double evaluate(std::span<const double> x) {
+        ++*plain_calls;
+        return x[0] * x[0] + x[1] * x[1];
+    }
+    ConstraintCounts constraint_counts() const { return {1, 0}; }
+    double evaluate_constrained(std::span<const double> x, std::span<double> c) {
+        ++*constrained_calls;
+        c[0] = 1.0 - x[0] - x[1];
+        return x[0] * x[0] + x[1] * x[1];
+    }
+    double violation(std::span<const double> c) const { return mean_violation(c, constraint_counts()); }
+};
+static_assert(ConstrainedProblem<Disc>);
+
+Matrix points_of(std::initializer_list<std::pair<double, double>> xs) {
+    Matrix m(2, static_cast<Eigen::Index>(xs.size()));
+    Eigen::Index j = 0;
+    for (const auto& [a, b] : xs) {
+        m(0, j) = a;
+        m(1, j++) = b;
+    }
+    return m;
+}
+
+}  // namespace
+
+TEST_CASE("violation: the mean of the inequalities' and equalities' excess, as CEC 2006 and 2020", "[constraints]") {
+    const ConstraintCounts counts{2, 2};
+    // G = max(0, g): 1, 0; H = max(0, |h| - 1e-4): 0.4999, 0 (within the tolerance).
+    const std::vector<double> c{1.0, -2.0, -0.5, 5e-5};
+    CHECK(mean_violation(c, counts) == Approx((1.0 + 0.4999) / 4.0).epsilon(1e-15));
+    CHECK(mean_violation(c, counts, 0.0) == Approx((1.0 + 0.5 + 5e-5) / 4.0).epsilon(1e-15));
+    CHECK(mean_violation(std::vector<double>{-1.0, 0.0, 0.0, 0.0}, counts) == 0.0);
+    CHECK(mean_violation(std::vector<double>{std::nan(""), 0.0, 0.0, 0.0}, counts) == inf);
+    CHECK(mean_violation({}, ConstraintCounts{}) == 0.0);
+}
+
+TEST_CASE("Deb's feasibility rules, the epsilon level and a static penalty compare (f, v) pairs", "[constraints]") {
+    using constraints::deb_better;
+    CHECK(deb_better(5.0, 0.0, 1.0, 0.1));  // feasible beats infeasible, whatever f
+    CHECK_FALSE(deb_better(1.0, 0.1, 5.0, 0.0));
+    CHECK(deb_better(1.0, 0.0, 2.0, 0.0));  // both feasible: by f
+    CHECK(deb_better(9.0, 0.2, 1.0, 0.3));  // both infeasible: by v
+    CHECK_FALSE(deb_better(1.0, 0.0, 1.0, 0.0));
+
+    using constraints::epsilon_better;
+    CHECK(epsilon_better(2.0, 0.3, 3.0, 0.4, 0.5));  // both within epsilon: by f
+    CHECK(epsilon_better(2.0, 0.3, 1.0, 0.6, 0.5));  // one beyond: by v
+    CHECK(epsilon_better(1.0, 0.7, 2.0, 0.7, 0.5));  // equal violations: by f
+    CHECK(epsilon_better(5.0, 0.0, 1.0, 0.1, 0.0));  // epsilon 0: Deb's rules
+    CHECK_FALSE(epsilon_better(1.0, 0.1, 5.0, 0.0, 0.0));
+
+    CHECK(constraints::static_penalty(2.0, 0.5, 10.0) == 7.0);
+    CHECK(constraints::static_penalty(2.0, 0.0, 10.0) == 2.0);
+}
+
+TEST_CASE("the epsilon level starts at the theta-th violation and falls as (1 - t/Tc)^cp", "[constraints]") {
+    constraints::EpsilonSchedule s;
+    s.cp = 2.0;
+    s.tc = 10;
+    s.theta = 0.2;
+    s.start(std::vector<double>{9, 8, 7, 6, 5, 4, 3, 2, 1, 0});  // theta N = 2: the 2nd smallest, 1
+    CHECK(s.initial == 1.0);
+    CHECK(s.level(0) == 1.0);
+    CHECK(s.level(5) == 0.25);
+    CHECK(s.level(9) == Approx(0.01).epsilon(1e-12));
+    CHECK(s.level(10) == 0.0);
+    CHECK(s.level(11) == 0.0);
+    s.start(std::vector<double>{3.0});  // fewer points than 1 / theta: the first
+    CHECK(s.initial == 3.0);
+}
+
+TEST_CASE("stochastic ranking: by v with P_f = 0 (f among feasible points), by f with P_f = 1", "[constraints]") {
+    const std::vector<double> f{3, 1, 2, 0}, v{0, 0, 1, 0.5};
+    Rng rng(1);
+    std::vector<std::size_t> order{0, 1, 2, 3};
+    constraints::stochastic_rank(order, f, v, 0.0, 4, rng);
+    CHECK(order == std::vector<std::size_t>{1, 0, 3, 2});
+    order = {0, 1, 2, 3};
+    constraints::stochastic_rank(order, f, v, 1.0, 4, rng);
+    CHECK(order == std::vector<std::size_t>{3, 1, 2, 0});
+    // One draw per comparison: a sweep of 4 points is 3 draws; a second sweep stops (no swap).
+    Rng a(7), b(7);
+    order = {1, 0, 3, 2};
+    constraints::stochastic_rank(order, f, v, 0.0, 4, a);
+    for (int k = 0; k < 3; ++k) (void)b.uniform();
+    CHECK(a() == b());
+    // The same seed gives the same ranking at P_f = 0.45.
+    std::vector<std::size_t> o1(4), o2(4);
+    std::iota(o1.begin(), o1.end(), 0);
+    std::iota(o2.begin(), o2.end(), 0);
+    Rng r1(3), r2(3);
+    constraints::stochastic_rank(o1, f, v, 0.45, 4, r1);
+    constraints::stochastic_rank(o2, f, v, 0.45, 4, r2);
+    CHECK(o1 == o2);
+}
+
+TEST_CASE("the adaptive penalty (APM) on a hand-worked population", "[constraints]") {
+    // <f> = 20; <v> = (1, 2/3); sum <v>^2 = 13/9; k = 20 / (13/9) <v> = (180/13, 120/13).
+    const std::vector<double> f{10, 20, 30};
+    Matrix v(2, 3);
+    v << 0, 1, 2, 0, 0, 2;
+    std::vector<double> out(3);
+    constraints::adaptive_penalty(f, v, out);
+    CHECK(out[0] == 10.0);                                                        // feasible: f
+    CHECK(out[1] == Approx(20.0 + 180.0 / 13.0).epsilon(1e-14));                  // max(20, <f>) + k1
+    CHECK(out[2] == Approx(30.0 + 2.0 * (180.0 + 120.0) / 13.0).epsilon(1e-14));  // 30 + 2 k1 + 2 k2
+    Matrix none = Matrix::Zero(2, 3);
+    constraints::adaptive_penalty(f, none, out);
+    CHECK(out == f);
+}
+
+TEST_CASE("the run guard counts each constrained evaluation once and keeps Deb's best point", "[constraints]") {
+    Disc disc;
+    Termination t;
+    t.max_evaluations = 6;
+    RunState state(t, 2);
+    // (0, 0): v = 1; (2, 2): feasible, f 8; (1.5, 0): feasible, f 2.25; (0.2, 0.2): v = 0.6.
+    const Matrix x = points_of({{0, 0}, {2, 2}, {1.5, 0}, {0.2, 0.2}});
+    std::vector<double> f(4), v(4);
+    CHECK(state.evaluate_columns(disc, x, f, v) == 4);
+    CHECK(*disc.constrained_calls == 4);
+    CHECK(*disc.plain_calls == 0);
+    CHECK(v == std::vector<double>{1.0, 0.0, 0.0, 1.0 - 0.2 - 0.2});
+    CHECK(state.best() == 2.25);
+    CHECK(state.best_x() == std::vector<double>{1.5, 0.0});
+    // Past the budget: two more, the rest +inf and not evaluated.
+    const Matrix y = points_of({{0.5, 0.5}, {3, 3}, {1, 1}});
+    std::vector<double> g(3), w(3);
+    CHECK(state.evaluate_columns(disc, y, g, w) == 2);
+    CHECK(*disc.constrained_calls == 6);
+    CHECK(g[2] == inf);
+    CHECK(w[2] == inf);
+    const Result r = state.finish();
+    CHECK(r.best_f == 0.5);
+    CHECK(r.best_violation == 0.0);
+    CHECK(r.first_feasible == 2);
+    CHECK(r.evaluations == 6);
+
+    // No feasible point: the least violating one is the best, its value the run's best_f.
+    RunState none(Termination{}, 2);
+    const Matrix z = points_of({{0, 0}, {0.25, 0.25}, {-1, -1}});
+    none.evaluate_columns(disc, z, g, w);
+    CHECK(none.best() == inf);  // stopping rules and targets see feasible values only
+    const Result rn = none.finish();
+    CHECK(rn.best_violation == 0.5);
+    CHECK(rn.best_f == 0.125);
+    CHECK(rn.best_x == std::vector<double>{0.25, 0.25});
+    CHECK_FALSE(rn.first_feasible.has_value());
+}
+
+TEST_CASE("PSO on a constrained problem: each handler reaches the optimum, every evaluation counted", "[constraints]") {
+    for (const auto handler : {ConstraintHandling::Handler::deb, ConstraintHandling::Handler::epsilon,
+                               ConstraintHandling::Handler::penalty}) {
+        INFO(static_cast<int>(handler));
+        Pso<> pso;
+        pso.population = 20;
+        pso.constraints.handler = handler;
+        pso.constraints.epsilon.tc = 100;
+        Disc disc;
+        Termination t;
+        t.max_evaluations = 4000;
+        const Result r = pso.run(disc, t, 11);
+        CHECK(r.evaluations == 4000);
+        CHECK(*disc.constrained_calls == 4000);
+        CHECK(*disc.plain_calls == 0);
+        CHECK(r.best_violation == 0.0);
+        CHECK(r.best_f == Approx(0.5).epsilon(1e-3));
+        CHECK(r.best_x[0] + r.best_x[1] >= 1.0);
+        CHECK(r.first_feasible.has_value());
+        const Result again = pso.run(Disc{}, t, 11);
+        CHECK(again.best_x == r.best_x);
+        CHECK(again.history == r.history);
+    }
+    Pso<> bad;
+    bad.constraints.penalty = -1.0;
+    CHECK_THROWS_WITH(bad.run(Disc{}, Termination{}, 1), Catch::Contains("penalty"));
+}
