@@ -33,17 +33,27 @@ int run_command(const RunOptions& o, std::ostream& out) {
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
     engine::check(algorithm, problem, o.budget);
     const engine::RunResult r = engine::run(algorithm, problem, o.budget, o.seed);
+    // Problems with constraints: the best point's violation and the first feasible evaluation.
+    const std::string first_feasible = r.first_feasible ? std::to_string(*r.first_feasible) : "null";
     if (o.json) {
+        const std::string constrained = r.best_violation
+                                            ? fmt::format(", \"best_violation\": {}, \"first_feasible\": {}",
+                                                          json_number(*r.best_violation), first_feasible)
+                                            : "";
         out << fmt::format(
-            "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"instance\": {}, \"seed\": {}, \"best_f\": {}, "
+            "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"instance\": {}, \"seed\": {}, \"best_f\": {}{}, "
             "\"best_x\": {}, \"evaluations\": {}, \"wall_ms\": {}, \"history\": {}}}\n",
-            json_string(o.algo), json_string(o.problem), o.dim, instance, o.seed, json_number(r.best_f),
+            json_string(o.algo), json_string(o.problem), o.dim, instance, o.seed, json_number(r.best_f), constrained,
             json_array(r.best_x), r.evaluations, json_number(r.wall_ms), json_array(r.history));
     } else {
+        const std::string constrained =
+            r.best_violation ? fmt::format("violation    {:.17g}\nfeasible at  {}\n", *r.best_violation,
+                                           r.first_feasible ? first_feasible + " evaluations" : std::string("never"))
+                             : "";
         out << fmt::format(
-            "algo         {}\nproblem      {} (D = {}, instance {})\nseed         {}\nbest_f       {:.17g}\n"
+            "algo         {}\nproblem      {} (D = {}, instance {})\nseed         {}\nbest_f       {:.17g}\n{}"
             "evaluations  {}\niterations   {}\nwall_ms      {:.3f}\nbest_x       {}\n",
-            o.algo, o.problem, o.dim, instance, o.seed, r.best_f, r.evaluations, r.iterations, r.wall_ms,
+            o.algo, o.problem, o.dim, instance, o.seed, r.best_f, constrained, r.evaluations, r.iterations, r.wall_ms,
             json_array(r.best_x));
     }
     return 0;

@@ -78,4 +78,30 @@ void MoCallbackProblem::evaluate_batch(MatrixView points, Matrix& values) {
         shared_->scalar(std::span<const double>(points.col(j).data(), n), std::span<double>(values.col(j).data(), m));
 }
 
+ConstrainedCallbackProblem::ConstrainedCallbackProblem(std::string name, std::vector<double> lower,
+                                                       std::vector<double> upper, ConstraintCounts counts,
+                                                       double tolerance, Function function) {
+    require(!lower.empty(), name, "the box has no coordinates (lower and upper are empty)");
+    require(lower.size() == upper.size(), name,
+            "lower has " + std::to_string(lower.size()) + " coordinates and upper " + std::to_string(upper.size()));
+    for (std::size_t i = 0; i < lower.size(); ++i)
+        require(std::isfinite(lower[i]) && std::isfinite(upper[i]) && lower[i] <= upper[i], name,
+                "bounds " + std::to_string(i) + " must be finite with lower <= upper");
+    require(counts.total() > 0, name, "no constraint declared");
+    require(std::isfinite(tolerance) && tolerance >= 0.0, "tolerance",
+            "must be a finite number >= 0, got " + std::to_string(tolerance));
+    require(static_cast<bool>(function), name, "no function to evaluate");
+    shared_ = std::make_shared<const Shared>(
+        Shared{std::move(name), std::move(lower), std::move(upper), counts, tolerance, std::move(function)});
+    scratch_.assign(counts.total(), 0.0);
+}
+
+double ConstrainedCallbackProblem::evaluate(std::span<const double> x) {
+    return shared_->function(x, scratch_);
+}
+
+double ConstrainedCallbackProblem::evaluate_constrained(std::span<const double> x, std::span<double> constraints) {
+    return shared_->function(x, constraints);
+}
+
 }  // namespace pride::engine

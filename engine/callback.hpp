@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "framework/constraints.hpp"
 #include "framework/problem.hpp"
 
 namespace pride::engine {
@@ -81,6 +82,43 @@ class MoCallbackProblem {
     };
     std::shared_ptr<const Shared> shared_;
     Matrix one_;  // scratch of the batch-only route
+};
+
+/// A user's function with constraints: f and the m + p constraint values (inequalities first) from
+/// one call, the violation CEC's mean (framework/constraints.hpp) with the given tolerance.
+class ConstrainedCallbackProblem {
+  public:
+    using Function = std::function<double(std::span<const double>, std::span<double>)>;
+
+    /// Throws InputError as CallbackProblem does, and for no constraint or a tolerance that is not a
+    /// finite number >= 0.
+    ConstrainedCallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper,
+                               ConstraintCounts counts, double tolerance, Function function);
+
+    std::size_t dimension() const noexcept { return shared_->lower.size(); }
+    std::span<const double> lower() const noexcept { return shared_->lower; }
+    std::span<const double> upper() const noexcept { return shared_->upper; }
+    std::string_view name() const noexcept { return shared_->name; }
+    ConstraintCounts constraint_counts() const noexcept { return shared_->counts; }
+
+    /// f alone (the constraints' values computed and dropped): what an algorithm without
+    /// constraint handling would see; the engine never runs one on this problem.
+    double evaluate(std::span<const double> x);
+    double evaluate_constrained(std::span<const double> x, std::span<double> constraints);
+    double violation(std::span<const double> constraints) const noexcept {
+        return mean_violation(constraints, shared_->counts, shared_->tolerance);
+    }
+
+  private:
+    struct Shared {
+        std::string name;
+        std::vector<double> lower, upper;
+        ConstraintCounts counts;
+        double tolerance = kEqualityTolerance;
+        Function function;
+    };
+    std::shared_ptr<const Shared> shared_;
+    std::vector<double> scratch_;  // evaluate()'s constraint values, per copy
 };
 
 }  // namespace pride::engine

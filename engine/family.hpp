@@ -12,6 +12,7 @@
 
 #include "engine/registry.hpp"
 #include "engine/target.hpp"
+#include "framework/constraint_order.hpp"
 
 namespace pride::engine {
 
@@ -78,6 +79,56 @@ AlgorithmEntry box_algorithm(std::string name, std::string family, std::string s
             target.problem);
     });
     return e;
+}
+
+/// The handlers of constraints an algorithm that compares pairs of points offers
+/// (framework/constraint_order.hpp), as parameters refused on problems without constraints.
+inline std::vector<ParamSpec> constraint_params() {
+    return {choice("constraints", {"deb", "epsilon", "penalty"}, "deb",
+                   "how points compare under constraints: Deb's (2000) feasibility rules, Takahama and Sakai's (2006) "
+                   "epsilon level, or the static penalty f + penalty v")
+                .only_with_constraints(),
+            real("epsilon_cp", 100.0, 0.0, 1e6, "how fast the epsilon level falls, (1 - t / Tc)^cp")
+                .open_below()
+                .only_with_constraints(),
+            integer("epsilon_tc", 1000, 1, 1'000'000'000'000, "the iteration from which the epsilon level is 0")
+                .only_with_constraints(),
+            real("epsilon_theta", 0.2, 0.0, 1.0,
+                 "the initial epsilon level: the violation of the (theta N)-th point of the initial population")
+                .open_below()
+                .only_with_constraints(),
+            real("penalty", 1e6, 0.0, 1e300, "r of the static penalty f + r v").only_with_constraints()};
+}
+
+/// The handler the parameters of constraint_params() name.
+inline ConstraintHandling constraint_handling(const Params& p) {
+    ConstraintHandling h;
+    const std::string& name = p.choice("constraints");
+    h.handler = name == "epsilon"   ? ConstraintHandling::Handler::epsilon
+                : name == "penalty" ? ConstraintHandling::Handler::penalty
+                                    : ConstraintHandling::Handler::deb;
+    h.epsilon.cp = p.real("epsilon_cp");
+    h.epsilon.tc = p.integer("epsilon_tc");
+    h.epsilon.theta = p.real("epsilon_theta");
+    h.penalty = p.real("penalty");
+    return h;
+}
+
+/// Adds running on boxes with constraints to an entry whose algorithm compares through its
+/// `constraints` (ConstraintHandling): `configure(params)` returns the typed algorithm; the entry
+/// gets the handlers' parameters.
+template <class Configure>
+void add_constrained_runner(AlgorithmEntry& e, Configure configure) {
+    for (auto& spec : constraint_params()) e.params.push_back(std::move(spec));
+    add_runner<ConstrainedBoxTarget>(
+        e, Kind::constrained_box, [configure](const RunRequest& r, const ConstrainedBoxTarget& target) -> Result {
+            auto algorithm = configure(r.params);
+            algorithm.constraints = constraint_handling(r.params);
+            const ForwardingObserver forward{r.observer};
+            return std::visit(
+                [&](const auto& problem) -> Result { return algorithm.run(problem, r.termination, r.seed, forward); },
+                target.problem);
+        });
 }
 
 /// An algorithm's defaults for the settings of the chain space it plans on (its paper's).

@@ -94,6 +94,8 @@ void prepare_callback(Prepared& out, const CallbackSpec& s) {
     require(static_cast<bool>(s.values) || static_cast<bool>(s.values_batch), "function",
             fmt::format("no function of {} objectives given", s.objectives));
     require(!s.f_opt, "f_opt", "a function of several objectives has no single minimum");
+    require(s.inequalities == 0 && s.equalities == 0 && !s.constrained, "constraints",
+            "a function of several objectives takes no constraints");
     out.name = s.name;
     for (std::int64_t i = 1; i <= s.objectives; ++i) out.objective_names.push_back(fmt::format("f{}", i));
     out.searched.emplace(std::in_place_type<MoBoxTarget>,

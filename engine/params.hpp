@@ -28,6 +28,7 @@ struct ParamSpec {
     bool box_only = false;             // has no meaning on chains (SBX's index, say): refused there when set
     bool chain_only = false;           // a setting of the chain space (a shortcut, say): refused on boxes when set
     bool grid_only = false;            // how a grid is planned on (its encoding, say): refused on other problems
+    bool constrained_only = false;     // how constraints are handled: refused on problems without any
     std::vector<std::string> choices;  // choice: the names, in index order
 
     ParamSpec& open_below() {
@@ -48,6 +49,10 @@ struct ParamSpec {
     }
     ParamSpec& only_on_grids() {
         grid_only = true;
+        return *this;
+    }
+    ParamSpec& only_with_constraints() {
+        constrained_only = true;
         return *this;
     }
     /// No default: the algorithm's own rule applies unless the user sets a value (doc says which).

@@ -50,6 +50,9 @@ struct Prepared {
     const BoxTarget* box() const { return searched ? std::get_if<BoxTarget>(&*searched) : nullptr; }
     const ChainTarget* chain() const { return searched ? std::get_if<ChainTarget>(&*searched) : nullptr; }
     const GridTarget* grid() const { return whole_grid ? std::get_if<GridTarget>(&*whole_grid) : nullptr; }
+    const ConstrainedBoxTarget* constrained() const {
+        return searched ? std::get_if<ConstrainedBoxTarget>(&*searched) : nullptr;
+    }
     const MoBoxTarget* mo_box() const { return searched ? std::get_if<MoBoxTarget>(&*searched) : nullptr; }
     const MoChainTarget* mo_chain() const { return searched ? std::get_if<MoChainTarget>(&*searched) : nullptr; }
     /// Searched on cell chains (the chain encoding), with one objective or several.
@@ -62,6 +65,15 @@ std::optional<double> optimum_of(const Prepared& p);
 
 /// The checks of a continuous problem's size, before any of it is allocated.
 void require_problem_memory(const ContinuousSpec& c);
+
+/// The most constraints of each kind a problem declares.
+inline constexpr std::int64_t kMaxConstraints = 1'000'000;
+
+/// The number k of a CEC 2006 problem's name, cec2006-g01 .. cec2006-g24.
+std::optional<int> cec2006_number(const std::string& name);
+
+/// Whether a callback declares constraints (checked: counts in range, a function for them).
+bool has_constraints(const CallbackSpec& cb);
 
 /// Why the grid spec's objective has no exact optimum (for messages).
 std::string no_optimum(const GridSpec& g);

@@ -110,14 +110,53 @@ void require_problem_memory(const ContinuousSpec& c) {
                    fmt::format("{} in dimension {}", c.function, c.dim));
 }
 
+bool has_constraints(const CallbackSpec& cb) {
+    for (const auto& [count, where] :
+         {std::pair{cb.inequalities, "inequalities"}, std::pair{cb.equalities, "equalities"}})
+        require(count >= 0 && count <= kMaxConstraints, where,
+                fmt::format("must be an integer in [0, {}], got {}", kMaxConstraints, count));
+    const bool any = cb.inequalities + cb.equalities > 0;
+    require(any || !cb.constrained, "constraints",
+            "a constrained function is given, but no inequalities or equalities");
+    require(!any || static_cast<bool>(cb.constrained), "constraints",
+            "inequalities or equalities are declared, but no function returning them (constrained)");
+    return any;
+}
+
+std::optional<int> cec2006_number(const std::string& name) {
+    constexpr std::string_view prefix = "cec2006-g";
+    if (!name.starts_with(prefix) || name.size() != prefix.size() + 2) return std::nullopt;
+    const char a = name[prefix.size()], b = name[prefix.size() + 1];
+    if (a < '0' || a > '9' || b < '0' || b > '9') return std::nullopt;
+    const int k = (a - '0') * 10 + (b - '0');
+    if (k < 1 || k > continuous::cec2006::kProblems) return std::nullopt;
+    return k;
+}
+
 namespace {
+
+/// A problem of the CEC 2006 constrained suite: its own dimension, no instance.
+void prepare_cec2006(Prepared& out, const ContinuousSpec& c, int number) {
+    continuous::cec2006::Problem problem(number);
+    require(c.dim == static_cast<std::int64_t>(problem.dimension()), "dim",
+            fmt::format("{} has dimension {}, got {}", c.function, problem.dimension(), c.dim));
+    require(!c.instance, "instance", c.function + " has no instances");
+    require(c.objectives == 0 || c.objectives == 1, "objectives",
+            fmt::format("{} has one objective, got {}", c.function, c.objectives));
+    out.name = c.function;
+    out.dimension = problem.dimension();
+    out.searched.emplace(std::in_place_type<ConstrainedBoxTarget>, ConstrainedBoxTarget{problem});
+}
 
 std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
     auto out = std::make_shared<Prepared>();
     out->spec = spec;
+    const auto* continuous = std::get_if<ContinuousSpec>(&spec);
     if (several_objectives(spec)) {
         prepare_several(*out);
-    } else if (const auto* c = std::get_if<ContinuousSpec>(&spec)) {
+    } else if (const auto number = continuous ? cec2006_number(continuous->function) : std::nullopt) {
+        prepare_cec2006(*out, *continuous, *number);
+    } else if (const auto* c = continuous) {
         require_problem_memory(*c);
         require(c->objectives == 0 || c->objectives == 1, "objectives",
                 fmt::format("{} has one objective, got {}", c->function, c->objectives));
@@ -139,9 +178,18 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
         require(!cb.f_opt || std::isfinite(*cb.f_opt), "f_opt", "must be a finite number");
         out->name = cb.name;
         out->dimension = cb.lower.size();
-        out->searched.emplace(
-            std::in_place_type<BoxTarget>,
-            BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch, cb.thread_safe)});
+        if (has_constraints(cb)) {
+            out->searched.emplace(
+                std::in_place_type<ConstrainedBoxTarget>,
+                ConstrainedBoxTarget{ConstrainedCallbackProblem(
+                    cb.name, cb.lower, cb.upper,
+                    {static_cast<std::size_t>(cb.inequalities), static_cast<std::size_t>(cb.equalities)}, cb.tolerance,
+                    cb.constrained)});
+        } else {
+            out->searched.emplace(
+                std::in_place_type<BoxTarget>,
+                BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch, cb.thread_safe)});
+        }
     }
     return out;
 }

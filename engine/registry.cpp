@@ -16,6 +16,7 @@ std::vector<std::string> AlgorithmEntry::spaces() const {
     if (whole_map()) out.emplace_back("grid");
     if (runs(Kind::multiobjective)) out.emplace_back("multi-objective");
     if (runs(Kind::multiobjective_chain)) out.emplace_back("multi-objective chain");
+    if (runs(Kind::constrained_box)) out.emplace_back("constrained box");
     return out;
 }
 
@@ -42,6 +43,8 @@ void AlgorithmRegistry::add(AlgorithmEntry entry) {
         throw std::logic_error("algorithm '" + entry.name + "' is multi-objective and runs on other kinds");
     if (entry.runs(Kind::multiobjective_chain) && !entry.runs(Kind::multiobjective))
         throw std::logic_error("algorithm '" + entry.name + "' runs on multi-objective chains only");
+    if (entry.runs(Kind::constrained_box) && !entry.runs(Kind::box))
+        throw std::logic_error("algorithm '" + entry.name + "' runs on constrained boxes only");
     if (entry.whole_map() && (searches || (entry.runs(Kind::grid) && entry.runs(Kind::sampled_grid))))
         throw std::logic_error("algorithm '" + entry.name + "' plans on the whole map and runs on other kinds");
     // How it plans on a grid, the same three names for every algorithm that plans through an

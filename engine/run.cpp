@@ -143,6 +143,7 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
                     (entry.whole_map() ? " solves the whole map)" : " runs on chains)"));
     // Made only for a run on the box (its threads start here and end with the run).
     auto box_run = [&] {
+        if (p.constrained()) return std::get<Result>(run_target(entry, request, *p.searched, observer));
         const auto threaded = threaded_box(*p.box(), p.name, budget.threads);
         return std::get<Result>(run_target(entry, request, threaded ? *threaded : *p.searched, observer));
     };
@@ -150,6 +151,10 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
         Result r = box_run();
         copy_run(out, r);
         out.best_x = std::move(r.best_x);
+        if (p.constrained()) {
+            out.best_violation = r.best_violation;
+            out.first_feasible = r.first_feasible;
+        }
         return out;
     }
 

@@ -47,6 +47,11 @@ struct RunResult {
     std::vector<TracePoint> checkpoints;
     std::optional<GridOutcome> grid;
     std::optional<Front> front;  // several objectives
+    // Problems with constraints: the best point's violation (0: feasible; best_f is then the best
+    // feasible value, else the least violating point's), and the evaluation that first found a
+    // feasible point (empty: none).
+    std::optional<double> best_violation;
+    std::optional<std::int64_t> first_feasible;
 };
 
 /// Every check a run of `algorithm` on `problem` under `budget` would make, without running:

@@ -43,13 +43,24 @@ Params checked(const AlgorithmEntry& entry, const Prepared& p, const AlgorithmSp
                 " has one objective (its problems: zdt1-zdt6, dtlz1-dtlz7, grids with several objectives)");
     const Params params(entry.name, entry.params, effective_params(entry, p, a.params));
     const auto* g = std::get_if<GridSpec>(&p.spec);
+    const bool constrained = p.constrained() != nullptr;
+    for (const auto& spec : entry.params)
+        require(!spec.constrained_only || !params.given(spec.name) || constrained, entry.name,
+                spec.name + " says how constraints are handled; " + p.name + " has none");
     auto refuse_chain_settings = [&](const std::string& space) {
         for (const auto& spec : entry.params)
             require(!spec.chain_only || !params.given(spec.name), entry.name,
                     spec.name + " is a setting of the chain space (the chain encoding); it has no meaning on " + space);
     };
     if (!g) {
-        require(entry.runs(Kind::box), "algo", entry.name + " works on grid problems only");
+        if (constrained && !entry.runs(Kind::constrained_box)) {
+            std::string names;
+            for (const auto& e : algorithms().entries())
+                if (e.runs(Kind::constrained_box)) names += (names.empty() ? "" : ", ") + e.name;
+            throw InputError("algo", entry.name + " does not handle constraints; " + p.name +
+                                         " has some (the algorithms that do: " + names + ")");
+        }
+        require(constrained || entry.runs(Kind::box), "algo", entry.name + " works on grid problems only");
         refuse_chain_settings("a box");
         for (const auto& spec : entry.params)
             require(!spec.grid_only || !params.given(spec.name), entry.name,
@@ -179,6 +190,8 @@ constexpr std::int64_t kMaxThreads = 256;
 void check_threads(const Prepared& p, const Budget& budget) {
     require(budget.threads >= 1 && budget.threads <= kMaxThreads, "threads",
             fmt::format("must be in [1, {}], got {}", kMaxThreads, budget.threads));
+    require(budget.threads == 1 || !p.constrained(), "threads",
+            "a problem with constraints is evaluated on one thread");
     if (budget.threads == 1 || !p.box()) return;
     if (const auto* cb = std::get_if<CallbackProblem>(&p.box()->problem))
         require(cb->thread_safe(), "threads",

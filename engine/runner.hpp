@@ -20,16 +20,17 @@
 
 namespace pride::engine {
 
-struct BoxTarget;      // engine/target.hpp
-struct ChainTarget;    // engine/target.hpp
-struct GridTarget;     // engine/target.hpp
-struct MoBoxTarget;    // engine/target.hpp
-struct MoChainTarget;  // engine/target.hpp
+struct BoxTarget;             // engine/target.hpp
+struct ChainTarget;           // engine/target.hpp
+struct GridTarget;            // engine/target.hpp
+struct MoBoxTarget;           // engine/target.hpp
+struct MoChainTarget;         // engine/target.hpp
+struct ConstrainedBoxTarget;  // engine/target.hpp
 
 /// What a run searches or plans on: a box (continuous problems, grids through the line and free
-/// encodings, callbacks), cell chains, a whole grid, and the same box and chains with several
-/// objectives.
-using Target = std::variant<BoxTarget, ChainTarget, GridTarget, MoBoxTarget, MoChainTarget>;
+/// encodings, callbacks), cell chains, a whole grid, the same box and chains with several
+/// objectives, and a box with constraints.
+using Target = std::variant<BoxTarget, ChainTarget, GridTarget, MoBoxTarget, MoChainTarget, ConstrainedBoxTarget>;
 
 /// The kinds of run an entry's runner takes. A whole grid is planned on in two ways: solved (no
 /// budget, no seed, no evaluations: A*, the exact optimum) or sampled (seeded, its validity
@@ -41,6 +42,7 @@ enum class Kind : unsigned {
     sampled_grid = 1u << 3,
     multiobjective = 1u << 4,
     multiobjective_chain = 1u << 5,
+    constrained_box = 1u << 6,
 };
 
 /// A set of kinds: what an entry declares it runs on.

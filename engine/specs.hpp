@@ -86,6 +86,14 @@ struct CallbackSpec {
     std::int64_t objectives = 1;  // M
     std::function<void(std::span<const double>, std::span<double>)> values = nullptr;
     std::function<void(MatrixView, Matrix&)> values_batch = nullptr;
+    /// Constraints (framework/constraints.hpp), one objective: `constrained` returns f and writes
+    /// the `inequalities` values g_i (g_i <= 0 feasible), then the `equalities` values h_j (h_j = 0
+    /// within `tolerance`), and is used instead of scalar and batch; a point's violation is the
+    /// mean of their excess (CEC 2006 and 2020).
+    std::int64_t inequalities = 0;
+    std::int64_t equalities = 0;
+    double tolerance = 1e-4;
+    std::function<double(std::span<const double>, std::span<double>)> constrained = nullptr;
     /// The functions may be called from several threads at once (Budget::threads > 1). A run with
     /// threads asks for it and refuses a callback without it (Python functions hold the GIL: leave
     /// it false for them).

@@ -16,6 +16,7 @@
 #include "engine/runner.hpp"
 #include "framework/encoding.hpp"
 #include "problems/continuous/catalog.hpp"
+#include "problems/continuous/cec2006/cec2006.hpp"
 #include "problems/grid/chain.hpp"
 #include "problems/grid/connectors.hpp"
 #include "problems/grid/encodings.hpp"
@@ -103,6 +104,12 @@ struct MoBoxTarget {
 using MoGridChain = grid::MultiObjectiveChains;
 struct MoChainTarget {
     MoGridChain problem;
+};
+
+/// A box with constraints, for the algorithms that handle them (Kind::constrained_box).
+using ConstrainedVariant = std::variant<continuous::cec2006::Problem, ConstrainedCallbackProblem>;
+struct ConstrainedBoxTarget {
+    ConstrainedVariant problem;
 };
 
 /// The exact optimum of the target's objective and one optimal path (into `out` when given), or

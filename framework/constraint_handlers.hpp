@@ -104,7 +104,7 @@ inline double static_penalty(double f, double v, double r) noexcept {
 
 /// Barbosa and Lemonge's adaptive penalty (APM): the penalised values of a population, from its
 /// objective values `f` (one per point) and its constraints' violations `violations` (one row per
-/// constraint, one column per point: max(0, g) or max(0, |h| - tolerance)). With <f> the mean of f
+/// constraint, one column per point: inequality_violation or equality_violation). With <f> the mean of f
 /// and <v_j> the mean violation of constraint j over the population,
 ///   k_j = |<f>| <v_j> / sum_l <v_l>^2,
 ///   F(x) = f(x) if x is feasible, else max(f(x), <f>) + sum_j k_j v_j(x).

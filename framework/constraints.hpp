@@ -4,7 +4,8 @@
 // inequalities first, then the p equalities), counted once. A point's violation is one number,
 // 0 when it is feasible; how it is measured is the suite's (its problem's `violation`); the default
 // is CEC 2006's and CEC 2020's (Liang et al. 2006, Kumar et al. 2020): the mean, over the m + p
-// constraints, of G_i = max(0, g_i) and H_j = max(0, |h_j| - tolerance), tolerance 1e-4.
+// constraints, of G_i = max(0, g_i) and H_j = |h_j| where |h_j| > tolerance (else 0), tolerance 1e-4
+// (Liang et al. 2006, sec. 2; Kumar et al. 2020's guidelines, eq. 2).
 //
 // Decisions left open by those reports: a constraint value that is NaN makes the point infeasible
 // with an infinite violation; +-inf values count as they are (+inf: an infinite violation).
@@ -29,16 +30,16 @@ struct ConstraintCounts {
 /// The tolerance within which an equality constraint holds (CEC 2006 and CEC 2020: 1e-4).
 inline constexpr double kEqualityTolerance = 1e-4;
 
-/// The part of one constraint's value that is a violation: max(0, g) for an inequality,
-/// max(0, |h| - tolerance) for an equality; +inf for NaN.
+/// The part of one constraint's value that is a violation: max(0, g) for an inequality, |h| for an
+/// equality beyond the tolerance (0 within it: the tolerance decides feasibility only); +inf for NaN.
 inline double inequality_violation(double g) noexcept {
     if (std::isnan(g)) return std::numeric_limits<double>::infinity();
     return g > 0.0 ? g : 0.0;
 }
 inline double equality_violation(double h, double tolerance) noexcept {
     if (std::isnan(h)) return std::numeric_limits<double>::infinity();
-    const double excess = std::abs(h) - tolerance;
-    return excess > 0.0 ? excess : 0.0;
+    const double magnitude = std::abs(h);
+    return magnitude - tolerance > 0.0 ? magnitude : 0.0;
 }
 
 /// CEC 2006's and CEC 2020's violation: the mean of the constraints' violations (0 without
