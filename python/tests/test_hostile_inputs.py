@@ -1,0 +1,26 @@
+"""Inputs made to break the module from outside (docs/reliability.md): each is refused with a
+one-line ValueError or TypeError naming the argument, with the command line's range and words."""
+import os
+import time
+
+import numpy as np
+import pytest
+
+import pride
+from conftest import cli
+
+
+def one_line(excinfo):
+    message = str(excinfo.value)
+    assert "\n" not in message, message
+    return message
+
+
+def test_a_fifo_beside_a_store_is_refused(tmp_path):
+    store = tmp_path / "s.sqlite"
+    pride.Campaign("c", seeds=1, evals=20, problems=[{"id": "s", "problem": "sphere", "dim": 2}],
+                   algorithms=["pso"]).run(store)
+    os.mkfifo(str(store) + "-journal")
+    with pytest.raises(ValueError) as e:
+        pride.read_store(store, dataframe=False)
+    assert one_line(e).startswith(f"{store}-journal: not a regular file (a FIFO)")

@@ -1,0 +1,80 @@
+// Inputs made to break pride from outside (docs/reliability.md): each class is refused in one line
+// with exit status 2, or handled, where every front end passes through it; none hangs, crashes or
+// touches a file the user did not name as output.
+#include <sys/stat.h>
+#include <sys/types.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tests/cli_runner.hpp"
+#include "tests/test_support.hpp"
+
+namespace fs = std::filesystem;
+using pride::test::CliOutput;
+using pride::test::run_pride;
+using pride::test::TempDir;
+
+namespace {
+
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
+
+const std::string kCampaign =
+    "name = \"h\"\nseeds = 2\n[budget]\nevaluations = 200\n"
+    "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
+    "[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 6\n";
+
+/// A small store of kCampaign named `name` in `dir`.
+std::string small_store(const TempDir& dir, const std::string& name) {
+    const auto r = run_pride("bench " + q(dir.write(name + ".toml", kCampaign)) + " --out " + q(dir.file(name)));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    return dir.file(name);
+}
+
+/// One line on stderr, exit status 2, naming `words`.
+void refused(const CliOutput& r, const std::string& words) {
+    INFO(r.out << r.err);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains(words));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}
+
+}  // namespace
+
+TEST_CASE("hostile: a FIFO or folder where SQLite keeps a store's journal is refused, never waited on",
+          "[hostile][store]") {
+    const TempDir dir("pride-hostile-journal");
+    const std::string store = small_store(dir, "st.sqlite");
+    const std::string other = small_store(dir, "other.sqlite");
+    const std::string campaign = dir.file("st.sqlite.toml");
+    for (const char* suffix : {"-journal", "-wal", "-shm"}) {
+        INFO(suffix);
+        const std::string side = store + suffix;
+        REQUIRE(::mkfifo(side.c_str(), 0600) == 0);
+        const std::string words = side + ": not a regular file (a FIFO)";
+        refused(run_pride("report " + q(store)), words);
+        refused(run_pride("report " + q(store) + " --html " + q(dir.file("html"))), words);
+        refused(run_pride("export " + q(store) + " --ioh " + q(dir.file("ioh"))), words);
+        refused(run_pride("bench " + q(campaign) + " --out " + q(store)), words);
+        refused(run_pride("merge " + q(other) + " " + q(store) + " --out " + q(dir.file("m.sqlite"))), words);
+        fs::remove(side);
+        fs::create_directory(side);
+        refused(run_pride("report " + q(store)), side + ": not a regular file (a folder)");
+        fs::remove(side);
+    }
+    // A new store too: the writer checks before SQLite makes the file.
+    const std::string fresh = dir.file("new.sqlite");
+    REQUIRE(::mkfifo((fresh + "-journal").c_str(), 0600) == 0);
+    refused(run_pride("bench " + q(campaign) + " --out " + q(fresh)), fresh + "-journal: not a regular file (a FIFO)");
+    CHECK(!fs::exists(fresh));
+    CHECK(!fs::exists(dir.file("m.sqlite")));
+    CHECK(run_pride("report " + q(store)).status == 0);
+}
