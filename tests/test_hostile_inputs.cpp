@@ -49,6 +49,34 @@ void refused(const CliOutput& r, const std::string& words) {
 
 }  // namespace
 
+TEST_CASE("hostile: merge never removes or writes a file it was not asked to write", "[hostile][merge]") {
+    const TempDir dir("pride-hostile-merge");
+    const std::string a = small_store(dir, "a.sqlite");
+    const std::string b = small_store(dir, "b.sqlite");
+    // An input named as OUT.part (the name merge used to clear for its temporary) stays an input.
+    fs::copy_file(a, dir.file("keep.sqlite.part"));
+    const std::string before = pride::test::slurp(dir.file("keep.sqlite.part"));
+    auto r =
+        run_pride("merge " + q(dir.file("keep.sqlite.part")) + " " + q(b) + " --out " + q(dir.file("keep.sqlite")));
+    INFO(r.err);
+    CHECK(r.status == 0);
+    CHECK(pride::test::slurp(dir.file("keep.sqlite.part")) == before);
+    CHECK(fs::exists(dir.file("keep.sqlite")));
+    // A user's own file beside the output is kept.
+    dir.write("m.sqlite.part", "precious\n");
+    r = run_pride("merge " + q(a) + " " + q(b) + " --out " + q(dir.file("m.sqlite")));
+    CHECK(r.status == 0);
+    CHECK(pride::test::slurp(dir.file("m.sqlite.part")) == "precious\n");
+    // Nothing hidden is left beside the outputs.
+    for (const auto& name : dir.entries()) CHECK(name.find(".pride-merge-") == std::string::npos);
+    // One file named twice, by its name or through a link, would count its runs twice.
+    refused(run_pride("merge " + q(a) + " " + q(a) + " --out " + q(dir.file("x.sqlite"))), a + ": named twice");
+    fs::create_symlink(a, dir.file("link.sqlite"));
+    refused(run_pride("merge " + q(a) + " " + q(dir.file("link.sqlite")) + " --out " + q(dir.file("x.sqlite"))),
+            dir.file("link.sqlite") + ": the same file as " + a);
+    CHECK(!fs::exists(dir.file("x.sqlite")));
+}
+
 TEST_CASE("hostile: a FIFO or folder where SQLite keeps a store's journal is refused, never waited on",
           "[hostile][store]") {
     const TempDir dir("pride-hostile-journal");
