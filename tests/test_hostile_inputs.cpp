@@ -106,3 +106,36 @@ TEST_CASE("hostile: a FIFO or folder where SQLite keeps a store's journal is ref
     CHECK(!fs::exists(dir.file("m.sqlite")));
     CHECK(run_pride("report " + q(store)).status == 0);
 }
+
+TEST_CASE("hostile: standard input named inside a file is refused, never read", "[hostile][readers]") {
+    const TempDir dir("pride-hostile-stdin");
+    const std::string words =
+        "/dev/stdin: standard input is read only when named on the command line, not inside a file";
+    const std::string map = dir.write("m.map", "type octile\nheight 2\nwidth 2\nmap\n..\n..\n");
+    // A campaign's map.
+    const std::string campaign =
+        dir.write("c.toml",
+                  "name = \"c\"\nseeds = 1\n[budget]\nevaluations = 50\n[[problem]]\nid = \"g\"\ntype = \"grid\"\n"
+                  "map = \"/dev/stdin\"\nstart = [0, 0]\ngoal = [1, 1]\n[[algorithm]]\nid = \"a\"\ntype = \"astar\"\n");
+    refused(run_pride("bench " + q(campaign) + " --out " + q(dir.file("c.sqlite")), pride::test::slurp(map)), words);
+    CHECK(!fs::exists(dir.file("c.sqlite")));
+    // A scenario line's map.
+    const std::string scen = dir.write("s.scen", "version 1\n0 /dev/stdin 2 2 0 0 1 1 1.41421356\n");
+    refused(run_pride("scen " + q(scen), pride::test::slurp(map)), words);
+    // A map_server YAML's image.
+    const std::string yaml =
+        dir.write("m.yaml",
+                  "image: /dev/stdin\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\n"
+                  "free_thresh: 0.196\n");
+    refused(run_pride("path --map " + q(yaml) + " --start 0,0 --goal 1,1 --algo astar", pride::test::slurp(map)),
+            words);
+    // A FIFO there is refused as before; the user's own /dev/stdin still reads.
+    REQUIRE(::mkfifo(dir.file("fifo.pgm").c_str(), 0600) == 0);
+    dir.write("f.yaml", "image: fifo.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
+    refused(
+        run_pride("path --map " + q(dir.file("f.yaml")) + " --start 0,0 --goal 1,1 --algo astar"),
+        "fifo.pgm: not a regular file (a FIFO): map image files named inside a file are read from regular files only");
+    const auto own = run_pride("path --map /dev/stdin --start 0,0 --goal 1,1 --algo astar", pride::test::slurp(map));
+    INFO(own.err);
+    CHECK(own.status == 0);
+}

@@ -191,6 +191,7 @@ void prepare(Campaign& c) {
                     grid::MapReadOptions read;
                     read.unknown_free = p.unknown_free;
                     if (!m) m = load_map(p.map_file, p.inflate, read);
+                    read.named_in_file = true;  // a campaign's maps are files, never standard input
                     g->map = m;
                 }
                 // The exact optimum beside every run whose objective has one, for gaps in reports.
