@@ -16,6 +16,18 @@ def one_line(excinfo):
     return message
 
 
+def test_nsga3_refuses_more_objectives_than_it_sets_up_in_time():
+    # Before: 3000 objectives took 22 s before the first wall-clock check.
+    t = time.monotonic()
+    with pytest.raises(ValueError) as e:
+        pride.front("nsga3", "dtlz2", objectives=3000, wall_ms=500, reference=False)
+    assert time.monotonic() - t < 5
+    assert one_line(e).startswith("objectives: ")
+    with pytest.raises(ValueError) as e:
+        pride.front("smsemoa", "dtlz2", objectives=1000, wall_ms=500, reference=False)
+    assert one_line(e).startswith("objectives: ") and "pop must be at most 0" not in str(e.value)
+
+
 def test_a_fifo_beside_a_store_is_refused(tmp_path):
     store = tmp_path / "s.sqlite"
     pride.Campaign("c", seeds=1, evals=20, problems=[{"id": "s", "problem": "sphere", "dim": 2}],
