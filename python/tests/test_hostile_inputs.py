@@ -16,6 +16,22 @@ def one_line(excinfo):
     return message
 
 
+def test_front_refuses_zero_variables_and_objectives_as_the_command_line():
+    # Before: dim=0 ran the paper's 30 variables, objectives=0 ran M = 3.
+    with pytest.raises(ValueError) as e:
+        pride.front("nsga2", "zdt1", dim=0, evals=100)
+    assert one_line(e) == "dim: must be an integer in [1, 1000000000000000], got 0"
+    assert "--dim: must be an integer in [1, 1000000000000000], got 0" in cli(
+        "front", "--algo", "nsga2", "--problem", "zdt1", "--dim", "0", check=False).stderr
+    with pytest.raises(ValueError) as e:
+        pride.front("nsga2", "dtlz2", objectives=0, evals=100)
+    assert one_line(e) == "objectives: expected the number of objectives M of dtlz2, got '0'"
+    assert "objectives: expected the number of objectives M of dtlz2, got '0'" in cli(
+        "front", "--algo", "nsga2", "--problem", "dtlz2", "--objectives", "0", check=False).stderr
+    with pytest.raises(ValueError, match="^dim: "):
+        pride.front("nsga2", "zdt1", dim=-3, evals=100)
+
+
 def test_nsga3_refuses_more_objectives_than_it_sets_up_in_time():
     # Before: 3000 objectives took 22 s before the first wall-clock check.
     t = time.monotonic()
