@@ -139,3 +139,22 @@ TEST_CASE("hostile: standard input named inside a file is refused, never read", 
     INFO(own.err);
     CHECK(own.status == 0);
 }
+
+TEST_CASE("hostile: instances past COCO's generator are refused, not wrapped", "[hostile][cli]") {
+    // Before: instance 2147483648 evaluated as instance 1.
+    refused(run_pride("eval --problem bbob-f1 --x 1,2 --instance 2147483648"),
+            "bbob-f1: COCO's instances are 1 to 2147483646");
+    const auto last = run_pride("eval --problem bbob-f1 --x 1,2 --instance 2147483646");
+    const auto first = run_pride("eval --problem bbob-f1 --x 1,2 --instance 1");
+    CHECK(last.status == 0);
+    CHECK(last.out != first.out);
+    refused(run_pride("run --problem bbob-f3 --dim 2 --algo pso --evals 50 --instance 2147483650"),
+            "COCO's instances are 1 to 2147483646");
+    const TempDir dir("pride-hostile-instance");
+    const std::string c =
+        dir.write("c.toml",
+                  "name = \"c\"\nseeds = 1\n[budget]\nevaluations = 50\n[[problem]]\nid = \"f3\"\ntype = \"bbob-f3\"\n"
+                  "dim = 2\ninstance = [3, 2147483650]\n[[algorithm]]\nid = \"p\"\ntype = \"pso\"\n");
+    refused(run_pride("bench " + q(c) + " --out " + q(dir.file("c.sqlite"))), "COCO's instances are 1 to 2147483646");
+    CHECK(!fs::exists(dir.file("c.sqlite")));
+}

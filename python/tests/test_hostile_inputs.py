@@ -32,6 +32,20 @@ def test_front_refuses_zero_variables_and_objectives_as_the_command_line():
         pride.front("nsga2", "zdt1", dim=-3, evals=100)
 
 
+def test_instances_beyond_cocos_range_are_refused():
+    # Before: instance 2^31 was instance 1 under another number.
+    with pytest.raises(ValueError) as e:
+        pride.minimize("pso", "bbob-f1", dim=2, evals=50, instance=2**31)
+    assert "COCO's instances are 1 to 2147483646" in one_line(e)
+    with pytest.raises(ValueError, match="COCO's instances are 1 to 2147483646"):
+        pride.Problem("bbob-f1", 2, instance=2147483647)
+    assert pride.Problem("bbob-f1", 2, instance=2147483646)(np.zeros(2)) != pride.Problem("bbob-f1", 2, instance=1)(
+        np.zeros(2))
+    with pytest.raises(ValueError, match="COCO's instances are 1 to 2147483646"):
+        pride.Campaign("c", seeds=1, evals=10, problems=[{"id": "f", "problem": "bbob-f3", "dim": 2,
+                                                           "instance": 2147483650}], algorithms=["pso"])
+
+
 def test_nsga3_refuses_more_objectives_than_it_sets_up_in_time():
     # Before: 3000 objectives took 22 s before the first wall-clock check.
     t = time.monotonic()
