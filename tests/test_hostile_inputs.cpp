@@ -158,3 +158,14 @@ TEST_CASE("hostile: instances past COCO's generator are refused, not wrapped", "
     refused(run_pride("bench " + q(c) + " --out " + q(dir.file("c.sqlite"))), "COCO's instances are 1 to 2147483646");
     CHECK(!fs::exists(dir.file("c.sqlite")));
 }
+
+TEST_CASE("hostile: a campaign's seeds have the one limit Python's have", "[hostile][campaign]") {
+    const TempDir dir("pride-hostile-seeds");
+    const std::string c = dir.write("c.toml",
+                                    "name = \"c\"\nseeds = 1000001\n[budget]\nevaluations = 50\n"
+                                    "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
+                                    "[[algorithm]]\nid = \"p\"\ntype = \"pso\"\n");
+    refused(run_pride("bench " + q(c) + " --out " + q(dir.file("c.sqlite"))),
+            c + ":2: 'seeds' must be in [1, 1000000], got 1000001");
+    CHECK(!fs::exists(dir.file("c.sqlite")));
+}

@@ -235,7 +235,7 @@ std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seed
     auto c = std::make_shared<PyCampaign>();
     auto& k = c->campaign;
     require(!name.empty(), "name", "a campaign needs a name");
-    require(seeds >= 1 && seeds <= 1'000'000, "seeds", "must be in [1, 1000000], got " + std::to_string(seeds));
+    require(seeds >= 1 && seeds <= campaign::max_campaign_seeds, "seeds", campaign::seeds_range_message(seeds));
     require(evals || evals_per_dim || iters, "campaign",
             "give evals, evals_per_dim or iters (the budget of every run)");
     require(!(evals && evals_per_dim), "evals_per_dim", "give evals or evals_per_dim, not both");

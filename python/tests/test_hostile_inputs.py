@@ -46,6 +46,21 @@ def test_instances_beyond_cocos_range_are_refused():
                                                            "instance": 2147483650}], algorithms=["pso"])
 
 
+def test_seeds_have_one_limit(tmp_path):
+    with pytest.raises(ValueError) as e:
+        pride.Campaign("c", seeds=1_000_001, evals=10, problems=[{"id": "s", "problem": "sphere", "dim": 2}],
+                       algorithms=["pso"])
+    assert one_line(e) == "seeds: must be in [1, 1000000], got 1000001"
+    toml = tmp_path / "c.toml"
+    toml.write_text('name = "c"\nseeds = 1000001\n[budget]\nevaluations = 10\n[[problem]]\nid = "s"\n'
+                    'type = "sphere"\ndim = 2\n[[algorithm]]\nid = "p"\ntype = "pso"\n')
+    with pytest.raises(ValueError, match=r":2: 'seeds' must be in \[1, 1000000\], got 1000001"):
+        pride.Campaign.load(toml)
+    p = cli("bench", toml, "--out", tmp_path / "c.sqlite", check=False)
+    assert p.returncode == 2 and "'seeds' must be in [1, 1000000], got 1000001" in p.stderr
+    assert not (tmp_path / "c.sqlite").exists()
+
+
 def test_nsga3_refuses_more_objectives_than_it_sets_up_in_time():
     # Before: 3000 objectives took 22 s before the first wall-clock check.
     t = time.monotonic()
