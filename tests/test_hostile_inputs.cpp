@@ -169,3 +169,23 @@ TEST_CASE("hostile: a campaign's seeds have the one limit Python's have", "[host
             c + ":2: 'seeds' must be in [1, 1000000], got 1000001");
     CHECK(!fs::exists(dir.file("c.sqlite")));
 }
+
+TEST_CASE("hostile: a population out of range gets one message with the parameter's own range", "[hostile][cli]") {
+    // Before: "--pop: must be an integer in [1, 1e15]" from the flag, "[2, 1e12]" from the parameter,
+    // "pop must be an integer, got 9.223372036854776e+18" from a campaign.
+    const std::string range = "pso: pop must be an integer in [2, 1000000000000] (population size), got ";
+    refused(run_pride("run --problem sphere --dim 2 --algo pso --pop 1"), range + "1");
+    refused(run_pride("run --problem sphere --dim 2 --algo pso --pop 9223372036854775807"), range);
+    refused(run_pride("run --problem sphere --dim 2 --algo pso --pop 1e3"), range + "'1e3'");
+    refused(run_pride("run --problem sphere --dim 2 --algo pso --param pop=2.5"), range + "2.5");
+    const TempDir dir("pride-hostile-pop");
+    std::string rows;
+    for (int i = 0; i < 10; ++i) rows += "..........\n";
+    const std::string map = dir.write("m.map", "type octile\nheight 10\nwidth 10\nmap\n" + rows);
+    refused(run_pride("path --map " + q(map) + " --start 0,0 --goal 9,9 --algo pso --pop 1"), range + "1");
+    const std::string c = dir.write("c.toml",
+                                    "name = \"c\"\nseeds = 1\n[budget]\nevaluations = 50\n"
+                                    "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
+                                    "[[algorithm]]\nid = \"p\"\ntype = \"pso\"\npop = 9223372036854775807\n");
+    refused(run_pride("bench " + q(c) + " --out " + q(dir.file("c.sqlite"))), range + "9223372036854775808");
+}

@@ -61,6 +61,18 @@ def test_seeds_have_one_limit(tmp_path):
     assert not (tmp_path / "c.sqlite").exists()
 
 
+def test_a_population_out_of_range_gets_its_range():
+    # Before: "pso: pop must be an integer, got 9.223372036854776e+18".
+    with pytest.raises(ValueError) as e:
+        pride.minimize("pso", "sphere", dim=2, evals=50, pop=2**63)
+    assert one_line(e) == ("pso: pop must be an integer in [2, 1000000000000] (population size), "
+                           "got 9223372036854775808")
+    p = cli("run", "--problem", "sphere", "--dim", "2", "--algo", "pso", "--pop", "9223372036854775807",
+            check=False)
+    assert p.returncode == 2
+    assert "pso: pop must be an integer in [2, 1000000000000] (population size), got" in p.stderr
+
+
 def test_nsga3_refuses_more_objectives_than_it_sets_up_in_time():
     # Before: 3000 objectives took 22 s before the first wall-clock check.
     t = time.monotonic()
