@@ -125,9 +125,9 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
     const bool function = !py::isinstance<py::str>(problem);
     if (!function) {
         require(bounds.is_none(), "bounds",
-                "only for Python functions: " + problem.cast<std::string>() + " has its own box");
+                "only for Python functions: " + utf8_arg(problem, "problem") + " has its own box");
         require(!vectorized, "vectorized", "only for Python functions");
-        const auto name = problem.cast<std::string>();
+        const auto name = utf8_arg(problem, "problem");
         require(engine::is_multiobjective_problem(name), "problem",
                 "unknown multi-objective problem '" + name + "' (known: " + multiobjective::problem_names() + ")");
         // `pride front --objectives`' words: 0 is no default here (it ran M = 3).

@@ -155,7 +155,7 @@ std::shared_ptr<const engine::UserPathObjective> user_objective(const py::object
 void set_path_objective(engine::GridSpec& spec, const py::object& objective, const py::object& step_cost,
                         const std::shared_ptr<UserError>& errors, const std::string& where) {
     if (py::isinstance<py::str>(objective)) {
-        spec.objective = objective.cast<std::string>();
+        spec.objective = utf8_arg(objective, where + "objective");
         if (!step_cost.is_none()) throw py::type_error(where + "step_cost: only with an objective that is a function");
     } else if (PyCallable_Check(objective.ptr())) {
         spec.objective = "user";
