@@ -189,3 +189,29 @@ TEST_CASE("hostile: a population out of range gets one message with the paramete
                                     "[[algorithm]]\nid = \"p\"\ntype = \"pso\"\npop = 9223372036854775807\n");
     refused(run_pride("bench " + q(c) + " --out " + q(dir.file("c.sqlite"))), range + "9223372036854775808");
 }
+
+TEST_CASE("hostile: the exact any-angle search is refused past its corners, in one line at once", "[hostile][grid]") {
+    // 40,000 isolated obstacles: 160,000 convex corners (the search's time grows with their
+    // square: 21.7 s for 170,781 corners, over 60 s for 683,161).
+    const TempDir dir("pride-hostile-any-angle");
+    std::string rows;
+    for (int y = 0; y < 400; ++y) {
+        for (int x = 0; x < 400; ++x) rows += x % 2 == 1 && y % 2 == 1 ? '@' : '.';
+        rows += '\n';
+    }
+    const std::string map = dir.write("m.map", "type octile\nheight 400\nwidth 400\nmap\n" + rows);
+    const std::string words =
+        "m.map: the exact any-angle shortest path is searched among at most 100000 convex obstacle corners";
+    const auto start = std::chrono::steady_clock::now();
+    refused(run_pride("path --map " + q(map) + " --start 0,0 --goal 398,398 --algo any-angle-exact --objective length"),
+            words);
+    refused(run_pride("path --map " + q(map) + " --start 0,0 --goal 398,398 --algo astar --gaps"), words);
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(20));
+    // Under the bound it plans: a quarter of the map.
+    std::string small;
+    for (int y = 0; y < 200; ++y) small += rows.substr(static_cast<std::size_t>(y) * 401, 200) + '\n';
+    const std::string quarter = dir.write("q.map", "type octile\nheight 200\nwidth 200\nmap\n" + small);
+    CHECK(
+        run_pride("path --map " + q(quarter) + " --start 0,0 --goal 198,198 --algo any-angle-exact --objective length")
+            .status == 0);
+}

@@ -93,3 +93,34 @@ def test_a_fifo_beside_a_store_is_refused(tmp_path):
     with pytest.raises(ValueError) as e:
         pride.read_store(store, dataframe=False)
     assert one_line(e).startswith(f"{store}-journal: not a regular file (a FIFO)")
+
+
+def test_ctrl_c_reaches_inside_the_exact_any_angle_search(tmp_path):
+    # A search of about 4 s (98,600 convex corners) stopped 0.5 s in: before, Ctrl-C waited for its end.
+    import random
+    import subprocess
+    import sys
+    import textwrap
+    random.seed(2)
+    n = 760
+    rows = ["".join("@" if random.random() < 0.05 else "." for _ in range(n)) for _ in range(n)]
+    rows[0] = "." + rows[0][1:]
+    rows[-1] = rows[-1][:-1] + "."
+    m = tmp_path / "m.map"
+    m.write_text(f"type octile\nheight {n}\nwidth {n}\nmap\n" + "\n".join(rows) + "\n")
+    script = textwrap.dedent(f"""
+        import os, signal, threading, time
+        import pride
+        g = pride.Grid.load({str(m)!r})
+        t = time.monotonic()
+        threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        try:
+            pride.plan(g, (0, 0), ({n - 1}, {n - 1}), algo="any-angle-exact", objective="length")
+            print("finished", time.monotonic() - t)
+        except KeyboardInterrupt:
+            print("interrupted", time.monotonic() - t)
+        """)
+    p = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    word, seconds = p.stdout.split()
+    assert word == "interrupted", p.stdout + p.stderr
+    assert float(seconds) < 2.0
