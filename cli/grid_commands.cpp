@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/numbers.hpp"
 #include "cli/output.hpp"
+#include "engine/planner_settings.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
 #include "engine/scenarios.hpp"
@@ -100,6 +101,7 @@ engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec_out) {
     spec.goal =
         o.goal_world.empty() ? parse_cell(o.goal, "--goal") : parse_world_cell(o.goal_world, *spec.map, "--goal-world");
     const engine::Problem problem(spec);
+    engine::refuse_unused_planner_settings(algorithm, spec, o.budget);
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
     engine::check(algorithm, problem, o.budget);
     if (spec_out) *spec_out = spec;

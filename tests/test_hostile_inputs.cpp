@@ -190,6 +190,38 @@ TEST_CASE("hostile: a population out of range gets one message with the paramete
     refused(run_pride("bench " + q(c) + " --out " + q(dir.file("c.sqlite"))), range + "9223372036854775808");
 }
 
+TEST_CASE("hostile: whole-map planners refuse settings they do not use", "[hostile][grid]") {
+    const TempDir dir("pride-hostile-planners");
+    std::string rows;
+    for (int i = 0; i < 10; ++i) rows += "..........\n";
+    const std::string map = dir.write("m.map", "type octile\nheight 10\nwidth 10\nmap\n" + rows);
+    const std::string base = "path --map " + q(map) + " --start 0,0 --goal 9,9 --algo ";
+    for (const char* algo : {"astar", "exact", "jps", "theta-star", "lazy-theta-star", "any-angle-exact"}) {
+        INFO(algo);
+        const std::string objective =
+            std::string(algo).find("theta") != std::string::npos || std::string(algo) == "any-angle-exact"
+                ? " --objective length"
+                : "";
+        const std::string run = base + algo + objective;
+        const std::string says = std::string(": ") + algo + " plans on the whole map";
+        refused(run_pride(run + " --encoding free"), "--encoding" + says);
+        refused(run_pride(run + " --init walk"), "--init" + says);
+        refused(run_pride(run + " --connector penalty"), "--connector" + says);
+        refused(run_pride(run + " --threads 2"), "--threads" + says);
+        refused(run_pride(run + " --evals 1"), "--evals" + says);
+        refused(run_pride(run + " --iters 5"), "--iters" + says);
+        CHECK(run_pride(run).status == 0);
+        // start = goal: the one-cell path, with its metrics, for every planner.
+        const auto same =
+            run_pride("path --map " + q(map) + " --start 4,4 --goal 4,4 --json --algo " + algo + objective);
+        INFO(same.err);
+        CHECK(same.status == 0);
+        CHECK_THAT(same.out, Catch::Contains("\"feasible\": true"));
+        CHECK_THAT(same.out, Catch::Contains("\"path\": [[4,4]]"));
+        CHECK_THAT(same.out, !Catch::Contains("\"metrics\": null"));
+    }
+}
+
 TEST_CASE("hostile: the exact any-angle search is refused past its corners, in one line at once", "[hostile][grid]") {
     // 40,000 isolated obstacles: 160,000 convex corners (the search's time grows with their
     // square: 21.7 s for 170,781 corners, over 60 s for 683,161).

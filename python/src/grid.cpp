@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "common.hpp"
+#include "engine/planner_settings.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/pareto.hpp"
@@ -198,6 +199,10 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
         problem.emplace(spec);
     }
     const engine::Budget b = budget(evals, iters, std::nullopt, std::nullopt);
+    engine::PlannerSettingNames names;
+    names.evaluations = "evals";
+    names.iterations = "iters";
+    engine::refuse_unused_planner_settings(algorithm, spec, b, names);
     engine::check(algorithm, *problem, b);
     const engine::RunResult r = run_released(algorithm, *problem, b, seed, callback, errors);
     py::dict d = result_dict(r);

@@ -73,6 +73,28 @@ def test_a_population_out_of_range_gets_its_range():
     assert "pso: pop must be an integer in [2, 1000000000000] (population size), got" in p.stderr
 
 
+def test_whole_map_planners_refuse_settings_they_do_not_use():
+    grid = pride.Grid(np.zeros((10, 10), dtype=int))
+    for kw, name in ((dict(encoding="free"), "encoding"), (dict(init="walk"), "init"),
+                     (dict(connector="penalty"), "connector"), (dict(evals=1), "evals"), (dict(iters=3), "iters"),
+                     (dict(waypoints=5), "waypoints")):
+        for algo in ("astar", "theta-star", "any-angle-exact", "jps"):
+            with pytest.raises(ValueError) as e:
+                pride.plan(grid, (0, 0), (9, 9), algo=algo, **kw)
+            assert one_line(e).startswith(f"{name}: {algo} plans on the whole map"), (algo, kw)
+    assert len(pride.plan(grid, (0, 0), (9, 9), algo="astar").path) == 10
+
+
+def test_start_equal_to_goal_is_the_one_cell_path_for_every_planner():
+    grid = pride.Grid(np.zeros((10, 10), dtype=int))
+    for algo in ("astar", "jps", "theta-star", "lazy-theta-star", "any-angle-exact"):
+        r = pride.plan(grid, (4, 4), (4, 4), algo=algo, objective="length")
+        assert r.feasible, algo
+        assert r.polyline.tolist() == [[4.0, 4.0]], algo
+        assert r.path.tolist() == [[4, 4]], algo
+        assert r.path_metrics["length"] == 0.0, algo
+
+
 def test_nsga3_refuses_more_objectives_than_it_sets_up_in_time():
     # Before: 3000 objectives took 22 s before the first wall-clock check.
     t = time.monotonic()
