@@ -222,6 +222,22 @@ TEST_CASE("hostile: whole-map planners refuse settings they do not use", "[hosti
     }
 }
 
+TEST_CASE("hostile: world coordinates of a fine frame stay distinct", "[hostile][grid]") {
+    // Before: resolution 1e-10 printed every cell's world point as [0, 0].
+    const TempDir dir("pride-hostile-world");
+    dir.write("m.pgm", "P5\n4 4\n255\n" + std::string(16, '\xfe'));
+    const std::string yaml = dir.write("m.yaml", "image: m.pgm\nresolution: 1e-10\norigin: [0, 0, 0]\n");
+    const auto r = run_pride("path --map " + q(yaml) + " --start 0,0 --goal 3,0 --algo astar --json");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK_THAT(r.out, Catch::Contains("\"path_world\": [[5e-11, 3.5e-10], [1.5e-10, 3.5e-10], [2.5e-10, 3.5e-10], "
+                                      "[3.5e-10, 3.5e-10]]"));
+    // The usual frames print as before: -10 + 0.5 * 0.05 is -9.975.
+    dir.write("n.yaml", "image: m.pgm\nresolution: 0.05\norigin: [-10, -10, 0]\n");
+    const auto usual = run_pride("path --map " + q(dir.file("n.yaml")) + " --start 0,3 --goal 1,3 --algo astar --json");
+    CHECK_THAT(usual.out, Catch::Contains("\"path_world\": [[-9.975, -9.975], [-9.925, -9.975]]"));
+}
+
 TEST_CASE("hostile: the exact any-angle search is refused past its corners, in one line at once", "[hostile][grid]") {
     // 40,000 isolated obstacles: 160,000 convex corners (the search's time grows with their
     // square: 21.7 s for 170,781 corners, over 60 s for 683,161).

@@ -85,8 +85,8 @@ py::array_t<double> world_path_array(const grid::GridMap& map, const grid::Polyl
     auto v = a.mutable_unchecked<2>();
     for (std::size_t i = 0; i < path.size(); ++i) {
         const grid::WorldPoint p = map.world(path[i].x, path[i].y);
-        v(static_cast<py::ssize_t>(i), 0) = std::round(p.x * 1e9) / 1e9 + 0.0;
-        v(static_cast<py::ssize_t>(i), 1) = std::round(p.y * 1e9) / 1e9 + 0.0;
+        v(static_cast<py::ssize_t>(i), 0) = grid::printed_world(p.x);
+        v(static_cast<py::ssize_t>(i), 1) = grid::printed_world(p.y);
     }
     return a;
 }

@@ -95,6 +95,20 @@ def test_start_equal_to_goal_is_the_one_cell_path_for_every_planner():
         assert r.path_metrics["length"] == 0.0, algo
 
 
+def test_world_coordinates_of_a_fine_frame_stay_distinct(tmp_path):
+    # Before: a 1e-10 m resolution printed every cell's coordinates as 0.
+    pgm = tmp_path / "m.pgm"
+    pgm.write_bytes(b"P5\n4 4\n255\n" + bytes([254] * 16))
+    yaml = tmp_path / "m.yaml"
+    yaml.write_text("image: m.pgm\nresolution: 1e-10\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\n"
+                    "free_thresh: 0.196\n")
+    grid = pride.Grid.load(yaml)
+    r = pride.plan(grid, (0, 0), (3, 0), algo="astar", objective="length")
+    world = r.path_world
+    assert len({tuple(p) for p in world.tolist()}) == len(world) == 4
+    assert world[1][0] == pytest.approx(1.5e-10, rel=1e-12)
+
+
 def test_nsga3_refuses_more_objectives_than_it_sets_up_in_time():
     # Before: 3000 objectives took 22 s before the first wall-clock check.
     t = time.monotonic()
