@@ -238,6 +238,35 @@ TEST_CASE("hostile: world coordinates of a fine frame stay distinct", "[hostile]
     CHECK_THAT(usual.out, Catch::Contains("\"path_world\": [[-9.975, -9.975], [-9.925, -9.975]]"));
 }
 
+TEST_CASE("hostile: planted links to one file in an output folder are two files, each replaced", "[hostile][outputs]") {
+    const TempDir dir("pride-hostile-links");
+    const std::string store = small_store(dir, "s.sqlite");
+    const std::string victim = dir.write("v.txt", "victim\n");
+    fs::create_directory(dir.file("h2"));
+    fs::create_symlink(victim, dir.file("h2/index.html"));
+    const auto r = run_pride("report " + q(store) + " --html " + q(dir.file("h2")));
+    INFO(r.err);
+    CHECK(r.status == 0);
+    CHECK(pride::test::slurp(victim) == "victim\n");
+    CHECK(!fs::is_symlink(dir.file("h2/index.html")));
+    // Links to one file planted for the page and every figure: before, "named twice in one output".
+    int figures = 0;
+    for (const auto& e : fs::directory_iterator(dir.file("h2")))
+        if (e.path().extension() == ".svg") {
+            fs::remove(e.path());
+            fs::create_symlink(victim, e.path());
+            ++figures;
+        }
+    CHECK(figures >= 1);
+    fs::remove(dir.file("h2/index.html"));
+    fs::create_symlink(victim, dir.file("h2/index.html"));
+    const auto again = run_pride("report " + q(store) + " --html " + q(dir.file("h2")));
+    INFO(again.err);
+    CHECK(again.status == 0);
+    CHECK(pride::test::slurp(victim) == "victim\n");
+    for (const auto& e : fs::directory_iterator(dir.file("h2"))) CHECK(!fs::is_symlink(e.path()));
+}
+
 TEST_CASE("hostile: the exact any-angle search is refused past its corners, in one line at once", "[hostile][grid]") {
     // 40,000 isolated obstacles: 160,000 convex corners (the search's time grows with their
     // square: 21.7 s for 170,781 corners, over 60 s for 683,161).
