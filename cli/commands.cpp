@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <istream>
 #include <ostream>
@@ -20,10 +21,22 @@
 
 namespace pride::cli {
 
-engine::ParamValues parse_params(const std::vector<std::string>& assignments, const std::optional<std::int64_t>& pop) {
+engine::ParamValues parse_params(const std::vector<std::string>& assignments, const std::optional<std::string>& pop) {
     engine::ParamValues params;
     for (const auto& p : assignments) params.set_from_string(p);
-    if (pop) params.set("pop", static_cast<double>(*pop));
+    // --pop is checked against the algorithm's own range (engine::ParamSpec::check), so that it
+    // gets the message a campaign's or Python's pop gets. An integer written in full is its value;
+    // anything else (1e3, 2.5, abc) is handed on as text, which the check refuses with that range.
+    if (pop) {
+        const std::string_view t = *pop;
+        const std::string_view digits = !t.empty() && (t[0] == '-' || t[0] == '+') ? t.substr(1) : t;
+        const bool whole =
+            !digits.empty() && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+        if (whole)
+            params.set("pop", std::strtod(pop->c_str(), nullptr));
+        else
+            params.set_name("pop", *pop);
+    }
     return params;
 }
 

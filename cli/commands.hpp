@@ -17,8 +17,8 @@ struct RunOptions {
     std::int64_t dim = 0;
     std::optional<std::int64_t> instance;
     std::string algo;
-    engine::Budget budget;  // --evals, --iters, --target, --wall-ms, --threads
-    std::optional<std::int64_t> pop;
+    engine::Budget budget;            // --evals, --iters, --target, --wall-ms, --threads
+    std::optional<std::string> pop;   // as given: its range is the algorithm's
     std::uint64_t seed = 1;           // every 64-bit value is a seed (flags.hpp: max_seed)
     std::vector<std::string> params;  // "name=value"
     bool json = false;
@@ -26,7 +26,7 @@ struct RunOptions {
 int run_command(const RunOptions& o, std::ostream& out);
 
 /// "name=value" assignments (--param), with the population of --pop when given.
-engine::ParamValues parse_params(const std::vector<std::string>& assignments, const std::optional<std::int64_t>& pop);
+engine::ParamValues parse_params(const std::vector<std::string>& assignments, const std::optional<std::string>& pop);
 
 struct EvalOptions {
     std::string problem;

@@ -28,8 +28,8 @@ struct FrontOptions {
     std::int64_t inflate = 0;
     bool unknown_free = false;  // images and map_server maps: unknown cells free
     bool corner_cutting = false;
-    engine::Budget budget;  // --evals, --iters, --wall-ms
-    std::optional<std::int64_t> pop;
+    engine::Budget budget;           // --evals, --iters, --wall-ms
+    std::optional<std::string> pop;  // as given: its range is the algorithm's
     std::uint64_t seed = 1;
     std::vector<std::string> params;
     bool json = false;

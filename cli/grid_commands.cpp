@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/numbers.hpp"
 #include "cli/output.hpp"
+#include "engine/planner_settings.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
 #include "engine/scenarios.hpp"
@@ -75,12 +76,11 @@ Cell parse_world_cell(const std::string& text, const GridMap& map, const std::st
 }
 
 std::string json_world_path(const GridMap& map, const Polyline& path) {
-    // Rounded to 1e-9 m: -10 + 0.5 * 0.05 is printed -9.975, not -9.975000000000001.
-    const auto round = [](double v) { return std::round(v * 1e9) / 1e9 + 0.0; };
     std::string out = "[";
     for (std::size_t i = 0; i < path.size(); ++i) {
         const WorldPoint p = map.world(path[i].x, path[i].y);
-        out += fmt::format("{}[{}, {}]", i ? ", " : "", json_number(round(p.x)), json_number(round(p.y)));
+        out +=
+            fmt::format("{}[{}, {}]", i ? ", " : "", json_number(printed_world(p.x)), json_number(printed_world(p.y)));
     }
     return out + "]";
 }
@@ -101,6 +101,7 @@ engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec_out) {
         o.goal_world.empty() ? parse_cell(o.goal, "--goal") : parse_world_cell(o.goal_world, *spec.map, "--goal-world");
     const engine::Problem problem(spec);
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
+    engine::refuse_unused_planner_settings(algorithm, spec, o.budget);
     engine::check(algorithm, problem, o.budget);
     if (spec_out) *spec_out = spec;
     return engine::run(algorithm, problem, o.budget, o.seed);

@@ -26,8 +26,8 @@ struct PathOptions {
     // uniform, walk (random feasible walks) or rules (Wan and Gao's (2022) rough-set rule walks); empty: the
     // algorithm's own choice (rules for ilso, uniform for the others)
     std::string init;
-    std::optional<std::int64_t> pop;
-    engine::Budget budget;  // --iters, --evals, --threads
+    std::optional<std::string> pop;  // as given: its range is the algorithm's
+    engine::Budget budget;           // --iters, --evals, --threads
     std::uint64_t seed = 1;
     std::int64_t inflate = 0;
     std::optional<std::int64_t> waypoints;  // free only (default 3); named with another encoding: refused

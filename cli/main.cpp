@@ -104,8 +104,8 @@ int run_main(int argc, char** argv) {
         ->check(integer_in(0, max_count));
     run_cmd->add_option("--target", run.budget.target, "stop once the best value is <= this")->check(finite_in());
     run_cmd->add_option("--wall-ms", run.budget.wall_ms, "stop after this many milliseconds")->check(finite_in());
-    run_cmd->add_option("--pop", run.pop, "population size (NLopt: evaluations per recorded iteration)")
-        ->check(integer_in(1, max_count));
+    run_cmd->add_option("--pop", run.pop,
+                        "population size (NLopt: evaluations per recorded iteration; its range: pride list)");
     run_cmd->add_option("--seed", run.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
     run_cmd
         ->add_option("--threads", run.budget.threads,
@@ -156,7 +156,7 @@ int run_main(int argc, char** argv) {
         "--init", path.init,
         "uniform, walk (random feasible walks), rules (rough-set rule walks, Wan and Gao 2022) or sitp (SITP walks, "
         "Zhang et al. 2025; also for --encoding chain); default: rules for ilso, uniform for the others");
-    path_cmd->add_option("--pop", path.pop, "population size (default 20)")->check(integer_in(1, max_count));
+    path_cmd->add_option("--pop", path.pop, "population size (default 20; its range: pride list)");
     auto* path_iters =
         path_cmd
             ->add_option("--iters", path.budget.iterations, "iteration limit (default 50 when --evals is not given)")
@@ -245,7 +245,7 @@ int run_main(int argc, char** argv) {
         ->excludes(front_evals)
         ->check(integer_in(0, max_count));
     front_cmd->add_option("--wall-ms", front.budget.wall_ms, "stop after this many milliseconds")->check(finite_in());
-    front_cmd->add_option("--pop", front.pop, "population size")->check(integer_in(1, max_count));
+    front_cmd->add_option("--pop", front.pop, "population size (its range: pride list)");
     front_cmd->add_option("--seed", front.seed, "random seed (default 1)")->check(integer_in(0, max_seed));
     front_cmd->add_option("--param", front.params, "algorithm parameter NAME=VALUE (repeatable)");
     front_cmd->add_flag("--no-reference", front.no_reference,

@@ -125,6 +125,9 @@ double record_solution(GridOutcome& o, const GridTarget& target, GridSolution& s
             o.polyline = std::move(s.polyline);
             for (std::size_t i = 1; i < o.polyline.size(); ++i)
                 o.value += std::hypot(o.polyline[i].x - o.polyline[i - 1].x, o.polyline[i].y - o.polyline[i - 1].y);
+            // Start = goal: the one-vertex polyline is also the one-cell path, given as A* gives it.
+            if (o.polyline.size() == 1)
+                o.path = std::visit([](const auto& g) { return grid::Path{g.start()}; }, target.problem);
         }
         return o.feasible ? o.value : std::numeric_limits<double>::infinity();
     }

@@ -30,6 +30,11 @@ namespace {
 std::string number(double v) {
     return fmt::format("{}", v);
 }
+/// A value for an integer's message: whole numbers written out in full (9223372036854775807 from
+/// a campaign or Python is 9223372036854775808 as a double, never 9.223372036854776e+18).
+std::string integer_text(double v) {
+    return std::isfinite(v) && v == std::floor(v) && std::abs(v) < 1e21 ? fmt::format("{:.0f}", v) : number(v);
+}
 }  // namespace
 
 std::string ParamSpec::range() const {
@@ -60,12 +65,13 @@ void ParamSpec::check(double v, const std::string& where) const {
             fmt::format("{} takes a name: {} ({}), got the number {}", name, range(), doc, number(v)));
     require(std::isfinite(v), where, fmt::format("{} must be a finite number in {}, got {}", name, range(), number(v)));
     const bool integral = v == std::floor(v) && std::abs(v) < 9.0e15;
-    if (type != ParamType::real)
-        require(
-            integral, where,
-            fmt::format("{} must be {}, got {}", name, type == ParamType::flag ? "0 or 1" : "an integer", number(v)));
     const bool above = min_open ? v > min : v >= min;
     const bool below = max_open ? v < max : v <= max;
+    // An integer out of its range or not whole: one message with the range, whichever it is.
+    if (type == ParamType::integer)
+        require(integral && above && below, where,
+                fmt::format("{} must be an integer in {} ({}), got {}", name, range(), doc, integer_text(v)));
+    if (type == ParamType::flag) require(integral, where, fmt::format("{} must be 0 or 1, got {}", name, number(v)));
     require(std::isfinite(v) && above && below, where,
             fmt::format("{} must be in {} ({}), got {}", name, range(), doc, number(v)));
 }
@@ -156,7 +162,9 @@ Params::Params(const std::string& algorithm, const std::vector<ParamSpec>& specs
     for (const auto& [name, text] : given.names()) {
         const ParamSpec* spec = declared(name);
         require(spec->type == ParamType::choice, algorithm,
-                fmt::format("{} must be a finite number in {}, got '{}'", name, spec->range(), text));
+                spec->type == ParamType::integer
+                    ? fmt::format("{} must be an integer in {} ({}), got '{}'", name, spec->range(), spec->doc, text)
+                    : fmt::format("{} must be a finite number in {}, got '{}'", name, spec->range(), text));
         given_[name] = spec->choice_index(text, algorithm);
     }
     for (const auto& s : specs)

@@ -30,7 +30,9 @@ ScenarioCheck check_scenarios(const std::string& file, const std::string& map_di
         auto it = maps.find(e.map);
         if (it == maps.end()) {
             try {
-                it = maps.emplace(e.map, read_map((dir / e.map).string())).first;
+                MapReadOptions read;
+                read.named_in_file = true;  // a scenario line's map: never standard input
+                it = maps.emplace(e.map, read_map((dir / e.map).string(), read)).first;
             } catch (const InputError& error) {
                 throw InputError(where + ": " + error.what());
             }

@@ -267,8 +267,13 @@ class OutputFiles {
         const bool exists = inside ? ::lstat(path.c_str(), &st) == 0 : ::stat(path.c_str(), &st) == 0;
         if (path.filename().empty() || (exists && S_ISDIR(st.st_mode)))
             throw InputError(shown + ": cannot write: it is a folder");
+        // Inside an output folder a link in a file's place is replaced, never followed: files are
+        // told apart by their names in the folder (two planted links to one file are two files).
+        // A file named on the command line is written through a link: by where it leads.
         std::error_code ec;
-        const fs::path same = fs::weakly_canonical(path, ec);
+        const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+        const fs::path same =
+            inside ? fs::weakly_canonical(folder, ec) / path.filename() : fs::weakly_canonical(path, ec);
         const std::string key = ec ? shown : same.string();
         if (names_.count(key)) throw InputError(shown + ": named twice in one output; give each its own name");
         auto file = std::unique_ptr<File>(new File());

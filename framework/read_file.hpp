@@ -23,7 +23,13 @@ namespace pride {
 /// InputError "PATH: cannot open: REASON", "PATH: is a folder, not a file", "PATH: not a regular
 /// file (KIND): ...", "PATH: cannot read: REASON" or "PATH: too large: more than N MiB (WHAT files
 /// are far smaller)" otherwise.
-inline std::string read_capped_file(const std::string& path, std::size_t max_bytes, const std::string& what) {
+///
+/// `named_in_file`: the path was read from inside a file (a campaign's map, a scenario line's map,
+/// a map_server YAML's image), not given on the user's own command line: then standard input is
+/// refused by name too ("PATH: standard input is read only when named on the command line, not
+/// inside a file"), as a file that names it would wait on whatever stdin is.
+inline std::string read_capped_file(const std::string& path, std::size_t max_bytes, const std::string& what,
+                                    bool named_in_file = false) {
     struct Closer {
         int fd;
         ~Closer() { ::close(fd); }
@@ -32,7 +38,10 @@ inline std::string read_capped_file(const std::string& path, std::size_t max_byt
         return InputError(path + ": too large: more than " + std::to_string(max_bytes >> 20) + " MiB (" + what +
                           " files are far smaller)");
     };
-    const bool standard_input = path == "/dev/stdin" || path == "/dev/fd/0" || path == "/proc/self/fd/0";
+    const bool names_stdin = path == "/dev/stdin" || path == "/dev/fd/0" || path == "/proc/self/fd/0";
+    if (names_stdin && named_in_file)
+        throw InputError(path + ": standard input is read only when named on the command line, not inside a file");
+    const bool standard_input = names_stdin && !named_in_file;
     // O_NONBLOCK: opening a FIFO does not wait for a writer; fstat then refuses it.
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | (standard_input ? 0 : O_NONBLOCK));
     if (fd < 0) {
@@ -53,7 +62,8 @@ inline std::string read_capped_file(const std::string& path, std::size_t max_byt
                            : S_ISSOCK(st.st_mode) ? "a socket"
                                                   : "not a file";
         throw InputError(path + ": not a regular file (" + kind + "): " + what +
-                         " files are read from regular files, or from standard input as /dev/stdin");
+                         (named_in_file ? " files named inside a file are read from regular files only"
+                                        : " files are read from regular files, or from standard input as /dev/stdin"));
     }
     if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_bytes) throw too_large();
     if (!standard_input) ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);

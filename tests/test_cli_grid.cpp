@@ -692,11 +692,13 @@ TEST_CASE("cli grid: start equal to goal is a one-cell path", "[cli][grid][path]
     const JsonValue j = check_path_json(success("path " + where + " --algo ga --encoding chain --json --oracle"),
                                         b.grid, {3, 3}, {3, 3}, cells_objective(), "ga", true);
     CHECK(j.at("path").items.size() == 1);
-    // Polyline planners: the one-vertex polyline (their path is [] as always).
+    // Polyline planners: the one-vertex polyline, and the one-cell path as A* gives it.
     for (const std::string& algo : {std::string("theta-star"), std::string("any-angle-exact")}) {
         const JsonValue p = parse_json(success("path " + where + " --algo " + algo + " --objective length --json"));
         CHECK(p.at("feasible").boolean);
         REQUIRE(p.at("polyline").items.size() == 1);
+        CHECK(p.at("path").items.size() == 1);
+        CHECK(p.at("metrics").at("cells").number == 1);
         CHECK(p.at("objective_value").number == 0);
     }
 }

@@ -32,11 +32,16 @@ TEST_CASE("cli: a campaign with a run that cannot fit in memory is refused befor
     check_input_error(run_pride("bench '" + config + "' --out '" + dir.file("s.sqlite") + "'"),
                       {config + ":9", "'p'", "'s'", "memory"});
     CHECK(dir.entries() == std::vector<std::string>{"huge.toml"});  // no store written
+    // The most seeds (1000000) on 1000 instances: 10^9 runs, whose list is checked before it is made.
+    std::string instances;
+    for (int k = 1; k <= 1000; ++k) instances += (k > 1 ? ", " : "") + std::to_string(k);
     const std::string many = dir.write("many.toml",
-                                       "name = \"many\"\nseeds = 1000000000000\n[budget]\nevaluations = 100\n"
-                                       "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
-                                       "[[algorithm]]\nid = \"p\"\ntype = \"pso\"\n");
+                                       "name = \"many\"\nseeds = 1000000\n[budget]\nevaluations = 100\n"
+                                       "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\ninstance = [" +
+                                           instances +
+                                           "]\n"
+                                           "[[algorithm]]\nid = \"p\"\ntype = \"pso\"\n");
     check_input_error(run_pride("bench '" + many + "' --out '" + dir.file("m.sqlite") + "'"),
-                      {many, "1000000000000 runs", "memory"});
+                      {many, "1000000000 runs", "memory"});
     CHECK(dir.entries() == std::vector<std::string>{"huge.toml", "many.toml"});
 }

@@ -184,7 +184,7 @@ TEST_CASE("docs: the example's parameters are checked against their declared ran
     CHECK(refused({{"sigma", 0.1}}) ==
           "example-es: unknown parameter 'sigma' (parameters: sigma0, window, encoding, connector, init)");
     CHECK_THAT(refused({{"sigma0", 0.0}}), Catch::Contains("sigma0 must be in (0, 1]"));
-    CHECK_THAT(refused({{"window", 0.0}}), Catch::Contains("window must be in [1, 1000]"));
+    CHECK_THAT(refused({{"window", 0.0}}), Catch::Contains("window must be an integer in [1, 1000]"));
     CHECK_THAT(refused({{"window", 2.5}}), Catch::Contains("window must be an integer"));
 }
 

@@ -49,6 +49,15 @@ std::vector<std::string> runs(const std::string& store) {
     return out;
 }
 
+/// The hidden files a merge writes before its output is whole, left in `dir`.
+std::vector<std::string> temporaries(const pride::test::TempDir& dir) {
+    std::vector<std::string> out;
+    for (const auto& e : fs::directory_iterator(dir.file("")))
+        if (e.path().filename().string().find(".pride-merge-") != std::string::npos)
+            out.push_back(e.path().filename().string());
+    return out;
+}
+
 std::string bench(const pride::test::TempDir& dir, const std::string& name, const std::string& text,
                   const std::string& store) {
     const auto r = pride::test::run_pride("bench '" + dir.write(name, text) + "' --out '" + dir.file(store) + "'");
@@ -74,7 +83,7 @@ TEST_CASE("merge: stores of one campaign run in parts equal the whole campaign's
     CHECK(runs(dir.file("m.sqlite")) == runs(whole));
     CHECK(runs(a) == a_runs);  // inputs untouched
     CHECK(runs(b) == b_runs);
-    CHECK(!fs::exists(dir.file("m.sqlite.part")));
+    CHECK(temporaries(dir).empty());
     // The merged store reports as the parts read together do, and grows like any other store.
     const auto merged = pride::test::run_pride("report '" + dir.file("m.sqlite") + "' --format csv");
     const auto parts = pride::test::run_pride("report '" + a + "' '" + b + "' --format csv");
@@ -101,7 +110,7 @@ TEST_CASE("merge: what cannot be merged is refused, naming it, and nothing is wr
         CHECK_THAT(r.err, Catch::Contains(words));
         CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
         CHECK(!fs::exists(out));
-        CHECK(!fs::exists(out + ".part"));
+        CHECK(temporaries(dir).empty());
     };
     refused(bench(dir, "b.toml", campaign(2, kPso, 301), "b.sqlite"),
             "its runs have the budget 'evaluations = 301', those of " + a + " 'evaluations = 300'");
@@ -128,7 +137,9 @@ TEST_CASE("merge: what cannot be merged is refused, naming it, and nothing is wr
     // An output whose folder cannot be written (here: a file in the folder's place) is the user's
     // error, one line and exit 2 (it was "internal error: filesystem error ...", exit 1).
     const std::string file = dir.write("plain", "x");
-    const auto unwritable = pride::test::run_pride("merge '" + a + "' '" + a + "' --out '" + file + "/m.sqlite'");
+    const auto unwritable =
+        pride::test::run_pride("merge '" + a + "' '" + bench(dir, "e.toml", campaign(2, kPso), "e.sqlite") +
+                               "' --out '" + file + "/m.sqlite'");
     CHECK(unwritable.status == 2);
     CHECK_THAT(unwritable.err, Catch::Contains(file + "/m.sqlite: cannot write the merged store: Not a directory"));
 }

@@ -541,6 +541,8 @@ TEST_CASE("outputs: a finished store on a read-only file system is read", "[outp
     const std::string made = small_store(dir, "s", 5);
     const std::string store = (stores / "a?b#c%d e.sqlite").string();
     fs::copy_file(made, store);
+    const std::string copy = (stores / "copy.sqlite").string();  // another file of the same runs
+    fs::copy_file(made, copy);
     REQUIRE(!fs::exists(store + "-wal"));
     const std::string out = dir.file("out");
     const auto exe = quote(PRIDE_EXE) + " ";
@@ -548,6 +550,7 @@ TEST_CASE("outputs: a finished store on a read-only file system is read", "[outp
         {"report", exe + "report " + quote(store)},
         {"report --html", exe + "report " + quote(store) + " --html " + quote(out + "/page")},
         {"export --ioh", exe + "export " + quote(store) + " --ioh " + quote(out + "/ioh")},
+        {"merge", exe + "merge " + quote(store) + " " + quote(copy) + " --out " + quote(out + "/merged.sqlite")},
     };
     if (has_matplotlib())
         commands.emplace_back("report --plots", exe + "report " + quote(store) + " --plots " + quote(out + "/plots"));
@@ -564,9 +567,11 @@ TEST_CASE("outputs: a finished store on a read-only file system is read", "[outp
     }
     CHECK(fs::exists(out + "/page/index.html"));
     CHECK(fs::exists(out + "/ioh"));
-    const std::vector<std::string> expected{"a?b#c%d e.sqlite"};
+    CHECK(fs::exists(out + "/merged.sqlite"));
+    const std::vector<std::string> expected{"a?b#c%d e.sqlite", "copy.sqlite"};
     std::vector<std::string> left;
     for (const auto& e : fs::directory_iterator(stores)) left.push_back(e.path().filename().string());
+    std::sort(left.begin(), left.end());
     CHECK(left == expected);  // nothing written beside it
 
     // A store whose write-ahead log still holds changes, without its -shm: SQLite cannot open

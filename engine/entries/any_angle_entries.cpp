@@ -53,10 +53,15 @@ void register_any_angle(AlgorithmRegistry& registry) {
         "grids only: the exact any-angle shortest path (visibility graph over the obstacles' convex "
         "corners, A*), the polylines' optimum";
     e.plans_polylines = true;
-    add_runner<GridTarget>(e, Kind::grid, [](const RunRequest&, const GridTarget& target) {
+    add_runner<GridTarget>(e, Kind::grid, [](const RunRequest& r, const GridTarget& target) {
+        // The run's wall time and stop flag reach into the search: it has no iterations to stop
+        // between, and takes minutes on a large map with many obstacles (docs/reliability.md).
+        std::optional<std::chrono::steady_clock::time_point> deadline;
+        if (r.termination.wall_time) deadline = std::chrono::steady_clock::now() + *r.termination.wall_time;
         return std::visit(
-            [](const auto& g) {
+            [&](const auto& g) {
                 grid::AnyAngleOracle oracle(g.map());
+                oracle.set_limits(deadline, r.termination.stop);
                 std::vector<grid::Point> points;
                 GridSolution s;
                 if (oracle.solve(g.start(), g.goal(), &points) >= 0.0) {

@@ -6,6 +6,7 @@
 // Pm, Zhang et al. (2025), as the GA on chains), since the paper's 1/n per variable has no chain form.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <type_traits>
@@ -44,6 +45,11 @@ AlgorithmEntry mo_algorithm(std::string name, std::string summary, std::vector<P
     });
     return e;
 }
+
+/// The most work NSGA-III's generation may cost, in M N (4N + 2D + 2M) operations (its check_objectives):
+/// about 0.8 s, measured on the 2-core machine at 500 objectives with the default directions and
+/// population (docs/reliability.md, "Sizes before work").
+constexpr double kNsga3MaxWork = 1e9;
 
 /// p_m on chains when none is given: decided by this project (see register_multiobjective).
 constexpr double kChainMutation = 1.0;
@@ -114,7 +120,10 @@ ParamSpec tournament_param() {
 /// NSGA-III's reference directions: H = `divisions` (one layer, or two with `inner` > 0), or the
 /// paper's Table I for M = 3, 5, 8, 10, 15 (H = 12; 6; 3 and 2; 3 and 2; 2 and 1) and else the
 /// largest one-layer lattice of at most 100 directions (M = 2: H = 99).
-Matrix nsga3_directions(std::size_t m, std::int64_t divisions, std::int64_t inner) {
+struct Nsga3Layers {
+    std::size_t outer = 0, inner = 0, size = 0;
+};
+Nsga3Layers nsga3_layers(std::size_t m, std::int64_t divisions, std::int64_t inner) {
     std::size_t outer = static_cast<std::size_t>(divisions), in = static_cast<std::size_t>(inner);
     if (divisions == 0) {
         in = 0;
@@ -138,6 +147,11 @@ Matrix nsga3_directions(std::size_t m, std::int64_t divisions, std::int64_t inne
     }
     const std::size_t size =
         in == 0 ? pareto::simplex_lattice_size(m, outer) : pareto::two_layer_lattice_size(m, outer, in);
+    return {outer, in, size};
+}
+
+Matrix nsga3_directions(std::size_t m, std::int64_t divisions, std::int64_t inner) {
+    const auto [outer, in, size] = nsga3_layers(m, divisions, inner);
     require(size <= 1'000'000, "nsga3",
             "the reference directions of M = " + std::to_string(m) + " objectives and H = " + std::to_string(outer) +
                 (in == 0 ? "" : ", " + std::to_string(in)) + " number more than 1000000");
@@ -188,6 +202,33 @@ void register_multiobjective(AlgorithmRegistry& registry) {
         mo_algorithm("nsga3", "NSGA-III (Deb and Jain 2014): NSGA-II with niching on reference directions, for M >= 3",
                      std::move(nsga3_params), nsga3);
     add_mo_chain_runner(nsga3_entry, nsga3);
+    // A generation costs about M N (4N + 2D + 2M) operations for N members, D directions and M
+    // objectives (perf, at M = 1000: the non-dominated sorting of 2N members, the hyperplane's
+    // extreme points and intercepts, the association with the directions; the directions
+    // themselves take 1%), and the first generation runs before any wall-clock check. Past
+    // about 14 objectives the default directions are the M unit vectors and N about M: M^3.
+    // Refused past kNsga3MaxWork, 500 objectives with the defaults (measured in
+    // docs/reliability.md, "Sizes before work").
+    nsga3_entry.check_objectives = [](const Params& p, std::size_t objectives) {
+        const auto layers = nsga3_layers(objectives, p.integer("divisions"), p.integer("inner_divisions"));
+        const double m = static_cast<double>(objectives), d = static_cast<double>(layers.size);
+        const double n = p.integer("pop") > 0 ? static_cast<double>(p.integer("pop")) : std::ceil(d / 4.0) * 4.0;
+        const double work = m * n * (4.0 * n + 2.0 * d + 2.0 * m);
+        if (work <= kNsga3MaxWork) return;
+        std::size_t most = 3;  // the most objectives the defaults allow
+        for (;;) {
+            const double next = static_cast<double>(most + 1);
+            const double dn = static_cast<double>(nsga3_layers(most + 1, 0, 0).size), nn = std::ceil(dn / 4.0) * 4.0;
+            if (next * nn * (4.0 * nn + 2.0 * dn + 2.0 * next) > kNsga3MaxWork) break;
+            ++most;
+        }
+        throw InputError("objectives",
+                         fmt::format("NSGA-III in {} objectives with {} directions and a population of {}: a "
+                                     "generation costs about M N (4N + 2D + 2M) = {:.3g} operations, more than the "
+                                     "{:.0e} done in about a second, before any time limit is checked (with the "
+                                     "default directions and population: at most {} objectives)",
+                                     objectives, layers.size, n, work, kNsga3MaxWork, most));
+    };
     registry.add(std::move(nsga3_entry));
 
     registry.add(mo_algorithm(
@@ -234,6 +275,17 @@ void register_multiobjective(AlgorithmRegistry& registry) {
     // population past their bound would fail at its first step, after the run had started.
     sms.check_objectives = [](const Params& p, std::size_t objectives) {
         const std::size_t most = pareto::exact_hypervolume_points(objectives) / 2;
+        // Below the smallest population (pop >= 2: 3 points) no pop would do: the objectives are
+        // too many, which is what is said (it said "pop must be at most 0").
+        if (most < 3) {
+            std::size_t largest = 3;
+            while (pareto::exact_hypervolume_points(largest + 1) / 2 >= 3) ++largest;
+            throw InputError("objectives",
+                             fmt::format("SMS-EMOA computes exact hypervolume contributions of pop + 1 points "
+                                         "(pop >= 2), and in {} objectives at most {} are computed in about a "
+                                         "second: too many objectives for SMS-EMOA (at most {})",
+                                         objectives, most, largest));
+        }
         const auto pop = static_cast<std::size_t>(p.integer("pop"));
         require(pop < most, "pop",
                 fmt::format("SMS-EMOA computes exact hypervolume contributions of up to pop + 1 points, and in {} "

@@ -123,6 +123,7 @@ void prepare(Campaign& c) {
             "[budget]: give evaluations or evaluations_per_dim, not both");
     require(!c.problems.empty(), file, "no [[problem]]");
     apply_suite_rules(c);
+    require(c.seeds >= 1 && c.seeds <= max_campaign_seeds, file, "seeds " + seeds_range_message(c.seeds));
     require(!c.algorithms.empty(), file, "no [[algorithm]]");
     require(c.problems.size() <= max_campaign_problems, file,
             fmt::format("{} problems; a campaign has at most {}", c.problems.size(), max_campaign_problems));
@@ -190,6 +191,7 @@ void prepare(Campaign& c) {
                     auto& m = maps[{p.map_file, p.inflate, p.unknown_free}];
                     grid::MapReadOptions read;
                     read.unknown_free = p.unknown_free;
+                    read.named_in_file = true;  // a campaign's maps are files, never standard input
                     if (!m) m = load_map(p.map_file, p.inflate, read);
                     g->map = m;
                 }

@@ -2,6 +2,8 @@
 // A campaign made ready to run: its suites' rules applied, every id and parameter checked, every
 // problem built once and its memory counted, before any run starts.
 #include <cstddef>
+#include <cstdint>
+#include <string>
 
 #include "experiment/campaign/campaign.hpp"
 
@@ -15,6 +17,15 @@ engine::ProblemSpec problem_spec(const CampaignProblem& p);
 /// instance list or suite must not start hours of building (each problem takes about 12 kB and
 /// 80 us to build before its rotation: a 6.9 MB file asked for a million).
 inline constexpr std::size_t max_campaign_problems = 100'000;
+
+/// At most this many seeds per problem and algorithm, in a campaign file (`seeds`), in Python's
+/// Campaign and in a campaign built in code (prepare() checks it for all): one limit, stated here.
+inline constexpr std::int64_t max_campaign_seeds = 1'000'000;
+
+/// The words a `seeds` beyond [1, max_campaign_seeds] is refused with.
+inline std::string seeds_range_message(std::int64_t seeds) {
+    return "must be in [1, " + std::to_string(max_campaign_seeds) + "], got " + std::to_string(seeds);
+}
 
 /// The memory a problem takes once prepare() has built it, estimated from its spec before any of
 /// it is: a built problem's tables (about 11 kB measured; 16 kB counted with its CampaignProblem

@@ -471,7 +471,8 @@ Campaign parse_campaign(const std::string& path) {
                 fail(at_column(path, value), "'name' " + why);
         } else if (k == "seeds") {
             c.seeds = need_integer(path, value, k);
-            if (c.seeds < 1) fail(at(path, value), "'seeds' must be >= 1");
+            if (c.seeds < 1 || c.seeds > max_campaign_seeds)
+                fail(at(path, value), "'seeds' " + seeds_range_message(c.seeds));
         } else if (k == "budget") {
             const toml::table* b = value.as_table();
             if (!b) fail(at(path, value), "'budget' must be a table");

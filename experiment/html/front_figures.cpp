@@ -122,6 +122,7 @@ engine::Problem stored_problem(const storage::CampaignStore& s, const PageStore&
         engine::GridSpec spec;
         grid::MapReadOptions read;
         read.unknown_free = grid->unknown_free;
+        read.named_in_file = true;  // the store names it: never standard input
         spec.map = engine::load_map(grid->map, grid->inflate, read);
         spec.start = grid->start;
         spec.goal = grid->goal;

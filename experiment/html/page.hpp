@@ -94,6 +94,7 @@ inline std::shared_ptr<const grid::GridMap> picture_map(Page& page, const GridPr
     try {
         grid::MapReadOptions read;
         read.unknown_free = info->unknown_free;
+        read.named_in_file = true;  // the store names it: never standard input
         return engine::load_map(info->map, info->inflate, read);
     } catch (const InputError& e) {
         page.notes += "<p class=\"note\">No picture of the paths: " + escape(e.what()) + "</p>\n";

@@ -1,9 +1,15 @@
 #include "experiment/storage/merge.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <sqlite3.h>
+#include <stdio.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -20,11 +26,12 @@ namespace {
 /// One SQLite connection, closed on every path.
 class Db {
   public:
-    Db(const std::string& path, int flags) : path_(path) {
-        if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
+    /// `name` is the store as the user named it, for messages; `file` what SQLite opens.
+    Db(const std::string& file, int flags, const std::string& name) : path_(name) {
+        if (sqlite3_open_v2(file.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
             const std::string why = db_ ? sqlite3_errmsg(db_) : "out of memory";
             sqlite3_close(db_);
-            throw InputError(path + ": cannot open the store: " + why);
+            throw InputError(name + ": cannot open the store: " + why);
         }
         sqlite3_busy_timeout(db_, 30000);
     }
@@ -66,6 +73,75 @@ class Db {
     sqlite3* db_ = nullptr;
 };
 
+/// The merged store until it is whole: a new hidden file beside `out`
+/// (".NAME.pride-merge-PID-N.tmp"), created exclusively, so never a file that was there before;
+/// removed with SQLite's files beside it unless committed, which renames it to `out` without
+/// replacing anything found there meanwhile.
+class Temporary {
+  public:
+    explicit Temporary(const std::string& out) : out_(out) {
+        namespace fs = std::filesystem;
+        const fs::path target(out);
+        fs::path folder = target.parent_path();
+        if (folder.empty()) folder = ".";
+        for (unsigned n = 0;; ++n) {
+            path_ =
+                (folder / fmt::format(".{}.pride-merge-{}-{}.tmp", target.filename().string(), ::getpid(), n)).string();
+            const int fd = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+            if (fd >= 0) {
+                ::close(fd);
+                break;
+            }
+            // A folder the user cannot write is the user's error: one line, exit 2.
+            if (errno != EEXIST || n >= 1000)
+                throw InputError(out + ": cannot write the merged store: " + std::strerror(errno));
+        }
+        try {
+            check_store_files(path_);  // nothing planted where SQLite will keep its journal
+        } catch (...) {
+            std::error_code ec;
+            fs::remove(path_, ec);
+            throw;
+        }
+    }
+    ~Temporary() {
+        if (!committed_) remove();
+    }
+    Temporary(const Temporary&) = delete;
+    Temporary& operator=(const Temporary&) = delete;
+
+    /// The file as SQLite opens it with SQLITE_OPEN_URI: a plain name, never read as a URI.
+    std::string sqlite_name() const { return path_.rfind('/', 0) == 0 ? path_ : "./" + path_; }
+
+    void remove() const {
+        std::error_code ec;
+        for (const char* suffix : {"-journal", "-wal", "-shm", ""}) std::filesystem::remove(path_ + suffix, ec);
+    }
+
+    /// Renamed to `out`, refused (and removed) when `out` has appeared meanwhile.
+    void commit() {
+        int rc = ::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, out_.c_str(), RENAME_NOREPLACE);
+        if (rc != 0 && (errno == EINVAL || errno == ENOSYS)) {  // a file system without it: a hard link
+            rc = ::link(path_.c_str(), out_.c_str());
+            if (rc == 0) ::unlink(path_.c_str());
+        }
+        if (rc != 0) {
+            const int e = errno;
+            remove();
+            throw InputError(
+                out_ + ": cannot write the store: " +
+                (e == EEXIST ? std::string("it was made meanwhile by another program") : std::strerror(e)));
+        }
+        committed_ = true;
+        std::error_code ec;
+        for (const char* suffix : {"-journal", "-wal", "-shm"}) std::filesystem::remove(path_ + suffix, ec);
+    }
+
+  private:
+    std::string out_, path_;
+    bool committed_ = false;
+};
+
 std::string text(const std::optional<std::string>& v) {
     return v.value_or("NULL");
 }
@@ -94,13 +170,32 @@ std::string joined(const std::vector<std::string>& names, const std::string& pre
 
 MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::string& out) {
     require(inputs.size() >= 2, "merge", "give two stores or more to merge");
-    require(!std::filesystem::exists(out), out, "exists already; merge writes a new store (choose another --out)");
+    {
+        std::error_code ec;
+        require(std::filesystem::symlink_status(out, ec).type() == std::filesystem::file_type::not_found, out,
+                "exists already; merge writes a new store (choose another --out)");
+    }
     for (const auto& in : inputs) require(std::filesystem::is_regular_file(in), in, "no such store");
-    // Each input checked as pride report checks it (the same code), then at the current schema
-    // (pride bench migrates a store when it opens it): a damaged input is never copied on.
-    for (const auto& in : inputs) check_store(in);
+    // One file named twice (under the same name or another: a link, another path) would count its
+    // runs twice.
+    std::map<std::pair<dev_t, ino_t>, std::string> seen;
     for (const auto& in : inputs) {
-        Db db(in, SQLITE_OPEN_READONLY);
+        struct stat st {};
+        if (::stat(in.c_str(), &st) != 0) throw InputError(in + ": cannot read the store: " + std::strerror(errno));
+        const auto [it, fresh] = seen.emplace(std::pair{st.st_dev, st.st_ino}, in);
+        if (!fresh)
+            throw InputError(in == it->second ? in + ": named twice; give each store once"
+                                              : in + ": the same file as " + it->second + "; give each store once");
+    }
+    // Each input checked as pride report checks it (the same code), then at the current schema
+    // (pride bench migrates a store when it opens it): a damaged input is never copied on. Each is
+    // opened read-only as report opens it (storage::read_only_uri), so a store in a read-only
+    // folder merges as it reports.
+    for (const auto& in : inputs) check_store(in);
+    std::vector<std::string> uris;
+    for (const auto& in : inputs) {
+        uris.push_back(read_only_uri(in));
+        Db db(uris.back(), SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, in);
         const auto v = db.rows("PRAGMA user_version");
         const int version = v.empty() ? 0 : std::stoi(*v[0][0]);
         if (db.rows("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'campaign'").empty())
@@ -110,23 +205,23 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
                             "migrate it{})",
                             version, schema_version, version > schema_version ? "; or use the newer pride" : ""));
     }
-    const std::string part = out + ".part";
-    // A folder the user cannot write is the user's error: one line, exit 2, nothing left behind.
-    if (std::error_code ec; !std::filesystem::remove(part, ec) && ec && ec != std::errc::no_such_file_or_directory)
-        throw InputError(out + ": cannot write the merged store: " + ec.message());
+    // The store is written to a new hidden file beside `out`, made here and nowhere else
+    // (O_EXCL), and renamed to `out` only when whole: no file the user did not name as the output
+    // is ever removed or written, whatever lies beside it.
+    Temporary part(out);
     MergeSummary summary;
     try {
         {
             // The first input, copied whole (SQLite's backup: a consistent copy, WAL included).
-            Db source(inputs[0], SQLITE_OPEN_READONLY);
-            Db target(part, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+            Db source(uris[0], SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, inputs[0]);
+            Db target(part.sqlite_name(), SQLITE_OPEN_READWRITE | SQLITE_OPEN_URI, out);
             sqlite3_backup* b = sqlite3_backup_init(target.get(), "main", source.get(), "main");
-            if (!b) throw InputError(part + ": cannot write the store: " + sqlite3_errmsg(target.get()));
+            if (!b) throw InputError(out + ": cannot write the store: " + sqlite3_errmsg(target.get()));
             const int rc = sqlite3_backup_step(b, -1);
             sqlite3_backup_finish(b);
-            if (rc != SQLITE_DONE) throw InputError(part + ": cannot write the store: " + sqlite3_errstr(rc));
+            if (rc != SQLITE_DONE) throw InputError(out + ": cannot write the store: " + sqlite3_errstr(rc));
         }
-        Db db(part, SQLITE_OPEN_READWRITE);
+        Db db(part.sqlite_name(), SQLITE_OPEN_READWRITE | SQLITE_OPEN_URI, out);
         db.exec("DELETE FROM claims");  // runs another process had taken: not results
         const auto campaign = db.rows("SELECT budget, precisions FROM campaign WHERE id = 1");
         require(!campaign.empty(), inputs[0], "has no campaign row");
@@ -139,7 +234,8 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
             keys_seen.insert(*row[0] + '\x1f' + *row[1] + '\x1f' + *row[2]);
         for (std::size_t k = 1; k < inputs.size(); ++k) {
             const std::string& in = inputs[k];
-            db.exec("ATTACH DATABASE " + quoted(in) + " AS b");
+            const std::string& uri = uris[k];
+            db.exec("ATTACH DATABASE " + quoted(uri) + " AS b");
             try {
                 const auto other = db.rows("SELECT budget, precisions FROM b.campaign WHERE id = 1");
                 require(!other.empty(), in, "has no campaign row");
@@ -218,17 +314,10 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
         summary.runs = keys_seen.size();
         db.exec("PRAGMA wal_checkpoint(TRUNCATE)");
     } catch (...) {
-        std::error_code ec;
-        for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(part + suffix, ec);
+        part.remove();
         throw;
     }
-    std::error_code ec;
-    std::filesystem::rename(part, out, ec);
-    if (ec) {
-        for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(part + suffix, ec);
-        throw InputError(out + ": cannot write the store: " + ec.message());
-    }
-    for (const char* suffix : {"-wal", "-shm"}) std::filesystem::remove(part + suffix, ec);
+    part.commit();
     return summary;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <sqlite3.h>
+#include <sys/stat.h>
 
 #include <cctype>
 #include <charconv>
@@ -306,7 +307,28 @@ sqlite3* try_open(const std::string& uri, std::string& why) {
 
 }  // namespace
 
+void check_store_files(const std::string& path) {
+    for (const char* suffix : {"-journal", "-wal", "-shm"}) {
+        const std::string file = path + suffix;
+        struct stat link {};
+        if (::lstat(file.c_str(), &link) != 0) continue;  // absent: SQLite makes it when it needs one
+        struct stat st {};
+        const bool dangling = ::stat(file.c_str(), &st) != 0;
+        if (!dangling && S_ISREG(st.st_mode)) continue;
+        const char* kind = dangling               ? "a link to nothing"
+                           : S_ISFIFO(st.st_mode) ? "a FIFO"
+                           : S_ISDIR(st.st_mode)  ? "a folder"
+                           : S_ISCHR(st.st_mode)  ? "a character device"
+                           : S_ISBLK(st.st_mode)  ? "a block device"
+                           : S_ISSOCK(st.st_mode) ? "a socket"
+                                                  : "not a file";
+        throw InputError(file + ": not a regular file (" + kind +
+                         "): SQLite keeps the store's journal there; remove it to use the store");
+    }
+}
+
 std::string read_only_uri(const std::string& path) {
+    check_store_files(path);
     std::string why;
     const std::string ro = uri_of(path) + "?mode=ro";
     if (sqlite3* db = try_open(ro, why)) {

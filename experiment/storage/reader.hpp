@@ -18,6 +18,13 @@ struct sqlite3;
 
 namespace pride::storage {
 
+/// Refuses, in one line, a store beside which SQLite's own files (PATH-journal, PATH-wal,
+/// PATH-shm) exist as anything but regular files (after links): SQLite opens them without
+/// looking, and waits forever on a FIFO there, or writes into a device. Every opening of a store
+/// (read_only_uri, the writer, merge) calls it first. InputError "PATH-journal: not a regular
+/// file (a FIFO): ...".
+void check_store_files(const std::string& path);
+
 /// The SQLite URI that opens the store at `path` for reading without writing anything beside it:
 /// "file:PATH?mode=ro", or, where that cannot read it (a read-only folder or file system, where a
 /// store in WAL mode cannot get its -shm file), "file:PATH?immutable=1" when nothing of the store

@@ -68,6 +68,8 @@ Writer::Writer(const std::string& path) : path_(path), token_(process_token(::ge
         throw InputError(path + ": cannot be the store: " +
                          (std::filesystem::is_directory(path) ? "it is a folder" : "not a regular file") +
                          "; nothing was changed");
+    // A FIFO where SQLite keeps its journal would hang the writer at its first transaction.
+    check_store_files(path);
     // A store is checked as pride report checks it (storage/reader.hpp: check_store, the same
     // code) before anything is trusted or written: resuming on a truncated or bit-flipped store
     // would take its damaged rows for stored runs and report success.

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "framework/error.hpp"
+#include "problems/continuous/bbob/instance.hpp"
 #include "problems/continuous/function_variant.hpp"
 
 namespace pride::continuous {
@@ -280,6 +281,7 @@ Function make_function(std::string_view name, std::int64_t dim, std::optional<st
         case Instances::coco:
             require(k >= 1, "instance",
                     std::string(name) + ": COCO numbers instances from 1, got " + std::to_string(k));
+            require(k <= bbob::kMaxInstance, "instance", bbob::instance_range_message(name, k));
             break;
     }
     return e.make(static_cast<std::size_t>(dim), k);

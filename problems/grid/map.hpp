@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,6 +61,17 @@ struct WorldPoint {
     double x = 0.0;
     double y = 0.0;
 };
+
+/// A world coordinate as printed (`pride path --json`'s path_world, Python's): rounded to 15
+/// significant digits, which drops the last bit of a sum (-10 + 0.5 * 0.05 is -9.975, not
+/// -9.975000000000001) and keeps any two distinct vertices apart: the frame's resolution is at least
+/// 1e-10 of every coordinate (GridMap::check_frame), and vertices lie half a cell apart or more.
+/// (Rounding to a fixed 1e-9 m printed every cell of a 1e-10 m map as 0.)
+inline double printed_world(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.15g", v);
+    return std::strtod(text, nullptr) + 0.0;  // + 0.0: no -0
+}
 
 class GridMap {
   public:

@@ -373,8 +373,8 @@ GridMap parse_matrix(const std::vector<Line>& lines, std::size_t first, const st
 // ---------------------------------------------------------------------------------------------
 // Files
 
-std::string read_file(const std::string& path) {
-    return read_capped_file(path, kMaxFileBytes, "map and scenario");
+std::string read_file(const std::string& path, bool named_in_file = false) {
+    return read_capped_file(path, kMaxFileBytes, "map and scenario", named_in_file);
 }
 
 }  // namespace
@@ -408,7 +408,7 @@ GridMap parse_map(std::string_view text, const std::string& name, const MapReadO
 }
 
 GridMap read_map(const std::string& path, const MapReadOptions& options) {
-    const std::string bytes = read_file(path);
+    const std::string bytes = read_file(path, options.named_in_file);
     if (!is_png(bytes) && !is_netpbm(bytes) && looks_like_ros_yaml(bytes)) {
         check_text(bytes, path);
         return read_ros_map(path, bytes, options.unknown_free);

@@ -30,6 +30,9 @@ namespace pride::grid {
 struct MapReadOptions {
     /// Unknown cells of images and map_server maps (image_map.hpp) are free, not blocked.
     bool unknown_free = false;
+    /// The map's path was read from inside a file (a campaign, a scenario line), not from the
+    /// user's command line: a regular file only, never standard input (framework/read_file.hpp).
+    bool named_in_file = false;
 };
 
 /// Parses a map held in `text`; `name` stands for the file in messages and becomes the map's name.

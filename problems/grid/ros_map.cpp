@@ -191,7 +191,7 @@ GridMap read_ros_map(const std::string& path, std::string_view text, bool unknow
         fs::path(info.image).is_absolute() ? fs::path(info.image) : fs::path(path).parent_path() / info.image;
     std::string bytes;
     try {
-        bytes = read_capped_file(image.string(), kMaxImageBytes, "map image");
+        bytes = read_capped_file(image.string(), kMaxImageBytes, "map image", true);  // named in the YAML
     } catch (const InputError& e) {
         throw InputError(path + ": image: " + e.what());
     }

@@ -71,10 +71,21 @@ def _reals(name, values):
     return out
 
 
+def _utf8(name, value):
+    """A str that has UTF-8 bytes, or a one-line ValueError naming it: a lone surrogate (what
+    os.listdir and sys.argv give for a name whose bytes are not UTF-8) has none."""
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError:
+        raise ValueError(f"{name}: not valid UTF-8 (a lone surrogate, as os.listdir gives for a name whose bytes "
+                         "are not UTF-8): pride takes UTF-8 text") from None
+    return value
+
+
 def _str(name, value):
     if not isinstance(value, str):
         raise TypeError(f"{name}: expected a name (str), got {type(value).__name__}")
-    return value
+    return _utf8(name, value)
 
 
 def _seed(value):
@@ -107,7 +118,7 @@ def _path(name, value):
         value = _os.fspath(value)
     if not isinstance(value, str):
         raise TypeError(f"{name}: expected a path (str or os.PathLike), got {type(value).__name__}")
-    return value
+    return _utf8(name, value)
 
 
 def _list(name, value):
@@ -188,6 +199,7 @@ def plan_front(grid, start, goal, *, algo="nsga2", objectives="length,turns", en
     its points the run found)."""
     if not isinstance(objectives, str):
         objectives = ",".join(_str("objectives", o) for o in _list("objectives", objectives))
+    objectives = _str("objectives", objectives)
     return Result(_pride.plan_front(_grid(grid), start, goal, _str("algo", algo), objectives,
                                     _str("encoding", encoding), "" if init is None else _str("init", init),
                                     _str("connector", connector),
@@ -303,6 +315,7 @@ def pareto(grid, start, goal, *, objectives="length,turns", corner_cutting=False
     clearance when it is one of the objectives (docs/grid.md: the cost per cell by distance band)."""
     if not isinstance(objectives, str):
         objectives = ",".join(_str("objectives", o) for o in _list("objectives", objectives))
+    objectives = _str("objectives", objectives)
     return _pride.pareto(_grid(grid), start, goal, objectives, _bool("corner_cutting", corner_cutting))
 
 
@@ -390,14 +403,14 @@ def roughset(table, *, columns=None):
         raise ValueError(f"table: expected a 2-D table (rows of objects), got {values.ndim} dimensions")
     if columns is None:
         columns = [chr(ord("a") + i) if i < 26 else f"c{i}" for i in range(values.shape[1])]
-    columns = [str(c) for c in columns]
+    columns = [_utf8("columns", str(c)) for c in columns]
     if len(columns) != values.shape[1]:
         raise ValueError(f"columns: {len(columns)} names for {values.shape[1]} columns")
     if values.dtype.kind in "iub":
         return _pride.roughset_table(columns, values.astype(int).tolist(), False)
     if values.dtype.kind == "f" and _np.all(_np.isfinite(values)) and _np.all(values == _np.floor(values)):
         return _pride.roughset_table(columns, values.astype(int).tolist(), False)
-    return _pride.roughset_table(columns, [[str(v) for v in row] for row in values], True)
+    return _pride.roughset_table(columns, [[_utf8("table", str(v)) for v in row] for row in values], True)
 
 
 class Campaign:
@@ -477,6 +490,7 @@ def report(path, *, raw=False, dataframe=None, html=None):
             raise TypeError(f"html: expected a folder (str or os.PathLike), got {type(html).__name__}")
         if not html:
             raise ValueError("html: expected a folder, got ''")
+        _utf8("html", html)
         if len(paths) != 1:
             raise ValueError("html: draws one store; join several into one with pride merge first")
     r = _pride.report(paths, raw)

@@ -64,7 +64,8 @@ campaign::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t 
     const std::string where = "problems[" + std::to_string(index) + "]";
     for (const auto& [k, v] : d) {
         if (!py::isinstance<py::str>(k)) throw py::type_error(where + ": keys must be str, got " + type_name(k));
-        require(problem_keys.count(k.cast<std::string>()) != 0, where, "unknown key '" + k.cast<std::string>() + "'");
+        const std::string key = utf8_arg(k, where + ": a key");
+        require(problem_keys.count(key) != 0, where, "unknown key '" + key + "'");
     }
     campaign::CampaignProblem p;
     const auto id = get<std::string>(d, "id", where);
@@ -93,13 +94,13 @@ campaign::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t 
         }
     };
     if (d.contains("problem") && !d["problem"].is_none() && py::isinstance<py::str>(d["problem"]) &&
-        engine::is_multiobjective_problem(d["problem"].cast<std::string>())) {
+        engine::is_multiobjective_problem(utf8_arg(d["problem"], where + ": problem"))) {
         // zdt1..dtlz7: several objectives, `objectives` M for DTLZ (default: the paper's n and M).
         require(!d.contains("instance"), where, "a multi-objective problem has no instances");
         const auto m = get<std::int64_t>(d, "objectives", where);
         p.objectives = m ? std::to_string(*m) : std::string();
-        p.spec =
-            engine::ContinuousSpec{d["problem"].cast<std::string>(), get<std::int64_t>(d, "dim", where).value_or(0)};
+        p.spec = engine::ContinuousSpec{utf8_arg(d["problem"], where + ": problem"),
+                                        get<std::int64_t>(d, "dim", where).value_or(0)};
         return p;
     }
     require(!d.contains("objectives") || d.contains("grid") || d.contains("map"), where,
@@ -175,7 +176,7 @@ campaign::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t 
             const py::object o = d["objectives"];
             std::string list;
             if (py::isinstance<py::str>(o)) {
-                list = o.cast<std::string>();
+                list = utf8_arg(o, where + ": objectives");
             } else if (py::isinstance<py::list>(o) || py::isinstance<py::tuple>(o)) {
                 for (const auto& item : o.cast<py::sequence>())
                     list += (list.empty() ? "" : ",") + text_arg(item, where + ": objectives");
@@ -196,7 +197,7 @@ campaign::CampaignAlgorithm algorithm(const py::handle& item, std::size_t index)
     const std::string where = "algorithms[" + std::to_string(index) + "]";
     campaign::CampaignAlgorithm a;
     if (py::isinstance<py::str>(item)) {
-        a.id = a.spec.name = item.cast<std::string>();
+        a.id = a.spec.name = utf8_arg(item, where);
         return a;
     }
     if (!py::isinstance<py::dict>(item))
@@ -210,7 +211,7 @@ campaign::CampaignAlgorithm algorithm(const py::handle& item, std::size_t index)
     py::dict params;
     for (const auto& [k, v] : d) {
         if (!py::isinstance<py::str>(k)) throw py::type_error(where + ": keys must be str, got " + type_name(k));
-        const auto key = k.cast<std::string>();
+        const auto key = utf8_arg(k, where + ": a key");
         if (key == "id" || key == "algo") continue;
         if (key == "params") {
             if (!py::isinstance<py::dict>(v))
@@ -235,7 +236,7 @@ std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seed
     auto c = std::make_shared<PyCampaign>();
     auto& k = c->campaign;
     require(!name.empty(), "name", "a campaign needs a name");
-    require(seeds >= 1 && seeds <= 1'000'000, "seeds", "must be in [1, 1000000], got " + std::to_string(seeds));
+    require(seeds >= 1 && seeds <= campaign::max_campaign_seeds, "seeds", campaign::seeds_range_message(seeds));
     require(evals || evals_per_dim || iters, "campaign",
             "give evals, evals_per_dim or iters (the budget of every run)");
     require(!(evals && evals_per_dim), "evals_per_dim", "give evals or evals_per_dim, not both");

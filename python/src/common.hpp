@@ -153,6 +153,10 @@ std::string type_name(const py::handle& o);
 std::int64_t integer_arg(const py::handle& o, const std::string& name);
 /// A real number (Python or numpy; bool refused); not checked for being finite.
 double number_arg(const py::handle& o, const std::string& name);
+/// The UTF-8 bytes of the str `o`, or a one-line ValueError naming `name` when it has none (a lone
+/// surrogate: what os.listdir and sys.argv give for a name whose bytes are not UTF-8), never
+/// pybind11's "Unable to cast" RuntimeError. Every str of the user's that C++ takes goes through it.
+std::string utf8_arg(const py::handle& o, const std::string& name);
 /// A str.
 std::string text_arg(const py::handle& o, const std::string& name);
 /// A file's path: a str or an os.PathLike giving one.

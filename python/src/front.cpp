@@ -1,6 +1,8 @@
 // pride.front and pride.plan_front: multi-objective runs from Python, on a catalog
 // problem, a Python function of M objectives, or a grid with several criteria; the result as
 // numpy arrays (one row per point), with its quality against the problem's reference front.
+#include <fmt/format.h>
+
 #include <cstring>
 
 #include "common.hpp"
@@ -114,17 +116,24 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
                std::optional<std::int64_t> iters, std::optional<double> wall_ms, std::uint64_t seed, bool vectorized,
                bool reference, const py::dict& params) {
     auto errors = std::make_shared<UserError>();
+    // `pride front --dim`'s range: 0 is no default here (it ran the paper's n).
+    require(!dim || (*dim >= 1 && *dim <= engine::max_budget), "dim",
+            fmt::format("must be an integer in [1, {}], got {}", engine::max_budget, dim.value_or(0)));
     const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     const engine::Budget b = budget(evals, iters, std::nullopt, wall_ms);
     engine::ProblemSpec spec;
     const bool function = !py::isinstance<py::str>(problem);
     if (!function) {
         require(bounds.is_none(), "bounds",
-                "only for Python functions: " + problem.cast<std::string>() + " has its own box");
+                "only for Python functions: " + utf8_arg(problem, "problem") + " has its own box");
         require(!vectorized, "vectorized", "only for Python functions");
-        const auto name = problem.cast<std::string>();
+        const auto name = utf8_arg(problem, "problem");
         require(engine::is_multiobjective_problem(name), "problem",
                 "unknown multi-objective problem '" + name + "' (known: " + multiobjective::problem_names() + ")");
+        // `pride front --objectives`' words: 0 is no default here (it ran M = 3).
+        require(!objectives || *objectives >= 1, "objectives",
+                "expected the number of objectives M of " + name + ", got '" + std::to_string(objectives.value_or(0)) +
+                    "'");
         spec = engine::ContinuousSpec{name, dim.value_or(0), std::nullopt, objectives.value_or(0)};
     } else {
         if (!PyCallable_Check(problem.ptr()))

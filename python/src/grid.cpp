@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "common.hpp"
+#include "engine/planner_settings.hpp"
 #include "problems/grid/grid_problem.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/grid/pareto.hpp"
@@ -84,8 +85,8 @@ py::array_t<double> world_path_array(const grid::GridMap& map, const grid::Polyl
     auto v = a.mutable_unchecked<2>();
     for (std::size_t i = 0; i < path.size(); ++i) {
         const grid::WorldPoint p = map.world(path[i].x, path[i].y);
-        v(static_cast<py::ssize_t>(i), 0) = std::round(p.x * 1e9) / 1e9 + 0.0;
-        v(static_cast<py::ssize_t>(i), 1) = std::round(p.y * 1e9) / 1e9 + 0.0;
+        v(static_cast<py::ssize_t>(i), 0) = grid::printed_world(p.x);
+        v(static_cast<py::ssize_t>(i), 1) = grid::printed_world(p.y);
     }
     return a;
 }
@@ -155,7 +156,7 @@ std::shared_ptr<const engine::UserPathObjective> user_objective(const py::object
 void set_path_objective(engine::GridSpec& spec, const py::object& objective, const py::object& step_cost,
                         const std::shared_ptr<UserError>& errors, const std::string& where) {
     if (py::isinstance<py::str>(objective)) {
-        spec.objective = objective.cast<std::string>();
+        spec.objective = utf8_arg(objective, where + "objective");
         if (!step_cost.is_none()) throw py::type_error(where + "step_cost: only with an objective that is a function");
     } else if (PyCallable_Check(objective.ptr())) {
         spec.objective = "user";
@@ -198,6 +199,10 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
         problem.emplace(spec);
     }
     const engine::Budget b = budget(evals, iters, std::nullopt, std::nullopt);
+    engine::PlannerSettingNames names;
+    names.evaluations = "evals";
+    names.iterations = "iters";
+    engine::refuse_unused_planner_settings(algorithm, spec, b, names);
     engine::check(algorithm, *problem, b);
     const engine::RunResult r = run_released(algorithm, *problem, b, seed, callback, errors);
     py::dict d = result_dict(r);

@@ -120,7 +120,7 @@ engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::i
                                  const std::shared_ptr<UserError>& errors, const engine::AlgorithmSpec& algorithm,
                                  const engine::Budget& budget) {
     if (py::isinstance<py::str>(problem)) {
-        const auto name = problem.cast<std::string>();
+        const auto name = utf8_arg(problem, "problem");
         require(bounds.is_none(), "bounds",
                 "only for Python functions: problem '" + name + "' has its own box (see pride.problems())");
         require(!vectorized, "vectorized", "only for Python functions");
@@ -275,16 +275,28 @@ double number_arg(const py::handle& o, const std::string& name) {
     return v;
 }
 
+std::string utf8_arg(const py::handle& o, const std::string& name) {
+    Py_ssize_t size = 0;
+    const char* bytes = PyUnicode_AsUTF8AndSize(o.ptr(), &size);
+    if (!bytes) {
+        PyErr_Clear();
+        throw py::value_error(name +
+                              ": not valid UTF-8 (a lone surrogate, as os.listdir gives for a name whose bytes are "
+                              "not UTF-8): pride takes UTF-8 text");
+    }
+    return std::string(bytes, static_cast<std::size_t>(size));
+}
+
 std::string text_arg(const py::handle& o, const std::string& name) {
     if (!py::isinstance<py::str>(o)) throw py::type_error(name + ": expected a str, got " + type_name(o));
-    return o.cast<std::string>();
+    return utf8_arg(o, name);
 }
 
 std::string path_arg(const py::handle& o, const std::string& name) {
-    if (py::isinstance<py::str>(o)) return o.cast<std::string>();
+    if (py::isinstance<py::str>(o)) return utf8_arg(o, name);
     if (py::isinstance(o, py::module_::import("os").attr("PathLike"))) {
         const py::object p = py::module_::import("os").attr("fspath")(o);
-        if (py::isinstance<py::str>(p)) return p.cast<std::string>();
+        if (py::isinstance<py::str>(p)) return utf8_arg(p, name);
     }
     throw py::type_error(name + ": expected a path (str or os.PathLike), got " + type_name(o));
 }
@@ -299,7 +311,8 @@ engine::ParamValues param_values(const std::string& algo, const py::dict& params
     engine::ParamValues v;
     const engine::AlgorithmEntry* entry = engine::algorithms().find(algo);
     for (const auto& [key, value] : params) {
-        const auto name = py::str(key).cast<std::string>();
+        const auto name =
+            py::isinstance<py::str>(key) ? utf8_arg(key, "parameter names") : py::str(key).cast<std::string>();
         // A choice parameter takes a name (a str), every other parameter a number.
         const engine::ParamSpec* spec = entry ? entry->param(name) : nullptr;
         const bool choice = spec && spec->type == engine::ParamType::choice;
@@ -308,7 +321,7 @@ engine::ParamValues param_values(const std::string& algo, const py::dict& params
             if (!py::isinstance<py::str>(value))
                 throw py::type_error("parameter " + name + ": expected one of " + spec->range() + " (a str), got " +
                                      type);
-            v.set_name(name, value.cast<std::string>());
+            v.set_name(name, utf8_arg(value, "parameter " + name));
             continue;
         }
         if (PyBool_Check(value.ptr())) {

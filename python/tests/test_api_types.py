@@ -257,3 +257,55 @@ def test_nothing_where_a_list_is_expected():
         pride.roughset([[1, 0], [0, 1]], columns=5)
     with pytest.raises(TypeError, match="^weights: expected a list, got NoneType$|^weights: expected numbers"):
         pride.plan(GRID, (0, 0), (3, 3), iters=2, objective="weighted", weights=[None, 1, 1])
+
+
+# A str that has no UTF-8 bytes: a lone surrogate, what os.listdir and sys.argv give for a name
+# whose bytes are not UTF-8 (b"\xff" decoded with surrogateescape).
+SURROGATE = "a\udcffb"
+
+
+def takes_str(wrong):
+    """Whether the table's wrong values are those of an argument that takes a str (a name, a
+    path, an objective's name, a problem's name)."""
+    return any(isinstance(v, bytes) for v in wrong) or any(wrong is k for k in (OBJECTIVE, OBJECTIVES, PROBLEM, TABLE))
+
+
+def test_every_str_argument_without_utf8_is_named(tmp_path):
+    table = api(tmp_path)
+    tried = set()
+    for fn_name, (call, kinds) in table.items():
+        for name, wrong in kinds.items():
+            if takes_str(wrong):
+                tried.add(f"{fn_name}({name})")
+                assert_named_error(lambda: call(**{name: SURROGATE}), name, SURROGATE)
+                if name == "path" and fn_name == "report":
+                    assert_named_error(lambda: call(path=[SURROGATE]), name, SURROGATE)
+    # Every function the table lists with a str argument was tried (a sample of them named here).
+    for expected in ("minimize(algo)", "minimize(problem)", "Grid.load(path)", "read_store(path)",
+                     "Campaign.load(path)", "Campaign.run(store)", "Campaign(name)", "plan(objective)",
+                     "report(html)", "roughset(table)", "plan_front(objectives)", "pareto(objectives)"):
+        assert expected in tried, expected
+    # Keyword parameters: their names and a choice's value.
+    assert_named_error(lambda: pride.minimize("pso", "sphere", dim=2, evals=20, **{SURROGATE: 1}), "parameter names",
+                       SURROGATE)
+    assert_named_error(lambda: pride.front("nsga2", "zdt1", evals=20, reference=False, tournament=SURROGATE),
+                       "parameter tournament", SURROGATE)
+    assert_named_error(lambda: pride.roughset([[1, 0], [0, 1]], columns=[SURROGATE, "d"]), "columns", SURROGATE)
+    assert_named_error(lambda: pride.roughset([["x", SURROGATE], ["y", "z"]]), "table", SURROGATE)
+    # Campaign entries: ids, names, maps, objectives, algorithms.
+    mfile = map_file(tmp_path)
+    for entry, key in (({"id": SURROGATE, "problem": "sphere", "dim": 2}, "id"),
+                       ({"id": "a", "problem": SURROGATE, "dim": 2}, "problem"),
+                       ({"id": "g", "grid": SURROGATE, "start": (0, 0), "goal": (3, 3)}, "grid"),
+                       ({"id": "g", "grid": mfile, "start": (0, 0), "goal": (3, 3), "objective": SURROGATE},
+                        "objective"),
+                       ({"id": "g", "grid": GRID, "start": (0, 0), "goal": (3, 3), "objectives": SURROGATE},
+                        "objectives"),
+                       ({"id": "g", "grid": GRID, "start": (0, 0), "goal": (3, 3), "encoding": SURROGATE},
+                        "encoding"),
+                       ({"id": "a", "problem": "sphere", "dim": 2, SURROGATE: 1}, "problems[0]")):
+        assert_named_error(lambda: campaign(problems=[entry]), key, SURROGATE)
+    assert_named_error(lambda: campaign(algorithms=[SURROGATE]), "algorithms[0]", SURROGATE)
+    for entry, key in (({"algo": SURROGATE}, "algo"), ({"algo": "pso", "id": SURROGATE}, "id"),
+                       ({"algo": "pso", SURROGATE: 1}, "algorithms[0]")):
+        assert_named_error(lambda: campaign(algorithms=[entry]), key, SURROGATE)

@@ -55,7 +55,7 @@ def test_grid_from_array_and_inflation():
 def algorithm_cases():
     for a in ALGOS:
         if "grid" in a["spaces"]:
-            yield a["name"], "line"
+            yield a["name"], ""  # a whole-map planner takes no encoding (a ValueError)
         if "box" in a["spaces"]:
             yield a["name"], "line"
         if "chain" in a["spaces"]:

@@ -19,6 +19,13 @@ void check_arguments(std::string_view name, std::size_t dim, std::int64_t instan
     require(dim >= 2, where, "dimension must be >= 2, got " + std::to_string(dim));
     require(instance >= 1, where,
             "instance must be >= 1 (COCO numbers instances from 1), got " + std::to_string(instance));
+    require(instance <= kMaxInstance, where, instance_range_message(name, instance));
+}
+
+std::string instance_range_message(std::string_view name, std::int64_t instance) {
+    return std::string(name) + ": COCO's instances are 1 to " + std::to_string(kMaxInstance) +
+           " (its generator works modulo 2^31 - 1: a larger one would repeat a smaller one), got " +
+           std::to_string(instance);
 }
 
 std::int64_t instance_seed(int function, std::int64_t instance) {

@@ -5,6 +5,7 @@
 // f_gallagher.c for the peaks); see $PRIDE_DATA/bbob/README.md for the conventions.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -17,7 +18,16 @@ using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::R
 /// The matrix of an affine map (transforms.hpp's affine), stored by columns, which it sweeps.
 using AffineMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor>;
 
-/// Throws InputError("bbob-fN", ...) unless dim >= 2 and instance >= 1.
+/// The largest instance: COCO's generator (uniform) works modulo the prime 2^31 - 1, and an
+/// instance's seeds are function + 10000 instance (+ 1, + 1000000), so instances k and
+/// k + 2^31 - 1 would be one instance under two numbers (2^31 was instance 1). Instances 1 to
+/// 2^31 - 2 are all distinct.
+inline constexpr std::int64_t kMaxInstance = 2'147'483'646;
+
+/// The words every front end refuses an instance beyond kMaxInstance with.
+std::string instance_range_message(std::string_view name, std::int64_t instance);
+
+/// Throws InputError("bbob-fN", ...) unless dim >= 2 and 1 <= instance <= kMaxInstance.
 void check_arguments(std::string_view name, std::size_t dim, std::int64_t instance);
 
 /// COCO's seed of function `function`, instance `instance`: function + 10000 instance, except that

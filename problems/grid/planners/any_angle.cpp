@@ -36,10 +36,15 @@ double AnyAngleOracle::solve(Cell s, Cell g, std::vector<Point>* out) {
     const GridMap& map = *map_;
     require(map.free(s), "start", "(" + std::to_string(s.x) + "," + std::to_string(s.y) + ") is blocked or outside");
     require(map.free(g), "goal", "(" + std::to_string(g.x) + "," + std::to_string(g.y) + ") is blocked or outside");
+    stopped_ = false;
     if (s == g) {
         if (out) *out = {centre_point(s)};
         return 0.0;
     }
+    require(corners_.size() <= max_corners, map.name(),
+            "the exact any-angle shortest path is searched among at most " + std::to_string(max_corners) +
+                " convex obstacle corners (its time grows with their square); this map has " +
+                std::to_string(corners_.size()) + " (plan with theta-star, or without --gaps)");
     // Nodes: the corners, then the start and the goal.
     const auto k = static_cast<std::uint32_t>(corners_.size());
     const std::uint32_t start = k, goal = k + 1, n = k + 2;
@@ -60,6 +65,11 @@ double AnyAngleOracle::solve(Cell s, Cell g, std::vector<Point>* out) {
         if (closed_[u] || fu > g_[u] + distance(point(u), hg)) continue;  // stale
         closed_[u] = 1;
         if (u == goal) break;
+        if ((stop_ && stop_->load(std::memory_order_relaxed)) ||
+            (deadline_ && std::chrono::steady_clock::now() >= *deadline_)) {
+            stopped_ = true;
+            return -1.0;
+        }
         const HalfPoint pu = point(u);
         for (std::uint32_t v = 0; v < n; ++v) {
             if (closed_[v] || v == start) continue;

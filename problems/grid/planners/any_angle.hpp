@@ -19,8 +19,12 @@
 // The test is exact: points are cell centres or grid points, held in doubled integer coordinates
 // (HalfPoint), and the walk over the cells a segment crosses compares crossing parameters by
 // cross-multiplication, with a crossing exactly through a grid point handled as such.
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "problems/grid/map.hpp"
@@ -141,6 +145,9 @@ bool point_is_free(const GridMap& map, Point p) noexcept;
 /// makes it blocked.
 bool segment_is_free(const GridMap& map, Point a, Point b) noexcept;
 
+/// The most convex obstacle corners the exact any-angle oracle searches among (AnyAngleOracle).
+inline constexpr std::size_t kMaxAnyAngleCorners = 100'000;
+
 /// The exact any-angle oracle: the Euclidean shortest path between the centres of two cells among
 /// the obstacles (the rules at the top of this file). The path bends only at convex corners of the
 /// obstacles, grid points with exactly one blocked cell around them (outside counts as blocked,
@@ -161,6 +168,21 @@ class AnyAngleOracle {
     /// contents. s or g outside or blocked: InputError.
     double solve(Cell s, Cell g, std::vector<Point>* out = nullptr);
 
+    /// Limits of solve(): it gives up at `deadline` or once `*stop` is set (the run's wall time,
+    /// Ctrl-C), returning -1 with stopped() true. Read once per expansion (each tests every vertex).
+    void set_limits(std::optional<std::chrono::steady_clock::time_point> deadline,
+                    std::shared_ptr<const std::atomic<bool>> stop) {
+        deadline_ = deadline;
+        stop_ = std::move(stop);
+    }
+    /// Whether the last solve() gave up at its limits (its -1 then says nothing about a path).
+    bool stopped() const noexcept { return stopped_; }
+
+    /// The most convex corners solve() searches among: a search expands up to every corner and
+    /// each expansion looks at every corner, so its time grows with their square (measured in
+    /// docs/reliability.md). Past it, solve() refuses the map in one line.
+    static constexpr std::size_t max_corners = kMaxAnyAngleCorners;
+
     /// The convex corners (the graph's vertices besides the two centres).
     const std::vector<HalfPoint>& corners() const noexcept { return corners_; }
     /// Segment tests made since construction.
@@ -179,6 +201,9 @@ class AnyAngleOracle {
     };
     std::vector<Entry> heap_;
     std::int64_t segment_tests_ = 0;
+    std::optional<std::chrono::steady_clock::time_point> deadline_;
+    std::shared_ptr<const std::atomic<bool>> stop_;
+    bool stopped_ = false;
 };
 
 }  // namespace pride::grid
