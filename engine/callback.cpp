@@ -8,14 +8,23 @@
 
 namespace pride::engine {
 
-CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
-                                 Batch batch, bool thread_safe, Starts starts) {
+namespace {
+
+/// The box of a user's function: coordinates, as many of each bound, finite, lower <= upper.
+void check_box(const std::string& name, const std::vector<double>& lower, const std::vector<double>& upper) {
     require(!lower.empty(), name, "the box has no coordinates (lower and upper are empty)");
     require(lower.size() == upper.size(), name,
             "lower has " + std::to_string(lower.size()) + " coordinates and upper " + std::to_string(upper.size()));
     for (std::size_t i = 0; i < lower.size(); ++i)
         require(std::isfinite(lower[i]) && std::isfinite(upper[i]) && lower[i] <= upper[i], name,
                 "bounds " + std::to_string(i) + " must be finite with lower <= upper");
+}
+
+}  // namespace
+
+CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
+                                 Batch batch, bool thread_safe, Starts starts) {
+    check_box(name, lower, upper);
     require(static_cast<bool>(scalar) || static_cast<bool>(batch), name, "no function to evaluate");
     shared_ =
         std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar),
@@ -81,12 +90,7 @@ void MoCallbackProblem::evaluate_batch(MatrixView points, Matrix& values) {
 ConstrainedCallbackProblem::ConstrainedCallbackProblem(std::string name, std::vector<double> lower,
                                                        std::vector<double> upper, ConstraintCounts counts,
                                                        double tolerance, Function function) {
-    require(!lower.empty(), name, "the box has no coordinates (lower and upper are empty)");
-    require(lower.size() == upper.size(), name,
-            "lower has " + std::to_string(lower.size()) + " coordinates and upper " + std::to_string(upper.size()));
-    for (std::size_t i = 0; i < lower.size(); ++i)
-        require(std::isfinite(lower[i]) && std::isfinite(upper[i]) && lower[i] <= upper[i], name,
-                "bounds " + std::to_string(i) + " must be finite with lower <= upper");
+    check_box(name, lower, upper);
     require(counts.total() > 0, name, "no constraint declared");
     require(std::isfinite(tolerance) && tolerance >= 0.0, "tolerance",
             "must be a finite number >= 0, got " + std::to_string(tolerance));

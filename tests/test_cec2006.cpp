@@ -206,7 +206,7 @@ TEST_CASE("cec2006: f at the report's x* is its f*, and x* is feasible (g20: as 
     }
 }
 
-TEST_CASE("cec2006: g12's one constraint is the least over its 729 spheres; g14 has a value on its bound 0",
+TEST_CASE("cec2006: g12's one constraint is the least over its 729 spheres, and g14 has a value on its bound 0",
           "[cec2006]") {
     Problem g12(12);
     pride::Rng rng(12);

@@ -156,7 +156,7 @@ TEST_CASE("engine: the registry lists every family with its spaces and parameter
     }
     CHECK(r.at("ga").spaces() == std::vector<std::string>{"box", "chain"});
     CHECK(r.at("ga-plus").spaces() == std::vector<std::string>{"box", "chain"});
-    CHECK(r.at("pso").spaces() == std::vector<std::string>{"box"});
+    CHECK(r.at("pso").spaces() == std::vector<std::string>{"box", "constrained box"});
     CHECK(r.at("astar").spaces() == std::vector<std::string>{"grid"});
     CHECK(r.at("exact").needs_optimum);
     CHECK(r.at("astar").params.empty());
