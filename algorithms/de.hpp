@@ -35,6 +35,12 @@
 //   (6) JADE's archive trim; the Control's memory update (U1)-(U4) from S_F, S_CR;
 //   (7) the Reduction policy (L): the worst individuals are removed, the archive resized;
 //   (8) the population (its current N columns) is recorded and shown to the observer.
+// On a problem with constraints (framework/constraints.hpp) every comparison above, "by value" in
+// (1), f(u_i) < f(x_i) and f(u_i) = f(x_i) in (5) and "the worst" in (7), is the order of the
+// configured handler (framework/constraint_order.hpp: Deb's rules by default, the epsilon level
+// of generation G, or a static penalty), and the gains of (5) are combine_gains()'s, after
+// COLSHADE (Gurrola-Ramos et al. 2020); without constraints the run is the same, bit for bit, as
+// before constraints existed.
 // Decided by this project where the papers are silent: DE's NP rule is 10 D (Storn and Price
 // recommend 5 D to 10 D); ties replace in DE and jDE (Storn's and Tanabe's codes take u when
 // f(u) <= f(x)), not in JADE (its pseudo-code keeps x_i when f(x_i) <= f(u_i)); the bound
@@ -52,6 +58,7 @@
 // fires anyway). p_num = max(2, round(p N)) throughout (the code
 // applies the floor of 2 only after a reduction; the same for N_init >= 14 at p = 0.11).
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
@@ -67,6 +74,7 @@
 #include "algorithms/parts/de/mutation.hpp"
 #include "algorithms/parts/de/population.hpp"
 #include "framework/bounds.hpp"
+#include "framework/constraint_order.hpp"
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
@@ -105,14 +113,71 @@ inline void rank(std::span<const double> f, std::span<std::size_t> order, std::s
         std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(leading), order.end(), before);
 }
 
-/// Removes the `count` worst individuals, one at a time, each the first of the worst values
-/// (Tanabe's code); the others keep their order. Per-individual control values go with them.
-inline void remove_worst(Matrix& x, std::vector<double>& fx, Adaptation& a, std::size_t count) {
+/// rank() under a constraint order (framework/constraint_order.hpp): by (f, v) as the handler
+/// compares them, ties to the lower index.
+template <class Order>
+void rank(const Order& by, std::span<const double> f, std::span<const double> v, std::span<std::size_t> order,
+          std::size_t leading) {
+    if constexpr (std::is_same_v<Order, PlainOrder>) {
+        rank(f, order, leading);
+    } else {
+        const auto before = [&](std::size_t a, std::size_t b) {
+            return by.better(f[a], v[a], f[b], v[b]) || (!by.better(f[b], v[b], f[a], v[a]) && a < b);
+        };
+        leading = std::min(leading, order.size());
+        if (leading == 0) return;
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        if (leading == 1)
+            order[0] = *std::min_element(order.begin(), order.end(), before);
+        else
+            std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(leading), order.end(), before);
+    }
+}
+
+/// The index of the first of the worst individuals by `by` (by value: the first of the largest).
+template <class Order>
+std::size_t worst_index(const Order& by, std::span<const double> f, std::span<const double> v) {
+    if constexpr (std::is_same_v<Order, PlainOrder>) {
+        return static_cast<std::size_t>(std::max_element(f.begin(), f.end()) - f.begin());
+    } else {
+        std::size_t worst = 0;
+        for (std::size_t i = 1; i < f.size(); ++i)
+            if (by.better(f[worst], v[worst], f[i], v[i])) worst = i;
+        return worst;
+    }
+}
+
+/// Under constraints, the gains that weight the successful parameters (control.hpp's weighted
+/// means): each success's fall of f and fall of the violation, each divided by the largest of
+/// its kind in the generation, summed (Gurrola-Ramos, Hernandez-Aguirre, Dalmau-Cedeno 2020,
+/// COLSHADE's selection), so a success in feasibility weighs as much as one in value. A fall
+/// of +inf counts 1 and the finite ones of its kind 0 (the limit as it grows).
+inline void combine_gains(std::span<double> df, std::span<const double> dv) {
+    const auto largest = [](auto values) {
+        double m = 0.0;
+        for (const double d : values) m = std::max(m, d);
+        return m;
+    };
+    const double mf = largest(std::span<const double>(df)), mv = largest(dv);
+    const auto share = [](double d, double m) {
+        if (m <= 0.0) return 0.0;
+        if (std::isinf(m)) return std::isinf(d) ? 1.0 : 0.0;
+        return d / m;
+    };
+    for (std::size_t k = 0; k < df.size(); ++k) df[k] = share(df[k], mf) + share(dv[k], mv);
+}
+
+/// Removes the `count` worst individuals (worst_index), one at a time, as Tanabe's code; the
+/// others keep their order. Per-individual control values and violations go with them.
+template <class Order>
+void remove_worst(const Order& by, Matrix& x, std::vector<double>& fx, std::vector<double>& vx, Adaptation& a,
+                  std::size_t count) {
     auto n = static_cast<Eigen::Index>(fx.size());
     for (std::size_t k = 0; k < count; ++k) {
-        const auto worst = static_cast<Eigen::Index>(std::max_element(fx.begin(), fx.end()) - fx.begin());
+        const auto worst = static_cast<Eigen::Index>(worst_index(by, fx, vx));
         for (Eigen::Index c = worst; c + 1 < n; ++c) x.col(c) = x.col(c + 1);
         fx.erase(fx.begin() + worst);
+        vx.erase(vx.begin() + worst);
         if (!a.f.empty()) {
             a.f.erase(a.f.begin() + worst);
             a.cr.erase(a.cr.begin() + worst);
@@ -138,6 +203,7 @@ class De {
     Size size{};
     Reduction reduction{};
     Init init{};
+    ConstraintHandling constraints{};  // constrained problems only
 
     std::string name() const { return id; }
 
@@ -172,6 +238,7 @@ class De {
         visit_policy(control, [&](const auto& c) { c.validate(name()); });
         visit_policy(reduction, [&](const auto& r) { r.validate(name()); });
         archive.validate(name());
+        constraints.validate(name());
     }
 
     /// N_init on a problem of dimension `dim`: `population`, or the Size rule when it is 0.
@@ -220,11 +287,16 @@ class De {
         RunState& state = run.state;
         Matrix& x = run.x;
         std::vector<double>& fx = run.fx;
+        std::vector<double>& vx = run.vx;
         const auto n0 = static_cast<std::size_t>(n_init);
+        auto by = order_for<P>(constraints);
+        by.start(vx);
+        constexpr bool constrained = ConstrainedProblem<P>;
 
         // Allocated once per run: trials, their values and parameters, the order, the archive.
         Matrix u(x.rows(), x.cols());
-        std::vector<double> fu(n0), scratch(dim);
+        std::vector<double> fu(n0), vu(n0), scratch(dim), fall_v;
+        if constexpr (constrained) fall_v.reserve(n0);
         std::vector<de::Parameters> params(n0);
         std::vector<std::size_t> order(n0);
         std::vector<char> replaced(n0);
@@ -235,12 +307,13 @@ class De {
         const std::int64_t limit = termination.max_evaluations.value_or(0);
 
         std::size_t n = n0;
-        while (!state.done()) {
+        for (std::int64_t generation = 1; !state.done(); ++generation) {
+            by.generation(generation);
             const de::Spent spent{state.progress().evaluations, limit};
             const auto order_n = std::span<std::size_t>(order).first(n);
             std::size_t leading = 0;
             visit_policy(mutation, [&](const auto& m) { leading = m.ranked(n, spent); });
-            de::rank(fx, order_n, leading);  // (1)
+            de::rank(by, fx, vx, order_n, leading);  // (1)
             // The draws of (2) and (3) come from a local copy of the generator, put back after:
             // its state stays in registers (the same draws in the same order).
             Rng local = rng;
@@ -262,23 +335,36 @@ class De {
                     r(column(u, k), column(std::as_const(x), k), lo, hi);
                 }
             });
-            const auto evaluated =
-                static_cast<std::size_t>(state.evaluate_columns(problem, u.leftCols(static_cast<Eigen::Index>(n)),
-                                                                std::span<double>(fu).first(n)));  // (4)
+            const auto evaluated = static_cast<std::size_t>(state.evaluate_population(
+                problem, u.leftCols(static_cast<Eigen::Index>(n)), std::span<double>(fu).first(n),
+                std::span<double>(vu).first(n)));  // (4)
             successes.clear();
+            if constexpr (constrained) fall_v.clear();
             for (std::size_t i = 0; i < evaluated; ++i) {  // (5)
                 const auto k = static_cast<Eigen::Index>(i);
-                const bool better = fu[i] < fx[i];
+                const bool better = by.better(fu[i], vu[i], fx[i], vx[i]);
                 if (better) {
-                    successes.add(params[i].f, params[i].cr, fx[i] - fu[i]);
+                    if constexpr (constrained) {
+                        successes.add(params[i].f, params[i].cr, std::max(fx[i] - fu[i], 0.0));
+                        fall_v.push_back(std::max(vx[i] - vu[i], 0.0));
+                    } else {
+                        successes.add(params[i].f, params[i].cr, fx[i] - fu[i]);
+                    }
                     archived.add(archive.stores_trial ? column(std::as_const(u), k) : column(std::as_const(x), k), rng);
                 }
-                replaced[i] = better || (ties_replace && fu[i] == fx[i]);
+                bool tie = false;
+                if constexpr (constrained)
+                    tie = !better && !by.better(fx[i], vx[i], fu[i], vu[i]);
+                else
+                    tie = fu[i] == fx[i];
+                replaced[i] = better || (ties_replace && tie);
                 if (replaced[i]) {
                     x.col(k) = u.col(k);
                     fx[i] = fu[i];
+                    vx[i] = vu[i];
                 }
             }
+            if constexpr (constrained) de::combine_gains(successes.gain, fall_v);
             visit_policy(control, [&](const auto& c) {  // jDE's F_i, CR_i go with the vector
                 for (std::size_t i = 0; i < evaluated; ++i)
                     if (replaced[i]) c.keep(adaptation, i, params[i]);
@@ -289,7 +375,7 @@ class De {
             std::size_t next = n;
             visit_policy(reduction, [&](const auto& r) { next = r.next(n, n0, after); });
             if (next < n) {
-                de::remove_worst(x, fx, adaptation, n - next);
+                de::remove_worst(by, x, fx, vx, adaptation, n - next);
                 n = next;
                 archived.resize(n, rng);
             }

@@ -54,6 +54,7 @@ void add(AlgorithmRegistry& registry, const std::string& name, const std::string
     params.push_back(bounds());
     params.push_back(walk_init_param(false));
     auto e = box_algorithm(name, "de", summary, std::move(params), configure);
+    add_constrained_runner(e, configure);
     // The population and the trials, the archive (each entry's own size), the per-individual
     // vectors: with pop 0, at the paper's N_init for the dimension.
     e.memory = [configure](const Params& p, std::size_t dimension) { return configure(p).memory_bytes(dimension); };
