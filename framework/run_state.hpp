@@ -117,10 +117,12 @@ class BasicRunState {
     }
 
     /// The same for a constrained problem: f into `values` and each point's violation into
-    /// `violations` (+inf past the budget), one counted evaluation per point.
+    /// `violations` (+inf past the budget), one counted evaluation per point. When `constraints`
+    /// is given (m + p values per point, point after point), each evaluated point's constraint
+    /// values are copied there too, for algorithms that read them (COLSHADE's tolerances).
     template <ConstrainedProblem P>
-    Eigen::Index evaluate_columns(P& problem, MatrixView points, std::span<double> values,
-                                  std::span<double> violations) requires is_point {
+    Eigen::Index evaluate_columns(P& problem, MatrixView points, std::span<double> values, std::span<double> violations,
+                                  std::span<double> constraints = {}) requires is_point {
         const Eigen::Index n = std::min<Eigen::Index>(points.cols(), static_cast<Eigen::Index>(remaining()));
         const auto k = problem.constraint_counts().total();
         if (constraint_values_.size() != k) constraint_values_.assign(k, 0.0);  // once per run
@@ -131,6 +133,9 @@ class BasicRunState {
             const double vs = std::isnan(v) ? kInf : v;
             values[static_cast<std::size_t>(j)] = f;
             violations[static_cast<std::size_t>(j)] = vs;
+            if (!constraints.empty())
+                std::copy(constraint_values_.begin(), constraint_values_.end(),
+                          constraints.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(j) * k));
             record_constrained(x, f, vs);
         }
         for (auto j = static_cast<std::size_t>(n); j < static_cast<std::size_t>(points.cols()); ++j) {

@@ -1,6 +1,8 @@
 // The differential evolution family (algorithms/de.hpp): de (Storn and Price's strategies), jde,
 // jade, shade, lshade and jso, six configurations of one instantiation (the policies are chosen
-// once per generation). `pop` 0 is each paper's rule for N_init; the memory estimate applies it.
+// once per generation); and colshade (algorithms/colshade.hpp), L-SHADE's constrained descendant
+// with its own selection and tolerances. `pop` 0 is each paper's rule for N_init; the memory estimate applies it.
+#include "algorithms/colshade.hpp"
 #include "algorithms/de.hpp"
 
 #include <string>
@@ -135,6 +137,47 @@ Family configure_jso(const Params& p) {
     return a;
 }
 
+Colshade<SelectableInit> configure_colshade(const Params& p) {
+    Colshade<SelectableInit> a;
+    a.population = p.integer("pop");
+    a.n_min = p.integer("n_min");
+    a.memory = p.integer("memory");
+    a.p = p.real("p");
+    a.archive_rate = p.real("archive_rate");
+    a.levy_start = p.real("p_levy");
+    a.dynamic_tolerance = p.flag("dynamic");
+    a.cut = p.real("cut");
+    a.init.suggestions = p.flag("walk_init");
+    return a;
+}
+
+void register_colshade(AlgorithmRegistry& registry) {
+    auto e = box_algorithm(
+        "colshade", "de",
+        "COLSHADE (Gurrola-Ramos et al. 2020): L-SHADE with an adaptive Levy-flight mutation, Deb's rules and a "
+        "dynamic tolerance on equalities, 18 D -> 4",
+        {pop("ceil(18 D)"), n_min(), memory(6, 1),
+         real("p", 0.11, 0.0, 1.0, "share of the best from which x_pbest is drawn").open_below(), archive_rate(2.6),
+         real("p_levy", 0.5, 0.0, 1.0, "the initial probability of the Levy-flight mutation"),
+         flag("dynamic", true,
+              "equality tolerances start at the population's largest |h_j| and fall to 1e-4 (0: 1e-4 throughout)")
+             .only_with_constraints(),
+         real("cut", 0.6, 0.0, 1.0, "share of the budget after which the equality tolerances are 1e-4")
+             .only_with_constraints(),
+         walk_init_param(false)},
+        configure_colshade);
+    add_runner<ConstrainedBoxTarget>(
+        e, Kind::constrained_box, [](const RunRequest& r, const ConstrainedBoxTarget& target) -> Result {
+            const auto algorithm = configure_colshade(r.params);
+            const ForwardingObserver forward{r.observer};
+            return std::visit(
+                [&](const auto& problem) -> Result { return algorithm.run(problem, r.termination, r.seed, forward); },
+                target.problem);
+        });
+    e.memory = [](const Params& p, std::size_t dimension) { return configure_colshade(p).memory_bytes(dimension); };
+    registry.add(std::move(e));
+}
+
 }  // namespace
 
 void register_de(AlgorithmRegistry& registry) {
@@ -177,6 +220,7 @@ void register_de(AlgorithmRegistry& registry) {
          real("p_max", 0.25, 0.0, 1.0, "p at the start, falling linearly to p_min").open_below(),
          real("p_min", 0.125, 0.0, 1.0, "p at the end of the budget").open_below(), archive_rate(1.0)},
         configure_jso);
+    register_colshade(registry);
 }
 
 }  // namespace pride::engine

@@ -1,0 +1,148 @@
+// COLSHADE (algorithms/colshade.hpp): its violation sum and tolerance fall on hand-worked values,
+// its Levy draw against the distribution's median, and runs: the optimum of a problem with an
+// inequality, CEC 2006 problems with equalities through the engine, every evaluation counted,
+// one seed one run.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "algorithms/colshade.hpp"
+#include "engine/problem.hpp"
+#include "engine/run.hpp"
+#include "framework/constraints.hpp"
+#include "tests/cli_runner.hpp"
+#include "tests/test_support.hpp"
+
+namespace colshade_test {
+
+using namespace pride;
+
+/// min x1^2 + x2^2 subject to 1 - x1 - x2 <= 0 on [-2, 2]^2: 0.5 at (0.5, 0.5).
+struct Disc {
+    std::vector<double> lo{-2.0, -2.0}, hi{2.0, 2.0};
+    std::shared_ptr<std::int64_t> calls = std::make_shared<std::int64_t>(0);
+    std::size_t dimension() const { return 2; }
+    std::span<const double> lower() const { return lo; }
+    std::span<const double> upper() const { return hi; }
+    double evaluate(std::span<const double> x) const { return x[0] * x[0] + x[1] * x[1]; }
+    ConstraintCounts constraint_counts() const { return {1, 0}; }
+    double evaluate_constrained(std::span<const double> x, std::span<double> c) {
+        ++*calls;
+        c[0] = 1.0 - x[0] - x[1];
+        return x[0] * x[0] + x[1] * x[1];
+    }
+    double violation(std::span<const double> c) const { return mean_violation(c, constraint_counts()); }
+};
+
+TEST_CASE("colshade: the violation sum under per-equality tolerances, and their fall", "[colshade]") {
+    // g = (0.5, -1), h = (0.3, -2e-5): 0.5 + max(0.3 - 0.1, 0) + max(2e-5 - 1e-4, 0).
+    const std::vector<double> c{0.5, -1.0, 0.3, -2e-5};
+    CHECK(colshade::violation_sum(c, 2, std::vector<double>{0.1, 1e-4}) == Approx(0.7).epsilon(1e-15));
+    CHECK(colshade::violation_sum(c, 2, std::vector<double>{0.0, 0.0}) == Approx(0.5 + 0.3 + 2e-5).epsilon(1e-15));
+    CHECK(std::isinf(colshade::violation_sum(std::vector<double>{std::nan("")}, 1, {})));
+    // eps = (1, 1), only the first met: 1 (1e-4 / 1)^(10 / 20) = 1e-2; the second stays.
+    std::vector<double> eps{1.0, 1.0};
+    const std::vector<char> met{1, 0};
+    colshade::shrink_tolerances(eps, met, 1e-4, 10.0, 20.0);
+    CHECK(eps[0] == Approx(1e-2).epsilon(1e-14));
+    CHECK(eps[1] == 1.0);
+    // The whole remaining fall at once reaches the final tolerance, never below.
+    colshade::shrink_tolerances(eps, std::vector<char>{1, 1}, 1e-4, 30.0, 10.0);
+    CHECK(eps == std::vector<double>{1e-4, 1e-4});
+}
+
+TEST_CASE("colshade: the order is by violation, then by f among feasible points", "[colshade]") {
+    const std::vector<double> svc{0.0, 2.0, 0.0, 1.0, 2.0}, f{5.0, -9.0, 1.0, -8.0, -10.0};
+    std::vector<std::size_t> order(5);
+    colshade::sort_order(svc, f, order);
+    // Feasible 2 (f 1) before 0 (f 5); then v 1; then the two of v 2 in their order (stable).
+    CHECK(order == std::vector<std::size_t>{2, 0, 3, 1, 4});
+}
+
+TEST_CASE("colshade: Levy draws c / z^2 have the median of Levy's distribution", "[colshade]") {
+    // The median of c / z^2 is c / q with q the median of chi-square(1), 0.454936423119573.
+    Rng rng(7);
+    std::vector<double> draws(20001);
+    for (double& d : draws) d = colshade::levy(rng, 0.01);
+    std::nth_element(draws.begin(), draws.begin() + 10000, draws.end());
+    CHECK(draws[10000] == Approx(0.01 / 0.454936423119573).epsilon(0.03));
+    CHECK(*std::min_element(draws.begin(), draws.end()) > 0.0);
+}
+
+TEST_CASE("colshade: the optimum under an inequality, every evaluation counted, one seed one run", "[colshade]") {
+    Colshade<> a;
+    Termination t;
+    t.max_evaluations = 5000;
+    Disc disc;
+    const Result r = a.run(disc, t, 3);
+    CHECK(r.evaluations == 5000);
+    CHECK(*disc.calls == 5000);
+    CHECK(r.best_violation == 0.0);
+    CHECK(r.best_f == Approx(0.5).epsilon(1e-6));
+    const Result again = a.run(Disc{}, t, 3);
+    CHECK(again.best_x == r.best_x);
+    CHECK(again.history == r.history);
+    // Without constraints it is L-SHADE with the Levy mutation: the sphere's optimum.
+    struct Sphere {
+        std::vector<double> lo = std::vector<double>(5, -5.0), hi = std::vector<double>(5, 5.0);
+        std::size_t dimension() const { return 5; }
+        std::span<const double> lower() const { return lo; }
+        std::span<const double> upper() const { return hi; }
+        double evaluate(std::span<const double> x) const {
+            double s = 0.0;
+            for (const double v : x) s += v * v;
+            return s;
+        }
+    };
+    t.max_evaluations = 20000;
+    CHECK(a.run(Sphere{}, t, 1).best_f < 1e-12);
+}
+
+TEST_CASE("colshade: CEC 2006 problems with equalities reach their best-known values", "[colshade]") {
+    // g11: one equality in 2-D (f* = 0.7499); g05: three equalities and two inequalities in 4-D
+    // (f* = 5126.4967140071); g03: one equality in 10-D (f* = -1.0005001). The report's budget
+    // is 500,000 evaluations; these runs use 10 % to 20 % of it.
+    struct Case {
+        int number;
+        std::int64_t dim;
+        std::int64_t evaluations;
+        double best, within;
+    };
+    for (const Case& c : {Case{11, 2, 20000, 0.7499, 1e-4}, Case{5, 4, 50000, 5126.4967140071, 1e-6},
+                          Case{3, 10, 100000, -1.00050010001000, 1e-6}}) {
+        INFO("g" << c.number);
+        const engine::Problem problem(engine::ContinuousSpec{
+            "cec2006-g" + std::string(c.number < 10 ? "0" : "") + std::to_string(c.number), c.dim});
+        engine::Budget budget;
+        budget.evaluations = c.evaluations;
+        const auto r = engine::run({"colshade", {}}, problem, budget, 1);
+        REQUIRE(r.best_violation.has_value());
+        CHECK(*r.best_violation == 0.0);
+        CHECK(r.best_f == Approx(c.best).epsilon(c.within));
+        CHECK(r.evaluations == c.evaluations);
+    }
+}
+
+TEST_CASE("colshade: bad settings are refused in one line", "[colshade]") {
+    Colshade<> a;
+    CHECK_THROWS_WITH(a.run(Disc{}, Termination{}, 1), Catch::Contains("might never end"));
+    Termination t;
+    t.max_iterations = 100;
+    CHECK_THROWS_WITH(a.run(Disc{}, t, 1), Catch::Contains("needs an evaluation limit"));
+    t.max_iterations.reset();
+    t.max_evaluations = 100;
+    a.population = 3;
+    CHECK_THROWS_WITH(a.run(Disc{}, t, 1), Catch::Contains("pop must be 0 (ceil(18 D)) or >= 4, got 3"));
+    test::expect_input_error("run --algo colshade --problem sphere --dim 2 --evals 200 --param dynamic=0",
+                             {"sphere has none"});
+    test::expect_input_error("run --algo colshade --problem cec2006-g11 --dim 2 --evals 200 --param p_levy=2",
+                             {"p_levy"});
+}
+
+}  // namespace colshade_test
