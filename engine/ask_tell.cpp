@@ -18,7 +18,7 @@ AskTell::AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector
                     : algorithm.name + " optimises one objective, got " + std::to_string(objectives));
     objectives_ = static_cast<std::size_t>(objectives);
     const bool constrained = constraints.inequalities != 0 || constraints.equalities != 0;
-    require(!several || !constrained, "constraints",
+    require(!several || !constrained, "inequalities",
             algorithm.name + " is multi-objective: constraints are for algorithms of one objective");
     CallbackSpec spec;
     spec.name = "bounds";

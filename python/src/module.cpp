@@ -144,12 +144,12 @@ engine::AlgorithmSpec without_constraint_params(const engine::AlgorithmSpec& alg
     return out;
 }
 
-/// The f of a user's constrained function as a number (the one-number message of callback_spec).
-double objective_value(const py::object& value, const char* form) {
+/// The f of a user's constrained function as a number; `refusal` starts the TypeError's message.
+double objective_value(const py::object& value, const std::string& refusal) {
     const double f = PyFloat_AsDouble(value.ptr());
     if (f == -1.0 && PyErr_Occurred()) {
         PyErr_Clear();
-        throw py::type_error(std::string(form) + " must return one number, got " + type_name(value));
+        throw py::type_error(refusal + type_name(value));
     }
     return f;
 }
@@ -186,7 +186,7 @@ void set_constraints(engine::CallbackSpec& spec, const py::object& fn, const Con
             double f = 0.0;
             py::object constraint_values;
             if (g) {
-                f = objective_value((*function)(point_array(x)), "the function");
+                f = objective_value((*function)(point_array(x)), "the function must return one number, got ");
                 constraint_values = (*g)(point_array(x));
             } else {
                 const py::object both = (*function)(point_array(x));
@@ -196,7 +196,7 @@ void set_constraints(engine::CallbackSpec& spec, const py::object& fn, const Con
                         "f a number and g the constraint values; got " +
                         type_name(both));
                 const auto pair = both.cast<py::tuple>();
-                f = objective_value(pair[0], "problem: the function's (f, g): f");
+                f = objective_value(pair[0], "problem: the function returns (f, g), f one number; got f of type ");
                 constraint_values = pair[1];
             }
             const auto a = real_array(constraint_values, where + ": the constraint values");
@@ -371,7 +371,8 @@ class Optimizer {
                     "g was given, but the optimizer has no constraints (declare inequalities or equalities when "
                     "it is made)");
             c = real_array(g, "tell: g");
-            require(c->ndim() == 2 && c->shape(1) == k, "tell",
+            // One constraint: g may be the n values themselves.
+            require((c->ndim() == 2 && c->shape(1) == k) || (k == 1 && c->ndim() == 1), "tell",
                     "g: expected an (n, " + std::to_string(k) + ") array, a row of the " + std::to_string(k) +
                         " constraint values (inequalities, then equalities) per point asked for");
         } else {
