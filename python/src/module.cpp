@@ -175,11 +175,10 @@ void set_constraints(engine::CallbackSpec& spec, const py::object& fn, const Con
             fmt::format("must be a finite number >= 0, got {}", spec.tolerance));
     const auto k = static_cast<std::size_t>(spec.inequalities + spec.equalities);
     const std::string counts =
-        std::to_string(spec.inequalities) + " inequalities, then " + std::to_string(spec.equalities) + " equalities";
+        "inequalities=" + std::to_string(spec.inequalities) + ", then equalities=" + std::to_string(spec.equalities);
     auto function = std::make_shared<py::object>(fn);
     auto g = c.subject_to.is_none() ? nullptr : std::make_shared<py::object>(c.subject_to);
     const std::string where = g ? "subject_to" : "problem";
-    spec.scalar = nullptr;
     spec.constrained = [function, g, errors, k, counts, where](std::span<const double> x,
                                                                std::span<double> values) -> double {
         return python_call(errors, [&] {
