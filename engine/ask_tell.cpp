@@ -9,7 +9,7 @@
 namespace pride::engine {
 
 AskTell::AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector<double> upper, Budget budget,
-                 std::uint64_t seed, std::int64_t objectives) {
+                 std::uint64_t seed, std::int64_t objectives, AskTellConstraints constraints) {
     dimension_ = lower.size();
     const bool several = algorithms().at(algorithm.name).multiobjective();
     require(several ? objectives >= 2 : objectives == 1, "objectives",
@@ -17,19 +17,34 @@ AskTell::AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector
                           std::to_string(objectives)
                     : algorithm.name + " optimises one objective, got " + std::to_string(objectives));
     objectives_ = static_cast<std::size_t>(objectives);
+    const bool constrained = constraints.inequalities != 0 || constraints.equalities != 0;
+    require(!several || !constrained, "inequalities",
+            algorithm.name + " is multi-objective: constraints are for algorithms of one objective");
     CallbackSpec spec;
     spec.name = "bounds";
     spec.lower = std::move(lower);
     spec.upper = std::move(upper);
     spec.objectives = objectives;
-    if (several)
+    spec.inequalities = constraints.inequalities;
+    spec.equalities = constraints.equalities;
+    spec.tolerance = constraints.tolerance;
+    if (constrained)
+        // One point per batch: the engine evaluates constrained points one at a time.
+        spec.constrained = [this](std::span<const double> x, std::span<double> c) -> double {
+            double f = 0.0;
+            exchange(Eigen::Map<const Matrix>(x.data(), static_cast<Eigen::Index>(x.size()), 1),
+                     std::span<double>(&f, 1), c);
+            return f;
+        };
+    else if (several)
         spec.values_batch = [this](MatrixView points, Matrix& values) {
             exchange(points, std::span<double>(values.data(), static_cast<std::size_t>(values.size())));
         };
     else
         spec.batch = [this](MatrixView points, std::span<double> values) { exchange(points, values); };
-    Problem problem(spec);
+    Problem problem(spec);  // checks the counts and the tolerance
     check(algorithm, problem, budget);
+    if (constrained) constraints_ = static_cast<std::size_t>(constraints.total());
     worker_ = std::thread([this, algorithm, problem, budget, seed] { work(algorithm, problem, budget, seed); });
 }
 
@@ -61,7 +76,7 @@ void AskTell::work(AlgorithmSpec algorithm, Problem problem, Budget budget, std:
     changed_.notify_all();
 }
 
-void AskTell::exchange(MatrixView points, std::span<double> values) {
+void AskTell::exchange(MatrixView points, std::span<double> values, std::span<double> constraints) {
     std::unique_lock lock(mutex_);
     if (cancel_) throw Cancelled{};
     pending_ = points;
@@ -73,6 +88,7 @@ void AskTell::exchange(MatrixView points, std::span<double> values) {
     if (cancel_) throw Cancelled{};
     // M values per point, the point's together: the column of an M x n matrix.
     std::copy(values_.begin(), values_.end(), values.begin());
+    std::copy(constraint_values_.begin(), constraint_values_.end(), constraints.begin());
     state_ = State::running;
 }
 
@@ -92,7 +108,7 @@ const Matrix& AskTell::ask() {
     return pending_;
 }
 
-void AskTell::tell(std::span<const double> values) {
+void AskTell::tell(std::span<const double> values, std::span<const double> constraints) {
     {
         std::unique_lock lock(mutex_);
         wait_for_run(lock);
@@ -105,7 +121,18 @@ void AskTell::tell(std::span<const double> values) {
                                  : "expected " + std::to_string(pending_.cols()) + " x " + std::to_string(objectives_) +
                                        " values, " + std::to_string(objectives_) + " per point asked for, got " +
                                        std::to_string(values.size()));
+        const auto expected_constraints = static_cast<std::size_t>(pending_.cols()) * constraints_;
+        if (constraints_ == 0)
+            require(constraints.empty(), "tell",
+                    "constraint values were given, but the run has no constraints (declare inequalities or "
+                    "equalities when it is made)");
+        else
+            require(constraints.size() == expected_constraints, "tell",
+                    "expected " + std::to_string(pending_.cols()) + " x " + std::to_string(constraints_) +
+                        " constraint values, " + std::to_string(constraints_) + " per point asked for, got " +
+                        std::to_string(constraints.size()));
         values_.assign(values.begin(), values.end());
+        constraint_values_.assign(constraints.begin(), constraints.end());
         told_ = true;
         asked_ = false;
         state_ = State::running;

@@ -4,7 +4,10 @@
 // guard asks for (the population, or what is left of the budget) to the caller and waits for its
 // values, so no algorithm is rewritten and the run is the one engine::run gives with the same
 // function: the same seed, the same bits. A multi-objective algorithm is driven the same way, told
-// M values per point.
+// M values per point. A run with constraints (the algorithms that handle them) is told each point's
+// f and its m + p constraint values; the engine evaluates a constrained point at a time
+// (RunState::evaluate_columns calls evaluate_constrained per column), so such a run asks for one
+// point per batch.
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -21,14 +24,25 @@
 
 namespace pride::engine {
 
+/// The constraints of an ask-and-tell run: as CallbackSpec's (m inequalities g_i <= 0, then p
+/// equalities h_j = 0 within `tolerance`); none by default.
+struct AskTellConstraints {
+    std::int64_t inequalities = 0;
+    std::int64_t equalities = 0;
+    double tolerance = 1e-4;
+    std::int64_t total() const noexcept { return inequalities + equalities; }
+};
+
 class AskTell {
   public:
     /// Checks everything engine::check does on the box [lower, upper] (InputError naming what is
     /// wrong), then starts the run; it waits at its first batch.
     /// `objectives` M: 1 for a single-objective algorithm, at least 2 for a multi-objective one
-    /// (engine/multiobjective.hpp; InputError("objectives", ...) otherwise).
+    /// (engine/multiobjective.hpp; InputError("objectives", ...) otherwise). `constraints`: the
+    /// counts and tolerance the engine checks for a user's function (InputError "inequalities",
+    /// "equalities", "tolerance"), one objective only, an algorithm that handles them.
     AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector<double> upper, Budget budget,
-            std::uint64_t seed, std::int64_t objectives = 1);
+            std::uint64_t seed, std::int64_t objectives = 1, AskTellConstraints constraints = {});
     /// A run still going is stopped at its pending batch and its thread joined.
     ~AskTell();
     AskTell(const AskTell&) = delete;
@@ -36,6 +50,8 @@ class AskTell {
 
     std::size_t dimension() const noexcept { return dimension_; }
     std::size_t objectives() const noexcept { return objectives_; }
+    /// m + p: the constraint values told per point (0 without constraints).
+    std::size_t constraints() const noexcept { return constraints_; }
 
     /// The points the run wants evaluated next, one per column (0 columns once the run has
     /// ended); asking again before telling gives the same points. Blocks until the run asks or ends.
@@ -43,8 +59,11 @@ class AskTell {
     const Matrix& ask();
     /// The values of the points of the last ask(), one each (NaN: worse than every value); with
     /// M objectives, M per point, the point's values together (point after point).
-    /// InputError("tell", ...) after the end, before an ask, or for a wrong number of values.
-    void tell(std::span<const double> values);
+    /// With constraints, `constraints` holds each point's m + p values together (point after point;
+    /// NaN: infeasible, with an infinite violation); without, it is empty.
+    /// InputError("tell", ...) after the end, before an ask, or for a wrong number of values; a
+    /// refused tell changes nothing (the same points may be told again).
+    void tell(std::span<const double> values, std::span<const double> constraints = {});
     /// True once the run has ended (blocks until the run asks or ends).
     bool done();
     /// The run's result (with several objectives, its `front`); InputError("result", ...) before
@@ -55,8 +74,9 @@ class AskTell {
     void work(AlgorithmSpec algorithm, Problem problem, Budget budget, std::uint64_t seed);
     /// The state the run ended in, checked for the result (`ready`: the run's kind has one).
     void wait_for_result(bool ready);
-    /// The batch function: publishes `points`, waits for tell() (or cancellation).
-    void exchange(MatrixView points, std::span<double> values);
+    /// The batch function: publishes `points`, waits for tell() (or cancellation); writes the told
+    /// values and, with constraints, their values.
+    void exchange(MatrixView points, std::span<double> values, std::span<double> constraints = {});
     void wait_for_run(std::unique_lock<std::mutex>& lock);
 
     struct Cancelled {};
@@ -64,13 +84,14 @@ class AskTell {
 
     std::size_t dimension_ = 0;
     std::size_t objectives_ = 1;
+    std::size_t constraints_ = 0;
     std::mutex mutex_;
     std::condition_variable changed_;
     State state_ = State::running;
     bool asked_ = false;   // ask() has shown the pending points
     bool cancel_ = false;  // the destructor wants the run to end
     Matrix pending_;       // the points of the pending batch
-    std::vector<double> values_;
+    std::vector<double> values_, constraint_values_;
     bool told_ = false;
     std::optional<RunResult> result_;
     std::exception_ptr failure_;

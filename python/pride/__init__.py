@@ -137,7 +137,9 @@ def _grid(value):
 class Result:
     """What a run returns: best_x (numpy), best_f, evaluations, iterations, history (numpy: the
     best value after each iteration, 0 = the initial population), history_evaluations, wall_ms;
-    grid plans add path ((n, 2) array of x, y), feasible, objective_value, metrics, optimum, gap."""
+    grid plans add path ((n, 2) array of x, y), feasible, objective_value, metrics, optimum, gap;
+    runs with constraints add violation (the best point's, 0 when feasible), feasible and
+    first_feasible (the evaluation that first found a feasible point, None if none did)."""
 
     def __init__(self, fields):
         if not isinstance(fields, dict):
@@ -150,12 +152,13 @@ class Result:
     def __repr__(self):
         shown = ", ".join(
             f"{k}={v!r}" for k, v in self.__dict__.items()
-            if k in ("algo", "best_f", "evaluations", "iterations", "wall_ms", "feasible", "objective_value"))
+            if k in ("algo", "best_f", "evaluations", "iterations", "wall_ms", "violation", "feasible", "objective_value"))
         return f"Result({shown})"
 
 
 def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, target=None, wall_ms=None,
-             seed=1, instance=None, callback=None, vectorized=False, **params):
+             seed=1, instance=None, callback=None, vectorized=False, subject_to=None, inequalities=None,
+             equalities=None, tolerance=None, **params):
     """One run of ``algo`` on ``problem``: a registered problem's name (with ``dim``, and
     ``instance``) or a Python function with ``bounds=(lower, upper)``, called as ``f(x)`` with x
     of shape (dim,), or, with ``vectorized=True``, as ``f(X)`` with X of shape (n, dim) returning n
@@ -163,11 +166,21 @@ def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, ta
     iters the budget is 10,000 evaluations per dimension. ``callback(iteration, evaluations,
     best_f, population, fitness)`` is called after every iteration with read-only copies of the
     population and its values (the callback's to keep); returning False stops the run there. The
-    same seed (0 to 2^64 - 1) gives the same bits as ``pride run --seed``."""
+    same seed (0 to 2^64 - 1) gives the same bits as ``pride run --seed``.
+
+    Constraints (docs/constraints.md): ``subject_to(x)`` returns the ``inequalities`` values
+    g_i(x) <= 0, then the ``equalities`` values h_j(x) = 0 (within ``tolerance``, 1e-4 by default);
+    without ``subject_to``, declaring the counts means ``problem(x)`` returns ``(f, g)`` in one call.
+    Either way one point is one evaluation. A NaN constraint value makes the point infeasible. The
+    result then has ``violation``, ``feasible`` and ``first_feasible``; the algorithm's parameter
+    ``constraints`` (deb, epsilon, penalty) chooses how points compare. The CEC 2006 problems
+    ``cec2006-g01`` to ``cec2006-g24`` are taken by name, in their own dimension."""
     return Result(_pride.minimize(_str("algo", algo), problem, _int("dim", dim), bounds, _int("evals", evals),
                                   _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
                                   _seed(seed), _int("instance", instance), _callable("callback", callback),
-                                  _bool("vectorized", vectorized), params))
+                                  _bool("vectorized", vectorized), _callable("subject_to", subject_to),
+                                  _int("inequalities", inequalities), _int("equalities", equalities),
+                                  _real("tolerance", tolerance), params))
 
 
 def front(algo, problem, *, dim=None, objectives=None, bounds=None, evals=None, iters=None, wall_ms=None, seed=1,
@@ -225,20 +238,27 @@ class Optimizer:
     ``minimize``. The run is the one ``minimize`` makes with the same function and seed, bit for
     bit. Closing (or dropping) an optimizer mid-run stops its run. A multi-objective algorithm
     (nsga2, nsga3, moead, smsemoa) takes ``objectives=M`` and is told an (n, M) array, a row of M
-    values per point; its ``result`` is the front, as from ``front``."""
+    values per point; its ``result`` is the front, as from ``front``. With ``inequalities=m``
+    and/or ``equalities=p`` (and ``tolerance``), an algorithm that handles constraints (pso,
+    pso-constriction, the DE family) is told ``tell(values, g)``, g of shape (n, m + p); the
+    engine evaluates a constrained point at a time, so such a run asks for one point per batch."""
 
     def __init__(self, algo, *, bounds, dim=None, evals=None, iters=None, target=None, wall_ms=None, seed=1,
-                 objectives=None, **params):
+                 objectives=None, inequalities=None, equalities=None, tolerance=None, **params):
         self._run = _pride.Optimizer(_str("algo", algo), bounds, _int("dim", dim), _int("evals", evals),
                                      _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
-                                     _seed(seed), _int("objectives", objectives), params)
+                                     _seed(seed), _int("objectives", objectives), _int("inequalities", inequalities),
+                                     _int("equalities", equalities), _real("tolerance", tolerance), params)
         self.algo = algo
 
     def ask(self):
         return self._run.ask()
 
-    def tell(self, values):
-        self._run.tell(values)
+    def tell(self, values, g=None):
+        """The values of the points of the last ask(), one per point (M per point: an (n, M)
+        array); with constraints, ``g`` of shape (n, m + p): each point's inequality values, then
+        its equality values."""
+        self._run.tell(values, g)
 
     @property
     def done(self):

@@ -1,5 +1,7 @@
 // pride._pride: the engine for Python (docs/python.md). The package's pride/__init__.py wraps
 // these functions in the Python-facing API; everything here takes plain values.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -7,9 +9,11 @@
 
 #include "common.hpp"
 #include "engine/ask_tell.hpp"
+#include "engine/prepared.hpp"
 #include "engine/registry.hpp"
 #include "framework/error_place.hpp"
 #include "problems/continuous/catalog.hpp"
+#include "problems/continuous/cec2006/cec2006.hpp"
 
 namespace pride::python {
 
@@ -113,17 +117,119 @@ py::dict grid_names() {
     return d;
 }
 
+/// The constraints of minimize() on a Python function: `subject_to` g(x) (or, without it, the
+/// function returning (f, g)), the counts and the tolerance, as the engine's CallbackSpec names them.
+struct ConstraintArgs {
+    py::object subject_to = py::none();
+    std::optional<std::int64_t> inequalities, equalities;
+    std::optional<double> tolerance;
+    bool declared() const { return !subject_to.is_none() || inequalities || equalities; }
+};
+
+/// The algorithm without the parameters that choose a constraint handler: what the size checks
+/// before building see, since a box not built yet has no constraints to allow them (engine::check
+/// sees them all once the problem is built).
+engine::AlgorithmSpec without_constraint_params(const engine::AlgorithmSpec& algorithm) {
+    const engine::AlgorithmEntry* entry = engine::algorithms().find(algorithm.name);
+    if (!entry) return algorithm;
+    engine::AlgorithmSpec out{algorithm.name, {}};
+    const auto kept = [&](const std::string& name) {
+        const engine::ParamSpec* spec = entry->param(name);
+        return !spec || !spec->constrained_only;
+    };
+    for (const auto& [name, value] : algorithm.params.values())
+        if (kept(name)) out.params.set(name, value);
+    for (const auto& [name, value] : algorithm.params.names())
+        if (kept(name)) out.params.set_name(name, value);
+    return out;
+}
+
+/// The f of a user's constrained function as a number; `refusal` starts the TypeError's message.
+double objective_value(const py::object& value, const std::string& refusal) {
+    const double f = PyFloat_AsDouble(value.ptr());
+    if (f == -1.0 && PyErr_Occurred()) {
+        PyErr_Clear();
+        throw py::type_error(refusal + type_name(value));
+    }
+    return f;
+}
+
+/// A constrained user function: f(x) and subject_to(x) (or one function returning (f, g)), one
+/// call of each per evaluation; g's m + p values checked for their number.
+void set_constraints(engine::CallbackSpec& spec, const py::object& fn, const ConstraintArgs& c,
+                     const std::shared_ptr<UserError>& errors) {
+    spec.inequalities = c.inequalities.value_or(0);
+    spec.equalities = c.equalities.value_or(0);
+    spec.tolerance = c.tolerance.value_or(kEqualityTolerance);
+    // The counts as the engine checks them (InputError naming each), then the tolerance, before any call.
+    engine::CallbackSpec counted;
+    counted.inequalities = spec.inequalities;
+    counted.equalities = spec.equalities;
+    if (spec.inequalities + spec.equalities > 0)
+        counted.constrained = [](std::span<const double>, std::span<double>) { return 0.0; };
+    const bool any = engine::has_constraints(counted);
+    require(any, "inequalities",
+            "give how many constraint values g(x) has: inequalities=m (g_i(x) <= 0, first) and/or "
+            "equalities=p (h_j(x) = 0)");
+    require(std::isfinite(spec.tolerance) && spec.tolerance >= 0.0, "tolerance",
+            fmt::format("must be a finite number >= 0, got {}", spec.tolerance));
+    const auto k = static_cast<std::size_t>(spec.inequalities + spec.equalities);
+    const std::string counts =
+        "inequalities=" + std::to_string(spec.inequalities) + ", then equalities=" + std::to_string(spec.equalities);
+    auto function = std::make_shared<py::object>(fn);
+    auto g = c.subject_to.is_none() ? nullptr : std::make_shared<py::object>(c.subject_to);
+    const std::string where = g ? "subject_to" : "problem";
+    spec.constrained = [function, g, errors, k, counts, where](std::span<const double> x,
+                                                               std::span<double> values) -> double {
+        return python_call(errors, [&] {
+            double f = 0.0;
+            py::object constraint_values;
+            if (g) {
+                f = objective_value((*function)(point_array(x)), "the function must return one number, got ");
+                constraint_values = (*g)(point_array(x));
+            } else {
+                const py::object both = (*function)(point_array(x));
+                if (!py::isinstance<py::tuple>(both) || py::len(both) != 2)
+                    throw py::type_error(
+                        "problem: with inequalities or equalities and no subject_to, the function returns (f, g), "
+                        "f a number and g the constraint values; got " +
+                        type_name(both));
+                const auto pair = both.cast<py::tuple>();
+                f = objective_value(pair[0], "problem: the function returns (f, g), f one number; got f of type ");
+                constraint_values = pair[1];
+            }
+            const auto a = real_array(constraint_values, where + ": the constraint values");
+            require(a.ndim() <= 1 && static_cast<std::size_t>(a.size()) == k, where,
+                    "returned " + std::to_string(a.size()) + " constraint values" +
+                        (a.ndim() > 1 ? " (" + std::to_string(a.ndim()) + "-D)" : std::string()) + ", expected " +
+                        std::to_string(k) + " (" + counts + ")");
+            std::copy(a.data(), a.data() + k, values.begin());
+            return f;
+        });
+    };
+}
+
 /// The problem of minimize(): a registered name (dim, instance) or a Python callable on bounds,
 /// its size checked with the run's (`algorithm` under `budget`) before anything is built.
 engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::int64_t> dim, const py::object& bounds,
                                  std::optional<std::int64_t> instance, bool vectorized,
-                                 const std::shared_ptr<UserError>& errors, const engine::AlgorithmSpec& algorithm,
-                                 const engine::Budget& budget) {
+                                 const ConstraintArgs& constraints, const std::shared_ptr<UserError>& errors,
+                                 const engine::AlgorithmSpec& algorithm, const engine::Budget& budget) {
     if (py::isinstance<py::str>(problem)) {
         const auto name = utf8_arg(problem, "problem");
         require(bounds.is_none(), "bounds",
                 "only for Python functions: problem '" + name + "' has its own box (see pride.problems())");
         require(!vectorized, "vectorized", "only for Python functions");
+        for (const auto& [given, what] : {std::pair{!constraints.subject_to.is_none(), "subject_to"},
+                                          std::pair{constraints.inequalities.has_value(), "inequalities"},
+                                          std::pair{constraints.equalities.has_value(), "equalities"},
+                                          std::pair{constraints.tolerance.has_value(), "tolerance"}})
+            require(!given, what, "only for Python functions: problem '" + name + "' has its own constraints, or none");
+        // CEC 2006's constrained problems: each in its own dimension, checked when it is built.
+        if (const auto number = engine::cec2006_number(name)) {
+            if (!dim) dim = static_cast<std::int64_t>(continuous::cec2006::Problem(*number).dimension());
+            return engine::ContinuousSpec{name, *dim, instance};
+        }
         if (!dim)
             if (const auto* item = continuous::catalog().find(name); item && item->entry.fixed_dim)
                 dim = static_cast<std::int64_t>(item->entry.fixed_dim);
@@ -138,20 +244,37 @@ engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::i
                              py::str(py::type::of(problem).attr("__name__")).cast<std::string>());
     require(!instance, "instance", "only for registered problems");
     require(!bounds.is_none(), "bounds", "a Python function needs bounds=(lower, upper)");
-    auto [lower, upper] = parse_bounds(bounds, dim, box_check(algorithm, "bounds", budget));
-    return callback_spec(problem, vectorized, std::move(lower), std::move(upper), errors);
+    if (!constraints.declared()) {
+        require(!constraints.tolerance, "tolerance",
+                "only with constraints: give subject_to and inequalities or equalities");
+        auto [lower, upper] = parse_bounds(bounds, dim, box_check(algorithm, "bounds", budget));
+        return callback_spec(problem, vectorized, std::move(lower), std::move(upper), errors);
+    }
+    require(!vectorized, "vectorized",
+            "not with constraints: the engine evaluates a constrained point at a time (give f(x) and "
+            "subject_to(x) of one point)");
+    const engine::AlgorithmSpec unconstrained = without_constraint_params(algorithm);
+    auto [lower, upper] = parse_bounds(bounds, dim, box_check(unconstrained, "bounds", budget));
+    engine::CallbackSpec spec;
+    spec.name = "bounds";
+    spec.lower = std::move(lower);
+    spec.upper = std::move(upper);
+    set_constraints(spec, problem, constraints, errors);
+    return spec;
 }
 
 py::dict minimize(const std::string& algo, const py::object& problem, std::optional<std::int64_t> dim,
                   const py::object& bounds, std::optional<std::int64_t> evals, std::optional<std::int64_t> iters,
                   std::optional<double> target, std::optional<double> wall_ms, std::uint64_t seed,
                   std::optional<std::int64_t> instance, const py::object& callback, bool vectorized,
-                  const py::dict& params) {
+                  const py::object& subject_to, std::optional<std::int64_t> inequalities,
+                  std::optional<std::int64_t> equalities, std::optional<double> tolerance, const py::dict& params) {
     auto errors = std::make_shared<UserError>();
     const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     const engine::Budget b = budget(evals, iters, target, wall_ms);
+    const ConstraintArgs constraints{subject_to, inequalities, equalities, tolerance};
     std::optional<engine::Problem> prepared;
-    prepared.emplace(problem_spec(problem, dim, bounds, instance, vectorized, errors, algorithm, b));
+    prepared.emplace(problem_spec(problem, dim, bounds, instance, vectorized, constraints, errors, algorithm, b));
     engine::check(algorithm, *prepared, b);
     const engine::RunResult r = run_released(algorithm, *prepared, b, seed, callback, errors);
     py::dict d = result_dict(r);
@@ -166,7 +289,8 @@ class Optimizer {
     Optimizer(const std::string& algo, const py::object& bounds, std::optional<std::int64_t> dim,
               std::optional<std::int64_t> evals, std::optional<std::int64_t> iters, std::optional<double> target,
               std::optional<double> wall_ms, std::uint64_t seed, std::optional<std::int64_t> objectives,
-              const py::dict& params) {
+              std::optional<std::int64_t> inequalities, std::optional<std::int64_t> equalities,
+              std::optional<double> tolerance, const py::dict& params) {
         require(!bounds.is_none(), "bounds", "the Optimizer needs bounds=(lower, upper)");
         engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
         const auto b = budget(evals, iters, target, wall_ms);
@@ -174,10 +298,30 @@ class Optimizer {
         const std::int64_t m = objectives.value_or(1);
         if (objectives) require(m >= 1 && m <= 10'000, "objectives", "must be in [1, 10000], got " + std::to_string(m));
         // A multi-objective run's checks need its M, made by AskTell: here only the box's size.
+        const engine::AskTellConstraints constraints{inequalities.value_or(0), equalities.value_or(0),
+                                                     tolerance.value_or(kEqualityTolerance)};
+        require(inequalities || equalities || !tolerance, "tolerance",
+                "only with constraints: give inequalities or equalities");
+        if (inequalities || equalities) {
+            for (const auto& [count, where] :
+                 {std::pair{constraints.inequalities, "inequalities"}, std::pair{constraints.equalities, "equalities"}})
+                require(count >= 0 && count <= engine::kMaxConstraints, where,
+                        fmt::format("must be an integer in [0, {}], got {}", engine::kMaxConstraints, count));
+            require(constraints.total() > 0, "inequalities",
+                    "give how many constraint values each point has: inequalities=m (g_i(x) <= 0, first) and/or "
+                    "equalities=p (h_j(x) = 0)");
+            require(std::isfinite(constraints.tolerance) && constraints.tolerance >= 0.0, "tolerance",
+                    fmt::format("must be a finite number >= 0, got {}", constraints.tolerance));
+        }
+        // A box not built yet has no constraints: its size checks leave the handler's parameters
+        // to AskTell, which checks everything on the built problem.
+        const engine::AlgorithmSpec sized =
+            inequalities || equalities ? without_constraint_params(algorithm) : algorithm;
         auto [lower, upper] = parse_bounds(
-            bounds, dim, entry.multiobjective() ? multiobjective_box_check(m) : box_check(algorithm, "bounds", b));
+            bounds, dim, entry.multiobjective() ? multiobjective_box_check(m) : box_check(sized, "bounds", b));
         py::gil_scoped_release release;
-        run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed, m);
+        run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed, m,
+                                                 constraints);
     }
     ~Optimizer() { close(); }
 
@@ -209,7 +353,7 @@ class Optimizer {
         return out;
     }
 
-    void tell(const py::object& values) {
+    void tell(const py::object& values, const py::object& g) {
         const auto v = real_array(values, "tell: values");
         const auto m = static_cast<py::ssize_t>(live().objectives());
         if (m == 1)
@@ -219,9 +363,27 @@ class Optimizer {
         else
             require(v.ndim() == 2 && v.shape(1) == m, "tell",
                     "expected an (n, " + std::to_string(m) + ") array, a row of M values per point asked for");
+        const auto k = static_cast<py::ssize_t>(live().constraints());
+        std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>> c;
+        if (!g.is_none()) {
+            require(k > 0, "tell",
+                    "g was given, but the optimizer has no constraints (declare inequalities or equalities when "
+                    "it is made)");
+            c = real_array(g, "tell: g");
+            // One constraint: g may be the n values themselves.
+            require((c->ndim() == 2 && c->shape(1) == k) || (k == 1 && c->ndim() == 1), "tell",
+                    "g: expected an (n, " + std::to_string(k) + ") array, a row of the " + std::to_string(k) +
+                        " constraint values (inequalities, then equalities) per point asked for");
+        } else {
+            require(k == 0, "tell",
+                    "g: the optimizer has " + std::to_string(k) + " constraints: tell(values, g) with g of shape (n, " +
+                        std::to_string(k) + ")");
+        }
         const std::span<const double> values_span(v.data(), static_cast<std::size_t>(v.size()));
+        const std::span<const double> g_span =
+            c ? std::span<const double>(c->data(), static_cast<std::size_t>(c->size())) : std::span<const double>();
         py::gil_scoped_release release;
-        live().tell(values_span);
+        live().tell(values_span, g_span);
     }
 
     bool done() {
@@ -551,6 +713,13 @@ py::dict result_dict(const engine::RunResult& r) {
         std::memcpy(he.mutable_data(), r.history_evaluations.data(),
                     sizeof(std::int64_t) * r.history_evaluations.size());
     d["history_evaluations"] = he;
+    if (r.best_violation) {
+        // A problem with constraints: best_f is the best feasible value, else the least violating
+        // point's (docs/constraints.md).
+        d["violation"] = *r.best_violation;
+        d["feasible"] = *r.best_violation == 0.0;
+        d["first_feasible"] = r.first_feasible ? py::object(py::int_(*r.first_feasible)) : py::object(py::none());
+    }
     if (r.grid) {
         const auto& g = *r.grid;
         const auto m = grid::metrics(g.path);
@@ -650,7 +819,8 @@ PYBIND11_MODULE(_pride, m) {
     m.def("grid_names", &grid_names);
     m.def("minimize", &minimize, py::call_guard<Call>(), py::arg("algo"), py::arg("problem"), py::arg("dim"),
           py::arg("bounds"), py::arg("evals"), py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"),
-          py::arg("instance"), py::arg("callback"), py::arg("vectorized"), py::arg("params"));
+          py::arg("instance"), py::arg("callback"), py::arg("vectorized"), py::arg("subject_to"),
+          py::arg("inequalities"), py::arg("equalities"), py::arg("tolerance"), py::arg("params"));
     py::class_<PyProblem>(m, "Problem")
         .def(py::init<const std::string&, std::optional<std::int64_t>, std::optional<std::int64_t>, std::uint64_t>(),
              py::call_guard<Call>(), py::arg("name"), py::arg("dim"), py::arg("instance"), py::arg("seed"))
@@ -664,12 +834,13 @@ PYBIND11_MODULE(_pride, m) {
     py::class_<Optimizer>(m, "Optimizer")
         .def(py::init<const std::string&, const py::object&, std::optional<std::int64_t>, std::optional<std::int64_t>,
                       std::optional<std::int64_t>, std::optional<double>, std::optional<double>, std::uint64_t,
-                      std::optional<std::int64_t>, const py::dict&>(),
+                      std::optional<std::int64_t>, std::optional<std::int64_t>, std::optional<std::int64_t>,
+                      std::optional<double>, const py::dict&>(),
              py::call_guard<Call>(), py::arg("algo"), py::arg("bounds"), py::arg("dim"), py::arg("evals"),
              py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"), py::arg("objectives"),
-             py::arg("params"))
+             py::arg("inequalities"), py::arg("equalities"), py::arg("tolerance"), py::arg("params"))
         .def("ask", &Optimizer::ask, py::call_guard<Call>())
-        .def("tell", &Optimizer::tell, py::call_guard<Call>())
+        .def("tell", &Optimizer::tell, py::call_guard<Call>(), py::arg("values"), py::arg("g"))
         .def("done", &Optimizer::done, py::call_guard<Call>())
         .def("result", &Optimizer::result, py::call_guard<Call>())
         .def("dimension", &Optimizer::dimension)
