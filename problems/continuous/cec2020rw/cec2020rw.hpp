@@ -19,20 +19,23 @@
 //   constraints 79 and 80 take Np2 and Np3 where the pattern has Np3 and Np4, and every c_i is
 //   measured from (xp1, yp1); RC30's wire table holds 0.0105 where the definitions' has 0.105;
 //   RC45-RC50's harmonics skip 89; the unit of RC45-RC50's angles is degrees.
-// - Non-real values: RC22's g8 is 1e6 where beta = acos(...) is not real; RC24's f and g are 1e4
-//   where the code's values are complex; RC26's infinite g are 1e6. Elsewhere a value the code
+// - Non-real values: RC22's g8 is 1e6 where beta = acos(...) is not real; RC26's infinite g are
+//   1e6. Elsewhere a value the code
 //   would make complex (a power or acos out of its real domain, only outside the feasible region)
 //   is NaN here, which the framework counts as an infinite violation.
-// - RC22, RC24, RC27, RC33, RC34-RC44 and RC45-RC50 loop over the population point by point in the
+// - RC22, RC27, RC33, RC34-RC44 and RC45-RC50 loop over the population point by point in the
 //   code; each point is evaluated alone here.
 // - RC27's eigenproblem and RC33's linear solve are Eigen's where the code calls MATLAB's eig and
 //   sparse backslash: they agree with the code to rounding (1e-13 relative at the test's points).
+// - RC44's cosd and sind are Octave's, cos(theta / 180 * pi) and sin(theta / 180 * pi) (MATLAB's
+//   reduce the angle first: the last bits may differ).
 // - RC34-RC43 read the organisers' data files' tables, restated in cec2020rw_tables.cpp.
-// - Not implemented yet, refused by the constructor in one line: RC24 (its f minimises over z with
-//   MATLAB's fminbnd, whose iterates Octave's differs from). The notes above on it say what the
-//   code does.
-// - The violation is the framework's mean_violation: the guidelines' mean counts an equality as
-//   |h_j| where |h_j| > 1e-4, mean_violation as |h_j| - 1e-4; both are 0 on the feasible points.
+// - Not implemented, refused by the constructor in one line: RC24, the robot gripper. Its f is
+//   the difference of a maximum and a minimum over z that the code finds with MATLAB's fminbnd
+//   (and sets to 1e4 where they come out complex); Brent's method as MATLAB's fminbnd states it
+//   and Octave's fminbnd stop at other local optima at 3 of the test's 4 points (RC24 point 1:
+//   71.97 and 71.05), so no implementation could be checked against the code.
+// - The violation is the framework's mean_violation, the guidelines' eq. 2.
 #include <cstddef>
 #include <span>
 #include <string_view>
