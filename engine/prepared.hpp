@@ -71,6 +71,8 @@ inline constexpr std::int64_t kMaxConstraints = 1'000'000;
 
 /// The number k of a CEC 2006 problem's name, cec2006-g01 .. cec2006-g24.
 std::optional<int> cec2006_number(const std::string& name);
+/// The number k of a CEC 2020 real-world problem's name, cec2020rw-rc01 .. cec2020rw-rc57.
+std::optional<int> cec2020rw_number(const std::string& name);
 
 /// Whether a callback declares constraints (checked: counts in range, a function for them).
 bool has_constraints(const CallbackSpec& cb);

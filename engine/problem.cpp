@@ -133,11 +133,22 @@ std::optional<int> cec2006_number(const std::string& name) {
     return k;
 }
 
+std::optional<int> cec2020rw_number(const std::string& name) {
+    constexpr std::string_view prefix = "cec2020rw-rc";
+    if (!name.starts_with(prefix) || name.size() != prefix.size() + 2) return std::nullopt;
+    const char a = name[prefix.size()], b = name[prefix.size() + 1];
+    if (a < '0' || a > '9' || b < '0' || b > '9') return std::nullopt;
+    const int k = (a - '0') * 10 + (b - '0');
+    if (k < 1 || k > continuous::cec2020rw::kProblems) return std::nullopt;
+    return k;
+}
+
 namespace {
 
-/// A problem of the CEC 2006 constrained suite: its own dimension, no instance.
-void prepare_cec2006(Prepared& out, const ContinuousSpec& c, int number) {
-    continuous::cec2006::Problem problem(number);
+/// A problem of a constrained suite (CEC 2006, CEC 2020 real-world): its own dimension, no instance.
+template <class SuiteProblem>
+void prepare_constrained_suite(Prepared& out, const ContinuousSpec& c, int number) {
+    SuiteProblem problem(number);
     require(c.dim == static_cast<std::int64_t>(problem.dimension()), "dim",
             fmt::format("{} has dimension {}, got {}", c.function, problem.dimension(), c.dim));
     require(!c.instance, "instance", c.function + " has no instances");
@@ -155,7 +166,9 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
     if (several_objectives(spec)) {
         prepare_several(*out);
     } else if (const auto number = continuous ? cec2006_number(continuous->function) : std::nullopt) {
-        prepare_cec2006(*out, *continuous, *number);
+        prepare_constrained_suite<continuous::cec2006::Problem>(*out, *continuous, *number);
+    } else if (const auto rc = continuous ? cec2020rw_number(continuous->function) : std::nullopt) {
+        prepare_constrained_suite<continuous::cec2020rw::Problem>(*out, *continuous, *rc);
     } else if (const auto* c = continuous) {
         require_problem_memory(*c);
         require(c->objectives == 0 || c->objectives == 1, "objectives",

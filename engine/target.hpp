@@ -17,6 +17,7 @@
 #include "framework/encoding.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec2006/cec2006.hpp"
+#include "problems/continuous/cec2020rw/cec2020rw.hpp"
 #include "problems/grid/chain.hpp"
 #include "problems/grid/connectors.hpp"
 #include "problems/grid/encodings.hpp"
@@ -107,7 +108,8 @@ struct MoChainTarget {
 };
 
 /// A box with constraints, for the algorithms that handle them (Kind::constrained_box).
-using ConstrainedVariant = std::variant<continuous::cec2006::Problem, ConstrainedCallbackProblem>;
+using ConstrainedVariant =
+    std::variant<continuous::cec2006::Problem, continuous::cec2020rw::Problem, ConstrainedCallbackProblem>;
 struct ConstrainedBoxTarget {
     ConstrainedVariant problem;
 };
