@@ -71,6 +71,9 @@ inline constexpr std::int64_t kMaxConstraints = 1'000'000;
 
 /// The number k of a CEC 2006 problem's name, cec2006-g01 .. cec2006-g24.
 std::optional<int> cec2006_number(const std::string& name);
+/// The number N of a bbob-constrained function's name, bbob-constrained-f1 .. -f54; InputError
+/// ("problem", ...) for another number after that prefix.
+std::optional<int> bbob_constrained_number(const std::string& name);
 
 /// Whether a callback declares constraints (checked: counts in range, a function for them).
 bool has_constraints(const CallbackSpec& cb);
