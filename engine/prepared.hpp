@@ -73,6 +73,9 @@ inline constexpr std::int64_t kMaxConstraints = 1'000'000;
 std::optional<int> cec2006_number(const std::string& name);
 /// The number k of a CEC 2020 real-world problem's name, cec2020rw-rc01 .. cec2020rw-rc57.
 std::optional<int> cec2020rw_number(const std::string& name);
+/// The number N of a bbob-constrained function's name, bbob-constrained-f1 .. -f54; InputError
+/// ("problem", ...) for another number after that prefix.
+std::optional<int> bbob_constrained_number(const std::string& name);
 
 /// Whether a callback declares constraints (checked: counts in range, a function for them).
 bool has_constraints(const CallbackSpec& cb);

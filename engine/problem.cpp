@@ -143,7 +143,34 @@ std::optional<int> cec2020rw_number(const std::string& name) {
     return k;
 }
 
+std::optional<int> bbob_constrained_number(const std::string& name) {
+    const std::string_view prefix = continuous::bbob_constrained::kPrefix;
+    if (!name.starts_with(prefix)) return std::nullopt;
+    const std::string digits = name.substr(prefix.size());
+    const bool number = !digits.empty() && digits.size() <= 2 && digits[0] != '0' &&
+                        std::all_of(digits.begin(), digits.end(), [](char d) { return d >= '0' && d <= '9'; });
+    const int k = number ? std::stoi(digits) : 0;
+    require(k >= 1 && k <= continuous::bbob_constrained::kFunctions, "problem",
+            fmt::format("unknown problem '{}': the bbob-constrained functions are {}1 to {}{}", name, prefix, prefix,
+                        continuous::bbob_constrained::kFunctions));
+    return k;
+}
+
 namespace {
+
+/// A function of COCO's bbob-constrained suite: dimension 2 to 40, instance 1 when none is given.
+void prepare_bbob_constrained(Prepared& out, const ContinuousSpec& c, int number) {
+    using continuous::bbob_constrained::kMaxDimension;
+    require(c.dim >= 2 && c.dim <= static_cast<std::int64_t>(kMaxDimension), "dim",
+            fmt::format("{} takes a dimension from 2 to {} (the suite's: 2, 3, 5, 10, 20, 40), got {}", c.function,
+                        kMaxDimension, c.dim));
+    require(c.objectives == 0 || c.objectives == 1, "objectives",
+            fmt::format("{} has one objective, got {}", c.function, c.objectives));
+    continuous::bbob_constrained::Problem problem(number, static_cast<std::size_t>(c.dim), c.instance.value_or(1));
+    out.name = c.function;
+    out.dimension = problem.dimension();
+    out.searched.emplace(std::in_place_type<ConstrainedBoxTarget>, ConstrainedBoxTarget{std::move(problem)});
+}
 
 /// A problem of a constrained suite (CEC 2006, CEC 2020 real-world): its own dimension, no instance.
 template <class SuiteProblem>
@@ -169,6 +196,8 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
         prepare_constrained_suite<continuous::cec2006::Problem>(*out, *continuous, *number);
     } else if (const auto rc = continuous ? cec2020rw_number(continuous->function) : std::nullopt) {
         prepare_constrained_suite<continuous::cec2020rw::Problem>(*out, *continuous, *rc);
+    } else if (const auto k = continuous ? bbob_constrained_number(continuous->function) : std::nullopt) {
+        prepare_bbob_constrained(*out, *continuous, *k);
     } else if (const auto* c = continuous) {
         require_problem_memory(*c);
         require(c->objectives == 0 || c->objectives == 1, "objectives",
@@ -336,12 +365,20 @@ const ProblemSpec& Problem::spec() const {
 std::string Problem::name() const {
     return prepared_->name;
 }
+namespace {
+const continuous::bbob_constrained::Problem* bbob_constrained_of(const Prepared& p) {
+    return p.constrained() ? std::get_if<continuous::bbob_constrained::Problem>(&p.constrained()->problem) : nullptr;
+}
+}  // namespace
+
 std::int64_t Problem::instance() const {
+    if (const auto* c = bbob_constrained_of(*prepared_)) return c->instance();
     const auto* f = prepared_->box() ? std::get_if<continuous::Function>(&prepared_->box()->problem) : nullptr;
     return f ? f->instance() : 0;
 }
 std::optional<double> optimum_of(const Prepared& p) {
     if (const auto* cb = std::get_if<CallbackSpec>(&p.spec)) return cb->f_opt;
+    if (const auto* c = bbob_constrained_of(p)) return c->optimum_value();  // f(x*), COCO's best value
     const auto* f = p.box() ? std::get_if<continuous::Function>(&p.box()->problem) : nullptr;
     if (!f) return std::nullopt;
     const double v = f->optimum_value();

@@ -53,7 +53,8 @@ class Problem {
     /// The problem's display name: the function (a catalog problem of several objectives: as the
     /// catalog names it), "grid" or the callback's name.
     std::string name() const;
-    /// A continuous function's instance (0: as defined; BBOB: COCO's, from 1); 0 for others.
+    /// A continuous function's instance (0: as defined; BBOB and bbob-constrained: COCO's, from 1); 0
+    /// for others.
     std::int64_t instance() const;
     /// A continuous function's known minimum at this instance and dimension (for targets).
     std::optional<double> optimum_value() const;

@@ -15,6 +15,7 @@
 #include "engine/other_objective.hpp"
 #include "engine/runner.hpp"
 #include "framework/encoding.hpp"
+#include "problems/continuous/bbob_constrained/bbob_constrained.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec2006/cec2006.hpp"
 #include "problems/continuous/cec2020rw/cec2020rw.hpp"
@@ -109,7 +110,8 @@ struct MoChainTarget {
 
 /// A box with constraints, for the algorithms that handle them (Kind::constrained_box).
 using ConstrainedVariant =
-    std::variant<continuous::cec2006::Problem, continuous::cec2020rw::Problem, ConstrainedCallbackProblem>;
+    std::variant<continuous::cec2006::Problem, continuous::cec2020rw::Problem, ConstrainedCallbackProblem,
+                 continuous::bbob_constrained::Problem>;
 struct ConstrainedBoxTarget {
     ConstrainedVariant problem;
 };

@@ -14,6 +14,7 @@
 #include "framework/error_place.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec2006/cec2006.hpp"
+#include "problems/continuous/cec2020rw/cec2020rw.hpp"
 
 namespace pride::python {
 
@@ -225,9 +226,18 @@ engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::i
                                           std::pair{constraints.equalities.has_value(), "equalities"},
                                           std::pair{constraints.tolerance.has_value(), "tolerance"}})
             require(!given, what, "only for Python functions: problem '" + name + "' has its own constraints, or none");
-        // CEC 2006's constrained problems: each in its own dimension, checked when it is built.
+        // The constrained suites: CEC 2006's and CEC 2020's each in its own dimension, COCO's
+        // bbob-constrained in the one given; checked when the problem is built.
         if (const auto number = engine::cec2006_number(name)) {
             if (!dim) dim = static_cast<std::int64_t>(continuous::cec2006::Problem(*number).dimension());
+            return engine::ContinuousSpec{name, *dim, instance};
+        }
+        if (const auto number = engine::cec2020rw_number(name)) {
+            if (!dim) dim = static_cast<std::int64_t>(continuous::cec2020rw::Problem(*number).dimension());
+            return engine::ContinuousSpec{name, *dim, instance};
+        }
+        if (engine::bbob_constrained_number(name)) {
+            require(dim.has_value(), "dim", "give the dimension of problem '" + name + "'");
             return engine::ContinuousSpec{name, *dim, instance};
         }
         if (!dim)
