@@ -9,7 +9,7 @@ import pytest
 import pride
 from conftest import cli
 
-CONSTRAINED = ["pso", "pso-constriction", "de", "jde", "jade", "shade", "lshade", "jso"]
+CONSTRAINED = ["pso", "pso-constriction", "de", "jde", "jade", "shade", "lshade", "jso", "colshade"]
 DISC = ([-2.0, -2.0], [2.0, 2.0])
 
 
@@ -74,12 +74,20 @@ def test_cec2006_g06_by_name_jade_reaches_the_best_known_value():
     ("de", "cec2006-g01", {"constraints": "epsilon"}),
     ("pso", "cec2006-g11", {"constraints": "penalty", "penalty": 1000.0}),
     ("shade", "cec2006-g03", {}),
+    ("colshade", "cec2006-g05", {}),
+    ("jade", "cec2020rw-rc15", {}),
+    ("colshade", "cec2020rw-rc01", {}),
+    ("lshade", "bbob-constrained-f1", {"dim": 5}),
+    ("pso", "bbob-constrained-f33", {"dim": 2, "instance": 4}),
 ])
 def test_named_problem_equals_cli(algo, problem, params):
-    r = pride.minimize(algo, problem, evals=5000, seed=3, **params)
+    where = {k: v for k, v in params.items() if k in ("dim", "instance")}
+    params = {k: v for k, v in params.items() if k not in where}
+    r = pride.minimize(algo, problem, evals=5000, seed=3, **where, **params)
+    params_flags = ["--instance", where["instance"]] if "instance" in where else []
     flags = [a for k, v in params.items() for a in ("--param", f"{k}={v}")]
     want = cli("run", "--algo", algo, "--problem", problem, "--dim", len(r.best_x), "--evals", 5000, "--seed", 3,
-               "--json", *flags)
+               "--json", *params_flags, *flags)
     assert r.best_f == want["best_f"]
     assert r.best_x.tolist() == want["best_x"]
     assert r.violation == want["best_violation"]
@@ -215,6 +223,12 @@ def _error(**kwargs):
      r"^instance: cec2006-g06 has no instances"),
     ({"problem": "cec2006-g25", "bounds": None, "subject_to": None, "inequalities": None}, ValueError,
      r"^problem: unknown problem 'cec2006-g25'"),
+    ({"problem": "cec2020rw-rc24", "bounds": None, "subject_to": None, "inequalities": None}, ValueError,
+     r"^problem: "),
+    ({"problem": "bbob-constrained-f1", "bounds": None, "subject_to": None, "inequalities": None}, ValueError,
+     r"^dim: give the dimension of problem 'bbob-constrained-f1'"),
+    ({"problem": "bbob-constrained-f55", "bounds": None, "subject_to": None, "inequalities": None, "dim": 2},
+     ValueError, r"^problem: unknown problem 'bbob-constrained-f55'"),
 ])
 def test_bad_input_is_one_line(kwargs, error, match):
     with pytest.raises(error, match=match) as e:
