@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "cli/numbers.hpp"
+#include "engine/problem.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
 #include "framework/error.hpp"
@@ -236,6 +237,7 @@ int list_command(ListFormat format, std::ostream& out) {
                                                     : " (dim >= " + std::to_string(item.entry.min_dim) + ")")});
     }
     sections.push_back(problems);
+    sections.push_back({"constrained_problems", engine::constrained_problems()});
     Section several{"multiobjective_problems", {}};
     for (const auto& e : multiobjective::kCatalog)
         several.items.push_back({std::string(e.name), std::string(e.summary) + " (pride front)"});

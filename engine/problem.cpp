@@ -156,6 +156,41 @@ std::optional<int> bbob_constrained_number(const std::string& name) {
     return k;
 }
 
+const std::vector<NamedItem>& constrained_problems() {
+    static const std::vector<NamedItem> items = [] {
+        std::vector<NamedItem> out;
+        const auto counts = [](const ConstraintCounts& c) {
+            return fmt::format("{} inequalit{}, {} equalit{}", c.inequalities, c.inequalities == 1 ? "y" : "ies",
+                               c.equalities, c.equalities == 1 ? "y" : "ies");
+        };
+        for (int k = 1; k <= 24; ++k) {
+            const continuous::cec2006::Problem p(k);
+            out.push_back({fmt::format("cec2006-g{:02}", k),
+                           fmt::format("CEC 2006 g{:02} (Liang et al. 2006): {}; best known {} (dim = {})", k,
+                                       counts(p.constraint_counts()), p.best_known_value(), p.dimension())});
+        }
+        for (int k = 1; k <= continuous::cec2020rw::kProblems; ++k) {
+            if (!continuous::cec2020rw::implemented(k)) continue;  // RC24: see cec2020rw.hpp
+            const continuous::cec2020rw::Problem p(k);
+            out.push_back({fmt::format("cec2020rw-rc{:02}", k),
+                           fmt::format("CEC 2020 real-world RC{:02} (Kumar et al. 2020): {}; best known {} (dim = {})",
+                                       k, counts(p.constraint_counts()), p.best_known_value(), p.dimension())});
+        }
+        // COCO's order: nine objectives, each with six numbers m of active linear constraints.
+        static constexpr const char* objectives[] = {
+            "sphere",     "separable ellipsoid", "linear slope",        "rotated ellipsoid", "discus",
+            "bent cigar", "different powers",    "separable Rastrigin", "rotated Rastrigin"};
+        static constexpr const char* actives[] = {"1", "2", "6", "6 + floor(D/2)", "6 + D", "6 + 3D"};
+        for (int n = 1; n <= continuous::bbob_constrained::kFunctions; ++n)
+            out.push_back({fmt::format("{}{}", continuous::bbob_constrained::kPrefix, n),
+                           fmt::format("COCO bbob-constrained: {} with m = {} active linear constraints and floor(m/2) "
+                                       "inactive ones; COCO's instances (dim 2 to 40; the suite's 2, 3, 5, 10, 20, 40)",
+                                       objectives[(n - 1) / 6], actives[(n - 1) % 6])});
+        return out;
+    }();
+    return items;
+}
+
 namespace {
 
 /// A function of COCO's bbob-constrained suite: dimension 2 to 40, instance 1 when none is given.

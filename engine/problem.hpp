@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/grid_names.hpp"
 #include "engine/specs.hpp"
 #include "problems/grid/path.hpp"
 
@@ -72,5 +73,9 @@ class Problem {
     std::shared_ptr<const Prepared> prepared_;
     std::shared_ptr<Variants> variants_;
 };
+
+/// The constrained suites' problems by name (CEC 2006, CEC 2020 real-world, COCO's
+/// bbob-constrained), each with its constraint counts and dimension, for listings.
+const std::vector<NamedItem>& constrained_problems();
 
 }  // namespace pride::engine

@@ -422,3 +422,27 @@ TEST_CASE("engine and pride run: the CEC 2006 problems by name, with their viola
     test::expect_input_error("run --algo pso --problem sphere --dim 2 --evals 200 --param constraints=epsilon",
                              {"sphere has none"});
 }
+
+TEST_CASE("pride list: every constrained problem it names is built and run by that name", "[constraints]") {
+    const auto& items = engine::constrained_problems();
+    CHECK(items.size() == 24 + 56 + 54);  // CEC 2020's RC24 is refused, so not listed
+    for (const auto& item : items) {
+        INFO(item.name);
+        std::int64_t dim = 2;  // bbob-constrained: any from 2 to 40
+        if (const auto at = item.summary.find("(dim = "); at != std::string::npos)
+            dim = std::stoll(item.summary.substr(at + 7));
+        const engine::Problem problem(engine::ContinuousSpec{item.name, dim});
+        CHECK(problem.dimension() == static_cast<std::size_t>(dim));
+        const auto r = engine::run({"de", {}}, problem, evaluations(50), 1);
+        CHECK(r.evaluations == 50);
+        CHECK(r.best_violation.has_value());
+    }
+    CHECK(test::input_error_message([] {
+              engine::Problem{engine::ContinuousSpec{"cec2020rw-rc24", 9}};
+          }).find("problem:") == 0);
+    const auto listed = test::run_pride("list");
+    REQUIRE(listed.status == 0);
+    CHECK(listed.out.find("constrained_problems:\n  cec2006-g01 ") != std::string::npos);
+    CHECK(listed.out.find("  bbob-constrained-f54 ") != std::string::npos);
+    CHECK(listed.out.find("cec2020rw-rc24") == std::string::npos);
+}

@@ -80,7 +80,8 @@ TEST_CASE("counting: every grid algorithm's objective calls are its evaluations,
                 engine::Budget b;
                 b.iterations = 2;
                 // L-SHADE and jSO need an evaluation limit (their schedules run over it).
-                if (entry.name == "lshade" || entry.name == "jso") b.evaluations = 1'000'000;
+                if (entry.name == "lshade" || entry.name == "jso" || entry.name == "colshade")
+                    b.evaluations = 1'000'000;
                 std::int64_t calls = 0;
                 const auto r = counted_run(entry.name, s, objective, b, calls);
                 INFO("--iters 2");

@@ -51,10 +51,10 @@ std::vector<Space> spaces_of(const engine::AlgorithmEntry& entry) {
     return out;
 }
 
-/// Entries whose schedules run over the evaluation budget (L-SHADE's and jSO's population size
-/// reduction, algorithms/de.hpp) refuse a run without an evaluation limit.
+/// Entries whose schedules run over the evaluation budget (L-SHADE's, jSO's and COLSHADE's
+/// population size reduction) refuse a run without an evaluation limit.
 bool needs_evaluation_limit(const std::string& algo) {
-    return algo == "lshade" || algo == "jso";
+    return algo == "lshade" || algo == "jso" || algo == "colshade";
 }
 
 engine::RunResult run(const std::string& algo, const engine::Problem& p, engine::Budget b, std::uint64_t seed,
