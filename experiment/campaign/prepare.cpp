@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "engine/json.hpp"
+#include "engine/prepared.hpp"
 #include "experiment/campaign/identity.hpp"
 #include "experiment/campaign/run_one.hpp"
 #include "experiment/storage/file_name.hpp"
@@ -210,6 +211,11 @@ void prepare(Campaign& c) {
                 }
             } else {
                 p.problem = std::make_shared<const Problem>(problem_spec(p));
+                // A store row has no violation yet: an infeasible run's f would be ranked as a result.
+                require(!p.problem->prepared().constrained(), "type",
+                        fmt::format("{} has constraints, and a campaign's store does not record violations yet: "
+                                    "run it with pride run or from Python",
+                                    p.problem->name()));
             }
             if (c.evaluations_per_dim) {
                 require(!std::holds_alternative<GridSpec>(p.spec), "evaluations_per_dim",
