@@ -123,24 +123,26 @@ bool has_constraints(const CallbackSpec& cb) {
     return any;
 }
 
-std::optional<int> cec2006_number(const std::string& name) {
-    constexpr std::string_view prefix = "cec2006-g";
+namespace {
+
+/// k from `prefix` followed by two digits, 01 to `count`.
+std::optional<int> two_digit_number(const std::string& name, std::string_view prefix, int count) {
     if (!name.starts_with(prefix) || name.size() != prefix.size() + 2) return std::nullopt;
     const char a = name[prefix.size()], b = name[prefix.size() + 1];
     if (a < '0' || a > '9' || b < '0' || b > '9') return std::nullopt;
     const int k = (a - '0') * 10 + (b - '0');
-    if (k < 1 || k > continuous::cec2006::kProblems) return std::nullopt;
+    if (k < 1 || k > count) return std::nullopt;
     return k;
 }
 
+}  // namespace
+
+std::optional<int> cec2006_number(const std::string& name) {
+    return two_digit_number(name, "cec2006-g", continuous::cec2006::kProblems);
+}
+
 std::optional<int> cec2020rw_number(const std::string& name) {
-    constexpr std::string_view prefix = "cec2020rw-rc";
-    if (!name.starts_with(prefix) || name.size() != prefix.size() + 2) return std::nullopt;
-    const char a = name[prefix.size()], b = name[prefix.size() + 1];
-    if (a < '0' || a > '9' || b < '0' || b > '9') return std::nullopt;
-    const int k = (a - '0') * 10 + (b - '0');
-    if (k < 1 || k > continuous::cec2020rw::kProblems) return std::nullopt;
-    return k;
+    return two_digit_number(name, "cec2020rw-rc", continuous::cec2020rw::kProblems);
 }
 
 std::optional<int> bbob_constrained_number(const std::string& name) {
