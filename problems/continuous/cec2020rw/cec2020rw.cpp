@@ -808,6 +808,14 @@ void injected_currents(const detail::AdmittanceEntry* y, std::size_t count, cons
     for (std::size_t e = 0; e < count; ++e) I[y[e].row] += cplx(y[e].g, y[e].b) * V[y[e].column];
 }
 
+// The current mismatch at a bus, I - conj(S / V) with S = P + jQ its specified power: the real
+// and imaginary parts, each an equality constraint of the power-flow problems.
+void current_mismatch(cplx I, cplx V, double P, double Q, double& re, double& im) noexcept {
+    const cplx spI = std::conj(cplx(P, Q) / V);
+    re = I.real() - spI.real();
+    im = I.imag() - spI.imag();
+}
+
 // The load's voltage dependence of RC35, RC36, RC40-RC43: P(:,1) .* (abs(V) ./ P(:,5)) .^ P(:,6).
 double load(const double (*table)[6], int bus, cplx V) noexcept {
     return table[bus][0] * pw(std::abs(V) / table[bus][4], table[bus][5]);
@@ -834,9 +842,7 @@ double rc34(const double* x, double* c) noexcept {
     }
     injected_currents<n>(detail::kPs1Y, detail::kPs1YCount, V, I);
     for (int i = 3; i < n; ++i) {
-        const cplx spI = std::conj(cplx(Psp[i], Qsp[i]) / V[i]);
-        c[i - 3] = I[i].real() - spI.real();
-        c[27 + i - 3] = I[i].imag() - spI.imag();
+        current_mismatch(I[i], V[i], Psp[i], Qsp[i], c[i - 3], c[27 + i - 3]);
         c[54 + i - 3] = Psp[i] - Pdg[i] - detail::kPs1P[i];
         c[81 + i - 3] = Qsp[i] - Qdg[i] - detail::kPs1Q[i];
     }
@@ -861,9 +867,7 @@ double rc35_36(const double* x, double* c, bool reactive) noexcept {
     }
     injected_currents<n>(detail::kPs2Y, detail::kPs2YCount, V, I);
     for (int i = 1; i < n; ++i) {
-        const cplx spI = std::conj(cplx(Psp[i], Qsp[i]) / V[i]);
-        c[i - 1] = I[i].real() - spI.real();
-        c[37 + i - 1] = I[i].imag() - spI.imag();
+        current_mismatch(I[i], V[i], Psp[i], Qsp[i], c[i - 1], c[37 + i - 1]);
         c[74 + i - 1] = Psp[i] - Pdg[i] + load(detail::kPs2P, i, V[i]);
         c[111 + i - 1] = Qsp[i] - Qdg[i] + load(detail::kPs2Q, i, V[i]);
     }
@@ -902,9 +906,7 @@ double rc37_39(const double* x, double* c, int number) noexcept {
     }
     injected_currents<n>(detail::kPs11Y, detail::kPs11YCount, V, I);
     for (int i = 1; i < n; ++i) {
-        const cplx spI = std::conj(cplx(Psp[i], Qsp[i]) / V[i]);
-        c[i - 1] = I[i].real() - spI.real();
-        c[29 + i - 1] = I[i].imag() - spI.imag();
+        current_mismatch(I[i], V[i], Psp[i], Qsp[i], c[i - 1], c[29 + i - 1]);
         c[58 + i - 1] = Psp[i] - Pg[i] + detail::kPs11P[i];
         c[87 + i - 1] = Qsp[i] - Qg[i] + detail::kPs11Q[i];
     }
@@ -991,9 +993,7 @@ double islanded(const double* x, double* c, int number) noexcept {
         const double Vr = V[i].real(), Vm = V[i].imag();
         Psp[i] = Pc[i] * (1.0 - w) - load(detail::kPs2P, i, V[i]);
         Qsp[i] = Qc[i] * (1.0 - std::sqrt(pw(Vr, 2) + pw(Vm, 2))) - load(detail::kPs2Q, i, V[i]);
-        const cplx spI = std::conj(cplx(Psp[i], Qsp[i]) / V[i]);
-        c[i] = I[i].real() - spI.real();
-        c[n + i] = I[i].imag() - spI.imag();
+        current_mismatch(I[i], V[i], Psp[i], Qsp[i], c[i], c[n + i]);
         sumP += Psp[i];
         sumQ += Qsp[i];
     }
@@ -1035,9 +1035,7 @@ double rc41(const double* x, double* c) noexcept {
         const double Vr = V[i].real(), Vm = V[i].imag(), Ir = I[i].real(), Im = I[i].imag();
         const double Psp = Pdg[i] - load(detail::kPs2P, i, V[i]);
         const double Qsp = Qdg[i] - load(detail::kPs2Q, i, V[i]);
-        const cplx spI = std::conj(cplx(Psp, Qsp) / V[i]);
-        c[i - 1] = Ir - spI.real();
-        c[37 + i - 1] = Im - spI.imag();
+        current_mismatch(I[i], V[i], Psp, Qsp, c[i - 1], c[37 + i - 1]);
         sumP += pw(Psp - (Vr * Ir + Vm * Im), 2);
         sumQ += pw(Qsp - (Vm * Ir - Vr * Im), 2);
     }
