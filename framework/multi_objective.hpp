@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "framework/chain.hpp"
+#include "framework/constraints.hpp"
 #include "framework/error.hpp"
 #include "framework/problem.hpp"
 
@@ -28,6 +29,19 @@ concept MultiObjectiveProblem = std::copy_constructible<P> &&
     { cp.upper() } -> std::convertible_to<std::span<const double>>;
     { cp.objectives() } -> std::convertible_to<std::size_t>;
     p.evaluate(x, f);  // f.size() == objectives()
+};
+
+/// A problem of several objectives with constraints (framework/constraints.hpp): one evaluation
+/// writes the M objective values into `f` and the m + p constraint values into `c` (inequalities
+/// g_i <= 0 first, then equalities), counted once; violation(c) is the suite's measure of a point's
+/// violation from those values (0: feasible).
+template <class P>
+concept ConstrainedMultiObjectiveProblem = MultiObjectiveProblem<P> &&
+    requires(P& p, const P& cp, std::span<const double> x, std::span<double> f, std::span<double> c,
+             std::span<const double> cc) {
+    { cp.constraint_counts() } -> std::convertible_to<ConstraintCounts>;
+    p.evaluate_constrained(x, f, c);
+    { cp.violation(cc) } -> std::convertible_to<double>;
 };
 
 /// A problem of several objectives whose solutions are chains searched with the chain operators of
