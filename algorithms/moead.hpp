@@ -50,6 +50,12 @@
 // generation the generation ends there. The result is the non-dominated members of the final
 // population (no external population, the 2007 paper's EP: the population is what pagmo2 and most
 // users read; the same point may stand for several subproblems and then appears more than once).
+// With constraints (framework/multi_objective.hpp's ConstrainedMultiObjectiveProblem), step (4)
+// replaces by violation first: the child replaces x^j when its violation is smaller, or equal and
+// g^te no worse (Jain and Deb 2014, part II, C-MOEA/D's rule; two feasible points compare by g^te
+// alone, as above). Decided by this project: z* is the ideal of the feasible points seen once there
+// is one (an infeasible point's values would pull it below the feasible front for good), of every
+// point until then; the result is the first front of constrained domination (Deb et al. 2002).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -66,6 +72,7 @@
 #include "framework/mo_run_state.hpp"
 #include "framework/multi_objective.hpp"
 #include "framework/observer.hpp"
+#include "framework/pareto/constrained_sorting.hpp"
 #include "framework/pareto/reference_directions.hpp"
 #include "framework/pareto/sorting.hpp"
 #include "framework/random.hpp"
@@ -262,11 +269,38 @@ struct Moead {
         const Matrix w = (lambda.array() == 0.0).select(zero_weight, lambda);
 
         Matrix x(rows, cols), fx(mrows, cols);
+        // Constraints only (empty otherwise): the members' violations, and the child's.
+        constexpr bool constrained = ConstrainedMultiObjectiveProblem<P>;
+        std::vector<double> vx(constrained ? n : 0), vchild(constrained ? 1 : 0);
+        const auto evaluate = [&](MatrixView points, Matrix& out, std::span<double> violation) {
+            if constexpr (constrained)
+                state.evaluate_columns(problem, points, out, violation);
+            else
+                state.evaluate_columns(problem, points, out);
+        };
         for (Eigen::Index j = 0; j < cols; ++j)
             for (std::size_t i = 0; i < dim; ++i) x(static_cast<Eigen::Index>(i), j) = rng.uniform(lo[i], hi[i]);
-        state.evaluate_columns(problem, x, fx);
+        evaluate(x, fx, vx);
         std::vector<double> z(m);  // +inf while no finite point is seen
-        for (std::size_t k = 0; k < m; ++k) z[k] = fx.row(static_cast<Eigen::Index>(k)).minCoeff();
+        // With constraints z* is the feasible points' ideal once one is seen, all points' until then
+        // (z_all; see the header comment).
+        std::vector<double> z_all;
+        bool feasible_seen = false;
+        if constexpr (constrained) {
+            z.assign(m, kInf);
+            z_all.assign(m, kInf);
+            for (std::size_t j = 0; j < n; ++j) {
+                feasible_seen = feasible_seen || vx[j] == 0.0;
+                for (std::size_t k = 0; k < m; ++k) {
+                    const double fk = fx(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j));
+                    z_all[k] = std::min(z_all[k], fk);
+                    if (vx[j] == 0.0) z[k] = std::min(z[k], fk);
+                }
+            }
+            if (!feasible_seen) z = z_all;
+        } else {
+            for (std::size_t k = 0; k < m; ++k) z[k] = fx.row(static_cast<Eigen::Index>(k)).minCoeff();
+        }
         state.end_iteration(observer, x, fx);
 
         auto reproduce = reproduction.prepare(dim);
@@ -299,9 +333,20 @@ struct Moead {
                 second += second >= first;
                 reproduce(x, i, from[first], from[second], y, lo, hi, rng);
                 // (3)
-                state.evaluate_columns(problem, child, fchild);
+                evaluate(child, fchild, vchild);
                 if (!std::isfinite(fy[0])) continue;  // +inf in every objective: replaces nothing
-                for (std::size_t k = 0; k < m; ++k) z[k] = std::min(z[k], fy[k]);
+                if constexpr (constrained) {
+                    for (std::size_t k = 0; k < m; ++k) z_all[k] = std::min(z_all[k], fy[k]);
+                    if (vchild[0] == 0.0) {
+                        if (!feasible_seen) std::fill(z.begin(), z.end(), kInf);
+                        feasible_seen = true;
+                        for (std::size_t k = 0; k < m; ++k) z[k] = std::min(z[k], fy[k]);
+                    } else if (!feasible_seen) {
+                        z = z_all;
+                    }
+                } else {
+                    for (std::size_t k = 0; k < m; ++k) z[k] = std::min(z[k], fy[k]);
+                }
                 // (4) Without a limit every member is tried (the order is then irrelevant: no
                 // draws); with one, a partial Fisher-Yates shuffle picks them in random order.
                 std::size_t replaced = 0;
@@ -311,9 +356,16 @@ struct Moead {
                     const std::size_t j = from[s];
                     const auto wj = column(w, static_cast<Eigen::Index>(j));
                     const auto fj = column(fx, static_cast<Eigen::Index>(j));
-                    if (moead::tchebycheff(fy, wj, z) <= moead::tchebycheff(fj, wj, z)) {
+                    bool better;
+                    if constexpr (constrained)
+                        better = vchild[0] != vx[j] ? vchild[0] < vx[j]
+                                                    : moead::tchebycheff(fy, wj, z) <= moead::tchebycheff(fj, wj, z);
+                    else
+                        better = moead::tchebycheff(fy, wj, z) <= moead::tchebycheff(fj, wj, z);
+                    if (better) {
                         x.col(static_cast<Eigen::Index>(j)) = child.col(0);
                         fx.col(static_cast<Eigen::Index>(j)) = fchild.col(0);
+                        if constexpr (constrained) vx[j] = vchild[0];
                         ++replaced;
                     }
                 }
@@ -321,11 +373,11 @@ struct Moead {
             state.end_iteration(observer, x, fx);
         }
         std::vector<std::size_t> rank(n), front;
-        pareto::SortScratch scratch;
-        pareto::nondominated_sort(fx, std::span<std::size_t>(rank), scratch);
+        pareto::ConstrainedSortScratch scratch;
+        pareto::constrained_sort(fx, vx, std::span<std::size_t>(rank), scratch);
         for (std::size_t k = 0; k < n; ++k)
             if (rank[k] == 0) front.push_back(k);
-        return state.finish(x, fx, front);
+        return state.finish(x, fx, front, vx);
     }
 
   private:

@@ -51,6 +51,7 @@
 #include "framework/mo_run_state.hpp"
 #include "framework/multi_objective.hpp"
 #include "framework/observer.hpp"
+#include "framework/pareto/constrained_sorting.hpp"
 #include "framework/pareto/dominance.hpp"
 #include "framework/pareto/sorting.hpp"
 #include "framework/random.hpp"
@@ -69,6 +70,7 @@ struct Standing {
 /// Buffers a survival step reuses from generation to generation.
 struct SurvivalScratch {
     pareto::SortScratch sort;
+    pareto::ConstrainedSortScratch ranking;
     std::vector<std::size_t> rank, by_front, front_start, members;
     std::vector<double> distance;
     std::vector<std::pair<double, std::size_t>> cut;
@@ -82,11 +84,11 @@ struct CrowdingSurvival {
     static constexpr const char* algorithm = "nsga2";
     /// The tournaments compare the standing (a survival with no ranking of its own says false).
     static constexpr bool ranked_mating = true;
-    void operator()(const Matrix& f, std::size_t keep, std::vector<std::size_t>& chosen, Standing& out,
-                    SurvivalScratch& s, Rng&) const {
+    void operator()(const Matrix& f, std::span<const double> v, std::size_t keep, std::vector<std::size_t>& chosen,
+                    Standing& out, SurvivalScratch& s, Rng&) const {
         const auto n = static_cast<std::size_t>(f.cols());
         s.rank.resize(n);
-        const std::size_t fronts = pareto::nondominated_sort(f, std::span<std::size_t>(s.rank), s.sort);
+        const std::size_t fronts = pareto::constrained_sort(f, v, std::span<std::size_t>(s.rank), s.ranking);
         // The members of each front, in index order (a counting sort on the rank).
         s.front_start.assign(fronts + 1, 0);
         for (const std::size_t r : s.rank) ++s.front_start[r + 1];
@@ -200,32 +202,38 @@ struct Nsga2 {
         const std::size_t n = pop.n;
         const auto mrows = static_cast<Eigen::Index>(start.objectives), cols = static_cast<Eigen::Index>(n);
         Matrix fr(mrows, 2 * cols), fnext(mrows, cols), fq(mrows, cols);
-        pop.initialise(rng, state, fnext);
+        // Violations beside the values (constraints only; empty otherwise): R_t's in vr, P_{t+1}'s in vnext.
+        std::vector<double> vr(Population::constrained ? 2 * n : 0), vnext(Population::constrained ? n : 0);
+        const auto children_v = vr.empty() ? std::span<double>() : std::span<double>(vr).subspan(n);
+        pop.initialise(rng, state, fnext, std::span<double>(vnext));
         fr.leftCols(cols) = fnext;
+        std::copy(vnext.begin(), vnext.end(), vr.begin());
         Generation g(n);
-        g.rank_initial(*this, fnext, rng);
+        g.rank_initial(*this, fnext, vnext, rng);
         pop.keep_parents();
         state.end_iteration(observer, pop.next, fnext);
         while (!state.done()) {
             // (1)
-            g.mate(*this, fr, rng,
+            g.mate(*this, fr, vr, rng,
                    [&](std::size_t a, std::size_t b, std::size_t child) { pop.breed(a, b, child, rng); });
             // (2)
-            pop.evaluate_children(state, fq);
+            pop.evaluate_children(state, fq, children_v);
             fr.rightCols(cols) = fq;
             // (3)
-            g.survive(*this, fr, fnext, rng);
+            g.survive(*this, fr, vr, fnext, vnext, rng);
             pop.keep(g.chosen);
             fr.leftCols(cols) = fnext;
+            std::copy(vnext.begin(), vnext.end(), vr.begin());
             state.end_iteration(observer, pop.next, fnext);
         }
         const auto front = g.first_front();
-        return state.finish(pop.next, fnext, front);
+        return state.finish(pop.next, fnext, front, vnext);
     }
 
     /// Points of a box as matrix columns: R_t in `r`, P_{t+1} in `next`.
     template <class P>
     struct BoxPopulation {
+        static constexpr bool constrained = ConstrainedMultiObjectiveProblem<P>;
         P& problem;
         std::size_t n, dim;
         Eigen::Index cols;
@@ -246,10 +254,16 @@ struct Nsga2 {
               cross(crossover.prepare(dim)),
               mutate(mutation.prepare(dim)) {}
 
-        void initialise(Rng& rng, MultiObjectiveRunState& state, Matrix& f) {
+        void initialise(Rng& rng, MultiObjectiveRunState& state, Matrix& f, std::span<double> v) {
             for (Eigen::Index j = 0; j < cols; ++j)
                 for (std::size_t i = 0; i < dim; ++i) r(static_cast<Eigen::Index>(i), j) = rng.uniform(lo[i], hi[i]);
-            state.evaluate_columns(problem, r.leftCols(cols), f);
+            evaluate(state, r.leftCols(cols), f, v);
+        }
+        void evaluate(MultiObjectiveRunState& state, MatrixView points, Matrix& f, std::span<double> v) {
+            if constexpr (constrained)
+                state.evaluate_columns(problem, points, f, v);
+            else
+                state.evaluate_columns(problem, points, f);
         }
         void keep_parents() { next = r.leftCols(cols); }
         void breed(std::size_t a, std::size_t b, std::size_t child, Rng& rng) {
@@ -260,8 +274,8 @@ struct Nsga2 {
             mutate(column(r, c1), lo, hi, rng);
             mutate(column(r, c2), lo, hi, rng);
         }
-        void evaluate_children(MultiObjectiveRunState& state, Matrix& f) {
-            state.evaluate_columns(problem, r.rightCols(cols), f);
+        void evaluate_children(MultiObjectiveRunState& state, Matrix& f, std::span<double> v) {
+            evaluate(state, r.rightCols(cols), f, v);
         }
         void keep(const std::vector<std::size_t>& chosen) {
             for (std::size_t k = 0; k < n; ++k)
@@ -275,13 +289,14 @@ struct Nsga2 {
     template <class P>
     struct ChainPopulation {
         using Chain = typename P::chain_type;
+        static constexpr bool constrained = false;
         P& problem;
         const Crossover& crossover;
         const Mutation& mutation;
         std::size_t n;
         std::vector<Chain> r = std::vector<Chain>(2 * n), next = std::vector<Chain>(n);
 
-        void initialise(Rng& rng, MultiObjectiveRunState& state, Matrix& f) {
+        void initialise(Rng& rng, MultiObjectiveRunState& state, Matrix& f, std::span<double>) {
             for (std::size_t j = 0; j < n; ++j) problem.random_chain(rng, r[j]);
             state.evaluate_chains(problem, std::span<const Chain>(r).first(n), f);
         }
@@ -295,7 +310,7 @@ struct Nsga2 {
             mutation(problem, c1, rng);
             mutation(problem, c2, rng);
         }
-        void evaluate_children(MultiObjectiveRunState& state, Matrix& f) {
+        void evaluate_children(MultiObjectiveRunState& state, Matrix& f, std::span<double>) {
             state.evaluate_chains(problem, std::span<const Chain>(r).subspan(n, n), f);
         }
         void keep(const std::vector<std::size_t>& chosen) {
@@ -325,8 +340,8 @@ struct Nsga2 {
 
         /// The initial population's standing, in its own order (every member survives; the
         /// survival lists them by front).
-        void rank_initial(const Nsga2& a, const Matrix& f0, Rng& rng) {
-            a.survival(f0, n, chosen, standing, scratch, rng);
+        void rank_initial(const Nsga2& a, const Matrix& f0, std::span<const double> v0, Rng& rng) {
+            a.survival(f0, v0, n, chosen, standing, scratch, rng);
             nsga::Standing ordered{std::vector<std::size_t>(n), std::vector<double>(n)};
             for (std::size_t k = 0; k < n; ++k) {
                 ordered.rank[chosen[k]] = standing.rank[k];
@@ -338,15 +353,15 @@ struct Nsga2 {
         /// (1) two permutations, four entrants at a time: two tournaments, then breed(a, b, child)
         /// makes children `child` and `child + 1` (counted from 0) of parents a and b.
         template <class Breed>
-        void mate(const Nsga2& a, const Matrix& fr, Rng& rng, Breed&& breed) {
+        void mate(const Nsga2& a, const Matrix& fr, std::span<const double> vr, Rng& rng, Breed&& breed) {
             std::size_t child = 0;
             for (int pass = 0; pass < 2; ++pass) {
                 std::iota(perm.begin(), perm.end(), std::size_t{0});
                 for (std::size_t i = n; i > 1; --i)
                     std::swap(perm[i - 1], perm[static_cast<std::size_t>(rng.below(i))]);
                 for (std::size_t i = 0; i + 3 < n; i += 4) {
-                    const std::size_t p1 = a.winner(perm[i], perm[i + 1], fr, standing, rng);
-                    const std::size_t p2 = a.winner(perm[i + 2], perm[i + 3], fr, standing, rng);
+                    const std::size_t p1 = a.winner(perm[i], perm[i + 1], fr, vr, standing, rng);
+                    const std::size_t p2 = a.winner(perm[i + 2], perm[i + 3], fr, vr, standing, rng);
                     breed(p1, p2, child);
                     child += 2;
                 }
@@ -354,10 +369,13 @@ struct Nsga2 {
         }
 
         /// (3) the survivors of R_t into `chosen` (indices into R_t), their values into fnext.
-        void survive(const Nsga2& a, const Matrix& fr, Matrix& fnext, Rng& rng) {
-            a.survival(fr, n, chosen, standing, scratch, rng);
+        void survive(const Nsga2& a, const Matrix& fr, std::span<const double> vr, Matrix& fnext,
+                     std::span<double> vnext, Rng& rng) {
+            a.survival(fr, vr, n, chosen, standing, scratch, rng);
             for (std::size_t k = 0; k < n; ++k)
                 fnext.col(static_cast<Eigen::Index>(k)) = fr.col(static_cast<Eigen::Index>(chosen[k]));
+            if (!vr.empty())
+                for (std::size_t k = 0; k < n; ++k) vnext[k] = vr[chosen[k]];
         }
 
         /// The members of the first front, in population order.
@@ -370,13 +388,22 @@ struct Nsga2 {
     };
 
     /// The winner of a binary tournament between members a and b of the population.
-    std::size_t winner(std::size_t a, std::size_t b, const Matrix& f, const nsga::Standing& s, Rng& rng) const {
-        if constexpr (!Survival::ranked_mating) return rng.uniform() <= 0.5 ? a : b;
+    /// `v`: the members' violations (empty without constraints).
+    std::size_t winner(std::size_t a, std::size_t b, const Matrix& f, std::span<const double> v,
+                       const nsga::Standing& s, Rng& rng) const {
+        if constexpr (!Survival::ranked_mating) {
+            // Jain and Deb's (2014, part II) constrained tournament: the lesser violation wins (a
+            // feasible entrant over an infeasible one); two feasible entrants, or equal violations,
+            // a fair coin as without constraints.
+            if (!v.empty() && v[a] != v[b]) return v[a] < v[b] ? a : b;
+            return rng.uniform() <= 0.5 ? a : b;
+        }
         if (tournament == nsga::Tournament::code) {
             const auto fa = pareto::point(f, static_cast<Eigen::Index>(a));
             const auto fb = pareto::point(f, static_cast<Eigen::Index>(b));
-            if (pareto::dominates(fa, fb)) return a;
-            if (pareto::dominates(fb, fa)) return b;
+            const double va = v.empty() ? 0.0 : v[a], vb = v.empty() ? 0.0 : v[b];
+            if (pareto::constrained_dominates(fa, va, fb, vb)) return a;
+            if (pareto::constrained_dominates(fb, vb, fa, va)) return b;
         } else {
             if (s.rank[a] != s.rank[b]) return s.rank[a] < s.rank[b] ? a : b;
         }

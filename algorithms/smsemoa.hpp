@@ -37,6 +37,10 @@
 //   other than the budget (iterations, wall time, stop flag) are read once per generation;
 // - operators: eta_c = 20, p_c = 0.9, eta_m = 20, p_m = 1/n, as pride::Nsga2 (NSGA-II's sec. V),
 //   so that the two differ only in selection when compared.
+// With constraints (framework/multi_objective.hpp's ConstrainedMultiObjectiveProblem): the fronts
+// of (3) and of the result are constrained domination's (Deb et al. 2002, sec. VI-A), and a worst
+// front of infeasible points loses its lowest column (decided by this project: the paper has no
+// constraints; it is how the usual constrained SMS-EMOA codes reduce).
 // Cost of a step at M = 2: the O(mu log mu) sort into fronts and Delta_S of R_v from its sorted
 // neighbours, O(|R_v| log |R_v|); at M >= 3 Deb's O(M mu^2) sort and, per member of R_v, WFG's
 // exclusive hypervolume (the 3-D sweep at M = 3). No allocation per step once the buffers have
@@ -56,6 +60,7 @@
 #include "framework/mo_run_state.hpp"
 #include "framework/multi_objective.hpp"
 #include "framework/observer.hpp"
+#include "framework/pareto/constrained_sorting.hpp"
 #include "framework/pareto/hypervolume.hpp"
 #include "framework/pareto/sorting.hpp"
 #include "framework/random.hpp"
@@ -71,6 +76,7 @@ enum class Extremes { by_reference, kept };
 /// Buffers Reduce reuses from step to step; after it, what it saw (for tests and observers).
 struct Scratch {
     pareto::SortScratch sort;
+    pareto::ConstrainedSortScratch ranking;
     std::vector<std::size_t> rank;
     std::vector<std::size_t> worst;    // R_v's columns, increasing
     std::vector<double> contribution;  // Delta_S of worst[k]; empty when none was computed
@@ -144,13 +150,17 @@ inline void contributions_any(const MatrixView& f, Scratch& s) {
 }  // namespace detail
 
 /// Algorithm 2 (Reduce) on the columns of f (M rows, no NaN: the run state has made failed points
-/// +inf): returns the column to remove. Fills s.worst, s.reference and s.contribution.
-inline std::size_t reduce(const MatrixView& f, double reference_offset, Extremes extremes, Scratch& s) {
+/// +inf): returns the column to remove. Fills s.worst, s.reference and s.contribution. With
+/// constraints (`violation`: one per column; empty without), the fronts are constrained
+/// domination's (framework/pareto/constrained_sorting.hpp) and a worst front of infeasible points
+/// (one violation) loses its lowest column: hypervolume measures objectives, not violations.
+inline std::size_t reduce(const MatrixView& f, std::span<const double> violation, double reference_offset,
+                          Extremes extremes, Scratch& s) {
     const auto n = static_cast<std::size_t>(f.cols());
     const auto m = static_cast<std::size_t>(f.rows());
     if (n == 0) throw InputError("sms::reduce", "there is no point to remove");  // no message built per step
     s.rank.resize(n);
-    const std::size_t fronts = pareto::nondominated_sort(f, std::span<std::size_t>(s.rank), s.sort);
+    const std::size_t fronts = pareto::constrained_sort(f, violation, std::span<std::size_t>(s.rank), s.ranking);
     s.worst.clear();
     for (std::size_t i = 0; i < n; ++i)
         if (s.rank[i] + 1 == fronts) s.worst.push_back(i);
@@ -158,7 +168,8 @@ inline std::size_t reduce(const MatrixView& f, double reference_offset, Extremes
     s.reference.clear();
     const auto first = static_cast<Eigen::Index>(s.worst.front());
     // One member: removed. Failed points (+inf, equal to each other only): the lowest column.
-    if (s.worst.size() == 1 || !f.col(first).allFinite()) return s.worst.front();
+    if (s.worst.size() == 1 || !f.col(first).allFinite() || (!violation.empty() && violation[s.worst.front()] != 0.0))
+        return s.worst.front();
     for (std::size_t i = 0; i < m; ++i) {
         double worst = -std::numeric_limits<double>::infinity();
         for (const std::size_t j : s.worst)
@@ -217,12 +228,21 @@ struct SmsEmoa {
         const auto cols = static_cast<Eigen::Index>(n);
         const auto lo = problem.lower(), hi = problem.upper();
 
-        // The population in x; f has its values and, in column mu, the child's (P_t u {q}).
+        // The population in x; f has its values and, in column mu, the child's (P_t u {q}); v their
+        // violations (constraints only; empty otherwise).
         Matrix x(rows, cols), f(mrows, cols + 1), values(mrows, cols);
         Matrix child(rows, 1), mate(rows, 1), fchild(mrows, 1);
+        constexpr bool constrained = ConstrainedMultiObjectiveProblem<P>;
+        std::vector<double> v(constrained ? n + 1 : 0);
+        const auto evaluate = [&](MatrixView points, Matrix& out, std::span<double> violation) {
+            if constexpr (constrained)
+                state.evaluate_columns(problem, points, out, violation);
+            else
+                state.evaluate_columns(problem, points, out);
+        };
         for (Eigen::Index j = 0; j < cols; ++j)
             for (std::size_t i = 0; i < dim; ++i) x(static_cast<Eigen::Index>(i), j) = rng.uniform(lo[i], hi[i]);
-        state.evaluate_columns(problem, x, values);
+        evaluate(x, values, constrained ? std::span<double>(v).first(n) : std::span<double>());
         f.leftCols(cols) = values;
         state.end_iteration(observer, x, values);
 
@@ -240,24 +260,26 @@ struct SmsEmoa {
                 cross(column(child, 0), column(mate, 0), lo, hi, rng);
                 mutate(column(child, 0), lo, hi, rng);
                 // (2)
-                state.evaluate_columns(problem, child, fchild);
+                evaluate(child, fchild, constrained ? std::span<double>(v).subspan(n) : std::span<double>());
                 f.col(cols) = fchild.col(0);
                 // (3): the child takes the place of the member removed, unless it is removed itself.
-                const auto out = static_cast<Eigen::Index>(sms::reduce(f, reference_offset, extremes, scratch));
+                const auto out = static_cast<Eigen::Index>(sms::reduce(f, v, reference_offset, extremes, scratch));
                 if (out != cols) {
                     x.col(out) = child.col(0);
                     f.col(out) = f.col(cols);
+                    if constexpr (constrained) v[static_cast<std::size_t>(out)] = v[n];
                 }
             }
             values = f.leftCols(cols);
             state.end_iteration(observer, x, values);
         }
         scratch.rank.resize(n);
-        pareto::nondominated_sort(values, std::span<std::size_t>(scratch.rank), scratch.sort);
+        const auto population_v = constrained ? std::span<const double>(v).first(n) : std::span<const double>();
+        pareto::constrained_sort(values, population_v, std::span<std::size_t>(scratch.rank), scratch.ranking);
         std::vector<std::size_t> front;
         for (std::size_t k = 0; k < n; ++k)
             if (scratch.rank[k] == 0) front.push_back(k);
-        return state.finish(x, values, front);
+        return state.finish(x, values, front, population_v);
     }
 };
 

@@ -19,6 +19,7 @@
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/multiobjective/catalog.hpp"
+#include "problems/multiobjective/constrained.hpp"
 
 namespace pride::cli {
 
@@ -241,6 +242,8 @@ int list_command(ListFormat format, std::ostream& out) {
     Section several{"multiobjective_problems", {}};
     for (const auto& e : multiobjective::kCatalog)
         several.items.push_back({std::string(e.name), std::string(e.summary) + " (pride front)"});
+    for (const auto& e : multiobjective::kConstrainedCatalog)
+        several.items.push_back({std::string(e.name), std::string(e.summary) + " (pride front; constrained)"});
     sections.push_back(several);
     sections.push_back({"encodings", {{"identity", "the genotype is the solution (every continuous problem)"}}});
     for (const auto& e : engine::grid_encodings()) sections.back().items.push_back(e);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <ostream>
 #include <utility>
@@ -31,8 +32,8 @@ engine::ProblemSpec problem_spec(const FrontOptions& o) {
                     " is not a grid: --start, --goal, --encoding, --init, --connector, --waypoints, --unknown-free, "
                     "--inflate, --corner-cutting, --svg and --png are for --map");
         require(engine::is_multiobjective_problem(o.problem), "problem",
-                "unknown multi-objective problem '" + o.problem +
-                    "' (zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7; single-objective problems run with pride run)");
+                "unknown multi-objective problem '" + o.problem + "' (" + engine::multiobjective_problem_names() +
+                    "; single-objective problems run with pride run)");
         engine::ContinuousSpec s{o.problem, o.dim.value_or(0), std::nullopt, 0};
         if (!o.objectives.empty()) {
             std::int64_t m = 0;
@@ -73,7 +74,7 @@ int front_command(const FrontOptions& o, std::ostream& out) {
     const engine::RunResult r = engine::run(algorithm, problem, o.budget, o.seed);
     const engine::Front& front = *r.front;
     std::optional<engine::FrontQuality> q;
-    if (!o.no_reference) q = engine::quality(problem, front.f);
+    if (!o.no_reference) q = engine::quality(problem, front.f, front.violation);
 
     const auto names = problem.objective_names();
     const bool grid = problem.is_grid();
@@ -133,14 +134,23 @@ int front_command(const FrontOptions& o, std::ostream& out) {
                 q->exact_found ? fmt::format(", \"exact_found\": {}", *q->exact_found) : "");
         text = fmt::format(
             "{{\"algo\": {}, \"problem\": {}, \"dim\": {}, \"objectives\": [{}], \"seed\": {}, \"evaluations\": {}, "
-            "\"iterations\": {}, \"wall_ms\": {}, \"front\": {}, \"quality\": {}}}\n",
+            "\"iterations\": {}, \"wall_ms\": {}, \"front\": {}, \"quality\": {}{}}}\n",
             json_string(r.algorithm), json_string(problem.name()), problem.dimension(), list, o.seed, r.evaluations,
-            r.iterations, json_number(r.wall_ms), engine::front_json(front), quality);
+            r.iterations, json_number(r.wall_ms), engine::front_json(front), quality,
+            front.violation.empty() ? ""
+                                    : fmt::format(", \"first_feasible\": {}",
+                                                  r.first_feasible ? std::to_string(*r.first_feasible) : "null"));
     } else {
         text = fmt::format(
             "algo         {}\nproblem      {}\nseed         {}\nevaluations  {}\niterations   {}\nwall_ms      {:.3f}\n"
             "points       {} non-dominated\n",
             r.algorithm, where, o.seed, r.evaluations, r.iterations, r.wall_ms, front.f.cols());
+        if (!front.violation.empty()) {
+            const auto feasible = std::count(front.violation.begin(), front.violation.end(), 0.0);
+            text += fmt::format("feasible     {} of {} points{}\n", feasible, front.violation.size(),
+                                r.first_feasible ? fmt::format("; the first found at evaluation {}", *r.first_feasible)
+                                                 : "; none found");
+        }
         if (q) {
             text += fmt::format(
                 "hypervolume  {:.6g} of the reference front's {:.6g} (ratio {:.4f}; normalised, "
@@ -150,10 +160,12 @@ int front_command(const FrontOptions& o, std::ostream& out) {
                 text += fmt::format("exact front  {} of its {} points found\n", *q->exact_found, q->reference_size);
         }
         for (std::size_t i = 0; i < names.size(); ++i) text += (i == 0 ? "" : " ") + names[i];
-        text += grid ? " legal\n" : "\n";
+        text += grid ? " legal\n" : front.violation.empty() ? "\n" : " violation\n";
         for (Eigen::Index j = 0; j < front.f.cols(); ++j) {
             for (Eigen::Index i = 0; i < front.f.rows(); ++i)
                 text += fmt::format("{}{:.10g}", i == 0 ? "" : " ", front.f(i, j));
+            if (!grid && !front.violation.empty())
+                text += fmt::format(" {:.10g}", front.violation[static_cast<std::size_t>(j)]);
             text += grid ? (front.feasible[static_cast<std::size_t>(j)] ? " yes\n" : " no\n") : "\n";
         }
     }

@@ -25,7 +25,13 @@
 namespace pride::engine {
 
 bool is_multiobjective_problem(const std::string& name) {
-    return multiobjective::find_problem(name) != nullptr;
+    return multiobjective::find_problem(name) != nullptr || multiobjective::find_constrained_problem(name) != nullptr;
+}
+
+std::string multiobjective_problem_names() {
+    std::string names = multiobjective::problem_names();
+    for (const auto& e : multiobjective::kConstrainedCatalog) names += ", " + std::string(e.name);
+    return names;
 }
 
 namespace {
@@ -39,6 +45,14 @@ void prepare_benchmark(Prepared& out, const ContinuousSpec& s) {
     require(!s.instance, "instance", s.function + " has no instances");
     checked_count(s.dim, 0, static_cast<std::int64_t>(multiobjective::kMaxVariables), "dim");
     checked_count(s.objectives, 0, static_cast<std::int64_t>(multiobjective::kMaxObjectives), "objectives");
+    if (multiobjective::find_constrained_problem(s.function)) {
+        multiobjective::ConstrainedBenchmark b(s.function, static_cast<std::size_t>(s.dim),
+                                               static_cast<std::size_t>(s.objectives));
+        out.name = std::string(b.name());
+        for (std::size_t i = 1; i <= b.objectives(); ++i) out.objective_names.push_back(fmt::format("f{}", i));
+        out.searched.emplace(std::in_place_type<MoBoxTarget>, MoBoxTarget{std::move(b)});
+        return;
+    }
     multiobjective::Benchmark b(s.function, static_cast<std::size_t>(s.dim), static_cast<std::size_t>(s.objectives));
     out.name = std::string(b.name());
     for (std::size_t i = 1; i <= b.objectives(); ++i) out.objective_names.push_back(fmt::format("f{}", i));
@@ -152,8 +166,11 @@ const ReferenceFront& reference_front_of(const Prepared& p) {
     ReferenceFront& front = *p.front;
     std::call_once(front.once, [&] {
         try {
-            if (const auto* b = p.mo_box() ? std::get_if<multiobjective::Benchmark>(&p.mo_box()->problem) : nullptr)
+            const auto* box = p.mo_box();
+            if (const auto* b = box ? std::get_if<multiobjective::Benchmark>(&box->problem) : nullptr)
                 front.values = b->reference_front(Problem::reference_points);
+            else if (const auto* c = box ? std::get_if<multiobjective::ConstrainedBenchmark>(&box->problem) : nullptr)
+                front.values = c->reference_front(Problem::reference_points);
             else
                 exact_front(p, front);
         } catch (const InputError& e) {
@@ -253,6 +270,13 @@ RunResult listed_run(const AlgorithmEntry& entry, Result& r, std::vector<std::si
     front.f.resize(r.f.rows(), static_cast<Eigen::Index>(keep.size()));
     for (std::size_t k = 0; k < keep.size(); ++k)
         front.f.col(static_cast<Eigen::Index>(k)) = r.f.col(static_cast<Eigen::Index>(keep[k]));
+    if (!r.violation.empty()) {
+        for (const std::size_t k : keep) front.violation.push_back(r.violation[k]);
+        out.first_feasible = r.first_feasible;
+        // The set's least violation: 0 when it is feasible (constrained domination's first front
+        // is feasible whenever a feasible point survived).
+        out.best_violation = *std::min_element(front.violation.begin(), front.violation.end());
+    }
     return out;
 }
 
@@ -323,9 +347,12 @@ std::string front_json(const Front& r) {
     for (Eigen::Index j = 0; j < r.f.cols(); ++j) {
         points += points.empty() ? "" : ", ";
         const auto k = static_cast<std::size_t>(j);
-        points += grid ? fmt::format("{{\"f\": {}, \"legal\": {}, \"path\": {}}}", column(r.f, j),
-                                     r.feasible[k] ? "true" : "false", json_cells(r.paths[k]))
-                       : fmt::format("{{\"f\": {}, \"x\": {}}}", column(r.f, j), column(r.x, j));
+        points += grid
+                      ? fmt::format("{{\"f\": {}, \"legal\": {}, \"path\": {}}}", column(r.f, j),
+                                    r.feasible[k] ? "true" : "false", json_cells(r.paths[k]))
+                      : fmt::format(
+                            "{{\"f\": {}, \"x\": {}{}}}", column(r.f, j), column(r.x, j),
+                            r.violation.empty() ? "" : fmt::format(", \"violation\": {}", json_number(r.violation[k])));
     }
     return "[" + points + "]";
 }
@@ -342,8 +369,19 @@ void check_quality(const Problem& problem) {
                         m, points, m, most));
 }
 
-FrontQuality quality(const Problem& problem, const Matrix& f) {
+FrontQuality quality(const Problem& problem, const Matrix& all, std::span<const double> violation) {
     const Matrix& front = problem.reference_front();
+    Matrix feasible_only;
+    if (!violation.empty()) {
+        require(violation.size() == static_cast<std::size_t>(all.cols()), "front",
+                fmt::format("{} violations for {} points", violation.size(), all.cols()));
+        feasible_only.resize(all.rows(),
+                             static_cast<Eigen::Index>(std::count(violation.begin(), violation.end(), 0.0)));
+        Eigen::Index k = 0;
+        for (Eigen::Index j = 0; j < all.cols(); ++j)
+            if (violation[static_cast<std::size_t>(j)] == 0.0) feasible_only.col(k++) = all.col(j);
+    }
+    const Matrix& f = violation.empty() ? all : feasible_only;
     require(front.cols() > 0, "problem", "the reference front is empty (the goal cannot be reached)");
     require(f.rows() == front.rows(), "front",
             fmt::format("the set has {} objectives, the problem {}", f.rows(), front.rows()));

@@ -15,6 +15,7 @@
 // from the reference front to the set.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -44,7 +45,12 @@ struct FrontQuality {
 };
 
 /// InputError("problem", ...) for a problem without a reference front (a callback, one objective).
-FrontQuality quality(const Problem& problem, const Matrix& f);
+/// With constraints (`violation`: one per column of f), only the feasible points count: a set
+/// with none has hypervolume 0 and an infinite IGD+.
+FrontQuality quality(const Problem& problem, const Matrix& f, std::span<const double> violation = {});
+
+/// The multi-objective catalogs' names, comma-separated (for messages).
+std::string multiobjective_problem_names();
 
 /// Before any run that will be measured: InputError("objectives", ...) when a catalog problem's
 /// reference front is beyond an exact hypervolume's bound in its number of objectives

@@ -26,6 +26,7 @@ struct Front {
     Matrix x;                       // their points (grids: genotypes; none on chains)
     std::vector<grid::Path> paths;  // grids: the path of each point
     std::vector<char> feasible;     // grids: whether it is a legal path (no violation)
+    std::vector<double> violation;  // problems with constraints: each point's violation (0: feasible)
 };
 
 struct RunResult {

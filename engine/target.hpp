@@ -26,6 +26,7 @@
 #include "problems/grid/multiobjective.hpp"
 #include "problems/grid/objectives.hpp"
 #include "problems/multiobjective/catalog.hpp"
+#include "problems/multiobjective/constrained.hpp"
 
 namespace pride::engine {
 
@@ -94,7 +95,8 @@ struct GridTarget {
 
 using MoGridLine = grid::MultiObjectivePaths<grid::LineEncoding<grid::SelectableConnector>>;
 using MoGridFree = grid::MultiObjectivePaths<grid::FreeEncoding<grid::SelectableConnector>>;
-using MoVariant = std::variant<multiobjective::Benchmark, MoGridLine, MoGridFree, MoCallbackProblem>;
+using MoVariant = std::variant<multiobjective::Benchmark, MoGridLine, MoGridFree, MoCallbackProblem,
+                               multiobjective::ConstrainedBenchmark>;
 
 /// A problem of several objectives searched as a box: its result is the non-dominated set.
 struct MoBoxTarget {
@@ -109,9 +111,8 @@ struct MoChainTarget {
 };
 
 /// A box with constraints, for the algorithms that handle them (Kind::constrained_box).
-using ConstrainedVariant =
-    std::variant<continuous::cec2006::Problem, continuous::cec2020rw::Problem, ConstrainedCallbackProblem,
-                 continuous::bbob_constrained::Problem>;
+using ConstrainedVariant = std::variant<continuous::cec2006::Problem, continuous::cec2020rw::Problem,
+                                        ConstrainedCallbackProblem, continuous::bbob_constrained::Problem>;
 struct ConstrainedBoxTarget {
     ConstrainedVariant problem;
 };

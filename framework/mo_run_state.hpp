@@ -6,8 +6,11 @@
 // A run's result is the non-dominated set of its final population, points (or chains) and values.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -32,6 +35,10 @@ struct BasicMultiObjectiveResult {
     /// population).
     std::vector<std::int64_t> history_evaluations;
     double wall_ms = 0.0;
+    // Problems with constraints: each member's violation (0: feasible; empty without constraints),
+    // and the evaluation that first found a feasible point (empty: none, or no constraints).
+    std::vector<double> violation;
+    std::optional<std::int64_t> first_feasible;
 };
 using MultiObjectiveResult = BasicMultiObjectiveResult<Matrix>;
 
@@ -82,6 +89,30 @@ class MultiObjectiveRunState {
         return n;
     }
 
+    /// A problem with constraints: as above, and each evaluated column's violation into the same
+    /// entry of `violations` (the problem's measure; NaN counts as +inf), +inf past the budget. A
+    /// column with a non-finite objective keeps its violation: feasibility is the constraints'.
+    template <ConstrainedMultiObjectiveProblem P>
+    Eigen::Index evaluate_columns(P& problem, MatrixView points, Matrix& values, std::span<double> violations) {
+        const Eigen::Index n = std::min<Eigen::Index>(points.cols(), static_cast<Eigen::Index>(remaining()));
+        const auto m = static_cast<std::size_t>(objectives_);
+        constraint_values_.resize(problem.constraint_counts().total());  // sized once
+        for (Eigen::Index j = 0; j < n; ++j) {
+            problem.evaluate_constrained(
+                std::span<const double>(points.col(j).data(), static_cast<std::size_t>(points.rows())),
+                std::span<double>(values.col(j).data(), m), std::span<double>(constraint_values_));
+            const double v = problem.violation(std::span<const double>(constraint_values_));
+            violations[static_cast<std::size_t>(j)] = std::isnan(v) ? kInf : v;
+            if (v == 0.0 && !first_feasible_) first_feasible_ = progress_.evaluations + j + 1;
+        }
+        for (Eigen::Index j = 0; j < values.cols(); ++j) {
+            if (j >= n) violations[static_cast<std::size_t>(j)] = kInf;
+            if (j >= n || !values.col(j).allFinite()) values.col(j).setConstant(kInf);
+        }
+        progress_.evaluations += n;
+        return n;
+    }
+
     /// The chains' version: the first min(chains.size(), remaining()) chains into the same columns
     /// of `values`, the rest +inf.
     template <MultiObjectiveChainProblem P>
@@ -117,8 +148,12 @@ class MultiObjectiveRunState {
     /// of a Matrix or elements of a vector of chains.
     template <class Population>
     BasicMultiObjectiveResult<Population> finish(const Population& population, const Matrix& values,
-                                                 std::span<const std::size_t> front) {
+                                                 std::span<const std::size_t> front,
+                                                 std::span<const double> violations = {}) {
         BasicMultiObjectiveResult<Population> r;
+        if (!violations.empty())
+            for (const std::size_t k : front) r.violation.push_back(violations[k]);
+        r.first_feasible = first_feasible_;
         r.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - progress_.start).count();
         r.f.resize(values.rows(), static_cast<Eigen::Index>(front.size()));
         if constexpr (std::is_same_v<Population, Matrix>)
@@ -143,6 +178,8 @@ class MultiObjectiveRunState {
     Progress progress_;
     std::vector<std::int64_t> history_evaluations_;
     Matrix batch_;
+    std::vector<double> constraint_values_;
+    std::optional<std::int64_t> first_feasible_;
     bool started_ = false;
 };
 

@@ -35,7 +35,7 @@ TEST_CASE("nsga2 survival keeps whole fronts, then the most crowded-apart of the
     pride::nsga::Standing standing;
     std::vector<std::size_t> chosen;
     pride::Rng rng(1);
-    survival(f, 4, chosen, standing, scratch, rng);
+    survival(f, {}, 4, chosen, standing, scratch, rng);
     CHECK(chosen == std::vector<std::size_t>{0, 1, 2, 3});
     CHECK(standing.rank == std::vector<std::size_t>{0, 0, 0, 1});
     // Front 0's crowding: its two ends +inf; the middle (1, 1): (2 - 0) / (2 - 0) + (2 - 0) / (2 - 0) = 2.
@@ -44,7 +44,7 @@ TEST_CASE("nsga2 survival keeps whole fronts, then the most crowded-apart of the
     CHECK(std::isinf(standing.crowding[2]));
 
     // Keeping 2 of front 0: the two ends (+inf) before the middle (2).
-    survival(f, 2, chosen, standing, scratch, rng);
+    survival(f, {}, 2, chosen, standing, scratch, rng);
     CHECK(chosen == std::vector<std::size_t>{0, 2});
 }
 

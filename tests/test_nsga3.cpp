@@ -45,7 +45,7 @@ TEST_CASE("nsga3 survival fills the last front by niches of the reference direct
         pride::nsga::Standing standing;
         std::vector<std::size_t> chosen;
         pride::Rng rng(seed);
-        survival(f, 3, chosen, standing, scratch, rng);
+        survival(f, {}, 3, chosen, standing, scratch, rng);
         REQUIRE(chosen.size() == 3);
         CHECK(chosen[0] == 0);
         CHECK(std::set<std::size_t>(chosen.begin(), chosen.end()) == std::set<std::size_t>{0, 1, 2});

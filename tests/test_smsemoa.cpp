@@ -55,7 +55,7 @@ TEST_CASE("smsemoa reduce removes the least hypervolume contributor of the worst
     f << 4.0, 0.0, 1.0, 1.0, 2.0,  //
         1.5, 3.0, 4.0, 1.0, 2.0;
     pride::sms::Scratch s;
-    CHECK(pride::sms::reduce(f, 1.0, pride::sms::Extremes::by_reference, s) == 0);
+    CHECK(pride::sms::reduce(f, {}, 1.0, pride::sms::Extremes::by_reference, s) == 0);
     CHECK(s.worst == std::vector<std::size_t>{0, 2, 4});
     CHECK(s.reference == std::vector<double>{5.0, 5.0});
     CHECK(s.contribution == std::vector<double>{0.5, 1.0, 4.0});
@@ -64,19 +64,19 @@ TEST_CASE("smsemoa reduce removes the least hypervolume contributor of the worst
     CHECK(pride::pareto::contributions(worst, s.reference) == s.contribution);
 
     // Extremes::kept: the two ends are infinite, so the middle point goes.
-    CHECK(pride::sms::reduce(f, 1.0, pride::sms::Extremes::kept, s) == 4);
+    CHECK(pride::sms::reduce(f, {}, 1.0, pride::sms::Extremes::kept, s) == 4);
     CHECK(s.contribution == std::vector<double>{inf, inf, 4.0});
 
     // A larger offset moves r to (6.5, 6.5): (1, 4) covers (2 - 1)(6.5 - 4) = 2.5, (4, 1.5)
     // (6.5 - 4)(2 - 1.5) = 1.25, still the least.
-    CHECK(pride::sms::reduce(f, 2.5, pride::sms::Extremes::by_reference, s) == 0);
+    CHECK(pride::sms::reduce(f, {}, 2.5, pride::sms::Extremes::by_reference, s) == 0);
     CHECK(s.contribution == std::vector<double>{1.25, 2.5, 4.0});
 }
 
 TEST_CASE("smsemoa reduce breaks ties to the lowest column and removes lone and failed points") {
     pride::sms::Scratch s;
     const auto reduce = [&s](const pride::Matrix& f) {
-        return pride::sms::reduce(f, 1.0, pride::sms::Extremes::by_reference, s);
+        return pride::sms::reduce(f, {}, 1.0, pride::sms::Extremes::by_reference, s);
     };
     // (4, 1) and (1, 4) both contribute 1 (r = (5, 5), (2, 2) contributes 4): column 0 goes,
     // though (1, 4) comes first along the front.
@@ -138,7 +138,7 @@ TEST_CASE("smsemoa reduce measures the worst front exactly in three objectives")
         2.0, 0.0, 1.0, 0.0,   //
         0.0, 0.0, 1.0, 1.0;
     pride::sms::Scratch s;
-    CHECK(pride::sms::reduce(f, 1.0, pride::sms::Extremes::by_reference, s) == 0);
+    CHECK(pride::sms::reduce(f, {}, 1.0, pride::sms::Extremes::by_reference, s) == 0);
     CHECK(s.worst == std::vector<std::size_t>{0, 2, 3});
     CHECK(s.reference == std::vector<double>{3.0, 3.0, 2.0});
     CHECK(s.contribution == std::vector<double>{1.0, 2.0, 2.0});
@@ -162,7 +162,7 @@ TEST_CASE("smsemoa reduce gives pareto::contributions' values bit for bit") {
                 f.col(j) /= f.col(j).sum();
             }
             f.col(n - 1) = f.col(0);  // a repeated point too
-            const std::size_t out = pride::sms::reduce(f, 1.0, pride::sms::Extremes::by_reference, s);
+            const std::size_t out = pride::sms::reduce(f, {}, 1.0, pride::sms::Extremes::by_reference, s);
             REQUIRE(s.worst.size() == static_cast<std::size_t>(n));
             const std::vector<double> expected = pride::pareto::contributions(f, s.reference);
             CHECK(s.contribution == expected);

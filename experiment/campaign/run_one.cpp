@@ -58,7 +58,7 @@ RunRecord run_multiobjective(const CampaignProblem& p, const CampaignAlgorithm& 
     const Problem& problem = *p.problem;
     const RunResult result = run(a.spec, problem, problem_budget(budget, p), static_cast<std::uint64_t>(seed));
     const Front& front = *result.front;
-    const FrontQuality q = quality(problem, front.f);
+    const FrontQuality q = quality(problem, front.f, front.violation);
     const bool grid = problem.is_grid();
     std::string names;
     for (const auto& n : problem.objective_names()) names += (names.empty() ? "" : ", ") + json_string(n);

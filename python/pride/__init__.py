@@ -193,8 +193,11 @@ def front(algo, problem, *, dim=None, objectives=None, bounds=None, evals=None, 
     result's ``f`` is the non-dominated set found, an (n, M) array (distinct points, in
     lexicographic order), ``x`` their points (n, dim); ``quality`` (catalog problems, unless
     ``reference=False``) has the hypervolume, its ratio to the reference front's and IGD+, on
-    objectives normalised by the reference front (docs/multiobjective.md). The same bits as
-    ``pride front`` with the same seed."""
+    objectives normalised by the reference front (docs/multiobjective.md). The constrained
+    problems ``constr``, ``srn``, ``tnk``, ``c1-dtlz1`` and ``c2-dtlz2`` run by constrained
+    domination (docs/constraints.md); their result also has ``violation``, one per point (0:
+    feasible), and ``first_feasible``, and ``quality`` counts feasible points only. The same bits
+    as ``pride front`` with the same seed."""
     return Result(_pride.front(_str("algo", algo), problem, _int("dim", dim), _int("objectives", objectives), bounds,
                                _int("evals", evals), _int("iters", iters), _real("wall_ms", wall_ms), _seed(seed),
                                _bool("vectorized", vectorized), _bool("reference", reference), params))

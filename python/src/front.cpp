@@ -41,6 +41,13 @@ py::dict front_dict(const engine::RunResult& r, const std::vector<std::string>& 
         std::memcpy(he.mutable_data(), r.history_evaluations.data(),
                     sizeof(std::int64_t) * r.history_evaluations.size());
     d["history_evaluations"] = he;
+    // Problems with constraints: each point's violation and the first feasible evaluation.
+    if (!r.front->violation.empty()) {
+        py::array_t<double> v(static_cast<py::ssize_t>(r.front->violation.size()));
+        std::memcpy(v.mutable_data(), r.front->violation.data(), sizeof(double) * r.front->violation.size());
+        d["violation"] = v;
+        d["first_feasible"] = r.first_feasible ? py::object(py::int_(*r.first_feasible)) : py::object(py::none());
+    }
     return d;
 }
 
@@ -102,7 +109,7 @@ py::dict finish(const engine::RunResult& r, const engine::Problem& problem, bool
         std::optional<engine::FrontQuality> q;
         {
             py::gil_scoped_release release;  // a grid's exact front can take a while
-            q = engine::quality(problem, r.front->f);
+            q = engine::quality(problem, r.front->f, r.front->violation);
         }
         d["quality"] = quality_dict(*q);
     } else {

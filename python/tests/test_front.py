@@ -49,6 +49,21 @@ def test_every_algorithm_reaches_its_front():
     assert pride.front("nsga2", "zdt1", evals=500, reference=False).quality is None
 
 
+def test_a_constrained_problem_reports_violations_and_is_the_command_lines():
+    r = pride.front("nsga2", "constr", evals=4000, seed=2)
+    assert r.violation.shape == (r.f.shape[0],) and np.all(r.violation == 0.0)
+    assert 1 <= r.first_feasible <= 100
+    assert r.quality["hypervolume_ratio"] > 0.95
+    assert not hasattr(pride.front("nsga2", "zdt1", evals=500), "violation")
+    if PRIDE:
+        out = subprocess.run([PRIDE, "front", "--algo", "nsga2", "--problem", "constr", "--evals", "4000",
+                              "--seed", "2", "--json"], check=True, capture_output=True, text=True).stdout
+        doc = json.loads(out)
+        assert np.array_equal(np.array([p["f"] for p in doc["front"]]), r.f)
+        assert [p["violation"] for p in doc["front"]] == list(r.violation)
+        assert doc["first_feasible"] == r.first_feasible
+
+
 def test_scalar_vectorized_and_ask_tell_are_one_run():
     a = pride.front("nsga2", schaffer, bounds=([-10], [10]), objectives=2, evals=2000, seed=3)
     b = pride.front("nsga2", schaffer_rows, bounds=([-10], [10]), objectives=2, evals=2000, seed=3, vectorized=True)

@@ -41,6 +41,7 @@
 
 #include "algorithms/nsga2.hpp"
 #include "framework/error.hpp"
+#include "framework/pareto/constrained_sorting.hpp"
 #include "framework/pareto/sorting.hpp"
 #include "framework/problem.hpp"
 #include "framework/random.hpp"
@@ -65,12 +66,12 @@ struct ReferenceDirectionSurvival {
                     "reference direction " + std::to_string(j + 1) + " is 0");
     }
 
-    void operator()(const Matrix& f, std::size_t keep, std::vector<std::size_t>& chosen, Standing& out,
-                    SurvivalScratch& s, Rng& rng) const {
+    void operator()(const Matrix& f, std::span<const double> v, std::size_t keep, std::vector<std::size_t>& chosen,
+                    Standing& out, SurvivalScratch& s, Rng& rng) const {
         const auto n = static_cast<std::size_t>(f.cols());
         const auto m = f.rows();
         s.rank.resize(n);
-        const std::size_t fronts = pareto::nondominated_sort(f, std::span<std::size_t>(s.rank), s.sort);
+        const std::size_t fronts = pareto::constrained_sort(f, v, std::span<std::size_t>(s.rank), s.ranking);
         chosen.clear();
         out.rank.clear();
         out.crowding.clear();
@@ -86,7 +87,8 @@ struct ReferenceDirectionSurvival {
         for (std::size_t i = 0; i < n; ++i)
             if (s.rank[i] == last) tail.push_back(i);
         const std::size_t missing = keep - chosen.size();
-        if (!f.col(static_cast<Eigen::Index>(tail.front())).allFinite()) {
+        // Infeasible (one violation: constrained_sort's fronts) or failed: cut by index.
+        if ((!v.empty() && v[tail.front()] != 0.0) || !f.col(static_cast<Eigen::Index>(tail.front())).allFinite()) {
             chosen.insert(chosen.end(), tail.begin(), tail.begin() + static_cast<std::ptrdiff_t>(missing));
             return finish(chosen, out, s);
         }
