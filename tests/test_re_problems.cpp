@@ -35,6 +35,7 @@ using pride::test::input_error_message;
 
 static_assert(pride::ConstrainedMultiObjectiveProblem<re::Problem>);
 static_assert(pride::Reseedable<re::Problem>);
+static_assert(pride::BatchMultiObjectiveProblem<re::Problem>);
 static_assert(std::is_nothrow_copy_constructible_v<re::Problem>);
 
 struct Row {
@@ -134,6 +135,28 @@ TEST_CASE("re problems: every problem gives the official code's values, bit for 
         if (row.m_con > 0) (row.violation == 0.0 ? feasible : infeasible) += 1;
     CHECK(feasible > 0);
     CHECK(infeasible > 0);
+}
+
+TEST_CASE("re problems: a batch gives each point's values", "[re]") {
+    const auto& ref = reference();
+    for (const std::string name : {"re42", "cre24", "re91"}) {
+        INFO(name);
+        std::vector<const Row*> rows;
+        for (const auto& row : ref.rows)
+            if (row.name == name) rows.push_back(&row);
+        REQUIRE(rows.size() == 20);
+        re::Problem p(name), q(name);
+        Matrix points(static_cast<Eigen::Index>(p.dimension()), 20),
+            values(static_cast<Eigen::Index>(p.objectives()), 20);
+        for (Eigen::Index j = 0; j < 20; ++j)
+            for (std::size_t i = 0; i < p.dimension(); ++i) points(static_cast<Eigen::Index>(i), j) = rows[j]->x[i];
+        p.evaluate_batch(points, values);
+        std::vector<double> f(p.objectives());
+        for (Eigen::Index j = 0; j < 20; ++j) {
+            q.evaluate(rows[j]->x, f);  // RE91: q draws as p did, one point after the other
+            for (std::size_t i = 0; i < f.size(); ++i) CHECK(same_bits(values(static_cast<Eigen::Index>(i), j), f[i]));
+        }
+    }
 }
 
 TEST_CASE("re problems: the boxes are the code's", "[re]") {

@@ -51,6 +51,7 @@
 
 #include "framework/constraints.hpp"
 #include "framework/error.hpp"
+#include "framework/problem.hpp"
 #include "framework/random.hpp"
 #include "problems/multiobjective/re/formulas.hpp"
 
@@ -195,6 +196,12 @@ class Problem {
             return;
         }
         compute(x.data(), f.data(), c.data());
+    }
+    /// Every column of `points` into the same column of `values` (objectives() rows), in column order
+    /// (RE91's draws as many evaluate() calls would make them).
+    void evaluate_batch(MatrixView points, Matrix& values) {
+        double c[kMostConstraints];
+        for (Eigen::Index j = 0; j < points.cols(); ++j) compute(points.col(j).data(), values.col(j).data(), c);
     }
     /// The suite's violation of the values evaluate_constrained() wrote: sum_i max(0, c_i), in order
     /// (a NaN c_i: +inf). 0 for an RE problem.
