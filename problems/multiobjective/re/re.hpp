@@ -21,8 +21,8 @@
 // folded values, always 0). None has an equality constraint. A NaN c_i counts as an infinite
 // violation (framework/constraints.hpp); the code's fold counts it as satisfied (NaN < 0 is
 // false), and so does the RE objective here, which is the code's value. No value is NaN at 200000
-// uniform points of each box; some are at the box's edges (RE22 at x2 = x3 = 0, RE33/CRE23 where
-// x1 = x2).
+// uniform points of each box; some are NaN on thin sets: RE22's corner x2 = x3 = 0, and RE33's
+// and CRE23's x1 = x2 (a 0 / 0).
 //
 // The code's quirks, kept:
 // - Discrete variables are made so inside the function, the point itself unchanged: RE22's x1
@@ -30,14 +30,14 @@
 //   of equally near values), RE23's x1 and x2 are 0.0625 round(x), RE25's x1 round(x1) and x3 the
 //   nearest of its 42 diameters, RE35's and CRE24's x3 round(x3), RE36's and CRE25's four variables
 //   round(x). round() is C's, halves away from 0 (the Python version's np.round halves to even).
-// - RE21's f1 has sqrt(x3) (the code and the paper), not sqrt(2) x3.
+// - RE21's f1 has sqrt(x3), not sqrt(2) x3 (the code's).
 // - RE31's and CRE21's first two constraints are of f1 and f2 (0.1 - f1, 100000 - f2).
 // - RE42's and CRE32's third objective is minus the annual cargo (maximised).
 // - RE91 is stochastic: each evaluation draws x8 ~ N(0.345, 0.006^2), x9 ~ N(0.192, 0.006^2),
 //   x10, x11 ~ N(0, 10^2). Here they come from the problem's own Rng (framework/random.hpp), seed 0
 //   until reseed(seed) (an algorithm calls it once, framework/problem.hpp's Reseedable): a copy
 //   continues the same stream, so a run is reproducible from its seed. The code draws them from C's
-//   rand() (Box-Muller) or numpy's global generator; the formula of the draws is formulas::re91.
+//   rand() (Box-Muller) or numpy's global generator; formulas::re91 is the formula given the draws.
 //   RE91's f1 has 1.75 x5 where RE41's has 1.78 (the code's).
 // - RE36 and CRE25 (gear train): f2 is the largest number of teeth.
 // Values equal the code's to the last bit on x86-64 with GCC and glibc (tests/test_re_problems.cpp).
