@@ -168,7 +168,8 @@ std::string render_table(const ReportData& report, bool md) {
         if (md)
             text += "\n" + feasibility_heading() + "\n\n";
         else
-            text += "\n% " + feasibility_heading() + "\n\\begin{tabular}{llrrrr}\n\\hline\n";
+            text +=
+                "\n% " + deb_order_text() + "\n% " + feasibility_heading() + "\n\\begin{tabular}{llrrrr}\n\\hline\n";
         text += line({"problem", "algorithm", "runs", "feasible", "median first feasible", "median violation"});
         if (md) text += "|---|---|---:|---:|---:|---:|\n";
         if (!md) text += "\\hline\n";
