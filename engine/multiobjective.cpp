@@ -395,8 +395,10 @@ std::string front_json(const Front& r) {
 void check_quality(const Problem& problem) {
     if (problem.objectives() < 2 || !std::holds_alternative<ContinuousSpec>(problem.spec())) return;
     const std::size_t m = problem.objectives(), most = pareto::exact_hypervolume_points(m);
-    if (m <= 3) return;
+    // Built here, once for every run of the problem: a front that cannot be had (data not given,
+    // none published) is refused before anything runs.
     const auto points = static_cast<std::size_t>(problem.reference_front().cols());
+    if (m <= 3) return;
     require(points <= most, "objectives",
             fmt::format("{} objectives: the hypervolume of the reference front ({} points) is beyond what is computed "
                         "exactly in {} objectives ({} points at most); give fewer objectives, or run without the "

@@ -141,3 +141,28 @@ TEST_CASE("multi-objective campaign entries are refused at their line when they 
                           "\"turns\"]\nobjective = \"length\"\n"),
             {"objective"});
 }
+
+TEST_CASE("a multi-objective campaign on a constrained problem stores each point's violation") {
+    const test::TempDir dir("pride-mo-campaign-constrained");
+    const std::string file =
+        dir.write("c.toml",
+                  "name = \"c\"\nseeds = 1\n[budget]\nevaluations = 1200\n[[problem]]\nid = \"constr\"\ntype = "
+                  "\"constr\"\n[[algorithm]]\nid = \"nsga2\"\ntype = \"nsga2\"\n");
+    const campaign::Campaign c = campaign::read_campaign(file);
+    const campaign::RunRecord r = campaign::run_one(c.problems[0], c.algorithms[0], c.budget, 1);
+    const auto direct = engine::run(c.algorithms[0].spec, *c.problems[0].problem, c.budget, 1);
+    const auto q = engine::quality(*c.problems[0].problem, direct.front->f, direct.front->violation);
+    CHECK(r.best == 1.0 - q.hypervolume_ratio);
+    CHECK(r.feasible);
+    const auto doc = test::parse_json(r.solution);
+    const auto& front = doc.at("front").items;
+    REQUIRE(front.size() == direct.front->violation.size());
+    for (std::size_t j = 0; j < front.size(); ++j) CHECK(front[j].at("violation").number == direct.front->violation[j]);
+    // A problem whose front is not published is refused before anything runs.
+    const std::string cre = dir.write("cre.toml",
+                                      "name = \"c\"\nseeds = 1\n[budget]\nevaluations = 1200\n[[problem]]\nid = "
+                                      "\"cre21\"\ntype = \"cre21\"\n[[algorithm]]\nid = \"nsga2\"\ntype = \"nsga2\"\n");
+    const std::string message = test::input_error_message([&] { (void)campaign::read_campaign(cre); });
+    CHECK_THAT(message, Catch::Matchers::Contains("cre.toml") &&
+                            Catch::Matchers::Contains("cre21 has no published reference front"));
+}

@@ -67,9 +67,10 @@ RunRecord run_multiobjective(const CampaignProblem& p, const CampaignAlgorithm& 
         names, json_number(q.hypervolume_ratio), json_number(q.igd_plus),
         q.exact_found ? std::to_string(*q.exact_found) : std::string("null"), front_json(front));
     r.best = 1.0 - q.hypervolume_ratio;
-    // Feasible: a point found (on grids, a legal path).
+    // Feasible: a point found (on grids, a legal path; with constraints, a feasible point).
     r.feasible = grid ? std::any_of(front.feasible.begin(), front.feasible.end(), [](char c) { return c != 0; })
-                      : front.f.cols() > 0;
+                 : !front.violation.empty() ? std::count(front.violation.begin(), front.violation.end(), 0.0) > 0
+                                            : front.f.cols() > 0;
     r.evaluations = result.evaluations;
     r.iterations = result.iterations;
     r.wall_ms = result.wall_ms;
