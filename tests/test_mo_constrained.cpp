@@ -234,7 +234,7 @@ TEST_CASE("the constrained problems: their values by hand, their fronts feasible
     }
 }
 
-TEST_CASE("nsga2 with constrained domination reaches CONSTR's front, feasible; without it, not") {
+TEST_CASE("nsga2 with constrained domination reaches CONSTR's front, feasible, and without it does not") {
     CountedConstrained p{multiobjective::ConstrainedBenchmark("constr")};
     Nsga2<> a;
     const MultiObjectiveResult r = a.run(p, test::evaluations(10'000), 3);
