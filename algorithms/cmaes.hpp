@@ -154,6 +154,8 @@ class Cmaes {
         std::vector<double> violations, values_g, penalties, fitness;
         cma::AugmentedLagrangian lagrange;
         [[maybe_unused]] std::size_t k = 0;
+        cma::Tolerances al_tolerances = tolerances;
+        al_tolerances.stagnation = false;
         if constexpr (constrained) k = problem.constraint_counts().total();
         // The first generation is iteration 0 (the initial population of other algorithms): it is
         // sampled and evaluated under any limit but the evaluations', so that an iteration limit
@@ -200,7 +202,7 @@ class Cmaes {
                             penalties[j] = lagrange.penalty(std::span<const double>(values_g).subspan(j * k, k));
                             fitness[j] = f[j] + penalties[j];
                         }
-                        stop = search.update(boundary, tolerances, PlainOrder{}, {}, penalties);
+                        stop = search.update(boundary, al_tolerances, PlainOrder{}, {}, penalties);
                         lagrange.end_generation(f, values_g, fitness);
                     } else {
                         stop = search.update(boundary, tolerances, order, violations);

@@ -290,7 +290,7 @@ class Search {
         }
         if (no_effect) return Stop::no_effect_axis;
         if (history_.tol_fun(t.fun)) return Stop::tol_fun;
-        if (history_.stagnation(scratch_)) return Stop::stagnation;
+        if (t.stagnation && history_.stagnation(scratch_)) return Stop::stagnation;
         return Stop::none;
     }
 
