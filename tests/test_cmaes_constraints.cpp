@@ -51,7 +51,8 @@ struct LinearSphere {
         for (const double v : x) s += v * v;
         return s;
     }
-    ConstraintCounts constraint_counts() const { return {1, 0}; }
+    bool equality = false;  // h(x) = x_1 + 1 = 0 instead: the same x* and lam*
+    ConstraintCounts constraint_counts() const { return equality ? ConstraintCounts{0, 1} : ConstraintCounts{1, 0}; }
     double evaluate_constrained(std::span<const double> x, std::span<double> c) {
         ++*calls;
         c[0] = x[0] + 1.0;
@@ -219,6 +220,17 @@ TEST_CASE("CMA-ES with the augmented Lagrangian converges linearly on the linear
     INFO(first_half << " " << second_half);
     CHECK(first_half > 2.5);
     CHECK(second_half > 2.5);
+
+    // The same constraint as an equality (pycma's equality handling: no floor on h, lam of any
+    // sign): the multiplier reaches lam* = 2 as well (1.9999994 here); feasible means |h| <= 1e-4.
+    LinearSphere plane;
+    plane.equality = true;
+    std::vector<cma::RunLog> plane_log;
+    const Result e = cma.run_logged(plane, t, 3, NoObserver{}, &plane_log);
+    REQUIRE(plane_log.size() == 1);
+    CHECK(e.best_violation == 0.0);
+    CHECK(std::abs(e.best_x[0] + 1.0) <= 1e-4);
+    CHECK(plane_log[0].multipliers[0] == Approx(2.0).epsilon(1e-5));
 }
 
 TEST_CASE("engine: CMA-ES's constraint parameters, refused without constraints, al for CMA-ES only",
