@@ -20,6 +20,7 @@
 #include "problems/continuous/catalog.hpp"
 #include "problems/multiobjective/catalog.hpp"
 #include "problems/multiobjective/constrained.hpp"
+#include "problems/multiobjective/re/re.hpp"
 
 namespace pride::cli {
 
@@ -244,6 +245,10 @@ int list_command(ListFormat format, std::ostream& out) {
         several.items.push_back({std::string(e.name), std::string(e.summary) + " (pride front)"});
     for (const auto& e : multiobjective::kConstrainedCatalog)
         several.items.push_back({std::string(e.name), std::string(e.summary) + " (pride front; constrained)"});
+    for (const auto& e : multiobjective::re::kCatalog)
+        several.items.push_back(
+            {std::string(e.name), fmt::format("Tanabe and Ishibuchi (2020), {}; n = {}, M = {} (pride front)",
+                                              e.summary, e.variables, e.objectives)});
     sections.push_back(several);
     sections.push_back({"encodings", {{"identity", "the genotype is the solution (every continuous problem)"}}});
     for (const auto& e : engine::grid_encodings()) sections.back().items.push_back(e);

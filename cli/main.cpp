@@ -218,7 +218,7 @@ int run_main(int argc, char** argv) {
     front_cmd->add_option("--algo", front.algo, mo_names)->required();
     front_cmd->add_option(
         "--problem", front.problem,
-        "zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7, or constrained: constr, srn, tnk, c1-dtlz1, c2-dtlz2 (or --map)");
+        "zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7, or constrained: constr, srn, tnk, c1-dtlz1, c2-dtlz2; real-world: re21-re91, cre21-cre51 (or --map)");
     front_cmd->add_option("--dim", front.dim, "number of variables n (default: the paper's)")
         ->check(integer_in(1, max_count));
     front_cmd->add_option("--map", front.map, "a grid: Moving AI .map or 0/1 matrix file")->check(a_path());

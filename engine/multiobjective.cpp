@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <mutex>
 
 #include "engine/grid_names.hpp"
@@ -21,20 +23,40 @@
 #include "framework/pareto/hypervolume.hpp"
 #include "framework/pareto/indicators.hpp"
 #include "problems/grid/pareto.hpp"
+#include "problems/multiobjective/re/fronts.hpp"
 
 namespace pride::engine {
 
 bool is_multiobjective_problem(const std::string& name) {
-    return multiobjective::find_problem(name) != nullptr || multiobjective::find_constrained_problem(name) != nullptr;
+    return multiobjective::find_problem(name) != nullptr || multiobjective::find_constrained_problem(name) != nullptr ||
+           multiobjective::re::find_problem(name) != nullptr;
 }
 
 std::string multiobjective_problem_names() {
     std::string names = multiobjective::problem_names();
     for (const auto& e : multiobjective::kConstrainedCatalog) names += ", " + std::string(e.name);
+    for (const auto& e : multiobjective::re::kCatalog) names += ", " + std::string(e.name);
     return names;
 }
 
 namespace {
+
+/// An RE problem's approximated front, Tanabe and Ishibuchi's, read from $PRIDE_DATA/re-fronts (the
+/// project does not ship others' data); the CRE problems have none published.
+Matrix re_front(const multiobjective::re::Problem& p) {
+    const std::string name(p.name());
+    require(p.constraint_counts().total() == 0, "problem",
+            name +
+                " has no published reference front (the suite publishes the RE problems' only); run it "
+                "without the reference front");
+    const char* data = std::getenv("PRIDE_DATA");
+    require(data != nullptr && *data != 0, "problem",
+            name +
+                "'s reference front is Tanabe and Ishibuchi's approximated front, which pride does not ship: set "
+                "PRIDE_DATA to a folder holding re-fronts/ (their reproblems repository's "
+                "approximated_Pareto_fronts), or run without the reference front");
+    return multiobjective::re::read_re_front(std::filesystem::path(data) / "re-fronts", name);
+}
 
 std::int64_t checked_count(std::int64_t v, std::int64_t lo, std::int64_t hi, const char* where) {
     require(v >= lo && v <= hi, where, fmt::format("must be an integer in [{}, {}], got {}", lo, hi, v));
@@ -45,6 +67,17 @@ void prepare_benchmark(Prepared& out, const ContinuousSpec& s) {
     require(!s.instance, "instance", s.function + " has no instances");
     checked_count(s.dim, 0, static_cast<std::int64_t>(multiobjective::kMaxVariables), "dim");
     checked_count(s.objectives, 0, static_cast<std::int64_t>(multiobjective::kMaxObjectives), "objectives");
+    if (const auto* e = multiobjective::re::find_problem(s.function)) {
+        require(s.dim == 0 || s.dim == static_cast<std::int64_t>(e->variables), "dim",
+                fmt::format("{} has {} variables, got {}", e->name, e->variables, s.dim));
+        require(s.objectives == 0 || s.objectives == static_cast<std::int64_t>(e->objectives), "objectives",
+                fmt::format("{} has {} objectives, got {}", e->name, e->objectives, s.objectives));
+        multiobjective::re::Problem p(s.function);
+        out.name = std::string(p.name());
+        for (std::size_t i = 1; i <= p.objectives(); ++i) out.objective_names.push_back(fmt::format("f{}", i));
+        out.searched.emplace(std::in_place_type<MoBoxTarget>, MoBoxTarget{std::move(p)});
+        return;
+    }
     if (multiobjective::find_constrained_problem(s.function)) {
         multiobjective::ConstrainedBenchmark b(s.function, static_cast<std::size_t>(s.dim),
                                                static_cast<std::size_t>(s.objectives));
@@ -171,6 +204,8 @@ const ReferenceFront& reference_front_of(const Prepared& p) {
                 front.values = b->reference_front(Problem::reference_points);
             else if (const auto* c = box ? std::get_if<multiobjective::ConstrainedBenchmark>(&box->problem) : nullptr)
                 front.values = c->reference_front(Problem::reference_points);
+            else if (const auto* re = box ? std::get_if<multiobjective::re::Problem>(&box->problem) : nullptr)
+                front.values = re_front(*re);
             else
                 exact_front(p, front);
         } catch (const InputError& e) {

@@ -27,6 +27,7 @@
 #include "problems/grid/objectives.hpp"
 #include "problems/multiobjective/catalog.hpp"
 #include "problems/multiobjective/constrained.hpp"
+#include "problems/multiobjective/re/re.hpp"
 
 namespace pride::engine {
 
@@ -96,7 +97,7 @@ struct GridTarget {
 using MoGridLine = grid::MultiObjectivePaths<grid::LineEncoding<grid::SelectableConnector>>;
 using MoGridFree = grid::MultiObjectivePaths<grid::FreeEncoding<grid::SelectableConnector>>;
 using MoVariant = std::variant<multiobjective::Benchmark, MoGridLine, MoGridFree, MoCallbackProblem,
-                               multiobjective::ConstrainedBenchmark>;
+                               multiobjective::ConstrainedBenchmark, multiobjective::re::Problem>;
 
 /// A problem of several objectives searched as a box: its result is the non-dominated set.
 struct MoBoxTarget {

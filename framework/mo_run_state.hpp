@@ -97,6 +97,7 @@ class MultiObjectiveRunState {
         const Eigen::Index n = std::min<Eigen::Index>(points.cols(), static_cast<Eigen::Index>(remaining()));
         const auto m = static_cast<std::size_t>(objectives_);
         constraint_values_.resize(problem.constraint_counts().total());  // sized once
+        constrained_ = !constraint_values_.empty();
         for (Eigen::Index j = 0; j < n; ++j) {
             problem.evaluate_constrained(
                 std::span<const double>(points.col(j).data(), static_cast<std::size_t>(points.rows())),
@@ -151,9 +152,11 @@ class MultiObjectiveRunState {
                                                  std::span<const std::size_t> front,
                                                  std::span<const double> violations = {}) {
         BasicMultiObjectiveResult<Population> r;
-        if (!violations.empty())
+        // A problem that declares no constraint (a suite's unconstrained members) reports none.
+        if (constrained_) {
             for (const std::size_t k : front) r.violation.push_back(violations[k]);
-        r.first_feasible = first_feasible_;
+            r.first_feasible = first_feasible_;
+        }
         r.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - progress_.start).count();
         r.f.resize(values.rows(), static_cast<Eigen::Index>(front.size()));
         if constexpr (std::is_same_v<Population, Matrix>)
@@ -180,6 +183,7 @@ class MultiObjectiveRunState {
     Matrix batch_;
     std::vector<double> constraint_values_;
     std::optional<std::int64_t> first_feasible_;
+    bool constrained_ = false;  // evaluated with at least one constraint
     bool started_ = false;
 };
 

@@ -427,15 +427,3 @@ TEST_CASE("pride list: every constrained problem it names is built and run by th
     CHECK(listed.out.find("  bbob-constrained-f54 ") != std::string::npos);
     CHECK(listed.out.find("cec2020rw-rc24") == std::string::npos);
 }
-
-TEST_CASE("pride bench: a constrained problem is refused in one line, nothing stored", "[constraints]") {
-    // Until the store records violations, a campaign could rank an infeasible run's f as a result.
-    const test::TempDir dir;
-    const auto toml = dir.write("c.toml",
-                                "name = \"c\"\nseeds = 2\n[budget]\nevaluations = 500\n"
-                                "[[problem]]\nid = \"g06\"\ntype = \"cec2006-g06\"\ndim = 2\n"
-                                "[[algorithm]]\nid = \"jade\"\ntype = \"jade\"\n");
-    test::expect_input_error("bench " + toml + " --out " + dir.file("c.sqlite"),
-                             {"problem 'g06'", "cec2006-g06 has constraints", "does not record violations"});
-    CHECK(dir.entries() == std::vector<std::string>{"c.toml"});
-}

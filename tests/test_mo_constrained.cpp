@@ -334,3 +334,31 @@ TEST_CASE("the engine runs the constrained problems: violations in the front, qu
                Contains("1 violations for"));
     CHECK_THAT(engine::multiobjective_problem_names(), Contains("c2-dtlz2"));
 }
+
+TEST_CASE("the engine runs the RE and CRE problems: violations for CRE only, fronts from PRIDE_DATA") {
+    engine::Budget b;
+    b.evaluations = 2000;
+    const engine::Problem cre(engine::ContinuousSpec{"cre21", 0, std::nullopt, 0});
+    const auto rc = engine::run(engine::AlgorithmSpec{"nsga2", {}}, cre, b, 1);
+    REQUIRE(rc.front);
+    CHECK(rc.front->violation.size() == static_cast<std::size_t>(rc.front->f.cols()));
+    CHECK_THAT(test::input_error_message([&] { (void)engine::quality(cre, rc.front->f, rc.front->violation); }),
+               Contains("cre21 has no published reference front"));
+    const engine::Problem re(engine::ContinuousSpec{"re21", 0, std::nullopt, 0});
+    const auto rr = engine::run(engine::AlgorithmSpec{"nsga2", {}}, re, b, 1);
+    REQUIRE(rr.front);
+    CHECK(rr.front->violation.empty());  // no constraint declared: none reported
+    CHECK(!rr.best_violation);
+    CHECK_THAT(test::input_error_message([] {
+                   (void)engine::Problem(engine::ContinuousSpec{"re21", 5, std::nullopt, 0});
+               }),
+               Contains("re21 has 4 variables, got 5"));
+    const char* data = std::getenv("PRIDE_DATA");
+    if (data == nullptr || *data == 0) {
+        WARN("PRIDE_DATA is not set: the RE front's quality is skipped");
+        CHECK_THAT(test::input_error_message([&] { (void)engine::quality(re, rr.front->f); }),
+                   Contains("which pride does not ship: set PRIDE_DATA"));
+        return;
+    }
+    CHECK(engine::quality(re, rr.front->f).hypervolume_ratio > 0.9);
+}

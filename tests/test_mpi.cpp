@@ -155,4 +155,44 @@ TEST_CASE("bench: under mpirun, a store rank 0 cannot open is one error, exit st
     CHECK(text.find("pride: ") != std::string::npos);
     CHECK(text.find("s.sqlite") != std::string::npos);
 }
+TEST_CASE("bench: mpirun -np 2 sends a constrained run's violation and first feasible evaluation to rank 0",
+          "[bench][mpi][constraints]") {
+    const pride::test::TempDir tmp("pride-mpi-con");  // removed with its files at the end of the test
+    const fs::path& dir = tmp.path();
+    {
+        std::ofstream f(dir / "c.toml");
+        f << "name = \"con\"\nseeds = 3\n[budget]\nevaluations = 300\n"
+             "[[problem]]\nid = \"g06\"\ntype = \"cec2006-g06\"\ndim = 2\n"
+             "[[algorithm]]\nid = \"de\"\ntype = \"de\"\npop = 10\n";
+    }
+    const std::string config = (dir / "c.toml").string();
+    REQUIRE(pride::test::run_pride("bench '" + config + "' --out '" + (dir / "threads.sqlite").string() + "'").status ==
+            0);
+    REQUIRE(mpi_bench(2, config, "", dir / "mpi.sqlite", dir / "out") == 0);
+    const auto violations = [](const fs::path& store) {
+        sqlite3* db = nullptr;
+        REQUIRE(sqlite3_open_v2(store.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
+        sqlite3_stmt* s = nullptr;
+        REQUIRE(sqlite3_prepare_v2(db,
+                                   "SELECT seed || '|' || feasible || '|' || printf('%!.17g', best) || '|' || "
+                                   "printf('%!.17g', best_violation) || '|' || quote(first_feasible) FROM runs ORDER "
+                                   "BY seed",
+                                   -1, &s, nullptr) == SQLITE_OK);
+        std::vector<std::string> out;
+        while (sqlite3_step(s) == SQLITE_ROW)
+            out.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)));
+        sqlite3_finalize(s);
+        sqlite3_close(db);
+        return out;
+    };
+    const auto a = violations(dir / "threads.sqlite");
+    CHECK(a.size() == 3);
+    CHECK(a == violations(dir / "mpi.sqlite"));
+    CHECK(rows(dir / "threads.sqlite") == rows(dir / "mpi.sqlite"));
+    // Seed 2 ends infeasible (its violation kept), seeds 1 and 3 feasible (their first feasible evaluation).
+    REQUIRE(a.size() == 3);
+    CHECK(a[1].find("|0|") != std::string::npos);
+    CHECK(a[1].substr(a[1].size() - 5) == "|NULL");
+    CHECK(a[0].substr(a[0].size() - 4) == "|153");
+}
 #endif

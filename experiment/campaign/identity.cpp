@@ -149,6 +149,10 @@ std::string settings_digest(const CampaignProblem& p) {
         for (const double v : b->lower) number(v);
         for (const double v : b->upper) number(v);
         h.field(b->f_opt ? json_number(*b->f_opt) : "no f_opt");
+        // Its constraints' counts and tolerance make another problem (only when it has them: the
+        // digests of callbacks without constraints stay as they were).
+        if (b->constrained)
+            h.field(fmt::format("constraints {} {} {}", b->inequalities, b->equalities, json_number(b->tolerance)));
     }
     return h.hex();
 }

@@ -26,11 +26,13 @@ constexpr char kSep = '\x1f';
 std::string serialise(const RunRecord& r) {
     return fmt::format(
         "{1}{0}{2}{0}{3}{0}{4}{0}{5:.17g}{0}{6}{0}{7}{0}{8:.17g}{0}{9}{0}{10}{0}{11}{0}{12}{0}{13}{0}{14}{0}{15}{0}{"
-        "16}{0}{17}{0}{18}{0}{19}{0}{20}",
+        "16}{0}{17}{0}{18}{0}{19}{0}{20}{0}{21}{0}{22}",
         kSep, r.problem, r.algorithm, r.seed, r.feasible ? 1 : 0, r.best, r.evaluations, r.iterations, r.wall_ms,
         r.optimum ? fmt::format("{:.17g}", *r.optimum) : "", r.solution, r.history, r.history_evaluations,
         r.target_hits, r.encoding, r.trace_targets, r.trace_evaluations,
-        r.max_evaluations ? std::to_string(*r.max_evaluations) : "", r.checkpoints, r.path_metrics, r.polyline);
+        r.max_evaluations ? std::to_string(*r.max_evaluations) : "", r.checkpoints, r.path_metrics, r.polyline,
+        r.best_violation ? fmt::format("{:.17g}", *r.best_violation) : "",
+        r.first_feasible ? std::to_string(*r.first_feasible) : "");
 }
 
 RunRecord deserialise(const std::string& text) {
@@ -41,7 +43,7 @@ RunRecord deserialise(const std::string& text) {
         if (end == std::string::npos) break;
         start = end + 1;
     }
-    if (f.size() != 20) throw std::runtime_error("MPI: a malformed run record");
+    if (f.size() != 22) throw std::runtime_error("MPI: a malformed run record");
     RunRecord r;
     r.problem = f[0];
     r.algorithm = f[1];
@@ -63,6 +65,8 @@ RunRecord deserialise(const std::string& text) {
     r.checkpoints = f[17];
     r.path_metrics = f[18];
     r.polyline = f[19];
+    if (!f[20].empty()) r.best_violation = std::stod(f[20]);
+    if (!f[21].empty()) r.first_feasible = std::stoll(f[21]);
     return r;
 }
 

@@ -210,12 +210,9 @@ void prepare(Campaign& c) {
                     p.problem = std::make_shared<const Problem>(std::move(problem));
                 }
             } else {
+                // With constraints, each run's row records its best point's violation and first feasible
+                // evaluation (store schema 6), and reports rank runs by Deb's order.
                 p.problem = std::make_shared<const Problem>(problem_spec(p));
-                // A store row has no violation yet: an infeasible run's f would be ranked as a result.
-                require(!p.problem->prepared().constrained(), "type",
-                        fmt::format("{} has constraints, and a campaign's store does not record violations yet: "
-                                    "run it with pride run or from Python",
-                                    p.problem->name()));
             }
             if (c.evaluations_per_dim) {
                 require(!std::holds_alternative<GridSpec>(p.spec), "evaluations_per_dim",

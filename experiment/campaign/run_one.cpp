@@ -115,7 +115,11 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
         }
     } else {
         r.best = result.best_f;
-        r.feasible = std::isfinite(result.best_f);
+        // With constraints, best_f is the least violating point's f while no point is feasible:
+        // feasible only by the violation, which the store keeps beside it.
+        r.feasible = std::isfinite(result.best_f) && (!result.best_violation || *result.best_violation == 0.0);
+        r.best_violation = result.best_violation;
+        r.first_feasible = result.first_feasible;
         r.solution = json_array(result.best_x);
     }
     r.evaluations = result.evaluations;

@@ -31,8 +31,13 @@ namespace pride::html {
 namespace {
 
 namespace fs = std::filesystem;
+using report::deb_order_text;
+using report::feasibility_cells;
+using report::feasibility_heading;
+using report::FeasibilityRow;
 using report::ReportData;
 using report::ReportRow;
+using report::runs_cell;
 using storage::StoredRun;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -178,6 +183,7 @@ std::string results_section(const ReportData& r) {
     h += " On grids, gap is the mean relative gap to the exact optimum and optimal the share of runs that reached it.";
     if (r.target) h += " Target: " + escape(num(*r.target)) + ".";
     if (r.target_precision) h += " Target: f_opt + " + escape(num(*r.target_precision)) + ".";
+    if (!r.feasibility.empty()) h += " " + escape(deb_order_text());
     h += "</p>\n<div class=\"wide\"><table>\n<tr><th>problem</th><th>algorithm</th><th class=\"n\">runs</th>";
     if (f_opts) h += "<th class=\"n\">f_opt</th>";
     for (const char* c : {"min", "mean", "std", "median", "max", "mean ms", "gap", "optimal", "p (Holm)", "A12"})
@@ -188,9 +194,10 @@ std::string results_section(const ReportData& r) {
         h += x.best ? "<tr class=\"best\">" : "<tr>";
         const auto cell = [&](const std::string& v) { h += "<td class=\"n\">" + escape(v) + "</td>"; };
         h += "<td>" + escape(x.problem) + "</td><td>" + escape(x.algorithm) + "</td>";
-        cell(std::to_string(x.runs));
+        cell(runs_cell(x));
         if (f_opts) cell(x.f_opt ? num(*x.f_opt) : "-");
-        for (const double v : {x.min, x.mean, x.std, x.median, x.max}) cell(num(v));
+        for (const double v : {x.min, x.mean, x.std, x.median, x.max})
+            cell(x.feasible_runs == std::size_t{0} ? std::string("-") : num(v));
         cell(fmt::format("{:.3f}", x.mean_wall_ms));
         cell(!x.mean_gap ? "-" : x.f_opt ? num(*x.mean_gap) : fmt::format("{:.2f} %", 100 * *x.mean_gap));
         cell(x.success ? fmt::format("{:.0f} %", 100 * *x.success) : "-");
@@ -203,6 +210,20 @@ std::string results_section(const ReportData& r) {
         h += "</tr>\n";
     }
     h += "</table></div>\n";
+    if (!r.feasibility.empty()) {
+        // The markdown report's feasibility table, the same rows.
+        h += "<p>" + escape(feasibility_heading()) +
+             "</p>\n<div class=\"wide\"><table>\n<tr><th>problem</th><th>algorithm</th><th class=\"n\">runs</th>"
+             "<th class=\"n\">feasible</th><th class=\"n\">median first feasible</th><th class=\"n\">median "
+             "violation</th></tr>\n";
+        for (const FeasibilityRow& f : r.feasibility) {
+            const auto cells = feasibility_cells(f);
+            h += "<tr><td>" + escape(cells[0]) + "</td><td>" + escape(cells[1]) + "</td>";
+            for (std::size_t k = 2; k < cells.size(); ++k) h += "<td class=\"n\">" + escape(cells[k]) + "</td>";
+            h += "</tr>\n";
+        }
+        h += "</table></div>\n";
+    }
     for (const auto& note : r.notes) h += "<p class=\"note\">" + escape(note) + "</p>\n";
     if (!r.fronts.empty()) {
         // The markdown report's table of fronts, the same rows.

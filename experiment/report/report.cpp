@@ -30,7 +30,44 @@ struct Cell {                  // one (problem, algorithm): its runs
     std::optional<double> optimum;
     std::vector<std::optional<double>> to_target;  // evaluations when the best first reached the target
     std::optional<double> f_opt;                   // continuous problems with a known optimum
+    // Problems with constraints: each run's best violation (0: feasible), its first feasible
+    // evaluation, and its rank among all runs of the problem by Deb's order (1: the best).
+    bool constrained = false;
+    std::vector<double> violation;
+    std::vector<std::optional<std::int64_t>> first_feasible;
+    std::vector<double> deb_rank;
 };
+
+/// Every run of a constrained problem ranked by Deb's order (Deb 2000): feasible before infeasible,
+/// feasible by f, infeasible by violation; ties get their mean rank. The rank tests, A12 and the
+/// medians that choose the best then compare runs in that order (they see only ranks).
+template <class Cells>
+void rank_by_deb_order(Cells& by_algorithm) {
+    struct Entry {
+        bool infeasible;
+        double key;
+        double* rank;
+    };
+    std::vector<Entry> all;
+    for (auto& [algorithm, c] : by_algorithm) {
+        c.deb_rank.assign(c.best.size(), 0.0);
+        for (std::size_t i = 0; i < c.best.size(); ++i) {
+            const bool infeasible = c.violation[i] > 0;
+            all.push_back({infeasible, infeasible ? c.violation[i] : c.best[i], &c.deb_rank[i]});
+        }
+    }
+    const auto before = [](const Entry& a, const Entry& b) {
+        return a.infeasible != b.infeasible ? !a.infeasible : a.key < b.key;
+    };
+    std::sort(all.begin(), all.end(), before);
+    for (std::size_t i = 0; i < all.size();) {
+        std::size_t j = i + 1;
+        while (j < all.size() && !before(all[i], all[j])) ++j;
+        const double rank = 0.5 * static_cast<double>(i + 1 + j);  // the mean of ranks i + 1 ... j
+        for (std::size_t k = i; k < j; ++k) *all[k].rank = rank;
+        i = j;
+    }
+}
 
 /// The evaluations at which a run's best value first reached `target` (from its history).
 std::optional<double> evaluations_to(double target, const storage::StoredRun& run) {
@@ -98,6 +135,7 @@ std::string render_table(const ReportData& report, bool md) {
                 " Values are f as run (raw); gap is the mean of f - f_opt and optimal the share of runs within "
                 "1e-8 of f_opt.";
         if (report.target_precision) text += fmt::format(" Target: f_opt + {}.", num(*report.target_precision));
+        if (!report.feasibility.empty()) text += " " + deb_order_text();
         text += "\n\n";
         text += line(head) + "|";
         for (std::size_t i = 0; i < head.size(); ++i) text += i < 2 ? "---|" : "---:|";
@@ -108,15 +146,16 @@ std::string render_table(const ReportData& report, bool md) {
     for (const auto& r : report.rows) {
         const std::string p =
             r.best ? "best" : (r.p_holm ? fmt::format("{:.3g}{}", *r.p_holm, *r.p_holm < 0.05 ? "*" : "") : "");
-        std::vector<std::string> cols{r.problem, r.algorithm, std::to_string(r.runs)};
+        std::vector<std::string> cols{r.problem, r.algorithm, runs_cell(r)};
         if (f_opts) cols.push_back(r.f_opt ? num(*r.f_opt) : "-");
         const std::string gap = !r.mean_gap ? "-"
                                 : r.f_opt   ? num(*r.mean_gap)  // a precision, not a share
                                             : fmt::format("{:.2f} %", 100 * *r.mean_gap);
-        for (const std::string& s :
-             {num(r.min), num(r.mean), num(r.std), num(r.median), num(r.max), fmt::format("{:.3f}", r.mean_wall_ms),
-              gap, r.success ? fmt::format("{:.0f} %", 100 * *r.success) : std::string("-"), p,
-              r.a12 ? fmt::format("{:.2f}", *r.a12) : std::string("-")})
+        const auto value = [&](double v) { return r.feasible_runs == std::size_t{0} ? std::string("-") : num(v); };
+        for (const std::string& s : {value(r.min), value(r.mean), value(r.std), value(r.median), value(r.max),
+                                     fmt::format("{:.3f}", r.mean_wall_ms), gap,
+                                     r.success ? fmt::format("{:.0f} %", 100 * *r.success) : std::string("-"), p,
+                                     r.a12 ? fmt::format("{:.2f}", *r.a12) : std::string("-")})
             cols.push_back(s);
         if (has_target)  // mean over the runs that reached it, and how many did
             cols.push_back(r.mean_evaluations_to_target
@@ -125,6 +164,18 @@ std::string render_table(const ReportData& report, bool md) {
         text += line(cols);
     }
     if (!md) text += "\\hline\n\\end{tabular}\n";
+    if (!report.feasibility.empty()) {
+        if (md)
+            text += "\n" + feasibility_heading() + "\n\n";
+        else
+            text +=
+                "\n% " + deb_order_text() + "\n% " + feasibility_heading() + "\n\\begin{tabular}{llrrrr}\n\\hline\n";
+        text += line({"problem", "algorithm", "runs", "feasible", "median first feasible", "median violation"});
+        if (md) text += "|---|---|---:|---:|---:|---:|\n";
+        if (!md) text += "\\hline\n";
+        for (const auto& f : report.feasibility) text += line(feasibility_cells(f));
+        if (!md) text += "\\hline\n\\end{tabular}\n";
+    }
     for (const auto& note : report.notes) text += (md ? std::string("\n") : std::string("\n% ")) + note + "\n";
     if (md && !report.fronts.empty()) {
         text +=
@@ -210,6 +261,33 @@ std::string precision_label(double p) {
         if (std::abs(p - std::pow(10.0, k)) <= 1e-9 * p) return fmt::format("1e{}", static_cast<int>(k));
     }
     return fmt::format("{:.6g}", p);
+}
+
+std::string feasibility_heading() {
+    return "Feasibility, per problem with constraints and algorithm: the runs whose best point is feasible (and "
+           "their share), the median evaluation at which the runs that found a feasible point first found one, and "
+           "the median violation of the runs that found none (-: no such run).";
+}
+
+std::string deb_order_text() {
+    return "On problems with constraints, runs are compared by Deb's order (Deb 2000), as the CEC 2020 real-world "
+           "competition ranks them: feasible before infeasible, feasible runs by f, infeasible ones by their "
+           "violation; best, p (Holm), A12 and Friedman's ranks use that order, while runs counts all runs with the "
+           "feasible ones in brackets and min to max, mean, std and gap are over the feasible runs only (`-`: none).";
+}
+
+std::string runs_cell(const ReportRow& r) {
+    return r.feasible_runs ? fmt::format("{} ({} feasible)", r.runs, *r.feasible_runs) : std::to_string(r.runs);
+}
+
+std::vector<std::string> feasibility_cells(const FeasibilityRow& f) {
+    return {f.problem,
+            f.algorithm,
+            std::to_string(f.runs),
+            fmt::format("{} ({:.0f} %)", f.feasible,
+                        f.runs ? 100.0 * static_cast<double>(f.feasible) / static_cast<double>(f.runs) : 0.0),
+            f.median_first_feasible ? num(*f.median_first_feasible) : std::string("-"),
+            f.median_violation ? num(*f.median_violation) : std::string("-")};
 }
 
 namespace {
@@ -332,6 +410,9 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
         c.evaluations.push_back(static_cast<double>(run.evaluations));
         if (run.optimum) c.optimum = run.optimum;
         if (optimum) c.f_opt = optimum;
+        if (run.best_violation) c.constrained = true;
+        c.violation.push_back(run.best_violation.value_or(0.0));
+        c.first_feasible.push_back(run.first_feasible);
         // The threshold on the runs' own values (their histories are of f).
         if (store.target)
             c.to_target.push_back(evaluations_to(*store.target, run));
@@ -340,12 +421,40 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
     }
 
     auto& rows = report.rows;
+    // What runs are compared by: their values, or with constraints their ranks by Deb's order.
+    const auto compared = [](const Cell& c) -> const std::vector<double>& {
+        return c.constrained ? c.deb_rank : c.best;
+    };
+    for (auto& [problem, by_algorithm] : cells) {
+        const bool constrained =
+            std::any_of(by_algorithm.begin(), by_algorithm.end(), [](const auto& a) { return a.second.constrained; });
+        if (constrained) {
+            for (auto& [algorithm, c] : by_algorithm) c.constrained = true;
+            rank_by_deb_order(by_algorithm);
+            for (const auto& [algorithm, c] : by_algorithm) {
+                FeasibilityRow f;
+                f.problem = problem;
+                f.algorithm = algorithm;
+                f.runs = c.best.size();
+                std::vector<double> first, violation;
+                for (std::size_t i = 0; i < c.best.size(); ++i) {
+                    if (c.violation[i] == 0) ++f.feasible;
+                    if (c.violation[i] > 0) violation.push_back(c.violation[i]);
+                    if (c.first_feasible[i]) first.push_back(static_cast<double>(*c.first_feasible[i]));
+                }
+                if (!first.empty()) f.median_first_feasible = median_of(first);
+                if (!violation.empty()) f.median_violation = median_of(violation);
+                report.feasibility.push_back(f);
+            }
+        }
+    }
     for (const auto& [problem, by_algorithm] : cells) {
-        // The best algorithm of the problem: the lowest median best value (ties: lowest mean).
+        // The best algorithm of the problem: the lowest median best value (ties: lowest mean); with
+        // constraints, the lowest median rank by Deb's order.
         std::string best;
         double best_median = 0, best_mean = 0;
         for (const auto& [algorithm, c] : by_algorithm) {
-            const double md = median_of(c.best), mn = mean_of(c.best);
+            const double md = median_of(compared(c)), mn = mean_of(compared(c));
             if (best.empty() || md < best_median || (md == best_median && mn < best_mean)) {
                 best = algorithm;
                 best_median = md;
@@ -359,11 +468,20 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
             r.problem = problem;
             r.algorithm = algorithm;
             r.runs = c.best.size();
-            r.min = *std::min_element(c.best.begin(), c.best.end());
-            r.max = *std::max_element(c.best.begin(), c.best.end());
-            r.mean = mean_of(c.best);
-            r.std = stats::sample_std(c.best);
-            r.median = median_of(c.best);
+            // With constraints, the values of the feasible runs alone (+inf when there is none).
+            std::vector<double> feasible;
+            if (c.constrained) {
+                for (std::size_t i = 0; i < c.best.size(); ++i)
+                    if (c.violation[i] == 0) feasible.push_back(c.best[i]);
+                r.feasible_runs = feasible.size();
+                if (feasible.empty()) feasible.push_back(inf);
+            }
+            const std::vector<double>& values = c.constrained ? feasible : c.best;
+            r.min = *std::min_element(values.begin(), values.end());
+            r.max = *std::max_element(values.begin(), values.end());
+            r.mean = mean_of(values);
+            r.std = stats::sample_std(values);
+            r.median = median_of(values);
             r.mean_wall_ms = mean_of(c.wall_ms);
             r.mean_evaluations = mean_of(c.evaluations);
             r.best = algorithm == best;
@@ -382,10 +500,17 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
                 double sum = 0, solved = 0;
                 for (const double v : c.best) {
                     const double precision = options.raw ? v - *c.f_opt : v;
-                    sum += precision;
                     solved += precision <= solved_precision ? 1.0 : 0.0;
+                    if (!c.constrained) sum += precision;
                 }
-                r.mean_gap = sum / static_cast<double>(r.runs);
+                // With constraints, the gap of the feasible runs (an infeasible run has no value);
+                // optimal stays a share of all runs.
+                if (c.constrained) {
+                    for (const double v : feasible) sum += options.raw ? v - *c.f_opt : v;
+                    if (*r.feasible_runs > 0) r.mean_gap = sum / static_cast<double>(*r.feasible_runs);
+                } else {
+                    r.mean_gap = sum / static_cast<double>(r.runs);
+                }
                 r.success = solved / static_cast<double>(r.runs);
             } else if (c.optimum) {
                 r.optimum = c.optimum;
@@ -401,8 +526,8 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
                 r.success = success / static_cast<double>(r.runs);
             }
             if (!r.best) {
-                r.a12 = stats::vargha_delaney_a(c.best, by_algorithm.at(best).best);
-                p_values.push_back(stats::rank_sum_test(c.best, by_algorithm.at(best).best).p_value);
+                r.a12 = stats::vargha_delaney_a(compared(c), compared(by_algorithm.at(best)));
+                p_values.push_back(stats::rank_sum_test(compared(c), compared(by_algorithm.at(best))).p_value);
                 tested.push_back(rows.size());
             }
             rows.push_back(r);
@@ -423,7 +548,7 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
         std::vector<std::vector<double>> blocks;
         for (const auto& [problem, by_algorithm] : cells) {
             std::vector<double> block;
-            for (const auto& a : algorithms) block.push_back(median_of(by_algorithm.at(a).best));
+            for (const auto& a : algorithms) block.push_back(median_of(compared(by_algorithm.at(a))));
             blocks.push_back(block);
         }
         report.friedman = FriedmanSummary{algorithms, cells.size(), stats::friedman(blocks), {}, {}};
@@ -563,7 +688,9 @@ storage::CampaignStore read_stores(const std::vector<std::string>& paths) {
         if (all.unreproducible_algorithms.count(r.algorithm)) continue;  // the first store's run is kept
         require(o.best == r.best && o.evaluations == r.evaluations && o.history == r.history &&
                     o.history_evaluations == r.history_evaluations && o.target_hits == r.target_hits &&
-                    o.max_evaluations == r.max_evaluations && o.checkpoints == r.checkpoints,
+                    o.max_evaluations == r.max_evaluations && o.checkpoints == r.checkpoints &&
+                    o.best_violation == r.best_violation && o.first_feasible == r.first_feasible &&
+                    o.infeasible_f == r.infeasible_f,
                 "report",
                 fmt::format("run (problem '{}', algorithm '{}', seed {}) differs between the stores; they cannot be "
                             "reported as one",
@@ -601,7 +728,18 @@ std::string render_csv(const ReportData& report) {
     text += report.target_precision ? ",target,target_precision,reached_target,mean_evaluations_to_target\n"
             : report.target         ? ",target,reached_target,mean_evaluations_to_target\n"
                                     : "\n";
+    // With constraints, three columns more (empty for problems without): the feasible runs, the
+    // median first feasible evaluation and the median violation of the infeasible runs.
+    const bool feasibility = !report.feasibility.empty();
+    if (feasibility) text.insert(text.size() - 1, ",feasible_runs,median_first_feasible,median_violation");
     const auto optional = [](const std::optional<double>& v) { return v ? exact(*v) : std::string(); };
+    const auto feasibility_columns = [&](const ReportRow& r) {
+        for (const auto& f : report.feasibility)
+            if (f.problem == r.problem && f.algorithm == r.algorithm)
+                return fmt::format(",{},{},{}\n", f.feasible, optional(f.median_first_feasible),
+                                   optional(f.median_violation));
+        return std::string(",,,\n");
+    };
     for (const auto& r : report.rows) {
         text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv(r.problem), csv(r.algorithm),
                             r.runs, exact(r.min), exact(r.mean), exact(r.std), exact(r.median), exact(r.max),
@@ -616,6 +754,10 @@ std::string render_csv(const ReportData& report) {
             text += has_target ? fmt::format(",{},{},{}\n", exact(*report.target), r.reached_target,
                                              optional(r.mean_evaluations_to_target))
                                : "\n";
+        if (feasibility) {
+            text.pop_back();
+            text += feasibility_columns(r);
+        }
     }
     return text;
 }

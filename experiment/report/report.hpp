@@ -35,7 +35,30 @@ struct ReportRow {
     // With a campaign target: the runs whose best reached it, and their mean evaluations to do so.
     std::size_t reached_target = 0;
     std::optional<double> mean_evaluations_to_target;
+    // Problems with constraints: the runs whose best is feasible. min to max, mean, std and gap are
+    // then over them alone; best, p_holm, a12 and Friedman's ranks compare all runs by Deb's order
+    // (deb_order_text). Empty for problems without constraints.
+    std::optional<std::size_t> feasible_runs;
 };
+
+/// A problem with constraints, per algorithm: how often and how soon its runs found a feasible point.
+struct FeasibilityRow {
+    std::string problem, algorithm;
+    std::size_t runs = 0, feasible = 0;           // runs, and those whose best is feasible
+    std::optional<double> median_first_feasible;  // over the runs that found a feasible point
+    std::optional<double> median_violation;       // over the runs whose best is infeasible
+};
+
+/// What the report says of problems with constraints, after its table's first paragraph.
+std::string deb_order_text();
+/// The sentence before the feasibility table.
+std::string feasibility_heading();
+
+/// The runs cell of a row: "N", or with constraints "N (F feasible)".
+std::string runs_cell(const ReportRow& r);
+/// A feasibility row's cells: problem, algorithm, runs, "F (P %)" feasible, median first feasible
+/// evaluation, median violation ("-" where there is none).
+std::vector<std::string> feasibility_cells(const FeasibilityRow& f);
 
 /// Friedman's test over the problems, on the median values of the algorithms run on all of them.
 struct FriedmanSummary {
@@ -95,6 +118,9 @@ struct ReportData {
     std::vector<FrontRow> fronts;
     // Grid problems whose runs recorded path metrics (store schema 5): rendered after the fronts.
     std::vector<PathRow> paths;
+    // Problems with constraints (their runs record violations, store schema 6): rendered after
+    // the main table, before its notes.
+    std::vector<FeasibilityRow> feasibility;
 };
 
 /// The report of the runs of `store` (no rows when it holds none).

@@ -160,6 +160,13 @@ class Query {
         if (!std::isfinite(v)) fail(column, "expected a finite number, got " + value(i));
         return v;
     }
+    /// A REAL or INTEGER as it is, infinities included (a violation with no finite value).
+    double raw_double(int i, const char* column) const {
+        const int type = sqlite3_column_type(s_, i);
+        if (type == SQLITE_INTEGER) return static_cast<double>(sqlite3_column_int64(s_, i));
+        if (type != SQLITE_FLOAT) fail(column, "expected a number, got " + value(i));
+        return sqlite3_column_double(s_, i);
+    }
     std::optional<double> optional_number(int i, const char* column) const {
         if (sqlite3_column_type(s_, i) == SQLITE_NULL) return std::nullopt;
         return number(i, column);
@@ -382,6 +389,32 @@ std::vector<TracePoint> trace(const Query& q, int i, const char* column, std::in
 }  // namespace
 
 namespace {
+/// A constrained problem's run: its violation (at least 0; +inf when no point had a finite one) and
+/// first feasible evaluation (within the run's, present exactly when its best is feasible), read
+/// from columns `i` and `i + 1`; an infeasible best moved from `best` to `infeasible_f`.
+void constrained(const Query& q, int i, StoredRun& r) {
+    if (q.is_null(i)) {
+        if (!q.is_null(i + 1))
+            q.fail("first_feasible", "expected NULL where best_violation is NULL (a problem without constraints)");
+        return;
+    }
+    const double v = q.raw_double(i, "best_violation");
+    if (!(v >= 0)) q.fail("best_violation", fmt::format("expected a violation of at least 0, got {}", v));
+    r.best_violation = v;
+    r.first_feasible = q.optional_integer(i + 1, "first_feasible", 1);
+    if (r.first_feasible && *r.first_feasible > r.evaluations)
+        q.fail("first_feasible",
+               fmt::format("expected at most the run's {} evaluations, got {}", r.evaluations, *r.first_feasible));
+    if ((v == 0) != r.first_feasible.has_value())
+        q.fail("first_feasible", v == 0 ? std::string("expected the evaluation that found the feasible best, got NULL")
+                                        : fmt::format("expected NULL for a run whose best is infeasible (violation "
+                                                      "{}), got {}",
+                                                      v, *r.first_feasible));
+    if (v > 0) {
+        r.infeasible_f = r.best;
+        r.best.reset();
+    }
+}
 
 /// read_store, and check_store with `keep_runs` false (its runs checked, not kept: a store of any
 /// size is checked in the memory of one run).
@@ -504,12 +537,13 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
                     "CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN json_extract(solution, "
                     "'$.igd_plus') END, CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN "
                     "json_extract(solution, '$.exact_found') END, CASE WHEN substr(solution, 1, 1) = '{{' AND "
-                    "json_valid(solution) THEN json_extract(solution, '$.front') END{} FROM runs ORDER BY problem, "
-                    "algorithm, seed",
+                    "json_valid(solution) THEN json_extract(solution, '$.front') END{}, {}, {} FROM runs ORDER BY "
+                    "problem, algorithm, seed",
                     has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"),
                     optional_column(run_columns, "trace_targets"), optional_column(run_columns, "trace_evaluations"),
                     optional_column(run_columns, "max_evaluations"), optional_column(run_columns, "checkpoints"),
-                    path_metrics)
+                    path_metrics, optional_column(run_columns, "best_violation"),
+                    optional_column(run_columns, "first_feasible"))
                     .c_str());
     while (q.next()) {
         // Named by rowid until its key is read, then by the key.
@@ -569,6 +603,8 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
             }
             if (!any) r.path_metrics.clear();
         }
+        constexpr int violation_column = 20 + static_cast<int>(std::size(kPathMetricNames));
+        constrained(q, violation_column, r);
         // The analysis of target hits (experiment/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.
         if (store.precisions && has_problems && !problem_ids.count(r.problem))

@@ -76,6 +76,15 @@ struct StoredRun {
     // kPathMetricNames' order, each empty where the JSON has null or lacks it); empty for other runs
     // and runs stored before.
     std::vector<std::optional<double>> path_metrics;
+    // A constrained problem's run (runs.best_violation, first_feasible, store schema 6): its best
+    // point's violation (0: feasible; +inf when no point had a finite one) and the evaluation that
+    // first found a feasible point (empty: none). A run whose best is infeasible has no `best` (no
+    // feasible value: every table and analysis of values leaves it out, as a grid run without a
+    // path) and keeps its least violating point's f in `infeasible_f`. All empty for problems
+    // without constraints and for runs stored before.
+    std::optional<double> best_violation;
+    std::optional<std::int64_t> first_feasible;
+    std::optional<double> infeasible_f;
 };
 
 /// The keys of runs.path_metrics the report reads, in StoredRun::path_metrics' order.

@@ -41,6 +41,12 @@ struct RunRecord {
     // path_gaps, its gaps too), and, for a polyline planner (Theta*, the any-angle path), whose
     // `solution` holds no cells, its polyline as [[x, y], ...]. Empty: NULL in the store.
     std::string path_metrics, polyline;
+    // Problems with constraints (RunResult::best_violation, first_feasible): the best point's
+    // violation, 0 when it is feasible (`best` is then the best feasible f, else the least violating
+    // point's f and `feasible` is false), and the evaluation that first found a feasible point
+    // (empty: none). Empty for problems without constraints: NULL in the store.
+    std::optional<double> best_violation;
+    std::optional<std::int64_t> first_feasible;
 };
 
 /// A problem as recorded, for reports and plots (a map's path made absolute).

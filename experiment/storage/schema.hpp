@@ -13,8 +13,11 @@
 //   5: runs.path_metrics and runs.polyline, every grid path's metrics and a polyline planner's
 //      polyline, NULL for other runs and runs stored before; algorithms.reproducible,
 //      0 for algorithms whose runs are compared by definition (OMPL's), 1 before
+//   6: runs.best_violation and runs.first_feasible, a constrained problem's run: its best point's
+//      violation (0: feasible) and the evaluation that first found a feasible point; NULL for
+//      problems without constraints and for runs stored before
 namespace pride::storage {
 
-inline constexpr int schema_version = 5;
+inline constexpr int schema_version = 6;
 
 }  // namespace pride::storage

@@ -200,6 +200,10 @@ Writer::Writer(const std::string& path) : path_(path), token_(process_token(::ge
         // merges and reports of several stores compare its runs by definition, not values.
         add_column("algorithms", "reproducible", "INTEGER NOT NULL DEFAULT 1");
         add_column("runs", "polyline", "TEXT");
+        // A constrained problem's run: its best point's violation and its first feasible
+        // evaluation; NULL for problems without constraints and for runs stored before.
+        add_column("runs", "best_violation", "REAL");
+        add_column("runs", "first_feasible", "INTEGER");
         exec("COMMIT");
         exec("PRAGMA synchronous=NORMAL");
     } catch (...) {
@@ -584,8 +588,8 @@ std::size_t Writer::insert_one(const RunRecord& r) {
         insert_,
         "INSERT OR IGNORE INTO runs (problem, algorithm, seed, feasible, best, evaluations, iterations, wall_ms, "
         "optimum, solution, history, history_evaluations, target_hits, encoding, trace_targets, trace_evaluations, "
-        "max_evaluations, checkpoints, path_metrics, polyline) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "max_evaluations, checkpoints, path_metrics, polyline, best_violation, first_feasible) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     sqlite3_bind_text(s, 1, r.problem.c_str(), -1, SQLITE_TRANSIENT);
     sqlite3_bind_text(s, 2, r.algorithm.c_str(), -1, SQLITE_TRANSIENT);
     sqlite3_bind_int64(s, 3, r.seed);
@@ -616,6 +620,11 @@ std::size_t Writer::insert_one(const RunRecord& r) {
             sqlite3_bind_null(s, column);
         else
             sqlite3_bind_text(s, column, text->c_str(), -1, SQLITE_STATIC);
+    bind_optional(s, 21, r.best_violation);
+    if (r.first_feasible)
+        sqlite3_bind_int64(s, 22, *r.first_feasible);
+    else
+        sqlite3_bind_null(s, 22);
     step_cached(s, "cannot write the store");
     const std::size_t added = static_cast<std::size_t>(sqlite3_changes(db_));
     s = cached(unclaim_, "DELETE FROM claims WHERE problem = ? AND algorithm = ? AND seed = ?");

@@ -482,7 +482,10 @@ def read_store(path, *, dataframe=None):
     else a list of dicts (problem, algorithm, seed, best, evaluations, wall_ms, optimum, history,
     history_evaluations, encoding, and COCO's trace: ``trace_targets`` and ``trace_evaluations``,
     (n, 2) arrays of rows (evaluations, best so far) at COCO's target and evaluation triggers;
-    ``front``: a multi-objective run's non-dominated set, an (n, M) array, None for other runs)."""
+    ``front``: a multi-objective run's non-dominated set, an (n, M) array, None for other runs;
+    ``violation`` and ``first_feasible``: on a problem with constraints, the best point's
+    violation, 0 when feasible, and the evaluation that first found a feasible point, None
+    otherwise; a run whose best is infeasible has ``best`` None)."""
     store = _pride.read_store(_path("path", path))
     dataframe = _bool("dataframe", dataframe, optional=True)
     pd = _pandas()
@@ -501,7 +504,10 @@ def report(path, *, raw=False, dataframe=None, html=None):
     unless ``raw=True`` (``pride report --raw``). ``path`` may be a list of stores of one campaign
     run in parts, read as one (``pride report A B``). ``html=DIR`` also writes the HTML report
     of one store into the folder DIR (``pride report --html DIR``) and gives its index.html as
-    ``html``."""
+    ``html``. On problems with constraints, runs are compared by Deb's order, each row's
+    ``feasible_runs`` counts the runs whose best is feasible (min to max are over them; None for
+    problems without constraints), and ``feasibility`` lists per problem and algorithm ``runs``,
+    ``feasible``, ``median_first_feasible`` and ``median_violation``."""
     paths = [_path("path", p) for p in path] if isinstance(path, (list, tuple)) else [_path("path", path)]
     raw = _bool("raw", raw)
     dataframe = _bool("dataframe", dataframe, optional=True)

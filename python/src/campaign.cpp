@@ -3,6 +3,7 @@
 // report read back as Python data. MPI stays with the command line.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <type_traits>
 
 #include "common.hpp"
+#include "engine/problem.hpp"
 #include "experiment/campaign/prepare.hpp"
 #include "experiment/campaign/run.hpp"
 #include "experiment/campaign/toml.hpp"
@@ -78,6 +80,13 @@ campaign::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t 
             "f_opt is for a function (registered problems know their own)");
     // A size is checked with every algorithm's run before anything of that size is built.
     const auto check_size = [&](const engine::ProblemSpec& spec, std::int64_t dimension) {
+        // A problem with constraints is none of the catalog's: small, its dimension checked as it
+        // is built, and each algorithm checked on it by prepare().
+        if (const auto* f = std::get_if<engine::ContinuousSpec>(&spec)) {
+            const auto& named = engine::constrained_problems();
+            if (std::any_of(named.begin(), named.end(), [&](const auto& item) { return item.name == f->function; }))
+                return;
+        }
         engine::Budget b = budget;
         if (evals_per_dim) {
             if (static_cast<double>(*evals_per_dim) * static_cast<double>(dimension) >
@@ -361,14 +370,16 @@ py::dict read_store(const py::object& store) {
         if (!r.history_evaluations.empty())
             std::memcpy(he.mutable_data(), r.history_evaluations.data(),
                         sizeof(std::int64_t) * r.history_evaluations.size());
-        runs.append(py::dict(py::arg("problem") = r.problem, py::arg("algorithm") = r.algorithm,
-                             py::arg("seed") = r.seed, py::arg("best") = optional_number(r.best),
-                             py::arg("evaluations") = r.evaluations, py::arg("wall_ms") = r.wall_ms,
-                             py::arg("optimum") = optional_number(r.optimum),
-                             py::arg("history") = vector_array(r.history), py::arg("history_evaluations") = he,
-                             py::arg("encoding") = r.encoding, py::arg("trace_targets") = trace_array(r.trace_targets),
-                             py::arg("trace_evaluations") = trace_array(r.trace_evaluations),
-                             py::arg("front") = front_array(r.front_json)));
+        runs.append(py::dict(
+            py::arg("problem") = r.problem, py::arg("algorithm") = r.algorithm, py::arg("seed") = r.seed,
+            py::arg("best") = optional_number(r.best), py::arg("evaluations") = r.evaluations,
+            py::arg("wall_ms") = r.wall_ms, py::arg("optimum") = optional_number(r.optimum),
+            py::arg("history") = vector_array(r.history), py::arg("history_evaluations") = he,
+            py::arg("encoding") = r.encoding, py::arg("trace_targets") = trace_array(r.trace_targets),
+            py::arg("trace_evaluations") = trace_array(r.trace_evaluations),
+            py::arg("front") = front_array(r.front_json), py::arg("violation") = optional_number(r.best_violation),
+            py::arg("first_feasible") =
+                r.first_feasible ? py::object(py::int_(*r.first_feasible)) : py::object(py::none())));
     }
     py::list problems;
     if (s.problems)
@@ -398,7 +409,15 @@ py::dict report_data(const std::vector<std::string>& paths, bool raw) {
                      py::arg("reached_target") = x.reached_target,
                      py::arg("mean_evaluations_to_target") = optional_number(x.mean_evaluations_to_target),
                      py::arg("f_opt") = optional_number(x.f_opt), py::arg("precision") = x.precision,
-                     py::arg("a12") = optional_number(x.a12)));
+                     py::arg("a12") = optional_number(x.a12),
+                     py::arg("feasible_runs") =
+                         x.feasible_runs ? py::object(py::int_(*x.feasible_runs)) : py::object(py::none())));
+    py::list feasibility;
+    for (const auto& f : r.feasibility)
+        feasibility.append(py::dict(py::arg("problem") = f.problem, py::arg("algorithm") = f.algorithm,
+                                    py::arg("runs") = f.runs, py::arg("feasible") = f.feasible,
+                                    py::arg("median_first_feasible") = optional_number(f.median_first_feasible),
+                                    py::arg("median_violation") = optional_number(f.median_violation)));
     py::object friedman = py::none();
     if (r.friedman) {
         py::list pairs;
@@ -421,7 +440,7 @@ py::dict report_data(const std::vector<std::string>& paths, bool raw) {
                      py::arg("pairs") = pairs, py::arg("critical_difference") = cd);
     }
     return py::dict(py::arg("campaign") = r.campaign, py::arg("target") = optional_number(r.target),
-                    py::arg("rows") = rows, py::arg("friedman") = friedman,
+                    py::arg("rows") = rows, py::arg("friedman") = friedman, py::arg("feasibility") = feasibility,
                     py::arg("markdown") = report::render_markdown(r), py::arg("csv") = report::render_csv(r));
 }
 

@@ -245,3 +245,38 @@ def test_exception_in_subject_to_propagates_unchanged():
     # The module is still usable, and a handler parameter works on constraints.
     r = _error(constraints="epsilon")()
     assert r.feasible and r.evaluations == 200
+
+
+def test_campaign_on_a_constrained_problem_records_violations(tmp_path):
+    # Each run's violation and first feasible evaluation are those of minimize() for its seed; the
+    # report adds a feasibility table and counts the feasible runs of each row.
+    c = pride.Campaign("con", seeds=3, evals=300,
+                       problems=[{"id": "g06", "problem": "cec2006-g06", "dim": 2}],
+                       algorithms=[{"id": "de", "algo": "de", "pop": 10},
+                                   {"id": "weak", "algo": "de", "pop": 10, "constraints": "penalty", "penalty": 1.0}])
+    c.run(tmp_path / "c.sqlite")
+    runs = pride.read_store(tmp_path / "c.sqlite", dataframe=False)
+    assert len(runs) == 6
+    for run in runs:
+        params = {} if run["algorithm"] == "de" else {"constraints": "penalty", "penalty": 1.0}
+        want = pride.minimize("de", "cec2006-g06", evals=300, seed=run["seed"], pop=10, **params)
+        assert run["violation"] == want.violation
+        assert run["first_feasible"] == want.first_feasible
+        assert run["best"] == (want.best_f if want.feasible else None)
+    r = pride.report(tmp_path / "c.sqlite", dataframe=False)
+    assert [(f["algorithm"], f["runs"]) for f in r["feasibility"]] == [("de", 3), ("weak", 3)]
+    for f, row in zip(r["feasibility"], r["rows"]):
+        assert row["feasible_runs"] == f["feasible"] == sum(
+            1 for run in runs if run["algorithm"] == f["algorithm"] and run["violation"] == 0)
+    assert "Deb's order" in r["markdown"]
+
+
+@pytest.mark.parametrize("problem,algo,match", [
+    ({"id": "b", "problem": "bbob-constrained-f1", "dim": 1}, "de", "bbob-constrained-f1 takes a dimension from 2 to 40"),
+    ({"id": "g", "problem": "cec2006-g06", "dim": 3}, "de", "cec2006-g06 has dimension 2, got 3"),
+    ({"id": "g", "problem": "cec2006-g06", "dim": 2}, "cmaes", "cmaes does not handle constraints"),
+])
+def test_campaign_on_a_constrained_problem_refuses_in_one_line(problem, algo, match):
+    with pytest.raises(ValueError, match=match) as e:
+        pride.Campaign("x", seeds=1, evals=100, problems=[problem], algorithms=[algo])
+    assert "\n" not in str(e.value)
