@@ -274,7 +274,7 @@ def test_campaign_on_a_constrained_problem_records_violations(tmp_path):
 @pytest.mark.parametrize("problem,algo,match", [
     ({"id": "b", "problem": "bbob-constrained-f1", "dim": 1}, "de", "bbob-constrained-f1 takes a dimension from 2 to 40"),
     ({"id": "g", "problem": "cec2006-g06", "dim": 3}, "de", "cec2006-g06 has dimension 2, got 3"),
-    ({"id": "g", "problem": "cec2006-g06", "dim": 2}, "cmaes", "cmaes does not handle constraints"),
+    ({"id": "g", "problem": "cec2006-g06", "dim": 2}, "hs", "hs does not handle constraints"),
 ])
 def test_campaign_on_a_constrained_problem_refuses_in_one_line(problem, algo, match):
     with pytest.raises(ValueError, match=match) as e:
