@@ -29,6 +29,14 @@
 // again, up to `tries` times, then clamps it (python3-cmaes does the same); ClampRepair evaluates
 // the clamped point and uses it in the update; Penalty evaluates the clamped point x^r and ranks by
 // f(x^r) + weight ||(x - x^r) / (high - low)||^2, the unrepaired x in the update.
+// On a problem with constraints (framework/constraints.hpp) the lambda points of (41) rank by the
+// configured handler's order on (f, v) (`constraints`: Deb's feasibility rules by default, the
+// epsilon level, whose generation t is the run's iteration, or a static penalty;
+// framework/constraint_order.hpp), or, with `augmented_lagrangian`, by f plus the penalty of
+// Atamna, Auger and Hansen's (2016, 2017) augmented Lagrangian (augmented_lagrangian.hpp), whose
+// coefficients are updated after each generation and start afresh with each run of a restart
+// sequence. The run's best point is Deb's best over the true (f, v) either way; without
+// constraints the run is the same, bit for bit, as before constraints were handled.
 // Decided by this project where the tutorial is open: C starts as diag((high - low)^2) (the
 // tutorial's C = I on the box scaled to unit ranges), sigma_0 = 0.3 of that by default (the
 // tutorial asks for about a quarter to a third of the search interval); the mean is not evaluated;
@@ -44,10 +52,13 @@
 #include <variant>
 #include <vector>
 
+#include "algorithms/parts/cma/augmented_lagrangian.hpp"
 #include "algorithms/parts/cma/restarts.hpp"
 #include "algorithms/parts/cma/search.hpp"
 #include "algorithms/parts/cma/stopping.hpp"
 #include "algorithms/parts/common/run_setup.hpp"
+#include "framework/constraint_order.hpp"
+#include "framework/constraints.hpp"
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
@@ -79,6 +90,7 @@ struct RunLog {
     double sigma0 = 0.0;
     std::int64_t evaluations = 0;
     Stop stop = Stop::none;
+    std::vector<double> multipliers;  // the augmented Lagrangian's lam_i at the run's end
 };
 
 }  // namespace cma
@@ -95,6 +107,9 @@ class Cmaes {
     Restarts restarts{};
     Boundary boundary{};
     Init init{};
+    ConstraintHandling constraints{};   // constrained problems only: the order the points rank by
+    bool augmented_lagrangian = false;  // constrained problems only: rank by f + the AL's penalty
+    cma::AlSettings al{};               // its parameters
 
     std::string name() const { return id; }
 
@@ -106,6 +121,8 @@ class Cmaes {
         tolerances.validate(name());
         restarts.validate(name());
         boundary.validate(name());
+        constraints.validate(name());
+        al.validate(name());
     }
 
     /// The first run's lambda in dimension n.
@@ -130,6 +147,16 @@ class Cmaes {
         Matrix mean(static_cast<Eigen::Index>(n), 1);
         auto sequence = visit_policy(restarts, [&](const auto& r) { return AnySequence(r.sequence(first_lambda(n))); });
         cma::RunPlan plan;
+        constexpr bool constrained = ConstrainedProblem<P>;
+        [[maybe_unused]] auto order = order_for<P>(constraints);
+        [[maybe_unused]] const bool lagrangian = constrained && augmented_lagrangian;
+        // Constrained problems only: the points' violations, constraint values and penalised values.
+        std::vector<double> violations, values_g, penalties, fitness;
+        cma::AugmentedLagrangian lagrange;
+        [[maybe_unused]] std::size_t k = 0;
+        cma::Tolerances al_tolerances = tolerances;
+        al_tolerances.stagnation = false;
+        if constexpr (constrained) k = problem.constraint_counts().total();
         // The first generation is iteration 0 (the initial population of other algorithms): it is
         // sampled and evaluated under any limit but the evaluations', so that an iteration limit
         // of k gives k + 1 generations.
@@ -143,6 +170,14 @@ class Cmaes {
             // more memory than its evaluations); a generation short of lambda ends the run.
             const auto columns = static_cast<Eigen::Index>(std::min(plan.lambda, state.remaining()));
             search.begin(column(mean, 0), sigma0 * plan.sigma_factor, plan.lambda, columns, active);
+            if constexpr (constrained) {
+                const auto c = static_cast<std::size_t>(columns);
+                violations.resize(c);
+                if (lagrangian) {
+                    values_g.resize(c * k), penalties.resize(c), fitness.resize(c);
+                    lagrange.reset(n, problem.constraint_counts(), al);
+                }
+            }
             cma::Stop stop = cma::Stop::none;
             while (go_on()) {
                 if (state.progress().evaluations - before >= plan.max_evaluations) {
@@ -150,16 +185,41 @@ class Cmaes {
                     break;
                 }
                 search.sample(rng, boundary);
-                const auto evaluated = state.evaluate_columns(problem, search.Xeval(), search.values());
-                state.end_iteration(observer, search.Xeval(), search.values());
-                first = false;
-                if (evaluated < plan.lambda) break;  // the budget ended inside the generation: no update
-                stop = search.update(boundary, tolerances);
+                if constexpr (constrained) {
+                    const auto evaluated =
+                        state.evaluate_columns(problem, search.Xeval(), search.values(), violations,
+                                               lagrangian ? std::span<double>(values_g) : std::span<double>());
+                    state.end_iteration(observer, search.Xeval(), search.values());
+                    if (first)
+                        order.start(std::span<const double>(violations).first(static_cast<std::size_t>(evaluated)));
+                    else
+                        order.generation(state.iteration());
+                    first = false;
+                    if (evaluated < plan.lambda) break;
+                    if (lagrangian) {
+                        const auto f = search.values();
+                        for (std::size_t j = 0; j < penalties.size(); ++j) {
+                            penalties[j] = lagrange.penalty(std::span<const double>(values_g).subspan(j * k, k));
+                            fitness[j] = f[j] + penalties[j];
+                        }
+                        stop = search.update(boundary, al_tolerances, PlainOrder{}, {}, penalties);
+                        lagrange.end_generation(f, values_g, fitness);
+                    } else {
+                        stop = search.update(boundary, tolerances, order, violations);
+                    }
+                } else {
+                    const auto evaluated = state.evaluate_columns(problem, search.Xeval(), search.values());
+                    state.end_iteration(observer, search.Xeval(), search.values());
+                    first = false;
+                    if (evaluated < plan.lambda) break;  // the budget ended inside the generation: no update
+                    stop = search.update(boundary, tolerances);
+                }
                 if (stop != cma::Stop::none) break;
             }
             const std::int64_t used = state.progress().evaluations - before;
             sequence.used(used);
-            if (log) log->push_back({plan.lambda, sigma0 * plan.sigma_factor, used, stop});
+            if (log) log->push_back({plan.lambda, sigma0 * plan.sigma_factor, used, stop, {}});
+            if (log && lagrangian) log->back().multipliers = lagrange.multipliers();
         }
         return state.finish();
     }

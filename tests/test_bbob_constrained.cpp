@@ -225,7 +225,7 @@ TEST_CASE("bbob-constrained: bad function, dimension or instance in one line", "
     test::expect_input_error("run --algo jade --problem bbob-constrained-f1 --dim 41 --evals 100", {"dim"});
     test::expect_input_error("run --algo jade --problem bbob-constrained-f1 --dim 2 --instance 0 --evals 100",
                              {"instance"});
-    test::expect_input_error("run --algo cmaes --problem bbob-constrained-f1 --dim 2 --evals 100",
+    test::expect_input_error("run --algo hs --problem bbob-constrained-f1 --dim 2 --evals 100",
                              {"does not handle constraints"});
 }
 

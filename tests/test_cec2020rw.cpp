@@ -197,7 +197,7 @@ TEST_CASE("cec2020rw: the problems by name in the engine and pride run", "[cec20
     test::expect_input_error("run --algo jade --problem cec2020rw-rc00 --dim 5 --evals 200", {"unknown problem"});
     test::expect_input_error("run --algo jade --problem cec2020rw-rc15 --dim 7 --instance 2 --evals 200",
                              {"instance", "has no instances"});
-    test::expect_input_error("run --algo cmaes --problem cec2020rw-rc15 --dim 7 --evals 200",
+    test::expect_input_error("run --algo hs --problem cec2020rw-rc15 --dim 7 --evals 200",
                              {"does not handle constraints"});
 }
 

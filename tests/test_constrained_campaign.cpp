@@ -352,9 +352,9 @@ TEST_CASE("pride bench: an algorithm that does not handle constraints is refused
     const std::string toml = dir.write("c.toml",
                                        "name = \"c\"\nseeds = 1\n[budget]\nevaluations = 100\n"
                                        "[[problem]]\nid = \"g06\"\ntype = \"cec2006-g06\"\ndim = 2\n"
-                                       "[[algorithm]]\nid = \"cma\"\ntype = \"cmaes\"\n");
+                                       "[[algorithm]]\nid = \"harmony\"\ntype = \"hs\"\n");
     pride::test::expect_input_error("bench '" + toml + "' --out '" + dir.file("c.sqlite") + "'",
-                                    {"algorithm 'cma' on problem 'g06'", "does not handle constraints"});
+                                    {"algorithm 'harmony' on problem 'g06'", "does not handle constraints"});
     CHECK(dir.entries() == std::vector<std::string>{"c.toml"});
     // A handler the algorithm does not have is refused as any other parameter value.
     const std::string bad = dir.write("d.toml",

@@ -147,6 +147,43 @@ TEST_CASE("counting: every box algorithm's calls of a user function are its eval
     CHECK(covered >= 14);
 }
 
+TEST_CASE("counting: every algorithm that handles constraints counts each constrained evaluation once",
+          "[counting][box][constraints]") {
+    int covered = 0;
+    for (const auto& entry : engine::algorithms().entries()) {
+        if (!entry.runs(engine::Kind::constrained_box)) continue;
+        ++covered;
+        // Each of its handlers (COLSHADE has its own rules and no `constraints`).
+        std::vector<std::string> handlers{""};
+        if (const auto* spec = entry.param("constraints")) handlers = spec->choices;
+        for (const auto& handler : handlers) {
+            for (const std::int64_t n : {1, 61, 300}) {
+                INFO(entry.name << " " << handler << " " << n);
+                auto calls = std::make_shared<std::int64_t>(0);
+                engine::CallbackSpec cb;
+                cb.lower = {-2.0, -2.0, -2.0};
+                cb.upper = {2.0, 2.0, 2.0};
+                cb.inequalities = 1;
+                cb.equalities = 1;
+                cb.constrained = [calls](std::span<const double> x, std::span<double> c) {
+                    ++*calls;
+                    c[0] = 1.0 - x[0] - x[1];
+                    c[1] = x[2] - 0.5;
+                    return x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+                };
+                engine::Budget b;
+                b.evaluations = n;
+                engine::AlgorithmSpec a{entry.name, {}};
+                if (!handler.empty()) a.params.set_from_string("constraints=" + handler);
+                const auto r = engine::run(a, engine::Problem(cb), b, 5);
+                CHECK(*calls == r.evaluations);
+                CHECK(r.evaluations <= n);
+            }
+        }
+    }
+    CHECK(covered >= 13);  // pso (2), the DE family and COLSHADE (7), CMA-ES (4)
+}
+
 TEST_CASE("counting: a user's objective on paths runs with every grid algorithm, each call an evaluation",
           "[counting][grid][user]") {
     // The length of a path, by the user's own function, counting its calls; its per-step form:

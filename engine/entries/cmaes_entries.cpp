@@ -1,6 +1,6 @@
 // The CMA-ES family (algorithms/cmaes.hpp): cmaes, ipop-cmaes and bipop-cmaes share one
 // instantiation (the restart scheme and the boundary policy are chosen once per run); sep-cmaes is
-// the diagonal one.
+// the diagonal one. Each also runs on problems with constraints (the `constraints` parameter).
 #include "algorithms/cmaes.hpp"
 
 #include "engine/family.hpp"
@@ -66,6 +66,74 @@ cma::SelectableRestarts restarts_of(const std::string& name) {
     return same;
 }
 
+/// The handlers of constraints CMA-ES offers: the DE family's (engine/family.hpp), its static
+/// penalty's r named constraint_penalty (`penalty` is the boundary policy's weight), and the
+/// augmented Lagrangian `al` with its parameters; all refused on problems without constraints.
+std::vector<ParamSpec> cma_constraint_params() {
+    std::vector<ParamSpec> specs;
+    for (auto& spec : constraint_params()) {
+        if (spec.name == "constraints") {
+            spec = choice("constraints", {"deb", "epsilon", "penalty", "al"}, "deb",
+                          "how the lambda points rank under constraints: Deb's (2000) feasibility rules, Takahama and "
+                          "Sakai's (2006) epsilon level, the static penalty f + constraint_penalty v, or by f plus the "
+                          "augmented Lagrangian of Atamna, Auger and Hansen (2016, 2017) as pycma adapts it")
+                       .only_with_constraints();
+        } else if (spec.name == "penalty") {
+            spec =
+                real("constraint_penalty", 1e6, 0.0, 1e300, "r of the static penalty f + r v (constraints = penalty)")
+                    .only_with_constraints();
+        }
+        specs.push_back(std::move(spec));
+    }
+    specs.push_back(real("al_k1", 3.0, 0.0, 1e6, "k1 of the AL's coefficient step (constraints = al)")
+                        .open_below()
+                        .only_with_constraints());
+    specs.push_back(real("al_k2", 5.0, 0.0, 1e6, "k2 of the AL's coefficient step (constraints = al)")
+                        .open_below()
+                        .only_with_constraints());
+    specs.push_back(
+        real("al_dgamma", 5.0, 0.0, 1e6, "d_gamma, the damping of the AL's multiplier step (constraints = al)")
+            .open_below()
+            .only_with_constraints());
+    specs.push_back(real("al_chi", 0.0, 0.0, 1e3,
+                         "chi, the factor of the AL's coefficient step; 0: 2^(1 / (5 D)) (constraints = al; else > 1)")
+                        .only_with_constraints());
+    return specs;
+}
+
+/// The configured algorithm with the constraint handling the parameters name.
+template <class A>
+A with_constraints(A a, const Params& p) {
+    const std::string& handler = p.choice("constraints");
+    a.augmented_lagrangian = handler == "al";
+    a.constraints.handler = handler == "epsilon"   ? ConstraintHandling::Handler::epsilon
+                            : handler == "penalty" ? ConstraintHandling::Handler::penalty
+                                                   : ConstraintHandling::Handler::deb;
+    a.constraints.epsilon.cp = p.real("epsilon_cp");
+    a.constraints.epsilon.tc = p.integer("epsilon_tc");
+    a.constraints.epsilon.theta = p.real("epsilon_theta");
+    a.constraints.penalty = p.real("constraint_penalty");
+    a.al.k1 = p.real("al_k1");
+    a.al.k2 = p.real("al_k2");
+    a.al.dgamma = p.real("al_dgamma");
+    a.al.chi = p.real("al_chi");
+    return a;
+}
+
+/// Adds running on boxes with constraints to a CMA-ES entry.
+template <class Configure>
+void add_cma_constrained_runner(AlgorithmEntry& e, Configure configure) {
+    for (auto& spec : cma_constraint_params()) e.params.push_back(std::move(spec));
+    add_runner<ConstrainedBoxTarget>(
+        e, Kind::constrained_box, [configure](const RunRequest& r, const ConstrainedBoxTarget& target) -> Result {
+            const auto algorithm = with_constraints(configure(r.params), r.params);
+            const ForwardingObserver forward{r.observer};
+            return std::visit(
+                [&](const auto& problem) -> Result { return algorithm.run(problem, r.termination, r.seed, forward); },
+                target.problem);
+        });
+}
+
 /// Bytes for dimension n: C, B and the eigen solver's n x n, four n x lambda_max buffers.
 auto cma_memory(bool full, double lambda_factor) {
     return [full, lambda_factor](const Params& p, std::size_t dimension) {
@@ -82,47 +150,57 @@ auto cma_memory(bool full, double lambda_factor) {
 void register_cmaes(AlgorithmRegistry& registry) {
     auto cmaes_params = common_params();
     cmaes_params.push_back(restarts_param({"restart", "none"}));
+    const auto configure_cmaes = [](const Params& p) {
+        return configure<cma::FullCovariance>(p, "cmaes", restarts_of(p.choice("restarts")));
+    };
     auto cmaes = box_algorithm(
         "cmaes", "cmaes",
         "CMA-ES (Hansen's 2016 tutorial: active weights, CSA, Hansen 2009's stopping criteria; restarted with the "
         "same lambda until the budget is spent)",
-        cmaes_params,
-        [](const Params& p) { return configure<cma::FullCovariance>(p, "cmaes", restarts_of(p.choice("restarts"))); });
+        cmaes_params, configure_cmaes);
     cmaes.grid_population = 0;  // the tutorial's lambda on grids too
     cmaes.memory = cma_memory(true, 1.0);
+    add_cma_constrained_runner(cmaes, configure_cmaes);
     registry.add(std::move(cmaes));
 
     auto ipop_params = common_params();
     ipop_params.push_back(
         real("factor", 2.0, 1.0, 4.0, "population growth at each restart (Auger and Hansen 2005: 2)"));
+    const auto configure_ipop = [](const Params& p) {
+        cma::Ipop r;
+        r.factor = p.real("factor");
+        return configure<cma::FullCovariance>(p, "ipop-cmaes", r);
+    };
     auto ipop = box_algorithm("ipop-cmaes", "cmaes",
                               "IPOP-CMA-ES: restarts with the population doubled (Auger and Hansen 2005)", ipop_params,
-                              [](const Params& p) {
-                                  cma::Ipop r;
-                                  r.factor = p.real("factor");
-                                  return configure<cma::FullCovariance>(p, "ipop-cmaes", r);
-                              });
+                              configure_ipop);
     ipop.grid_population = 0;  // the tutorial's lambda on grids too
     ipop.memory = cma_memory(true, cma::Ipop::max_lambda_factor());
+    add_cma_constrained_runner(ipop, configure_ipop);
     registry.add(std::move(ipop));
 
-    auto bipop =
-        box_algorithm("bipop-cmaes", "cmaes",
-                      "BIPOP-CMA-ES: restarts in a large and a small population regime (Hansen 2009)", common_params(),
-                      [](const Params& p) { return configure<cma::FullCovariance>(p, "bipop-cmaes", cma::Bipop{}); });
+    const auto configure_bipop = [](const Params& p) {
+        return configure<cma::FullCovariance>(p, "bipop-cmaes", cma::Bipop{});
+    };
+    auto bipop = box_algorithm("bipop-cmaes", "cmaes",
+                               "BIPOP-CMA-ES: restarts in a large and a small population regime (Hansen 2009)",
+                               common_params(), configure_bipop);
     bipop.grid_population = 0;  // the tutorial's lambda on grids too
     bipop.memory = cma_memory(true, cma::Bipop::max_lambda_factor());
+    add_cma_constrained_runner(bipop, configure_bipop);
     registry.add(std::move(bipop));
 
     auto sep_params = common_params();
     sep_params.push_back(restarts_param({"restart", "none", "ipop", "bipop"}));
-    auto sep = box_algorithm(
-        "sep-cmaes", "cmaes", "separable CMA-ES: diagonal covariance, O(D) per sample (Ros and Hansen 2008)",
-        sep_params, [](const Params& p) {
-            return configure<cma::DiagonalCovariance>(p, "sep-cmaes", restarts_of(p.choice("restarts")));
-        });
+    const auto configure_sep = [](const Params& p) {
+        return configure<cma::DiagonalCovariance>(p, "sep-cmaes", restarts_of(p.choice("restarts")));
+    };
+    auto sep = box_algorithm("sep-cmaes", "cmaes",
+                             "separable CMA-ES: diagonal covariance, O(D) per sample (Ros and Hansen 2008)", sep_params,
+                             configure_sep);
     sep.grid_population = 0;  // the tutorial's lambda on grids too
     sep.memory = cma_memory(false, cma::Ipop::max_lambda_factor());
+    add_cma_constrained_runner(sep, configure_sep);
     registry.add(std::move(sep));
 }
 

@@ -153,7 +153,7 @@ def test_ask_tell_refusals_change_nothing():
                           ({"inequalities": 0}, r"^inequalities: give how many constraint values"),
                           ({"inequalities": 1, "tolerance": math.nan}, r"^tolerance: must be a finite number"),
                           ({"tolerance": 1e-3}, r"^tolerance: only with constraints"),
-                          ({"inequalities": 1, "algo": "cmaes"}, r"^algo: cmaes does not handle constraints"),
+                          ({"inequalities": 1, "algo": "hs"}, r"^algo: hs does not handle constraints"),
                           ({"inequalities": 1, "algo": "nsga2", "objectives": 2}, r"^inequalities: nsga2 is multi")]:
         algo = kwargs.pop("algo", "de")
         with pytest.raises(ValueError, match=match):
@@ -210,7 +210,7 @@ def _error(**kwargs):
     ({"subject_to": None, "problem": lambda x: 1.0}, TypeError, r"^problem: with inequalities or equalities and no "
                                                                 r"subject_to, the function returns \(f, g\)"),
     ({"subject_to": None, "problem": lambda x: ("a", [0.0])}, TypeError, r"^problem: the function returns \(f, g\)"),
-    ({"algo": "cmaes"}, ValueError, r"^algo: cmaes does not handle constraints"),
+    ({"algo": "hs"}, ValueError, r"^algo: hs does not handle constraints"),
     ({"subject_to": None, "inequalities": None, "constraints": "epsilon"}, ValueError,
      r"^de: constraints says how constraints are handled; bounds has none"),
     ({"subject_to": None, "inequalities": None, "tolerance": 1e-3}, ValueError, r"^tolerance: only with constraints"),
@@ -274,7 +274,7 @@ def test_campaign_on_a_constrained_problem_records_violations(tmp_path):
 @pytest.mark.parametrize("problem,algo,match", [
     ({"id": "b", "problem": "bbob-constrained-f1", "dim": 1}, "de", "bbob-constrained-f1 takes a dimension from 2 to 40"),
     ({"id": "g", "problem": "cec2006-g06", "dim": 3}, "de", "cec2006-g06 has dimension 2, got 3"),
-    ({"id": "g", "problem": "cec2006-g06", "dim": 2}, "cmaes", "cmaes does not handle constraints"),
+    ({"id": "g", "problem": "cec2006-g06", "dim": 2}, "hs", "hs does not handle constraints"),
 ])
 def test_campaign_on_a_constrained_problem_refuses_in_one_line(problem, algo, match):
     with pytest.raises(ValueError, match=match) as e:

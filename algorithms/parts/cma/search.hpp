@@ -16,6 +16,7 @@
 
 #include "algorithms/parts/cma/stopping.hpp"
 #include "algorithms/parts/cma/strategy.hpp"
+#include "framework/constraint_order.hpp"
 #include "framework/error.hpp"
 #include "framework/one_of.hpp"
 #include "framework/problem.hpp"
@@ -125,11 +126,15 @@ class Search {
     std::int64_t lambda() const { return s_.lambda; }
 
     /// After the values of all lambda points: ranking, (41)-(47), the decomposition when due, and
-    /// the stopping criteria (Stop::none: go on).
-    template <class Boundary>
-    Stop update(const Boundary& boundary, const Tolerances& tolerances) {
+    /// the stopping criteria (Stop::none: go on). Under constraints the points rank by `order`
+    /// (framework/constraint_order.hpp) on (value, violation), and `added` (when given) is added
+    /// to each value first (the augmented Lagrangian's penalty); without them, by value alone.
+    template <class Boundary, class Order = PlainOrder>
+    Stop update(const Boundary& boundary, const Tolerances& tolerances, const Order& order = {},
+                std::span<const double> violations = {}, std::span<const double> added = {}) {
         const auto L = static_cast<Eigen::Index>(s_.lambda);
         for (std::size_t k = 0; k < fx_.size(); ++k) rank_[k] = fx_[k];
+        for (std::size_t k = 0; k < added.size(); ++k) rank_[k] += added[k];
         visit_policy(boundary, [&](const auto& b) {
             if constexpr (std::is_same_v<std::decay_t<decltype(b)>, Penalty>)
                 for (Eigen::Index k = 0; k < L; ++k)
@@ -137,10 +142,20 @@ class Search {
                         b.weight * (X_.col(k) - Xeval_.col(k)).cwiseQuotient(range_).squaredNorm();
         });
         std::iota(order_.begin(), order_.end(), Eigen::Index{0});
-        std::sort(order_.begin(), order_.end(), [&](Eigen::Index a, Eigen::Index b) {
-            const double fa = rank_[static_cast<std::size_t>(a)], fb = rank_[static_cast<std::size_t>(b)];
-            return fa < fb || (!(fb < fa) && a < b);
-        });
+        if constexpr (std::is_same_v<Order, PlainOrder>) {
+            std::sort(order_.begin(), order_.end(), [&](Eigen::Index a, Eigen::Index b) {
+                const double fa = rank_[static_cast<std::size_t>(a)], fb = rank_[static_cast<std::size_t>(b)];
+                return fa < fb || (!(fb < fa) && a < b);
+            });
+        } else {
+            // Deb's rules, the epsilon level and the static penalty are strict weak orders (the
+            // epsilon level's is that of (v or 0 when v <= epsilon, f)): ties go to the lower index.
+            std::sort(order_.begin(), order_.end(), [&](Eigen::Index a, Eigen::Index b) {
+                const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+                const double fa = rank_[ua], fb = rank_[ub], va = violations[ua], vb = violations[ub];
+                return order.better(fa, va, fb, vb) || (!order.better(fb, vb, fa, va) && a < b);
+            });
+        }
         for (std::size_t k = 0; k < order_.size(); ++k) sorted_[k] = rank_[static_cast<std::size_t>(order_[k])];
         auto ranked = [&](std::int64_t i) { return Y_.col(order_[static_cast<std::size_t>(i)]); };
 
@@ -275,7 +290,7 @@ class Search {
         }
         if (no_effect) return Stop::no_effect_axis;
         if (history_.tol_fun(t.fun)) return Stop::tol_fun;
-        if (history_.stagnation(scratch_)) return Stop::stagnation;
+        if (t.stagnation && history_.stagnation(scratch_)) return Stop::stagnation;
         return Stop::none;
     }
 

@@ -53,6 +53,9 @@ struct Tolerances {
     double x = 1e-12;  // relative to sigma_0 in each coordinate
     double x_up = 1e4;
     double condition = 1e14;
+    // Off under the augmented Lagrangian, whose ranked values move with its coefficients (pycma's
+    // ConstrainedFitnessAL example sets tolstagnation 0).
+    bool stagnation = true;
     void validate(const std::string& who) const {
         require(fun >= 0.0 && std::isfinite(fun), who, "tol_fun must be finite and >= 0");
         require(x >= 0.0 && std::isfinite(x), who, "tol_x must be finite and >= 0");
