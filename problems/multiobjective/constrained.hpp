@@ -154,17 +154,27 @@ class Tnk : public TwoByTwo {
     }
 };
 
-/// C1-DTLZ1 (Jain and Deb 2014): DTLZ1 and g = f_M / 0.6 + sum_{i<M} f_i / 0.5 - 1 <= 0.
-class C1Dtlz1 {
+/// What C1-DTLZ1 and C2-DTLZ2 share: a DTLZ problem's box and objectives, and one inequality.
+template <class Dtlz>
+class DtlzWithConstraint {
   public:
-    static constexpr std::string_view name() noexcept { return "c1-dtlz1"; }
-    C1Dtlz1(std::size_t objectives, std::size_t k) : dtlz_(objectives, k) {}
+    DtlzWithConstraint(std::size_t objectives, std::size_t k) : dtlz_(objectives, k) {}
     std::size_t dimension() const noexcept { return dtlz_.dimension(); }
     std::span<const double> lower() const noexcept { return dtlz_.lower(); }
     std::span<const double> upper() const noexcept { return dtlz_.upper(); }
     std::size_t objectives() const noexcept { return dtlz_.objectives(); }
     ConstraintCounts constraint_counts() const noexcept { return {1, 0}; }
     double violation(std::span<const double> g) const noexcept { return sum_violation(g); }
+
+  protected:
+    Dtlz dtlz_;
+};
+
+/// C1-DTLZ1 (Jain and Deb 2014): DTLZ1 and g = f_M / 0.6 + sum_{i<M} f_i / 0.5 - 1 <= 0.
+class C1Dtlz1 : public DtlzWithConstraint<Dtlz1> {
+  public:
+    static constexpr std::string_view name() noexcept { return "c1-dtlz1"; }
+    C1Dtlz1(std::size_t objectives, std::size_t k) : DtlzWithConstraint(objectives, k) {}
     void evaluate_constrained(std::span<const double> x, std::span<double> f, std::span<double> g) const noexcept {
         dtlz_.evaluate(x, f);
         const std::size_t m = f.size();
@@ -176,23 +186,15 @@ class C1Dtlz1 {
     Matrix reference_front(std::size_t points) const {
         return multiobjective::reference_front("dtlz1", objectives(), points);
     }
-
-  private:
-    Dtlz1 dtlz_;
 };
 
 /// C2-DTLZ2 (Jain and Deb 2014): DTLZ2 and g = min(min_i [(f_i - 1)^2 + sum_{j != i} f_j^2 - r^2],
 /// sum_i (f_i - 1/sqrt M)^2 - r^2) <= 0, r = 0.4 for M = 3 and 0.5 otherwise.
-class C2Dtlz2 {
+class C2Dtlz2 : public DtlzWithConstraint<Dtlz2> {
   public:
     static constexpr std::string_view name() noexcept { return "c2-dtlz2"; }
-    C2Dtlz2(std::size_t objectives, std::size_t k) : dtlz_(objectives, k), r_(objectives == 3 ? 0.4 : 0.5) {}
-    std::size_t dimension() const noexcept { return dtlz_.dimension(); }
-    std::span<const double> lower() const noexcept { return dtlz_.lower(); }
-    std::span<const double> upper() const noexcept { return dtlz_.upper(); }
-    std::size_t objectives() const noexcept { return dtlz_.objectives(); }
-    ConstraintCounts constraint_counts() const noexcept { return {1, 0}; }
-    double violation(std::span<const double> g) const noexcept { return sum_violation(g); }
+    C2Dtlz2(std::size_t objectives, std::size_t k)
+        : DtlzWithConstraint(objectives, k), r_(objectives == 3 ? 0.4 : 0.5) {}
     void evaluate_constrained(std::span<const double> x, std::span<double> f, std::span<double> g) const noexcept {
         dtlz_.evaluate(x, f);
         g[0] = constraint(f);
@@ -222,7 +224,6 @@ class C2Dtlz2 {
     }
 
   private:
-    Dtlz2 dtlz_;
     double r_;
 };
 
