@@ -216,9 +216,9 @@ int run_main(int argc, char** argv) {
     auto* front_cmd = app.add_subcommand(
         "front", "one run of a multi-objective algorithm (ZDT, DTLZ, or a grid with several criteria): its front");
     front_cmd->add_option("--algo", front.algo, mo_names)->required();
-    front_cmd->add_option(
-        "--problem", front.problem,
-        "zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7, or constrained: constr, srn, tnk, c1-dtlz1, c2-dtlz2; real-world: re21-re91, cre21-cre51 (or --map)");
+    front_cmd->add_option("--problem", front.problem,
+                          "zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7, or constrained: constr, srn, tnk, c1-dtlz1, "
+                          "c2-dtlz2; real-world: re21-re91, cre21-cre51 (or --map)");
     front_cmd->add_option("--dim", front.dim, "number of variables n (default: the paper's)")
         ->check(integer_in(1, max_count));
     front_cmd->add_option("--map", front.map, "a grid: Moving AI .map or 0/1 matrix file")->check(a_path());
