@@ -1,6 +1,6 @@
 // What handling constraints costs the framework per evaluation: each algorithm that takes
-// constraints runs on the sphere (D = 30, [-5, 5]^D) and on the same sphere with one inequality
-// that always holds (g = -1, free to compute), so that the two runs make the same comparisons and
+// constraints runs on the sphere (problems/continuous/functions.hpp: D = 30, [-5.12, 5.12]^D) and on the same sphere
+// with one inequality that always holds (g = -1, free to compute), so that the two runs make the same comparisons and
 // differ only by the constrained path (the constraint buffer, the violation, the handler's order,
 // the first-feasible bookkeeping). Each run: exactly --evals evaluations, seed 1; the time per
 // evaluation is the least of 7 timings (bench/best_time.hpp, the thread's CPU clock).
@@ -21,27 +21,15 @@
 #include "bench/best_time.hpp"
 #include "framework/constraints.hpp"
 #include "framework/termination.hpp"
+#include "problems/continuous/functions.hpp"
 
 namespace {
 
 using namespace pride;
 
-struct Sphere {
-    std::vector<double> lo, hi;
-    explicit Sphere(std::size_t d) : lo(d, -5.0), hi(d, 5.0) {}
-    std::size_t dimension() const { return lo.size(); }
-    std::span<const double> lower() const { return lo; }
-    std::span<const double> upper() const { return hi; }
-    double evaluate(std::span<const double> x) const {
-        double s = 0.0;
-        for (const double v : x) s += v * v;
-        return s;
-    }
-};
-
 /// The sphere with one inequality that always holds.
-struct HeldSphere : Sphere {
-    using Sphere::Sphere;
+struct HeldSphere : continuous::Sphere {
+    using continuous::Sphere::Sphere;
     ConstraintCounts constraint_counts() const { return {1, 0}; }
     double evaluate_constrained(std::span<const double> x, std::span<double> c) const {
         c[0] = -1.0;
@@ -56,7 +44,8 @@ void measure(const std::string& name, const A& algorithm, std::size_t dim, std::
     Termination t;
     t.max_evaluations = evals;
     double plain_best = 0.0, held_best = 0.0;
-    const double plain = bench::best_ns([&] { plain_best = algorithm.run(Sphere(dim), t, 1).best_f; }, evals);
+    const double plain =
+        bench::best_ns([&] { plain_best = algorithm.run(continuous::Sphere(dim), t, 1).best_f; }, evals);
     const double held = bench::best_ns([&] { held_best = algorithm.run(HeldSphere(dim), t, 1).best_f; }, evals);
     fmt::print("{},{:.2f},{:.2f},{:.3f},{}\n", name, plain, held, held / plain, plain_best == held_best);
 }

@@ -16,6 +16,7 @@
 #include "engine/problem.hpp"
 #include "engine/run.hpp"
 #include "framework/constraints.hpp"
+#include "problems/continuous/functions.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/disc_problem.hpp"
 #include "tests/test_support.hpp"
@@ -76,19 +77,8 @@ TEST_CASE("colshade: the optimum under an inequality, every evaluation counted, 
     CHECK(again.best_x == r.best_x);
     CHECK(again.history == r.history);
     // Without constraints it is L-SHADE with the Levy mutation: the sphere's optimum.
-    struct Sphere {
-        std::vector<double> lo = std::vector<double>(5, -5.0), hi = std::vector<double>(5, 5.0);
-        std::size_t dimension() const { return 5; }
-        std::span<const double> lower() const { return lo; }
-        std::span<const double> upper() const { return hi; }
-        double evaluate(std::span<const double> x) const {
-            double s = 0.0;
-            for (const double v : x) s += v * v;
-            return s;
-        }
-    };
     t.max_evaluations = 20000;
-    CHECK(a.run(Sphere{}, t, 1).best_f < 1e-12);
+    CHECK(a.run(continuous::Sphere(5), t, 1).best_f < 1e-12);
 }
 
 TEST_CASE("colshade: CEC 2006 problems with equalities reach their best-known values", "[colshade]") {
