@@ -21,48 +21,13 @@ import re
 import subprocess
 import sys
 import time
-import xml.etree.ElementTree as ET
-import zipfile
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 from scipy.stats import mannwhitneyu
 
-SHEET = {"m": "http://schemas.openxmlformats.org/spreadsheetml/2006/main"}
-
-
-def workbook_sheet(path, number):
-    """The 25 x 57 values of one sheet (an .xlsx is zipped XML; cells named A1 .. BE25)."""
-    root = ET.fromstring(zipfile.ZipFile(path).read(f"xl/worksheets/sheet{number}.xml"))
-    rows = []
-    for row in root.find("m:sheetData", SHEET):
-        values = [float("nan")] * 57
-        for cell in row:
-            column = 0
-            for letter in re.match(r"[A-Z]+", cell.get("r")).group(0):
-                column = column * 26 + ord(letter) - 64
-            v = cell.find("m:v", SHEET)
-            if v is not None and column <= 57:
-                values[column - 1] = float(v.text)
-        rows.append(values)
-    return np.array(rows)
-
-
-def eight_digits(values):
-    return np.array([float(f"{v:.8g}") for v in values])
-
-
-def budget(dim):
-    return 100000 if dim <= 10 else 200000 if dim <= 30 else 400000 if dim <= 50 else 800000 if dim <= 150 else 1000000
-
-
-def deb_ranks(f, v):
-    keys = [(vi > 0, vi if vi > 0 else fi) for fi, vi in zip(f, v)]
-    order = sorted(range(len(keys)), key=lambda i: keys[i])
-    positions = {}
-    for position, i in enumerate(order):
-        positions.setdefault(keys[i], []).append(position)
-    return np.array([np.mean(positions[k]) for k in keys])
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
+from cec2020rw_page import budget, deb_ranks, eight_digits, workbook_sheet  # noqa: E402
 
 
 def main():
@@ -101,15 +66,15 @@ def main():
     with ThreadPoolExecutor(args.jobs) as pool:
         results = dict(zip(jobs, pool.map(run, jobs)))
 
-    published_f, published_v = workbook_sheet(book, 1), workbook_sheet(book, 2)
+    published_f, published_v = np.array(workbook_sheet(book, 1)), np.array(workbook_sheet(book, 2))
     print("| problem | D | evaluations | published: feasible, median f | pride: feasible, median f | p | |")
     print("|---|---:|---:|---|---|---:|---|")
     apart = better = 0
     for k, dim in problems:
         pf, pv = published_f[:, k - 1], published_v[:, k - 1]
-        of = eight_digits([results[(k, dim, s)][0] for s in range(1, args.runs + 1)])
+        of = np.array(eight_digits([results[(k, dim, s)][0] for s in range(1, args.runs + 1)]))
         ov = np.array([results[(k, dim, s)][1] for s in range(1, args.runs + 1)])
-        ranks = deb_ranks(np.concatenate([pf, of]), np.concatenate([pv, ov]))
+        ranks = np.array(deb_ranks(list(np.concatenate([pf, of])), list(np.concatenate([pv, ov]))))
         ours, theirs = ranks[len(pf):], ranks[:len(pf)]
         p = 1.0 if np.all(ranks == ranks[0]) else mannwhitneyu(theirs, ours, alternative="two-sided").pvalue
         verdict = ""

@@ -285,9 +285,11 @@ int run_main(int argc, char** argv) {
     report_cmd->add_option("stores", report.stores, "the SQLite store written by pride bench (or several, read as one)")
         ->required()
         ->check(a_path());
-    report_cmd->add_option("--format", report.format,
-                           "md (default), csv, latex, ert-csv (the ERT of a campaign with target precisions), or cec "
-                           "and cec-csv (the CEC competitions' errors f - f* at their checkpoints)");
+    report_cmd->add_option(
+        "--format", report.format,
+        "md (default), csv, latex, ert-csv (the ERT of a campaign with target precisions), or cec "
+        "and cec-csv (the CEC competitions' errors f - f* at their checkpoints), cec2020rw and cec2020rw-csv (the "
+        "CEC 2020 real-world competition's tables and score)");
     report_cmd->add_option("--plots", report.plots, "write convergence, final-value and path figures (PNG, SVG) here")
         ->check(a_path());
     report_cmd

@@ -21,6 +21,7 @@
 #include "cli/output.hpp"
 #include "experiment/html/report_page.hpp"
 #include "experiment/report/cec.hpp"
+#include "experiment/report/cec2020rw_table.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/storage/file_name.hpp"
 #include "experiment/storage/reader.hpp"
@@ -166,8 +167,10 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
 
 int report_command(const ReportOptions& o, std::ostream& out) {
     const bool cec = o.format == "cec" || o.format == "cec-csv";
-    require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv" || cec, "--format",
-            "expected md, csv, latex, ert-csv, cec or cec-csv, got '" + o.format + "'");
+    const bool rw = o.format == "cec2020rw" || o.format == "cec2020rw-csv";
+    require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv" || cec || rw,
+            "--format",
+            "expected md, csv, latex, ert-csv, cec, cec-csv, cec2020rw or cec2020rw-csv, got '" + o.format + "'");
     OutputFiles files;  // committed once what is printed was printed
     if (!o.html.empty()) {
         // The page holds the tables itself; what is printed is where it is.
@@ -179,11 +182,22 @@ int report_command(const ReportOptions& o, std::ostream& out) {
         print_then_commit(out, page.index + ": the report, with " + std::to_string(page.figures) + " figures\n", files);
         return 0;
     }
-    if (cec) {
+    if (cec || rw) {
         // The CEC competitions' table alone (experiment/report/cec.hpp): no comparison, no figures.
         require(o.plots.empty(), "--plots", "draws the comparison report's figures; give --format md, csv or latex");
-        require(!o.raw, "--raw", "gives values f; the CEC table is of errors f - f* (give --format md, csv or latex)");
+        require(!o.raw, "--raw",
+                rw ? "the cec2020rw tables are of values f already; leave --raw out"
+                   : "gives values f; the CEC table is of errors f - f* (give --format md, csv or latex)");
         const std::string name = o.stores.size() == 1 ? o.stores.front() : std::string("report");
+        if (rw) {
+            // The CEC 2020 real-world competition's tables and score (experiment/report/cec2020rw_table.hpp).
+            const auto table = report::cec2020rw::make_table(report::read_stores(o.stores), name);
+            print_then_commit(out,
+                              o.format == "cec2020rw" ? report::cec2020rw::render_markdown(table)
+                                                      : report::cec2020rw::render_csv(table),
+                              files);
+            return 0;
+        }
         const report::cec::Table table = report::cec::make_table(report::read_stores(o.stores), name);
         print_then_commit(out, o.format == "cec" ? report::cec::render_markdown(table) : report::cec::render_csv(table),
                           files);

@@ -220,7 +220,7 @@ TEST_CASE("cec suites: a campaign without a budget or seeds takes the suites' ru
     };
     CHECK_THAT(refused("", y2017 + y2022),
                Contains("c.toml: missing key 'seeds': only a campaign of one CEC suite's problems has a default (51 "
-                        "runs for cec2017, 30 for cec2022)"));
+                        "runs for cec2017, 30 for cec2022, 25 for cec2020rw)"));
     CHECK_THAT(refused("seeds = 3\n", y2017 + "[[problem]]\nid = \"sph\"\ntype = \"sphere\"\ndim = 2\n"),
                Contains("missing [budget]") && Contains("problem 'sph' has none"));
     CHECK_THAT(refused("", "[[suite]]\nname = \"cec2022\"\nfunctions = [1]\ndimensions = [2]\n"),
@@ -253,7 +253,7 @@ TEST_CASE("cec suites: instances, dimensions without data and unknown functions 
     refused("[[suite]]\nname = \"cec2022\"\nfunctions = [0]\ndimensions = [10]\n",
             {"c.toml:7:13: function 0 is not in the cec2022 suite (1-12)"});
     refused("[[suite]]\nname = \"cec2021\"\ndimensions = [10]\n",
-            {"c.toml:5: unknown suite 'cec2021' (bbob, classic, cec2017, cec2022)"});
+            {"c.toml:5: unknown suite 'cec2021' (bbob, classic, cec2017, cec2022, cec2020rw)"});
     // A [[problem]] on a CEC function: the catalog's own refusals, naming the problem.
     refused("[[problem]]\nid = \"p\"\ntype = \"cec2017-f3\"\ndim = 10\ninstance = 2\n",
             {"c.toml:5", "problem 'p'", "CEC functions have no instances"});
@@ -445,7 +445,7 @@ TEST_CASE("cec suites: --format cec refuses runs without a budget or checkpoints
     };
     misuse("--format cec --raw", {"--raw", "errors f - f*"});
     misuse("--format cec --plots " + quoted(s.dir.file("figures")), {"--plots"});
-    misuse("--format cecc", {"expected md, csv, latex, ert-csv, cec or cec-csv, got 'cecc'"});
+    misuse("--format cecc", {"expected md, csv, latex, ert-csv, cec, cec-csv, cec2020rw or cec2020rw-csv, got 'cecc'"});
 }
 
 TEST_CASE("cec suites: a campaign stores each run's budget and its best values at the checkpoints", "[cec-suites]") {

@@ -39,6 +39,7 @@ std::string where_of(const Campaign& c, int line, const std::string& what) {
 /// The CEC suite of a problem's function by the catalog (cec2017-fN and cec2022-fN, from a
 /// [[suite]] or a [[problem]] alike), or nullptr.
 const continuous::cec::SuiteRules* cec_rules_of(const ContinuousSpec& f) {
+    if (f.function.rfind("cec2020rw-rc", 0) == 0) return continuous::cec::suite_rules("cec2020rw");
     const auto* item = continuous::catalog().find(f.function);
     return item ? continuous::cec::suite_rules(item->entry.suite) : nullptr;
 }
@@ -96,7 +97,7 @@ void apply_suite_rules(Campaign& c) {
         require(c.seeds == 0 && !other && suites.size() == 1, file,
                 suites.empty() ? std::string("missing key 'seeds'")
                                : "missing key 'seeds': only a campaign of one CEC suite's problems has a default (51 "
-                                 "runs for cec2017, 30 for cec2022)");
+                                 "runs for cec2017, 30 for cec2022, 25 for cec2020rw)");
         c.seeds = continuous::cec::suite_rules(*suites.begin())->runs;
     }
     if (no_budget && !c.budget.evaluations && !c.budget.iterations && !c.evaluations_per_dim)

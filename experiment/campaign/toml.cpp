@@ -20,6 +20,7 @@
 #include "framework/read_file.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/suites.hpp"
+#include "problems/continuous/cec2020rw/cec2020rw.hpp"
 
 namespace pride::campaign {
 
@@ -300,6 +301,49 @@ void add_cec_suite(std::vector<CampaignProblem>& out, const std::string& file, c
         }
 }
 
+/// [[suite]] name = "cec2020rw": the CEC 2020 real-world constrained problems (RC01-RC57 but RC24,
+/// which pride does not have), with `functions` (default: every one pride has); each problem has its
+/// own dimension (the key `dimensions` is refused) and no instances. Ids "PREFIX-rcNN".
+void add_rw_suite(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t,
+                  Expansion& expansion) {
+    namespace rw = continuous::cec2020rw;
+    const int line = static_cast<int>(t.source().begin.line);
+    const std::string where = fmt::format("{}:{}", file, line);
+    for (const char* key : {"instances", "dimensions"})
+        if (const auto* n = t.get(key))
+            fail(at_column(file, *n), fmt::format("'{}': each cec2020rw problem has one dimension of its own and no "
+                                                  "instances; leave the key out",
+                                                  key));
+    const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : std::string("cec2020rw");
+    std::vector<std::int64_t> functions;
+    for (int k = 1; k <= rw::kProblems; ++k)
+        if (rw::implemented(k)) functions.push_back(k);
+    if (const auto* n = t.get("functions")) functions = need_integers(file, *n, "functions");
+    if (functions.empty()) fail(where, "the lists of a [[suite]] must not be empty");
+    for (const std::int64_t f : functions)
+        if (f < 1 || f > rw::kProblems || !rw::implemented(static_cast<int>(f)))
+            fail(at_column(file, *t.get("functions")),
+                 f >= 1 && f <= rw::kProblems
+                     ? fmt::format("problem {} of the cec2020rw suite is not in pride (see pride list)", f)
+                     : fmt::format("problem {} is not in the cec2020rw suite (1-{})", f, rw::kProblems));
+    double memory = 0.0;
+    std::vector<std::int64_t> dims;
+    for (const std::int64_t f : functions) {
+        dims.push_back(static_cast<std::int64_t>(rw::Problem(static_cast<int>(f)).dimension()));
+        memory += problem_memory(ContinuousSpec{fmt::format("cec2020rw-rc{:02}", f), dims.back()});
+    }
+    expansion.add(functions.size(), memory, t.get("functions") ? at_column(file, *t.get("functions")) : where,
+                  "this [[suite]] expands to");
+    for (std::size_t i = 0; i < functions.size(); ++i) {
+        CampaignProblem p;
+        p.line = line;
+        p.suite = "cec2020rw";
+        p.id = fmt::format("{}-rc{:02}", prefix, functions[i]);
+        p.spec = ContinuousSpec{fmt::format("cec2020rw-rc{:02}", functions[i]), dims[i]};
+        out.push_back(std::move(p));
+    }
+}
+
 /// [[suite]]: name = "bbob" (functions 1-24, instances from 1) or "classic" (Yao et al. 1999's
 /// F1-F23, instance 0 as defined), with `functions`, `instances` and `dimensions` lists; one
 /// problem per (function, instance, dimension), "PREFIX-fN-iK-dD" (fixed-dimension functions: their
@@ -313,12 +357,16 @@ void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const
             fail(at(file, value), "unknown key '" + std::string(key.str()) +
                                       "' in a [[suite]] (name, id, functions, instances, dimensions)");
     const std::string name = need_string(file, t, "name", where);
+    if (name == "cec2020rw") {
+        add_rw_suite(out, file, t, expansion);
+        return;
+    }
     if (continuous::cec::suite_rules(name)) {
         add_cec_suite(out, file, t, *continuous::cec::suite_rules(name), expansion);
         return;
     }
     if (name != "bbob" && name != "classic")
-        fail(where, "unknown suite '" + name + "' (bbob, classic, cec2017, cec2022)");
+        fail(where, "unknown suite '" + name + "' (bbob, classic, cec2017, cec2022, cec2020rw)");
     const bool bbob = name == "bbob";
     const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : name;
     std::vector<std::int64_t> functions, instances, dimensions;

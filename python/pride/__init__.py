@@ -23,6 +23,7 @@ __all__ = [
     "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
     "exact", "pareto", "roughset", "Campaign", "read_store", "report", "hypervolume", "hypervolume_contributions",
     "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance", "attainment_surface", "front", "plan_front",
+    "cec2020rw_score",
 ]
 
 
@@ -340,6 +341,16 @@ def pareto(grid, start, goal, *, objectives="length,turns", corner_cutting=False
         objectives = ",".join(_str("objectives", o) for o in _list("objectives", objectives))
     objectives = _str("objectives", objectives)
     return _pride.pareto(_grid(grid), start, goal, objectives, _bool("corner_cutting", corner_cutting))
+
+
+def cec2020rw_score(results, dims):
+    """The CEC 2020 real-world constrained competition's ranking (Kumar et al. 2020, the guidelines'
+    eq. 4-9) of ``results``, a dict {name: (f, violation)} whose arrays are (problems, runs): each
+    run's final best f and its violation (0 when feasible), one row per problem, ``dims`` the
+    problems' dimensions (they set eq. 5's weights). Returns {name: {"best", "mean", "median",
+    "total", "rank"}}: the three weighted sums of normalised adjusted values, PM (``total``, lower is
+    better) and its rank. Works on published results as on pride's (docs/constraints.md)."""
+    return _pride.cec2020rw_score(results, dims)
 
 
 def hypervolume(points, ref):

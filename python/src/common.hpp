@@ -240,5 +240,7 @@ void bind_campaign(py::module_& m);
 void bind_pareto(py::module_& m);
 /// pride.front and pride.plan_front: multi-objective runs (front.cpp).
 void bind_front(py::module_& m);
+/// pride.cec2020rw_score: the CEC 2020 real-world competition's ranking (score.cpp).
+void bind_score(py::module_& m);
 
 }  // namespace pride::python

@@ -859,5 +859,6 @@ PYBIND11_MODULE(_pride, m) {
     bind_roughset(m);
     bind_campaign(m);
     bind_pareto(m);
+    bind_score(m);
     bind_front(m);
 }

@@ -137,6 +137,10 @@ def api(tmp_path):
         "crowding_distance": (lambda **o: pride.crowding_distance(**{"points": PTS, **o}), dict(points=POINTS)),
         "attainment_surface": (lambda **o: pride.attainment_surface(**{"runs": [PTS[:, :2]], "k": 1, **o}),
                                dict(runs=[None, 5, "ab", object(), [None], [[[1.0, 2.0, 3.0]]]], k=INT_REQUIRED)),
+        "cec2020rw_score": (lambda **o: pride.cec2020rw_score(**{"results": {"a": (np.ones((1, 3)), np.zeros((1, 3)))},
+                                                                 "dims": [5], **o}),
+                            dict(results=[None, 5, "ab", [1], {"a": 5}, {5: (1, 2)}, {"a": ("x", [0.0])}],
+                                 dims=[None, 5, "ab", [1.5], [None], [True], [0], []])),
     }
 
 

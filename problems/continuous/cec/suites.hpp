@@ -4,7 +4,9 @@
 // CatalogEntry::dims), and the budget and number of runs each competition prescribes (section 2.1,
 // "Experimental Settings", of each technical report): CEC 2017, "Runs / problem: 51", "MaxFES:
 // 10000*D"; CEC 2022, "Runs / problem: 30", MaxFES 200,000 at D = 10 and 1,000,000 at D = 20 (no
-// MaxFES for the D = 2 the official 2022 code also defines).
+// MaxFES for the D = 2 the official 2022 code also defines); CEC 2020 real-world constrained (the
+// problems cec2020rw-rcNN, each of its own dimension), 25 runs and MaxFEs by D (Kumar et al. 2020,
+// the guidelines' section 1 and eq. 1).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -14,23 +16,27 @@
 namespace pride::continuous::cec {
 
 struct SuiteRules {
-    std::string_view name;  // "cec2017", "cec2022"
+    std::string_view name;  // "cec2017", "cec2022", "cec2020rw"
     int functions = 0;      // F1 ... F<functions>
     std::int64_t runs = 0;  // runs per problem the competition prescribes
 };
 
 /// The rules of the suite `name`, or nullptr for a name that is no CEC suite.
 inline const SuiteRules* suite_rules(std::string_view name) {
-    static constexpr SuiteRules rules[] = {{"cec2017", 30, 51}, {"cec2022", 12, 30}};
+    static constexpr SuiteRules rules[] = {{"cec2017", 30, 51}, {"cec2022", 12, 30}, {"cec2020rw", 57, 25}};
     for (const SuiteRules& r : rules)
         if (r.name == name) return &r;
     return nullptr;
 }
 
 /// MaxFES as the competition's rules give it: CEC 2017 10000 D; CEC 2022 200,000 at D = 10 and
-/// 1,000,000 at D = 20; empty for another suite or dimension.
+/// 1,000,000 at D = 20; CEC 2020 real-world by D (its guidelines' eq. 1: 100,000 up to D = 10, then
+/// 200,000 up to 30, 400,000 up to 50, 800,000 up to 150, 1,000,000 above); empty for another suite
+/// or dimension.
 inline std::optional<std::int64_t> default_evaluations(std::string_view suite, std::int64_t dim) {
     if (suite == "cec2017") return 10000 * dim;
+    if (suite == "cec2020rw")
+        return dim <= 10 ? 100'000 : dim <= 30 ? 200'000 : dim <= 50 ? 400'000 : dim <= 150 ? 800'000 : 1'000'000;
     if (suite == "cec2022" && dim == 10) return 200'000;
     if (suite == "cec2022" && dim == 20) return 1'000'000;
     return std::nullopt;

@@ -1,0 +1,79 @@
+// pride.cec2020rw_score: the CEC 2020 real-world competition's ranking
+// (experiment/report/cec2020rw_score.hpp) of runs given as arrays, pride's or published ones.
+#include <fmt/format.h>
+
+#include <string>
+#include <vector>
+
+#include "common.hpp"
+#include "experiment/report/cec2020rw_score.hpp"
+
+namespace pride::python {
+namespace {
+
+namespace rw = report::cec2020rw;
+
+/// results: {name: (f, violation)}, each a (problems, runs) array; dims: one integer per problem.
+py::dict cec2020rw_score(const py::object& results, const py::object& dims) {
+    if (!py::isinstance<py::dict>(results))
+        throw py::type_error("results: expected a dict {name: (f, violation)}, got " +
+                             std::string(py::str(py::type::of(results).attr("__name__"))));
+    std::vector<std::int64_t> d;
+    if (!py::isinstance<py::sequence>(dims) || py::isinstance<py::str>(dims))
+        throw py::type_error("dims: expected a sequence of integers, one per problem");
+    for (const py::handle item : py::reinterpret_borrow<py::sequence>(dims)) {
+        if (!py::isinstance<py::int_>(item) || py::isinstance<py::bool_>(item))
+            throw py::type_error("dims: expected integers, got " +
+                                 std::string(py::str(py::type::of(item).attr("__name__"))));
+        d.push_back(item.cast<std::int64_t>());
+        require(d.back() >= 1, "dims", fmt::format("a dimension must be >= 1, got {}", d.back()));
+    }
+    require(!d.empty(), "dims", "no problems");
+    const auto& table = results.cast<py::dict>();
+    require(!table.empty(), "results", "no algorithms");
+    std::vector<std::string> names;
+    std::vector<std::vector<rw::Summary>> summaries;
+    for (const auto& [key, value] : table) {
+        if (!py::isinstance<py::str>(key)) throw py::type_error("results: expected names (str) as keys");
+        const std::string name = key.cast<std::string>();
+        const std::string where = "results['" + name + "']";
+        if (!py::isinstance<py::tuple>(value) || py::len(value) != 2)
+            throw py::type_error(where + ": expected a pair (f, violation)");
+        const auto pair = value.cast<py::tuple>();
+        const auto f = real_array(pair[0], where + "[0]");
+        const auto v = real_array(pair[1], where + "[1]");
+        for (const auto* a : {&f, &v})
+            require(a->ndim() == 2 && a->shape(0) == static_cast<py::ssize_t>(d.size()) && a->shape(1) >= 1, where,
+                    fmt::format("f and violation must be ({}, runs) arrays, one row per problem of dims", d.size()));
+        require(f.shape(1) == v.shape(1), where, "f and violation must have the same shape");
+        names.push_back(name);
+        summaries.emplace_back();
+        const py::ssize_t runs = f.shape(1);
+        std::vector<rw::Outcome> outcomes(static_cast<std::size_t>(runs));
+        for (py::ssize_t j = 0; j < f.shape(0); ++j) {
+            for (py::ssize_t r = 0; r < runs; ++r) outcomes[static_cast<std::size_t>(r)] = {f.at(j, r), v.at(j, r)};
+            summaries.back().push_back(rw::summarise(outcomes, fmt::format("{}, problem {}", where, j)));
+        }
+    }
+    const auto scores = rw::score(summaries, d);
+    const auto ranks = rw::ranks(scores);
+    py::dict out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        py::dict s;
+        s["best"] = scores[i].best;
+        s["mean"] = scores[i].mean;
+        s["median"] = scores[i].median;
+        s["total"] = scores[i].total;
+        s["rank"] = ranks[i];
+        out[py::str(names[i])] = s;
+    }
+    return out;
+}
+
+}  // namespace
+
+void bind_score(py::module_& m) {
+    m.def("cec2020rw_score", &cec2020rw_score, py::arg("results"), py::arg("dims"));
+}
+
+}  // namespace pride::python

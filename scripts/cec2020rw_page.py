@@ -1,0 +1,221 @@
+#!/usr/bin/env python3
+"""Regenerates docs/results/cec2020rw.md from its runs, or checks it.
+
+    PRIDE_DATA=... PYTHONPATH=build/python /usr/bin/python3 scripts/cec2020rw_page.py run
+        runs every configuration of CONFIGS on every CEC 2020 real-world problem pride has, at the
+        competition's budgets with seeds 1-25 (`pride run`, two at a time), writes the final best
+        f, violation and first feasible evaluation of each run to docs/results/data/cec2020rw.csv,
+        then the page. About 30 min per configuration on two cores.
+    PRIDE_DATA=... PYTHONPATH=build/python /usr/bin/python3 scripts/cec2020rw_page.py render
+        rewrites the page's generated blocks from the data and the entrants' published results.
+    PRIDE_DATA=... PYTHONPATH=build/python /usr/bin/python3 scripts/cec2020rw_page.py check
+        exits 1 when a generated block differs from what they give (python/tests/test_cec2020rw_page.py
+        does the same under ctest).
+
+The published results are the eight entrants' workbooks of the competition ($PRIDE_DATA/
+cec2020-rw-results/ranking/*.xlsx: Sheet1 the final f, Sheet2 the violation, 25 runs x 57
+problems) and its scores (Scoring.txt), read where they are, never copied. The scoring is
+pride's (pride.cec2020rw_score, experiment/report/cec2020rw_score.hpp: the guidelines' eq. 4-9).
+"""
+import csv
+import json
+import os
+import pathlib
+import re
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+import zipfile
+from concurrent.futures import ThreadPoolExecutor
+
+REPO = pathlib.Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO / "scripts"))
+import results_pages as rp  # noqa: E402
+
+PAGE = REPO / "docs" / "results" / "cec2020rw.md"
+DATA = REPO / "docs" / "results" / "data"
+RUNS = 25
+# label -> `pride run` arguments: pride's configurations on the page.
+CONFIGS = {
+    "colshade": ["--algo", "colshade"],
+}
+# The entrants' workbooks, by the names the competition's repository gives them.
+ENTRANTS = ["BiPop", "COLSHADE", "DEQL", "EnMODE", "FCHA", "SASS", "VMCH", "sCMAgES"]
+# The 57 problems' dimensions (the guidelines' Table 4; RC24's too, which pride does not have).
+DIMS = [9, 11, 7, 6, 9, 38, 48, 2, 3, 3, 7, 7, 5, 10, 7, 14, 3, 4, 4, 2, 5, 9, 5, 7, 4, 22, 10, 10, 4, 3, 4, 5, 30,
+        118, 153, 158, 126, 126, 126, 76, 74, 86, 86, 30, 25, 25, 25, 30, 30, 30, 59, 59, 59, 59, 64, 64, 64]
+MISSING = {24}  # RC24: not in pride (problems/continuous/cec2020rw/cec2020rw.hpp says why)
+SHEET = {"m": "http://schemas.openxmlformats.org/spreadsheetml/2006/main"}
+
+
+def budget(dim):
+    """MaxFEs, the guidelines' eq. 1."""
+    return 100000 if dim <= 10 else 200000 if dim <= 30 else 400000 if dim <= 50 else 800000 if dim <= 150 else 1000000
+
+
+def results_folder():
+    data = os.environ.get("PRIDE_DATA", "")
+    folder = pathlib.Path(data) / "cec2020-rw-results" / "ranking"
+    return folder if data and (folder / "Scoring.txt").is_file() else None
+
+
+def workbook_sheet(path, number):
+    """The 25 x 57 values of one sheet, runs by problems (an .xlsx is zipped XML; cells A1 .. BE25)."""
+    root = ET.fromstring(zipfile.ZipFile(path).read(f"xl/worksheets/sheet{number}.xml"))
+    rows = []
+    for row in root.find("m:sheetData", SHEET):
+        values = [float("nan")] * 57
+        for cell in row:
+            column = 0
+            for letter in re.match(r"[A-Z]+", cell.get("r")).group(0):
+                column = column * 26 + ord(letter) - 64
+            v = cell.find("m:v", SHEET)
+            if v is not None and column <= 57:
+                values[column - 1] = float(v.text)
+        rows.append(values)
+    return rows
+
+
+def entrant(folder, name):
+    """(f, violation) of a workbook, each a list of 57 rows (problems) of 25 runs."""
+    f, v = (workbook_sheet(folder / f"{name}.xlsx", k) for k in (1, 2))
+    return [[r[j] for r in f] for j in range(57)], [[r[j] for r in v] for j in range(57)]
+
+
+def published_scores(folder):
+    """Scoring.txt's rows: [(code, score1, score2, score3, total, rank)]."""
+    rows = []
+    for line in (folder / "Scoring.txt").read_text().splitlines():
+        m = re.match(r"\s*(\w+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+(\d+)\s*$", line)
+        if m:
+            rows.append((m.group(1), *map(float, m.groups()[1:5]), int(m.group(6))))
+    return rows
+
+
+def run_all(pride=REPO / "build" / "cli" / "pride", jobs=2):
+    listed = json.loads(subprocess.check_output([str(pride), "list", "--json"], text=True))["constrained_problems"]
+    problems = sorted(int(m.group(1)) for m in (re.match(r"cec2020rw-rc(\d+)$", p["name"]) for p in listed) if m)
+    assert set(range(1, 58)) - set(problems) == MISSING, problems
+    todo = [(label, k, s) for label in CONFIGS for k in problems for s in range(1, RUNS + 1)]
+
+    def run(job):
+        label, k, seed = job
+        out = subprocess.check_output([str(pride), "run", *CONFIGS[label], "--problem", f"cec2020rw-rc{k:02}",
+                                       "--dim", str(DIMS[k - 1]), "--evals", str(budget(DIMS[k - 1])), "--seed",
+                                       str(seed), "--json"], text=True)
+        r = json.loads(out)
+        return r["best_f"], r["best_violation"], r["first_feasible"], r["evaluations"]
+
+    with ThreadPoolExecutor(jobs) as pool:
+        results = list(pool.map(run, todo))
+    with open(DATA / "cec2020rw.csv", "w", newline="") as fh:
+        w = csv.writer(fh, lineterminator="\n")
+        w.writerow(["config", "problem", "seed", "f", "violation", "first_feasible", "evaluations"])
+        for (label, k, seed), (f, v, first, evals) in zip(todo, results):
+            w.writerow([label, f"RC{k:02}", seed, repr(float(f)), repr(float(v)), "" if first is None else first, evals])
+
+
+def read(data=DATA):
+    """{config: (f, violation)} as 57 lists (problems; RC24's empty) of RUNS runs, in seed order."""
+    out = {}
+    with open(data / "cec2020rw.csv", newline="") as fh:
+        for r in csv.DictReader(fh):
+            f, v = out.setdefault(r["config"], ([[] for _ in range(57)], [[] for _ in range(57)]))
+            j = int(r["problem"][2:]) - 1
+            f[j].append(float(r["f"]))
+            v[j].append(float(r["violation"]))
+    return out
+
+
+def deb_ranks(f, v):
+    """Average ranks in the guidelines' order (feasible by f, then infeasible by violation)."""
+    return rp.average_ranks([(vi if vi > 0 else 0.0, fi if vi <= 0 else 0.0) for fi, vi in zip(f, v)])
+
+
+def eight_digits(values):
+    return [float(f"{x:.8g}") for x in values]
+
+
+def score(pride, results, problems):
+    return pride.cec2020rw_score({n: ([f[j] for j in problems], [v[j] for j in problems])
+                                  for n, (f, v) in results.items()}, [DIMS[j] for j in problems])
+
+
+def published_block(pride, folder):
+    """The eight entrants scored by pride from their workbooks, and Scoring.txt's rows."""
+    books = {n: entrant(folder, n) for n in ENTRANTS}
+    ours = score(pride, books, range(57))
+    rows = [[n, f"{s['best']:.4f}", f"{s['mean']:.4f}", f"{s['median']:.4f}", f"{s['total']:.4f}", s["rank"]]
+            for n, s in sorted(ours.items(), key=lambda kv: kv[1]["total"])]
+    theirs = [[code, f"{a:.4f}", f"{b:.4f}", f"{c:.4f}", f"{t:.4f}", rank]
+              for code, a, b, c, t, rank in sorted(published_scores(folder), key=lambda r: r[5])]
+    header = ["best", "mean", "median", "PM", "rank"]
+    return ("Scored by pride from the workbooks:\n\n" + rp.table(["entrant"] + header, rows, "lrrrrr") +
+            "\n\nThe competition's scores (`Scoring.txt`):\n\n" + rp.table(["code"] + header, theirs, "lrrrrr"))
+
+
+def score_block(pride, folder, runs):
+    problems = [j for j in range(57) if j + 1 not in MISSING]
+    results = {n: entrant(folder, n) for n in ENTRANTS}
+    results.update({f"pride {label}": fv for label, fv in runs.items()})
+    s = score(pride, results, problems)
+    rows = [[n, f"{x['best']:.4f}", f"{x['mean']:.4f}", f"{x['median']:.4f}", f"{x['total']:.4f}", x["rank"]]
+            for n, x in sorted(s.items(), key=lambda kv: (kv[1]["total"], kv[0]))]
+    return rp.table(["algorithm", "best", "mean", "median", "PM", "rank"], rows, "lrrrrr")
+
+
+def colshade_block(folder, runs, label="colshade"):
+    """pride's colshade beside the published COLSHADE, problem by problem: rank-sum tests on the
+    guidelines' order, Holm's correction over the problems."""
+    pf, pv = entrant(folder, "COLSHADE")
+    of, ov = runs[label]
+    problems = [j for j in range(57) if j + 1 not in MISSING]
+    ps = []
+    for j in problems:
+        ranks = deb_ranks(pf[j] + eight_digits(of[j]), pv[j] + ov[j])
+        ps.append(rp.rank_sum(ranks[:len(pf[j])], ranks[len(pf[j]):]))
+    adjusted = rp.holm(ps)
+
+    def median(f, v):
+        feasible = [x for x, y in zip(f, v) if y <= 0]
+        return f"{rp.median(feasible):.8g}" if feasible else "-"
+
+    rows, apart, better = [], 0, 0
+    for j, p, q in zip(problems, ps, adjusted):
+        ranks = deb_ranks(pf[j] + eight_digits(of[j]), pv[j] + ov[j])
+        ours = rp.mean(ranks[len(pf[j]):]) < rp.mean(ranks[:len(pf[j])])
+        verdict = ("pride better" if ours else "pride worse") if q < 0.05 else ""
+        apart += q < 0.05
+        better += q < 0.05 and ours
+        rows.append([f"RC{j + 1:02}", DIMS[j], f"{budget(DIMS[j]):,}",
+                     f"{sum(y <= 0 for y in pv[j])}/{len(pv[j])}", median(pf[j], pv[j]),
+                     f"{sum(y <= 0 for y in ov[j])}/{len(ov[j])}", median(of[j], ov[j]), rp.fmt_p(p), rp.fmt_p(q),
+                     verdict])
+    summary = (f"Told apart (Holm-adjusted p < 0.05) on {apart} of {len(problems)} problems ({better} with pride "
+               f"better); not told apart on {len(problems) - apart}.")
+    return summary + "\n\n" + rp.table(["problem", "D", "MaxFEs", "published: feasible", "median f",
+                                        "pride: feasible", "median f", "p", "Holm p", ""], rows, "lrrrrrrrrl")
+
+
+def blocks(data=DATA):
+    folder = results_folder()
+    if folder is None:
+        raise SystemExit("cec2020rw_page: the entrants' results are not at $PRIDE_DATA/cec2020-rw-results (set PRIDE_DATA)")
+    import pride
+    runs = read(data)
+    count = sum(len(f[j]) for f, _ in runs.values() for j in range(57))
+    return {
+        "rw-runs": f"{count:,} runs of pride: {', '.join(runs)} on the {57 - len(MISSING)} problems pride has, "
+                   f"seeds 1-{RUNS}, each at the competition's MaxFEs.",
+        "rw-published": published_block(pride, folder),
+        "rw-score": score_block(pride, folder, runs),
+        "rw-colshade": colshade_block(folder, runs),
+    }
+
+
+def check(data=DATA, page=PAGE):
+    return rp.check_page(blocks(data), page)
+
+
+if __name__ == "__main__":
+    sys.exit(rp.page_main(sys.argv, __doc__, run_all, blocks, PAGE))
