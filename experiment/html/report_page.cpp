@@ -3,19 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <map>
-#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
 
-#include "engine/specs.hpp"
 #include "experiment/html/colour.hpp"
-#include "experiment/html/draw.hpp"
 #include "experiment/html/figure.hpp"
 #include "experiment/html/font_session.hpp"
-#include "experiment/html/front_figures.hpp"
 #include "experiment/html/page.hpp"
 #include "experiment/html/page_store.hpp"
 #include "experiment/html/problem_figures.hpp"
@@ -25,8 +20,6 @@
 #include "experiment/storage/reader.hpp"
 #include "framework/error.hpp"
 #include "framework/output_files.hpp"
-#include "problems/grid/pareto.hpp"
-#include "problems/grid/path.hpp"
 
 namespace pride::html {
 namespace {
