@@ -18,7 +18,6 @@
 #include <sstream>
 #include <thread>
 
-#include "experiment/storage/digest.hpp"
 #include "experiment/storage/reader.hpp"
 #include "experiment/storage/schema.hpp"
 #include "framework/error.hpp"
