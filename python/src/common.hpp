@@ -164,6 +164,10 @@ std::string path_arg(const py::handle& o, const std::string& name);
 /// True or False (Python or numpy bool).
 bool flag_arg(const py::handle& o, const std::string& name);
 
+/// A count the command line bounds as it does (cli/flags.hpp: max_count): an integer in
+/// [lo, 10^18], else InputError naming `name` in the command line's wording.
+void count_in(const char* name, std::int64_t value, std::int64_t lo);
+
 /// Keyword arguments `**params` as the engine's ParamValues: numbers and bools only.
 /// The keyword parameters of algorithm `algo`: numbers, or names for its choice parameters.
 engine::ParamValues param_values(const std::string& algo, const py::dict& params);
@@ -186,6 +190,11 @@ py::array_t<double, py::array::c_style | py::array::forcecast> real_array(const 
 std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::object& bounds,
                                                                  std::optional<std::int64_t> dim,
                                                                  const std::function<void(std::int64_t)>& check_size);
+
+/// The algorithm without the parameters that choose a constraint handler: what the size checks
+/// before building see, since a box not built yet has no constraints to allow them (engine::check
+/// sees them all once the problem is built).
+engine::AlgorithmSpec without_constraint_params(const engine::AlgorithmSpec& algorithm);
 
 /// A check_size for parse_bounds: engine::check_before_building for `algorithm` under `budget`
 /// on a box named `name` (the references must outlive it).
@@ -233,6 +242,15 @@ grid::Cell grid_cell(const py::handle& o, const std::string& where);
 void set_path_objective(engine::GridSpec& spec, const py::object& objective, const py::object& step_cost,
                         const std::shared_ptr<UserError>& errors, const std::string& where);
 
+// The module's bindings, one function per area (module.cpp calls them in this order).
+/// pride.algorithms, pride.problems, pride.grid_names: the registries (listings.cpp).
+void bind_listings(py::module_& m);
+/// pride.minimize (minimize.cpp).
+void bind_minimize(py::module_& m);
+/// pride.Problem: a registered function evaluated from Python (problem.cpp).
+void bind_problem(py::module_& m);
+/// pride.Optimizer: ask and tell (optimizer.cpp).
+void bind_optimizer(py::module_& m);
 void bind_grid(py::module_& m);
 void bind_roughset(py::module_& m);
 void bind_campaign(py::module_& m);
