@@ -32,12 +32,20 @@
 // On a problem with constraints (framework/constraints.hpp) the lambda points of (41) rank by the
 // configured handler's order on (f, v) (`constraints`: Deb's feasibility rules by default, the
 // epsilon level, whose generation t is the run's iteration, or a static penalty;
-// framework/constraint_order.hpp), or, with `augmented_lagrangian`, by f plus the penalty of
+// framework/constraint_order.hpp), or by Runarsson and Yao's (2000) stochastic ranking (fig. 1:
+// the bubble-sort whose neighbours compare by f when both are feasible or with probability P_f,
+// else by v; P_f = 0.45 by default, `constraints.pf`), which ranks the lambda offspring for the
+// (mu, lambda) selection as it ranks them in that paper's evolution strategy, or, with
+// `augmented_lagrangian`, by f plus the penalty of
 // Atamna, Auger and Hansen's (2016, 2017) augmented Lagrangian (augmented_lagrangian.hpp), whose
 // coefficients are updated after each generation and start afresh with each run of a restart
 // sequence. The run's best point is Deb's best over the true (f, v) either way; without
 // constraints the run is the same, bit for bit, as before constraints were handled.
-// Decided by this project where the tutorial is open: C starts as diag((high - low)^2) (the
+// Decided by this project where the tutorial is open: stochastic ranking sweeps at most lambda
+// times (Runarsson and Yao's N, their number of individuals ranked), from the points in the
+// order they were drawn, with one draw of the run's Rng per comparison, taken after the
+// generation's samples (so one seed gives one run), and ranks f plus the Penalty boundary's term
+// when that boundary is chosen; C starts as diag((high - low)^2) (the
 // tutorial's C = I on the box scaled to unit ranges), sigma_0 = 0.3 of that by default (the
 // tutorial asks for about a quarter to a third of the search interval); the mean is not evaluated;
 // when the budget ends inside a generation, the rest of it is not evaluated and no update follows;
@@ -121,7 +129,7 @@ class Cmaes {
         tolerances.validate(name());
         restarts.validate(name());
         boundary.validate(name());
-        constraints.validate(name());
+        constraints.validate(name(), false, true);
         al.validate(name());
     }
 
@@ -205,7 +213,7 @@ class Cmaes {
                         stop = search.update(boundary, al_tolerances, PlainOrder{}, {}, penalties);
                         lagrange.end_generation(f, values_g, fitness);
                     } else {
-                        stop = search.update(boundary, tolerances, order, violations);
+                        stop = search.update(boundary, tolerances, order, violations, {}, &rng);
                     }
                 } else {
                     const auto evaluated = state.evaluate_columns(problem, search.Xeval(), search.values());

@@ -103,14 +103,7 @@ struct Start {
 /// value, best first, ties to the lower index (a total order: the same entries whether the whole
 /// is sorted or only its head, which is all a strategy reads: none for rand/1, one for best/1).
 inline void rank(std::span<const double> f, std::span<std::size_t> order, std::size_t leading) {
-    const auto before = [&](std::size_t a, std::size_t b) { return f[a] < f[b] || (f[a] == f[b] && a < b); };
-    leading = std::min(leading, order.size());
-    if (leading == 0) return;
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    if (leading == 1)
-        order[0] = *std::min_element(order.begin(), order.end(), before);
-    else
-        std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(leading), order.end(), before);
+    rank_by(PlainOrder{}, f, {}, order, leading);
 }
 
 /// rank() under a constraint order (framework/constraint_order.hpp): by (f, v) as the handler
@@ -118,20 +111,7 @@ inline void rank(std::span<const double> f, std::span<std::size_t> order, std::s
 template <class Order>
 void rank(const Order& by, std::span<const double> f, std::span<const double> v, std::span<std::size_t> order,
           std::size_t leading) {
-    if constexpr (std::is_same_v<Order, PlainOrder>) {
-        rank(f, order, leading);
-    } else {
-        const auto before = [&](std::size_t a, std::size_t b) {
-            return by.better(f[a], v[a], f[b], v[b]) || (!by.better(f[b], v[b], f[a], v[a]) && a < b);
-        };
-        leading = std::min(leading, order.size());
-        if (leading == 0) return;
-        std::iota(order.begin(), order.end(), std::size_t{0});
-        if (leading == 1)
-            order[0] = *std::min_element(order.begin(), order.end(), before);
-        else
-            std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(leading), order.end(), before);
-    }
+    rank_by(by, f, v, order, leading);
 }
 
 /// The index of the first of the worst individuals by `by` (by value: the first of the largest).

@@ -37,7 +37,28 @@
 // region selection, elite crossover and Q-learning mutations on chains (iqga_operators.hpp; IqgaGa).
 // Defaults (docs/algorithms.md): tournament of 2, SBX eta 15 with probability 0.9,
 // polynomial mutation eta 20 with probability 1/D per gene, elitist replacement with elitism 1.
-// Decided by this project where the papers are silent: when an odd number of children is asked for,
+// On a problem with constraints (framework/constraints.hpp; `constraints`, the box GA with the
+// tournament) every comparison of two members is the configured handler's order on (f, v)
+// (framework/constraint_order.hpp), the same policies the DE family ranks by:
+//   deb: Deb's (2000) feasibility rules, as that paper applies them to a GA: in the tournament of
+//     (1) (Deb's binary tournament: a feasible member beats an infeasible one, two feasible ones
+//     compare by f, two infeasible ones by v), and in (3), the elite of the elitist replacement and
+//     the best N of the plus replacement;
+//   epsilon: Takahama and Sakai's (2006) epsilon level (eq. 3-5), generation t of the loop being
+//     the level's t + 1 (0: the initial population, as in the DE family); penalty: f + r v;
+//   apm: Barbosa and Lemonge's adaptive penalty as Lemonge and Barbosa (2004, eq. 2-4) apply it to
+//     a GA: each generation, before (1), the penalised values F of the current population are
+//     recomputed from its own mean f and mean violation of each constraint
+//     (algorithms/parts/common/adaptive_penalty.hpp), and the tournament and the elite compare F.
+// Runarsson and Yao's (2000) stochastic ranking is not offered: it orders a population for a
+// rank-based selection, and this GA's parent selection is a tournament, which compares two members
+// at a time. Without constraints the run is the same, bit for bit, as before constraints existed.
+// Decided by this project where the papers are silent: Deb's tournament is used without the
+// niching its paper adds among feasible members (sigma_share; a distance per comparison) and
+// without its mutation of infeasible members; under apm the plus replacement (absent from the
+// paper) ranks parents and children by F computed over that pool of 2N, the elitist replacement
+// ranks the parents by the F the tournament saw; the budget's unevaluated children (+inf, +inf)
+// take no part in APM's means. When an odd number of children is asked for,
 // the second child of the last pair is dropped; when the budget ends inside a generation the
 // children not evaluated get fitness +inf, the generation is recorded, and the run stops.
 #include <algorithm>
@@ -63,6 +84,7 @@
 #include "algorithms/parts/variation/mutation.hpp"
 #include "framework/bounds.hpp"
 #include "framework/chain.hpp"
+#include "framework/constraint_order.hpp"
 #include "framework/initializer.hpp"
 #include "framework/observer.hpp"
 #include "framework/problem.hpp"
@@ -70,6 +92,7 @@
 #include "framework/result.hpp"
 #include "framework/run_state.hpp"
 #include "framework/termination.hpp"
+#include "framework/visit_policy.hpp"
 
 namespace pride {
 
@@ -87,6 +110,7 @@ class Ga {
     Bounds bounds{};
     Init init{};
     Hook hook{};
+    ConstraintHandling constraints{};  // constrained problems only (deb, epsilon, penalty, apm)
 
     std::string name() const { return id; }
 
@@ -100,6 +124,7 @@ class Ga {
             hook.validate(name(), population);
         else if constexpr (requires { hook.validate(name()); })
             hook.validate(name());
+        constraints.validate(name(), true, false);
     }
 
     /// Real-coded, on the box of a BoxProblem.
@@ -134,6 +159,12 @@ class Ga {
         // The selection's prepared form (detail::prepared; the policy itself unless it offers
         // prepare), one per run, so that a selection may keep per-generation state (a mating pool).
         auto&& select = detail::prepared(selection, 0);
+        // Constrained problems only: the handler's order, and the values it compares (f, or APM's F).
+        constexpr bool constrained = Population::constrained;
+        [[maybe_unused]] ConstraintOrder by(constraints);
+        [[maybe_unused]] const bool apm = constraints.handler == ConstraintHandling::Handler::apm;
+        [[maybe_unused]] std::vector<double> keys, pool_keys;
+        if constexpr (constrained) by.start(pop.violations());
 
         for (std::int64_t t = 0; !state.done(); ++t) {
             const std::span<const double> fx = pop.fitness();
@@ -142,9 +173,24 @@ class Ga {
             if constexpr (requires { Mutation::uses_best_length; }) context.best_length = pop.best_length();
             pop.begin_generation(context);
             detail::begin_generation(select, context, rng);
+            [[maybe_unused]] std::span<const double> fsel = fx;
+            if constexpr (constrained) {
+                by.generation(t + 1);
+                if (apm) {
+                    pop.penalise(false, keys);
+                    fsel = keys;
+                }
+            }
+            // Two parents by the Selection policy, under constraints by the handler's order.
+            const auto parent = [&] {
+                if constexpr (constrained)
+                    return select(by, fsel, pop.violations(), rng);
+                else
+                    return with_context(select, context, fx, rng);
+            };
             for (std::size_t k = 0; k < kids; k += 2) {  // (1)
-                const std::size_t a = with_context(select, context, fx, rng);
-                const std::size_t b = with_context(select, context, fx, rng);
+                const std::size_t a = parent();
+                const std::size_t b = parent();
                 auto&& first = pop.child(k);
                 auto&& second = k + 1 < kids ? pop.child(k + 1) : pop.spare();
                 pop.copy(a, first);
@@ -158,8 +204,20 @@ class Ga {
                 pop.repair(first);
                 pop.repair(second);
             }
-            pop.evaluate_children();  // (2); +inf past the budget
-            with_context(replacement, context, fx, pop.children_fitness(), chosen, scratch);  // (3)
+            pop.evaluate_children();      // (2); +inf past the budget
+            if constexpr (constrained) {  // (3) by the handler's order
+                visit_policy(replacement, [&](const auto& r) {
+                    std::span<const double> fp = fsel, fc = pop.children_fitness();
+                    if (apm && std::decay_t<decltype(r)>::ranks_children) {
+                        pop.penalise(true, pool_keys);
+                        fp = std::span<const double>(pool_keys).first(n);
+                        fc = std::span<const double>(pool_keys).subspan(n);
+                    }
+                    r(by, fp, pop.violations(), fc, pop.children_violations(), chosen, scratch);
+                });
+            } else {
+                with_context(replacement, context, fx, pop.children_fitness(), chosen, scratch);  // (3)
+            }
             for (std::size_t k = 0; k < n; ++k) pop.take(k, chosen[k]);
             pop.advance();
             context.describe(t + 1, pop.fitness(), state.best());

@@ -82,12 +82,21 @@ AlgorithmEntry box_algorithm(std::string name, std::string family, std::string s
 }
 
 /// The handlers of constraints an algorithm that compares pairs of points offers
-/// (framework/constraint_order.hpp), as parameters refused on problems without constraints.
-inline std::vector<ParamSpec> constraint_params() {
-    return {choice("constraints", {"deb", "epsilon", "penalty"}, "deb",
-                   "how points compare under constraints: Deb's (2000) feasibility rules, Takahama and Sakai's (2006) "
-                   "epsilon level, or the static penalty f + penalty v")
-                .only_with_constraints(),
+/// (framework/constraint_order.hpp), as parameters refused on problems without constraints;
+/// `apm`: the algorithm offers Barbosa and Lemonge's adaptive penalty too (it ranks a population).
+inline std::vector<ParamSpec> constraint_params(bool apm = false) {
+    std::vector<std::string> handlers{"deb", "epsilon", "penalty"};
+    std::string doc =
+        "how points compare under constraints: Deb's (2000) feasibility rules, Takahama and Sakai's (2006) "
+        "epsilon level, or the static penalty f + penalty v";
+    if (apm) {
+        handlers.push_back("apm");
+        doc =
+            "how points compare under constraints: Deb's (2000) feasibility rules, Takahama and Sakai's (2006) "
+            "epsilon level, the static penalty f + penalty v, or Barbosa and Lemonge's adaptive penalty "
+            "recomputed from the population each generation";
+    }
+    return {choice("constraints", std::move(handlers), "deb", std::move(doc)).only_with_constraints(),
             real("epsilon_cp", 100.0, 0.0, 1e6, "how fast the epsilon level falls, (1 - t / Tc)^cp")
                 .open_below()
                 .only_with_constraints(),
@@ -104,9 +113,11 @@ inline std::vector<ParamSpec> constraint_params() {
 inline ConstraintHandling constraint_handling(const Params& p) {
     ConstraintHandling h;
     const std::string& name = p.choice("constraints");
-    h.handler = name == "epsilon"   ? ConstraintHandling::Handler::epsilon
-                : name == "penalty" ? ConstraintHandling::Handler::penalty
-                                    : ConstraintHandling::Handler::deb;
+    h.handler = name == "epsilon"              ? ConstraintHandling::Handler::epsilon
+                : name == "penalty"            ? ConstraintHandling::Handler::penalty
+                : name == "apm"                ? ConstraintHandling::Handler::apm
+                : name == "stochastic-ranking" ? ConstraintHandling::Handler::stochastic_ranking
+                                               : ConstraintHandling::Handler::deb;
     h.epsilon.cp = p.real("epsilon_cp");
     h.epsilon.tc = p.integer("epsilon_tc");
     h.epsilon.theta = p.real("epsilon_theta");
@@ -116,10 +127,10 @@ inline ConstraintHandling constraint_handling(const Params& p) {
 
 /// Adds running on boxes with constraints to an entry whose algorithm compares through its
 /// `constraints` (ConstraintHandling): `configure(params)` returns the typed algorithm; the entry
-/// gets the handlers' parameters.
+/// gets the handlers' parameters (with `apm` among them when the algorithm offers it).
 template <class Configure>
-void add_constrained_runner(AlgorithmEntry& e, Configure configure) {
-    for (auto& spec : constraint_params()) e.params.push_back(std::move(spec));
+void add_constrained_runner(AlgorithmEntry& e, Configure configure, bool apm = false) {
+    for (auto& spec : constraint_params(apm)) e.params.push_back(std::move(spec));
     add_runner<ConstrainedBoxTarget>(
         e, Kind::constrained_box, [configure](const RunRequest& r, const ConstrainedBoxTarget& target) -> Result {
             auto algorithm = configure(r.params);

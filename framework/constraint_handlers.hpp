@@ -78,14 +78,17 @@ struct EpsilonSchedule {
 /// Runarsson and Yao's (2000) stochastic ranking (fig. 1): reorders `order` (indices into f and v)
 /// best first, by bubble-sort sweeps in which two neighbours compare by f when both are feasible
 /// or with probability pf, else by v; at most `sweeps` sweeps (the paper's N: the population's
-/// size), fewer once a sweep swaps nothing. One uniform draw per comparison.
-inline void stochastic_rank(std::span<std::size_t> order, std::span<const double> f, std::span<const double> v,
-                            double pf, std::size_t sweeps, Rng& rng) {
-    if (order.size() < 2) return;
+/// size), fewer once a sweep swaps nothing. One uniform draw per comparison. `order`: any
+/// random-access range of integer indices (a vector or a span).
+template <class Indices>
+void stochastic_rank(Indices&& order, std::span<const double> f, std::span<const double> v, double pf,
+                     std::size_t sweeps, Rng& rng) {
+    const auto size = static_cast<std::size_t>(order.size());
+    if (size < 2) return;
     for (std::size_t i = 0; i < sweeps; ++i) {
         bool swapped = false;
-        for (std::size_t j = 0; j + 1 < order.size(); ++j) {
-            const std::size_t a = order[j], b = order[j + 1];
+        for (std::size_t j = 0; j + 1 < size; ++j) {
+            const auto a = static_cast<std::size_t>(order[j]), b = static_cast<std::size_t>(order[j + 1]);
             const double u = rng.uniform();
             const bool by_f = (v[a] == 0.0 && v[b] == 0.0) || u < pf;
             if (by_f ? f[a] > f[b] : v[a] > v[b]) {

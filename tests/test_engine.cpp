@@ -154,8 +154,8 @@ TEST_CASE("engine: the registry lists every family with its spaces and parameter
         REQUIRE(r.find(name) != nullptr);
         CHECK_FALSE(r.at(name).summary.empty());
     }
-    CHECK(r.at("ga").spaces() == std::vector<std::string>{"box", "chain"});
-    CHECK(r.at("ga-plus").spaces() == std::vector<std::string>{"box", "chain"});
+    CHECK(r.at("ga").spaces() == std::vector<std::string>{"box", "chain", "constrained box"});
+    CHECK(r.at("ga-plus").spaces() == std::vector<std::string>{"box", "chain", "constrained box"});
     CHECK(r.at("pso").spaces() == std::vector<std::string>{"box", "constrained box"});
     CHECK(r.at("astar").spaces() == std::vector<std::string>{"grid"});
     CHECK(r.at("exact").needs_optimum);

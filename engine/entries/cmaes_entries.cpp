@@ -67,16 +67,18 @@ cma::SelectableRestarts restarts_of(const std::string& name) {
 }
 
 /// The handlers of constraints CMA-ES offers: the DE family's (engine/family.hpp), its static
-/// penalty's r named constraint_penalty (`penalty` is the boundary policy's weight), and the
-/// augmented Lagrangian `al` with its parameters; all refused on problems without constraints.
+/// penalty's r named constraint_penalty (`penalty` is the boundary policy's weight), the
+/// augmented Lagrangian `al` with its parameters, and stochastic ranking with its P_f; all
+/// refused on problems without constraints.
 std::vector<ParamSpec> cma_constraint_params() {
     std::vector<ParamSpec> specs;
     for (auto& spec : constraint_params()) {
         if (spec.name == "constraints") {
-            spec = choice("constraints", {"deb", "epsilon", "penalty", "al"}, "deb",
+            spec = choice("constraints", {"deb", "epsilon", "penalty", "al", "stochastic-ranking"}, "deb",
                           "how the lambda points rank under constraints: Deb's (2000) feasibility rules, Takahama and "
-                          "Sakai's (2006) epsilon level, the static penalty f + constraint_penalty v, or by f plus the "
-                          "augmented Lagrangian of Atamna, Auger and Hansen (2016, 2017) as pycma adapts it")
+                          "Sakai's (2006) epsilon level, the static penalty f + constraint_penalty v, by f plus the "
+                          "augmented Lagrangian of Atamna, Auger and Hansen (2016, 2017) as pycma adapts it, or "
+                          "Runarsson and Yao's (2000) stochastic ranking")
                        .only_with_constraints();
         } else if (spec.name == "penalty") {
             spec =
@@ -95,6 +97,10 @@ std::vector<ParamSpec> cma_constraint_params() {
         real("al_dgamma", 5.0, 0.0, 1e6, "d_gamma, the damping of the AL's multiplier step (constraints = al)")
             .open_below()
             .only_with_constraints());
+    specs.push_back(real("pf", 0.45, 0.0, 1.0,
+                         "P_f, the probability that two neighbours not both feasible compare by f (constraints = "
+                         "stochastic-ranking; Runarsson and Yao 2000: 0.45)")
+                        .only_with_constraints());
     specs.push_back(real("al_chi", 0.0, 0.0, 1e3,
                          "chi, the factor of the AL's coefficient step; 0: 2^(1 / (5 D)) (constraints = al; else > 1)")
                         .only_with_constraints());
@@ -106,9 +112,11 @@ template <class A>
 A with_constraints(A a, const Params& p) {
     const std::string& handler = p.choice("constraints");
     a.augmented_lagrangian = handler == "al";
-    a.constraints.handler = handler == "epsilon"   ? ConstraintHandling::Handler::epsilon
-                            : handler == "penalty" ? ConstraintHandling::Handler::penalty
-                                                   : ConstraintHandling::Handler::deb;
+    a.constraints.handler = handler == "epsilon"              ? ConstraintHandling::Handler::epsilon
+                            : handler == "penalty"            ? ConstraintHandling::Handler::penalty
+                            : handler == "stochastic-ranking" ? ConstraintHandling::Handler::stochastic_ranking
+                                                              : ConstraintHandling::Handler::deb;
+    a.constraints.pf = p.real("pf");
     a.constraints.epsilon.cp = p.real("epsilon_cp");
     a.constraints.epsilon.tc = p.integer("epsilon_tc");
     a.constraints.epsilon.theta = p.real("epsilon_theta");

@@ -1,6 +1,7 @@
 // The genetic algorithm family (algorithms/ga.hpp): ga (elitist generational replacement) and
 // ga-plus ((mu + lambda) replacement), two configurations of one instantiation on boxes and one on
-// chains (the replacement is chosen once per generation); and the variants as policies of the same
+// chains (the replacement is chosen once per generation), both also on boxes with constraints
+// (`constraints`: deb, epsilon, penalty, apm); and the variants as policies of the same
 // skeleton: iaga (Srinivas and Patnaik's adaptive pc and pm), icga (the catastrophe hook) on boxes
 // and chains, ga-q (Q-learning choice among three box mutations) on boxes, iqga (Zhang et al.'s (2025) IQGA:
 // region selection, elite crossover, Q-learning among three mutations) on chains only.
@@ -301,6 +302,9 @@ void add(AlgorithmRegistry& registry, bool plus, std::string summary) {
     auto e = box_algorithm(plus ? "ga-plus" : "ga", "ga", std::move(summary), params(plus),
                            [plus](const Params& p) { return configure_box(p, plus); });
     add_chain_runner(e, [plus](const Params& p) { return configure_chain(p, plus); });
+    // Boxes with constraints: Deb's tournament and elitism, the epsilon level, a static penalty, or APM.
+    add_constrained_runner(
+        e, [plus](const Params& p) { return configure_box(p, plus); }, true);
     e.memory = population_memory(plus ? 4 : 3);  // parents, next generation, children
     registry.add(std::move(e));
 }

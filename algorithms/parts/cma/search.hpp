@@ -129,9 +129,11 @@ class Search {
     /// the stopping criteria (Stop::none: go on). Under constraints the points rank by `order`
     /// (framework/constraint_order.hpp) on (value, violation), and `added` (when given) is added
     /// to each value first (the augmented Lagrangian's penalty); without them, by value alone.
+    /// Under stochastic ranking the points are ranked by constraints::stochastic_rank with `rng`
+    /// (lambda sweeps at most, one draw per comparison).
     template <class Boundary, class Order = PlainOrder>
     Stop update(const Boundary& boundary, const Tolerances& tolerances, const Order& order = {},
-                std::span<const double> violations = {}, std::span<const double> added = {}) {
+                std::span<const double> violations = {}, std::span<const double> added = {}, Rng* rng = nullptr) {
         const auto L = static_cast<Eigen::Index>(s_.lambda);
         for (std::size_t k = 0; k < fx_.size(); ++k) rank_[k] = fx_[k];
         for (std::size_t k = 0; k < added.size(); ++k) rank_[k] += added[k];
@@ -147,6 +149,9 @@ class Search {
                 const double fa = rank_[static_cast<std::size_t>(a)], fb = rank_[static_cast<std::size_t>(b)];
                 return fa < fb || (!(fb < fa) && a < b);
             });
+        } else if (order.handler() == ConstraintHandling::Handler::stochastic_ranking) {
+            // Runarsson and Yao (2000), fig. 1, from the points in index order (ties keep it).
+            constraints::stochastic_rank(order_, rank_, violations, order.pf(), order_.size(), *rng);
         } else {
             // Deb's rules, the epsilon level and the static penalty are strict weak orders (the
             // epsilon level's is that of (v or 0 when v <= epsilon, f)): ties go to the lower index.

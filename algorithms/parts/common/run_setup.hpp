@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/constraints.hpp"
 #include "framework/error.hpp"
 #include "framework/problem.hpp"
 #include "framework/random.hpp"
@@ -60,11 +61,13 @@ struct BoxRun : RunStart<> {
     std::size_t dim = 0;
     Matrix x;
     std::vector<double> fx, vx;
+    std::vector<double> cx;  // constrained problems, when asked for: the m + p values of each point in turn
 };
 
+/// `constraint_values`: on a constrained problem, keep the initial points' constraint values in cx.
 template <class Algorithm, BoxProblem P, class O>
 BoxRun start_box_run(const Algorithm& algorithm, P& problem, const Termination& termination, std::uint64_t seed,
-                     O& observer, HorizonNeed need = {}) {
+                     O& observer, HorizonNeed need = {}, bool constraint_values = false) {
     // Braced initialisers run in order: start_run's checks come before any allocation.
     BoxRun run{start_run(algorithm, termination, seed, need, problem.dimension()),
                problem.lower(),
@@ -72,11 +75,22 @@ BoxRun start_box_run(const Algorithm& algorithm, P& problem, const Termination& 
                problem.dimension(),
                Matrix(static_cast<Eigen::Index>(problem.dimension()), static_cast<Eigen::Index>(algorithm.population)),
                std::vector<double>(static_cast<std::size_t>(algorithm.population)),
-               std::vector<double>(static_cast<std::size_t>(algorithm.population), 0.0)};
+               std::vector<double>(static_cast<std::size_t>(algorithm.population), 0.0),
+               {}};
     seed_noise(problem, seed);
     algorithm.init(problem, run.rng, run.x);
     for (Eigen::Index i = 0; i < run.x.cols(); ++i) algorithm.bounds(column(run.x, i), run.lo, run.hi);
-    run.state.evaluate_population(problem, run.x, run.fx, run.vx);
+    if constexpr (ConstrainedProblem<P>) {
+        if (constraint_values) {
+            run.cx.assign(problem.constraint_counts().total() * run.fx.size(), 0.0);
+            run.state.evaluate_columns(problem, run.x, run.fx, run.vx, run.cx);
+        } else {
+            run.state.evaluate_population(problem, run.x, run.fx, run.vx);
+        }
+    } else {
+        (void)constraint_values;
+        run.state.evaluate_population(problem, run.x, run.fx, run.vx);
+    }
     run.state.end_iteration(observer, run.x, run.fx);
     return run;
 }

@@ -9,6 +9,9 @@
 // Points are the columns of Eigen matrices, evaluated through RunState::evaluate_columns (batch
 // problems in one call); chains live in vectors of the problem's chain type and are evaluated one
 // by one. For hooks (generation_hook.hpp) both offer size(), fitness(), individual(i) and renew().
+// On a problem with constraints the box adapter also keeps each member's violation and constraint
+// values (`constrained`), and gives the population's penalised values under APM
+// (adaptive_penalty.hpp); without constraints none of it exists.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -17,9 +20,11 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/parts/common/adaptive_penalty.hpp"
 #include "algorithms/parts/common/run_setup.hpp"
 #include "algorithms/parts/ga/generation_context.hpp"
 #include "framework/chain.hpp"
+#include "framework/constraints.hpp"
 #include "framework/counted_chain.hpp"
 #include "framework/problem.hpp"
 #include "framework/random.hpp"
@@ -40,12 +45,14 @@ void begin_generation(Op& op, const GenerationContext& context, Rng& rng) {
 template <class Algorithm, BoxProblem P>
 class BoxPopulation {
   public:
+    static constexpr bool constrained = ConstrainedProblem<P>;
+
     template <class O>
     BoxPopulation(const Algorithm& ga, P& problem, const Termination& termination, std::uint64_t seed, O& observer)
         : ga_(ga),
           problem_(problem),
           run_(start_box_run(ga, problem, termination, seed, observer,
-                             {ga.replacement.offspring(ga.population), nullptr})),
+                             {ga.replacement.offspring(ga.population), nullptr}, constrained)),
           kids_(static_cast<std::size_t>(ga.replacement.offspring(ga.population))),
           next_(run_.x.rows(), run_.x.cols()),
           y_(run_.x.rows(), static_cast<Eigen::Index>(kids_)),
@@ -53,7 +60,15 @@ class BoxPopulation {
           fnext_(run_.fx.size()),
           fy_(kids_),
           cross_(detail::prepared(ga.crossover, run_.dim)),
-          mutate_(detail::prepared(ga.mutation, run_.dim)) {}
+          mutate_(detail::prepared(ga.mutation, run_.dim)) {
+        if constexpr (constrained) {
+            k_ = problem.constraint_counts().total();
+            vnext_.assign(run_.fx.size(), 0.0);
+            vy_.assign(kids_, 0.0);
+            cnext_.assign(run_.cx.size(), 0.0);
+            cy_.assign(k_ * kids_, 0.0);
+        }
+    }
 
     Rng& rng() noexcept { return run_.rng; }
     RunState& state() noexcept { return run_.state; }
@@ -88,19 +103,54 @@ class BoxPopulation {
     void repair(std::span<double> c) const { ga_.bounds(c, run_.lo, run_.hi); }
 
     /// The children in order; +inf past the budget.
-    void evaluate_children() { run_.state.evaluate_columns(problem_, y_, fy_); }
+    void evaluate_children() {
+        if constexpr (constrained)
+            run_.state.evaluate_columns(problem_, y_, fy_, vy_, cy_);
+        else
+            run_.state.evaluate_columns(problem_, y_, fy_);
+    }
     std::span<const double> children_fitness() const noexcept { return fy_; }
+
+    // Constrained problems only: the violations of the current members and of the children, and
+    // APM's penalised values of the current members (`parents`) or of the pool "parents, then
+    // children", into `out`.
+    std::span<const double> violations() const noexcept { return run_.vx; }
+    std::span<const double> children_violations() const noexcept { return vy_; }
+    void penalise(bool with_children, std::vector<double>& out) {
+        if (!with_children) {
+            out.resize(size());
+            apm_(problem_, run_.fx, run_.vx, run_.cx, out);
+            return;
+        }
+        pool_f_.assign(run_.fx.begin(), run_.fx.end());
+        pool_f_.insert(pool_f_.end(), fy_.begin(), fy_.end());
+        pool_v_.assign(run_.vx.begin(), run_.vx.end());
+        pool_v_.insert(pool_v_.end(), vy_.begin(), vy_.end());
+        pool_c_.assign(run_.cx.begin(), run_.cx.end());
+        pool_c_.insert(pool_c_.end(), cy_.begin(), cy_.end());
+        out.resize(pool_f_.size());
+        apm_(problem_, pool_f_, pool_v_, pool_c_, out);
+    }
 
     /// Member k of the next population is member `from` of the pool "parents, then children".
     void take(std::size_t k, std::size_t from) {
         const std::size_t n = size();
         next_.col(index(k)) = from < n ? run_.x.col(index(from)) : y_.col(index(from - n));
         fnext_[k] = from < n ? run_.fx[from] : fy_[from - n];
+        if constexpr (constrained) {
+            vnext_[k] = from < n ? run_.vx[from] : vy_[from - n];
+            const double* c = from < n ? run_.cx.data() + from * k_ : cy_.data() + (from - n) * k_;
+            std::copy_n(c, k_, cnext_.begin() + static_cast<std::ptrdiff_t>(k * k_));
+        }
     }
     /// The next population becomes the current one.
     void advance() noexcept {
         std::swap(run_.x, next_);
         std::swap(run_.fx, fnext_);
+        if constexpr (constrained) {
+            std::swap(run_.vx, vnext_);
+            std::swap(run_.cx, cnext_);
+        }
     }
     template <class O>
     void end_iteration(O& observer) {
@@ -108,8 +158,9 @@ class BoxPopulation {
     }
     Result finish() { return run_.state.finish(); }
 
-    /// Replaces the members `which` by new points (the Init policy, then Bounds), evaluated in order.
-    void renew(std::span<const std::size_t> which, Rng& rng) {
+    /// Replaces the members `which` by new points (the Init policy, then Bounds), evaluated in order
+    /// (problems without constraints: no hook takes part in a constrained run).
+    void renew(std::span<const std::size_t> which, Rng& rng) requires(!constrained) {
         Matrix fresh(run_.x.rows(), static_cast<Eigen::Index>(which.size()));
         std::vector<double> f(which.size());
         ga_.init(problem_, rng, fresh);
@@ -132,6 +183,11 @@ class BoxPopulation {
     std::vector<double> fnext_, fy_;
     detail::Prepared<decltype(Algorithm::crossover)> cross_;
     detail::Prepared<decltype(Algorithm::mutation)> mutate_;
+    // Constrained problems only: k_ = m + p; the next population's and the children's violations
+    // and constraint values (the current ones are run_.vx, run_.cx); APM's pool and scratch.
+    std::size_t k_ = 0;
+    std::vector<double> vnext_, vy_, cnext_, cy_, pool_f_, pool_v_, pool_c_;
+    AdaptivePenalty apm_;
 };
 
 /// Chains of a ChainProblem; the operators are the problem's (framework/chain.hpp), called through
@@ -140,6 +196,7 @@ template <class Algorithm, ChainProblem P>
 class ChainPopulation {
   public:
     using Chain = typename P::chain_type;
+    static constexpr bool constrained = false;
 
     /// The initial population: N random chains from the problem, made first, then evaluated in order.
     template <class O>

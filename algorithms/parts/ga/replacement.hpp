@@ -1,7 +1,9 @@
 #pragma once
 // Replacement (reinsertion) for the GA: which parents and children form the next population. A
 // policy only chooses, by index into the pool "parents 0..n-1, then children n..": the GA copies,
-// whatever its individuals are (points or chains).
+// whatever its individuals are (points or chains). Under constraints a policy chooses by the
+// run's constraint order on (value, violation) (framework/constraint_order.hpp: rank_by, the
+// ranking the DE family uses), ties to the lower index as by value.
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -9,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/constraint_order.hpp"
 #include "framework/error.hpp"
 #include "framework/one_of.hpp"
 
@@ -17,7 +20,7 @@ namespace pride {
 /// Scratch a replacement policy may use, owned by the run (policies stay stateless and shareable).
 struct ReplacementScratch {
     std::vector<std::size_t> order;
-    std::vector<double> pool;
+    std::vector<double> pool, pool_v;
 };
 
 namespace detail {
@@ -56,6 +59,18 @@ struct ElitistReplacement {
         std::iota(chosen.begin() + static_cast<std::ptrdiff_t>(e), chosen.end(), fp.size());
         (void)fc;
     }
+    /// Under a constraint order: the elite are the best parents by `by`.
+    static constexpr bool ranks_children = false;
+    template <class Order>
+    void operator()(const Order& by, std::span<const double> fp, std::span<const double> vp,
+                    std::span<const double> /*fc*/, std::span<const double> /*vc*/, std::span<std::size_t> chosen,
+                    ReplacementScratch& scratch) const {
+        const auto e = static_cast<std::size_t>(elitism);
+        scratch.order.resize(fp.size());
+        rank_by(by, fp, vp, scratch.order, e);
+        std::copy_n(scratch.order.begin(), e, chosen.begin());
+        std::iota(chosen.begin() + static_cast<std::ptrdiff_t>(e), chosen.end(), fp.size());
+    }
 };
 
 /// (mu + lambda) "pure elitism", as pagmo2's sga: N children, and the best N of parents and
@@ -79,6 +94,20 @@ struct PlusReplacement {
         scratch.pool.assign(fp.begin(), fp.end());
         scratch.pool.insert(scratch.pool.end(), fc.begin(), fc.end());
         detail::best_first(scratch.pool, chosen.size(), scratch.order);
+        std::copy_n(scratch.order.begin(), chosen.size(), chosen.begin());
+    }
+
+    /// Under a constraint order: the best N of parents and children by `by`.
+    static constexpr bool ranks_children = true;
+    template <class Order>
+    void operator()(const Order& by, std::span<const double> fp, std::span<const double> vp, std::span<const double> fc,
+                    std::span<const double> vc, std::span<std::size_t> chosen, ReplacementScratch& scratch) const {
+        scratch.pool.assign(fp.begin(), fp.end());
+        scratch.pool.insert(scratch.pool.end(), fc.begin(), fc.end());
+        scratch.pool_v.assign(vp.begin(), vp.end());
+        scratch.pool_v.insert(scratch.pool_v.end(), vc.begin(), vc.end());
+        scratch.order.resize(scratch.pool.size());
+        rank_by(by, scratch.pool, scratch.pool_v, scratch.order, chosen.size());
         std::copy_n(scratch.order.begin(), chosen.size(), chosen.begin());
     }
 
