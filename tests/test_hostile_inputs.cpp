@@ -338,7 +338,9 @@ TEST_CASE("hostile: a campaign of planners refuses the settings they do not use,
     refused(bench(head + "[budget]\nevaluations = 100\n" + problem + planners),
             "c.toml:4: [budget] evaluations: astar plans on the whole map and evaluates no objective");
     refused(bench(head + "[budget]\niterations = 5\n" + problem + planners),
-            "c.toml:4: [budget] iterations: astar plans on the whole map in one search" + whole);
+            "c.toml:4: [budget] iterations: astar plans on the whole map in one search, not in iterations; it has no "
+            "meaning there: leave it out" +
+                whole);
     refused(bench(head + "threads = 2\n" + problem + planners), "c.toml:3: threads: astar plans on the whole map");
     // An [[algorithm]] entry of a planner naming how to plan through an encoding: at the key.
     refused(bench(head + problem + "[[algorithm]]\nid = \"a\"\ntype = \"astar\"\nencoding = \"line\"\n"),
