@@ -38,17 +38,6 @@ std::string where_of(const Campaign& c, int line, const std::string& what) {
     return (c.file.empty() ? std::string("campaign") : c.file) + ": " + what;
 }
 
-/// Whether every algorithm of the campaign plans on the whole map (A*, JPS, Theta*, OMPL's
-/// planners, ...): then nothing runs through an encoding, and no run counts iterations.
-bool planners_only(const Campaign& c) {
-    if (c.algorithms.empty()) return false;
-    for (const auto& a : c.algorithms) {
-        const engine::AlgorithmEntry* entry = engine::algorithms().find(a.spec.name);
-        if (!entry || !entry->whole_map()) return false;
-    }
-    return true;
-}
-
 /// The campaign's settings that no algorithm of it uses, refused as `pride path` refuses them for
 /// one planner (engine/planner_settings.hpp), at the [[problem]] or [budget] key that gives them.
 /// A campaign with an algorithm that plans through an encoding shares its problems' settings and
@@ -109,6 +98,15 @@ const continuous::cec::SuiteRules* cec_rules_of(const ContinuousSpec& f) {
 }
 
 }  // namespace
+
+bool planners_only(const Campaign& c) {
+    if (c.algorithms.empty()) return false;
+    for (const auto& a : c.algorithms) {
+        const engine::AlgorithmEntry* entry = engine::algorithms().find(a.spec.name);
+        if (!entry || !entry->whole_map()) return false;
+    }
+    return true;
+}
 
 ProblemSpec problem_spec(const CampaignProblem& p) {
     ProblemSpec spec = p.spec;

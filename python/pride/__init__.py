@@ -53,6 +53,16 @@ def _int(name, value, optional=True):
     return int(value)
 
 
+def _seed_count(value):
+    """A campaign's seeds, a count from 1 to 1000000 (not a seed: not `--seed`'s range), in the
+    words of the campaign's own check, also past 64 bits (before: "out of range (64-bit integers)")."""
+    if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
+        raise TypeError(f"seeds: expected an integer, got {type(value).__name__}")
+    if not 1 <= value <= 1_000_000:
+        raise ValueError(f"seeds: must be in [1, 1000000], got {value}")
+    return int(value)
+
+
 def _real(name, value):
     if value is None:
         return None
@@ -452,7 +462,7 @@ class Campaign:
 
     def __init__(self, name, *, seeds, problems, algorithms, evals=None, evals_per_dim=None, iters=None, target=None,
                  precision=None):
-        self._c = _pride.campaign_from_data(_str("name", name), _int("seeds", seeds, False), _int("evals", evals),
+        self._c = _pride.campaign_from_data(_str("name", name), _seed_count(seeds), _int("evals", evals),
                                             _int("evals_per_dim", evals_per_dim), _int("iters", iters),
                                             _real("target", target), _real("precision", precision),
                                             _list("problems", problems), _list("algorithms", algorithms))
