@@ -409,3 +409,16 @@ TEST_CASE("hostile: SMS-EMOA and MOEA/D keep to a time limit with large populati
     CHECK(run_pride("front --algo moead --problem dtlz2 --pop 6000 --no-reference --evals 100 --wall-ms 1000").status ==
           0);
 }
+
+TEST_CASE("hostile: a PNG that does not parse shows none of its bytes", "[hostile][readers]") {
+    // Before: libpng's message led with the chunk it stopped at, four bytes of the file
+    // ("bad PNG: ET[20]h: invalid chunk type" for a text after the PNG signature).
+    const TempDir dir("pride-hostile-png");
+    const std::string png =
+        dir.write("g.png", std::string("\x89PNG\r\n\x1a\n", 8) + "SECRET hunter2 SECRET hunter2 SECRET\n");
+    const auto r = run_pride("path --map " + q(png) + " --start 0,0 --goal 1,1 --algo astar");
+    refused(r, png + ": bad PNG: invalid chunk type");
+    const std::string said = r.err.substr(std::min(r.err.size(), r.err.find("g.png")));
+    CHECK(said.find("ET") == std::string::npos);
+    CHECK(said.find("hunt") == std::string::npos);
+}
