@@ -457,7 +457,8 @@ class Campaign:
 
     or from a TOML file (``pride bench``'s format) with ``Campaign.load(path)``. Python functions
     are called with the GIL held, one at a time, whatever the number of jobs. The budget: ``evals``,
-    or ``evals_per_dim`` (times each problem's dimension, as COCO budgets), and/or ``iters``; a
+    or ``evals_per_dim`` (times each problem's dimension, as COCO budgets), and/or ``iters`` (none
+    when every algorithm plans on the whole map, as ``astar``: such a campaign refuses one); a
     report target: ``target`` (an absolute value) or ``precision`` (f_opt + precision per problem)."""
 
     def __init__(self, name, *, seeds, problems, algorithms, evals=None, evals_per_dim=None, iters=None, target=None,
