@@ -33,8 +33,9 @@
 //   with probability 1/2 each and the parents come in random order, so either is as likely);
 // - iterations: a "generation" of mu children is one iteration of the run state (its history and
 //   observer call), the last one shorter when the evaluation budget ends inside it; an observer
-//   called per child would see the same population, one member changed, mu times over. Rules
-//   other than the budget (iterations, wall time, stop flag) are read once per generation;
+//   called per child would see the same population, one member changed, mu times over. The wall
+//   time and the stop flag are read before every step too (a generation of a large mu takes
+//   minutes), so a generation they end is shorter, as one the evaluation budget ends;
 // - operators: eta_c = 20, p_c = 0.9, eta_m = 20, p_m = 1/n, as pride::Nsga2 (NSGA-II's sec. V),
 //   so that the two differ only in selection when compared.
 // With constraints (framework/multi_objective.hpp's ConstrainedMultiObjectiveProblem): the fronts
@@ -250,7 +251,9 @@ struct SmsEmoa {
         const auto mutate = mutation.prepare(dim);
         sms::Scratch scratch;
         while (!state.done()) {
-            for (std::size_t t = 0; t < n && !state.exhausted(); ++t) {
+            // Every rule is read before each step, not once per generation: a generation of mu
+            // steps, each O(mu log mu) or more, took minutes for mu = 100000 past --wall-ms.
+            for (std::size_t t = 0; t < n && !state.done(); ++t) {
                 // (1)
                 const auto a = static_cast<Eigen::Index>(rng.below(n));
                 auto b = static_cast<Eigen::Index>(rng.below(n - 1));

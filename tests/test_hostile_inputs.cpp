@@ -105,6 +105,17 @@ TEST_CASE("hostile: a FIFO or folder where SQLite keeps a store's journal is ref
     CHECK(!fs::exists(fresh));
     CHECK(!fs::exists(dir.file("m.sqlite")));
     CHECK(run_pride("report " + q(store)).status == 0);
+    // A FIFO in the store's own place is named as one (before: "no such store").
+    const std::string fifo = dir.file("fifo.sqlite");
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    const std::string is_fifo = fifo + ": not a regular file (a FIFO): a store is an SQLite file";
+    refused(run_pride("report " + q(fifo)), is_fifo);
+    refused(run_pride("report " + q(fifo) + " --html " + q(dir.file("html"))), is_fifo);
+    refused(run_pride("export " + q(fifo) + " --ioh " + q(dir.file("ioh"))), is_fifo);
+    refused(run_pride("merge " + q(other) + " " + q(fifo) + " --out " + q(dir.file("m.sqlite"))), is_fifo);
+    refused(run_pride("report " + q(dir.file("absent.sqlite"))), "absent.sqlite: no such store");
+    CHECK(!fs::exists(dir.file("html")));
+    CHECK(!fs::exists(dir.file("ioh")));
 }
 
 TEST_CASE("hostile: standard input named inside a file is refused, never read", "[hostile][readers]") {
@@ -291,4 +302,123 @@ TEST_CASE("hostile: the exact any-angle search is refused past its corners, in o
     CHECK(
         run_pride("path --map " + q(quarter) + " --start 0,0 --goal 198,198 --algo any-angle-exact --objective length")
             .status == 0);
+}
+
+TEST_CASE("hostile: a campaign of planners refuses the settings they do not use, at the entry and key",
+          "[hostile][campaign][grid]") {
+    // Before: a campaign whose algorithms all plan on the whole map took a problem's encoding,
+    // init, connector and waypoints, a budget and threads, and ran ignoring them, exit 0.
+    const TempDir dir("pride-hostile-campaign-planners");
+    std::string rows;
+    for (int i = 0; i < 10; ++i) rows += "..........\n";
+    dir.write("m.map", "type octile\nheight 10\nwidth 10\nmap\n" + rows);
+    const std::string head = "name = \"c\"\nseeds = 1\n";
+    const std::string problem =
+        "[[problem]]\nid = \"g\"\ntype = \"grid\"\nmap = \"m.map\"\nstart = [0, 0]\ngoal = [9, 9]\n"
+        "objective = \"length\"\n";
+    const std::string planners =
+        "[[algorithm]]\nid = \"a\"\ntype = \"astar\"\n[[algorithm]]\nid = \"t\"\n"
+        "type = \"theta-star\"\n";
+    const auto bench = [&](const std::string& text) {
+        const std::string store = dir.file("c.sqlite");
+        fs::remove(store);
+        const auto r = run_pride("bench " + q(dir.write("c.toml", text)) + " --out " + q(store));
+        if (r.status != 0) CHECK(!fs::exists(store));
+        return r;
+    };
+    const std::string whole = " (every algorithm of this campaign plans on the whole map)";
+    // A problem's settings: at the [[problem]] entry (line 3), naming the key.
+    for (const char* setting : {"encoding = \"free\"", "init = \"walk\"", "connector = \"penalty\"", "waypoints = 5"}) {
+        INFO(setting);
+        const std::string key = std::string(setting).substr(0, std::string(setting).find(' '));
+        refused(bench(head + problem + setting + "\n" + planners),
+                "c.toml:3: problem 'g': " + key + ": astar plans on the whole map");
+    }
+    // The budget and threads, at their keys.
+    refused(bench(head + "[budget]\nevaluations = 100\n" + problem + planners),
+            "c.toml:4: [budget] evaluations: astar plans on the whole map and evaluates no objective");
+    refused(bench(head + "[budget]\niterations = 5\n" + problem + planners),
+            "c.toml:4: [budget] iterations: astar plans on the whole map in one search, not in iterations; it has no "
+            "meaning there: leave it out" +
+                whole);
+    refused(bench(head + "threads = 2\n" + problem + planners), "c.toml:3: threads: astar plans on the whole map");
+    // An [[algorithm]] entry of a planner naming how to plan through an encoding: at the key.
+    refused(bench(head + problem + "[[algorithm]]\nid = \"a\"\ntype = \"astar\"\nencoding = \"line\"\n"),
+            "c.toml:13:12: encoding: astar plans on the whole map, not through an encoding");
+    // Planners alone need no budget, and run.
+    auto r = bench(head + problem + planners);
+    INFO(r.err);
+    CHECK(r.status == 0);
+    // Beside an algorithm that plans through an encoding, the problem's settings and the budget are
+    // that algorithm's (shared: the planners take them without using them).
+    r = bench(head + "[budget]\nevaluations = 60\n" + problem + "encoding = \"free\"\n" + planners +
+              "[[algorithm]]\nid = \"p\"\ntype = \"pso\"\npop = 6\n");
+    INFO(r.err);
+    CHECK(r.status == 0);
+}
+
+TEST_CASE("hostile: NSGA-II's sorting in many objectives is bounded before the run", "[hostile][mo]") {
+    // Before: pop 40000 in 3 objectives ran 17 s under --wall-ms 1000 (its first sorts come before
+    // any time check), and pop 1000000 ended as "internal error: std::bad_alloc", exit 1.
+    const auto start = std::chrono::steady_clock::now();
+    const std::string words = "pop: NSGA-II sorts its 2N parents and children every generation";
+    refused(run_pride("front --algo nsga2 --problem dtlz2 --pop 40000 --no-reference --evals 80000 --wall-ms 1000"),
+            words +
+                ", comparing every pair in each of the 3 objectives: M (2N)^2 = 1.92e+10 operations for a "
+                "population of 40000, more than the 1e+09 done in about a second, before any time limit is "
+                "checked (in 3 objectives: pop at most 9128)");
+    refused(run_pride("front --algo nsga2 --problem dtlz2 --pop 1000000 --no-reference --evals 2000000"), words);
+    refused(run_pride("front --algo nsga2 --problem dtlz2 --objectives 1000 --pop 10000 --no-reference --evals 20000"),
+            "(in 1000 objectives: pop at most 500)");
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(10));
+    // A campaign: at the algorithm, no store.
+    const TempDir dir("pride-hostile-nsga2");
+    const std::string file = dir.write("mo.toml",
+                                       "name = \"mo\"\nseeds = 1\n[budget]\nevaluations = 80000\n[[problem]]\n"
+                                       "id = \"d\"\ntype = \"dtlz2\"\n[[algorithm]]\nid = \"n\"\ntype = \"nsga2\"\n"
+                                       "pop = 40000\n");
+    refused(run_pride("bench " + q(file) + " --out " + q(dir.file("mo.sqlite"))),
+            file + ":8: algorithm 'n' on problem 'd': pop: NSGA-II sorts");
+    CHECK(!fs::exists(dir.file("mo.sqlite")));
+    // At the bound it runs; in two objectives the sort is O(N log N) and no bound applies.
+    CHECK(run_pride("front --algo nsga2 --problem dtlz2 --pop 9128 --no-reference --evals 9128").status == 0);
+    CHECK(run_pride("front --algo nsga2 --problem zdt1 --pop 40000 --no-reference --evals 40000").status == 0);
+}
+
+TEST_CASE("hostile: SMS-EMOA and MOEA/D keep to a time limit with large populations", "[hostile][mo]") {
+    // Before: SMS-EMOA read --wall-ms once per generation of pop steps (pop 20000: 13.9 s for
+    // 2000 steps under --wall-ms 1000; pop 100000: about an hour a generation), and MOEA/D's
+    // neighbourhoods, N^2 distances before the first generation, took 9.8 s for 19900 subproblems
+    // under --wall-ms 1000 (minutes for the 100000 its pop allows).
+    auto start = std::chrono::steady_clock::now();
+    const auto r =
+        run_pride("front --algo smsemoa --problem zdt1 --pop 20000 --no-reference --evals 100000000 --wall-ms 300");
+    INFO(r.err);
+    CHECK(r.status == 0);
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(8));
+    // Stopped inside its first generation (the initial population is 20000 evaluations).
+    CHECK_THAT(r.out, Catch::Contains("iterations   1\n"));
+    start = std::chrono::steady_clock::now();
+    refused(run_pride("front --algo moead --problem dtlz2 --pop 20000 --no-reference --evals 100000 --wall-ms 1000"),
+            "pop: MOEA/D finds the neighbours of each of its 19900 subproblems among all of them before the first "
+            "generation and any time limit: N^2 (M + 2) = 1.98e+09 operations in 3 objectives, more than the 2e+08 "
+            "done in about a second (at most 6324 subproblems in 3 objectives)");
+    refused(run_pride("front --algo moead --problem dtlz2 --param divisions=300 --no-reference --evals 100000"),
+            "divisions: MOEA/D finds the neighbours");
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+    CHECK(run_pride("front --algo moead --problem dtlz2 --pop 6000 --no-reference --evals 100 --wall-ms 1000").status ==
+          0);
+}
+
+TEST_CASE("hostile: a PNG that does not parse shows none of its bytes", "[hostile][readers]") {
+    // Before: libpng's message led with the chunk it stopped at, four bytes of the file
+    // ("bad PNG: ET[20]h: invalid chunk type" for a text after the PNG signature).
+    const TempDir dir("pride-hostile-png");
+    const std::string png =
+        dir.write("g.png", std::string("\x89PNG\r\n\x1a\n", 8) + "SECRET hunter2 SECRET hunter2 SECRET\n");
+    const auto r = run_pride("path --map " + q(png) + " --start 0,0 --goal 1,1 --algo astar");
+    refused(r, png + ": bad PNG: invalid chunk type");
+    const std::string said = r.err.substr(std::min(r.err.size(), r.err.find("g.png")));
+    CHECK(said.find("ET") == std::string::npos);
+    CHECK(said.find("hunt") == std::string::npos);
 }

@@ -500,7 +500,8 @@ TEST_CASE("image maps: a campaign reads a map_server map with unknown_free, and 
     dir.write("u.pgm", pgm(3, 1, {254, 205, 254}));
     const std::string u = dir.write("u.yaml", yaml("u.pgm"));
     const auto campaign = [&](const std::string& extra) {
-        return "name = \"u\"\nseeds = 1\n[budget]\nevaluations = 100\n[[problem]]\nid = \"u\"\ntype = \"grid\"\nmap = "
+        // A* alone: no budget (a campaign of planners refuses one it would not use).
+        return "name = \"u\"\nseeds = 1\n[[problem]]\nid = \"u\"\ntype = \"grid\"\nmap = "
                "\"" +
                u + "\"\nstart = [0, 0]\ngoal = [2, 0]\n" + extra + "[[algorithm]]\nid = \"a\"\ntype = \"astar\"\n";
     };
@@ -524,5 +525,5 @@ TEST_CASE("image maps: a campaign reads a map_server map with unknown_free, and 
     CHECK_THAT(definition, Contains(" unknown_free true"));
     const std::string wrong = dir.write("wrong.toml", campaign("unknown_free = 1\n"));
     pride::test::expect_input_error("bench '" + wrong + "' --out '" + dir.file("w.sqlite") + "'",
-                                    {"wrong.toml:11", "'unknown_free' must be true or false"});
+                                    {"wrong.toml:9", "'unknown_free' must be true or false"});
 }

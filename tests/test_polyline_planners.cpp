@@ -329,7 +329,8 @@ TEST_CASE("polyline planners: whole-map work beyond a campaign's budget, and sto
                       map +
                       "\"\nstart = [0, 19]\ngoal = [19, 0]\nobjective = \"length\"\n[[algorithm]]\nid = \"astar\"\n"
                       "type = \"astar\"\n[[algorithm]]\nid = \"theta\"\ntype = \"theta-star\"\n[[algorithm]]\nid = "
-                      "\"exact\"\ntype = \"any-angle-exact\"\n");
+                      "\"exact\"\ntype = \"any-angle-exact\"\n[[algorithm]]\nid = \"pso\"\ntype = \"pso\"\npop = 5\n");
+    // (The PSO takes the budget: a campaign of planners alone refuses one they would not use.)
     const std::string store = dir.file("w.sqlite");
     REQUIRE(test::run_pride("bench '" + toml + "' --out '" + store + "'").status == 0);
     // Their work (expansions, segment tests) is far beyond 5 evaluations: no budget is recorded

@@ -390,10 +390,17 @@ TEST_CASE("re problems: the front reader's errors name the file and line", "[re]
           file + ":1: expected 2 values (the problem's M), got more");
     dir.write("reference_points_RE21.dat", "1.0 2.0\n1.0 abc\n");
     CHECK(input_error_message([&] { (void)re::read_re_front(dir.path(), "re21"); }) ==
-          file + ":2: 'abc' is not a finite number");
+          file + ":2:5: expected a finite number (the file is not an RE front)");
     dir.write("reference_points_RE21.dat", "1.0 nan\n");
     CHECK(input_error_message([&] { (void)re::read_re_front(dir.path(), "re21"); }) ==
-          file + ":1: 'nan' is not a finite number");
+          file + ":1:5: expected a finite number (the file is not an RE front)");
+    // Nothing of a file that is no front is shown (before: its first word, quoted).
+    dir.write("reference_points_RE21.dat", "SECRET hunter2\n");
+    CHECK(input_error_message([&] { (void)re::read_re_front(dir.path(), "re21"); }) ==
+          file + ":1:1: expected a finite number (the file is not an RE front)");
+    dir.write("reference_points_RE21.dat", "1 1e999\n");
+    CHECK(input_error_message([&] { (void)re::read_re_front(dir.path(), "re21"); }) ==
+          file + ":1:3: a number beyond the largest finite number (a damaged front file)");
     dir.write("reference_points_RE21.dat", " \n");
     CHECK(input_error_message([&] { (void)re::read_re_front(dir.path(), "re21"); }) == file + ": no points");
     CHECK_THAT(input_error_message([&] { (void)re::read_re_front(dir.path(), "re22"); }),

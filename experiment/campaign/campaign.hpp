@@ -67,6 +67,9 @@ struct Campaign {
     std::string name;
     std::int64_t seeds = 0;  // seeds 1..seeds
     engine::Budget budget;   // evaluations and/or iterations
+    // Where the file gives [budget]'s evaluations and iterations, and threads (0: not from a file),
+    // for the messages that refuse them.
+    int evaluations_line = 0, iterations_line = 0, threads_line = 0;
     // Or evaluations per dimension: each continuous problem's runs get this times its dimension
     // (COCO's budgets; excludes budget.evaluations; grids have no dimension and refuse it).
     std::optional<std::int64_t> evaluations_per_dim;

@@ -9,7 +9,9 @@
 #include <tuple>
 
 #include "engine/json.hpp"
+#include "engine/planner_settings.hpp"
 #include "engine/prepared.hpp"
+#include "engine/registry.hpp"
 #include "experiment/campaign/identity.hpp"
 #include "experiment/campaign/run_one.hpp"
 #include "experiment/storage/file_name.hpp"
@@ -36,6 +38,58 @@ std::string where_of(const Campaign& c, int line, const std::string& what) {
     return (c.file.empty() ? std::string("campaign") : c.file) + ": " + what;
 }
 
+/// The campaign's settings that no algorithm of it uses, refused as `pride path` refuses them for
+/// one planner (engine/planner_settings.hpp), at the [[problem]] or [budget] key that gives them.
+/// A campaign with an algorithm that plans through an encoding shares its problems' settings and
+/// its budget with the planners beside it, which take them without using them.
+void refuse_unused_planner_settings(const Campaign& c) {
+    if (!planners_only(c)) return;
+    const bool python = c.file.empty();
+    bool evaluates = false;  // OMPL's planners count their validity checks
+    for (const auto& a : c.algorithms) evaluates = evaluates || engine::algorithms().find(a.spec.name)->evaluates();
+    const engine::AlgorithmSpec& first = c.algorithms.front().spec;
+    const std::string every =
+        c.algorithms.size() == 1 ? std::string() : " (every algorithm of this campaign plans on the whole map)";
+    for (const auto& p : c.problems) {
+        const auto* g = std::get_if<GridSpec>(&p.spec);
+        if (!g) continue;
+        try {
+            engine::refuse_unused_planner_settings(first, *g, engine::Budget{});
+        } catch (const InputError& e) {
+            const std::string entry = "problem '" + p.id + "'";
+            throw InputError(python || p.line <= 0 ? entry : fmt::format("{}:{}: {}", c.file, p.line, entry),
+                             e.what() + every);
+        }
+    }
+    const auto refuse_budget = [&](engine::Budget b, int line) {
+        engine::PlannerSettingNames names;
+        names.evaluations = python ? "evals" : "[budget] evaluations";
+        names.iterations = python ? "iters" : "[budget] iterations";
+        names.threads = "threads";
+        try {
+            engine::refuse_unused_planner_settings(first, GridSpec{}, b, names);
+        } catch (const InputError& e) {
+            if (python || line <= 0) throw InputError(e.what() + every);
+            throw InputError(fmt::format("{}:{}", c.file, line), e.what() + every);
+        }
+    };
+    if (c.budget.evaluations && !evaluates) {
+        engine::Budget b;
+        b.evaluations = c.budget.evaluations;
+        refuse_budget(b, c.evaluations_line);
+    }
+    if (c.budget.iterations) {
+        engine::Budget b;
+        b.iterations = c.budget.iterations;
+        refuse_budget(b, c.iterations_line);
+    }
+    if (c.budget.threads != 1) {
+        engine::Budget b;
+        b.threads = c.budget.threads;
+        refuse_budget(b, c.threads_line);
+    }
+}
+
 /// The CEC suite of a problem's function by the catalog (cec2017-fN and cec2022-fN, from a
 /// [[suite]] or a [[problem]] alike), or nullptr.
 const continuous::cec::SuiteRules* cec_rules_of(const ContinuousSpec& f) {
@@ -45,6 +99,15 @@ const continuous::cec::SuiteRules* cec_rules_of(const ContinuousSpec& f) {
 }
 
 }  // namespace
+
+bool planners_only(const Campaign& c) {
+    if (c.algorithms.empty()) return false;
+    for (const auto& a : c.algorithms) {
+        const engine::AlgorithmEntry* entry = engine::algorithms().find(a.spec.name);
+        if (!entry || !entry->whole_map()) return false;
+    }
+    return true;
+}
 
 ProblemSpec problem_spec(const CampaignProblem& p) {
     ProblemSpec spec = p.spec;
@@ -100,7 +163,8 @@ void apply_suite_rules(Campaign& c) {
                                  "runs for cec2017, 30 for cec2022, 25 for cec2020rw)");
         c.seeds = continuous::cec::suite_rules(*suites.begin())->runs;
     }
-    if (no_budget && !c.budget.evaluations && !c.budget.iterations && !c.evaluations_per_dim)
+    // Planners alone need no budget: they search the whole map once (and refuse one they would not use).
+    if (no_budget && !planners_only(c) && !c.budget.evaluations && !c.budget.iterations && !c.evaluations_per_dim)
         throw InputError(file, suites.empty() ? std::string("missing [budget] with 'evaluations', "
                                                             "'evaluations_per_dim' or 'iterations'")
                                               : "missing [budget] with 'evaluations', 'evaluations_per_dim' or "
@@ -259,6 +323,7 @@ void prepare(Campaign& c) {
             }
         }
     }
+    refuse_unused_planner_settings(c);
     if (c.text.empty()) c.text = campaign_text(c);
 }
 

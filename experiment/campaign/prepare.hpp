@@ -33,6 +33,10 @@ inline std::string seeds_range_message(std::int64_t seeds) {
 /// map is counted once per file by load_map.
 double problem_memory(const engine::ProblemSpec& spec);
 
+/// Whether every algorithm of the campaign plans on the whole map (A*, JPS, Theta*, OMPL's
+/// planners, ...): then it needs no budget, and refuses one none of them would use (prepare()).
+bool planners_only(const Campaign& c);
+
 /// The memory one run of a campaign takes in the lists made before any starts (its task, its key
 /// with both ids, its place in the set of stored keys), for ids of these lengths.
 double run_list_memory(std::size_t problem_id_length, std::size_t algorithm_id_length);

@@ -13,6 +13,7 @@
 #include <iterator>
 #include <set>
 
+#include "engine/planner_settings.hpp"
 #include "engine/registry.hpp"
 #include "engine/run.hpp"
 #include "framework/error.hpp"
@@ -455,6 +456,20 @@ CampaignAlgorithm read_algorithm(const std::string& file, const toml::table& t) 
         // given to a number is refused here, where the file's line and column are known).
         const AlgorithmEntry* entry = algorithms().find(a.spec.name);
         const ParamSpec* spec = entry ? entry->param(k) : nullptr;
+        // How an algorithm plans through an encoding, named for a whole-map planner: refused at the
+        // key in pride path's words (it was "'encoding' must be a number").
+        if (entry && entry->whole_map() && !spec) {
+            GridSpec g;
+            if (k == "encoding") g.encoding = "line";
+            if (k == "init") g.init = "uniform";
+            if (k == "connector") g.connector = "penalty";
+            if (k == "waypoints") g.waypoints = 4;
+            try {
+                engine::refuse_unused_planner_settings(a.spec, g, engine::Budget{});
+            } catch (const InputError& e) {
+                fail(at_column(file, value), e.what());
+            }
+        }
         if (value.is_string() && spec && spec->type == ParamType::choice)
             a.spec.params.set_name(k, std::string(**value.as_string()));
         else
@@ -527,11 +542,13 @@ Campaign parse_campaign(const std::string& path) {
             for (auto&& [bk, bv] : *b) {
                 const std::string kk(bk.str());
                 if (kk == "evaluations") {
+                    c.evaluations_line = static_cast<int>(bv.source().begin.line);
                     c.budget.evaluations = need_integer(path, bv, kk);
                     if (*c.budget.evaluations < 1 || *c.budget.evaluations > max_budget)
                         fail(at(path, bv), fmt::format("'evaluations' must be in [1, {}], got {}", max_budget,
                                                        *c.budget.evaluations));
                 } else if (kk == "iterations") {
+                    c.iterations_line = static_cast<int>(bv.source().begin.line);
                     c.budget.iterations = need_integer(path, bv, kk);
                     if (*c.budget.iterations < 0 || *c.budget.iterations > max_budget)
                         fail(at(path, bv),
@@ -564,6 +581,7 @@ Campaign parse_campaign(const std::string& path) {
                      "[budget]: give target (an absolute value) or precision (f_opt + precision), "
                      "not both");
         } else if (k == "threads") {  // evaluation threads per run (Budget::threads; results unchanged)
+            c.threads_line = static_cast<int>(value.source().begin.line);
             c.budget.threads = need_integer(path, value, k);
             if (c.budget.threads < 1 || c.budget.threads > 256) fail(at(path, value), "'threads' must be in [1, 256]");
         } else if (k == "suite") {

@@ -175,7 +175,7 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
         require(std::filesystem::symlink_status(out, ec).type() == std::filesystem::file_type::not_found, out,
                 "exists already; merge writes a new store (choose another --out)");
     }
-    for (const auto& in : inputs) require(std::filesystem::is_regular_file(in), in, "no such store");
+    for (const auto& in : inputs) require_store_file(in);
     // One file named twice (under the same name or another: a link, another path) would count its
     // runs twice.
     std::map<std::pair<dev_t, ino_t>, std::string> seen;

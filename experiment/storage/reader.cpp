@@ -314,6 +314,21 @@ sqlite3* try_open(const std::string& uri, std::string& why) {
 
 }  // namespace
 
+namespace {
+
+/// What is at `st` when it is no regular file, in a message's words.
+const char* kind_of(const struct stat& st, bool dangling) {
+    return dangling               ? "a link to nothing"
+           : S_ISFIFO(st.st_mode) ? "a FIFO"
+           : S_ISDIR(st.st_mode)  ? "a folder"
+           : S_ISCHR(st.st_mode)  ? "a character device"
+           : S_ISBLK(st.st_mode)  ? "a block device"
+           : S_ISSOCK(st.st_mode) ? "a socket"
+                                  : "not a file";
+}
+
+}  // namespace
+
 void check_store_files(const std::string& path) {
     for (const char* suffix : {"-journal", "-wal", "-shm"}) {
         const std::string file = path + suffix;
@@ -322,16 +337,18 @@ void check_store_files(const std::string& path) {
         struct stat st {};
         const bool dangling = ::stat(file.c_str(), &st) != 0;
         if (!dangling && S_ISREG(st.st_mode)) continue;
-        const char* kind = dangling               ? "a link to nothing"
-                           : S_ISFIFO(st.st_mode) ? "a FIFO"
-                           : S_ISDIR(st.st_mode)  ? "a folder"
-                           : S_ISCHR(st.st_mode)  ? "a character device"
-                           : S_ISBLK(st.st_mode)  ? "a block device"
-                           : S_ISSOCK(st.st_mode) ? "a socket"
-                                                  : "not a file";
-        throw InputError(file + ": not a regular file (" + kind +
+        throw InputError(file + ": not a regular file (" + kind_of(st, dangling) +
                          "): SQLite keeps the store's journal there; remove it to use the store");
     }
+}
+
+void require_store_file(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) return;
+    struct stat link {};
+    require(::lstat(path.c_str(), &link) == 0, path, "no such store");
+    const bool dangling = ::stat(path.c_str(), &st) != 0;
+    throw InputError(path + ": not a regular file (" + kind_of(st, dangling) + "): a store is an SQLite file");
 }
 
 std::string read_only_uri(const std::string& path) {
@@ -419,7 +436,7 @@ void constrained(const Query& q, int i, StoredRun& r) {
 /// read_store, and check_store with `keep_runs` false (its runs checked, not kept: a store of any
 /// size is checked in the memory of one run).
 CampaignStore read_checked(const std::string& path, bool keep_runs) {
-    require(std::filesystem::is_regular_file(path), path, "no such store");
+    require_store_file(path);
     check_length(path);
     const Connection db(path);
     const auto tables = names(db, "SELECT name FROM sqlite_master WHERE type = 'table'");

@@ -25,6 +25,11 @@ namespace pride::storage {
 /// file (a FIFO): ...".
 void check_store_files(const std::string& path);
 
+/// InputError unless `path` is a regular file to read a store from: "PATH: no such store", or
+/// "PATH: not a regular file (a FIFO): ..." for what is there but is no file (before: a FIFO was
+/// "no such store").
+void require_store_file(const std::string& path);
+
 /// The SQLite URI that opens the store at `path` for reading without writing anything beside it:
 /// "file:PATH?mode=ro", or, where that cannot read it (a read-only folder or file system, where a
 /// store in WAL mode cannot get its -shm file), "file:PATH?immutable=1" when nothing of the store

@@ -61,6 +61,12 @@ extern "C" void png_read_memory(png_structp png, png_bytep out, png_size_t n) {
 
 extern "C" void png_record_error(png_structp png, png_const_charp message) {
     auto* s = static_cast<PngState*>(png_get_error_ptr(png));
+    // libpng puts the name of the chunk it stopped at before its words ("ET[20]h: invalid chunk
+    // type"): four bytes of the file, and a message never shows what a file holds. Its words only.
+    const char* words = std::strstr(message, ": ");
+    if (words && words - message <= 16 &&
+        std::memchr(message, ' ', static_cast<std::size_t>(words - message)) == nullptr)
+        message = words + 2;
     std::snprintf(s->message, sizeof s->message, "%s", message);
     png_longjmp(png, 1);
 }

@@ -54,6 +54,16 @@ def _int(name, value, optional=True):
     return int(value)
 
 
+def _seed_count(value):
+    """A campaign's seeds, a count from 1 to 1000000 (not a seed: not `--seed`'s range), in the
+    words of the campaign's own check, also past 64 bits (before: "out of range (64-bit integers)")."""
+    if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
+        raise TypeError(f"seeds: expected an integer, got {type(value).__name__}")
+    if not 1 <= value <= 1_000_000:
+        raise ValueError(f"seeds: must be in [1, 1000000], got {value}")
+    return int(value)
+
+
 def _real(name, value):
     if value is None:
         return None
@@ -458,12 +468,13 @@ class Campaign:
 
     or from a TOML file (``pride bench``'s format) with ``Campaign.load(path)``. Python functions
     are called with the GIL held, one at a time, whatever the number of jobs. The budget: ``evals``,
-    or ``evals_per_dim`` (times each problem's dimension, as COCO budgets), and/or ``iters``; a
+    or ``evals_per_dim`` (times each problem's dimension, as COCO budgets), and/or ``iters`` (none
+    when every algorithm plans on the whole map, as ``astar``: such a campaign refuses one); a
     report target: ``target`` (an absolute value) or ``precision`` (f_opt + precision per problem)."""
 
     def __init__(self, name, *, seeds, problems, algorithms, evals=None, evals_per_dim=None, iters=None, target=None,
                  precision=None):
-        self._c = _pride.campaign_from_data(_str("name", name), _int("seeds", seeds, False), _int("evals", evals),
+        self._c = _pride.campaign_from_data(_str("name", name), _seed_count(seeds), _int("evals", evals),
                                             _int("evals_per_dim", evals_per_dim), _int("iters", iters),
                                             _real("target", target), _real("precision", precision),
                                             _list("problems", problems), _list("algorithms", algorithms))

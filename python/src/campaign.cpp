@@ -246,8 +246,6 @@ std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seed
     auto& k = c->campaign;
     require(!name.empty(), "name", "a campaign needs a name");
     require(seeds >= 1 && seeds <= campaign::max_campaign_seeds, "seeds", campaign::seeds_range_message(seeds));
-    require(evals || evals_per_dim || iters, "campaign",
-            "give evals, evals_per_dim or iters (the budget of every run)");
     require(!(evals && evals_per_dim), "evals_per_dim", "give evals or evals_per_dim, not both");
     // The budget before the problems, whose sizes are checked with their runs under it.
     const auto count = [](const char* name, std::optional<std::int64_t> v, std::int64_t lo) {
@@ -276,6 +274,9 @@ std::shared_ptr<PyCampaign> from_data(const std::string& name, std::int64_t seed
     // The algorithms first: each function's and problem's size is checked with their runs.
     std::size_t i = 0;
     for (const auto& a : algorithms) k.algorithms.push_back(algorithm(a, i++));
+    // Planners alone need none (and refuse one: prepare()).
+    require(evals || evals_per_dim || iters || campaign::planners_only(k), "campaign",
+            "give evals, evals_per_dim or iters (the budget of every run)");
     i = 0;
     for (const auto& p : problems) {
         if (!py::isinstance<py::dict>(p))

@@ -51,6 +51,11 @@ def test_seeds_have_one_limit(tmp_path):
         pride.Campaign("c", seeds=1_000_001, evals=10, problems=[{"id": "s", "problem": "sphere", "dim": 2}],
                        algorithms=["pso"])
     assert one_line(e) == "seeds: must be in [1, 1000000], got 1000001"
+    # A count, not a seed: past 64 bits too, the campaign's words (before: "out of range (64-bit integers)").
+    with pytest.raises(ValueError) as e:
+        pride.Campaign("c", seeds=2**64 - 1, evals=10, problems=[{"id": "s", "problem": "sphere", "dim": 2}],
+                       algorithms=["pso"])
+    assert one_line(e) == "seeds: must be in [1, 1000000], got 18446744073709551615"
     toml = tmp_path / "c.toml"
     toml.write_text('name = "c"\nseeds = 1000001\n[budget]\nevaluations = 10\n[[problem]]\nid = "s"\n'
                     'type = "sphere"\ndim = 2\n[[algorithm]]\nid = "p"\ntype = "pso"\n')
@@ -83,6 +88,28 @@ def test_whole_map_planners_refuse_settings_they_do_not_use():
                 pride.plan(grid, (0, 0), (9, 9), algo=algo, **kw)
             assert one_line(e).startswith(f"{name}: {algo} plans on the whole map"), (algo, kw)
     assert len(pride.plan(grid, (0, 0), (9, 9), algo="astar").path) == 10
+
+
+def test_a_campaign_of_planners_refuses_settings_none_of_them_uses(tmp_path):
+    # Before: taken and ignored (and a budget was even required).
+    grid = pride.Grid(np.zeros((10, 10), dtype=int))
+    problem = {"id": "g", "grid": grid, "start": (0, 0), "goal": (9, 9), "objective": "length"}
+    planners = ["astar", "theta-star"]
+    whole = " (every algorithm of this campaign plans on the whole map)"
+    for kw, words in ((dict(evals=10), "evals: astar plans on the whole map and evaluates no objective"),
+                      (dict(iters=3), "iters: astar plans on the whole map in one search")):
+        with pytest.raises(ValueError) as e:
+            pride.Campaign("c", seeds=1, problems=[problem], algorithms=planners, **kw)
+        assert one_line(e).startswith(words) and one_line(e).endswith(whole), kw
+    for key, value in (("encoding", "free"), ("init", "walk"), ("connector", "penalty"), ("waypoints", 5)):
+        with pytest.raises(ValueError) as e:
+            pride.Campaign("c", seeds=1, problems=[{**problem, key: value}], algorithms=planners)
+        assert one_line(e).startswith(f"problem 'g': {key}: astar plans on the whole map"), key
+    pride.Campaign("c", seeds=1, problems=[problem], algorithms=planners).run(tmp_path / "c.sqlite")
+    assert len(pride.read_store(tmp_path / "c.sqlite", dataframe=False)) == 2
+    # Beside an algorithm that plans through an encoding, they are that algorithm's.
+    pride.Campaign("c", seeds=1, evals=20, problems=[{**problem, "encoding": "free"}],
+                   algorithms=planners + [{"id": "p", "algo": "pso", "pop": 4}])
 
 
 def test_start_equal_to_goal_is_the_one_cell_path_for_every_planner():
@@ -119,6 +146,15 @@ def test_nsga3_refuses_more_objectives_than_it_sets_up_in_time():
     with pytest.raises(ValueError) as e:
         pride.front("smsemoa", "dtlz2", objectives=1000, wall_ms=500, reference=False)
     assert one_line(e).startswith("objectives: ") and "pop must be at most 0" not in str(e.value)
+    # NSGA-II's sorting and MOEA/D's neighbourhoods, before the first time check (before: 17 s and
+    # 9.8 s under wall_ms=1000, or std::bad_alloc).
+    with pytest.raises(ValueError) as e:
+        pride.front("nsga2", "dtlz2", pop=40000, evals=80000, wall_ms=1000, reference=False)
+    assert one_line(e).startswith("pop: NSGA-II sorts its 2N parents and children every generation")
+    with pytest.raises(ValueError) as e:
+        pride.front("moead", "dtlz2", pop=20000, evals=80000, wall_ms=1000, reference=False)
+    assert one_line(e).startswith("pop: MOEA/D finds the neighbours of each of its 19900 subproblems")
+    assert time.monotonic() - t < 10
 
 
 def test_a_fifo_beside_a_store_is_refused(tmp_path):

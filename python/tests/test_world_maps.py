@@ -54,8 +54,11 @@ def test_unknown_cells_blocked_or_free(tmp_path):
     # A campaign's problem reads its map file the same way.
     problem = {"id": "u", "grid": str(tmp_path / "u.yaml"), "start": (0, 0), "goal": (2, 0)}
     with pytest.raises(ValueError, match="cannot be reached"):
-        pride.Campaign("u", seeds=1, iters=1, problems=[problem], algorithms=["astar"]).run(tmp_path / "b.sqlite")
-    pride.Campaign("u", seeds=1, iters=1, problems=[{**problem, "unknown_free": True}],
+        pride.Campaign("u", seeds=1, problems=[problem], algorithms=["astar"]).run(tmp_path / "b.sqlite")
+    # A* alone takes no budget: one it would not use is refused, as pride bench refuses it.
+    with pytest.raises(ValueError, match="^iters: astar plans on the whole map in one search"):
+        pride.Campaign("u", seeds=1, iters=1, problems=[{**problem, "unknown_free": True}], algorithms=["astar"])
+    pride.Campaign("u", seeds=1, problems=[{**problem, "unknown_free": True}],
                    algorithms=["astar"]).run(tmp_path / "f.sqlite")
     assert pride.read_store(tmp_path / "f.sqlite", dataframe=False)[0]["best"] == 3.0  # cells, the default objective
     with pytest.raises(ValueError, match="unknown_free"):

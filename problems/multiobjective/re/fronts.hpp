@@ -12,8 +12,8 @@
 //
 // A file holds one point per line, its M values separated by spaces (or tabs); blank lines are
 // skipped. InputError naming the file and line for a line without M numbers, a value that is not a
-// finite number, an empty file, or a file beyond kMaxFrontFileBytes (checked before it is read) or
-// kMaxReFrontValues values (checked before the matrix is allocated).
+// finite number (at its column; the text itself is never shown), an empty file, or a file beyond kMaxFrontFileBytes
+// (checked before it is read) or kMaxReFrontValues values (checked before the matrix is allocated).
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -86,7 +86,12 @@ inline std::vector<double> read_rows(const std::filesystem::path& path, std::siz
             const std::string_view token = line.substr(i, j - i);
             double v = 0.0;
             const NumberText what = parse_decimal(token, v);
-            if (what != NumberText::ok) throw InputError(where, number_problem(token, what));
+            // Where, never the text: a file named in the wrong place is not shown.
+            if (what != NumberText::ok)
+                throw InputError(where + ":" + std::to_string(i + 1),
+                                 what == NumberText::too_large
+                                     ? "a number beyond the largest finite number (a damaged front file)"
+                                     : "expected a finite number (the file is not an RE front)");
             if (++count > m) break;
             values.push_back(v);
             i = j;
