@@ -9,7 +9,8 @@ import pytest
 import pride
 from conftest import cli
 
-CONSTRAINED = ["pso", "pso-constriction", "de", "jde", "jade", "shade", "lshade", "jso", "colshade"]
+CONSTRAINED = ["pso", "pso-constriction", "de", "jde", "jade", "shade", "lshade", "jso", "colshade", "cmaes", "ipop-cmaes",
+               "ga", "ga-plus"]
 DISC = ([-2.0, -2.0], [2.0, 2.0])
 
 
