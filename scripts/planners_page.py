@@ -16,8 +16,8 @@ The runs, all on the length objective with the gaps to the exact grid and any-an
 and the exact any-angle path once each (no seed, no budget); OMPL's RRT*, Informed RRT*, BIT* and
 PRM* (the grid's plane, validity checks as evaluations) and the metaheuristics ILSO (Wan and Gao 2022,
 line encoding, rough-set rule walks), IQGA (Zhang et al. 2025, chains), HS-WOA (Cai and Du 2021, chains) and PSO
-on the `free` encoding (three waypoints, repair connector), each with its registry defaults at the
-same 5,000 evaluations, seeds 1-10. Statistics: results_pages.py's rank-sum tests with Holm's
+on the `free` encoding (three waypoints, repair connector), each with its registry defaults and a
+budget of 5,000 evaluations (OMPL's planners may stop before it), seeds 1-10. Statistics: results_pages.py's rank-sum tests with Holm's
 correction, checked there against scipy.
 """
 import csv
@@ -125,13 +125,16 @@ def runs_of(rows, instance, planner):
 
 
 def gap_block(rows, field):
-    """Median gap (%) of every planner on every instance; - where no run found a path."""
+    """Median gap (%) of every planner on every instance over the runs that found a path, with their
+    number beside it where some runs found none; - where no run found a path."""
     out = []
     for planner in PLANNERS:
         cells = [planner]
         for name, _, _, _ in INSTANCES:
             v = values(rows, name, planner, field)
-            cells.append(f"{100 * rp.median(v):.2f}" if v else "-")
+            n = len(runs_of(rows, name, planner))
+            cell = f"{100 * rp.median(v):.2f}" if v else "-"
+            cells.append(cell + (f" ({len(v)}/{n})" if v and len(v) < n else ""))
         out.append(cells)
     return rp.table(["planner"] + [name for name, _, _, _ in INSTANCES], out, "l" + "r" * len(INSTANCES))
 
@@ -144,9 +147,9 @@ def success_block(rows):
         times = [float(r["wall_ms"]) for r in rows if r["planner"] == planner]
         evals = [int(r["evaluations"]) for r in rows if r["planner"] == planner]
         out.append([planner, f"{found} of {total}", f"{rp.median(times):.3f}", f"{max(times):.3f}",
-                    f"{rp.median(evals):g}"])
-    return rp.table(["planner", "runs that found a path", "median ms", "max ms", "median evaluations"], out,
-                    "lrrrr")
+                    f"{rp.median(evals):g}", f"{min(evals):g}", f"{max(evals):g}"])
+    return rp.table(["planner", "runs that found a path", "median ms", "max ms", "median evaluations",
+                     "min evaluations", "max evaluations"], out, "lrrrrrr")
 
 
 def metrics_block(rows):
@@ -157,15 +160,16 @@ def metrics_block(rows):
         for planner in PLANNERS:
             found = [r for r in runs_of(rows, name, planner) if r["feasible"] == "1"]
             if not found:
-                out.append([planner, f"0/{len(runs_of(rows, name, planner))}"] + ["-"] * len(METRICS))
+                out.append([planner, f"0/{len(runs_of(rows, name, planner))}"] + ["-"] * (1 + len(METRICS)))
                 continue
-            cells = [planner, f"{len(found)}/{len(runs_of(rows, name, planner))}"]
+            cells = [planner, f"{len(found)}/{len(runs_of(rows, name, planner))}",
+                     f"{rp.median([int(r['evaluations']) for r in found]):g}"]
             for k in METRICS:
                 v = [float(r[k]) for r in found if r[k]]
                 cells.append(f"{rp.median(v):.4g}" if v else "-")
             out.append(cells)
         parts.append(f"**{name}** (`{path}`, {start} to {goal}):\n\n" +
-                     rp.table(["planner", "found"] + METRICS, out, "ll" + "r" * len(METRICS)))
+                     rp.table(["planner", "found", "evaluations"] + METRICS, out, "ll" + "r" * (1 + len(METRICS))))
     return "\n\n".join(parts)
 
 
@@ -190,8 +194,8 @@ def blocks(data=DATA):
     rows = read(data)
     return {
         "pl-runs": f"{len(rows):,} runs: {len(INSTANCES)} instances; {', '.join(WHOLE_MAP)} once each; "
-                   f"{', '.join(label for label, _, _ in BUDGETED)} with seeds {SEEDS.start}-{SEEDS.stop - 1} at "
-                   f"{EVALS:,} evaluations each.",
+                   f"{', '.join(label for label, _, _ in BUDGETED)} with seeds {SEEDS.start}-{SEEDS.stop - 1} and "
+                   f"a budget of {EVALS:,} evaluations each.",
         "pl-success": success_block(rows),
         "pl-any-angle-gap": gap_block(rows, "any_angle_gap"),
         "pl-grid-gap": gap_block(rows, "grid_gap"),
