@@ -182,6 +182,9 @@ def pagmo_block(data=DATA):
     hv = {k: [float(r["hv_ratio"]) for r in runs[k]] for k in runs}
     ps = rp.holm([rp.rank_sum(hv[(prob, a)], hv[(prob, b)]) for prob, a, b in keys])
 
+    def spread(v):  # the median, and the range over the runs that a median alone hides
+        return f"{rp.median(v):.4f} ({min(v):.3f}-{max(v):.3f})"
+
     def ns(rows):  # framework cost per evaluation: (wall - bare) / evaluations
         return rp.median([(float(r["wall_ms"]) - float(r["bare_ms"])) * 1e6 / float(r["fevals"]) for r in rows])
 
@@ -189,9 +192,9 @@ def pagmo_block(data=DATA):
     for (prob, a, b), p in zip(keys, ps):
         ra, rb = runs[(prob, a)], runs[(prob, b)]
         na, nb = ns(ra), ns(rb)
-        out.append([prob, f"{a} / {b}", len(ra), f"{rp.median(hv[(prob, a)]):.4f}", f"{rp.median(hv[(prob, b)]):.4f}",
+        out.append([prob, f"{a} / {b}", len(ra), spread(hv[(prob, a)]), spread(hv[(prob, b)]),
                     rp.star(p), f"{na:.0f}", f"{nb:.0f}", f"{nb / na:.1f}x"])
-    return rp.table(["problem", "pride / pagmo2", "runs each", "pride HV ratio", "pagmo2 HV ratio",
+    return rp.table(["problem", "pride / pagmo2", "runs each", "pride HV ratio (min-max)", "pagmo2 HV ratio (min-max)",
                      f"rank-sum p (Holm, {len(keys)} tests)", "pride ns per evaluation", "pagmo2 ns per evaluation",
                      "pagmo2 / pride"], out)
 
