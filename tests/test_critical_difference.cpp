@@ -3,6 +3,7 @@
 // his table 5a and his worked example (sections 3.2.2 and 3.2.4, the four variants of C4.5), and against
 // scipy 1.10.1's studentized_range (Debian's python3-scipy): scripts/critical_difference_reference.py
 // prints the values hard-coded here.
+#include <boost/math/distributions/normal.hpp>
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -66,7 +66,7 @@ void paint_ends(cairo_t* cr, grid::Cell start, grid::Cell goal, double cell) {
     cairo_fill(cr);
 }
 
-constexpr double kLegendLine = 18.0, kLegendPad = 6.0;
+constexpr double kMapLegendLine = 18.0, kMapLegendPad = 6.0;
 
 struct Rgba {
     double r, g, b, a;
@@ -90,7 +90,7 @@ void paint_legend(cairo_t* cr, const std::vector<Entry>& entries, double top, do
     cairo_set_font_size(cr, 12.0);
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const Entry& e = entries[i];
-        const double y = top + kLegendPad + kLegendLine * (static_cast<double>(i) + 0.5);
+        const double y = top + kMapLegendPad + kMapLegendLine * (static_cast<double>(i) + 0.5);
         cairo_set_source_rgba(cr, e.colour.r, e.colour.g, e.colour.b, e.colour.a);
         if (e.dot) {
             cairo_arc(cr, 18, y, 5, 0, 6.283185307179586);
@@ -181,7 +181,7 @@ void draw(const grid::GridMap& map, const std::vector<Entry>& legend, OutputFile
 }  // namespace
 
 double legend_height(std::size_t entries) {
-    return entries == 0 ? 0.0 : 2 * kLegendPad + kLegendLine * static_cast<double>(entries);
+    return entries == 0 ? 0.0 : 2 * kMapLegendPad + kMapLegendLine * static_cast<double>(entries);
 }
 
 void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Polyline* path,

@@ -26,7 +26,7 @@ using report::ReportData;
 using report::ReportRow;
 using storage::StoredRun;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kFloor = 1e-12;                 // precisions at or below it are drawn at it on log axes
 constexpr std::size_t kCurvePoints = 400;        // x positions per convergence curve at most
 constexpr std::size_t kParetoCells = 4096;       // maps up to 64 x 64 get their Pareto front: it is cheap
@@ -70,7 +70,7 @@ Curve summarise(const std::vector<const StoredRun*>& runs, bool by_evaluations, 
             if (by_evaluations) {
                 while (at[i] < r.history_evaluations.size() && static_cast<double>(r.history_evaluations[at[i]]) <= x)
                     ++at[i];
-                values[i] = at[i] == 0 ? kInf : shown(r.history[at[i] - 1]);
+                values[i] = at[i] == 0 ? kInfinity : shown(r.history[at[i] - 1]);
             } else {
                 values[i] = shown(r.history[std::min(static_cast<std::size_t>(x), r.history.size() - 1)]);
             }
@@ -131,7 +131,7 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
             by_evaluations = by_evaluations && x->history_evaluations.size() == x->history.size();
     std::map<std::string, Curve> summaries;
     std::map<std::string, double> levels;
-    double lo = kInf, hi = -kInf;
+    double lo = kInfinity, hi = -kInfinity;
     const auto see = [&](double v) {
         if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
     };
@@ -142,7 +142,7 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
     }
     for (const auto& a : flat) {
         std::vector<double> finals;
-        for (const StoredRun* x : by_algorithm[a]) finals.push_back(shown(x->best.value_or(kInf)));
+        for (const StoredRun* x : by_algorithm[a]) finals.push_back(shown(x->best.value_or(kInfinity)));
         std::sort(finals.begin(), finals.end());
         levels[a] = quantile(finals, 0.5);
         see(levels[a]);
@@ -172,13 +172,13 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
     {
         floored = false;
         std::vector<std::vector<double>> finals;
-        lo = kInf, hi = -kInf;
+        lo = kInfinity, hi = -kInfinity;
         std::string missing;
         for (const auto& [a, rs] : by_algorithm) {
             finals.emplace_back();
             std::size_t none = 0;
             for (const StoredRun* x : rs) {
-                finals.back().push_back(shown(x->best.value_or(kInf)));
+                finals.back().push_back(shown(x->best.value_or(kInfinity)));
                 see(finals.back().back());
                 none += x->best ? 0 : 1;
             }

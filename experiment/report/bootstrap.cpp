@@ -12,7 +12,7 @@
 namespace pride::report::coco {
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// What one run costs a restarted algorithm: its hit when it reached the target, else all of it.
 double cost(const TargetRun& r) {
@@ -21,7 +21,7 @@ double cost(const TargetRun& r) {
 
 /// The percentiles 10, 50 and 90 of ascending values (+inf each when there are none).
 Percentiles percentiles(std::span<const double> sorted) {
-    if (sorted.empty()) return {inf, inf, inf};
+    if (sorted.empty()) return {kInfinity, kInfinity, kInfinity};
     return {percentile(sorted, 10), percentile(sorted, 50), percentile(sorted, 90)};
 }
 
@@ -85,7 +85,7 @@ ErtSpread ert_spread(const std::vector<TargetRun>& runs, std::size_t samples, st
 
 Percentiles ert_confidence(const std::vector<TargetRun>& runs, std::size_t resamples, std::uint64_t seed) {
     const std::size_t n = runs.size();
-    if (n == 0) return {inf, inf, inf};
+    if (n == 0) return {kInfinity, kInfinity, kInfinity};
     Rng rng(seed);
     std::vector<double> erts;
     erts.reserve(resamples);
@@ -97,7 +97,7 @@ Percentiles ert_confidence(const std::vector<TargetRun>& runs, std::size_t resam
             spent += cost(r);
             successes += r.hit ? 1 : 0;
         }
-        erts.push_back(successes ? spent / static_cast<double>(successes) : inf);
+        erts.push_back(successes ? spent / static_cast<double>(successes) : kInfinity);
     }
     std::sort(erts.begin(), erts.end());
     return percentiles(erts);
@@ -107,7 +107,7 @@ Ecdf ecdf_simulated_restarts(const std::vector<std::vector<TargetRun>>& pairs, s
                              std::uint64_t seed) {
     Ecdf out;
     out.pairs = pairs.size();
-    out.max_budget = -inf;
+    out.max_budget = -kInfinity;
     std::vector<double> reached;  // simulated runtimes / dimension of every pair
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         const std::vector<TargetRun>& runs = pairs[k];
