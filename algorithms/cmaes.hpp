@@ -95,6 +95,7 @@ using SelectableRestarts = OneOf<NoRestarts, Ipop, Bipop>;
 /// limit, the target or the wall time ended it).
 struct RunLog {
     std::int64_t lambda = 0;
+    Regime regime = Regime::single;
     double sigma0 = 0.0;
     std::int64_t evaluations = 0;
     Stop stop = Stop::none;
@@ -188,7 +189,8 @@ class Cmaes {
             }
             cma::Stop stop = cma::Stop::none;
             while (go_on()) {
-                if (state.progress().evaluations - before >= plan.max_evaluations) {
+                // A run with its own limit (BIPOP's small runs) starts only the generations it allows.
+                if (state.progress().evaluations - before + plan.lambda > plan.max_evaluations) {
                     stop = cma::Stop::run_budget;
                     break;
                 }
@@ -226,7 +228,7 @@ class Cmaes {
             }
             const std::int64_t used = state.progress().evaluations - before;
             sequence.used(used);
-            if (log) log->push_back({plan.lambda, sigma0 * plan.sigma_factor, used, stop, {}});
+            if (log) log->push_back({plan.lambda, plan.regime, sigma0 * plan.sigma_factor, used, stop, {}});
             if (log && lagrangian) log->back().multipliers = lagrange.multipliers();
         }
         return state.finish();
