@@ -51,7 +51,8 @@
 // when the budget ends inside a generation, the rest of it is not evaluated and no update follows;
 // values are ranked by (value, index), ties in index order; a run without restarts ends at its
 // first stopping criterion, before the budget; eigenvalues below zero or not finite count as
-// ConditionCov.
+// ConditionCov; under the augmented Lagrangian, Stagnation, EqualFunVals and MaxIter are off (its
+// ranked values move with its coefficients, and a new run would start its multipliers afresh).
 #include <algorithm>
 #include <cstdint>
 #include <span>
@@ -165,6 +166,8 @@ class Cmaes {
         [[maybe_unused]] std::size_t k = 0;
         cma::Tolerances al_tolerances = tolerances;
         al_tolerances.stagnation = false;
+        al_tolerances.equal_fun_values = false;
+        al_tolerances.max_iter = false;
         if constexpr (constrained) k = problem.constraint_counts().total();
         // The first generation is iteration 0 (the initial population of other algorithms): it is
         // sampled and evaluated under any limit but the evaluations', so that an iteration limit

@@ -62,8 +62,8 @@ struct Tolerances {
     // Off under the augmented Lagrangian, whose ranked values move with its coefficients (pycma's
     // ConstrainedFitnessAL example sets tolstagnation 0).
     bool stagnation = true;
-    bool max_iter = true;
-    bool equal_fun_values = true;
+    bool max_iter = true;          // off under the augmented Lagrangian too: a new run would start
+    bool equal_fun_values = true;  // its multipliers afresh, and its ranked values move
     void validate(const std::string& who) const {
         require(fun >= 0.0 && std::isfinite(fun), who, "tol_fun must be finite and >= 0");
         require(x >= 0.0 && std::isfinite(x), who, "tol_x must be finite and >= 0");
