@@ -51,7 +51,8 @@
 // when the budget ends inside a generation, the rest of it is not evaluated and no update follows;
 // values are ranked by (value, index), ties in index order; a run without restarts ends at its
 // first stopping criterion, before the budget; eigenvalues below zero or not finite count as
-// ConditionCov.
+// ConditionCov; under the augmented Lagrangian, Stagnation, EqualFunVals and MaxIter are off (its
+// ranked values move with its coefficients, and a new run would start its multipliers afresh).
 #include <algorithm>
 #include <cstdint>
 #include <span>
@@ -95,6 +96,7 @@ using SelectableRestarts = OneOf<NoRestarts, Ipop, Bipop>;
 /// limit, the target or the wall time ended it).
 struct RunLog {
     std::int64_t lambda = 0;
+    Regime regime = Regime::single;
     double sigma0 = 0.0;
     std::int64_t evaluations = 0;
     Stop stop = Stop::none;
@@ -164,6 +166,8 @@ class Cmaes {
         [[maybe_unused]] std::size_t k = 0;
         cma::Tolerances al_tolerances = tolerances;
         al_tolerances.stagnation = false;
+        al_tolerances.equal_fun_values = false;
+        al_tolerances.max_iter = false;
         if constexpr (constrained) k = problem.constraint_counts().total();
         // The first generation is iteration 0 (the initial population of other algorithms): it is
         // sampled and evaluated under any limit but the evaluations', so that an iteration limit
@@ -188,7 +192,8 @@ class Cmaes {
             }
             cma::Stop stop = cma::Stop::none;
             while (go_on()) {
-                if (state.progress().evaluations - before >= plan.max_evaluations) {
+                // A run with its own limit (BIPOP's small runs) starts only the generations it allows.
+                if (state.progress().evaluations - before + plan.lambda > plan.max_evaluations) {
                     stop = cma::Stop::run_budget;
                     break;
                 }
@@ -226,7 +231,7 @@ class Cmaes {
             }
             const std::int64_t used = state.progress().evaluations - before;
             sequence.used(used);
-            if (log) log->push_back({plan.lambda, sigma0 * plan.sigma_factor, used, stop, {}});
+            if (log) log->push_back({plan.lambda, plan.regime, sigma0 * plan.sigma_factor, used, stop, {}});
             if (log && lagrangian) log->back().multipliers = lagrange.multipliers();
         }
         return state.finish();

@@ -1,11 +1,13 @@
 // CMA-ES (algorithms/cmaes.hpp): table 1's strategy parameters against python3-cmaes 0.9.1's (an
 // independent implementation of the same tutorial), convergence on the sphere and an ill-
 // conditioned ellipsoid, the stopping criteria one by one, IPOP's doubling and BIPOP's two
-// regimes, the boundary policies, exact budgets, reproducibility and the parameter checks.
+// regimes (the bookkeeping step by step), MaxIter and EqualFunVals, the boundary policies, exact budgets,
+// reproducibility and the parameter checks.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -201,38 +203,143 @@ TEST_CASE("IPOP-CMA-ES: each restart doubles lambda and starts when a criterion 
     CHECK(single.best_f > 1.0);
 }
 
-TEST_CASE("BIPOP-CMA-ES: small runs alternate with doubling large ones, within the large budget", "[cmaes]") {
+TEST_CASE("BIPOP-CMA-ES restart bookkeeping, step by step, as Hansen (2009) sets it", "[cmaes][bipop]") {
+    // lambda_def = 10; the evaluations each run used are fed by hand. The small runs' U are the
+    // sequence's first two draws of the Rng, drawn again here from the same seed.
+    const std::uint64_t seed = 42;
+    pride::Rng rng(seed), twin(seed);
+    auto s = cma::Bipop{}.sequence(10);
+    cma::RunPlan plan;
+    const auto unlimited = std::numeric_limits<std::int64_t>::max();
+
+    REQUIRE(s.next(rng, plan));  // the first run: default lambda, booked to neither regime
+    CHECK(plan.regime == cma::Regime::first);
+    CHECK(plan.lambda == 10);
+    CHECK(plan.sigma_factor == 1.0);
+    CHECK(plan.max_evaluations == unlimited);
+    s.used(1000);
+    REQUIRE(s.next(rng, plan));  // 0 >= 0: the large regime, 2^1 lambda_def
+    CHECK(plan.regime == cma::Regime::large);
+    CHECK(plan.lambda == 20);
+    CHECK(plan.max_evaluations == unlimited);
+    s.used(4000);
+    REQUIRE(s.next(rng, plan));  // small 0 < large 4000: a small run
+    CHECK(plan.regime == cma::Regime::small);
+    {
+        const double u1 = twin.uniform(), u2 = twin.uniform();
+        // lambda_l = 40 (the large regime's next), lambda_s = floor(10 (40 / 20)^(U1^2)) in [10, 20].
+        const auto lambda = static_cast<std::int64_t>(std::floor(10.0 * std::pow(2.0, u1 * u1)));
+        CHECK(plan.lambda == lambda);
+        CHECK(plan.lambda >= 10);
+        CHECK(plan.lambda <= 20);
+        CHECK(plan.sigma_factor == std::pow(10.0, -2.0 * u2));
+        // Half the last large run's 4000 evaluations, whole generations only.
+        CHECK(plan.max_evaluations == 2000 - 2000 % lambda);
+    }
+    s.used(1500);
+    REQUIRE(s.next(rng, plan));  // 1500 < 4000: small again
+    CHECK(plan.regime == cma::Regime::small);
+    twin.uniform(), twin.uniform();
+    s.used(1999);
+    REQUIRE(s.next(rng, plan));  // 3499 < 4000: small again
+    CHECK(plan.regime == cma::Regime::small);
+    twin.uniform(), twin.uniform();
+    s.used(600);
+    REQUIRE(s.next(rng, plan));  // 4099 >= 4000: large, 2^2 lambda_def
+    CHECK(plan.regime == cma::Regime::large);
+    CHECK(plan.lambda == 40);
+    s.used(8000);
+    REQUIRE(s.next(rng, plan));  // 4099 < 12000: small, lambda_s in [10, 40] (lambda_l = 80)
+    CHECK(plan.regime == cma::Regime::small);
+    {
+        const double u1 = twin.uniform();
+        twin.uniform();
+        const auto lambda = static_cast<std::int64_t>(std::floor(10.0 * std::pow(4.0, u1 * u1)));
+        CHECK(plan.lambda == lambda);
+        CHECK(plan.max_evaluations == 4000 - 4000 % lambda);  // half the last large run's 8000
+    }
+
+    // pycma's bookkeeping: the first run goes to the small regime, and a small run is bounded by
+    // half of all the large runs' evaluations.
+    pride::Rng r2(seed);
+    cma::Bipop pycma;
+    pycma.pycma_budget = true;
+    auto q = pycma.sequence(10);
+    REQUIRE(q.next(r2, plan));
+    CHECK(plan.regime == cma::Regime::first);
+    q.used(1000);
+    REQUIRE(q.next(r2, plan));  // small 1000 >= large 0: large
+    CHECK(plan.regime == cma::Regime::large);
+    CHECK(plan.lambda == 20);
+    q.used(4000);
+    REQUIRE(q.next(r2, plan));  // 1000 < 4000: small
+    CHECK(plan.regime == cma::Regime::small);
+    q.used(3000);
+    REQUIRE(q.next(r2, plan));  // 4000 >= 4000: large
+    CHECK(plan.regime == cma::Regime::large);
+    CHECK(plan.lambda == 40);
+    q.used(8000);
+    REQUIRE(q.next(r2, plan));  // 4000 < 12000: small, within half of 12000 (the paper: of 8000)
+    CHECK(plan.regime == cma::Regime::small);
+    CHECK(plan.max_evaluations == 6000 - 6000 % plan.lambda);
+}
+
+TEST_CASE("BIPOP-CMA-ES: a first run, then doubling large runs and small runs by budget", "[cmaes][bipop]") {
     pride::Cmaes<> a;
     a.restarts = cma::Bipop{};
     std::vector<cma::RunLog> log;
     a.run_logged(pride::continuous::Rastrigin(10), pride::max_evaluations(300000), 8, pride::NoObserver{}, &log);
-    REQUIRE(log.size() >= 4);
-    std::int64_t large_lambda = 10, large = 0, small = 0;
-    bool seen_small = false;
+    REQUIRE(log.size() >= 6);
+    REQUIRE(log[0].regime == cma::Regime::first);
+    CHECK(log[0].lambda == 10);
+    CHECK(log[1].regime == cma::Regime::large);  // the first run is booked to neither regime
+    CHECK(log[1].lambda == 20);
+    std::int64_t large_lambda = 10, last_large = 0, large = 0, small = 0;
+    int smalls = 0, larges = 0;
     for (std::size_t k = 0; k < log.size(); ++k) {
-        INFO("run " << k << ": lambda " << log[k].lambda << ", sigma0 " << log[k].sigma0);
-        if (k == 0 || log[k].lambda > large_lambda || (log[k].lambda == 2 * large_lambda)) {
-            // A large run: sigma0 unchanged, lambda doubled from the last large one (the first: 10).
+        INFO("run " << k << " (" << cma::regime_name(log[k].regime) << "): lambda " << log[k].lambda << ", sigma0 "
+                    << log[k].sigma0 << ", " << log[k].evaluations << " evaluations, " << cma::stop_name(log[k].stop));
+        const bool last = k + 1 == log.size();
+        if (log[k].regime == cma::Regime::first) {
+            CHECK(k == 0);
+        } else if (log[k].regime == cma::Regime::large) {
+            ++larges;
+            CHECK(small >= large);  // the regime that has used fewer evaluations (ties: large)
             CHECK(log[k].sigma0 == 0.3);
-            CHECK(log[k].lambda == (k == 0 ? 10 : 2 * large_lambda));
-            if (k > 0) large_lambda = log[k].lambda;
-            CHECK(small >= large);  // a large run starts only once the small regime caught up
+            CHECK(log[k].lambda == 2 * large_lambda);
+            large_lambda = log[k].lambda;
             large += log[k].evaluations;
+            last_large = log[k].evaluations;
         } else {
-            seen_small = true;
+            ++smalls;
+            REQUIRE(log[k].regime == cma::Regime::small);
+            CHECK(small < large);
             CHECK(log[k].sigma0 <= 0.3);
             CHECK(log[k].sigma0 >= 0.003 * (1 - 1e-12));
-            CHECK(log[k].lambda <= large_lambda);
-            CHECK(small < large);
+            CHECK(log[k].lambda >= 10);            // lambda_def
+            CHECK(log[k].lambda <= large_lambda);  // lambda_l / 2, lambda_l the large regime's next
+            CHECK(log[k].evaluations % log[k].lambda == 0);
+            // At most half the last large run's evaluations (at least one generation).
+            CHECK(log[k].evaluations <= std::max(log[k].lambda, last_large / 2));
+            if (!last) CHECK(log[k].stop != cma::Stop::none);
             small += log[k].evaluations;
         }
     }
-    CHECK(seen_small);
+    CHECK(smalls >= 2);
+    CHECK(larges >= 2);
 }
 
 TEST_CASE("CMA-ES stopping criteria: TolFun on a flat function, TolX on the sphere, NoEffectCoord", "[cmaes]") {
     std::vector<cma::RunLog> log;
+    // Every value equal: EqualFunVals holds once n = 4 generations are there (lambda 8).
     plain().run_logged(Flat(4), pride::max_evaluations(100000), 1, pride::NoObserver{}, &log);
+    REQUIRE(log.size() == 1);
+    CHECK(log[0].stop == cma::Stop::equal_fun_values);
+    CHECK(log[0].evaluations == 8 * 4);
+    auto flat = plain();
+    flat.tolerances.equal_fun_values = false;
+    log.clear();
+    flat.run_logged(Flat(4), pride::max_evaluations(100000), 1, pride::NoObserver{}, &log);
     REQUIRE(log.size() == 1);
     CHECK(log[0].stop == cma::Stop::tol_fun);
     CHECK(log[0].evaluations == 8 * (10 + 30 * 4 / 8));  // lambda 8, after the window 10 + ceil(30 n / lambda)
@@ -247,6 +354,7 @@ TEST_CASE("CMA-ES stopping criteria: TolFun on a flat function, TolX on the sphe
            log[0].stop == cma::Stop::no_effect_axis));
 
     a.tolerances.x = 0.0;  // and now only the numbers' resolution
+    a.tolerances.max_iter = false;
     log.clear();
     a.run_logged(Ellipsoid(4), pride::max_evaluations(1'000'000), 1, pride::NoObserver{}, &log);
     REQUIRE(log.size() == 1);
@@ -280,6 +388,50 @@ TEST_CASE("CMA-ES stopping criteria: the value histories", "[cmaes]") {
     }
     CHECK_FALSE(improving.stagnation(scratch));
     CHECK(stuck.stagnation(scratch));
+}
+
+TEST_CASE("CMA-ES stopping criteria: MaxIter and EqualFunVals", "[cmaes]") {
+    // EqualFunVals, n = 3, lambda = 9: k = 1 + ceil(0.1 + 9 / 4) = 4; more than a third of the
+    // last 3 generations, i.e. 2 of them, with the best value equal to the 4th best.
+    cma::ValueHistory h;
+    h.reset(3, 9);
+    const std::vector<double> equal{1.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0, 2.0, 2.0};
+    const std::vector<double> third{1.0, 1.0, 1.0, 1.5, 2.0, 2.0, 2.0, 2.0, 2.0};  // equal only to the 3rd
+    h.record(equal, 9);
+    h.record(equal, 9);
+    CHECK_FALSE(h.equal_fun_values());  // n generations not yet there
+    h.record(third, 9);
+    CHECK(h.equal_fun_values());  // 2 of 3
+    h.record(third, 9);
+    CHECK_FALSE(h.equal_fun_values());  // 1 of 3
+    h.record(equal, 9);
+    CHECK_FALSE(h.equal_fun_values());  // third, third, equal: 1 of 3
+    h.record(equal, 9);
+    CHECK(h.equal_fun_values());  // third, equal, equal: 2 of 3 again
+
+    // MaxIter, n = 2, lambda = 6: 100 + 50 * 25 / sqrt(6) = 610.3, so it holds after 611 generations.
+    cma::ValueHistory m;
+    m.reset(2, 6);
+    const std::vector<double> v{1.0, 2.0, 3.0, 4.0, 5.0, 6.0};
+    for (int g = 0; g < 610; ++g) m.record(v, 6);
+    CHECK_FALSE(m.max_iter());
+    m.record(v, 6);
+    CHECK(m.max_iter());
+
+    // On the sphere with TolFun and TolX off, no other criterion comes first: 611 generations of 6.
+    auto a = plain();
+    a.tolerances.fun = 0.0;
+    a.tolerances.x = 0.0;
+    std::vector<cma::RunLog> log;
+    a.run_logged(pride::continuous::Sphere(2), pride::max_evaluations(1'000'000), 1, pride::NoObserver{}, &log);
+    REQUIRE(log.size() == 1);
+    CHECK(log[0].stop == cma::Stop::max_iter);
+    CHECK(log[0].evaluations == 6 * 611);
+    a.tolerances.max_iter = false;  // and without it the run goes on
+    log.clear();
+    a.run_logged(pride::continuous::Sphere(2), pride::max_evaluations(1'000'000), 1, pride::NoObserver{}, &log);
+    REQUIRE(log.size() == 1);
+    CHECK(log[0].evaluations > 6 * 611);
 }
 
 TEST_CASE("CMA-ES boundary policies: every evaluated point lies in the box", "[cmaes]") {

@@ -275,3 +275,25 @@ TEST_CASE("engine: CMA-ES's constraint parameters, refused without constraints, 
     test::expect_input_error("run --algo cmaes --problem sphere --dim 2 --evals 200 --param constraints=al",
                              {"sphere has none"});
 }
+
+TEST_CASE("engine: bipop-cmaes's bookkeeping and boundary, and the stopping flags of every CMA-ES",
+          "[cmaes][bipop][errors]") {
+    const engine::Problem f5(engine::ContinuousSpec{"bbob-f5", 5, 1});
+    // The default boundary is the penalty: BBOB's linear slope (f* = -9.21 in instance 1) solved
+    // within 1,000 D evaluations, where resampling stays 0.22 short from this seed (measured).
+    const auto penalty = engine::run({"bipop-cmaes", {}}, f5, budget(5000), 1);
+    const auto resample = engine::run({"bipop-cmaes", params({"boundary=resample"})}, f5, budget(5000), 1);
+    CHECK(penalty.best_f + 9.21 <= 1e-8);
+    CHECK(resample.best_f + 9.21 > 0.1);
+    CHECK(engine::run({"bipop-cmaes", params({"budgets=pycma"})}, f5, budget(2000), 1).evaluations == 2000);
+    for (const std::string algo : {"cmaes", "ipop-cmaes", "bipop-cmaes", "sep-cmaes"})
+        CHECK(engine::run({algo, params({"max_iter=0", "equal_fun_values=0"})}, f5, budget(1000), 1).evaluations ==
+              1000);
+    const auto message = test::input_error_message([&] {
+        engine::check({"bipop-cmaes", params({"budgets=deap"})}, f5, budget(100));
+    });
+    CHECK(message.find("budgets") != std::string::npos);
+    CHECK(test::input_error_message([&] {
+              engine::check({"cmaes", params({"budgets=paper"})}, f5, budget(100));
+          }).find("budgets") != std::string::npos);
+}

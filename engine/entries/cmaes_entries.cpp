@@ -11,16 +11,22 @@ namespace {
 template <class Covariance>
 using Family = Cmaes<Covariance, cma::SelectableRestarts, cma::SelectableBoundary, SelectableInit>;
 
-std::vector<ParamSpec> common_params() {
+/// `boundary_default`: bipop-cmaes's is the penalty (the published BIPOP-CMA-ES searched without
+/// bounds, and the penalty is the policy that lets the mean leave the box as that search does).
+std::vector<ParamSpec> common_params(const char* boundary_default = "resample") {
     return {integer("pop", 0, 0, 1'000'000, "lambda of the first run; 0: 4 + floor(3 ln D) (the tutorial's eq. 48)"),
             real("sigma0", 0.3, 0.0, 10.0, "initial step as a share of each coordinate's range").open_below(),
-            choice("boundary", {"resample", "clamp", "penalty"}, "resample",
+            choice("boundary", {"resample", "clamp", "penalty"}, boundary_default,
                    "out-of-box samples: drawn again (up to 100 times, then clamped), clamped and used clamped, or "
                    "clamped with a penalty on the distance in the ranking"),
             real("penalty", 1.0, 0.0, 1e12, "the penalty's weight per squared box width (boundary = penalty)"),
             flag("active", true, "negative recombination weights (the tutorial's active update, eq. 53)"),
             real("tol_fun", 1e-12, 0.0, 1.0, "TolFun: range of recent best values that stops a run"),
             real("tol_x", 1e-12, 0.0, 1.0, "TolX: step size, relative to the initial one, that stops a run"),
+            flag("max_iter", true, "MaxIter: a run stops after 100 + 50 (D + 3)^2 / sqrt(lambda) generations"),
+            flag("equal_fun_values", true,
+                 "EqualFunVals: a run stops when its best and (1 + ceil(0.1 + lambda / 4))-th best values are equal "
+                 "in more than a third of the last D generations"),
             walk_init_param(false)};
 }
 
@@ -33,6 +39,8 @@ Family<Covariance> configure(const Params& p, std::string id, cma::SelectableRes
     a.active = p.flag("active");
     a.tolerances.fun = p.real("tol_fun");
     a.tolerances.x = p.real("tol_x");
+    a.tolerances.max_iter = p.flag("max_iter");
+    a.tolerances.equal_fun_values = p.flag("equal_fun_values");
     const std::string& b = p.choice("boundary");
     if (b == "clamp") {
         a.boundary = cma::ClampRepair{};
@@ -187,12 +195,19 @@ void register_cmaes(AlgorithmRegistry& registry) {
     add_cma_constrained_runner(ipop, configure_ipop);
     registry.add(std::move(ipop));
 
+    auto bipop_params = common_params("penalty");
+    bipop_params.push_back(choice("budgets", {"paper", "pycma"}, "paper",
+                                  "the regimes' bookkeeping: Hansen 2009's (the first run booked to neither regime, "
+                                  "a small run within half the last large run's evaluations) or pycma's (the first "
+                                  "run booked to the small regime, a small run within half of all large runs')"));
     const auto configure_bipop = [](const Params& p) {
-        return configure<cma::FullCovariance>(p, "bipop-cmaes", cma::Bipop{});
+        cma::Bipop r;
+        r.pycma_budget = p.choice("budgets") == "pycma";
+        return configure<cma::FullCovariance>(p, "bipop-cmaes", r);
     };
     auto bipop = box_algorithm("bipop-cmaes", "cmaes",
                                "BIPOP-CMA-ES: restarts in a large and a small population regime (Hansen 2009)",
-                               common_params(), configure_bipop);
+                               bipop_params, configure_bipop);
     bipop.grid_population = 0;  // the tutorial's lambda on grids too
     bipop.memory = cma_memory(true, cma::Bipop::max_lambda_factor());
     add_cma_constrained_runner(bipop, configure_bipop);

@@ -296,6 +296,8 @@ class Search {
         if (no_effect) return Stop::no_effect_axis;
         if (history_.tol_fun(t.fun)) return Stop::tol_fun;
         if (t.stagnation && history_.stagnation(scratch_)) return Stop::stagnation;
+        if (t.equal_fun_values && history_.equal_fun_values()) return Stop::equal_fun_values;
+        if (t.max_iter && history_.max_iter()) return Stop::max_iter;
         return Stop::none;
     }
 

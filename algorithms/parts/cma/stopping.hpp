@@ -13,14 +13,16 @@ namespace pride::cma {
 
 enum class Stop {
     none,
-    tol_fun,          // range of the recent best values and of the generation's values < tol_fun
-    tol_x,            // sigma max(|p_c,i|, sqrt(C_ii)) < tol_x sigma_0,i in every coordinate
-    no_effect_axis,   // m + 0.1 sigma sqrt(lambda_i) b_i == m, i = g mod n
-    no_effect_coord,  // m_i + 0.2 sigma sqrt(C_ii) == m_i for some i
-    condition_cov,    // cond(C) > condition (or C lost definiteness)
-    stagnation,       // the medians of the recent best and median values no better than earlier ones
-    tol_x_up,         // sigma max(D) grew by more than tol_x_up from its start
-    run_budget,       // the restart policy's share of evaluations for this run is spent (BIPOP small)
+    tol_fun,           // range of the recent best values and of the generation's values < tol_fun
+    tol_x,             // sigma max(|p_c,i|, sqrt(C_ii)) < tol_x sigma_0,i in every coordinate
+    no_effect_axis,    // m + 0.1 sigma sqrt(lambda_i) b_i == m, i = g mod n
+    no_effect_coord,   // m_i + 0.2 sigma sqrt(C_ii) == m_i for some i
+    condition_cov,     // cond(C) > condition (or C lost definiteness)
+    stagnation,        // the medians of the recent best and median values no better than earlier ones
+    tol_x_up,          // sigma max(D) grew by more than tol_x_up from its start
+    run_budget,        // the restart policy's share of evaluations for this run is spent (BIPOP small)
+    max_iter,          // 100 + 50 (n + 3)^2 / sqrt(lambda) generations
+    equal_fun_values,  // the best and the k-th best value equal in more than 1/3 of the last n generations
 };
 
 inline const char* stop_name(Stop s) {
@@ -43,6 +45,10 @@ inline const char* stop_name(Stop s) {
             return "TolXUp";
         case Stop::run_budget:
             return "RunBudget";
+        case Stop::max_iter:
+            return "MaxIter";
+        case Stop::equal_fun_values:
+            return "EqualFunVals";
     }
     return "?";
 }
@@ -56,6 +62,8 @@ struct Tolerances {
     // Off under the augmented Lagrangian, whose ranked values move with its coefficients (pycma's
     // ConstrainedFitnessAL example sets tolstagnation 0).
     bool stagnation = true;
+    bool max_iter = true;          // off under the augmented Lagrangian too: a new run would start
+    bool equal_fun_values = true;  // its multipliers afresh, and its ranked values move
     void validate(const std::string& who) const {
         require(fun >= 0.0 && std::isfinite(fun), who, "tol_fun must be finite and >= 0");
         require(x >= 0.0 && std::isfinite(x), who, "tol_x must be finite and >= 0");
@@ -72,8 +80,13 @@ class ValueHistory {
         const double ratio = 30.0 * static_cast<double>(n) / static_cast<double>(lambda);
         tolfun_window_ = 10 + static_cast<std::size_t>(std::ceil(ratio));
         stagnation_min_ = 120 + static_cast<std::size_t>(std::ceil(ratio));
+        const double l = static_cast<double>(lambda);
+        max_iter_ = 100.0 + 50.0 * std::pow(static_cast<double>(n) + 3.0, 2.0) / std::sqrt(l);
+        kth_ = 1 + static_cast<std::size_t>(std::ceil(0.1 + l / 4.0));
+        n_ = n;
         best_.clear();
         median_.clear();
+        equal_.clear();
     }
 
     /// After generation g (best and median of its values, sorted ascending in `sorted`).
@@ -81,6 +94,7 @@ class ValueHistory {
         best_.push_back(sorted[0]);
         median_.push_back(median_of_sorted(sorted, count));
         last_range_ = sorted[count - 1] - sorted[0];
+        equal_.push_back(count >= kth_ && sorted[0] == sorted[kth_ - 1]);
     }
 
     /// TolFun (Hansen 2009): the range of the best values of the last 10 + ceil(30 n / lambda)
@@ -112,6 +126,19 @@ class ValueHistory {
                median_of(median_, late) >= median_of(median_, early);
     }
 
+    /// MaxIter (Hansen 2009): 100 + 50 (n + 3)^2 / sqrt(lambda) generations are done.
+    bool max_iter() const { return static_cast<double>(best_.size()) >= max_iter_; }
+
+    /// EqualFunVals (Hansen 2009): in more than a third of the last n generations the best value
+    /// equals the k-th best, k = 1 + ceil(0.1 + lambda / 4) (the k of cmaes.m's flat-fitness test;
+    /// DEAP's example compares with the ceil(0.1 + lambda / 4)-th). Decided by this project: it
+    /// waits for n generations.
+    bool equal_fun_values() const {
+        if (equal_.size() < n_) return false;
+        const auto hits = std::count(equal_.end() - static_cast<std::ptrdiff_t>(n_), equal_.end(), char{1});
+        return 3 * static_cast<std::size_t>(hits) > n_;
+    }
+
     std::size_t generations() const { return best_.size(); }
 
   private:
@@ -119,8 +146,10 @@ class ValueHistory {
         return count % 2 ? v[count / 2] : 0.5 * (v[count / 2 - 1] + v[count / 2]);
     }
 
-    std::size_t tolfun_window_ = 0, stagnation_min_ = 0;
+    std::size_t tolfun_window_ = 0, stagnation_min_ = 0, kth_ = 2, n_ = 1;
+    double max_iter_ = 0.0;
     std::vector<double> best_, median_;
+    std::vector<char> equal_;  // per generation: the best value equals the k-th best
     double last_range_ = 0.0;
 };
 
