@@ -103,7 +103,7 @@ struct StoredProblem {
     std::optional<std::string> function;  // the registered function name (bbob-f3, rastrigin, grid)
     std::int64_t instance = 0;            // 0: the function as defined; bbob: COCO's instance id >= 1
     std::optional<double> f_opt;          // the known optimum value
-    std::optional<std::string> suite;     // bbob, classic
+    std::optional<std::string> suite;     // bbob, bbob-constrained, classic, ...
     std::optional<std::int64_t> fid;      // the function's number in its suite (bbob f1..f24: 1..24)
 };
 
