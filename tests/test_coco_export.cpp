@@ -1,4 +1,4 @@
-// `pride export STORE --coco DIR`: COCO's bbob data files (.info, .dat, .tdat) from each run's COCO
+// `pride export STORE --coco DIR`: COCO's data files (.info, .dat, .tdat) from each run's COCO
 // trace (framework/coco_trace.hpp), and cocopp reading them (scripts/cocopp_check.py) when a
 // numbbo/coco-postprocess checkout is named by PRIDE_COCOPP_SRC.
 #include <fmt/format.h>
@@ -446,4 +446,51 @@ TEST_CASE("export --coco: a store of two COCO suites, or of neither, is one line
     expect_input_error("export '" + store + "' --coco '" + (dir / "c").string() + "'",
                        {"c.sqlite", "bbob-constrained-f13-i2-d3", "seed 1", "COCO's constrained values", "new store"});
     CHECK(!fs::exists(dir / "c"));
+}
+
+TEST_CASE("campaigns: [[suite]] name = \"bbob-constrained\", and its refusals at the key", "[campaign][constraints]") {
+    const pride::test::TempDir tmp("pride-bbobc-suite");
+    const fs::path& dir = tmp.path();
+    const auto campaign = [](const std::string& suite) {
+        return "name = \"s\"\nseeds = 1\n[budget]\nevaluations_per_dim = 10\n[[suite]]\nname = \"bbob-constrained\"\n" +
+               suite + "[[algorithm]]\nid = \"de\"\ntype = \"de\"\npop = 10\n";
+    };
+    const auto refused = [&](const std::string& suite, const std::vector<std::string>& words) {
+        std::ofstream(dir / "c.toml") << campaign(suite);
+        INFO(suite);
+        expect_input_error("bench '" + (dir / "c.toml").string() + "' --out '" + (dir / "c.sqlite").string() + "'",
+                           words);
+        CHECK(!fs::exists(dir / "c.sqlite"));  // refused before anything ran
+    };
+    refused("functions = [1, 55]\ndimensions = [2]\n",
+            {"c.toml:7:", "function 55 is not in the bbob-constrained suite (1-54)"});
+    refused("instances = [0]\ndimensions = [2]\n", {"c.toml:7:", "bbob-constrained: COCO's instances are 1 to"});
+    refused("dimensions = [2, 41]\n",
+            {"c.toml:7:", "dimension 41: the bbob-constrained functions take a dimension from 2 to 40"});
+    refused("functions = [1]\n", {"c.toml:5", "a [[suite]] needs 'dimensions'"});
+    refused("functions = []\ndimensions = [2]\n", {"c.toml:5", "must not be empty"});
+
+    // The default functions (all 54) and instances (1-5), one problem per (function, dimension,
+    // instance), in that order, with COCO's f(x*) and the suite's function number in the store.
+    std::ofstream(dir / "c.toml") << campaign("id = \"bc\"\ndimensions = [2]\n");
+    const std::string store = (dir / "c.sqlite").string();
+    REQUIRE(run_pride("bench '" + (dir / "c.toml").string() + "' --jobs 2 --out '" + store + "'").status == 0);
+    const auto s = pride::storage::read_store(store);
+    REQUIRE(s.problems);
+    REQUIRE(s.problems->size() == 54u * 5u);
+    CHECK(s.runs.size() == 54u * 5u);
+    std::size_t k = 0;
+    for (int f = 1; f <= 54; ++f)
+        for (int i = 1; i <= 5; ++i) {
+            const auto& p = (*s.problems)[k++];
+            CHECK(p.id == fmt::format("bc-f{}-i{}-d2", f, i));
+            CHECK(p.suite == "bbob-constrained");
+            CHECK(p.fid == f);
+            CHECK(p.instance == i);
+            CHECK(p.dim == 2);
+            REQUIRE(p.f_opt);
+            CHECK(*p.f_opt == pride::continuous::bbob_constrained::Problem(f, 2, i).optimum_value());
+        }
+    // COCO's f(x*) of f1, instance 1, D = 2, as its logger printed it (tests/data/bbob_constrained/logger.txt).
+    CHECK(fmt::format("{:13.12e}", *(*s.problems)[0].f_opt) == "1.030319347200e+03");
 }
