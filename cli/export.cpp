@@ -20,8 +20,8 @@ int export_command(const ExportOptions& o, std::ostream& out) {
         std::string text = fmt::format("{} runs of {} algorithm{} written as COCO data ({} files) under {}\n", c.runs,
                                        c.algorithms, c.algorithms == 1 ? "" : "s", c.files, c.folder);
         if (c.skipped)
-            text += fmt::format("{} run{} on problems outside the bbob suite not written (not COCO's data)\n",
-                                c.skipped, c.skipped == 1 ? "" : "s");
+            text += fmt::format("{} run{} on problems outside the {} suite not written (not COCO's data)\n", c.skipped,
+                                c.skipped == 1 ? "" : "s", c.suite);
         print_then_commit(out, text, files);
         return 0;
     }

@@ -1,7 +1,7 @@
 #pragma once
 // `pride export STORE --ioh DIR`: a campaign store as IOHprofiler files (the COCO-style `.info`
-// and `.dat` files IOHanalyzer reads); `--coco DIR`: its bbob runs as COCO's own data files
-// (cocopp). One folder per algorithm.
+// and `.dat` files IOHanalyzer reads); `--coco DIR`: its bbob or bbob-constrained runs as COCO's
+// own data files (cocopp). One folder per algorithm.
 #include <iosfwd>
 #include <string>
 

@@ -8,6 +8,9 @@
 //   always kept (without moving the trigger, as COCO's logger does);
 // - evaluations: floor(10^(k/20)) for k = 0, 1, ... and dim * {1, 2, 5} * 10^k.
 // Bounded by the decades crossed (a few hundred points), never by the evaluations.
+// On a constrained problem COCO counts f evaluations and constraint evaluations apart and its
+// evaluation triggers follow their sum: after count_constraints(), an evaluation (f and all g_i)
+// counts twice for the triggers, while the points keep the number of evaluations.
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -43,8 +46,19 @@ class CocoTrace {
     void record(std::int64_t evaluations, double best, bool improved) {
         if (improved || evaluations == 1) [[unlikely]]
             target_record(evaluations, best);
-        if (evaluations >= next_) [[unlikely]]
+        if (evaluations * weight_ >= next_) [[unlikely]]
             evaluation_trigger(evaluations, best);
+    }
+
+    /// From now on an evaluation is one f and one constraint evaluation for the evaluation
+    /// triggers (COCO's f evaluations + g evaluations). Call before the first record().
+    void count_constraints() noexcept { weight_ = 2; }
+
+    /// The run's end (logger_bbob_free): a last point at `evaluations` in each trace whose last
+    /// point is not there.
+    void close(std::int64_t evaluations, double best) {
+        for (auto* points : {&targets_, &evaluations_})
+            if (points->empty() || points->back().evaluations != evaluations) points->push_back({evaluations, best});
     }
 
     std::vector<TracePoint>& targets() noexcept { return targets_; }
@@ -59,13 +73,14 @@ class CocoTrace {
     }
 
     [[gnu::noinline]] void evaluation_trigger(std::int64_t evaluations, double best) {
+        const std::int64_t counted = evaluations * weight_;
         bool hit = false;
-        if (evaluations >= next_first_) {  // coco_observer_evaluations_trigger_first
+        if (counted >= next_first_) {  // coco_observer_evaluations_trigger_first
             while (first_value(exponent1_) <= next_first_) ++exponent1_;
             next_first_ = first_value(exponent1_);
             hit = true;
         }
-        if (evaluations >= next_second_) {  // coco_observer_evaluations_trigger_second
+        if (counted >= next_second_) {  // coco_observer_evaluations_trigger_second
             if (base_ + 1 < std::size(kBases)) {
                 ++base_;
             } else {
@@ -116,7 +131,8 @@ class CocoTrace {
     double exponent_ = INT_MAX;  // the last target trigger's exponent (COCO: an int from INT_MAX)
     std::int64_t next_first_ = 1, exponent1_ = 0;
     std::int64_t next_second_ = 0, exponent2_ = 0;
-    std::int64_t next_ = 1;  // min(next_first_, next_second_): the next evaluation to check
+    std::int64_t next_ = 1;    // min(next_first_, next_second_): the next evaluation to check
+    std::int64_t weight_ = 1;  // what an evaluation counts for the evaluation triggers
     std::size_t base_ = 0;
     std::vector<TracePoint> targets_, evaluations_;
 };

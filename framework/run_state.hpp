@@ -6,8 +6,12 @@
 // On a constrained problem (framework/constraints.hpp) one evaluation gives f and the point's
 // violation v, counted once. The run's best point is the best by Deb's feasibility rules, whatever
 // handler the algorithm compares with: the best feasible point, or while there is none the least
-// violating one. The best value that stopping rules, targets, traces and the history see is the
-// best feasible f (+inf until a feasible point is found).
+// violating one. The best value that stopping rules, targets and the history see is the best
+// feasible f (+inf until a feasible point is found). The COCO trace (framework/coco_trace.hpp)
+// follows COCO's bbob logger on constrained problems instead: the least of max(f, f_opt) + v over
+// every point evaluated, feasible or not (with f_opt unknown, f for a feasible point and
+// 1e10 + v for an infeasible one); its evaluation triggers count f and constraint evaluations,
+// and it ends at the run's last evaluation.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -193,6 +197,7 @@ class BasicRunState {
         r.history = std::move(history_);
         r.history_evaluations = std::move(history_evaluations_);
         r.target_hits = std::move(target_hits_);
+        if (constrained_) trace_.close(progress_.evaluations, coco_best_);
         r.trace_targets = std::move(trace_.targets());
         r.trace_evaluations = std::move(trace_.evaluations());
         r.checkpoints = std::move(checkpoints_);
@@ -222,6 +227,7 @@ class BasicRunState {
     /// After a counted evaluation of a constrained point: Deb's best point, the best feasible value.
     void record_constrained(std::span<const double> x, double f, double v) {
         ++progress_.evaluations;
+        if (!constrained_) trace_.count_constraints();
         constrained_ = true;
         const bool feasible = v == 0.0;
         bool improved_value = false;
@@ -239,7 +245,12 @@ class BasicRunState {
             infeasible_best_f_ = f;
             std::copy(x.begin(), x.end(), best_x_.begin());
         }
-        trace_.record(progress_.evaluations, progress_.best, improved_value);
+        // COCO's logged value (logger_bbob_evaluate): (f - f_opt)^+ + v, infeasible points included.
+        const auto& optimum = termination_.optimum;
+        const double logged = (optimum ? std::max(f, *optimum) : v > 0.0 ? kCocoInfeasiblePenalty : f) + v;
+        const bool logged_better = logged < coco_best_;
+        if (logged_better || progress_.evaluations == 1) coco_best_ = logged;
+        trace_.record(progress_.evaluations, coco_best_, logged_better);
         checkpoint();
     }
 
@@ -266,6 +277,9 @@ class BasicRunState {
     std::vector<double> constraint_values_;
     bool constrained_ = false, have_feasible_ = false;
     double best_violation_ = kInf, infeasible_best_f_ = kInf;
+    double coco_best_ = kInf;  // COCO's logged best (record_constrained)
+    // COCO's LOGGER_BBOB_INFEASIBLE_PENALTY: an infeasible point's value when f_opt is unknown.
+    static constexpr double kCocoInfeasiblePenalty = 1e10;
     std::int64_t first_feasible_ = 0;
 };
 

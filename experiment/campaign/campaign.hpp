@@ -24,7 +24,7 @@ struct CampaignProblem {
     bool unknown_free = false;  // a map_server map's unknown cells read as free (grid::MapReadOptions)
     bool path_gaps = false;     // each run records its gaps to the shortest grid and any-angle lengths
     int line = 0;               // where it stands in the campaign file (0: not from a file)
-    std::string suite;          // "bbob", "classic" when it came from a suite, else empty
+    std::string suite;          // "bbob", "bbob-constrained", "classic", ... when it came from a suite, else empty
     std::shared_ptr<const engine::Problem> problem;  // built by prepare()
     // The evaluations of each run when the campaign budgets per dimension (set by prepare()).
     std::optional<std::int64_t> evaluations;

@@ -4,11 +4,13 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <variant>
 
 #include "engine/json.hpp"
 #include "engine/registry.hpp"
 #include "experiment/storage/digest.hpp"
+#include "problems/continuous/bbob_constrained/bbob_constrained.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/functions.hpp"
 
@@ -226,6 +228,11 @@ storage::CampaignRows store_rows(const Campaign& c) {
             item && !item->entry.suite.empty()) {
             r.suite = item->entry.suite;
             r.fid = item->entry.number;
+        } else if (const std::string_view prefix = continuous::bbob_constrained::kPrefix;
+                   f && f->function.starts_with(prefix)) {
+            // Not in the box catalog (constrained): its number follows the prefix, checked when it was built.
+            r.suite = "bbob-constrained";
+            r.fid = std::stoll(f->function.substr(prefix.size()));
         }
         r.definition = problem_definition(p);
         r.digest = p.digest;

@@ -19,6 +19,7 @@
 #include "framework/error.hpp"
 #include "framework/memory.hpp"
 #include "framework/read_file.hpp"
+#include "problems/continuous/bbob_constrained/bbob_constrained.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/suites.hpp"
 #include "problems/continuous/cec2020rw/cec2020rw.hpp"
@@ -345,6 +346,72 @@ void add_rw_suite(std::vector<CampaignProblem>& out, const std::string& file, co
     }
 }
 
+/// [[suite]] name = "bbob-constrained": COCO's constrained suite (functions 1-54, default all;
+/// instances from 1, default 1-5 as bbob's; dimensions 2-40, the suite's own being 2, 3, 5, 10,
+/// 20, 40), one problem per (function, instance, dimension), "PREFIX-fN-iK-dD" on
+/// bbob-constrained-fN.
+void add_bbob_constrained_suite(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t,
+                                Expansion& expansion) {
+    namespace bc = continuous::bbob_constrained;
+    const int line = static_cast<int>(t.source().begin.line);
+    const std::string where = fmt::format("{}:{}", file, line);
+    const std::string name = "bbob-constrained";
+    const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : name;
+    std::vector<std::int64_t> functions, instances{1, 2, 3, 4, 5}, dimensions;
+    for (std::int64_t f = 1; f <= bc::kFunctions; ++f) functions.push_back(f);
+    if (const auto* n = t.get("functions")) functions = need_integers(file, *n, "functions");
+    if (const auto* n = t.get("instances")) instances = need_integers(file, *n, "instances");
+    if (const auto* n = t.get("dimensions"))
+        dimensions = need_integers(file, *n, "dimensions");
+    else
+        fail(where, "a [[suite]] needs 'dimensions' (a list of integers)");
+    for (auto* list : {&functions, &instances, &dimensions})
+        if (list->empty()) fail(where, "the lists of a [[suite]] must not be empty");
+    for (const std::int64_t f : functions)
+        if (f < 1 || f > bc::kFunctions)
+            fail(at(file, *t.get("functions")),
+                 fmt::format("function {} is not in the {} suite (1-{})", f, name, bc::kFunctions));
+    for (const std::int64_t k : instances)
+        if (k < 1 || k > continuous::bbob::kMaxInstance)
+            fail(at(file, *t.get("instances")), continuous::bbob::instance_range_message(name, k));
+    for (const std::int64_t d : dimensions)
+        if (d < 2 || d > static_cast<std::int64_t>(bc::kMaxDimension))
+            fail(at(file, *t.get("dimensions")),
+                 fmt::format("dimension {}: the {} functions take a dimension from 2 to {} (the suite's: 2, 3, 5, "
+                             "10, 20, 40)",
+                             d, name, bc::kMaxDimension));
+    std::vector<std::int64_t> dims;
+    for (const std::int64_t d : dimensions)
+        if (std::find(dims.begin(), dims.end(), d) == dims.end()) dims.push_back(d);
+    {
+        // A rotation, and up to 6 + 3D active constraints and half as many inactive ones, of D values each.
+        double memory = 0.0;
+        for (const std::int64_t d : dims) {
+            const double n = static_cast<double>(d);
+            memory +=
+                static_cast<double>(functions.size() * instances.size()) * (16e3 + 8.0 * (20.0 * n * n + 8.0 * n));
+        }
+        const char* key = "dimensions";
+        for (const char* other : {"instances", "functions"})
+            if (const auto* node = t.get(other);
+                node && node->as_array() && node->as_array()->size() > t.get(key)->as_array()->size())
+                key = other;
+        expansion.add(functions.size() * instances.size() * dims.size(), memory, at_column(file, *t.get(key)),
+                      fmt::format("'{}': this [[suite]] expands to {} functions x {} instances x {} dimensions, or",
+                                  key, functions.size(), instances.size(), dims.size()));
+    }
+    for (const std::int64_t f : functions)
+        for (const std::int64_t d : dims)
+            for (const std::int64_t k : instances) {
+                CampaignProblem p;
+                p.line = line;
+                p.suite = name;
+                p.id = fmt::format("{}-f{}-i{}-d{}", prefix, f, k, d);
+                p.spec = ContinuousSpec{fmt::format("{}{}", bc::kPrefix, f), d, k};
+                out.push_back(std::move(p));
+            }
+}
+
 /// [[suite]]: name = "bbob" (functions 1-24, instances from 1) or "classic" (Yao et al. 1999's
 /// F1-F23, instance 0 as defined), with `functions`, `instances` and `dimensions` lists; one
 /// problem per (function, instance, dimension), "PREFIX-fN-iK-dD" (fixed-dimension functions: their
@@ -362,12 +429,16 @@ void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const
         add_rw_suite(out, file, t, expansion);
         return;
     }
+    if (name == "bbob-constrained") {
+        add_bbob_constrained_suite(out, file, t, expansion);
+        return;
+    }
     if (continuous::cec::suite_rules(name)) {
         add_cec_suite(out, file, t, *continuous::cec::suite_rules(name), expansion);
         return;
     }
     if (name != "bbob" && name != "classic")
-        fail(where, "unknown suite '" + name + "' (bbob, classic, cec2017, cec2022, cec2020rw)");
+        fail(where, "unknown suite '" + name + "' (bbob, bbob-constrained, classic, cec2017, cec2022, cec2020rw)");
     const bool bbob = name == "bbob";
     const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : name;
     std::vector<std::int64_t> functions, instances, dimensions;

@@ -64,7 +64,9 @@ struct StoredRun {
     std::vector<std::optional<std::int64_t>> target_hits;
     std::string encoding;  // grid runs: what the run planned on; empty for boxes and older stores
     // COCO's trace (framework/coco_trace.hpp): (evaluations, best so far, +inf before a finite
-    // value) at its target and at its evaluation triggers; empty for runs stored before it.
+    // value) at its target and at its evaluation triggers; empty for runs stored before it. On a
+    // constrained problem the best of COCO's logged value (framework/run_state.hpp), ending at
+    // the run's last evaluation.
     std::vector<TracePoint> trace_targets, trace_evaluations;
     // The run's evaluation budget (MaxFES), and (evaluations, best so far) at the CEC reports'
     // checkpoints of it (experiment/report/cec.hpp), for problems with a known f_opt: empty for runs
@@ -103,7 +105,7 @@ struct StoredProblem {
     std::optional<std::string> function;  // the registered function name (bbob-f3, rastrigin, grid)
     std::int64_t instance = 0;            // 0: the function as defined; bbob: COCO's instance id >= 1
     std::optional<double> f_opt;          // the known optimum value
-    std::optional<std::string> suite;     // bbob, classic
+    std::optional<std::string> suite;     // bbob, bbob-constrained, classic, ...
     std::optional<std::int64_t> fid;      // the function's number in its suite (bbob f1..f24: 1..24)
 };
 

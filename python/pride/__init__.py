@@ -503,7 +503,9 @@ def read_store(path, *, dataframe=None):
     """The runs of a campaign store: a DataFrame when pandas is present (or ``dataframe=True``),
     else a list of dicts (problem, algorithm, seed, best, evaluations, wall_ms, optimum, history,
     history_evaluations, encoding, and COCO's trace: ``trace_targets`` and ``trace_evaluations``,
-    (n, 2) arrays of rows (evaluations, best so far) at COCO's target and evaluation triggers;
+    (n, 2) arrays of rows (evaluations, best so far) at COCO's target and evaluation triggers
+    (on a problem with constraints COCO's logged value, max(f, f_opt) + violation, over every
+    point);
     ``front``: a multi-objective run's non-dominated set, an (n, M) array, None for other runs;
     ``violation`` and ``first_feasible``: on a problem with constraints, the best point's
     violation, 0 when feasible, and the evaluation that first found a feasible point, None
