@@ -1,0 +1,139 @@
+"""Published runs in a store (pride.import_coco, `pride import`): COCO's DIRECT data set of BBOB 2009
+imported and held against COCO's own post-processed table of it (pptables.html: aRT divided by the
+best-2009 aRT, per function, dimension and target), and bad archives refused in one ValueError."""
+import csv
+import hashlib
+import io
+import math
+import re
+import statistics
+import tarfile
+
+import pytest
+
+import pride
+from conftest import cli, shared_data
+
+CITATION = "P. Posik (2009), BBOB-2009 results of DIRECT, GECCO 2009 workshop, COCO data archive"
+
+
+def _ert_table(store):
+    """pride report --format ert-csv: (function, dim, log10(precision) * 5) -> (aRT, successes, runs)."""
+    out = {}
+    for r in csv.DictReader(io.StringIO(cli("report", store, "--format", "ert-csv").stdout)):
+        k = round(math.log10(float(r["precision"])) * 5)
+        ert = math.inf if r["ert"] in ("inf", "") else float(r["ert"])
+        out[(r["function"], int(r["dim"]), k)] = (ert, int(r["successes"]), int(r["runs"]))
+    return out
+
+
+def _half_unit(shown):
+    """Half the last shown digit's unit of a number as pptables prints it ('6.0', '1296', '1.2e5')."""
+    mantissa, _, exponent = shown.partition("e")
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    return 0.5 * 10.0 ** (-decimals) * 10.0 ** int(exponent or 0)
+
+
+def _pptables_rows(html, algorithm):
+    """Per table of pptables.html: (fid, dim, [(target, best-2009 aRT as shown)], [(customkey or None,
+    shown text)] of `algorithm`'s row), the #succ column last in both."""
+    tables = re.finditer(
+        r"<th>&#916; f<sub>opt</sub><br><b>f(\d+), (\d+)-D</b></th>(.*?)</thead>(.*?)</table>", html, re.S)
+    for m in tables:
+        head = re.findall(r"<td>([^<]*)<br>([^<]*)</td>", m.group(3))
+        rows = [r for r in m.group(4).split("<tr>") if f"<th>{algorithm}</th>" in r]
+        if not rows:
+            continue
+        cells = re.findall(r'<td(?: sorttable_customkey="([^"]*)")?>(.*?)</td>', rows[0])
+        yield int(m.group(1)), int(m.group(2)), head, cells
+
+
+def test_direct_2009_equals_cocos_published_table(tmp_path):
+    archive = shared_data("coco-archive/bbob/2009/DIRECT_posik_noiseless.tgz", "COCO's DIRECT data set")
+    html = shared_data("coco-archive/bbob/2009/pptables.html", "COCO's BBOB-2009 tables").read_text("latin-1")
+    store = tmp_path / "direct.sqlite"
+    s = pride.import_coco(store, archive, name="DIRECT", citation=CITATION)
+    # f1-f24 x 2, 3, 5, 10, 20, 40-D x instances 1-5, one run each.
+    assert s == {"algorithm": "published:DIRECT", "runs": 720, "problems_matched": 0, "problems_added": 720}
+    ert = _ert_table(store)
+    runs = pride.read_store(store, dataframe=False)
+    evaluations = {}
+    for r in runs:
+        fid, dim = re.fullmatch(r"published:bbob-f(\d+)-i\d+-d(\d+)", r["problem"]).groups()
+        evaluations.setdefault((int(fid), int(dim)), []).append(r["evaluations"])
+
+    checked = {"ratio": 0, "infinite": 0, "median evaluations": 0, "#succ": 0, "blank": 0}
+    worst = 0.0
+    tables = 0
+    for fid, dim, head, cells in _pptables_rows(html, "DIRECT posik noiseless"):
+        tables += 1
+        assert len(head) == len(cells) == 8
+        for (target, best_shown), (key, shown) in zip(head, cells):
+            where = f"f{fid} {dim}-D {target}"
+            if target == "#succ":
+                # cocopp's pptables: the runs that reached the final target 1e-8.
+                _, successes, n = ert[(f"bbob-f{fid}", dim, -40)]
+                assert shown == f"{successes}/{n}", where
+                checked["#succ"] += 1
+                continue
+            a, _, _ = ert[(f"bbob-f{fid}", dim, round(math.log10(float(target)) * 5))]
+            if key is None:  # best 2009 never reached the target: no ratio shown
+                assert shown == "&nbsp;" and best_shown == "&infin;", where
+                checked["blank"] += 1
+                continue
+            if shown.startswith("&infin;") or "<b>&infin;</b>" in shown:
+                assert a == math.inf, where
+                checked["infinite"] += 1
+                if "<i>" in shown:  # the last target: the median of the runs' evaluations (maxevals)
+                    assert float(key) == statistics.median(evaluations[(fid, dim)]), where
+                    checked["median evaluations"] += 1
+                continue
+            # aRT / best-2009 aRT = the customkey to its 6 decimals, for a best-2009 aRT within the
+            # digits the header shows of it.
+            ratio = float(key)
+            best, half = float(best_shown), _half_unit(best_shown)
+            low = a / (ratio + 5e-7)
+            high = a / (ratio - 5e-7) if ratio > 5e-7 else math.inf
+            assert low <= best + half and high >= best - half, (where, a, ratio, best_shown)
+            worst = max(worst, abs(a / ratio - best) / best)
+            checked["ratio"] += 1
+    assert tables == 144  # 24 functions x 6 dimensions
+    assert checked["ratio"] > 600 and checked["#succ"] == 144
+    print(f"pptables cells checked: {checked}; largest |aRT/ratio - shown best-2009 aRT| / best: {worst:.2e}")
+
+
+def test_archive_provenance_and_second_import_refused(tmp_path):
+    archive = shared_data("coco-archive/bbob/2009/DIRECT_posik_noiseless.tgz", "COCO's DIRECT data set")
+    store = tmp_path / "direct.sqlite"
+    pride.import_coco(store, archive, name="DIRECT", citation=CITATION)
+    import sqlite3
+
+    with sqlite3.connect(store) as db:
+        row = db.execute("SELECT algorithm, format, source, sha256, citation FROM published").fetchall()
+    assert row == [("published:DIRECT", "coco-bbob", "DIRECT_posik_noiseless.tgz",
+                    hashlib.sha256(archive.read_bytes()).hexdigest(), CITATION)]
+    before = store.read_bytes()
+    with pytest.raises(ValueError, match=r"holds the algorithm 'published:DIRECT' already, imported from "
+                                         r"DIRECT_posik_noiseless.tgz"):
+        pride.import_coco(store, archive, name="DIRECT", citation=CITATION)
+    assert store.read_bytes() == before
+
+
+def test_bad_archives_are_one_value_error(tmp_path):
+    bad = tmp_path / "bad.tgz"
+    bad.write_bytes(b"not an archive")
+    with pytest.raises(ValueError, match=r"bad.tgz: not a folder nor a readable"):
+        pride.import_coco(tmp_path / "s.sqlite", bad, name="X", citation="c")
+    # A member outside the folder is refused before anything is extracted.
+    evil = tmp_path / "evil.tar"
+    with tarfile.open(evil, "w") as t:
+        info = tarfile.TarInfo("../outside.info")
+        info.size = 1
+        t.addfile(info, io.BytesIO(b"x"))
+    with pytest.raises(ValueError, match=r"member '../outside.info' is not a file or folder inside"):
+        pride.import_coco(tmp_path / "s.sqlite", evil, name="X", citation="c")
+    assert not (tmp_path / "outside.info").exists() and not (tmp_path / "s.sqlite").exists()
+    with pytest.raises(ValueError, match=r"no such folder"):
+        pride.import_coco(tmp_path / "s.sqlite", tmp_path / "none", name="X", citation="c")
+    with pytest.raises(TypeError, match=r"citation: expected a name"):
+        pride.import_coco(tmp_path / "s.sqlite", tmp_path, name="X", citation=None)
