@@ -231,6 +231,12 @@ TEST_CASE("import: bad input is one line naming file and line, exit 2, nothing w
     expect_input_error(e.import(store, e.tmp.path().string() + "/coco/pso/data_f1", "x"), {"no .info file"});
     expect_input_error("import '" + store + "' --coco '" + (e.coco / "pso").string() + "' --name x", {"--citation"});
     CHECK(!fs::exists(store));
+    // A campaign cannot take the prefix of published runs.
+    std::ofstream(e.tmp.file("p.toml")) << "name = \"p\"\nseeds = 1\n[budget]\nevaluations = 20\n"
+                                           "[[problem]]\nid = \"s\"\ntype = \"sphere\"\ndim = 2\n"
+                                           "[[algorithm]]\nid = \"published:pso\"\ntype = \"pso\"\n";
+    expect_input_error("bench '" + e.tmp.file("p.toml") + "' --out '" + store + "'",
+                       {"algorithm id 'published:pso'", "kept for published runs"});
 
     const fs::path info = bad / "bbobexp_f1.info", dat = bad / "data_f1" / "bbobexp_f1_DIM2.dat";
     fresh();

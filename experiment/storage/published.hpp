@@ -1,10 +1,10 @@
 #pragma once
 // Published runs in a store: another author's results, read from the files they published (COCO's
-// data sets: experiment/storage/coco_import.hpp), kept beside the runs pride made so that one report
-// compares both. They are read-only rows: their algorithm's id is "published:NAME", which no
-// campaign algorithm can take (a campaign's ids never hold ':'); a campaign never runs them (they are
-// none of its runs) and never changes them; the table `published` (store schema 7) keeps their
-// provenance: the source file, its SHA-256, a citation, the format it was read from.
+// data sets: experiment/report/coco_import.hpp), kept beside the runs pride made so that one report
+// compares both. They are read-only rows: their algorithm's id is "published:NAME", a prefix no
+// campaign's algorithm or problem may take (campaign/prepare.cpp refuses it); a campaign never runs
+// them (they are none of its runs) and never changes them; the table `published` (store schema 7)
+// keeps their provenance: the source file, its SHA-256, a citation, the format it was read from.
 #include <cstdint>
 #include <string>
 #include <vector>
