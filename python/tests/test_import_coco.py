@@ -147,3 +147,39 @@ def test_bad_archives_are_one_value_error(tmp_path):
         pride.import_coco(tmp_path / "s.sqlite", tmp_path / "none", name="X", citation="c")
     with pytest.raises(TypeError, match=r"citation: expected a name"):
         pride.import_coco(tmp_path / "s.sqlite", tmp_path, name="X", citation=None)
+
+
+def test_a_folder_is_read_as_cocopp_reads_it(tmp_path):
+    """Two .dat lines of one run (f - f_opt 5 after 1 evaluation, 1 after 10; the .tdat's last line
+    at 12): its hits of COCO's 51 precisions, evaluations and final value; the folder's digest."""
+    import sqlite3
+
+    folder = tmp_path / "coco"
+    (folder / "data_f1").mkdir(parents=True)
+    (folder / "bbobexp_f1.info").write_text(
+        "funcId = 1, DIM = 2, Precision = 1.000e-008, algId = 'x'\n% 2009's format\n"
+        "data_f1\\bbobexp_f1_DIM2.dat, 1:12|9.9e-001\n")
+    (folder / "data_f1" / "bbobexp_f1_DIM2.dat").write_text(
+        "% function evaluation | noise-free fitness - Fopt (7.948000000000e+001) | best noise-free fitness - Fopt\n"
+        "1 +5.0e+000 +5.0e+000 +8.448e+001 +8.448e+001\n10 +1.0e+000 +1.0e+000 +8.048e+001 +8.048e+001\n")
+    (folder / "data_f1" / "bbobexp_f1_DIM2.tdat").write_text(
+        "% function evaluation | noise-free fitness - Fopt (7.948000000000e+001) | best noise-free fitness - Fopt\n"
+        "1 +5.0e+000 +5.0e+000 +8.448e+001 +8.448e+001\n12 +3.0e+000 +1.0e+000 +8.248e+001 +8.048e+001\n")
+    store = tmp_path / "s.sqlite"
+    assert pride.import_coco(store, folder, name="x", citation="c") == {
+        "algorithm": "published:x", "runs": 1, "problems_matched": 0, "problems_added": 1}
+    with sqlite3.connect(store) as db:
+        problem, seed, best, evaluations, hits = db.execute(
+            "SELECT problem, seed, best, evaluations, target_hits FROM runs").fetchone()
+        source, sha = db.execute("SELECT source, sha256 FROM published").fetchone()
+        f_opt, fid, instance = db.execute("SELECT f_opt, fid, instance FROM problems").fetchone()
+    assert (problem, seed, evaluations, fid, instance, f_opt) == ("published:bbob-f1-i1-d2", 1, 12, 1, 1, 79.48)
+    assert best == pytest.approx(80.48)
+    # Precisions 10^(2 - k/5): within 5 from k = 7 (10^0.6 = 3.98 is not), within 1 from k = 10 (10^0 = 1).
+    assert hits == "[" + ", ".join(["1"] * 7 + ["10"] * 4 + ["null"] * 40) + "]"
+    # The folder's digest: each file's path in it and content, by path, as length-prefixed fields.
+    digest = hashlib.sha256()
+    for path in sorted(p for p in folder.rglob("*") if p.is_file()):
+        for field in (path.relative_to(folder).as_posix().encode(), path.read_bytes()):
+            digest.update(len(field).to_bytes(8, "little") + field)
+    assert (source, sha) == ("coco", digest.hexdigest())
