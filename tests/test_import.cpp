@@ -278,3 +278,30 @@ TEST_CASE("import: bad input is one line naming file and line, exit 2, nothing w
     CHECK(slurp(e.store) == bytes);
     CHECK(scalar(e.store, "SELECT COUNT(*) FROM runs WHERE algorithm = 'published:y'") == "0");
 }
+
+TEST_CASE("report: published runs on other instances are in the ERT, and said so", "[import][report]") {
+    const Exported e;
+    // The pso runs of instance 2 relabelled instance 3 in each .info line (the campaign ran 1 and 2).
+    const fs::path folder = e.tmp.path() / "relabelled";
+    fs::copy(e.coco / "pso", folder, fs::copy_options::recursive);
+    for (const int fid : {1, 15}) {
+        const fs::path info = folder / ("bbobexp_f" + std::to_string(fid) + ".info");
+        std::string text = slurp(info);
+        for (std::size_t at; (at = text.find(", 2:")) != std::string::npos;) text.replace(at, 4, ", 3:");
+        std::ofstream(info) << text;
+    }
+    const auto r = run_pride(e.import(e.store, folder.string(), "relabelled"));
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out ==
+          "16 runs of published:relabelled imported into " + e.store + " (8 problems of the store, 8 added)\n");
+    const auto md = run_pride("report '" + e.store + "'");
+    REQUIRE(md.status == 0);
+    CHECK_THAT(md.out, Catch::Contains("published:relabelled ran other instances than the campaign's algorithms on 4 "
+                                       "function and dimension cells (bbob-f1 2-D: instances 1,3 against 1,2; "));
+    // Its problems of instance 3 are its own, compared among themselves; its ERT pools both instances.
+    CHECK_THAT(md.out, Catch::Contains("| published:bbob-f1-i3-d2 | published:relabelled | 2 |"));
+    const auto s = pride::storage::read_store(e.store);
+    for (const auto& row : pride::report::coco::analyse(s)->erts)
+        if (row.algorithm == "published:relabelled") CHECK(row.instances == 2);
+}

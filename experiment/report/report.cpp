@@ -161,6 +161,45 @@ void leave_out_other_budgets(ReportData& report, const storage::CampaignStore& s
     }
 }
 
+/// A published algorithm's ERT and ECDF pool the instances its authors ran, which may not be the
+/// campaign's (COCO's instances changed from year to year, and its comparisons across years pool
+/// them alike): the report says where they differ.
+void note_other_instances(ReportData& report, const storage::CampaignStore& store) {
+    if (store.published.empty() || !store.problems) return;
+    std::map<std::string, const storage::StoredProblem*> problems;
+    for (const auto& p : *store.problems) problems[p.id] = &p;
+    // (function, dim) -> algorithm -> instances
+    std::map<std::pair<std::string, std::int64_t>, std::map<std::string, std::set<std::int64_t>>> instances;
+    for (const auto& r : store.runs)
+        if (const auto it = problems.find(r.problem); it != problems.end() && !r.target_hits.empty())
+            instances[{it->second->function.value_or(r.problem), it->second->dim}][r.algorithm].insert(
+                it->second->instance);
+    const auto text = [](const std::set<std::int64_t>& s) {
+        std::string out;
+        for (const auto i : s) out += (out.empty() ? "" : ",") + std::to_string(i);
+        return out;
+    };
+    std::map<std::string, std::vector<std::string>> differ;  // algorithm -> cells
+    for (const auto& [cell, by_algorithm] : instances) {
+        std::set<std::int64_t> own;
+        for (const auto& [algorithm, set] : by_algorithm)
+            if (!store.published.count(algorithm)) own.insert(set.begin(), set.end());
+        if (own.empty()) continue;
+        for (const auto& [algorithm, set] : by_algorithm)
+            if (store.published.count(algorithm) && set != own)
+                differ[algorithm].push_back(
+                    fmt::format("{} {}-D: instances {} against {}", cell.first, cell.second, text(set), text(own)));
+    }
+    for (const auto& [algorithm, cells] : differ) {
+        std::string list;
+        for (std::size_t k = 0; k < cells.size() && k < 3; ++k) list += (k ? "; " : "") + cells[k];
+        report.notes.push_back(fmt::format(
+            "{} ran other instances than the campaign's algorithms on {} function and dimension {} ({}{}): its ERT "
+            "and ECDF there pool its own instances, as COCO's comparisons across years do.",
+            algorithm, cells.size(), cells.size() == 1 ? "cell" : "cells", list, cells.size() > 3 ? "; ..." : ""));
+    }
+}
+
 ReportData make_report(const storage::CampaignStore& store, const ReportOptions& options) {
     ReportData report;
     report.campaign = store.name;
@@ -195,6 +234,7 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
     }
 
     leave_out_other_budgets(report, store, cells);
+    note_other_instances(report, store);
 
     auto& rows = report.rows;
     // What runs are compared by: their values, or with constraints their ranks by Deb's order.
