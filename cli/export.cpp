@@ -5,7 +5,10 @@
 #include <ostream>
 
 #include "cli/output.hpp"
+#include "engine/json.hpp"
+#include "experiment/campaign/campaign.hpp"
 #include "experiment/report/coco_export.hpp"
+#include "experiment/report/coco_import.hpp"
 #include "experiment/report/ioh_export.hpp"
 #include "framework/error.hpp"
 #include "framework/output_files.hpp"
@@ -28,6 +31,18 @@ int export_command(const ExportOptions& o, std::ostream& out) {
     const report::ExportSummary written = report::export_ioh(o.store, o.ioh, files);
     print_then_commit(out, fmt::format("{} IOHprofiler files written under {}\n", written.files, written.folder),
                       files);
+    return 0;
+}
+
+int import_command(const ImportOptions& o, std::ostream& out) {
+    require(!o.coco.empty(), "import", "name the data set to read: --coco FOLDER");
+    report::CocoImportOptions options;
+    options.name = o.name;
+    options.citation = o.citation;
+    const auto s = report::import_coco(o.store, o.coco, options, campaign::coco_precisions(),
+                                       engine::json_array(campaign::coco_precisions()));
+    out << fmt::format("{} runs of published:{} imported into {} ({} problems of the store, {} added)\n", s.runs,
+                       o.name, o.store, s.problems_matched, s.problems_added);
     return 0;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // `pride export STORE --ioh DIR`: a campaign store as IOHprofiler files (the COCO-style `.info`
 // and `.dat` files IOHanalyzer reads); `--coco DIR`: its bbob or bbob-constrained runs as COCO's
-// own data files (cocopp). One folder per algorithm.
+// own data files (cocopp). One folder per algorithm. `pride import` reads such a folder back as
+// published runs.
 #include <iosfwd>
 #include <string>
 
@@ -13,5 +14,14 @@ struct ExportOptions {
     std::string coco;  // or COCO's data files
 };
 int export_command(const ExportOptions& o, std::ostream& out);
+
+/// `pride import STORE --coco FOLDER --name NAME --citation TEXT`: a COCO bbob data set's runs
+/// added to the store as the published algorithm "published:NAME" (experiment/report/coco_import.hpp).
+struct ImportOptions {
+    std::string store;
+    std::string coco;  // the data set's folder (a .tgz extracted)
+    std::string name, citation;
+};
+int import_command(const ImportOptions& o, std::ostream& out);
 
 }  // namespace pride::cli

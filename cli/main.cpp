@@ -313,6 +313,21 @@ int run_main(int argc, char** argv) {
         ->excludes(ioh_option)
         ->check(a_path());
 
+    ImportOptions importing;
+    auto* import_cmd =
+        app.add_subcommand("import", "published runs (a COCO bbob data set) into a store, beside its campaign's runs");
+    import_cmd->add_option("store", importing.store, "the SQLite store (created when absent)")
+        ->required()
+        ->check(a_path());
+    import_cmd
+        ->add_option("--coco", importing.coco, "the COCO data set's folder (.info, .dat, .tdat; a .tgz extracted)")
+        ->required()
+        ->check(a_path());
+    import_cmd->add_option("--name", importing.name, "the published algorithm's name: stored as published:NAME")
+        ->required();
+    import_cmd->add_option("--citation", importing.citation, "whose runs these are and where they were published")
+        ->required();
+
     std::vector<std::string> merge_inputs;
     std::string merge_out;
     auto* merge_cmd = app.add_subcommand("merge", "join the runs of compatible campaign stores into a new store");
@@ -345,9 +360,9 @@ int run_main(int argc, char** argv) {
             return 0;
         }
         if (argc > 1 && argv[1][0] != '-' && !known)
-            throw pride::InputError(
-                std::string("unknown subcommand '") + argv[1] +
-                "' (expected run, eval, list, path, pareto, front, scen, roughset, bench, report, merge or export)");
+            throw pride::InputError(std::string("unknown subcommand '") + argv[1] +
+                                    "' (expected run, eval, list, path, pareto, front, scen, roughset, bench, report, "
+                                    "merge, export or import)");
         app.parse(argc, argv);
         if (*run_cmd) return run_command(run, std::cout);
         if (*eval_cmd) return eval_command(eval, std::cin, std::cout);
@@ -364,6 +379,7 @@ int run_main(int argc, char** argv) {
         if (*bench_cmd) return bench_command(bench, std::cout);
         if (*report_cmd) return report_command(report, std::cout);
         if (*export_cmd) return export_command(exporting, std::cout);
+        if (*import_cmd) return import_command(importing, std::cout);
         if (*merge_cmd) {
             const auto s = pride::storage::merge_stores(merge_inputs, merge_out);
             std::cout << fmt::format(

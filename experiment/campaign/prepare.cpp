@@ -15,6 +15,7 @@
 #include "experiment/campaign/identity.hpp"
 #include "experiment/campaign/run_one.hpp"
 #include "experiment/storage/file_name.hpp"
+#include "experiment/storage/published.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec/suites.hpp"
@@ -222,6 +223,18 @@ void prepare(Campaign& c) {
     for (const auto& a : c.algorithms)
         if (const std::string why = name_problem(a.id); !why.empty())
             throw InputError(where_of(c, a.line, "algorithm"), "algorithm id " + why);
+    // "published:" marks the runs a store holds from others' files (storage/published.hpp), never
+    // a campaign's: its runs could otherwise be taken for the published ones, or the reverse.
+    for (const auto& p : c.problems)
+        if (p.id.rfind(storage::kPublishedPrefix, 0) == 0)
+            throw InputError(where_of(c, p.line, "problem"), "problem id '" + p.id +
+                                                                 "': ids starting with 'published:' are kept for "
+                                                                 "published runs (pride import)");
+    for (const auto& a : c.algorithms)
+        if (a.id.rfind(storage::kPublishedPrefix, 0) == 0)
+            throw InputError(where_of(c, a.line, "algorithm"), "algorithm id '" + a.id +
+                                                                   "': ids starting with 'published:' are kept for "
+                                                                   "published runs (pride import)");
     std::set<std::string> ids;
     for (const auto& p : c.problems)
         if (!ids.insert(p.id).second)

@@ -113,6 +113,93 @@ void equal_evaluations_note(ReportData& report, const storage::CampaignStore& st
     }
 }
 
+/// Published algorithms (storage/published.hpp) enter a problem's comparison of final values only
+/// under the protocol of the campaign's runs there: their runs' mean evaluations within 5 % of those
+/// of the campaign's algorithms (a published run stopped at its authors' budget, not the
+/// campaign's). The cells left out are named in the notes, with the provenance of every published
+/// algorithm; the ERT and ECDFs, which compare runtimes to targets across budgets as COCO does,
+/// keep all their runs.
+template <class Cells>
+void leave_out_other_budgets(ReportData& report, const storage::CampaignStore& store, Cells& cells) {
+    if (store.published.empty()) return;
+    std::map<std::string, std::vector<std::string>> left_out;  // algorithm -> problems
+    std::map<std::string, std::pair<double, double>> budgets;  // algorithm -> (its, the campaign's) of the first
+    for (auto& [problem, by_algorithm] : cells) {
+        std::vector<double> own;
+        for (const auto& [algorithm, c] : by_algorithm)
+            if (!store.published.count(algorithm) && !store.whole_map_algorithms.count(algorithm))
+                own.insert(own.end(), c.evaluations.begin(), c.evaluations.end());
+        if (own.empty()) continue;  // published runs alone: compared among themselves
+        const double campaign = mean_of(own);
+        for (auto it = by_algorithm.begin(); it != by_algorithm.end();) {
+            const double theirs = mean_of(it->second.evaluations);
+            if (store.published.count(it->first) && std::max(theirs, campaign) > 1.05 * std::min(theirs, campaign)) {
+                left_out[it->first].push_back(problem);
+                budgets.emplace(it->first, std::pair{theirs, campaign});
+                it = by_algorithm.erase(it);
+            } else {
+                ++it;
+            }
+        }
+    }
+    for (const auto& [id, source] : store.published)
+        report.notes.push_back(
+            fmt::format("{} holds published runs: {}, read from {} ({} data, SHA-256 {}); "
+                        "imported, never run by pride.",
+                        id, source.citation, source.source, source.format, source.sha256));
+    for (const auto& [algorithm, problems] : left_out) {
+        std::string list;
+        for (const auto& p : problems) list += (list.empty() ? "" : ", ") + p;
+        const auto [theirs, campaign] = budgets.at(algorithm);
+        report.notes.push_back(fmt::format(
+            "{} is left out of the comparison of final values on {} {} ({}): its runs used other evaluation "
+            "budgets than the campaign's (on {}: a mean of {:.0f} evaluations, the campaign's {:.0f}; more than "
+            "5 % apart), so their final values are not comparable. Its ERT and ECDF, which compare runtimes to "
+            "targets across budgets, are in the COCO analysis.",
+            algorithm, problems.size(), problems.size() == 1 ? "problem" : "problems", list, problems.front(), theirs,
+            campaign));
+    }
+}
+
+/// A published algorithm's ERT and ECDF pool the instances its authors ran, which may not be the
+/// campaign's (COCO's instances changed from year to year, and its comparisons across years pool
+/// them alike): the report says where they differ.
+void note_other_instances(ReportData& report, const storage::CampaignStore& store) {
+    if (store.published.empty() || !store.problems) return;
+    std::map<std::string, const storage::StoredProblem*> problems;
+    for (const auto& p : *store.problems) problems[p.id] = &p;
+    // (function, dim) -> algorithm -> instances
+    std::map<std::pair<std::string, std::int64_t>, std::map<std::string, std::set<std::int64_t>>> instances;
+    for (const auto& r : store.runs)
+        if (const auto it = problems.find(r.problem); it != problems.end() && !r.target_hits.empty())
+            instances[{it->second->function.value_or(r.problem), it->second->dim}][r.algorithm].insert(
+                it->second->instance);
+    const auto text = [](const std::set<std::int64_t>& s) {
+        std::string out;
+        for (const auto i : s) out += (out.empty() ? "" : ",") + std::to_string(i);
+        return out;
+    };
+    std::map<std::string, std::vector<std::string>> differ;  // algorithm -> cells
+    for (const auto& [cell, by_algorithm] : instances) {
+        std::set<std::int64_t> own;
+        for (const auto& [algorithm, set] : by_algorithm)
+            if (!store.published.count(algorithm)) own.insert(set.begin(), set.end());
+        if (own.empty()) continue;
+        for (const auto& [algorithm, set] : by_algorithm)
+            if (store.published.count(algorithm) && set != own)
+                differ[algorithm].push_back(
+                    fmt::format("{} {}-D: instances {} against {}", cell.first, cell.second, text(set), text(own)));
+    }
+    for (const auto& [algorithm, cells] : differ) {
+        std::string list;
+        for (std::size_t k = 0; k < cells.size() && k < 3; ++k) list += (k ? "; " : "") + cells[k];
+        report.notes.push_back(fmt::format(
+            "{} ran other instances than the campaign's algorithms on {} function and dimension {} ({}{}): its ERT "
+            "and ECDF there pool its own instances, as COCO's comparisons across years do.",
+            algorithm, cells.size(), cells.size() == 1 ? "cell" : "cells", list, cells.size() > 3 ? "; ..." : ""));
+    }
+}
+
 ReportData make_report(const storage::CampaignStore& store, const ReportOptions& options) {
     ReportData report;
     report.campaign = store.name;
@@ -145,6 +232,9 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
         else if (store.target_precision)
             c.to_target.push_back(optimum ? evaluations_to(*optimum + *store.target_precision, run) : std::nullopt);
     }
+
+    leave_out_other_budgets(report, store, cells);
+    note_other_instances(report, store);
 
     auto& rows = report.rows;
     // What runs are compared by: their values, or with constraints their ranks by Deb's order.
@@ -401,6 +491,7 @@ storage::CampaignStore read_stores(const std::vector<std::string>& paths) {
             }
         all.whole_map_algorithms.insert(s.whole_map_algorithms.begin(), s.whole_map_algorithms.end());
         all.unreproducible_algorithms.insert(s.unreproducible_algorithms.begin(), s.unreproducible_algorithms.end());
+        all.published.insert(s.published.begin(), s.published.end());
     }
     // Runs: each once; a run in two stores must be the same run (its values, not its wall time).
     std::vector<storage::StoredRun> runs = std::move(all.runs);

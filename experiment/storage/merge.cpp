@@ -277,6 +277,24 @@ MergeSummary merge_stores(const std::vector<std::string>& inputs, const std::str
                                     "FROM main.{0})",
                                     table, joined(cols)));
                 }
+                // Published algorithms (published.hpp): one id, one source; their algorithms' rows,
+                // whose definitions name the source's SHA-256, were compared above.
+                {
+                    const auto differ = db.rows(
+                        "SELECT o.algorithm, o.source, o.sha256, m.source, m.sha256 FROM b.published o JOIN "
+                        "main.published m ON o.algorithm = m.algorithm WHERE o.sha256 <> m.sha256 OR o.citation <> "
+                        "m.citation OR o.format <> m.format LIMIT 1");
+                    if (!differ.empty())
+                        throw InputError(fmt::format(
+                            "{}: published algorithm '{}' comes from {} (SHA-256 {}) there and from {} (SHA-256 {}) "
+                            "in {}; stores whose published runs differ are not merged",
+                            in, text(differ[0][0]), text(differ[0][1]), text(differ[0][2]), text(differ[0][3]),
+                            text(differ[0][4]), inputs[0]));
+                    db.exec(
+                        "INSERT INTO main.published (algorithm, format, source, sha256, citation) SELECT algorithm, "
+                        "format, source, sha256, citation FROM b.published WHERE algorithm NOT IN (SELECT algorithm "
+                        "FROM main.published)");
+                }
                 // A run in both must be the same run: every column but the wall time, bit for bit;
                 // a run of an algorithm registered as not reproducible (AlgorithmEntry::reproducible:
                 // OMPL's planners) by its definition alone, its values kept from the first store.

@@ -493,6 +493,23 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
             if (q.optional_integer(3, "reproducible", 0) == 0) store.unreproducible_algorithms.insert(id);
         }
     }
+    if (tables.count("published")) {
+        columns("published", {"algorithm", "format", "source", "sha256", "citation"});
+        Query q(db, "SELECT algorithm, format, source, sha256, citation FROM published ORDER BY algorithm");
+        while (q.next()) {
+            q.where = "the published row";
+            PublishedSource p;
+            p.algorithm = q.text(0, "algorithm");
+            q.where = fmt::format("published row '{}'", p.algorithm);
+            if (p.algorithm.rfind(kPublishedPrefix, 0) != 0)
+                q.fail("algorithm", fmt::format("expected an id starting with '{}'", kPublishedPrefix));
+            p.format = q.text(1, "format");
+            p.source = q.text(2, "source");
+            p.sha256 = q.text(3, "sha256");
+            p.citation = q.text(4, "citation");
+            store.published.emplace(p.algorithm, std::move(p));
+        }
+    }
     {
         Query q(db,
                 fmt::format("SELECT name, {}, {}, {} FROM campaign WHERE id = 1", has_target ? "target" : "NULL",

@@ -6,11 +6,13 @@
 // what pride bench writes. It lives beside the schema, not in report/, as the campaign and pride
 // merge check a store with it (check_store) before they trust one, and report/ reads with it.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "experiment/storage/published.hpp"
 #include "framework/coco_trace.hpp"
 #include "framework/error.hpp"
 
@@ -125,6 +127,9 @@ struct CampaignStore {
     // The ids of those registered as not reproducible (AlgorithmEntry::reproducible: OMPL's
     // planners): a run of theirs found in two stores is the same run by its definition.
     std::set<std::string> unreproducible_algorithms;
+    // The published algorithms (published.hpp, store schema 7: runs read from their authors' files,
+    // never run by pride), by id, with their provenance; empty for stores without.
+    std::map<std::string, PublishedSource> published;
 };
 
 /// Reads and checks the whole store at `path` (read-only). Throws InputError when the file is

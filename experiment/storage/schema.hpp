@@ -16,8 +16,10 @@
 //   6: runs.best_violation and runs.first_feasible, a constrained problem's run: its best point's
 //      violation (0: feasible) and the evaluation that first found a feasible point; NULL for
 //      problems without constraints and for runs stored before
+//   7: table published, the provenance of published runs (published.hpp: source, SHA-256,
+//      citation, format); empty in a store migrated from before
 namespace pride::storage {
 
-inline constexpr int schema_version = 6;
+inline constexpr int schema_version = 7;
 
 }  // namespace pride::storage

@@ -159,6 +159,11 @@ Writer::Writer(const std::string& path) : path_(path), token_(process_token(::ge
         exec(
             "CREATE TABLE IF NOT EXISTS claims (problem TEXT NOT NULL, algorithm TEXT NOT NULL, seed INTEGER NOT "
             "NULL, owner TEXT NOT NULL, UNIQUE (problem, algorithm, seed))");
+        // Published runs' provenance (published.hpp): the source they were read from, its
+        // SHA-256, a citation; stores from before have none.
+        exec(
+            "CREATE TABLE IF NOT EXISTS published (algorithm TEXT PRIMARY KEY, format TEXT NOT NULL, source TEXT NOT "
+            "NULL, sha256 TEXT NOT NULL, citation TEXT NOT NULL)");
         // Columns added with the suites; a store from before gains them, empty.
         add_column("campaign", "precisions", "TEXT");
         add_column("campaign", "target_precision", "REAL");  // [budget] precision

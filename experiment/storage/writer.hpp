@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "experiment/storage/published.hpp"
 #include "experiment/storage/rows.hpp"
 
 struct sqlite3;
@@ -55,12 +56,25 @@ class Writer {
 
     std::size_t count();
 
+    /// Published runs (published.hpp) added in one transaction, or nothing: refused when the store
+    /// holds the algorithm already, when a run's problem (suite, function, dimension, instance) is
+    /// stored with another optimum (another instance: not the same protocol), or when the store's
+    /// campaign records target precisions other than `precisions` (JSON). A run's problem is the
+    /// store's own where it has it, else a problem row of its own ("published:bbob-f6-i3-d20"). A
+    /// store without a campaign gets one named "published runs", which no campaign grows.
+    ImportSummary import_published(const PublishedSet& set, const std::vector<double>& precisions,
+                                   const std::string& precisions_json);
+
     /// Throws when the store's file is gone or replaced (deleted while a campaign ran: SQLite
     /// would go on writing into the unlinked file, and every result would be lost unseen).
     void check_same_file() const;
 
   private:
     std::int64_t live_claims();
+
+    /// import_published's body, inside its transaction.
+    ImportSummary add_published(const PublishedSet& set, const std::vector<double>& precisions,
+                                const std::string& precisions_json);
 
     int user_version();
 

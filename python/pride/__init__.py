@@ -23,7 +23,7 @@ __all__ = [
     "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
     "exact", "pareto", "roughset", "Campaign", "read_store", "report", "hypervolume", "hypervolume_contributions",
     "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance", "attainment_surface", "front", "plan_front",
-    "cec2020rw_score",
+    "cec2020rw_score", "import_coco",
 ]
 
 
@@ -518,6 +518,49 @@ def read_store(path, *, dataframe=None):
             raise ImportError("read_store(dataframe=True) needs pandas")
         return pd.DataFrame(store["runs"])
     return store["runs"]
+
+
+def import_coco(store, path, *, name, citation):
+    """Adds a COCO bbob data set's runs to the campaign store ``store`` (created when absent) as the
+    published algorithm ``published:NAME`` (``pride import STORE --coco PATH``): read-only runs that
+    reports compare with the campaign's, never run again. ``path`` is the data set's folder (its
+    .info, .dat and .tdat files) or a .tgz/.tar.gz/.tar archive of it, as COCO's data archive
+    publishes them, extracted here with the standard library into a temporary folder; the store
+    then records the archive's name and SHA-256 (of a folder: its files'). ``citation`` says whose
+    runs they are. Returns a dict: algorithm, runs, problems_matched (the store's own problems the
+    runs were found on), problems_added. Bad input raises ValueError naming the file and line;
+    then nothing is written."""
+    import hashlib
+    import tarfile
+    import tempfile
+
+    store = _path("store", store)
+    path = _path("path", path)
+    name = _str("name", name)
+    citation = _str("citation", citation)
+    if _os.path.isdir(path) or not _os.path.exists(path):
+        return _pride.import_coco(store, path, name, citation, None, None)
+    try:
+        archive = tarfile.open(path)
+    except (tarfile.TarError, OSError) as e:
+        raise ValueError(f"{path}: not a folder nor a readable .tgz/.tar archive ({e})") from None
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            digest.update(block)
+    with archive, tempfile.TemporaryDirectory(prefix="pride-import-") as folder:
+        members = archive.getmembers()
+        for m in members:  # nothing outside the folder, no links: a data set holds files and folders
+            target = _os.path.realpath(_os.path.join(folder, m.name))
+            if not (m.isfile() or m.isdir()) or not target.startswith(_os.path.realpath(folder) + _os.sep):
+                raise ValueError(f"{path}: member {m.name!r} is not a file or folder inside the archive")
+        archive.extractall(folder, members=members)
+        entries = _os.listdir(folder)
+        # An archive of one folder (DIRECT/...): that folder is the data set.
+        root = _os.path.join(folder, entries[0]) if len(entries) == 1 else folder
+        if not _os.path.isdir(root):
+            root = folder
+        return _pride.import_coco(store, root, name, citation, _os.path.basename(path), digest.hexdigest())
 
 
 def report(path, *, raw=False, dataframe=None, html=None):

@@ -11,11 +11,13 @@
 #include <type_traits>
 
 #include "common.hpp"
+#include "engine/json.hpp"
 #include "engine/problem.hpp"
 #include "experiment/campaign/prepare.hpp"
 #include "experiment/campaign/run.hpp"
 #include "experiment/campaign/toml.hpp"
 #include "experiment/html/report_page.hpp"
+#include "experiment/report/coco_import.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/storage/reader.hpp"
 
@@ -392,6 +394,25 @@ py::dict read_store(const py::object& store) {
                     py::arg("problems") = problems, py::arg("runs") = runs);
 }
 
+/// pride.import_coco's work: a COCO data set's folder into a store (experiment/report/coco_import.hpp).
+py::dict import_coco(const std::string& store, const std::string& folder, const std::string& name,
+                     const std::string& citation, const std::optional<std::string>& source,
+                     const std::optional<std::string>& sha256) {
+    report::CocoImportOptions options;
+    options.name = name;
+    options.citation = citation;
+    options.source = source;
+    options.sha256 = sha256;
+    storage::ImportSummary s;
+    {
+        py::gil_scoped_release release;
+        s = report::import_coco(store, folder, options, campaign::coco_precisions(),
+                                engine::json_array(campaign::coco_precisions()));
+    }
+    return py::dict(py::arg("algorithm") = std::string(storage::kPublishedPrefix) + name, py::arg("runs") = s.runs,
+                    py::arg("problems_matched") = s.problems_matched, py::arg("problems_added") = s.problems_added);
+}
+
 py::dict report_data(const std::vector<std::string>& paths, bool raw) {
     report::ReportData r;
     {
@@ -484,6 +505,8 @@ void bind_campaign(py::module_& m) {
     m.def("campaign_from_file", &from_file, py::call_guard<Call>(), py::arg("path"));
     m.def("campaign_run", &run, py::call_guard<Call>(), py::arg("campaign"), py::arg("store"), py::arg("jobs"));
     m.def("read_store", &read_store, py::call_guard<Call>(), py::arg("path"));
+    m.def("import_coco", &import_coco, py::call_guard<Call>(), py::arg("store"), py::arg("folder"), py::arg("name"),
+          py::arg("citation"), py::arg("source"), py::arg("sha256"));
     m.def("report", &report_data, py::call_guard<Call>(), py::arg("paths"), py::arg("raw") = false);
     m.def("report_html", &report_html, py::call_guard<Call>(), py::arg("path"), py::arg("dir"), py::arg("raw") = false);
 }

@@ -67,6 +67,18 @@ def campaign(**kw):
     return pride.Campaign("c", **args)
 
 
+def coco_data_set(tmp_path):
+    """The smallest COCO bbob data set: one run of f1 in 2-D, two lines."""
+    folder = tmp_path / "coco"
+    (folder / "data_f1").mkdir(parents=True, exist_ok=True)
+    (folder / "bbobexp_f1.info").write_text("suite = 'bbob', funcId = 1, DIM = 2, Precision = 1.000e-08, "
+                                            "algId = 'x'\n% x\ndata_f1/bbobexp_f1_DIM2.dat, 1:10|1.0e+00\n")
+    (folder / "data_f1" / "bbobexp_f1_DIM2.dat").write_text(
+        "% f evaluations | g evaluations | best noise-free fitness - Fopt (7.948e+01) + sum g_i+ | x\n"
+        "1 0 +5.0e+00 +8.448e+01 +8.448e+01\n10 0 +1.0e+00 +8.048e+01 +8.048e+01\n")
+    return str(folder)
+
+
 # name -> (call(**overrides), {parameter: wrong values}); `call` passes valid values for the rest.
 def api(tmp_path):
     mfile = map_file(tmp_path)
@@ -124,6 +136,10 @@ def api(tmp_path):
         "read_store": (lambda **o: pride.read_store(**{"path": store, **o}), dict(path=PATH, dataframe=FLAG_OPTIONAL)),
         "report": (lambda **o: pride.report(**{"path": store, "dataframe": False, **o}),
                    dict(path=PATH + [[5]], raw=FLAG, dataframe=FLAG_OPTIONAL, html=[5, object(), b"dir"])),
+        "import_coco": (lambda **o: pride.import_coco(**{"store": str(tmp_path / "i.sqlite"),
+                                                         "path": coco_data_set(tmp_path), "name": "x",
+                                                         "citation": "c", **o}),
+                        dict(store=PATH, path=PATH, name=TEXT, citation=TEXT)),
         "Result": (lambda **o: pride.Result(**o), dict(fields=[None, 5, "ab", [1, 2]])),
         "hypervolume": (lambda **o: pride.hypervolume(**{"points": PTS, "ref": [3.0, 3.0], **o}),
                         dict(points=PAIRED, ref=NUMBERS + [[[3.0, 3.0]], [3.0]])),

@@ -1,0 +1,56 @@
+#pragma once
+// Published runs in a store: another author's results, read from the files they published (COCO's
+// data sets: experiment/report/coco_import.hpp), kept beside the runs pride made so that one report
+// compares both. They are read-only rows: their algorithm's id is "published:NAME", a prefix no
+// campaign's algorithm or problem may take (campaign/prepare.cpp refuses it); a campaign never runs
+// them (they are none of its runs) and never changes them; the table `published` (store schema 7)
+// keeps their provenance: the source file, its SHA-256, a citation, the format it was read from.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pride::storage {
+
+/// The id prefix of every published algorithm.
+inline constexpr const char* kPublishedPrefix = "published:";
+
+/// Where a published algorithm's runs come from (one row of table `published`).
+struct PublishedSource {
+    std::string algorithm;  // "published:NAME"
+    std::string format;     // "coco-bbob"
+    std::string source;     // the file or folder name it was read from (no path)
+    std::string sha256;     // of the source file; of a folder, of its files (coco_import.hpp)
+    std::string citation;
+};
+
+/// A point of a published run: (evaluations, best value minus the optimum so far).
+struct PublishedPoint {
+    std::int64_t evaluations = 0;
+    double precision = 0;
+};
+
+/// One published run, as its files give it.
+struct PublishedRun {
+    std::string suite;  // "bbob"
+    std::int64_t fid = 0, dim = 0, instance = 0;
+    std::int64_t trial = 0;  // 1, 2, ...: the repeats of one instance, in the files' order
+    double f_opt = 0;        // as the run's data gives it
+    std::int64_t evaluations = 0;
+    double final_precision = 0;  // best - f_opt at the end
+    // Where the best value improved at COCO's target triggers (.dat) and at its evaluation triggers
+    // (.tdat), each with evaluations increasing.
+    std::vector<PublishedPoint> targets, values;
+    std::string where;  // the file and line the run starts at, for messages
+};
+
+struct PublishedSet {
+    PublishedSource source;
+    std::vector<PublishedRun> runs;
+};
+
+/// What an import added.
+struct ImportSummary {
+    std::size_t runs = 0, problems_matched = 0, problems_added = 0;
+};
+
+}  // namespace pride::storage
