@@ -29,7 +29,7 @@ using namespace pride::grid;
 /// The spec of `pride path`'s options (names checked, the map not read yet).
 engine::GridSpec grid_spec(const PathOptions& o) {
     engine::GridSpec g;
-    g.objective = o.objective;
+    g.objective = o.objective.empty() ? engine::default_grid_objective(o.algo) : o.objective;
     g.encoding = o.encoding;
     g.connector = o.connector;
     g.init = o.init;
@@ -151,7 +151,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
             "{{\"algo\": {}, \"objective\": {}, \"encoding\": {}, \"seed\": {}, \"feasible\": {}, \"path\": {}, "
             "\"metrics\": {}, \"objective_value\": {}, \"evaluations\": {}, \"iterations\": {}, \"wall_ms\": {}, "
             "\"history\": {}",
-            json_string(o.algo), json_string(o.objective), json_string(run.encoding), o.seed,
+            json_string(o.algo), json_string(spec.objective), json_string(run.encoding), o.seed,
             run.feasible ? "true" : "false", json_cells(run.path), chain_metrics,
             run.feasible ? json_number(run.value) : "null", r.evaluations, r.iterations, json_number(r.wall_ms),
             json_array(r.history));
@@ -167,7 +167,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
     std::string text = fmt::format(
         "algo            {}\nobjective       {}\nencoding        {}\nseed            {}\n"
         "feasible        {}\n",
-        o.algo, o.objective, run.encoding, o.seed, run.feasible ? "yes" : "no");
+        o.algo, spec.objective, run.encoding, o.seed, run.feasible ? "yes" : "no");
     if (run.feasible && polyline_only)
         text +=
             fmt::format("objective_value {:.10g}\nvertices        {}\nlength          {:.10g}\nturns           {}\n",

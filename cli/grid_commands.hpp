@@ -20,7 +20,8 @@ struct PathOptions {
     std::string goal_world;
     bool unknown_free = false;  // unknown cells of image maps free (grid::MapReadOptions)
     std::string algo;
-    std::string objective = "cells";
+    // Empty: the algorithm's own: length for a planner of polylines (its only one), cells otherwise.
+    std::string objective;
     std::string encoding;  // empty: the algorithm's native one
     std::string connector = "repair";
     // uniform, walk (random feasible walks) or rules (Wan and Gao's (2022) rough-set rule walks); empty: the

@@ -147,7 +147,9 @@ int run_main(int argc, char** argv) {
     path_cmd->add_flag("--unknown-free", path.unknown_free,
                        "unknown cells of images and map_server maps are free (default: blocked)");
     path_cmd->add_option("--algo", path.algo, all_names + " or nlopt:NAME (see 'pride list')")->required();
-    path_cmd->add_option("--objective", path.objective, "cells (default), length, weighted, iqga or hswoa");
+    path_cmd->add_option(
+        "--objective", path.objective,
+        "cells, length, weighted, iqga or hswoa (default: length for a planner of polylines, cells otherwise)");
     path_cmd->add_option("--encoding", path.encoding,
                          "line, free or chain (default: the algorithm's native one: chain for iqga, iaga, icga and the "
                          "woa family, line for the others)");

@@ -1,5 +1,6 @@
 #include "engine/grid_names.hpp"
 
+#include "engine/registry.hpp"
 #include "framework/error.hpp"
 
 namespace pride::engine {
@@ -79,6 +80,11 @@ void check_grid_names(const GridSpec& g) {
             "only for the line and free encodings (chains start from random walks, or SITP walks with init sitp)");
     require(g.weights.empty() || g.objective == "weighted", "weights", "only for the weighted objective");
     require(!g.lambda || g.objective == "hswoa", "lambda", "only for the hswoa objective");
+}
+
+std::string default_grid_objective(const std::string& algo) {
+    const AlgorithmEntry* entry = algorithms().find(algo);
+    return entry && entry->plans_polylines ? "length" : "cells";
 }
 
 }  // namespace pride::engine

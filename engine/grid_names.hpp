@@ -24,4 +24,8 @@ bool named_in(const std::vector<NamedItem>& items, const std::string& name);
 /// before reading a map, so a misspelt name is reported before a missing file.
 void check_grid_names(const GridSpec& spec);
 
+/// The objective a grid run of `algo` plans for when none is named: length for a planner of
+/// polylines (the only objective it takes), cells for every other algorithm.
+std::string default_grid_objective(const std::string& algo);
+
 }  // namespace pride::engine

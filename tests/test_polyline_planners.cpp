@@ -201,8 +201,15 @@ TEST_CASE("polyline planners: pride path prints the polyline, its metrics and ga
                                        dir.file("p.svg") + "'");
     REQUIRE(drawn.status == 0);
     CHECK_THAT(test::slurp(dir.file("p.svg")), Contains("<svg"));
-    test::expect_input_error("path --map '" + map + "' --start 0,0 --goal 9,9 --algo theta-star",
+    // Without --objective a polyline planner plans for length, its only objective; cells named is an error.
+    const auto plain = test::run_pride("path --map '" + map + "' --start 0,0 --goal 9,9 --algo theta-star");
+    REQUIRE(plain.status == 0);
+    CHECK_THAT(plain.out, Contains("objective       length\n") && Contains("vertices        "));
+    test::expect_input_error("path --map '" + map + "' --start 0,0 --goal 9,9 --algo theta-star --objective cells",
                              {"--objective", "theta-star plans polylines", "not cells"});
+    const auto chain_default = test::run_pride("path --map '" + map + "' --start 0,0 --goal 9,9 --algo astar --json");
+    REQUIRE(chain_default.status == 0);
+    CHECK(test::parse_json(chain_default.out).at("objective").text == "cells");
 }
 
 TEST_CASE("polyline planners: a campaign stores every path's metrics and a polyline planner's polyline",

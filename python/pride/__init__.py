@@ -297,7 +297,7 @@ class Optimizer:
         self.close()
 
 
-def plan(grid, start=None, goal=None, *, algo="pso", start_world=None, goal_world=None, objective="cells",
+def plan(grid, start=None, goal=None, *, algo="pso", start_world=None, goal_world=None, objective=None,
          step_cost=None, encoding="", connector="repair", init="", waypoints=3, weights=None, lambda_=None,
          corner_cutting=False, oracle=False, gaps=False, evals=None, iters=None, seed=1, callback=None, **params):
     """A path on ``grid`` (a ``pride.Grid``) from ``start`` to ``goal`` ((x, y), x the column from
@@ -314,7 +314,9 @@ def plan(grid, start=None, goal=None, *, algo="pso", start_world=None, goal_worl
     iterations. Without ``encoding`` the algorithm plans on its native space (chain for iqga, iaga,
     icga and the woa family, line for the others); an encoding it cannot use is a ValueError.
 
-    ``objective`` may be a function of the path instead of a name: ``objective(cells)`` gets the
+    ``objective`` names the objective (cells, length, weighted, iqga, hswoa); without it, length for a
+    planner of polylines (its only one) and cells for every other algorithm. It may be a function of the
+    path instead of a name: ``objective(cells)`` gets the
     path's cells as an (n, 2) int array of (x, y) and returns a number to minimise; every call is
     one evaluation, counted in ``evaluations`` and within the budget, with every algorithm and
     encoding. With ``step_cost(previous, direction)`` (the cost of a step in direction 0..7 after
@@ -323,7 +325,7 @@ def plan(grid, start=None, goal=None, *, algo="pso", start_world=None, goal_worl
     and ``oracle=True`` find its exact optimum; their calls of it are their own work, not
     evaluations."""
     return Result(_pride.plan(_grid(grid), start, goal, start_world, goal_world, _str("algo", algo),
-                              objective if callable(objective) else _str("objective", objective),
+                              objective if objective is None or callable(objective) else _str("objective", objective),
                               _callable("step_cost", step_cost), _str("encoding", encoding),
                               _str("connector", connector), _str("init", init), _int("waypoints", waypoints, False),
                               None if weights is None else _reals("weights", weights),

@@ -178,7 +178,12 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
               const py::object& callback, const py::dict& params) {
     engine::GridSpec spec;
     auto errors = std::make_shared<UserError>();
-    set_path_objective(spec, objective, step_cost, errors, "");
+    if (objective.is_none()) {
+        if (!step_cost.is_none()) throw py::type_error("step_cost: only with an objective that is a function");
+        spec.objective = engine::default_grid_objective(algo);
+    } else {
+        set_path_objective(spec, objective, step_cost, errors, "");
+    }
     spec.encoding = encoding;
     spec.connector = connector;
     spec.init = init;

@@ -32,7 +32,9 @@ def test_polyline_planners_and_metrics():
     assert astar.grid_gap == 0.0
     assert astar.path_metrics["min_clearance"] == 0.5
     # Without gaps=True: no gap keys.
-    plain = pride.plan(g, (0, 5), (9, 5), algo="lazy-theta-star", objective="length")
+    plain = pride.plan(g, (0, 5), (9, 5), algo="lazy-theta-star")  # length: a polyline planner's default
+    assert plain.objective == "length"
+    assert plain.objective_value == pytest.approx(plain.path_metrics["length"], rel=1e-12)
     assert not hasattr(plain, "grid_gap")
     assert math.isfinite(plain.path_metrics["max_curvature"])
 
@@ -40,6 +42,8 @@ def test_polyline_planners_and_metrics():
 def test_polyline_planners_errors():
     g = pride.Grid(ROWS)
     with pytest.raises(ValueError, match="^objective: theta-star plans polylines, whose value is their length"):
-        pride.plan(g, (0, 5), (9, 5), algo="theta-star")
+        pride.plan(g, (0, 5), (9, 5), algo="theta-star", objective="cells")
+    with pytest.raises(TypeError, match="^step_cost: only with an objective that is a function"):
+        pride.plan(g, (0, 5), (9, 5), algo="astar", step_cost=lambda previous, direction: 1.0)
     with pytest.raises(TypeError, match="^gaps: "):
         pride.plan(g, (0, 5), (9, 5), algo="astar", gaps="yes")
