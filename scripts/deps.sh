@@ -18,10 +18,14 @@ for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if ((${#missing[@]})); then
-  echo "deps: installing ${missing[*]}" >&2
+  # Said first, as apt-get runs quietly: on a fresh machine this step takes minutes.
+  echo "deps: installing ${#missing[@]} of ${#packages[@]} Debian packages with apt-get (minutes on a fresh machine): ${missing[*]}" >&2
   sudo_cmd=()
   [[ $(id -u) -ne 0 ]] && sudo_cmd=(sudo)
   export DEBIAN_FRONTEND=noninteractive
   "${sudo_cmd[@]}" apt-get update -qq
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  echo "deps: done" >&2
+else
+  echo "deps: all ${#packages[@]} Debian packages are installed" >&2
 fi
