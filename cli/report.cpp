@@ -19,6 +19,8 @@
 
 #include "cli/numbers.hpp"
 #include "cli/output.hpp"
+#include "engine/specs.hpp"
+#include "experiment/html/page_store.hpp"
 #include "experiment/html/report_page.hpp"
 #include "experiment/report/cec.hpp"
 #include "experiment/report/cec2020rw_table.hpp"
@@ -145,8 +147,44 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
     names_out << "{" << names << "}\n";
     names_out.close();
     if (!names_out) throw unwritable(std::strerror(errno));
-    std::vector<std::string> args{
-        store, figures.string(), "--names", names_file.string(), "--uri", storage::read_only_uri(store)};
+    // Each grid problem's map as pride reads it (text, image or map_server file, its unknown cells
+    // and inflation as the campaign had them), as a 0/1 matrix for the script, which reads no map
+    // format itself; a map file no longer there gets no path figure, as on the HTML page.
+    const fs::path maps = scratch / "maps";
+    fs::create_directory(maps, ec);
+    if (ec) throw unwritable(ec.message());
+    std::string map_files;
+    for (const html::GridProblemInfo& g : html::read_page_store(store).grids) {
+        if (g.map.empty() || !ids.count(g.id) || !fs::exists(g.map)) continue;
+        grid::MapReadOptions read;
+        read.unknown_free = g.unknown_free;
+        read.named_in_file = true;  // the store names it: never standard input
+        std::shared_ptr<const grid::GridMap> map;
+        try {
+            map = engine::load_map(g.map, g.inflate, read);
+        } catch (const InputError& e) {
+            throw InputError("--plots", "problem '" + g.id + "': " + e.what());
+        }
+        std::string matrix;
+        matrix.reserve(map->size() + static_cast<std::size_t>(map->height()));
+        for (int y = 0; y < map->height(); ++y) {
+            for (int x = 0; x < map->width(); ++x) matrix += map->free(grid::Cell{x, y}) ? '0' : '1';
+            matrix += '\n';
+        }
+        const fs::path file = maps / (std::to_string(std::distance(ids.begin(), ids.find(g.id))) + ".txt");
+        std::ofstream out(file);
+        out << matrix;
+        out.close();
+        if (!out) throw unwritable(std::strerror(errno));
+        map_files += (map_files.empty() ? "" : ", ") + json_string(g.id) + ": " + json_string(file.string());
+    }
+    const fs::path maps_file = scratch / "maps.json";
+    std::ofstream maps_out(maps_file);
+    maps_out << "{" << map_files << "}\n";
+    maps_out.close();
+    if (!maps_out) throw unwritable(std::strerror(errno));
+    std::vector<std::string> args{store,    figures.string(),   "--names", names_file.string(),
+                                  "--maps", maps_file.string(), "--uri",   storage::read_only_uri(store)};
     if (data.raw) args.push_back("--raw");
     run_script(python, script, args, figures, target);
     if (data.coco && !data.coco->curves.empty()) {

@@ -14,10 +14,13 @@ drawn at 1e-12, and the axis says so), unless --raw. Whole-map planners (A*, exa
 appear in the convergence figure as a horizontal line at their value. Each figure is written as
 PNG and SVG, named after the problem: pride passes each problem's file name (--names, a JSON
 object of id -> name from experiment/storage/file_name.hpp's unique_file_names, so that "x/y" and "x_y"
-get files of their own); without it, safe(id). --uri: the SQLite URI to read STORE with (pride's
-experiment/storage/reader.hpp read_only_uri).
+get files of their own); without it, safe(id). --maps: a JSON object of id -> a file of the grid
+problem's map as pride read it (one line of 0 and 1 per row), so that the script reads no map format
+itself; a grid problem without one gets no path figure. A polyline planner's path is its polyline
+(runs.polyline), drawn through the cell centres as the chains are. --uri: the SQLite URI to read
+STORE with (pride's experiment/storage/reader.hpp read_only_uri).
 
-Usage: plot_campaign.py STORE DIR [--raw] [--names NAMES.json] [--uri URI]
+Usage: plot_campaign.py STORE DIR [--raw] [--names NAMES.json] [--maps MAPS.json] [--uri URI]
 """
 import json
 import os
@@ -33,15 +36,11 @@ import numpy as np  # noqa: E402
 
 
 def read_map(path):
-    """Moving AI .map or 0/1 matrix, as a boolean array (True = blocked); pride has checked it."""
-    with open(path, encoding="utf-8-sig") as f:
-        lines = [line.rstrip("\r\n").rstrip() for line in f]
-    lines = [line for line in lines if line.strip()]
-    if lines[0].startswith("type"):
-        rows = lines[4:]
-        return np.array([[c in "@OTW" for c in row] for row in rows])
-    rows = [row.split() if " " in row or "\t" in row else list(row) for row in lines]
-    return np.array([[c == "1" for c in row] for row in rows])
+    """The 0/1 matrix pride wrote for a grid problem's map (cli/report.cpp, as pride read the map:
+    any format it reads, with the campaign's unknown cells and inflation), as a boolean array
+    (True = blocked)."""
+    with open(path, encoding="utf-8") as f:
+        return np.array([[c == "1" for c in line.rstrip("\n")] for line in f if line.strip()])
 
 
 def safe(name):
@@ -165,7 +164,7 @@ def plot_fronts(problem, algorithms, folder, stem):
 
 def main():
     store, folder, options = (sys.argv[1], sys.argv[2], sys.argv[3:]) if len(sys.argv) >= 3 else ("", "", ["?"])
-    raw, file_names, uri = False, {}, None
+    raw, file_names, map_files, uri = False, {}, {}, None
     while options:
         option = options.pop(0)
         if option == "--raw":
@@ -173,20 +172,25 @@ def main():
         elif option == "--names" and options:
             with open(options.pop(0), encoding="utf-8") as f:
                 file_names = json.load(f)
+        elif option == "--maps" and options:
+            with open(options.pop(0), encoding="utf-8") as f:
+                map_files = json.load(f)
         elif option == "--uri" and options:
             uri = options.pop(0)
         else:
-            sys.exit("usage: plot_campaign.py STORE DIR [--raw] [--names NAMES.json] [--uri URI]")
+            sys.exit("usage: plot_campaign.py STORE DIR [--raw] [--names NAMES.json] [--maps MAPS.json] [--uri URI]")
     # pride passes the URI it read the store with (read-only, or immutable on a read-only folder).
     db = sqlite3.connect(uri or f"file:{store}?mode=ro", uri=True)
     columns = {row[1] for row in db.execute("PRAGMA table_info(problems)")}
     f_opt_column = "f_opt" if "f_opt" in columns else "NULL"
     problems = {row[0]: row[1:] for row in db.execute(f"SELECT id, type, map, start, goal, {f_opt_column} FROM problems")}
+    # runs.polyline: a polyline planner's path (store schema 5), NULL for chains and older stores.
+    polyline_column = "polyline" if "polyline" in {row[1] for row in db.execute("PRAGMA table_info(runs)")} else "NULL"
     runs = db.execute(
-        "SELECT problem, algorithm, seed, best, solution, history, history_evaluations FROM runs "
+        f"SELECT problem, algorithm, seed, best, solution, history, history_evaluations, {polyline_column} FROM runs "
         "ORDER BY problem, algorithm, seed").fetchall()
     by_problem = {}
-    for problem, algorithm, seed, best, solution, history, history_evaluations in runs:
+    for problem, algorithm, seed, best, solution, history, history_evaluations, polyline in runs:
         row = f"runs row (problem '{problem}', algorithm '{algorithm}', seed {seed})"
         parsed = []
         for column, text, check in (("solution", solution, valid_solution), ("history", history, valid_numbers),
@@ -200,7 +204,16 @@ def main():
             parsed.append(value)
         if best is not None and not isinstance(best, (int, float)):
             raise Damaged(f"{store}: damaged store: {row}, column best: not a number")
-        by_problem.setdefault(problem, {}).setdefault(algorithm, []).append((seed, best, *parsed))
+        vertices = None
+        if polyline is not None:
+            try:
+                vertices = json.loads(polyline)
+            except (TypeError, ValueError):
+                vertices = None
+            if not (isinstance(vertices, list) and all(isinstance(v, list) and len(v) == 2 and all(
+                    is_number(c) for c in v) for v in vertices)):
+                raise Damaged(f"{store}: damaged store: {row}, column polyline: not what pride bench writes")
+        by_problem.setdefault(problem, {}).setdefault(algorithm, []).append((seed, best, *parsed, vertices))
     floor = 1e-12
     for problem, algorithms in by_problem.items():
         stem = file_names.get(problem) or safe(problem)
@@ -282,17 +295,17 @@ def main():
         ax.set_title(problem)
         save(fig, folder, f"{stem}-final")
         # Grid problems: each algorithm's best path on the map.
-        if info and info[0] == "grid" and info[1] and os.path.exists(info[1]):
-            blocked = read_map(info[1])
+        if info and info[0] == "grid" and problem in map_files:
+            blocked = read_map(map_files[problem])
             fig, ax = plt.subplots(figsize=(6.4, 6.4 * blocked.shape[0] / blocked.shape[1]))
             ax.imshow(blocked, cmap="Greys", vmin=0, vmax=1.4, origin="upper",
                       extent=(-0.5, blocked.shape[1] - 0.5, blocked.shape[0] - 0.5, -0.5))
             for index, algorithm in enumerate(names):
-                feasible = [r for r in algorithms[algorithm] if r[1] is not None and r[2]]
+                feasible = [r for r in algorithms[algorithm] if r[1] is not None and (r[2] or r[5])]
                 if not feasible:
                     continue
-                best = min(feasible, key=lambda r: r[1])
-                path = np.array(best[2])
+                best = min(feasible, key=lambda r: (r[1], r[0]))
+                path = np.array(best[5] or best[2], dtype=float)
                 ax.plot(path[:, 0], path[:, 1], linewidth=2, linestyle=styles[index % len(styles)],
                         label=f"{algorithm} ({best[1]:.4g}, seed {best[0]})")
             sx, sy = map(int, info[2].split(","))

@@ -48,3 +48,46 @@ TEST_CASE("report: --plots writes convergence, final-value and path figures", "[
     CHECK(!fs::exists(dir / "figures" / "sphere-paths.png"));  // paths only for grid problems
     fs::remove_all(dir);
 }
+
+TEST_CASE("report: --plots draws paths on a map_server map, a polyline planner's polyline too", "[report][plots]") {
+    const fs::path dir = fs::temp_directory_path() / ("pride-plots-ros-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        // A 12 x 8 occupancy image (P2: 0 occupied, 255 free, 205 unknown) with a wall across the
+        // middle columns, and its map_server YAML; unknown cells are free in the campaign.
+        std::ofstream f(dir / "m.pgm");
+        f << "P2\n12 8\n255\n";
+        for (int y = 0; y < 8; ++y) {
+            for (int x = 0; x < 12; ++x) f << (x == 6 && y < 6 ? 0 : (x == 2 && y == 7 ? 205 : 255)) << ' ';
+            f << '\n';
+        }
+        std::ofstream(dir / "m.yaml") << "image: m.pgm\nresolution: 0.05\norigin: [-10.0, -10.0, 0.0]\n"
+                                         "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+        std::ofstream(dir / "c.toml") << "name = \"ros\"\nseeds = 2\n[budget]\nevaluations = 300\n"
+                                         "[[problem]]\nid = \"ros\"\ntype = \"grid\"\nmap = \""
+                                      << (dir / "m.yaml").string()
+                                      << "\"\nunknown_free = true\nstart = [0, 0]\ngoal = [11, 0]\n"
+                                         "objective = \"length\"\n"
+                                         "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n"
+                                         "[[algorithm]]\nid = \"theta\"\ntype = \"theta-star\"\n";
+    }
+    const auto bench = pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --out '" +
+                                              (dir / "c.sqlite").string() + "'");
+    INFO(bench.err);
+    REQUIRE(bench.status == 0);
+    const auto report = pride::test::run_pride("report '" + (dir / "c.sqlite").string() + "' --plots '" +
+                                               (dir / "figures").string() + "'");
+    INFO(report.err);
+    REQUIRE(report.status == 0);
+    CHECK(is_png(dir / "figures" / "ros-paths.png"));
+    std::ifstream svg(dir / "figures" / "ros-paths.svg");
+    const std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+    // matplotlib keeps each text of the figure as a comment beside its glyphs: both legends' entries.
+    CHECK(text.find("<!-- theta (") != std::string::npos);
+    CHECK(text.find("<!-- ga (") != std::string::npos);
+    // No map file left behind in the figures' folder: the matrices pride wrote were scratch.
+    for (const auto& e : fs::directory_iterator(dir / "figures"))
+        CHECK((e.path().extension() == ".png" || e.path().extension() == ".svg"));
+    fs::remove_all(dir);
+}
