@@ -11,7 +11,8 @@ framework/pareto/attainment.hpp) and the front of its median run (by hypervolume
 the reference front (pride report --html draws it). Where the problem's optimum f_opt is known (continuous
 problems), values are precisions f - f_opt on a log axis (precisions below 1e-12, 0 included, are
 drawn at 1e-12, and the axis says so), unless --raw. Whole-map planners (A*, exact: no history)
-appear in the convergence figure as a horizontal line at their value. Each figure is written as
+appear in the convergence figure as a horizontal line at their value, as do sampling planners (OMPL's,
+labelled by their final value). Each figure is written as
 PNG and SVG, named after the problem: pride passes each problem's file name (--names, a JSON
 object of id -> name from experiment/storage/file_name.hpp's unique_file_names, so that "x/y" and "x_y"
 get files of their own); without it, safe(id). --maps: a JSON object of id -> a file of the grid
@@ -184,6 +185,11 @@ def main():
     columns = {row[1] for row in db.execute("PRAGMA table_info(problems)")}
     f_opt_column = "f_opt" if "f_opt" in columns else "NULL"
     problems = {row[0]: row[1:] for row in db.execute(f"SELECT id, type, map, start, goal, {f_opt_column} FROM problems")}
+    # The planners that evaluate no objective (algorithms.evaluates = 0): "whole map" in the legends,
+    # as the report's notes name them; another run without a history is its final value.
+    whole_map = set()
+    if db.execute("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'algorithms'").fetchone():
+        whole_map = {row[0] for row in db.execute("SELECT id FROM algorithms WHERE evaluates = 0")}
     # runs.polyline: a polyline planner's path (store schema 5), NULL for chains and older stores.
     polyline_column = "polyline" if "polyline" in {row[1] for row in db.execute("PRAGMA table_info(runs)")} else "NULL"
     runs = db.execute(
@@ -258,7 +264,7 @@ def main():
                 if finals and np.all(np.isfinite(finals)):
                     value = float(np.median(finals))
                     floored = floored or (precision and value <= floor)
-                    ax.axhline(value, linestyle=style, color="grey", linewidth=1.2, label=f"{algorithm} (whole map)")
+                    ax.axhline(value, linestyle=style, color="grey", linewidth=1.2, label=f"{algorithm} ({'whole map' if algorithm in whole_map else 'final value, no history'})")
                     positive = positive and value > 0
                     smallest, largest = min(smallest, value), max(largest, value)
                 continue

@@ -4,12 +4,14 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <regex>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "experiment/html/draw.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 
@@ -178,18 +180,24 @@ TEST_CASE("report --html: the page in headless Chromium loads every figure with 
     const auto r = run_pride("report " + quote(store) + " --html " + quote(kept.string()));
     REQUIRE(r.status == 0);
     const std::size_t figures = images_of(slurp(kept / "index.html")).size();
-    const std::string url = "file://" + (kept / "index.html").string();
+    // ?check: every figure loaded at once (they are lazy otherwise) and the tables measured.
+    const std::string url = "file://" + (kept / "index.html").string() + "?check";
     const std::string browser = std::string("timeout 120 ") + chromium +
                                 " --headless --no-sandbox --disable-gpu --user-data-dir=" + quote(dir.file("profile")) +
                                 " --enable-logging=stderr --v=0 ";
-    const int dumped = std::system(
-        (browser + "--dump-dom " + quote(url) + " >" + quote(dir.file("dom")) + " 2>" + quote(dir.file("log")))
-            .c_str());
+    const int dumped = std::system((browser + "--window-size=1400,1000 --dump-dom " + quote(url) + " >" +
+                                    quote(dir.file("dom")) + " 2>" + quote(dir.file("log")))
+                                       .c_str());
     REQUIRE(dumped == 0);
     const std::string dom = slurp(dir.file("dom")), log = slurp(dir.file("log"));
     INFO(log);
     // The page's script writes whether every <img> loaded with a width into <body>.
     CHECK(dom.find("data-figures=\"loaded " + std::to_string(figures) + "\"") != std::string::npos);
+    // Every table fits a 1400-pixel window (none scrolls or reaches past the page).
+    CHECK(dom.find("data-overflow=\"none\"") != std::string::npos);
+    // Figures load lazily when the page is only read.
+    CHECK(images_of(slurp(kept / "index.html")).size() == figures);
+    CHECK(slurp(kept / "index.html").find("loading=\"lazy\"") != std::string::npos);
     CHECK(log.find(":CONSOLE") == std::string::npos);  // console messages, script errors included
     const fs::path shot = kept / "screenshot.png";
     const int shown = std::system((browser + "--hide-scrollbars --screenshot=" + quote(shot.string()) +
@@ -288,4 +296,60 @@ TEST_CASE("report --html: whole-map planners as lines, x in iterations when runs
     CHECK(html.find("No Friedman test") != std::string::npos);
     CHECK(valid_svg(dir.path() / "page" / "convergence-m.svg"));
     CHECK(valid_svg(dir.path() / "page" / "paths-m.svg"));
+}
+
+TEST_CASE("report --html: the paths figure of a large map shows the paths' region, and says so", "[report][html]") {
+    const TempDir dir("pride-html-crop");
+    // 200 x 120 cells, free but for a wall; start and goal near the top-left corner.
+    std::string rows = "type octile\nheight 120\nwidth 200\nmap\n";
+    for (int y = 0; y < 120; ++y) {
+        for (int x = 0; x < 200; ++x) rows += (x == 20 && y < 25) ? '@' : '.';
+        rows += '\n';
+    }
+    const std::string map = dir.write("big.map", rows);
+    const std::string config = dir.write("c.toml",
+                                         "name = \"crop\"\nseeds = 1\n"
+                                         "[[problem]]\nid = \"big\"\ntype = \"grid\"\nmap = \"" +
+                                             map +
+                                             "\"\nstart = [5, 5]\ngoal = [35, 10]\nobjective = \"length\"\n"
+                                             "[[algorithm]]\nid = \"astar\"\ntype = \"astar\"\n"
+                                             "[[algorithm]]\nid = \"theta\"\ntype = \"theta-star\"\n");
+    const std::string store = dir.file("c.sqlite");
+    REQUIRE(run_pride("bench " + quote(config) + " --out " + quote(store)).status == 0);
+    const auto r = run_pride("report " + quote(store) + " --html " + quote(dir.file("page")));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string html = slurp(dir.path() / "page" / "index.html");
+    static const std::regex said(
+        R"(Cropped to the paths' region: columns (\d+)-(\d+) and rows (\d+)-(\d+) of the 200 x 120 map\.)");
+    std::smatch m;
+    REQUIRE(std::regex_search(html, m, said));
+    // The region holds start (5, 5) and goal (35, 10) with a margin of at least 5 cells, and is a
+    // small part of the map.
+    CHECK(std::stoi(m[1]) == 0);
+    CHECK(std::stoi(m[2]) >= 40);
+    CHECK(std::stoi(m[2]) < 120);
+    CHECK(std::stoi(m[3]) == 0);
+    CHECK(std::stoi(m[4]) >= 15);
+    CHECK(std::stoi(m[4]) < 84);
+    CHECK(valid_svg(dir.path() / "page" / "paths-big.svg"));
+}
+
+TEST_CASE("paths_window: the region around start, goal and the paths, or the whole map when that is most of it",
+          "[report][html]") {
+    using pride::grid::Cell;
+    using pride::grid::GridMap;
+    using pride::grid::Polyline;
+    const GridMap map(100, 50, std::vector<std::uint8_t>(5000, 0));
+    // Start and goal only: their box (10..30 x 5..8), 5 cells of margin (a tenth of 20 is less).
+    auto w = pride::html::paths_window(map, Cell{10, 5}, Cell{30, 8}, {});
+    CHECK((w.x0 == 5 && w.x1 == 36 && w.y0 == 0 && w.y1 == 14));
+    CHECK_FALSE(w.whole(map));
+    // A path's vertex far out widens it; the margin is a tenth of the larger side.
+    w = pride::html::paths_window(map, Cell{10, 5}, Cell{30, 8}, {Polyline{{10, 5}, {60, 20}, {30, 8}}});
+    CHECK((w.x0 == 5 && w.x1 == 66 && w.y0 == 0 && w.y1 == 26));
+    // Covering 70 % or more of both sides: the whole map.
+    w = pride::html::paths_window(map, Cell{2, 2}, Cell{90, 40}, {});
+    CHECK(w.whole(map));
+    CHECK(pride::html::window_words(map, w).empty());
 }

@@ -173,7 +173,7 @@ TEST_CASE("report --html: attainment surfaces, median fronts and grid paths of m
         const int dumped = std::system(("timeout 120 /usr/bin/chromium --headless --no-sandbox --disable-gpu "
                                         "--user-data-dir=" +
                                         quote(dir.file("profile")) + " --dump-dom " +
-                                        quote("file://" + (out / "index.html").string()) + " >" +
+                                        quote("file://" + (out / "index.html").string() + "?check") + " >" +
                                         quote(dir.file("dom")) + " 2>/dev/null")
                                            .c_str());
         REQUIRE(dumped == 0);

@@ -72,8 +72,8 @@ TEST_CASE("report: --plots draws paths on a map_server map, a polyline planner's
                                          "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n"
                                          "[[algorithm]]\nid = \"theta\"\ntype = \"theta-star\"\n";
     }
-    const auto bench = pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --out '" +
-                                              (dir / "c.sqlite").string() + "'");
+    const auto bench =
+        pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --out '" + (dir / "c.sqlite").string() + "'");
     INFO(bench.err);
     REQUIRE(bench.status == 0);
     const auto report = pride::test::run_pride("report '" + (dir / "c.sqlite").string() + "' --plots '" +
@@ -89,5 +89,38 @@ TEST_CASE("report: --plots draws paths on a map_server map, a polyline planner's
     // No map file left behind in the figures' folder: the matrices pride wrote were scratch.
     for (const auto& e : fs::directory_iterator(dir / "figures"))
         CHECK((e.path().extension() == ".png" || e.path().extension() == ".svg"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("report: --plots names a whole-map planner and a sampling planner as the notes do", "[report][plots]") {
+    if (pride::test::run_pride("list").out.find("ompl:RRTstar") == std::string::npos) {
+        WARN("skipped: this build has no OMPL planners");
+        return;
+    }
+    const fs::path dir = fs::temp_directory_path() / ("pride-plots-ompl-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path map = fs::path(PRIDE_SOURCE_DIR) / "examples" / "maps" / "wan2022-10x10.map";
+    std::ofstream(dir / "c.toml") << "name = \"ompl\"\nseeds = 2\n[budget]\nevaluations = 500\n"
+                                     "[[problem]]\nid = \"map\"\ntype = \"grid\"\nmap = \""
+                                  << map.string()
+                                  << "\"\nstart = [0, 0]\ngoal = [9, 9]\nobjective = \"length\"\n"
+                                     "[[algorithm]]\nid = \"astar\"\ntype = \"astar\"\n"
+                                     "[[algorithm]]\nid = \"rrt\"\ntype = \"ompl:RRTstar\"\n"
+                                     "[[algorithm]]\nid = \"ga\"\ntype = \"ga\"\npop = 10\n";
+    REQUIRE(
+        pride::test::run_pride("bench '" + (dir / "c.toml").string() + "' --out '" + (dir / "c.sqlite").string() + "'")
+            .status == 0);
+    const auto report = pride::test::run_pride("report '" + (dir / "c.sqlite").string() + "' --plots '" +
+                                               (dir / "figures").string() + "'");
+    INFO(report.err);
+    REQUIRE(report.status == 0);
+    std::ifstream svg(dir / "figures" / "map-convergence.svg");
+    const std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+    CHECK(text.find("<!-- astar (whole map) -->") != std::string::npos);
+    CHECK(text.find("<!-- rrt (final value, no history) -->") != std::string::npos);
+    // The report's note names the same planner alone as evaluating nothing.
+    CHECK(report.out.find("astar plan") != std::string::npos);
+    CHECK(report.out.find("rrt plan") == std::string::npos);
     fs::remove_all(dir);
 }

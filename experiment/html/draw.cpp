@@ -30,25 +30,25 @@ void trace_path(cairo_t* cr, const Points& path, double cell) {
     }
 }
 
-void paint_map(cairo_t* cr, const grid::GridMap& map, double cell) {
-    const double w = map.width() * cell, h = map.height() * cell;
+/// The cells of `w` (drawn in the map's own coordinates: the caller translates and clips).
+void paint_map(cairo_t* cr, const grid::GridMap& map, const MapWindow& w, double cell) {
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.22);
-    for (int y = 0; y < map.height(); ++y)
-        for (int x = 0; x < map.width(); ++x)
+    for (int y = w.y0; y < w.y1; ++y)
+        for (int x = w.x0; x < w.x1; ++x)
             if (!map.free({x, y})) cairo_rectangle(cr, x * cell, y * cell, cell, cell);
     cairo_fill(cr);
     if (cell >= 6) {  // grid lines only where cells are big enough to tell apart
         cairo_set_source_rgba(cr, 0, 0, 0, 0.15);
         cairo_set_line_width(cr, 1.0);
-        for (int x = 0; x <= map.width(); ++x) {
-            cairo_move_to(cr, x * cell, 0);
-            cairo_line_to(cr, x * cell, h);
+        for (int x = w.x0; x <= w.x1; ++x) {
+            cairo_move_to(cr, x * cell, w.y0 * cell);
+            cairo_line_to(cr, x * cell, w.y1 * cell);
         }
-        for (int y = 0; y <= map.height(); ++y) {
-            cairo_move_to(cr, 0, y * cell);
-            cairo_line_to(cr, w, y * cell);
+        for (int y = w.y0; y <= w.y1; ++y) {
+            cairo_move_to(cr, w.x0 * cell, y * cell);
+            cairo_line_to(cr, w.x1 * cell, y * cell);
         }
         cairo_stroke(cr);
     }
@@ -109,7 +109,7 @@ void paint_legend(cairo_t* cr, const std::vector<Entry>& entries, double top, do
 
 void paint(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Polyline* path,
            const grid::Path* optimal, double cell) {
-    paint_map(cr, map, cell);
+    paint_map(cr, map, whole_map(map), cell);
     if (optimal && !optimal->empty()) {  // underneath, wide and pale, so the found path stays visible
         cairo_set_source_rgba(cr, kOptimal.r, kOptimal.g, kOptimal.b, kOptimal.a);
         cairo_set_line_width(cr, std::max(3.0, cell * 0.55));
@@ -139,9 +139,9 @@ Rgba colour_of(std::size_t i, std::size_t n, const std::vector<Rgb>& colours) {
 
 /// Several paths, each in its own colour (by default from blue for the first to red for the last),
 /// half transparent so that shared stretches show as darker.
-void paint_many(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::Cell goal,
+void paint_many(cairo_t* cr, const grid::GridMap& map, const MapWindow& window, grid::Cell start, grid::Cell goal,
                 const std::vector<grid::Polyline>& paths, const std::vector<Rgb>& colours, double cell) {
-    paint_map(cr, map, cell);
+    paint_map(cr, map, window, cell);
     for (std::size_t i = 0; i < paths.size(); ++i) {
         const Rgba c = colour_of(i, paths.size(), colours);
         cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
@@ -153,12 +153,13 @@ void paint_many(cairo_t* cr, const grid::GridMap& map, grid::Cell start, grid::C
 }
 
 template <class Paint>
-void draw(const grid::GridMap& map, const std::vector<Entry>& legend, OutputFiles::File& file, PictureFormat format,
+void draw(const MapWindow& window, const std::vector<Entry>& legend, OutputFiles::File& file, PictureFormat format,
           Paint paint_with) {
     // About 800 pixels on the longer side, cells between 2 and 40 pixels; the legend below, at
     // least 240 pixels wide so that its words fit beside a small map.
-    const double cell = std::clamp(800.0 / std::max(map.width(), map.height()), 2.0, 40.0);
-    const double map_w = map.width() * cell, map_h = map.height() * cell;
+    const int columns = window.x1 - window.x0, rows = window.y1 - window.y0;
+    const double cell = std::clamp(800.0 / std::max(columns, rows), 2.0, 40.0);
+    const double map_w = columns * cell, map_h = rows * cell;
     const double w = std::max(map_w, 240.0), h = map_h + legend_height(legend.size());
     const FontSession fonts;  // the legend's text
     cairo_surface_t* surface = format == PictureFormat::svg
@@ -171,14 +172,50 @@ void draw(const grid::GridMap& map, const std::vector<Entry>& legend, OutputFile
     cairo_save(cr);
     cairo_rectangle(cr, 0, 0, map_w, map_h);
     cairo_clip(cr);
+    cairo_translate(cr, -window.x0 * cell, -window.y0 * cell);
     paint_with(cr, cell);
     cairo_restore(cr);
+    // A frame, so that the map's edge (or a cropped region's) shows on a white page.
+    cairo_set_source_rgba(cr, 0, 0, 0, 0.35);
+    cairo_set_line_width(cr, 1.0);
+    cairo_rectangle(cr, 0.5, 0.5, map_w - 1.0, map_h - 1.0);
+    cairo_stroke(cr);
     paint_legend(cr, legend, map_h, w);
     cairo_destroy(cr);
     finish_into(surface, file, format == PictureFormat::png, "the picture");
 }
 
 }  // namespace
+
+MapWindow whole_map(const grid::GridMap& map) {
+    return {0, 0, map.width(), map.height()};
+}
+
+MapWindow paths_window(const grid::GridMap& map, grid::Cell start, grid::Cell goal,
+                       const std::vector<grid::Polyline>& paths) {
+    double lo_x = std::min(start.x, goal.x), hi_x = std::max(start.x, goal.x);
+    double lo_y = std::min(start.y, goal.y), hi_y = std::max(start.y, goal.y);
+    for (const grid::Polyline& p : paths)
+        for (const auto& v : p) {
+            lo_x = std::min(lo_x, v.x), hi_x = std::max(hi_x, v.x);
+            lo_y = std::min(lo_y, v.y), hi_y = std::max(hi_y, v.y);
+        }
+    // Vertices are cell centres (cell i spans [i - 0.5, i + 0.5]); the margin is whole cells.
+    const double margin = std::max(5.0, std::ceil(0.1 * std::max(hi_x - lo_x, hi_y - lo_y)));
+    MapWindow w;
+    w.x0 = static_cast<int>(std::max(0.0, std::floor(lo_x + 0.5) - margin));
+    w.y0 = static_cast<int>(std::max(0.0, std::floor(lo_y + 0.5) - margin));
+    w.x1 = static_cast<int>(std::min<double>(map.width(), std::floor(hi_x + 0.5) + 1 + margin));
+    w.y1 = static_cast<int>(std::min<double>(map.height(), std::floor(hi_y + 0.5) + 1 + margin));
+    if (w.x1 - w.x0 >= 0.7 * map.width() && w.y1 - w.y0 >= 0.7 * map.height()) return whole_map(map);
+    return w;
+}
+
+std::string window_words(const grid::GridMap& map, const MapWindow& w) {
+    if (w.whole(map)) return "";
+    return fmt::format(" Cropped to the paths' region: columns {}-{} and rows {}-{} of the {} x {} map.", w.x0,
+                       w.x1 - 1, w.y0, w.y1 - 1, map.width(), map.height());
+}
 
 double legend_height(std::size_t entries) {
     return entries == 0 ? 0.0 : 2 * kMapLegendPad + kMapLegendLine * static_cast<double>(entries);
@@ -190,7 +227,7 @@ void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, cons
     if (path && !path->empty()) legend.push_back({kFound, false, labels.path});
     if (optimal && !optimal->empty())
         legend.push_back({{kOptimal.r, kOptimal.g, kOptimal.b, 0.6}, false, labels.optimal});
-    draw(map, legend, file, format,
+    draw(whole_map(map), legend, file, format,
          [&](cairo_t* cr, double cell) { paint(cr, map, start, goal, path, optimal, cell); });
 }
 
@@ -205,7 +242,8 @@ void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal
 
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal,
                      const std::vector<grid::Polyline>& paths, const std::vector<std::string>& labels,
-                     OutputFiles::File& file, PictureFormat format, const std::vector<Rgb>& colours) {
+                     OutputFiles::File& file, PictureFormat format, const std::vector<Rgb>& colours,
+                     const std::optional<MapWindow>& window) {
     std::vector<Entry> legend{{kStart, true, "start"}, {kGoal, true, "goal"}};
     // A long front: its first and last paths named, the rest said in one line (colours run in order).
     const std::size_t n = paths.size(), shown = n > 10 ? 4 : n;
@@ -216,8 +254,9 @@ void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal
         }
         legend.push_back({colour_of(i, n, colours), false, i < labels.size() ? labels[i] : std::string()});
     }
-    draw(map, legend, file, format,
-         [&](cairo_t* cr, double cell) { paint_many(cr, map, start, goal, paths, colours, cell); });
+    const MapWindow drawn = window.value_or(whole_map(map));
+    draw(drawn, legend, file, format,
+         [&](cairo_t* cr, double cell) { paint_many(cr, map, drawn, start, goal, paths, colours, cell); });
 }
 
 void write_pictures(const std::vector<std::pair<std::string, PictureFormat>>& pictures, OutputFiles& files,

@@ -4,6 +4,7 @@
 // drawn once with cairo (Debian's libcairo2) for both formats; for `pride path`, `pride pareto` and
 // the HTML report alike.
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,16 +32,36 @@ struct PathLabels {
 void draw_grid(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const grid::Polyline* path,
                const grid::Path* optimal, const PathLabels& labels, OutputFiles::File& file, PictureFormat format);
 
+/// The cells a picture shows: columns x0 to x1 - 1 and rows y0 to y1 - 1 of its map.
+struct MapWindow {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool whole(const grid::GridMap& map) const { return x0 == 0 && y0 == 0 && x1 == map.width() && y1 == map.height(); }
+};
+
+/// The whole map.
+MapWindow whole_map(const grid::GridMap& map);
+
+/// The region of the map around start, goal and every path's vertices, with a margin of a tenth of
+/// its size (at least 5 cells), so that paths on a large map are drawn large enough to be seen;
+/// the whole map when that region would cover most of it (70 % or more of its width and height).
+MapWindow paths_window(const grid::GridMap& map, grid::Cell start, grid::Cell goal,
+                       const std::vector<grid::Polyline>& paths);
+
+/// A caption's words for `w`: empty for the whole map, else which columns and rows are shown.
+std::string window_words(const grid::GridMap& map, const MapWindow& w);
+
 /// The map with several paths (a Pareto front), each in its own colour, from blue (the first) to
 /// red (the last), or `colours[i]` for path i when given (one per path), and a legend naming each
 /// (`labels`, one per path).
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal, const std::vector<grid::Path>& paths,
                      const std::vector<std::string>& labels, OutputFiles::File& file, PictureFormat format,
                      const std::vector<Rgb>& colours = {});
-/// The same with polylines (cell (i, j)'s centre at (i, j)): chains and polyline planners' paths.
+/// The same with polylines (cell (i, j)'s centre at (i, j)): chains and polyline planners' paths;
+/// only `window` of the map when given (paths_window), else the whole map.
 void draw_grid_paths(const grid::GridMap& map, grid::Cell start, grid::Cell goal,
                      const std::vector<grid::Polyline>& paths, const std::vector<std::string>& labels,
-                     OutputFiles::File& file, PictureFormat format, const std::vector<Rgb>& colours = {});
+                     OutputFiles::File& file, PictureFormat format, const std::vector<Rgb>& colours = {},
+                     const std::optional<MapWindow>& window = std::nullopt);
 
 /// The height in pixels of a legend of `entries` lines under a map drawn `width` pixels wide.
 double legend_height(std::size_t entries);

@@ -251,12 +251,16 @@ void front_figures(Page& page, const storage::CampaignStore& s, const PageStore&
         std::string name = file + ".svg";
         for (int n = 2; used.count(name); ++n) name = fmt::format("{}-{}.svg", file, n);
         used.insert(name);
-        draw_grid_paths(*map, info->start, info->goal, r.paths, labels, page.create(name), PictureFormat::svg);
+        std::vector<grid::Polyline> lines;
+        for (const grid::Path& p : r.paths) lines.push_back(grid::polyline_of(p));
+        const MapWindow window = paths_window(*map, info->start, info->goal, lines);
+        draw_grid_paths(*map, info->start, info->goal, lines, labels, page.create(name), PictureFormat::svg, {},
+                        window);
         page.put(name, problem + ": paths of " + a.algorithm + "'s median front",
                  fmt::format("The {} paths of the front of {}'s median run on {} (seed {}, hypervolume ratio {:.4g}), "
-                             "coloured from blue to red in the front's order (increasing {}); start green, goal red.",
+                             "coloured from blue to red in the front's order (increasing {}); start green, goal red.{}",
                              r.paths.size(), escape(a.algorithm), escape(problem), r.seed, r.hypervolume_ratio,
-                             escape(x_name)));
+                             escape(x_name), window_words(*map, window)));
     }
 }
 

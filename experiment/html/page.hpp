@@ -79,8 +79,10 @@ struct Page {
     }
     void put(const std::string& name, const std::string& alt, const std::string& caption) {
         ++figures;
-        html += fmt::format("<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n", escape(name),
-                            escape(alt), caption);
+        // Lazily: a campaign's page may hold hundreds of figures; a browser fetches those near the view.
+        html +=
+            fmt::format("<figure><img src=\"{}\" alt=\"{}\" loading=\"lazy\"><figcaption>{}</figcaption></figure>\n",
+                        escape(name), escape(alt), caption);
     }
 };
 

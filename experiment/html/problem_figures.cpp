@@ -119,8 +119,8 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
     std::map<std::string, std::vector<const StoredRun*>> by_algorithm;
     for (const StoredRun* run : runs) by_algorithm[run->algorithm].push_back(run);
 
-    // Convergence: algorithms whose runs record a history; the others (whole-map planners) as a
-    // line at their median value.
+    // Convergence: algorithms whose runs record a history; the others (whole-map planners, sampling
+    // planners) as a line at their median value.
     std::vector<std::string> curves, flat;
     for (const auto& [a, rs] : by_algorithm)
         (std::all_of(rs.begin(), rs.end(), [](const StoredRun* x) { return !x->history.empty(); }) ? curves : flat)
@@ -161,7 +161,13 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
             f.band(c.x, c.q1, c.q3, page.colour(a));
             f.line(c.x, c.median, page.colour(a), a, page.dash(a));
         }
-        for (const auto& a : flat) f.hline(levels[a], page.colour(a), a + " (whole map)", page.dash(a));
+        // Named as the notes name them: "whole map" only for the planners that evaluate no objective
+        // (storage::CampaignStore::whole_map_algorithms); another run without a history (a sampling
+        // planner's) is its final value.
+        for (const auto& a : flat)
+            f.hline(levels[a], page.colour(a),
+                    a + (s.whole_map_algorithms.count(a) ? " (whole map)" : " (final value, no history)"),
+                    page.dash(a));
         f.subtitle(fmt::format("median and interquartile band over the seeds, against {}{}",
                                by_evaluations ? "evaluations" : "iterations (not every run records its evaluations)",
                                floored ? fmt::format("; precisions <= {:g} drawn at {:g}", kFloor, kFloor) : ""));
@@ -219,7 +225,9 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
         colours.push_back(page.colour(b->algorithm));
     }
     const std::string paths_file = page.file("paths", problem);
-    draw_grid_paths(*map, info->start, info->goal, paths, labels, page.create(paths_file), PictureFormat::svg, colours);
+    const MapWindow window = paths_window(*map, info->start, info->goal, paths);
+    draw_grid_paths(*map, info->start, info->goal, paths, labels, page.create(paths_file), PictureFormat::svg, colours,
+                    window);
     std::string none;
     for (const auto& entry : by_algorithm) {
         const std::string& a = entry.first;  // (clang 14 captures no structured binding)
@@ -228,8 +236,8 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
     }
     page.put(paths_file, problem + ": best paths",
              fmt::format("The best path of each algorithm on {} (its lowest value over the seeds), with the exact "
-                         "optimum of the objective where the campaign computed it; start green, goal red.{}",
-                         escape(problem), none));
+                         "optimum of the objective where the campaign computed it; start green, goal red.{}{}",
+                         escape(problem), window_words(*map, window), none));
     if (map->size() > kParetoCells) {
         page.notes += fmt::format(
             "<p>No Pareto front: the map has {} cells, more than the {} up to which the report computes it (pride "

@@ -35,14 +35,15 @@ using report::runs_cell;
 using storage::StoredRun;
 
 const char* kStyle = R"css(
-body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 0 auto; max-width: 1240px;
+body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 0 auto; max-width: 1360px;
        padding: 0 24px 48px; color: #1a1a1a; line-height: 1.45; font-size: 15px; }
 h1 { font-size: 26px; margin: 24px 0 4px; }
 h2 { font-size: 21px; margin-top: 36px; border-bottom: 2px solid #d8dde6; padding-bottom: 4px; }
 h3 { font-size: 17px; margin-top: 28px; }
 nav { background: #f3f5f9; padding: 8px 12px; border-radius: 4px; font-size: 14px; }
 nav a { margin-right: 14px; }
-table { border-collapse: collapse; margin: 10px 0 16px; font-size: 13px; }
+table { border-collapse: collapse; margin: 10px 0 16px; font-size: 13px; display: block; overflow-x: auto;
+        max-width: 100%; }
 th, td { border: 1px solid #cdd3dd; padding: 3px 8px; }
 th { background: #eef1f6; text-align: left; }
 td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; }
@@ -58,15 +59,26 @@ figcaption { font-size: 13px; color: #444; }
 .note { color: #6b4e00; background: #fff8e1; padding: 4px 8px; border-radius: 3px; }
 )css";
 
-// Whether every figure loaded, written into the page itself (body's data-figures), so that a
-// browser run without a display (chromium --headless --dump-dom) shows it: "loaded N" or
-// "missing NAME ...".
+// Opened as index.html?check, the page loads every figure at once (they are lazy otherwise) and
+// writes into itself, so that a browser run without a display (chromium --headless --dump-dom)
+// shows it, whether every figure loaded (body's data-figures: "loaded N" or "missing NAME ...")
+// and which tables are wider than the page (data-overflow: "none" or their headers' first cells).
 const char* kScript = R"js(
+var checking = location.search.indexOf("check") >= 0;
+document.addEventListener("DOMContentLoaded", function () {
+  if (checking) for (var i = 0; i < document.images.length; ++i) document.images[i].loading = "eager";
+});
 window.addEventListener("load", function () {
-  var images = document.images, missing = [];
+  if (!checking) return;
+  var images = document.images, missing = [], wide = [];
   for (var i = 0; i < images.length; ++i)
     if (!(images[i].complete && images[i].naturalWidth > 0)) missing.push(images[i].getAttribute("src"));
   document.body.setAttribute("data-figures", missing.length ? "missing " + missing.join(" ") : "loaded " + images.length);
+  var tables = document.getElementsByTagName("table");
+  for (var j = 0; j < tables.length; ++j)
+    if (tables[j].scrollWidth > tables[j].clientWidth + 1 || tables[j].getBoundingClientRect().right > document.body.clientWidth + 1)
+      wide.push(tables[j].rows[0].cells[0].textContent);
+  document.body.setAttribute("data-overflow", wide.length ? wide.join(" | ") : "none");
 });
 )js";
 
