@@ -275,12 +275,16 @@ TEST_CASE("bench --shard: a bad part is one line naming --shard, exit 2, nothing
     const std::string file = dir.write("c.toml", campaign("3"));
     const std::string store = dir.file("s.sqlite");
     for (const std::string bad : {"0/3", "4/3", "3", "1/0", "0/0", "a/b", "1/3/4", "-1/3", "1/-3", "1.5/3", "1/3.0",
-                                  "1e1/20", "/3", "1/", "", " 1/3", "99999999999999999999/3"}) {
+                                  "1e1/20", "/3", "1/", " 1/3", "99999999999999999999/3"}) {
         INFO("--shard '" << bad << "'");
         refused(bench(file, store, "--shard=" + q(bad)),
                 {"pride: --shard: must be K/N, part K of N with integers 1 <= K <= N (e.g. 2/3), got '" + bad + "'"});
         CHECK(!fs::exists(store));
     }
+    // No value at all: the argument parser's own line, naming the flag.
+    refused(bench(file, store, "--shard=''"), {"pride: --shard: 1 required TEXT missing"});
+    refused(bench(file, store, "--shard"), {"--shard"});
+    CHECK(!fs::exists(store));
 }
 
 TEST_CASE("campaign seeds and shards in code: listed seeds checked, parts dealt round-robin", "[campaign][shard]") {
