@@ -14,6 +14,8 @@
 #include <ostream>
 #include <thread>
 
+#include "cli/flags.hpp"
+#include "cli/numbers.hpp"
 #include "experiment/campaign/run.hpp"
 #include "experiment/campaign/toml.hpp"
 
@@ -39,7 +41,25 @@ void catch_signals() {
 
 }  // namespace
 
+campaign::Shard parse_shard(std::string_view text) {
+    const std::string usage =
+        "must be K/N, part K of N with integers 1 <= K <= N (e.g. 2/3), got '" + printable(text) + "'";
+    const auto slash = text.find('/');
+    require(slash != std::string_view::npos && text.find('/', slash + 1) == std::string_view::npos, "--shard", usage);
+    const std::string_view k = text.substr(0, slash), n = text.substr(slash + 1);
+    try {
+        check_integer(n, 1, max_count, "");
+        check_integer(k, 1, max_count, "");
+    } catch (const InputError&) {
+        throw InputError("--shard", usage);
+    }
+    campaign::Shard shard{std::stoll(std::string(k)), std::stoll(std::string(n))};
+    require(shard.index <= shard.count, "--shard", usage);
+    return shard;
+}
+
 int bench_command(const BenchOptions& o, std::ostream& out) {
+    const campaign::Shard shard = o.shard ? parse_shard(*o.shard) : campaign::Shard{};
     const campaign::Campaign c = campaign::read_campaign(o.config);
     // By default in the working folder, not beside the campaign file (which may be in a
     // checkout or a read-only place); the summary line says where.
@@ -70,12 +90,16 @@ int bench_command(const BenchOptions& o, std::ostream& out) {
         std::_Exit(128 + i.signal);
     };
     catch_signals();
-    const campaign::BenchSummary s = campaign::run_campaign(c, store, jobs, progress, stop);
+    const campaign::BenchSummary s = campaign::run_campaign(c, store, jobs, progress, stop, shard);
     if (show_progress) print_stderr("\n");
     if (s.ranks == 0) return 0;  // another MPI rank than 0: rank 0 prints the summary
     std::string extra = s.ranks > 1 ? fmt::format("; {} MPI ranks", s.ranks) : "";
     if (s.others > 0)
         extra += fmt::format("; {} being run by another pride bench on this store, or failed there", s.others);
+    // "in all" counts this shard's runs; the campaign's are said beside them.
+    if (o.shard)
+        extra += fmt::format("; shard {}/{} of the campaign's {} runs", shard.index, shard.count,
+                             c.problems.size() * c.algorithms.size() * static_cast<std::size_t>(c.seeds));
     out << fmt::format("{}: {} runs stored in {} ({} were there already, {} in all{})\n", c.name, s.stored, store,
                        s.already, s.total, extra);
     return 0;

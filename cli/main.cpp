@@ -281,6 +281,9 @@ int run_main(int argc, char** argv) {
         ->add_option("--out", bench.out,
                      "the SQLite store (default: the name of CONFIG with .sqlite, in the working folder)")
         ->check(a_path());
+    bench_cmd->add_option("--shard", bench.shard,
+                          "K/N: run only part K of N of the campaign's runs (every N-th from the K-th), for a "
+                          "campaign split across machines; pride merge joins the parts' stores");
 
     ReportOptions report;
     auto* report_cmd = app.add_subcommand("report", "comparison tables and statistics from a campaign store");

@@ -44,7 +44,8 @@ install(DIRECTORY framework roughset problems algorithms engine experiment
         FILES_MATCHING PATTERN "*.hpp"
         REGEX "/engine/entries$" EXCLUDE
         REGEX "/experiment/html$" EXCLUDE  # pride_html (the report page, cairo) is the command's and Python's
-        REGEX "/experiment/store.hpp$" EXCLUDE)  # the campaign runner's own, not an interface
+        REGEX "/experiment/store.hpp$" EXCLUDE  # the campaign runner's own, not an interface
+        REGEX "/experiment/campaign/toml_seeds.hpp$" EXCLUDE)  # the campaign file reader's own (toml++)
 
 set(PRIDE_CONFIG_MPI OFF)  # MPI is a dependency only when pride_engine was built with it
 if(PRIDE_MPI)

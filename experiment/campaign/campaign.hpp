@@ -65,8 +65,12 @@ struct Campaign {
     std::string text;  // stored with the results, so a store never mixes two campaigns; empty:
                        // prepare() writes a canonical description
     std::string name;
-    std::int64_t seeds = 0;  // seeds 1..seeds
-    engine::Budget budget;   // evaluations and/or iterations
+    std::int64_t seeds = 0;  // runs per (problem, algorithm): seeds 1..seeds, or those of seed_list
+    // The seeds when the file lists them (`seeds = [4, 5, 9]`, or a range): distinct, each in
+    // [1, max_campaign_seeds], in the file's order, `seeds` their number; empty: 1..seeds. A run
+    // is known by its seed's value, so seed 5 is one run whichever way the file gave it.
+    std::vector<std::int64_t> seed_list;
+    engine::Budget budget;  // evaluations and/or iterations
     // Where the file gives [budget]'s evaluations and iterations, and threads (0: not from a file),
     // for the messages that refuse them.
     int evaluations_line = 0, iterations_line = 0, threads_line = 0;
@@ -80,5 +84,10 @@ struct Campaign {
     std::vector<CampaignProblem> problems;
     std::vector<CampaignAlgorithm> algorithms;
 };
+
+/// The k-th seed of the campaign (k from 0 to seeds - 1).
+inline std::int64_t seed_at(const Campaign& c, std::int64_t k) {
+    return c.seed_list.empty() ? k + 1 : c.seed_list[static_cast<std::size_t>(k)];
+}
 
 }  // namespace pride::campaign

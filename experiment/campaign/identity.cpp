@@ -1,6 +1,7 @@
 #include "experiment/campaign/identity.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <string>
@@ -25,7 +26,11 @@ using engine::json_string;
 
 /// A canonical text of a campaign built in code, so that a store is never mixed with another's.
 std::string campaign_text(const Campaign& c) {
-    std::string s = fmt::format("name = {}\nseeds = {}\n", json_string(c.name), c.seeds);
+    // A count as before; listed seeds as their list (the runs of seed 5 are one run either way:
+    // a store grows, and stores merge, across the two).
+    std::string s =
+        fmt::format("name = {}\nseeds = {}\n", json_string(c.name),
+                    c.seed_list.empty() ? std::to_string(c.seeds) : fmt::format("[{}]", fmt::join(c.seed_list, ", ")));
     if (c.budget.evaluations) s += fmt::format("evaluations = {}\n", *c.budget.evaluations);
     if (c.budget.iterations) s += fmt::format("iterations = {}\n", *c.budget.iterations);
     if (c.evaluations_per_dim) s += fmt::format("evaluations_per_dim = {}\n", *c.evaluations_per_dim);

@@ -24,12 +24,17 @@ struct Task {
     std::int64_t seed;
 };
 
-/// Every (problem, algorithm, seed) of the campaign, in a fixed order that every process shares.
-inline std::vector<Task> all_tasks(const Campaign& c) {
+/// Every (problem, algorithm, seed) of the campaign, in a fixed order that every process shares,
+/// or of it every shard.count-th from the shard.index-th (run.hpp: Shard).
+inline std::vector<Task> all_tasks(const Campaign& c, const Shard& shard = {}) {
     std::vector<Task> tasks;
+    const auto count = static_cast<std::uint64_t>(shard.count), part = static_cast<std::uint64_t>(shard.index - 1);
+    tasks.reserve(c.problems.size() * c.algorithms.size() * static_cast<std::size_t>(c.seeds) / count + 1);
+    std::uint64_t position = 0;
     for (const auto& p : c.problems)
         for (const auto& a : c.algorithms)
-            for (std::int64_t seed = 1; seed <= c.seeds; ++seed) tasks.push_back({&p, &a, seed});
+            for (std::int64_t k = 0; k < c.seeds; ++k)
+                if (position++ % count == part) tasks.push_back({&p, &a, seed_at(c, k)});
     return tasks;
 }
 
@@ -37,12 +42,13 @@ inline std::vector<Task> all_tasks(const Campaign& c) {
 /// so that other processes on the same store take others), and the commits of finished ones.
 class Ledger {
   public:
-    Ledger(const Campaign& c, const std::string& path, std::size_t batch)
-        : tasks_(all_tasks(c)), budget_(c.budget), batch_(std::max<std::size_t>(batch, 1)) {
+    Ledger(const Campaign& c, const std::string& path, std::size_t batch, const Shard& shard = {})
+        : tasks_(all_tasks(c, shard)), budget_(c.budget), batch_(std::max<std::size_t>(batch, 1)) {
         store_.emplace(path);
         store_->claim(store_rows(c));
         // The campaign's runs the store holds (a grown store may hold runs of other seeds,
-        // problems or algorithms too: they stay, and are not this campaign's).
+        // problems or algorithms too, and a shard's the other shards' runs: they stay, and are
+        // not counted here).
         const auto done = store_->done();
         for (std::size_t i = 0; i < tasks_.size(); ++i) {
             storage::RunKey key{tasks_[i].problem->id, tasks_[i].algorithm->id, tasks_[i].seed};
@@ -110,9 +116,13 @@ class Ledger {
     /// The summary once every run is done; throws when the store's file went away meanwhile.
     BenchSummary finish() {
         store_->check_same_file();
-        const std::size_t now = store_->count();
-        const std::size_t others = now < tasks_.size() ? tasks_.size() - now : 0;
-        return {stored_, already_, tasks_.size(), others, 1};
+        // This list's runs the store lacks: not the store's count, which holds runs of other
+        // shards, seeds, problems and algorithms too.
+        const auto done = store_->done();
+        std::size_t missing = 0;
+        for (const Task& t : tasks_)
+            if (!done.count(storage::RunKey{t.problem->id, t.algorithm->id, t.seed})) ++missing;
+        return {stored_, already_, tasks_.size(), missing, 1};
     }
 
     /// Drops the claims of the runs not finished, and closes the store.

@@ -79,8 +79,8 @@ constexpr std::int64_t kSlotsPerThread = 2;
 /// trip, which is up to two 1 ms polls) asks for one more run each time, up to here.
 constexpr std::int64_t kMaxSlotsPerThread = 32;
 
-void mpi_worker(const Campaign& c, std::int64_t jobs) {
-    const std::vector<Task> tasks = all_tasks(c);
+void mpi_worker(const Campaign& c, std::int64_t jobs, const Shard& shard) {
+    const std::vector<Task> tasks = all_tasks(c, shard);
     std::mutex mutex;
     std::condition_variable to_workers, to_main;
     std::deque<long long> work;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "experiment/campaign/campaign.hpp"
+#include "experiment/campaign/run.hpp"
 #include "experiment/campaign/run_one.hpp"
 
 #ifdef PRIDE_HAVE_MPI
@@ -21,7 +22,8 @@ namespace pride::campaign {
 /// A rank other than 0: `jobs` threads fed by slots, each slot asking rank 0 for a run and sending
 /// back its record (which asks for the next) until rank 0 answers "no more" (-1). A thread that
 /// finds no run waiting, after its first, adds a slot. Only this thread calls MPI.
-void mpi_worker(const Campaign& c, std::int64_t jobs);
+/// `shard` as rank 0's (run.hpp): both number the same runs alike.
+void mpi_worker(const Campaign& c, std::int64_t jobs, const Shard& shard);
 
 /// Rank 0's view of the other ranks: each has slots; a slot asks for a run, gets one, and sends its
 /// record back, which asks for the next. An empty message is a slot asking, so a rank may add

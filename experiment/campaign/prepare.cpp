@@ -191,6 +191,17 @@ void prepare(Campaign& c) {
     require(!c.problems.empty(), file, "no [[problem]]");
     apply_suite_rules(c);
     require(c.seeds >= 1 && c.seeds <= max_campaign_seeds, file, "seeds " + seeds_range_message(c.seeds));
+    if (!c.seed_list.empty()) {
+        // A campaign built in code states its seeds as the file does: distinct, in range, and as many as it says.
+        require(
+            c.seed_list.size() == static_cast<std::size_t>(c.seeds), file,
+            fmt::format("seeds: {} runs per problem and algorithm, but {} seeds listed", c.seeds, c.seed_list.size()));
+        std::set<std::int64_t> seen;
+        for (const std::int64_t s : c.seed_list) {
+            require(s >= 1 && s <= max_campaign_seeds, file, "seeds: a seed " + seeds_range_message(s));
+            require(seen.insert(s).second, file, fmt::format("seeds: seed {} is listed twice", s));
+        }
+    }
     require(!c.algorithms.empty(), file, "no [[algorithm]]");
     require(c.problems.size() <= max_campaign_problems, file,
             fmt::format("{} problems; a campaign has at most {}", c.problems.size(), max_campaign_problems));

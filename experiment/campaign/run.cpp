@@ -1,5 +1,7 @@
 #include "experiment/campaign/run.hpp"
 
+#include <fmt/format.h>
+
 #include <cstdlib>
 #include <string>
 
@@ -21,8 +23,10 @@ int launched_ranks() {
 }
 
 BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std::int64_t jobs, const Progress& progress,
-                          const Stop& stop) {
+                          const Stop& stop, const Shard& shard) {
     require(jobs >= 1 && jobs <= 1024, "jobs", "must be in [1, 1024], got " + std::to_string(jobs));
+    require(shard.count >= 1 && shard.index >= 1 && shard.index <= shard.count, "shard",
+            fmt::format("must be part K of N with 1 <= K <= N, got {}/{}", shard.index, shard.count));
 #ifdef PRIDE_HAVE_MPI
     if (launched_ranks() > 1) {  // MPI only under mpirun: a plain run needs no MPI runtime
         int initialised = 0;
@@ -50,14 +54,15 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
         MPI_Comm_size(MPI_COMM_WORLD, &size);
         if (size > 1) {
             if (rank != 0) {
-                mpi_worker(c, jobs);
+                mpi_worker(c, jobs, shard);
                 BenchSummary none;
                 none.ranks = 0;  // a worker rank: rank 0 reports
                 return none;
             }
             Remotes remotes(size);
             try {
-                Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size));
+                Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs) * static_cast<std::size_t>(size),
+                              shard);
                 BenchSummary s = run_local(ledger, jobs, progress, stop, &remotes);
                 s.ranks = size;
                 return s;
@@ -78,7 +83,7 @@ BenchSummary run_campaign(const Campaign& c, const std::string& store_path, std:
 #endif
     // Claims in batches of 4 runs per thread: one transaction for several short runs, and still
     // small enough for two processes on one store to share the work evenly.
-    Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs));
+    Ledger ledger(c, store_path, 4 * static_cast<std::size_t>(jobs), shard);
     return run_local(ledger, jobs, progress, stop, nullptr);
 }
 

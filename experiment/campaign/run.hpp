@@ -41,13 +41,25 @@ struct Stop {
     std::function<void(const Interrupted&)> on_stop;
 };
 
+/// Part `index` of `count` of a campaign's runs (`pride bench --shard K/N`): the runs at positions
+/// index - 1, index - 1 + count, ... of its ordered list (all_tasks: problems, then algorithms,
+/// then seeds), so that the parts differ by one run at most and share each problem's and
+/// algorithm's runs. A run depends only on (problem, algorithm, seed): the parts, run apart into
+/// stores of their own and merged, are the store of the whole campaign. {1, 1}: every run.
+struct Shard {
+    std::int64_t index = 1;
+    std::int64_t count = 1;
+};
+
 /// Runs every (problem, algorithm, seed) not yet in `store` on `jobs` threads (or, under mpirun
 /// in an MPI build, over the ranks) and commits finished runs in batches. Several processes may
 /// run one campaign on one store at once: each takes runs the others have not (claims in the
 /// store). The campaign must be prepared. Store errors (a read-only or full file system, a store
 /// deleted meanwhile) are InputErrors naming the file.
+/// With `shard`, only that part of the runs is run and counted (a store may hold any runs of
+/// the campaign: the others' parts, or none).
 BenchSummary run_campaign(const Campaign& campaign, const std::string& store, std::int64_t jobs,
-                          const Progress& progress = {}, const Stop& stop = {});
+                          const Progress& progress = {}, const Stop& stop = {}, const Shard& shard = {});
 
 /// The number of processes mpirun (Open MPI, or a PMI launcher) started, or 1 outside mpirun.
 int launched_ranks();

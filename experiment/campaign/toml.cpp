@@ -1,6 +1,7 @@
 #include "experiment/campaign/toml.hpp"
 #include "experiment/campaign/identity.hpp"
 #include "experiment/campaign/prepare.hpp"
+#include "experiment/campaign/toml_seeds.hpp"
 
 #include <fmt/format.h>
 
@@ -604,9 +605,7 @@ Campaign parse_campaign(const std::string& path) {
             if (const std::string why = name_problem(c.name); !why.empty())
                 fail(at_column(path, value), "'name' " + why);
         } else if (k == "seeds") {
-            c.seeds = need_integer(path, value, k);
-            if (c.seeds < 1 || c.seeds > max_campaign_seeds)
-                fail(at(path, value), "'seeds' " + seeds_range_message(c.seeds));
+            read_seeds(c, path, value);
         } else if (k == "budget") {
             const toml::table* b = value.as_table();
             if (!b) fail(at(path, value), "'budget' must be a table");

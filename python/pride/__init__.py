@@ -493,12 +493,28 @@ class Campaign:
     problems = property(lambda self: self._c.problems)
     algorithms = property(lambda self: self._c.algorithms)
 
-    def run(self, store, *, jobs=1):
+    def run(self, store, *, jobs=1, shard=None):
         """Runs what ``store`` does not hold yet on ``jobs`` threads; returns the counts
         (stored, already, total). Ctrl-C stops it within a few tens of milliseconds (plus the
         evaluation of a Python function in progress): the runs that finished are stored, the ones
-        running are not, and a later run() of the same store resumes."""
-        return _pride.campaign_run(self._c, _path("store", store), _int("jobs", jobs, False))
+        running are not, and a later run() of the same store resumes. ``shard=(k, n)`` runs only
+        part k of n of the runs (``pride bench --shard K/N``; the counts are the part's): the parts'
+        stores, made apart and merged (``pride merge``), are the whole campaign's."""
+        k, n = _shard(shard)
+        return _pride.campaign_run(self._c, _path("store", store), _int("jobs", jobs, False), k, n)
+
+
+def _shard(value):
+    """``shard=(k, n)``: part k of n, 1 <= k <= n (None: the whole campaign, (1, 1))."""
+    if value is None:
+        return 1, 1
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise TypeError(f"shard: expected a pair (k, n), part k of n, got {type(value).__name__}"
+                        + (f" of {len(value)}" if isinstance(value, (tuple, list)) else ""))
+    k, n = (_int("shard", v, False) for v in value)
+    if not 1 <= k <= n:
+        raise ValueError(f"shard: must be part k of n with 1 <= k <= n, got ({k}, {n})")
+    return k, n
 
 
 def read_store(path, *, dataframe=None):

@@ -301,9 +301,11 @@ std::shared_ptr<PyCampaign> from_file(const py::object& path) {
     return c;
 }
 
-py::dict run(PyCampaign& c, const py::object& store_path, const py::object& jobs_arg) {
+py::dict run(PyCampaign& c, const py::object& store_path, const py::object& jobs_arg, std::int64_t shard_index,
+             std::int64_t shard_count) {
     const std::string store = path_arg(store_path, "store");
     const std::int64_t jobs = integer_arg(jobs_arg, "jobs");
+    const campaign::Shard shard{shard_index, shard_count};  // checked by run_campaign, as the command line's
     c.errors->reset();
     // Stopping (Ctrl-C, the interpreter's exit) goes through the campaign's own path: the storing
     // thread commits the runs that finished and drops the claims of the running ones; only then
@@ -315,7 +317,7 @@ py::dict run(PyCampaign& c, const py::object& store_path, const py::object& jobs
     campaign::BenchSummary s;
     try {
         // Runs of Python functions take the GIL for each call: threads never run Python at once.
-        s = Call::current().run([&] { return campaign::run_campaign(c.campaign, store, jobs, {}, stop); },
+        s = Call::current().run([&] { return campaign::run_campaign(c.campaign, store, jobs, {}, stop, shard); },
                                 [&signal] { signal.store(SIGINT); }, true);
     } catch (...) {
         c.errors->rethrow_or(std::current_exception());
@@ -503,7 +505,8 @@ void bind_campaign(py::module_& m) {
           py::arg("evals_per_dim"), py::arg("iters"), py::arg("target"), py::arg("precision"), py::arg("problems"),
           py::arg("algorithms"));
     m.def("campaign_from_file", &from_file, py::call_guard<Call>(), py::arg("path"));
-    m.def("campaign_run", &run, py::call_guard<Call>(), py::arg("campaign"), py::arg("store"), py::arg("jobs"));
+    m.def("campaign_run", &run, py::call_guard<Call>(), py::arg("campaign"), py::arg("store"), py::arg("jobs"),
+          py::arg("shard_index") = 1, py::arg("shard_count") = 1);
     m.def("read_store", &read_store, py::call_guard<Call>(), py::arg("path"));
     m.def("import_coco", &import_coco, py::call_guard<Call>(), py::arg("store"), py::arg("folder"), py::arg("name"),
           py::arg("citation"), py::arg("source"), py::arg("sha256"));
