@@ -91,6 +91,21 @@ std::string provenance_section(const std::string& store, const storage::Campaign
     return h + "</table></section>\n";
 }
 
+/// Escaped text with the markdown's `code` spans as <code> (the report's sentences are shared).
+std::string with_code(const std::string& text) {
+    std::string out;
+    bool open = false;
+    for (const char c : escape(text)) {
+        if (c != '`') {
+            out += c;
+            continue;
+        }
+        open = !open;
+        out += open ? "<code>" : "</code>";
+    }
+    return out;
+}
+
 std::string results_section(const ReportData& r) {
     const bool f_opts =
         std::any_of(r.rows.begin(), r.rows.end(), [](const ReportRow& x) { return x.f_opt.has_value(); });
@@ -154,7 +169,7 @@ std::string results_section(const ReportData& r) {
     }
     if (!r.functions.empty()) {
         // The markdown report's table of functions, the same rows.
-        h += "<p id=\"functions\">" + escape(report::functions_heading(r)) +
+        h += "<p id=\"functions\">" + with_code(report::functions_heading(r)) +
              "</p>\n<div class=\"wide\"><table>\n<tr><th>function</th><th class=\"n\">D</th><th>algorithm</th>";
         for (const char* c : {"runs", "instances", "median", "p10", "p90", "mean", "solved 1e-8", "p (Holm)", "A12"})
             h += std::string("<th class=\"n\">") + c + "</th>";
