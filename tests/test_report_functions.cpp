@@ -3,6 +3,7 @@
 // the best, the table of functions and Friedman's blocks; problems without instances keep their own
 // tests. Also the natural order of every listing (natural_order.hpp) and the layout of Demsar's
 // critical-difference diagram (experiment/html/cd_diagram.hpp), checked in ranks and rows.
+#include <fmt/format.h>
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -237,6 +238,21 @@ TEST_CASE("report: pride bench on 15 BBOB instances, 1 seed: the function's test
     const std::string md = pride::report::render_markdown(report);
     CHECK(md.find("| bbob-f1-i2-d2 | cmaes") < md.find("| bbob-f1-i10-d2 | cmaes"));
     CHECK(md.find("Friedman average ranks over 2 functions and dimensions") != std::string::npos);
+    // The same rows as CSV, every number the double it is.
+    const auto csv = pride::test::run_pride("report '" + tmp.file("c.sqlite") + "' --format functions-csv");
+    REQUIRE(csv.status == 0);
+    const auto lines = pride::test::lines_of(csv.out);
+    REQUIRE(lines.size() == 5);
+    CHECK(lines[0] ==
+          "function,dim,algorithm,runs,instances,median,p10,p90,mean,measure,solved,feasible_runs,best,p_holm_vs_best,"
+          "a12_vs_best");
+    for (std::size_t i = 0; i < report.functions.size(); ++i) {
+        const auto& f = report.functions[i];
+        CHECK(lines[i + 1] == fmt::format("{},2,{},15,15,{},{},{},{},precision,{},,{},{},{}", f.function, f.algorithm,
+                                          f.median, f.p10, f.p90, f.mean, f.solved, f.best ? 1 : 0,
+                                          f.p_holm ? fmt::format("{}", *f.p_holm) : "",
+                                          f.a12 ? fmt::format("{}", *f.a12) : ""));
+    }
 }
 
 TEST_CASE("critical-difference diagram: names, sides, rows and bars laid out in ranks",

@@ -407,6 +407,19 @@ std::string render_csv(const ReportData& report) {
     return text;
 }
 
+std::string render_functions_csv(const ReportData& report) {
+    std::string text =
+        "function,dim,algorithm,runs,instances,median,p10,p90,mean,measure,solved,feasible_runs,best,p_holm_vs_best,"
+        "a12_vs_best\n";
+    const auto optional = [](const auto& v) { return v ? exact(static_cast<double>(*v)) : std::string(); };
+    for (const FunctionRow& f : report.functions)
+        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", csv(f.function), f.dim, csv(f.algorithm),
+                            f.runs, f.instances, exact(f.median), exact(f.p10), exact(f.p90), exact(f.mean),
+                            f.precision ? "precision" : "value", f.precision ? std::to_string(f.solved) : "",
+                            optional(f.feasible_runs), f.best ? 1 : 0, optional(f.p_holm), optional(f.a12));
+    return text;
+}
+
 std::string render_ert_csv(const ReportData& report) {
     std::string text = "function,dim,algorithm,precision,ert,successes,runs,ert_p10,ert_p50,ert_p90\n";
     if (const auto& a = report.coco)

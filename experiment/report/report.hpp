@@ -187,6 +187,11 @@ std::string render_csv(const ReportData& report);
 /// ert_p90 (the percentiles of the ERT over bootstrap resamples, coco::ErtRow::ert_interval); the header
 /// alone without an analysis.
 std::string render_ert_csv(const ReportData& report);
+/// The table of functions (report.functions) as CSV, numbers as render_csv writes them:
+/// function,dim,algorithm,runs,instances,median,p10,p90,mean,measure,solved,feasible_runs,best,
+/// p_holm_vs_best,a12_vs_best (measure: precision, or value where f_opt is unknown; solved and
+/// feasible_runs empty where they do not apply); the header alone for a store without instances.
+std::string render_functions_csv(const ReportData& report);
 /// A `tabular` with the markdown's columns, then Friedman's ranks as a comment.
 std::string render_latex(const ReportData& report);
 
