@@ -292,7 +292,8 @@ int run_main(int argc, char** argv) {
         ->check(a_path());
     report_cmd->add_option(
         "--format", report.format,
-        "md (default), csv, latex, ert-csv (the ERT of a campaign with target precisions), or cec "
+        "md (default), csv, latex, ert-csv (the ERT of a campaign with target precisions), functions-csv (the table "
+        "of functions of a suite with instances), or cec "
         "and cec-csv (the CEC competitions' errors f - f* at their checkpoints), cec2020rw and cec2020rw-csv (the "
         "CEC 2020 real-world competition's tables and score)");
     report_cmd->add_option("--plots", report.plots, "write convergence, final-value and path figures (PNG, SVG) here")

@@ -206,9 +206,11 @@ void plot(const std::string& store, const std::string& folder, const report::Rep
 int report_command(const ReportOptions& o, std::ostream& out) {
     const bool cec = o.format == "cec" || o.format == "cec-csv";
     const bool rw = o.format == "cec2020rw" || o.format == "cec2020rw-csv";
-    require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv" || cec || rw,
+    require(o.format == "md" || o.format == "csv" || o.format == "latex" || o.format == "ert-csv" ||
+                o.format == "functions-csv" || cec || rw,
             "--format",
-            "expected md, csv, latex, ert-csv, cec, cec-csv, cec2020rw or cec2020rw-csv, got '" + o.format + "'");
+            "expected md, csv, latex, ert-csv, functions-csv, cec, cec-csv, cec2020rw or cec2020rw-csv, got '" +
+                o.format + "'");
     OutputFiles files;  // committed once what is printed was printed
     if (!o.html.empty()) {
         // The page holds the tables itself; what is printed is where it is.
@@ -247,10 +249,11 @@ int report_command(const ReportOptions& o, std::ostream& out) {
     const report::ReportData data = report::load_report(o.stores, report::ReportOptions{o.raw});
     require(o.format != "ert-csv" || data.coco, "--format ert-csv",
             o.stores.front() + ": records no target hits (no precisions, or no run on a problem with a known optimum)");
-    const std::string text = o.format == "csv"       ? report::render_csv(data)
-                             : o.format == "ert-csv" ? report::render_ert_csv(data)
-                             : o.format == "md"      ? report::render_markdown(data)
-                                                     : report::render_latex(data);
+    const std::string text = o.format == "csv"             ? report::render_csv(data)
+                             : o.format == "ert-csv"       ? report::render_ert_csv(data)
+                             : o.format == "functions-csv" ? report::render_functions_csv(data)
+                             : o.format == "md"            ? report::render_markdown(data)
+                                                           : report::render_latex(data);
     if (!o.plots.empty()) plot(o.stores.front(), o.plots, data, files);
     print_then_commit(out, text, files);
     return 0;

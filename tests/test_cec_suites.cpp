@@ -445,7 +445,8 @@ TEST_CASE("cec suites: --format cec refuses runs without a budget or checkpoints
     };
     misuse("--format cec --raw", {"--raw", "errors f - f*"});
     misuse("--format cec --plots " + quoted(s.dir.file("figures")), {"--plots"});
-    misuse("--format cecc", {"expected md, csv, latex, ert-csv, cec, cec-csv, cec2020rw or cec2020rw-csv, got 'cecc'"});
+    misuse("--format cecc",
+           {"expected md, csv, latex, ert-csv, functions-csv, cec, cec-csv, cec2020rw or cec2020rw-csv, got 'cecc'"});
 }
 
 TEST_CASE("cec suites: a campaign stores each run's budget and its best values at the checkpoints", "[cec-suites]") {

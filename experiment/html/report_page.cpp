@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "experiment/html/cd_diagram.hpp"
 #include "experiment/html/colour.hpp"
 #include "experiment/html/figure.hpp"
 #include "experiment/html/font_session.hpp"
@@ -16,6 +17,7 @@
 #include "experiment/html/problem_figures.hpp"
 #include "experiment/html/provenance.hpp"
 #include "experiment/report/coco.hpp"
+#include "experiment/report/natural_order.hpp"
 #include "experiment/storage/file_name.hpp"
 #include "experiment/storage/reader.hpp"
 #include "framework/error.hpp"
@@ -29,6 +31,7 @@ using report::deb_order_text;
 using report::feasibility_cells;
 using report::feasibility_heading;
 using report::FeasibilityRow;
+using report::FunctionRow;
 using report::ReportData;
 using report::ReportRow;
 using report::runs_cell;
@@ -100,6 +103,21 @@ std::string provenance_section(const std::string& store, const storage::Campaign
     return h + "</table></section>\n";
 }
 
+/// Escaped text with the markdown's `code` spans as <code> (the report's sentences are shared).
+std::string with_code(const std::string& text) {
+    std::string out;
+    bool open = false;
+    for (const char c : escape(text)) {
+        if (c != '`') {
+            out += c;
+            continue;
+        }
+        open = !open;
+        out += open ? "<code>" : "</code>";
+    }
+    return out;
+}
+
 std::string results_section(const ReportData& r) {
     const bool f_opts =
         std::any_of(r.rows.begin(), r.rows.end(), [](const ReportRow& x) { return x.f_opt.has_value(); });
@@ -118,6 +136,9 @@ std::string results_section(const ReportData& r) {
     if (r.target) h += " Target: " + escape(num(*r.target)) + ".";
     if (r.target_precision) h += " Target: f_opt + " + escape(num(*r.target_precision)) + ".";
     if (!r.feasibility.empty()) h += " " + escape(deb_order_text());
+    if (!r.functions.empty())
+        h += " Problems that are instances of a function are tested per function over all its instances (the table "
+             "of functions below), not one instance at a time: their p (Holm) and A12 are left empty here.";
     h += "</p>\n<div class=\"wide\"><table>\n<tr><th>problem</th><th>algorithm</th><th class=\"n\">runs</th>";
     if (f_opts) h += "<th class=\"n\">f_opt</th>";
     for (const char* c : {"min", "mean", "std", "median", "max", "mean ms", "gap", "optimal", "p (Holm)", "A12"})
@@ -154,6 +175,22 @@ std::string results_section(const ReportData& r) {
             const auto cells = feasibility_cells(f);
             h += "<tr><td>" + escape(cells[0]) + "</td><td>" + escape(cells[1]) + "</td>";
             for (std::size_t k = 2; k < cells.size(); ++k) h += "<td class=\"n\">" + escape(cells[k]) + "</td>";
+            h += "</tr>\n";
+        }
+        h += "</table></div>\n";
+    }
+    if (!r.functions.empty()) {
+        // The markdown report's table of functions, the same rows.
+        h += "<p id=\"functions\">" + with_code(report::functions_heading(r)) +
+             "</p>\n<div class=\"wide\"><table>\n<tr><th>function</th><th class=\"n\">D</th><th>algorithm</th>";
+        for (const char* c : {"runs", "instances", "median", "p10", "p90", "mean", "solved 1e-8", "p (Holm)", "A12"})
+            h += std::string("<th class=\"n\">") + c + "</th>";
+        h += "</tr>\n";
+        for (const FunctionRow& f : r.functions) {
+            const auto cells = report::function_cells(f);
+            h += std::string(f.best ? "<tr class=\"best\">" : "<tr>") + "<td>" + escape(cells[0]) +
+                 "</td><td class=\"n\">" + escape(cells[1]) + "</td><td>" + escape(cells[2]) + "</td>";
+            for (std::size_t k = 3; k < cells.size(); ++k) h += "<td class=\"n\">" + escape(cells[k]) + "</td>";
             h += "</tr>\n";
         }
         h += "</table></div>\n";
@@ -208,13 +245,19 @@ std::string statistics_section(const ReportData& r) {
         "against the best one by the two-sided <b>Wilcoxon rank-sum test</b> (Mann-Whitney U, normal approximation "
         "with tie and continuity corrections), its p-values <b>Holm</b>-corrected over the problem's algorithms, "
         "<code>*</code> where p &lt; 0.05; beside it the <b>Vargha-Delaney A12</b> effect size: the chance that a run "
-        "of the algorithm ends better than a run of the best, ties counting half (0.5: no effect).</p>\n";
+        "of the algorithm ends better than a run of the best, ties counting half (0.5: no effect).";
+    if (!r.functions.empty())
+        h += " <b>Per function</b> (the table of functions): where problems are instances of a function (BBOB, "
+             "bbob-constrained), the same tests on the runs of all the function's instances and seeds, one sample per "
+             "algorithm, as COCO pools instances.";
+    h += "</p>\n";
     if (const auto& f = r.friedman) {
         h += fmt::format(
-            "<p><b>Over the problems</b>: the <b>Friedman test</b> on the median values of the {} algorithms run on "
-            "all {} problems (1 = best): chi-squared {:.4g}, p = {:.3g}; then every pair by the post-hoc z-test on "
-            "the average ranks, Holm-corrected over the {} pairs (Dem&scaron;ar 2006).</p>\n",
-            f->algorithms.size(), f->problems, f->test.statistic, f->test.p_value, f->pairs.size());
+            "<p><b>Over the problems</b>: the <b>Friedman test</b> of the {} algorithms run on all of them, over {}: "
+            "chi-squared {:.4g}, p = {:.3g}; then every pair by the post-hoc z-test on the average ranks, "
+            "Holm-corrected over the {} pairs (Dem&scaron;ar 2006).</p>\n",
+            f->algorithms.size(), escape(report::friedman_blocks_text(*f)), f->test.statistic, f->test.p_value,
+            f->pairs.size());
         h += "<table><tr><th>algorithm</th><th class=\"n\">average rank</th></tr>\n";
         for (std::size_t j = 0; j < f->algorithms.size(); ++j)
             h += fmt::format("<tr><td>{}</td><td class=\"n\">{:.3g}</td></tr>\n", escape(f->algorithms[j]),
@@ -244,42 +287,21 @@ std::string statistics_section(const ReportData& r) {
     return h;
 }
 
-/// Demsar's critical-difference diagram: the average ranks, the CD, and a bar over each group of
-/// algorithms not significantly different; then the statistics section ends.
+/// Demsar's critical-difference diagram (cd_diagram.hpp); then the statistics section ends.
 void cd_diagram(Page& page, const ReportData& r) {
     if (const auto& f = r.friedman) {
         const auto& cd = f->critical_difference;
-        const double k = static_cast<double>(f->algorithms.size());
-        Figure fig("critical-difference diagram", Axis{"average rank (1 = best)", Scale::linear, 0.5, k + 0.5},
-                   Axis{"", Scale::linear, -0.5, k + 1.5});
-        fig.subtitle(
-            fmt::format("Friedman over {} problems; Nemenyi CD = {:.3g} at alpha {:g}", f->problems, cd.cd, cd.alpha));
-        std::vector<std::size_t> order(f->algorithms.size());
-        for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
-        std::sort(order.begin(), order.end(),
-                  [&](std::size_t a, std::size_t b) { return f->test.average_ranks[a] < f->test.average_ranks[b]; });
-        for (std::size_t i = 0; i < order.size(); ++i) {
-            const std::size_t j = order[i];
-            const std::string& name = f->algorithms[j];
-            const bool known = page.algorithms.count(name) > 0;
-            const double y = k - static_cast<double>(i);
-            const Rgb colour = known ? page.colour(name) : series_colour(i);
-            fig.line({f->test.average_ranks[j], f->test.average_ranks[j]}, {0.0, y}, colour, "", 0);
-            fig.markers({f->test.average_ranks[j]}, {y}, colour,
-                        fmt::format("{} ({:.3g})", name, f->test.average_ranks[j]), Marker::circle);
-        }
-        const Rgb black{0, 0, 0};
-        fig.line({1.0, 1.0 + cd.cd}, {k + 1, k + 1}, black, fmt::format("CD = {:.3g}", cd.cd), 0);
-        for (std::size_t c = 0; c < cd.cliques.size(); ++c) {
-            double lo = k + 1, hi = 0;
-            for (const std::size_t j : cd.cliques[c])
-                lo = std::min(lo, f->test.average_ranks[j]), hi = std::max(hi, f->test.average_ranks[j]);
-            const double y = 0.25 + 0.5 * static_cast<double>(c) / std::max<double>(1.0, k);
-            fig.line({lo, hi}, {y, y}, black, c == 0 ? "not significantly different" : "", 0);
-        }
-        page.add(fig, "critical-difference.svg", "critical-difference diagram",
-                 "Average ranks over the problems (1 = best); bars join algorithms whose ranks differ by less than "
-                 "Nemenyi's critical difference (the segment at the top).");
+        const std::string blocks = f->functions == 0             ? fmt::format("{} problems", f->problems)
+                                   : f->functions == f->problems ? fmt::format("{} functions", f->functions)
+                                                                 : fmt::format("{} blocks", f->problems);
+        const std::string name = "critical-difference.svg";
+        write_cd_diagram(cd_layout(f->test.average_ranks, cd), f->algorithms, "critical-difference diagram",
+                         fmt::format("Friedman over {}; Nemenyi CD = {:.3g} at alpha {:g}", blocks, cd.cd, cd.alpha),
+                         page.create(name));
+        page.put(name, "critical-difference diagram",
+                 "Average ranks (1 = best, at the left); each algorithm's name joined to its rank. Thick bars join "
+                 "algorithms whose ranks differ by less than Nemenyi's critical difference (CD, the segment at the "
+                 "top): not significantly different (Dem&scaron;ar 2006).");
     }
     page.html += "</section>\n";
 }
@@ -426,7 +448,7 @@ PageSummary write_report_page(const std::string& store, const std::string& dir, 
         std::size_t next = 0;
         for (const ReportRow& row : data.rows)
             if (!page.algorithms.count(row.algorithm)) page.algorithms[row.algorithm] = next++;
-        std::map<std::string, std::vector<const StoredRun*>> by_problem;
+        std::map<std::string, std::vector<const StoredRun*>, report::NaturalLess> by_problem;
         for (const StoredRun& run : s.runs) by_problem[run.problem].push_back(&run);
         std::vector<std::string> problems;
         for (const auto& entry : by_problem) problems.push_back(entry.first);

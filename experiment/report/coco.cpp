@@ -1,6 +1,7 @@
 #include "experiment/report/coco.hpp"
 
 #include "experiment/report/bootstrap.hpp"
+#include "experiment/report/natural_order.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -120,7 +121,13 @@ std::optional<Analysis> analyse(const storage::CampaignStore& store) {
         std::set<std::pair<std::string, std::int64_t>> instances;  // (problem id, instance)
         std::size_t runs = 0;
     };
-    std::map<Key, Cell> cells;
+    // Functions without a number in natural order (natural_order.hpp), as every listing of the report.
+    const auto before = [](const Key& a, const Key& b) {
+        if (std::get<0>(a) != std::get<0>(b)) return std::get<0>(a) < std::get<0>(b);
+        if (const int c = natural_compare(std::get<1>(a), std::get<1>(b)); c != 0) return c < 0;
+        return std::tie(std::get<2>(a), std::get<3>(a)) < std::tie(std::get<2>(b), std::get<3>(b));
+    };
+    std::map<Key, Cell, decltype(before)> cells(before);
     // group -> algorithm -> (pairs, dims)
     std::map<std::string, std::map<std::string, std::pair<std::vector<TargetRun>, std::set<std::int64_t>>>> groups;
     for (const storage::StoredRun& r : store.runs) {

@@ -77,6 +77,10 @@ std::string render_table(const ReportData& report, bool md) {
                 "1e-8 of f_opt.";
         if (report.target_precision) text += fmt::format(" Target: f_opt + {}.", num(*report.target_precision));
         if (!report.feasibility.empty()) text += " " + deb_order_text();
+        if (!report.functions.empty())
+            text +=
+                " Problems that are instances of a function are tested per function over all its instances (the "
+                "table of functions below), not one instance at a time: their p (Holm) and A12 are left empty here.";
         text += "\n\n";
         text += line(head) + "|";
         for (std::size_t i = 0; i < head.size(); ++i) text += i < 2 ? "---|" : "---:|";
@@ -117,6 +121,18 @@ std::string render_table(const ReportData& report, bool md) {
         for (const auto& f : report.feasibility) text += line(feasibility_cells(f));
         if (!md) text += "\\hline\n\\end{tabular}\n";
     }
+    if (!report.functions.empty()) {
+        const std::vector<std::string> head{"function", "D",   "algorithm", "runs",        "instances", "median",
+                                            "p10",      "p90", "mean",      "solved 1e-8", "p (Holm)",  "A12"};
+        if (md)
+            text += "\n" + functions_heading(report) + "\n\n" + line(head) +
+                    "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        else
+            text += "\n% " + functions_heading(report) + "\n\\begin{tabular}{lrl" + std::string(head.size() - 3, 'r') +
+                    "}\n\\hline\n" + line(head) + "\\hline\n";
+        for (const auto& f : report.functions) text += line(function_cells(f));
+        if (!md) text += "\\hline\n\\end{tabular}\n";
+    }
     for (const auto& note : report.notes) text += (md ? std::string("\n") : std::string("\n% ")) + note + "\n";
     if (md && !report.fronts.empty()) {
         text +=
@@ -152,7 +168,7 @@ std::string render_table(const ReportData& report, bool md) {
     }
     if (const auto& f = report.friedman) {
         text += md ? "\nFriedman average ranks over " : "\n% Friedman average ranks over ";
-        text += fmt::format("{} problems (1 = best; median values):", f->problems);
+        text += friedman_blocks_text(*f) + ":";
         for (std::size_t j = 0; j < f->algorithms.size(); ++j)
             text += fmt::format(" {} {:.3g}{}", f->algorithms[j], f->test.average_ranks[j],
                                 j + 1 < f->algorithms.size() ? "," : "");
@@ -208,6 +224,53 @@ std::string feasibility_heading() {
     return "Feasibility, per problem with constraints and algorithm: the runs whose best point is feasible (and "
            "their share), the median evaluation at which the runs that found a feasible point first found one, and "
            "the median violation of the runs that found none (-: no such run).";
+}
+
+std::string functions_heading(const ReportData& report) {
+    const bool constrained = std::any_of(report.functions.begin(), report.functions.end(),
+                                         [](const FunctionRow& f) { return f.feasible_runs.has_value(); });
+    std::string text =
+        "Per function and dimension, over all its instances and seeds (COCO treats the instances as repetitions: "
+        "they form one sample per algorithm): the final precisions f - f_opt of the runs (f where f_opt is unknown), "
+        "their median, 10th and 90th percentiles (cocopp's) and mean, and the runs that reached COCO's final target "
+        "f - f_opt <= 1e-8. `best` marks the lowest median (ties: the lowest mean); p (Holm) is the Wilcoxon "
+        "rank-sum test of each other algorithm's runs against the best's, Holm-corrected over the function's "
+        "algorithms, with `*` where p < 0.05, and A12 its effect size.";
+    if (constrained)
+        text +=
+            " With constraints a run without a feasible point counts as +inf, runs reads `N (F feasible)`, and best, "
+            "p (Holm) and A12 compare the runs in Deb's order.";
+    return text;
+}
+
+std::vector<std::string> function_cells(const FunctionRow& f) {
+    return {f.function,
+            std::to_string(f.dim),
+            f.algorithm,
+            f.feasible_runs ? fmt::format("{} ({} feasible)", f.runs, *f.feasible_runs) : std::to_string(f.runs),
+            std::to_string(f.instances),
+            num(f.median),
+            num(f.p10),
+            num(f.p90),
+            num(f.mean),
+            f.precision ? fmt::format("{}/{}", f.solved, f.runs) : std::string("-"),
+            f.best ? std::string("best")
+                   : (f.p_holm ? fmt::format("{:.3g}{}", *f.p_holm, *f.p_holm < 0.05 ? "*" : "") : std::string()),
+            f.a12 ? fmt::format("{:.2f}", *f.a12) : std::string("-")};
+}
+
+std::string friedman_blocks_text(const FriedmanSummary& f) {
+    if (f.functions == 0) return fmt::format("{} problems (1 = best; median values)", f.problems);
+    const auto count = [](std::size_t n, const char* one, const char* many) {
+        return fmt::format("{} {}", n, n == 1 ? one : many);
+    };
+    const std::string functions = count(f.functions, "function and dimension", "functions and dimensions");
+    const std::string per_function =
+        "a function's value is the median precision f - f_opt of its runs over all its instances and seeds";
+    if (f.functions == f.problems) return fmt::format("{} (1 = best; {})", functions, per_function);
+    return fmt::format("{} blocks, {} and {} (1 = best; {}, a problem's the median of its runs)", f.problems, functions,
+                       count(f.problems - f.functions, "problem without instances", "problems without instances"),
+                       per_function);
 }
 
 std::string deb_order_text() {
@@ -341,6 +404,19 @@ std::string render_csv(const ReportData& report) {
             text += feasibility_columns(r);
         }
     }
+    return text;
+}
+
+std::string render_functions_csv(const ReportData& report) {
+    std::string text =
+        "function,dim,algorithm,runs,instances,median,p10,p90,mean,measure,solved,feasible_runs,best,p_holm_vs_best,"
+        "a12_vs_best\n";
+    const auto optional = [](const auto& v) { return v ? exact(static_cast<double>(*v)) : std::string(); };
+    for (const FunctionRow& f : report.functions)
+        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", csv(f.function), f.dim, csv(f.algorithm),
+                            f.runs, f.instances, exact(f.median), exact(f.p10), exact(f.p90), exact(f.mean),
+                            f.precision ? "precision" : "value", f.precision ? std::to_string(f.solved) : "",
+                            optional(f.feasible_runs), f.best ? 1 : 0, optional(f.p_holm), optional(f.a12));
     return text;
 }
 

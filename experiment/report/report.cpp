@@ -1,6 +1,7 @@
 // A report made from a campaign store's runs: per problem and algorithm the statistics of the final
-// best values (runs of constrained problems in Deb's order), the tests against the best, Friedman's
-// ranks, the fronts and paths; and several stores read as one. Rendered by render.cpp.
+// best values (runs of constrained problems in Deb's order), the tests against the best (per
+// function over its instances for suites with instances), Friedman's ranks, the fronts and paths;
+// and several stores read as one. Rendered by render.cpp.
 #include "experiment/report/report.hpp"
 
 #include <fmt/format.h>
@@ -14,6 +15,8 @@
 #include <set>
 #include <tuple>
 
+#include "experiment/report/bootstrap.hpp"
+#include "experiment/report/natural_order.hpp"
 #include "framework/error.hpp"
 
 namespace pride::report {
@@ -75,6 +78,50 @@ std::optional<double> evaluations_to(double target, const storage::StoredRun& ru
 
 using stats::mean_of;
 using stats::median_of;
+
+/// The algorithms of one problem (or function) compared: the best, the lowest median of the
+/// compared values (ties: the lowest mean), and every other one's rank-sum p against it,
+/// Holm-corrected over them, and A12.
+struct Comparison {
+    std::string best;
+    std::map<std::string, std::pair<double, double>> tests;  // algorithm -> (p Holm, A12)
+};
+
+template <class Cells, class Compared>
+Comparison compare(const Cells& by_algorithm, const Compared& compared) {
+    Comparison out;
+    double best_median = 0, best_mean = 0;
+    for (const auto& [algorithm, c] : by_algorithm) {
+        const double md = median_of(compared(c)), mn = mean_of(compared(c));
+        if (out.best.empty() || md < best_median || (md == best_median && mn < best_mean)) {
+            out.best = algorithm;
+            best_median = md;
+            best_mean = mn;
+        }
+    }
+    std::vector<double> p_values;
+    std::vector<std::string> tested;
+    const auto& best = compared(by_algorithm.at(out.best));
+    for (const auto& [algorithm, c] : by_algorithm)
+        if (algorithm != out.best) {
+            p_values.push_back(stats::rank_sum_test(compared(c), best).p_value);
+            out.tests[algorithm].second = stats::vargha_delaney_a(compared(c), best);
+            tested.push_back(algorithm);
+        }
+    const auto adjusted = stats::holm(p_values);
+    for (std::size_t i = 0; i < tested.size(); ++i) out.tests[tested[i]].first = adjusted[i];
+    return out;
+}
+
+/// A function of a suite with instances, in one dimension: the unit its instances are pooled in.
+struct FunctionKey {
+    std::string function;
+    std::int64_t dim = 0;
+    bool operator<(const FunctionKey& o) const {
+        const int c = natural_compare(function, o.function);
+        return c != 0 ? c < 0 : dim < o.dim;
+    }
+};
 }  // namespace
 
 /// Comparisons are made at equal evaluations: the notes of one problem when its compared
@@ -212,7 +259,19 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
         for (const storage::StoredProblem& p : *store.problems)
             if (p.f_opt && std::isfinite(*p.f_opt)) f_opt[p.id] = p.f_opt;
     const bool has_target = store.target || store.target_precision;
-    std::map<std::string, std::map<std::string, Cell>> cells;
+    // Problems that are instances of a function (instance >= 1: BBOB's and bbob-constrained's, a
+    // function's seeded instances) are tested per function and dimension over all their instances,
+    // as COCO treats instances as repetitions; instance 0 (the function as defined), grids, CEC
+    // problems and problems given in code are tested on their own.
+    std::map<std::string, const storage::StoredProblem*> problem_of;
+    if (store.problems)
+        for (const storage::StoredProblem& p : *store.problems) problem_of[p.id] = &p;
+    const auto function_of = [&](const std::string& problem) -> std::optional<FunctionKey> {
+        const auto it = problem_of.find(problem);
+        if (it == problem_of.end() || it->second->instance < 1) return std::nullopt;
+        return FunctionKey{it->second->function.value_or(it->second->id), it->second->dim};
+    };
+    std::map<std::string, std::map<std::string, Cell>, NaturalLess> cells;
     for (const storage::StoredRun& run : store.runs) {
         Cell& c = cells[run.problem][run.algorithm];
         const auto optimum = f_opt.count(run.problem) ? f_opt.at(run.problem) : std::nullopt;
@@ -266,19 +325,10 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
     }
     for (const auto& [problem, by_algorithm] : cells) {
         // The best algorithm of the problem: the lowest median best value (ties: lowest mean); with
-        // constraints, the lowest median rank by Deb's order.
-        std::string best;
-        double best_median = 0, best_mean = 0;
-        for (const auto& [algorithm, c] : by_algorithm) {
-            const double md = median_of(compared(c)), mn = mean_of(compared(c));
-            if (best.empty() || md < best_median || (md == best_median && mn < best_mean)) {
-                best = algorithm;
-                best_median = md;
-                best_mean = mn;
-            }
-        }
-        std::vector<double> p_values;
-        std::vector<std::size_t> tested;
+        // constraints, the lowest median rank by Deb's order. An instance of a function is tested
+        // with the function's other instances below.
+        const Comparison comparison = compare(by_algorithm, compared);
+        const std::optional<FunctionKey> function = function_of(problem);
         for (const auto& [algorithm, c] : by_algorithm) {
             ReportRow r;
             r.problem = problem;
@@ -300,7 +350,8 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
             r.median = median_of(values);
             r.mean_wall_ms = mean_of(c.wall_ms);
             r.mean_evaluations = mean_of(c.evaluations);
-            r.best = algorithm == best;
+            r.best = algorithm == comparison.best;
+            if (function) r.function = function->function + " " + std::to_string(function->dim) + "-D";
             if (has_target) {
                 double sum = 0.0;
                 for (const auto& e : c.to_target)
@@ -341,39 +392,103 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
                 r.mean_gap = gap / static_cast<double>(r.runs);
                 r.success = success / static_cast<double>(r.runs);
             }
-            if (!r.best) {
-                r.a12 = stats::vargha_delaney_a(compared(c), compared(by_algorithm.at(best)));
-                p_values.push_back(stats::rank_sum_test(compared(c), compared(by_algorithm.at(best))).p_value);
-                tested.push_back(rows.size());
+            if (!r.best && !function) {
+                const auto& [p_holm, a12] = comparison.tests.at(algorithm);
+                r.p_holm = p_holm;
+                r.a12 = a12;
             }
             rows.push_back(r);
         }
-        const auto adjusted = stats::holm(p_values);
-        for (std::size_t i = 0; i < tested.size(); ++i) rows[tested[i]].p_holm = adjusted[i];
         equal_evaluations_note(report, store, problem, by_algorithm);
     }
 
-    // Friedman over the problems, on the median best value, for the algorithms run on all of them.
-    std::map<std::string, std::size_t> count;
+    // The instances of each function pooled, per algorithm: precisions f - f_opt whatever the
+    // report shows (values f of different instances are not comparable), a run without a feasible
+    // point +inf.
+    std::map<FunctionKey, std::map<std::string, Cell>> by_function;
+    std::map<FunctionKey, std::map<std::string, std::set<std::int64_t>>> instances;
+    for (const auto& [problem, by_algorithm] : cells) {
+        const std::optional<FunctionKey> key = function_of(problem);
+        if (!key) continue;
+        for (const auto& [algorithm, c] : by_algorithm) {
+            Cell& f = by_function[*key][algorithm];
+            if (f.best.empty()) f.f_opt = 0.0;  // cleared below by an instance without f_opt
+            if (!c.f_opt) f.f_opt.reset();
+            for (std::size_t i = 0; i < c.best.size(); ++i) {
+                const double v = c.f_opt && options.raw ? c.best[i] - *c.f_opt : c.best[i];
+                f.best.push_back(c.violation[i] > 0 ? inf : v);
+                f.violation.push_back(c.violation[i]);
+                f.first_feasible.push_back(c.first_feasible[i]);
+                f.wall_ms.push_back(c.wall_ms[i]);
+                f.evaluations.push_back(c.evaluations[i]);
+            }
+            f.constrained = f.constrained || c.constrained;
+            instances[*key][algorithm].insert(problem_of.at(problem)->instance);
+        }
+    }
+    for (auto& [key, by_algorithm] : by_function) {
+        if (std::any_of(by_algorithm.begin(), by_algorithm.end(), [](const auto& a) { return a.second.constrained; })) {
+            for (auto& [algorithm, c] : by_algorithm) c.constrained = true;
+            rank_by_deb_order(by_algorithm);
+        }
+        const Comparison comparison = compare(by_algorithm, compared);
+        for (const auto& [algorithm, c] : by_algorithm) {
+            FunctionRow r;
+            r.function = key.function;
+            r.dim = key.dim;
+            r.algorithm = algorithm;
+            r.runs = c.best.size();
+            r.instances = instances.at(key).at(algorithm).size();
+            std::vector<double> sorted = c.best;
+            std::sort(sorted.begin(), sorted.end());
+            r.median = median_of(sorted);
+            r.p10 = coco::percentile(sorted, 10);
+            r.p90 = coco::percentile(sorted, 90);
+            r.mean = mean_of(sorted);
+            r.precision = c.f_opt.has_value();
+            if (r.precision)
+                r.solved = static_cast<std::size_t>(
+                    std::count_if(sorted.begin(), sorted.end(), [](double v) { return v <= solved_precision; }));
+            if (c.constrained)
+                r.feasible_runs = static_cast<std::size_t>(
+                    std::count_if(c.violation.begin(), c.violation.end(), [](double v) { return v == 0; }));
+            r.best = algorithm == comparison.best;
+            if (!r.best) {
+                const auto& [p_holm, a12] = comparison.tests.at(algorithm);
+                r.p_holm = p_holm;
+                r.a12 = a12;
+            }
+            report.functions.push_back(r);
+        }
+    }
+
+    // Friedman over the blocks, on their median compared values, for the algorithms run on all of
+    // them: each problem tested on its own, and each function over its instances.
+    std::vector<const std::map<std::string, Cell>*> blocks_of;
     for (const auto& [problem, by_algorithm] : cells)
-        for (const auto& [algorithm, c] : by_algorithm) ++count[algorithm];
+        if (!function_of(problem)) blocks_of.push_back(&by_algorithm);
+    for (const auto& [key, by_algorithm] : by_function) blocks_of.push_back(&by_algorithm);
+    std::map<std::string, std::size_t> count;
+    for (const auto* block : blocks_of)
+        for (const auto& [algorithm, c] : *block) ++count[algorithm];
     std::vector<std::string> algorithms;
     for (const auto& [algorithm, n] : count)
-        if (n == cells.size()) algorithms.push_back(algorithm);
-    if (algorithms.size() >= 2 && cells.size() >= 2) {
+        if (n == blocks_of.size()) algorithms.push_back(algorithm);
+    if (algorithms.size() >= 2 && blocks_of.size() >= 2) {
         std::vector<std::vector<double>> blocks;
-        for (const auto& [problem, by_algorithm] : cells) {
-            std::vector<double> block;
-            for (const auto& a : algorithms) block.push_back(median_of(compared(by_algorithm.at(a))));
-            blocks.push_back(block);
+        for (const auto* block : blocks_of) {
+            std::vector<double> values;
+            for (const auto& a : algorithms) values.push_back(median_of(compared(block->at(a))));
+            blocks.push_back(values);
         }
-        report.friedman = FriedmanSummary{algorithms, cells.size(), stats::friedman(blocks), {}, {}};
-        report.friedman->pairs = stats::friedman_pairs(report.friedman->test.average_ranks, cells.size());
+        report.friedman =
+            FriedmanSummary{algorithms, blocks.size(), by_function.size(), stats::friedman(blocks), {}, {}};
+        report.friedman->pairs = stats::friedman_pairs(report.friedman->test.average_ranks, blocks.size());
         report.friedman->critical_difference =
-            stats::critical_difference(report.friedman->test.average_ranks, cells.size(), 0.05);
+            stats::critical_difference(report.friedman->test.average_ranks, blocks.size(), 0.05);
     }
-    std::set<std::string> fronts;
-    std::map<std::string, std::map<std::string, std::vector<const storage::StoredRun*>>> by_front;
+    std::set<std::string, NaturalLess> fronts;
+    std::map<std::string, std::map<std::string, std::vector<const storage::StoredRun*>>, NaturalLess> by_front;
     for (const storage::StoredRun& run : store.runs)
         if (run.front && run.igd_plus) {
             fronts.insert(run.problem);
@@ -411,7 +526,7 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
         report.fronts.insert(report.fronts.end(), rows.begin(), rows.end());
     }
     // Every grid path scored alike (runs.path_metrics): the planners compared on what they found.
-    std::map<std::string, std::map<std::string, std::vector<const storage::StoredRun*>>> by_path;
+    std::map<std::string, std::map<std::string, std::vector<const storage::StoredRun*>>, NaturalLess> by_path;
     for (const storage::StoredRun& run : store.runs)
         if (!run.front) by_path[run.problem][run.algorithm].push_back(&run);
     for (const auto& [problem, by_algorithm] : by_path) {

@@ -3,7 +3,11 @@
 // algorithm the statistics of the final best values, the algorithm with the lowest median marked
 // best, Holm-corrected Wilcoxon rank-sum p-values against it, and Friedman's ranks over the
 // problems; as data, and rendered as markdown, CSV (every number as the double it is) or LaTeX.
+// Problems that are instances of a function (BBOB, bbob-constrained, a function's seeded instances
+// k >= 1) are compared as COCO compares them: per function and dimension, the runs of all its
+// instances and seeds one sample per algorithm (FunctionRow), and Friedman ranks functions.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +36,10 @@ struct ReportRow {
     bool best = false;             // the lowest median of the problem (ties: the lowest mean)
     std::optional<double> p_holm;  // against the best; empty for the best itself
     std::optional<double> a12;     // Vargha-Delaney A against the best: P(this run better), ties half
+    // An instance of a function (StoredProblem::instance >= 1): its runs are tested per function
+    // (ReportData::functions, this function's rows), so p_holm and a12 are empty here. Empty for a
+    // problem compared on its own.
+    std::string function;
     // With a campaign target: the runs whose best reached it, and their mean evaluations to do so.
     std::size_t reached_target = 0;
     std::optional<double> mean_evaluations_to_target;
@@ -60,10 +68,31 @@ std::string runs_cell(const ReportRow& r);
 /// evaluation, median violation ("-" where there is none).
 std::vector<std::string> feasibility_cells(const FeasibilityRow& f);
 
+/// A function of a suite with instances, per dimension and algorithm: its runs over all the
+/// instances and seeds, one sample (COCO's view: instances are repetitions). The values are
+/// precisions f - f_opt (also under ReportOptions::raw; the values f where f_opt is unknown), a run
+/// without a feasible point +inf.
+struct FunctionRow {
+    std::string function;  // the problem's function (bbob-f3, bbob-constrained-f12, rastrigin)
+    std::int64_t dim = 0;
+    std::string algorithm;
+    std::size_t runs = 0, instances = 0;            // runs over all its instances, and the instances
+    double median = 0, p10 = 0, p90 = 0, mean = 0;  // percentiles as cocopp's (coco::percentile)
+    bool precision = true;                          // false: the values f (an instance without a known f_opt)
+    std::size_t solved = 0;                         // runs with f - f_opt <= solved_precision (COCO's final target)
+    std::optional<std::size_t> feasible_runs;       // with constraints: runs whose best is feasible
+    bool best = false;                              // the lowest median (with constraints: of the Deb ranks)
+    std::optional<double> p_holm;                   // rank-sum against the best, Holm over the function's algorithms
+    std::optional<double> a12;                      // Vargha-Delaney A against the best
+};
+
 /// Friedman's test over the problems, on the median values of the algorithms run on all of them.
+/// A function with instances is one block (its median over all instances and seeds), each other
+/// problem one block.
 struct FriedmanSummary {
     std::vector<std::string> algorithms;
-    std::size_t problems = 0;
+    std::size_t problems = 0;            // the blocks ranked: problems compared on their own and functions
+    std::size_t functions = 0;           // of them, functions (and dimensions) pooled over their instances
     stats::FriedmanTest test;            // average_ranks in the order of `algorithms`
     std::vector<stats::RankPair> pairs;  // every pair's post-hoc test (Demsar 2006), Holm-corrected
     // Nemenyi's critical difference at alpha 0.05 and the groups of algorithms whose average ranks
@@ -105,7 +134,9 @@ struct ReportData {
     std::optional<double> target;
     std::optional<double> target_precision;  // [budget] precision: the target is f_opt + it per problem
     bool raw = false;
-    std::vector<ReportRow> rows;              // sorted by problem, then algorithm
+    std::vector<ReportRow> rows;  // sorted by problem (natural_order.hpp), then algorithm
+    // Functions with instances: sorted by function (natural order), dimension, algorithm.
+    std::vector<FunctionRow> functions;
     std::optional<FriedmanSummary> friedman;  // with two algorithms on two problems or more
     // With the campaign's target precisions: ERT per function, dimension and algorithm, and the
     // ECDF curves (experiment/report/coco.hpp); rendered after the table.
@@ -138,6 +169,15 @@ storage::CampaignStore read_stores(const std::vector<std::string>& paths);
 /// that differs).
 ReportData load_report(const std::vector<std::string>& paths, const ReportOptions& options = {});
 
+/// The sentence before the table of functions with instances (ReportData::functions).
+std::string functions_heading(const ReportData& report);
+/// A function row's cells: function, D, algorithm, runs (with constraints "N (F feasible)"),
+/// instances, median, 10th and 90th percentiles, mean, solved "k/N", p (Holm) ("best" for the best),
+/// A12.
+std::vector<std::string> function_cells(const FunctionRow& f);
+/// What Friedman ranked, after "Friedman average ranks over ": "24 functions (1 = best; ...)".
+std::string friedman_blocks_text(const FriedmanSummary& f);
+
 std::string render_markdown(const ReportData& report);
 /// A header line, then one line per row; each number in the shortest form that reads back as
 /// the same double ("inf" when infinite), fields quoted as RFC 4180 says.
@@ -147,6 +187,11 @@ std::string render_csv(const ReportData& report);
 /// ert_p90 (the percentiles of the ERT over bootstrap resamples, coco::ErtRow::ert_interval); the header
 /// alone without an analysis.
 std::string render_ert_csv(const ReportData& report);
+/// The table of functions (report.functions) as CSV, numbers as render_csv writes them:
+/// function,dim,algorithm,runs,instances,median,p10,p90,mean,measure,solved,feasible_runs,best,
+/// p_holm_vs_best,a12_vs_best (measure: precision, or value where f_opt is unknown; solved and
+/// feasible_runs empty where they do not apply); the header alone for a store without instances.
+std::string render_functions_csv(const ReportData& report);
 /// A `tabular` with the markdown's columns, then Friedman's ranks as a comment.
 std::string render_latex(const ReportData& report);
 
