@@ -13,6 +13,9 @@ namespace pride::python {
 
 namespace {
 
+// Optimizers not closed yet: their runs' threads use the algorithm registry.
+std::atomic<int> open_runs{0};
+
 /// Optimizer: an engine::AskTell, stopped and joined without the GIL.
 class Optimizer {
   public:
@@ -21,6 +24,8 @@ class Optimizer {
               std::optional<double> wall_ms, std::uint64_t seed, std::optional<std::int64_t> objectives,
               std::optional<std::int64_t> inequalities, std::optional<std::int64_t> equalities,
               std::optional<double> tolerance, const py::dict& params) {
+        require(!is_python_algorithm(algo), "algo",
+                "'" + algo + "' is written in Python and drives its own loop: run it with minimize or a campaign");
         require(!bounds.is_none(), "bounds", "the Optimizer needs bounds=(lower, upper)");
         engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
         const auto b = budget(evals, iters, target, wall_ms);
@@ -52,11 +57,13 @@ class Optimizer {
         py::gil_scoped_release release;
         run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed, m,
                                                  constraints);
+        open_runs.fetch_add(1);
     }
     ~Optimizer() { close(); }
 
     void close() {
         if (!run_) return;
+        open_runs.fetch_sub(1);
         // Joining its thread needs no Python, so the GIL is kept off a thread that could not take
         // it back once the interpreter's exit has begun (a daemon thread dropping an optimizer).
         if (!on_main_thread()) {
@@ -141,6 +148,10 @@ class Optimizer {
 };
 
 }  // namespace
+
+bool optimizers_open() {
+    return open_runs.load() > 0;
+}
 
 void bind_optimizer(py::module_& m) {
     py::class_<Optimizer>(m, "Optimizer")
