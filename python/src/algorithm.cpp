@@ -216,7 +216,8 @@ void register_algorithm(const std::string& name, const py::object& fn, const std
     // The registry grows here, and runs in progress read it: none may be.
     require(Call::alone(), "register_algorithm",
             "not while another call of pride is running (a run, a campaign): register algorithms first");
-    require(!optimizers_open(), "register_algorithm", "not while an Optimizer is open: close it first");
+    require(!optimizers_running(), "register_algorithm",
+            "not while an Optimizer's run is going: finish or close it first");
     auto& registered = python_algorithms();
     if (const auto it = registered.find(name); it != registered.end()) {
         // Registered again (a notebook's cell run twice): the new function from now on.

@@ -45,8 +45,9 @@ struct AlgorithmFailure : std::runtime_error {
 
 /// True for an algorithm registered from Python (pride.register_algorithm): its runs call Python.
 bool is_python_algorithm(const std::string& name);
-/// True while an Optimizer is open (optimizer.cpp): its run's thread uses the algorithm registry.
-bool optimizers_open();
+/// True while an Optimizer's run has not ended (optimizer.cpp): its thread reads the algorithm
+/// registry.
+bool optimizers_running();
 
 /// Raised (as SystemExit, which ends a thread silently) by a call that the interpreter's exit
 /// stopped, or that a thread other than the main one begins once the exit has begun.

@@ -1,8 +1,10 @@
 // pride.Optimizer: ask and tell, the run driven from Python (engine::AskTell).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
 
 #include "common.hpp"
 #include "engine/ask_tell.hpp"
@@ -13,8 +15,10 @@ namespace pride::python {
 
 namespace {
 
-// Optimizers not closed yet: their runs' threads use the algorithm registry.
-std::atomic<int> open_runs{0};
+class Optimizer;
+// The optimizers not closed, with the GIL held: their runs' threads read the algorithm registry
+// until the runs end.
+std::set<const Optimizer*> open_optimizers;
 
 /// Optimizer: an engine::AskTell, stopped and joined without the GIL.
 class Optimizer {
@@ -57,13 +61,13 @@ class Optimizer {
         py::gil_scoped_release release;
         run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed, m,
                                                  constraints);
-        open_runs.fetch_add(1);
+        open_optimizers.insert(this);
     }
     ~Optimizer() { close(); }
 
     void close() {
         if (!run_) return;
-        open_runs.fetch_sub(1);
+        open_optimizers.erase(this);
         // Joining its thread needs no Python, so the GIL is kept off a thread that could not take
         // it back once the interpreter's exit has begun (a daemon thread dropping an optimizer).
         if (!on_main_thread()) {
@@ -73,6 +77,9 @@ class Optimizer {
         py::gil_scoped_release release;
         run_.reset();
     }
+
+    /// True while its run has not ended (its thread is in the engine).
+    bool running() const { return run_ && !run_->done(); }
 
     py::array_t<double> ask() {
         const Matrix* points = nullptr;
@@ -149,8 +156,8 @@ class Optimizer {
 
 }  // namespace
 
-bool optimizers_open() {
-    return open_runs.load() > 0;
+bool optimizers_running() {
+    return std::any_of(open_optimizers.begin(), open_optimizers.end(), [](const Optimizer* o) { return o->running(); });
 }
 
 void bind_optimizer(py::module_& m) {

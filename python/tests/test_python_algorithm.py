@@ -172,10 +172,15 @@ def test_registration_errors():
     def registers(problem, seed):
         pride.register_algorithm("py-later", random_search)
 
-    with pride.Optimizer("pso", bounds=(-1, 1), dim=2, evals=100):
-        with pytest.raises(ValueError, match=r"^register_algorithm: not while an Optimizer is open: close it first$"):
+    with pride.Optimizer("pso", bounds=(-1, 1), dim=2, evals=100) as opt:
+        with pytest.raises(ValueError,
+                           match=r"^register_algorithm: not while an Optimizer's run is going: finish or close it "
+                                 r"first$"):
             pride.register_algorithm("py-late", random_search)
-    pride.register_algorithm("py-late", random_search)  # once closed
+        finished = pride.Optimizer("pso", bounds=(-1, 1), dim=2, evals=20)
+        while not finished.done:
+            finished.tell(np.zeros(len(finished.ask())))
+    pride.register_algorithm("py-late", random_search)  # one closed, the other's run over
 
     pride.register_algorithm("py-registers", registers)
     with pytest.raises(pride.AlgorithmError, match=r"ValueError: register_algorithm: not while another call"):
