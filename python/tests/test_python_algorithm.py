@@ -93,6 +93,18 @@ def test_campaign_runs_it_beside_cpp_algorithms(tmp_path):
     assert {row["algorithm"] for row in rows} == {"pso", "py-rs", "one"}
 
 
+def test_a_toml_campaign_names_it_once_registered(tmp_path):
+    toml = tmp_path / "c.toml"
+    toml.write_text('name = "t"\nseeds = 2\n[budget]\nevaluations = 150\n'
+                    '[[problem]]\nid = "s"\ntype = "sphere"\ndim = 2\n'
+                    '[[algorithm]]\nid = "rs"\ntype = "py-rs"\n')
+    c = pride.Campaign.load(toml)
+    assert c.run(tmp_path / "t.sqlite", jobs=2)["stored"] == 2
+    runs = pride.read_store(tmp_path / "t.sqlite", dataframe=False)
+    assert [r["best"] for r in runs] == [pride.minimize("py-rs", "sphere", dim=2, evals=150, seed=s).best_f
+                                         for s in (1, 2)]
+
+
 def test_errors_in_the_function_are_one_line_naming_the_algorithm(tmp_path):
     def broken(problem, seed):
         problem.evaluate(np.zeros((2, problem.dim)))
