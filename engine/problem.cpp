@@ -11,7 +11,9 @@
 #include "engine/grid_plan.hpp"
 #include "engine/multiobjective.hpp"
 #include "engine/prepared.hpp"
+#include "engine/problem_names.hpp"
 #include "engine/registry.hpp"
+#include "framework/close_names.hpp"
 #include "framework/error.hpp"
 #include "framework/memory.hpp"
 
@@ -99,7 +101,7 @@ void require_problem_memory(const ContinuousSpec& c) {
     const auto* item = continuous::catalog().find(c.function);
     require(item != nullptr || !is_multiobjective_problem(c.function), "problem",
             c.function + " has several objectives: its runs are multi-objective ones (pride front, pride.front)");
-    require(item != nullptr, "problem", "unknown problem '" + c.function + "'");
+    require(item != nullptr, "problem", unknown_problem(c.function));
     require(c.dim >= 1 && c.dim <= max_budget, "dim",
             fmt::format("must be an integer in [1, {}], got {}", max_budget, c.dim));
     // Bounds, an optimum and scratch vectors per coordinate, and a rotation (dim^2) for an
@@ -191,6 +193,19 @@ const std::vector<NamedItem>& constrained_problems() {
         return out;
     }();
     return items;
+}
+
+std::string unknown_problem(const std::string& name) {
+    std::vector<std::string> names;
+    for (const auto& item : continuous::catalog().items()) names.push_back(item.name);
+    for (const auto& item : constrained_problems()) names.push_back(item.name);
+    const std::string several = multiobjective_problem_names();
+    for (std::size_t at = 0; at < several.size();) {
+        const std::size_t comma = std::min(several.find(", ", at), several.size());
+        names.push_back(several.substr(at, comma - at));
+        at = comma + 2;
+    }
+    return "unknown problem '" + name + "'" + did_you_mean(name, names);
 }
 
 namespace {

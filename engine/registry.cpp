@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "framework/close_names.hpp"
 #include "framework/error.hpp"
 
 namespace pride::engine {
@@ -103,7 +104,10 @@ const AlgorithmEntry& AlgorithmRegistry::at(std::string_view name) const {
                                              " family has no algorithm '" + std::string(name.substr(colon + 1)) +
                                              "' in this build, or it needs gradients (see the list of algorithms)");
     }
-    throw InputError("algo", "unknown algorithm '" + std::string(name) + "' (known: " + known + families + ")");
+    std::vector<std::string> names;
+    for (const auto& e : entries_) names.push_back(e.name);
+    throw InputError("algo", "unknown algorithm '" + std::string(name) + "'" + did_you_mean(name, names) +
+                                 " (known: " + known + families + ")");
 }
 
 AlgorithmRegistry& algorithms() {

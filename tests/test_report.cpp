@@ -375,7 +375,7 @@ const std::vector<std::string> kCsvHeader = {"problem",      "algorithm",
                                              "mean_wall_ms", "mean_evaluations",
                                              "optimum",      "mean_gap",
                                              "success",      "p_holm_vs_best",
-                                             "best",         "f_opt",
+                                             "is_best",      "f_opt",
                                              "measure",      "a12_vs_best"};
 
 /// The CSV as rows of cells (the header checked and dropped).

@@ -116,7 +116,7 @@ TEST_CASE("report: csv numbers read back as the stored doubles", "[report][csv][
     REQUIRE(lines.size() == 7);  // the header and 3 problems x 2 algorithms
     CHECK(lines[0] ==
           "problem,algorithm,runs,min,mean,std,median,max,mean_wall_ms,mean_evaluations,optimum,mean_gap,success,"
-          "p_holm_vs_best,best,f_opt,measure,a12_vs_best,target,reached_target,mean_evaluations_to_target");
+          "p_holm_vs_best,is_best,f_opt,measure,a12_vs_best,target,reached_target,mean_evaluations_to_target");
 
     // The store, read here: per (problem, algorithm) the best values (+inf for NULL) and
     // evaluations in seed order, and the optimum.

@@ -40,7 +40,7 @@ TEST_CASE("report: evaluations to reach the campaign's target", "[report][target
     std::istringstream in(r.out);
     std::string line;
     std::getline(in, line);
-    const std::string tail = "best,f_opt,measure,a12_vs_best,target,reached_target,mean_evaluations_to_target";
+    const std::string tail = "is_best,f_opt,measure,a12_vs_best,target,reached_target,mean_evaluations_to_target";
     REQUIRE(line.size() > tail.size());
     CHECK(line.substr(line.size() - tail.size()) == tail);
     // The same figures computed here from the stored histories: per (problem, algorithm), the

@@ -366,7 +366,7 @@ std::string render_latex(const ReportData& report) {
 std::string render_csv(const ReportData& report) {
     std::string text =
         "problem,algorithm,runs,min,mean,std,median,max,mean_wall_ms,mean_evaluations,optimum,mean_gap,success,"
-        "p_holm_vs_best,best,f_opt,measure,a12_vs_best";
+        "p_holm_vs_best,is_best,f_opt,measure,a12_vs_best";
     // Only campaigns with a target have its columns (target: the absolute threshold, or empty with
     // target_precision, the threshold then f_opt + it).
     const bool has_target = report.target || report.target_precision;

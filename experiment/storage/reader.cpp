@@ -571,13 +571,16 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
                     "CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN json_extract(solution, "
                     "'$.igd_plus') END, CASE WHEN substr(solution, 1, 1) = '{{' AND json_valid(solution) THEN "
                     "json_extract(solution, '$.exact_found') END, CASE WHEN substr(solution, 1, 1) = '{{' AND "
-                    "json_valid(solution) THEN json_extract(solution, '$.front') END{}, {}, {} FROM runs ORDER BY "
-                    "problem, algorithm, seed",
+                    "json_valid(solution) THEN json_extract(solution, '$.front') END{}, {}, {}, {}, "
+                    // A box run's best point: a list of numbers (null for a coordinate not finite);
+                    // a path is a list of lists, a front an object.
+                    "CASE WHEN substr(solution, 1, 1) = '[' AND json_valid(solution) AND json_type(solution, '$[0]') "
+                    "IN ('integer', 'real', 'null') THEN solution END FROM runs ORDER BY problem, algorithm, seed",
                     has_hits ? "target_hits" : "NULL", optional_column(run_columns, "encoding"),
                     optional_column(run_columns, "trace_targets"), optional_column(run_columns, "trace_evaluations"),
                     optional_column(run_columns, "max_evaluations"), optional_column(run_columns, "checkpoints"),
                     path_metrics, optional_column(run_columns, "best_violation"),
-                    optional_column(run_columns, "first_feasible"))
+                    optional_column(run_columns, "first_feasible"), optional_column(run_columns, "iterations"))
                     .c_str());
     while (q.next()) {
         // Named by rowid until its key is read, then by the key.
@@ -639,6 +642,12 @@ CampaignStore read_checked(const std::string& path, bool keep_runs) {
         }
         constexpr int violation_column = 20 + static_cast<int>(std::size(kPathMetricNames));
         constrained(q, violation_column, r);
+        r.iterations = q.optional_integer(violation_column + 2, "iterations", 0);
+        if (!q.is_null(violation_column + 3)) {
+            r.best_x = q.list<double>(violation_column + 3, "solution");
+            for (double& x : r.best_x)
+                if (std::isinf(x)) x = std::numeric_limits<double>::quiet_NaN();  // null: not finite
+        }
         // The analysis of target hits (experiment/report/coco.hpp) needs each run's function and
         // dimension; a store without the problems table gets no analysis.
         if (store.precisions && has_problems && !problem_ids.count(r.problem))

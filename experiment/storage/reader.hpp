@@ -54,8 +54,12 @@ struct StoredRun {
     std::int64_t seed = 0;
     std::optional<double> best;  // empty: no feasible value found
     std::int64_t evaluations = 0;
+    std::optional<std::int64_t> iterations;  // empty for a store without the column
     double wall_ms = 0;
     std::optional<double> optimum;  // grid problems: the exact optimum
+    // A box run's best point (its solution; NaN where the store has null, a coordinate not
+    // finite); empty for grid runs (a path), multi-objective runs (a front) and published runs.
+    std::vector<double> best_x;
     // The best value after each iteration (+inf before the first feasible one) and, where
     // recorded, the evaluations spent by then (empty, or one per history value).
     std::vector<double> history;

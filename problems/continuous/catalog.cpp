@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "framework/close_names.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/bbob/instance.hpp"
 #include "problems/continuous/function_variant.hpp"
@@ -252,7 +253,11 @@ std::int64_t default_instance(const CatalogEntry& entry) {
 Function make_function(std::string_view name, std::int64_t dim, std::optional<std::int64_t> instance,
                        const std::string& dim_source) {
     const auto* item = catalog().find(name);
-    require(item != nullptr, "problem", "unknown problem '" + std::string(name) + "'");
+    if (!item) {
+        std::vector<std::string> names;
+        for (const auto& known : catalog().items()) names.push_back(known.name);
+        throw InputError("problem", "unknown problem '" + std::string(name) + "'" + did_you_mean(name, names));
+    }
     const auto& e = item->entry;
     require(dim >= 1, dim_source, "dimension must be >= 1, got " + std::to_string(dim));
     require(static_cast<std::size_t>(dim) >= e.min_dim, dim_source,

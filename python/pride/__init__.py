@@ -17,13 +17,16 @@ import os as _os
 import numpy as _np
 
 from . import _pride
-from ._pride import Grid
+from ._pride import AlgorithmError, BudgetExhausted, Grid
+
+# project(VERSION) of the build that made the module (`pride --version` prints the same).
+__version__ = _pride.__version__
 
 __all__ = [
     "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
     "exact", "pareto", "roughset", "Campaign", "read_store", "report", "hypervolume", "hypervolume_contributions",
     "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance", "attainment_surface", "front", "plan_front",
-    "cec2020rw_score", "import_coco",
+    "cec2020rw_score", "import_coco", "register_algorithm", "BudgetExhausted", "AlgorithmError", "__version__",
 ]
 
 
@@ -41,6 +44,32 @@ def problems():
 def grid_names():
     """The objectives, encodings, connectors and initialisations grid plans take."""
     return _pride.grid_names()
+
+
+def register_algorithm(name, function, *, summary=None):
+    """Registers ``function``, an algorithm written in Python, as the algorithm ``name`` (letters,
+    digits, '-', '_', '.'): ``minimize``, ``plan`` and campaigns then run it by name beside pride's
+    own, on boxes (registered problems, Python functions, grids through the line and free
+    encodings). Each run calls ``function(problem, seed)`` once, in the process that runs it:
+    ``problem.evaluate(X)`` (or ``problem(X)``) evaluates an (n, dim) batch of points in the box
+    ``problem.lower``, ``problem.upper`` (a point of shape (dim,) gives a float) through pride's
+    evaluation guard, so every evaluation is counted and within the run's budget, and each call
+    is one iteration of the run's history. Once the run is over (budget spent, or a target, wall
+    time or iteration limit met), ``evaluate`` raises ``pride.BudgetExhausted``, which ends the
+    run when it leaves the function; a batch larger than what is left is evaluated as far as the
+    budget goes, +inf for the rest. ``problem.dim``, ``budget`` (evaluations, None without a
+    limit), ``evaluations``, ``remaining``, ``iterations``, ``best`` and ``done`` say where the run
+    stands. The run's result is the best point evaluated. Draw every random number from ``seed``
+    (``numpy.random.default_rng(seed)``): a run is then the same for the same seed, whatever the
+    campaign's jobs. Anything else the function raises is a ``pride.AlgorithmError``, one line
+    naming the algorithm, the seed and the exception; a run that evaluated nothing is one too.
+    Registering a name again replaces its function; a name of pride's own is refused."""
+    if not callable(function):
+        raise TypeError(f"function: expected a callable, got {type(function).__name__}")
+    if summary is None:
+        doc = (getattr(function, "__doc__", None) or "").strip()
+        summary = doc.splitlines()[0] if doc else "an algorithm written in Python"
+    _pride.register_algorithm(_str("name", name), function, _str("summary", summary))
 
 
 def _int(name, value, optional=True):
@@ -519,8 +548,15 @@ def _shard(value):
 
 def read_store(path, *, dataframe=None):
     """The runs of a campaign store: a DataFrame when pandas is present (or ``dataframe=True``),
-    else a list of dicts (problem, algorithm, seed, best, evaluations, wall_ms, optimum, history,
-    history_evaluations, encoding, and COCO's trace: ``trace_targets`` and ``trace_evaluations``,
+    else a list of dicts (problem, algorithm, seed; ``best``, the run's best value, a number (None
+    when no feasible value was found; the report's flag of the best algorithm is ``is_best``);
+    ``best_x``, the best point, a numpy array (None for grid, multi-objective and published runs);
+    evaluations, ``iterations`` (None in a store without them), wall_ms, optimum, history,
+    history_evaluations, encoding; ``path_metrics``: a grid run's path metrics, a dict (length,
+    turns, total_turn_deg, angle_over_length, max_curvature, min_clearance, mean_clearance, and
+    grid_gap, any_angle_gap with ``path_gaps``), None for other runs; ``target_hits``: {precision:
+    the evaluations after which best - f_opt <= precision first held, None where never}, COCO's
+    precisions on problems with a known f_opt, {} elsewhere; COCO's trace: ``trace_targets`` and ``trace_evaluations``,
     (n, 2) arrays of rows (evaluations, best so far) at COCO's target and evaluation triggers
     (on a problem with constraints COCO's logged value, max(f, f_opt) + violation, over every
     point);
@@ -583,7 +619,9 @@ def import_coco(store, path, *, name, citation):
 
 def report(path, *, raw=False, dataframe=None, html=None):
     """The report of a campaign store (``pride report``): ``rows`` (per problem and algorithm:
-    min, mean, std, median, max, best, p_holm, f_opt, precision, ...) as a DataFrame when pandas
+    min, mean, std, median, max, ``is_best`` (True for the problem's algorithm of lowest median,
+    which the others' p_holm and a12 are against; the best value is ``min``), p_holm, f_opt,
+    precision, ...) as a DataFrame when pandas
     is present, ``friedman`` and the rendered ``markdown`` and ``csv``, as a dict. Where a
     problem's optimum f_opt is known, min to max are precisions f - f_opt (``precision`` True),
     unless ``raw=True`` (``pride report --raw``). ``path`` may be a list of stores of one campaign

@@ -91,6 +91,10 @@ Call::~Call() {
     std::erase(calls, this);
 }
 
+bool Call::alone() {
+    return calls.size() <= 1;
+}
+
 Call& Call::current() {
     if (!innermost) throw std::logic_error("pride: a binding without its Call guard");
     return *innermost;

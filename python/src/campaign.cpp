@@ -370,19 +370,37 @@ py::dict read_store(const py::object& store) {
         return a;
     };
     py::list runs;
+    const std::vector<double> precisions = s.precisions.value_or(std::vector<double>{});
     for (const auto& r : s.runs) {
+        // COCO's target hits: {precision: the evaluations after which best - f_opt <= it first
+        // held, None where never}; empty where the run records none.
+        py::dict hits;
+        for (std::size_t k = 0; k < r.target_hits.size() && k < precisions.size(); ++k)
+            hits[py::float_(precisions[k])] =
+                r.target_hits[k] ? py::object(py::int_(*r.target_hits[k])) : py::object(py::none());
+        py::object metrics = py::none();
+        if (!r.path_metrics.empty()) {
+            py::dict m;
+            for (std::size_t k = 0; k < r.path_metrics.size(); ++k)
+                m[storage::kPathMetricNames[k]] = optional_number(r.path_metrics[k]);
+            metrics = m;
+        }
         py::array_t<std::int64_t> he(static_cast<py::ssize_t>(r.history_evaluations.size()));
         if (!r.history_evaluations.empty())
             std::memcpy(he.mutable_data(), r.history_evaluations.data(),
                         sizeof(std::int64_t) * r.history_evaluations.size());
         runs.append(py::dict(
             py::arg("problem") = r.problem, py::arg("algorithm") = r.algorithm, py::arg("seed") = r.seed,
-            py::arg("best") = optional_number(r.best), py::arg("evaluations") = r.evaluations,
+            py::arg("best") = optional_number(r.best),
+            py::arg("best_x") = r.best_x.empty() ? py::object(py::none()) : py::object(vector_array(r.best_x)),
+            py::arg("evaluations") = r.evaluations,
+            py::arg("iterations") = r.iterations ? py::object(py::int_(*r.iterations)) : py::object(py::none()),
             py::arg("wall_ms") = r.wall_ms, py::arg("optimum") = optional_number(r.optimum),
             py::arg("history") = vector_array(r.history), py::arg("history_evaluations") = he,
             py::arg("encoding") = r.encoding, py::arg("trace_targets") = trace_array(r.trace_targets),
             py::arg("trace_evaluations") = trace_array(r.trace_evaluations),
-            py::arg("front") = front_array(r.front_json), py::arg("violation") = optional_number(r.best_violation),
+            py::arg("front") = front_array(r.front_json), py::arg("path_metrics") = metrics,
+            py::arg("target_hits") = hits, py::arg("violation") = optional_number(r.best_violation),
             py::arg("first_feasible") =
                 r.first_feasible ? py::object(py::int_(*r.first_feasible)) : py::object(py::none())));
     }
@@ -393,7 +411,7 @@ py::dict read_store(const py::object& store) {
                                      py::arg("instance") = p.instance, py::arg("f_opt") = optional_number(p.f_opt),
                                      py::arg("suite") = p.suite, py::arg("fid") = p.fid));
     return py::dict(py::arg("name") = s.name, py::arg("target") = optional_number(s.target),
-                    py::arg("problems") = problems, py::arg("runs") = runs);
+                    py::arg("precisions") = precisions, py::arg("problems") = problems, py::arg("runs") = runs);
 }
 
 /// pride.import_coco's work: a COCO data set's folder into a store (experiment/report/coco_import.hpp).
@@ -429,7 +447,7 @@ py::dict report_data(const std::vector<std::string>& paths, bool raw) {
                      py::arg("median") = x.median, py::arg("max") = x.max, py::arg("mean_wall_ms") = x.mean_wall_ms,
                      py::arg("mean_evaluations") = x.mean_evaluations, py::arg("optimum") = optional_number(x.optimum),
                      py::arg("mean_gap") = optional_number(x.mean_gap), py::arg("success") = optional_number(x.success),
-                     py::arg("best") = x.best, py::arg("p_holm") = optional_number(x.p_holm),
+                     py::arg("is_best") = x.best, py::arg("p_holm") = optional_number(x.p_holm),
                      py::arg("reached_target") = x.reached_target,
                      py::arg("mean_evaluations_to_target") = optional_number(x.mean_evaluations_to_target),
                      py::arg("f_opt") = optional_number(x.f_opt), py::arg("precision") = x.precision,

@@ -284,8 +284,8 @@ engine::RunResult run_released(const engine::AlgorithmSpec& algorithm, const eng
     // Python's functions run on this thread (where Ctrl-C raises in them); a run that calls none
     // runs beside it, which then takes Ctrl-C (Call::run).
     const auto* grid = std::get_if<engine::GridSpec>(&problem.spec());
-    const bool calls_python =
-        watch || std::holds_alternative<engine::CallbackSpec>(problem.spec()) || (grid && grid->path_objective);
+    const bool calls_python = watch || std::holds_alternative<engine::CallbackSpec>(problem.spec()) ||
+                              (grid && grid->path_objective) || is_python_algorithm(algorithm.name);
     try {
         return Call::current().run(
             [&] {

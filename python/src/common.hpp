@@ -13,6 +13,7 @@
 #include <mutex>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -35,6 +36,18 @@ struct Grid {
 /// Thrown by a Python callback of a run stopped from outside (Ctrl-C, the interpreter's exit)
 /// instead of calling Python again; the call then raises why it was stopped.
 struct Stopped {};
+
+/// A Python algorithm's function failed (algorithm.cpp): pride.AlgorithmError, one line naming
+/// the algorithm, the seed and what the function raised.
+struct AlgorithmFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// True for an algorithm registered from Python (pride.register_algorithm): its runs call Python.
+bool is_python_algorithm(const std::string& name);
+/// True while an Optimizer's run has not ended (optimizer.cpp): its thread reads the algorithm
+/// registry.
+bool optimizers_running();
 
 /// Raised (as SystemExit, which ends a thread silently) by a call that the interpreter's exit
 /// stopped, or that a thread other than the main one begins once the exit has begun.
@@ -94,6 +107,8 @@ class Call {
 
     /// The innermost call on this thread.
     static Call& current();
+    /// True when no other call is in progress, on any thread (nor an outer one on this thread).
+    static bool alone();
 
     /// Runs `work` with the GIL released, stopped from outside by `stop` (called with the GIL
     /// held; it sets flags the work reads). On the main thread with `poll` (work that calls no
@@ -260,5 +275,7 @@ void bind_pareto(py::module_& m);
 void bind_front(py::module_& m);
 /// pride.cec2020rw_score: the CEC 2020 real-world competition's ranking (score.cpp).
 void bind_score(py::module_& m);
+/// pride.register_algorithm: algorithms written in Python (algorithm.cpp).
+void bind_algorithm(py::module_& m);
 
 }  // namespace pride::python

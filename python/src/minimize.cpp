@@ -6,6 +6,7 @@
 
 #include "common.hpp"
 #include "engine/prepared.hpp"
+#include "engine/problem_names.hpp"
 #include "engine/registry.hpp"
 #include "problems/continuous/catalog.hpp"
 #include "problems/continuous/cec2006/cec2006.hpp"
@@ -122,7 +123,7 @@ engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::i
         if (!dim)
             if (const auto* item = continuous::catalog().find(name); item && item->entry.fixed_dim)
                 dim = static_cast<std::int64_t>(item->entry.fixed_dim);
-        if (!dim && !continuous::catalog().find(name)) throw InputError("problem", "unknown problem '" + name + "'");
+        if (!dim && !continuous::catalog().find(name)) throw InputError("problem", engine::unknown_problem(name));
         require(dim.has_value(), "dim", "give the dimension of problem '" + name + "'");
         const engine::ContinuousSpec spec{name, *dim, instance};
         engine::check_before_building(algorithm, spec, *dim, budget);

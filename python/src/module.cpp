@@ -28,6 +28,7 @@ std::string python_message(const InputError& e) {
 PYBIND11_MODULE(_pride, m) {
     using namespace pride::python;
     m.doc() = "pride's engine (use the pride package, not this module)";
+    m.attr("__version__") = PRIDE_VERSION;
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);
@@ -51,4 +52,5 @@ PYBIND11_MODULE(_pride, m) {
     bind_pareto(m);
     bind_score(m);
     bind_front(m);
+    bind_algorithm(m);
 }

@@ -1,8 +1,10 @@
 // pride.Optimizer: ask and tell, the run driven from Python (engine::AskTell).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
 
 #include "common.hpp"
 #include "engine/ask_tell.hpp"
@@ -13,6 +15,11 @@ namespace pride::python {
 
 namespace {
 
+class Optimizer;
+// The optimizers not closed, with the GIL held: their runs' threads read the algorithm registry
+// until the runs end.
+std::set<const Optimizer*> open_optimizers;
+
 /// Optimizer: an engine::AskTell, stopped and joined without the GIL.
 class Optimizer {
   public:
@@ -21,6 +28,8 @@ class Optimizer {
               std::optional<double> wall_ms, std::uint64_t seed, std::optional<std::int64_t> objectives,
               std::optional<std::int64_t> inequalities, std::optional<std::int64_t> equalities,
               std::optional<double> tolerance, const py::dict& params) {
+        require(!is_python_algorithm(algo), "algo",
+                "'" + algo + "' is written in Python and drives its own loop: run it with minimize or a campaign");
         require(!bounds.is_none(), "bounds", "the Optimizer needs bounds=(lower, upper)");
         engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
         const auto b = budget(evals, iters, target, wall_ms);
@@ -52,11 +61,13 @@ class Optimizer {
         py::gil_scoped_release release;
         run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed, m,
                                                  constraints);
+        open_optimizers.insert(this);
     }
     ~Optimizer() { close(); }
 
     void close() {
         if (!run_) return;
+        open_optimizers.erase(this);
         // Joining its thread needs no Python, so the GIL is kept off a thread that could not take
         // it back once the interpreter's exit has begun (a daemon thread dropping an optimizer).
         if (!on_main_thread()) {
@@ -66,6 +77,9 @@ class Optimizer {
         py::gil_scoped_release release;
         run_.reset();
     }
+
+    /// True while its run has not ended (its thread is in the engine).
+    bool running() const { return run_ && !run_->done(); }
 
     py::array_t<double> ask() {
         const Matrix* points = nullptr;
@@ -141,6 +155,10 @@ class Optimizer {
 };
 
 }  // namespace
+
+bool optimizers_running() {
+    return std::any_of(open_optimizers.begin(), open_optimizers.end(), [](const Optimizer* o) { return o->running(); });
+}
 
 void bind_optimizer(py::module_& m) {
     py::class_<Optimizer>(m, "Optimizer")

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "common.hpp"
+#include "engine/problem_names.hpp"
 #include "problems/continuous/catalog.hpp"
 
 namespace pride::python {
@@ -15,7 +16,7 @@ class PyProblem {
     PyProblem(const std::string& name, std::optional<std::int64_t> dim, std::optional<std::int64_t> instance,
               std::uint64_t seed) {
         const auto* item = continuous::catalog().find(name);
-        if (!item) throw InputError("problem", "unknown problem '" + name + "' (see pride.problems())");
+        if (!item) throw InputError("problem", engine::unknown_problem(name) + " (see pride.problems())");
         if (!dim && item->entry.fixed_dim) dim = static_cast<std::int64_t>(item->entry.fixed_dim);
         require(dim.has_value(), "dim", "give the dimension of problem '" + name + "'");
         count_in("dim", *dim, 1);

@@ -141,6 +141,9 @@ def api(tmp_path):
                                                          "citation": "c", **o}),
                         dict(store=PATH, path=PATH, name=TEXT, citation=TEXT)),
         "Result": (lambda **o: pride.Result(**o), dict(fields=[None, 5, "ab", [1, 2]])),
+        "register_algorithm": (lambda **o: pride.register_algorithm(**{"name": "api-types", "function": lambda p, s: None,
+                                                                       **o}),
+                               dict(name=TEXT, function=CALLABLE + [None], summary=TEXT_OPTIONAL)),
         "hypervolume": (lambda **o: pride.hypervolume(**{"points": PTS, "ref": [3.0, 3.0], **o}),
                         dict(points=PAIRED, ref=NUMBERS + [[[3.0, 3.0]], [3.0]])),
         "hypervolume_contributions": (lambda **o: pride.hypervolume_contributions(**{"points": PTS, "ref": [3.0, 3.0], **o}),
@@ -209,7 +212,7 @@ def test_the_table_covers_every_public_function_and_parameter(tmp_path):
     table = api(tmp_path)
     # Functions without parameters (or properties) need no row.
     no_parameters = {"algorithms", "problems", "grid_names", "Result.as_dict", "Optimizer.ask", "Optimizer.close",
-                     "Grid.to_array"}
+                     "Grid.to_array", "BudgetExhausted", "AlgorithmError", "__version__"}
     for name, fn in public_functions().items():
         if name in no_parameters or fn is None and name == "Grid":
             continue

@@ -38,7 +38,7 @@ def test_campaign_from_data(tmp_path):
     rep = pride.report(store, dataframe=False)
     assert {(r["problem"], r["algorithm"]) for r in rep["rows"]} == {
         (p, a) for p in ("sph", "mine", "rows") for a in ("pso", "ga40")}
-    assert sum(r["best"] for r in rep["rows"]) == 3 and "sph" in rep["markdown"]
+    assert sum(r["is_best"] for r in rep["rows"]) == 3 and "sph" in rep["markdown"]
 
 
 def test_campaign_grid_and_toml(tmp_path):

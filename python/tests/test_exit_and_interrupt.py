@@ -4,8 +4,8 @@
   process exits 0 (the module's atexit hook stops them and waits until they have left its C++
   frames; a thread that takes the GIL during finalisation is ended by a forced unwinding, which
   C++ frames turned into std::terminate);
-- SIGINT during a long Campaign.run (Python functions or registered problems, one job or two) or
-  minimize of a registered problem: KeyboardInterrupt within a fraction of a second, with the runs
+- SIGINT during a long Campaign.run (Python functions, registered problems or an algorithm written
+  in Python, one job or two) or minimize of a registered problem: KeyboardInterrupt within a fraction of a second, with the runs
   finished before it stored and none cut short."""
 import os
 import signal
@@ -127,6 +127,13 @@ INTERRUPTED = """
     def slow(x):  # about 1 ms a call
         return float(sum(v * v for v in x.tolist() * 200))
 
+    def random_search(problem, seed):  # an algorithm written in Python
+        rng = np.random.default_rng(seed)
+        while True:
+            problem.evaluate(rng.uniform(problem.lower, problem.upper, size=(10, problem.dim)))
+
+    pride.register_algorithm("py-rs", random_search)
+
     if kind == "function":  # 1200 runs of 2000 calls: about 40 minutes of work
         c = pride.Campaign("i", seeds=1200, evals=2_000, algorithms=["pso"],
                            problems=[{"id": "slow", "function": slow, "bounds": (-1, 1), "dim": 3}])
@@ -136,9 +143,14 @@ INTERRUPTED = """
     elif kind == "registered":  # runs of 10^9 evaluations
         c = pride.Campaign("i", seeds=40, evals=10**9, algorithms=["pso", "ga"],
                            problems=[{"id": "r", "problem": "rastrigin", "dim": 10}])
+    elif kind == "python":  # runs of 10^9 evaluations, by a Python algorithm beside a C++ one
+        c = pride.Campaign("i", seeds=40, evals=10**9, algorithms=["py-rs", "pso"],
+                           problems=[{"id": "r", "problem": "rastrigin", "dim": 10}])
     print("running", flush=True)
     if kind == "minimize":
         pride.minimize("pso", "rastrigin", dim=10, evals=10**12 // 10**3)
+    elif kind == "python-minimize":
+        pride.minimize("py-rs", "rastrigin", dim=10, evals=10**12 // 10**3)
     else:
         c.run(store, jobs=jobs)
     print("ended without an interrupt", flush=True)
@@ -159,22 +171,23 @@ def interrupt(kind, jobs, store, after=1.5):
 
 
 @pytest.mark.parametrize("kind, jobs", [("function", 1), ("function", 2), ("registered", 1), ("registered", 2),
-                                        ("short", 1), ("short", 2), ("minimize", 1)])
+                                        ("short", 1), ("short", 2), ("minimize", 1), ("python", 1),
+                                        ("python", 2), ("python-minimize", 1)])
 def test_ctrl_c_stops_a_campaign_or_a_run_promptly(tmp_path, kind, jobs):
     store = str(tmp_path / "s.sqlite")
     status, took, out, err = interrupt(kind, jobs, store)
     assert "KeyboardInterrupt" in err and "ended without an interrupt" not in out, err[-2000:]
     assert status == -signal.SIGINT, err[-2000:]  # Python ends by SIGINT on an uncaught KeyboardInterrupt
     assert took < 5.0, f"{kind}, jobs={jobs}: {took:.2f} s from SIGINT to the end"
-    if kind == "minimize":
+    if kind in ("minimize", "python-minimize"):
         return
     # What the store holds is whole runs only: each with its full budget, none cut short.
     runs = pride.read_store(store, dataframe=False)
-    budget = {"function": 2_000, "short": 20_000, "registered": 10**9}[kind]
+    budget = {"function": 2_000, "short": 20_000, "registered": 10**9, "python": 10**9}[kind]
     assert all(r["evaluations"] == budget for r in runs), sorted({r["evaluations"] for r in runs})
     if kind == "short":
         assert len(runs) > 0  # the runs that finished before the interrupt were kept
-    if kind == "registered":
+    if kind in ("registered", "python"):
         assert runs == []
 
 
