@@ -48,7 +48,7 @@ POINTS = NUMBERS + [[1.0, 2.0]]  # an (n, M) set, not one point
 PAIRED = POINTS + [[[1.0, 2.0, 3.0]]]  # and M = 3 against M = 2
 PTS = np.array([[0.0, 2.0], [1.0, 1.0], [2.0, 0.0]])
 WEIGHTS = [5, "ab", ["x", 1, 1], [None, 1, 1]]
-OBJECTIVE = [5, object(), None]
+OBJECTIVE = [5, object()]  # None is "the algorithm's default objective"
 PROBLEM = [5, None, object()]
 BOUNDS = [5, "ab", None, (None, 1), ("a", 1)]
 TABLE = [None, 5, object()]
@@ -132,7 +132,7 @@ def api(tmp_path):
                      dict(name=TEXT, seeds=INT_REQUIRED, problems=LIST, algorithms=LIST, evals=INT,
                           evals_per_dim=INT, iters=INT, target=REAL, precision=REAL)),
         "Campaign.load": (lambda **o: pride.Campaign.load(**o), dict(path=PATH)),
-        "Campaign.run": (lambda **o: campaign().run(**{"store": store, **o}), dict(store=PATH, jobs=INT_REQUIRED)),
+        "Campaign.run": (lambda **o: campaign().run(**{"store": store, **o}), dict(store=PATH, jobs=INT_REQUIRED, shard=[5, "ab", (1,), (1.5, 2), ("a", 1)])),
         "read_store": (lambda **o: pride.read_store(**{"path": store, **o}), dict(path=PATH, dataframe=FLAG_OPTIONAL)),
         "report": (lambda **o: pride.report(**{"path": store, "dataframe": False, **o}),
                    dict(path=PATH + [[5]], raw=FLAG, dataframe=FLAG_OPTIONAL, html=[5, object(), b"dir"])),
