@@ -91,7 +91,7 @@ std::vector<std::vector<std::string>> query(const std::string& path, const std::
 }
 
 /// The campaign on the map of world_map(), its ends as `ends` (lines 9 and 10).
-std::string campaign(const std::string& ends, const std::string& map = "m.yaml") {
+std::string world_campaign(const std::string& ends, const std::string& map = "m.yaml") {
     return "name = \"world\"\n"
            "seeds = 2\n"
            "[budget]\n"
@@ -251,8 +251,8 @@ TEST_CASE("world points: a campaign's start_world and goal_world run what the eq
           "[grid][world][bench]") {
     const TempDir dir("world-bench");
     world_map(dir);
-    const std::string world = dir.write("world.toml", campaign(kWorldEnds));
-    const std::string cells = dir.write("cells.toml", campaign(kCellEnds));
+    const std::string world = dir.write("world.toml", world_campaign(kWorldEnds));
+    const std::string cells = dir.write("cells.toml", world_campaign(kCellEnds));
     for (const auto& [file, store] : {std::pair{world, "w.sqlite"}, std::pair{cells, "c.sqlite"}}) {
         const auto r = run_pride("bench '" + file + "' --out '" + dir.file(store) + "' --jobs 1");
         INFO(r.err);
@@ -312,8 +312,8 @@ TEST_CASE("world points: a campaign's start_world and goal_world run what the eq
 TEST_CASE("world points: a map without a frame keeps its report and legends as they were", "[grid][world][bench]") {
     const TempDir dir("world-plain");
     const std::string file =
-        dir.write("plain.toml", campaign("start = [0, 0]\ngoal = [9, 9]\n",
-                                         std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map"));
+        dir.write("plain.toml", world_campaign("start = [0, 0]\ngoal = [9, 9]\n",
+                                               std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map"));
     REQUIRE(run_pride("bench '" + file + "' --out '" + dir.file("p.sqlite") + "' --jobs 1").status == 0);
     CHECK(query(dir.file("p.sqlite"),
                 "SELECT count(*) FROM runs WHERE json_extract(path_metrics, '$.length_m') IS "
@@ -339,7 +339,7 @@ TEST_CASE("world points: a campaign's errors about them name the key, the file a
     const TempDir dir("world-errors");
     world_map(dir);
     const auto error = [&](const std::string& ends, const std::string& map = "m.yaml") {
-        const std::string file = dir.write("e.toml", campaign(ends, map));
+        const std::string file = dir.write("e.toml", world_campaign(ends, map));
         return input_error_message([&] { campaign::read_campaign(file); });
     };
     const std::string f = dir.file("e.toml");
@@ -374,7 +374,8 @@ TEST_CASE("world points: a campaign's errors about them name the key, the file a
     CHECK_THAT(error("start = [232, 1]\ngoal = [238, 3]\n"),
                StartsWith(f + ":5: problem 'w': goal: (238,3) cannot be reached"));
     // Through pride bench: one line, exit status 2.
-    expect_input_error("bench '" + dir.write("b.toml", campaign("start_world = [-4.99, -9.85]\ngoal = [1, 3]\n")) +
+    expect_input_error("bench '" +
+                           dir.write("b.toml", world_campaign("start_world = [-4.99, -9.85]\ngoal = [1, 3]\n")) +
                            "' --out '" + dir.file("b.sqlite") + "'",
                        {dir.file("b.toml") + ":9: problem 'w': start_world:", "blocked"});
 }
