@@ -70,8 +70,11 @@ def test_errors_name_the_keyword(tmp_path, sandbox):
     g = pride.Grid.load(sandbox)
     with pytest.raises(ValueError, match=r"^start_world: the point \(30, 0\) is outside the map: x in \[-10, 9.2\)"):
         pride.plan(g, start_world=(30.0, 0.0), goal_world=(0, 0), algo="astar")
+    # (0, 0) m is a blocked cell of the sandbox, (-2, -0.5) m a free one (where the robot starts).
+    with pytest.raises(ValueError, match=r"^start_world: the point \(0, 0\) is in cell \(200,183\), a blocked cell"):
+        pride.plan(g, start_world=(0, 0), goal_world=(-0.5, 0.5), algo="astar")
     with pytest.raises(TypeError, match="^goal_world: expected a number, got str"):
-        pride.plan(g, start_world=(0, 0), goal_world=("a", 0), algo="astar")
+        pride.plan(g, start_world=(-2, -0.5), goal_world=("a", 0), algo="astar")
     with pytest.raises(TypeError, match=r"^start_world: expected \(x, y\) in metres, got str"):
         pride.plan(g, start_world="0,0", goal_world=(0, 0), algo="astar")
     with pytest.raises(ValueError, match="^start_world: the point must be finite"):
@@ -79,7 +82,7 @@ def test_errors_name_the_keyword(tmp_path, sandbox):
     with pytest.raises(TypeError, match="^start_world: give start or start_world, not both"):
         pride.plan(g, (1, 1), start_world=(0, 0), goal_world=(0, 0), algo="astar")
     with pytest.raises(TypeError, match=r"^goal: give goal=\(x, y\) \(a cell\) or goal_world"):
-        pride.plan(g, start_world=(0, 0), algo="astar")
+        pride.plan(g, start_world=(-2, -0.5), algo="astar")
     with pytest.raises(ValueError, match="^start_world: the map array has no world frame"):
         pride.plan(pride.Grid(np.zeros((3, 4))), start_world=(0, 0), goal=(1, 1), algo="astar")
     (tmp_path / "y.yaml").write_text("image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0.3]\n")
