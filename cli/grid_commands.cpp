@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <ostream>
+#include <tuple>
 
 #include "cli/commands.hpp"
 #include "cli/numbers.hpp"
@@ -99,12 +100,33 @@ engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec_out) {
                                        : parse_world_cell(o.start_world, *spec.map, "--start-world");
     spec.goal =
         o.goal_world.empty() ? parse_cell(o.goal, "--goal") : parse_world_cell(o.goal_world, *spec.map, "--goal-world");
-    const engine::Problem problem(spec);
+    std::optional<engine::Problem> problem;
+    try {
+        problem.emplace(spec);
+    } catch (const InputError& e) {
+        // The goal unreachable from a world point's cell: named by the option that gave it.
+        throw engine::endpoint_error(e, o.start_world.empty() ? "" : "--start-world",
+                                     o.goal_world.empty() ? "" : "--goal-world");
+    }
     const engine::AlgorithmSpec algorithm{o.algo, parse_params(o.params, o.pop)};
     engine::refuse_unused_planner_settings(algorithm, spec, o.budget);
-    engine::check(algorithm, problem, o.budget);
+    engine::check(algorithm, *problem, o.budget);
     if (spec_out) *spec_out = spec;
-    return engine::run(algorithm, problem, o.budget, o.seed);
+    return engine::run(algorithm, *problem, o.budget, o.seed);
+}
+
+std::pair<std::string, std::string> picture_labels(const PathOptions& o, const engine::GridSpec& spec,
+                                                   const engine::GridOutcome& run) {
+    std::string path = fmt::format("{} ({}): {} {:.6g}", o.algo, run.encoding, spec.objective, run.value);
+    std::string optimal =
+        run.optimum ? fmt::format("exact optimum: {} {:.6g}", spec.objective, *run.optimum) : "exact optimum";
+    if (const auto& frame = spec.map->frame()) {
+        // The lengths in metres beside those in cells.
+        if (run.feasible) path += ", " + html::length_words(run.metrics.length, *frame);
+        if (run.optimum && !run.optimal_path.empty())
+            optimal += ", " + html::length_words(metrics(run.optimal_path).length, *frame);
+    }
+    return {path, optimal};
 }
 
 int path_command(const PathOptions& o, std::ostream& out) {
@@ -114,6 +136,11 @@ int path_command(const PathOptions& o, std::ostream& out) {
     const PathMetrics m = metrics(run.path);
     // A polyline planner's path (Theta*, the any-angle path) is no chain of cells.
     const bool polyline_only = run.path.empty() && !run.polyline.empty();
+    // A map with a world frame: lengths in metres beside those in cells.
+    const std::optional<WorldFrame>& frame = spec.map->frame();
+    const auto length_m = [&](double cells) {
+        return frame ? fmt::format("length_m        {:.10g}\n", cells * frame->resolution) : std::string();
+    };
 
     std::optional<double> gap;
     if (run.optimum && run.feasible) {
@@ -133,8 +160,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
     OutputFiles files;
     html::write_pictures(pictures, files, [&](OutputFiles::File& file, html::PictureFormat format) {
         html::PathLabels labels;
-        labels.path = fmt::format("{} ({}): {} {:.6g}", o.algo, run.encoding, spec.objective, run.value);
-        if (run.optimum) labels.optimal = fmt::format("exact optimum: {} {:.6g}", spec.objective, *run.optimum);
+        std::tie(labels.path, labels.optimal) = picture_labels(o, spec, run);
         html::draw_grid(*spec.map, spec.start, spec.goal, run.feasible ? &run.polyline : nullptr,
                         o.oracle ? &run.optimal_path : nullptr, labels, file, format);
     });
@@ -145,8 +171,9 @@ int path_command(const PathOptions& o, std::ostream& out) {
             polyline_only ? "null"
                           : fmt::format(
                                 "{{\"cells\": {}, \"length\": {}, \"turns\": {}, \"turn_angle_deg\": {}, "
-                                "\"angle_penalty\": {}}}",
-                                m.cells, json_number(m.length), m.turns, m.turn_angle_deg, m.angle_penalty);
+                                "\"angle_penalty\": {}{}}}",
+                                m.cells, json_number(m.length), m.turns, m.turn_angle_deg, m.angle_penalty,
+                                frame ? ", \"length_m\": " + json_number(m.length * frame->resolution) : "");
         std::string text = fmt::format(
             "{{\"algo\": {}, \"objective\": {}, \"encoding\": {}, \"seed\": {}, \"feasible\": {}, \"path\": {}, "
             "\"metrics\": {}, \"objective_value\": {}, \"evaluations\": {}, \"iterations\": {}, \"wall_ms\": {}, "
@@ -156,7 +183,7 @@ int path_command(const PathOptions& o, std::ostream& out) {
             run.feasible ? json_number(run.value) : "null", r.evaluations, r.iterations, json_number(r.wall_ms),
             json_array(r.history));
         text += ", \"polyline\": " + engine::json_polyline(run.polyline);
-        if (run.feasible) text += ", \"path_metrics\": " + engine::json_path_metrics(run, o.gaps);
+        if (run.feasible) text += ", \"path_metrics\": " + engine::json_path_metrics(run, o.gaps, frame);
         if (spec.map->frame()) text += ", \"path_world\": " + json_world_path(*spec.map, run.polyline);
         if (o.oracle)
             text += fmt::format(", \"optimum\": {{\"objective_value\": {}, \"gap\": {}}}",
@@ -169,14 +196,14 @@ int path_command(const PathOptions& o, std::ostream& out) {
         "feasible        {}\n",
         o.algo, spec.objective, run.encoding, o.seed, run.feasible ? "yes" : "no");
     if (run.feasible && polyline_only)
-        text +=
-            fmt::format("objective_value {:.10g}\nvertices        {}\nlength          {:.10g}\nturns           {}\n",
-                        run.value, run.polyline.size(), run.metrics.length, run.metrics.turns);
+        text += fmt::format(
+            "objective_value {:.10g}\nvertices        {}\nlength          {:.10g}\n{}turns           {}\n", run.value,
+            run.polyline.size(), run.metrics.length, length_m(run.metrics.length), run.metrics.turns);
     else if (run.feasible)
         text += fmt::format(
-            "objective_value {:.10g}\ncells           {}\nlength          {:.10g}\nturns           {}\n"
+            "objective_value {:.10g}\ncells           {}\nlength          {:.10g}\n{}turns           {}\n"
             "turn_angle_deg  {}\nangle_penalty   {}\n",
-            run.value, m.cells, m.length, m.turns, m.turn_angle_deg, m.angle_penalty);
+            run.value, m.cells, m.length, length_m(m.length), m.turns, m.turn_angle_deg, m.angle_penalty);
     if (run.feasible) {
         const PolylineMetrics& pm = run.metrics;
         const auto clearance = [](const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : "-"; };

@@ -5,6 +5,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/run.hpp"
@@ -47,6 +48,11 @@ int path_command(const PathOptions& o, std::ostream& out);
 /// Loads the map and runs `o.algo` on it as `pride path` does (no printing, no pictures); the spec
 /// it ran (the map as loaded and inflated, start, goal) into `spec` when given.
 engine::RunResult plan_path(const PathOptions& o, engine::GridSpec* spec = nullptr);
+
+/// The words of `pride path`'s picture legend for the run's path and for the exact optimum
+/// (html::PathLabels); on a map with a world frame each also gives its length in cells and metres.
+std::pair<std::string, std::string> picture_labels(const PathOptions& o, const engine::GridSpec& spec,
+                                                   const engine::GridOutcome& run);
 
 /// A cell given as "X,Y" (integers); InputError naming `where` otherwise.
 grid::Cell parse_cell(const std::string& text, const std::string& where);

@@ -64,7 +64,7 @@ std::string json_polyline(const grid::Polyline& line) {
     return out + "]";
 }
 
-std::string json_path_metrics(const GridOutcome& run, bool gaps) {
+std::string json_path_metrics(const GridOutcome& run, bool gaps, const std::optional<grid::WorldFrame>& frame) {
     const auto optional = [](const std::optional<double>& v) { return v ? json_number(*v) : std::string("null"); };
     const grid::PolylineMetrics& m = run.metrics;
     std::string out = "{\"length\": " + json_number(m.length) + ", \"turns\": " + std::to_string(m.turns) +
@@ -78,6 +78,13 @@ std::string json_path_metrics(const GridOutcome& run, bool gaps) {
         out += ", \"shortest_grid_length\": " + optional(run.shortest_grid_length) +
                ", \"shortest_any_angle_length\": " + optional(run.shortest_any_angle_length) +
                ", \"grid_gap\": " + optional(run.grid_gap) + ", \"any_angle_gap\": " + optional(run.any_angle_gap);
+    if (frame) {
+        const auto metres = [&](const std::optional<double>& v) {
+            return optional(v ? std::optional(*v * frame->resolution) : std::nullopt);
+        };
+        out += ", \"length_m\": " + metres(m.length) + ", \"min_clearance_m\": " + metres(m.min_clearance) +
+               ", \"mean_clearance_m\": " + metres(m.mean_clearance);
+    }
     return out + "}";
 }
 

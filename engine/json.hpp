@@ -2,6 +2,7 @@
 // Numbers and names as JSON text, for results, stores and front ends: every double in its
 // shortest form that reads back as the same double.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,7 +27,10 @@ std::string json_string(std::string_view s);
 std::string json_polyline(const grid::Polyline& line);
 /// A grid run's path metrics (problems/grid/polyline.hpp) as one object, keys in the order of
 /// PolylineMetrics, clearances null on a map without obstacles; with `gaps`, the problem's
-/// shortest lengths and the path's gaps to them (GridSpec::path_gaps) after them.
-std::string json_path_metrics(const GridOutcome& run, bool gaps);
+/// shortest lengths and the path's gaps to them (GridSpec::path_gaps) after them. On a map with a
+/// world frame, the lengths in metres last: length_m, min_clearance_m and mean_clearance_m, each
+/// the value in cells times the resolution.
+std::string json_path_metrics(const GridOutcome& run, bool gaps,
+                              const std::optional<grid::WorldFrame>& frame = std::nullopt);
 
 }  // namespace pride::engine

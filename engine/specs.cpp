@@ -18,7 +18,15 @@ grid::Cell world_cell(const grid::GridMap& map, double x, double y, const std::s
         fmt::format("the point ({}, {}) is outside the map: x in [{:.10g}, {:.10g}), y in [{:.10g}, {:.10g}) metres", x,
                     y, f->origin_x, f->origin_x + map.width() * f->resolution, f->origin_y,
                     f->origin_y + map.height() * f->resolution));
+    require(
+        map.free(*cell), where,
+        fmt::format("the point ({}, {}) is in cell ({},{}), a blocked cell of {}", x, y, cell->x, cell->y, map.name()));
     return *cell;
+}
+
+InputError endpoint_error(const InputError& e, const std::string& start, const std::string& goal) {
+    const std::string& name = e.where() == "start" ? start : e.where() == "goal" ? goal : std::string();
+    return name.empty() ? e : InputError(name, e.detail());
 }
 
 std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int64_t inflate,

@@ -148,9 +148,14 @@ std::shared_ptr<const grid::GridMap> load_map(const std::string& file, std::int6
                                               const grid::MapReadOptions& options = {});
 
 /// The cell holding the world point (x, y) in metres. InputError(`where`, ...) when the map has no
-/// world frame (the message ends "give `instead`") or the point lies outside the map (with its
-/// bounds in metres).
+/// world frame (the message ends "give `instead`"), the point lies outside the map (with its
+/// bounds in metres) or in a blocked cell (naming the cell).
 grid::Cell world_cell(const grid::GridMap& map, double x, double y, const std::string& where,
                       const std::string& instead);
+
+/// `e` placed under `start` when its place is "start", under `goal` when it is "goal" (an empty
+/// name keeps the place): a grid problem checks its ends as cells, and a front end that took an
+/// end from a world point (`--goal-world`, `goal_world`) says so in the error, not `--goal`.
+InputError endpoint_error(const InputError& e, const std::string& start, const std::string& goal);
 
 }  // namespace pride::engine

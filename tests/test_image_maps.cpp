@@ -426,7 +426,7 @@ TEST_CASE("ros maps: the public nav2 maps load with their frames, and A* crosses
         CHECK(occupied > 0);
         CHECK(blocked < m.size());
     }
-    // (0, 0) m is free in the sandbox (where the TurtleBot 3 starts); A* to a point 1.5 m away.
+    // (-2, -0.5) m is free in the sandbox (where the TurtleBot 3 starts), and so is a point 1.5 m away.
     const auto s = sandbox.cell_at({-2.0, -0.5}), g = sandbox.cell_at({-0.5, 0.5});
     REQUIRE(s.has_value());
     REQUIRE(g.has_value());
@@ -461,8 +461,12 @@ TEST_CASE("pride path: --start-world and --goal-world on a map_server map, path_
         CHECK_THAT(text.out, Contains("path_world      [[-1.975, -0.475], "));
         expect_input_error("path --map '" + map + "' --start-world 30,0 --goal-world 0,0 --algo astar",
                            {"--start-world", "outside the map", "[-10, 9.2)"});
-        expect_input_error("path --map '" + map + "' --start-world 0,0 --goal-world 0:0 --algo astar",
+        // (0, 0) m is a blocked cell of the sandbox (named since blocked world points are refused
+        // at their option): the start is a free point, so the goal's syntax is what fails.
+        expect_input_error("path --map '" + map + "' --start-world -2,-0.5 --goal-world 0:0 --algo astar",
                            {"--goal-world"});
+        expect_input_error("path --map '" + map + "' --start-world 0,0 --goal-world -0.5,0.5 --algo astar",
+                           {"--start-world: the point (0, 0) is in cell (200,183), a blocked cell of"});
         expect_input_error("path --map '" + map + "' --goal-world 0,0 --algo astar", {"--start", "--start-world"});
         expect_input_error("path --map '" + map + "' --start 1,1 --start-world 0,0 --goal 2,2 --algo astar",
                            {"--start"});

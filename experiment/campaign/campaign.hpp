@@ -25,6 +25,13 @@ struct CampaignProblem {
     bool path_gaps = false;     // each run records its gaps to the shortest grid and any-angle lengths
     int line = 0;               // where it stands in the campaign file (0: not from a file)
     std::string suite;          // "bbob", "bbob-constrained", "classic", ... when it came from a suite, else empty
+    // A grid's start or goal given as a world point in metres (start_world, goal_world): prepare()
+    // puts the cell holding it into the spec once the map, and its frame, is read; `line` is the key's.
+    struct WorldEnd {
+        std::optional<grid::WorldPoint> point;
+        int line = 0;
+    };
+    WorldEnd start_world, goal_world;
     std::shared_ptr<const engine::Problem> problem;  // built by prepare()
     // The evaluations of each run when the campaign budgets per dimension (set by prepare()).
     std::optional<std::int64_t> evaluations;

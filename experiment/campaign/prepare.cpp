@@ -39,6 +39,49 @@ std::string where_of(const Campaign& c, int line, const std::string& what) {
     return (c.file.empty() ? std::string("campaign") : c.file) + ": " + what;
 }
 
+/// An error already placed at its key (start_world, goal_world), passed on as it is.
+struct PlacedError : InputError {
+    using InputError::InputError;
+};
+
+/// The cells of a grid problem's world points (CampaignProblem::start_world, goal_world), on its
+/// map; errors at the key's line, naming the key.
+void place_world_ends(const Campaign& c, CampaignProblem& p, GridSpec& g) {
+    const auto place = [&](const CampaignProblem::WorldEnd& end, const char* key, const char* cell_key,
+                           grid::Cell& cell) {
+        if (!end.point) return;
+        try {
+            cell =
+                engine::world_cell(*g.map, end.point->x, end.point->y, key, std::string("'") + cell_key + "' (a cell)");
+        } catch (const InputError& e) {
+            throw PlacedError(where_of(c, end.line, "problem '" + p.id + "'"), "problem '" + p.id + "': " + e.what());
+        }
+    };
+    place(p.start_world, "start_world", "start", g.start);
+    place(p.goal_world, "goal_world", "goal", g.goal);
+}
+
+/// A grid problem built from its spec; the ends' errors (the goal unreachable) at a world key's line
+/// when the end came from one.
+std::shared_ptr<const Problem> build_grid(const Campaign& c, const CampaignProblem& p, const ProblemSpec& spec,
+                                          bool with_oracle, bool& oracle) {
+    try {
+        Problem problem(spec);
+        if (with_oracle && problem.has_optimum()) {
+            problem = problem.with_oracle();
+            oracle = true;
+        }
+        return std::make_shared<const Problem>(std::move(problem));
+    } catch (const InputError& e) {
+        const CampaignProblem::WorldEnd* end = e.where() == "start"  ? &p.start_world
+                                               : e.where() == "goal" ? &p.goal_world
+                                                                     : nullptr;
+        if (!end || !end->point) throw;
+        throw PlacedError(where_of(c, end->line, "problem '" + p.id + "'"),
+                          "problem '" + p.id + "': " + e.where() + "_world: " + e.detail());
+    }
+}
+
 /// The campaign's settings that no algorithm of it uses, refused as `pride path` refuses them for
 /// one planner (engine/planner_settings.hpp), at the [[problem]] or [budget] key that gives them.
 /// A campaign with an algorithm that plans through an encoding shares its problems' settings and
@@ -285,19 +328,14 @@ void prepare(Campaign& c) {
                     if (!m) m = load_map(p.map_file, p.inflate, read);
                     g->map = m;
                 }
+                place_world_ends(c, p, *g);
                 // The exact optimum beside every run whose objective has one, for gaps in reports.
                 g->oracle = false;
                 g->path_gaps = p.path_gaps;
-                if (p.is_multiobjective()) {
-                    p.problem = std::make_shared<const Problem>(problem_spec(p));
-                } else {
-                    Problem problem(p.spec);
-                    if (problem.has_optimum()) {
-                        problem = problem.with_oracle();
-                        g->oracle = true;
-                    }
-                    p.problem = std::make_shared<const Problem>(std::move(problem));
-                }
+                bool oracle = false;
+                p.problem = p.is_multiobjective() ? build_grid(c, p, problem_spec(p), false, oracle)
+                                                  : build_grid(c, p, p.spec, true, oracle);
+                g->oracle = oracle;
             } else {
                 // With constraints, each run's row records its best point's violation and first feasible
                 // evaluation (store schema 6), and reports rank runs by Deb's order.
@@ -312,6 +350,8 @@ void prepare(Campaign& c) {
                                     p.dimension(), max_budget));
                 p.evaluations = *c.evaluations_per_dim * static_cast<std::int64_t>(p.dimension());
             }
+        } catch (const PlacedError&) {
+            throw;
         } catch (const InputError& e) {
             throw InputError(where, "problem '" + p.id + "': " + e.what());
         }

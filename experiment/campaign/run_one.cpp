@@ -111,7 +111,8 @@ RunRecord run_one(const CampaignProblem& p, const CampaignAlgorithm& a, const Bu
         r.encoding = result.grid->encoding;
         if (r.feasible) {
             const auto* g = std::get_if<GridSpec>(&p.spec);
-            r.path_metrics = json_path_metrics(*result.grid, g && g->path_gaps);
+            r.path_metrics =
+                json_path_metrics(*result.grid, g && g->path_gaps, g && g->map ? g->map->frame() : std::nullopt);
             if (result.grid->path.empty()) r.polyline = json_polyline(result.grid->polyline);
         }
     } else {

@@ -97,6 +97,17 @@ grid::Cell need_cell(const std::string& file, const toml::node& n, std::string_v
     return {static_cast<int>(x), static_cast<int>(y)};
 }
 
+/// [x, y] with two finite numbers: a world point in metres (start_world, goal_world).
+grid::WorldPoint need_point(const std::string& file, const toml::node& n, std::string_view key) {
+    const toml::array* a = n.as_array();
+    const auto number = [](const toml::node& v) { return v.is_integer() || v.is_floating_point(); };
+    if (!a || a->size() != 2 || !number((*a)[0]) || !number((*a)[1]))
+        fail(at(file, n), "'" + std::string(key) + "' must be [x, y] with two numbers (metres in the map's frame)");
+    const grid::WorldPoint p{need_number(file, (*a)[0], key), need_number(file, (*a)[1], key)};
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail(at(file, n), "'" + std::string(key) + "' must be finite");
+    return p;
+}
+
 CampaignProblem read_problem(const std::string& file, const toml::table& t, const std::filesystem::path& folder,
                              std::vector<std::int64_t>& instances) {
     CampaignProblem p;
@@ -111,9 +122,10 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
     ContinuousSpec f{type, 0};
     static const std::set<std::string> continuous_keys{"id", "type", "dim", "instance"};
     static const std::set<std::string> multiobjective_keys{"id", "type", "dim", "objectives"};
-    static const std::set<std::string> grid_keys{
-        "id",   "type",      "map",     "start",   "goal",   "objective",  "encoding",     "connector",
-        "init", "waypoints", "inflate", "weights", "lambda", "objectives", "unknown_free", "path_gaps"};
+    static const std::set<std::string> grid_keys{"id",        "type",        "map",       "start",      "goal",
+                                                 "objective", "encoding",    "connector", "init",       "waypoints",
+                                                 "inflate",   "weights",     "lambda",    "objectives", "unknown_free",
+                                                 "path_gaps", "start_world", "goal_world"};
     for (auto&& [key, value] : t) {
         const std::string k(key.str());
         if (!(grid ? grid_keys : several ? multiobjective_keys : continuous_keys).count(k))
@@ -150,6 +162,15 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
         }
         if (k == "start") g.start = need_cell(file, value, k);
         if (k == "goal") g.goal = need_cell(file, value, k);
+        // World points become cells in prepare(), once the map and its frame are read.
+        if (k == "start_world" || k == "goal_world") {
+            const std::string cell_key = k == "start_world" ? "start" : "goal";
+            if (t.get(cell_key))
+                fail(at(file, value), "give '" + cell_key + "' (a cell) or '" + k + "' (metres), not both");
+            CampaignProblem::WorldEnd& end = k == "start_world" ? p.start_world : p.goal_world;
+            end.point = need_point(file, value, k);
+            end.line = static_cast<int>(value.source().begin.line);
+        }
         if (k == "objective") g.objective = need_string(file, t, k, where);
         if (k == "encoding") g.encoding = need_string(file, t, k, where);
         if (k == "connector") g.connector = need_string(file, t, k, where);
@@ -169,7 +190,10 @@ CampaignProblem read_problem(const std::string& file, const toml::table& t, cons
     }
     if (grid) {
         if (p.map_file.empty()) fail(where, "a grid [[problem]] needs 'map'");
-        if (!t.get("start") || !t.get("goal")) fail(where, "a grid [[problem]] needs 'start' and 'goal'");
+        if (!t.get("start") && !t.get("start_world"))
+            fail(where, "a grid [[problem]] needs 'start' (a cell) or 'start_world' (metres)");
+        if (!t.get("goal") && !t.get("goal_world"))
+            fail(where, "a grid [[problem]] needs 'goal' (a cell) or 'goal_world' (metres)");
         if (p.objectives && t.get("objective"))
             fail(at(file, *t.get("objective")), "a grid with 'objectives' (several) takes no 'objective' (one)");
         p.spec = g;

@@ -16,6 +16,10 @@
 #include "framework/error.hpp"
 
 namespace pride::html {
+
+std::string length_words(double cells, const grid::WorldFrame& frame) {
+    return fmt::format("length {:.6g} cells = {:.6g} m", cells, cells * frame.resolution);
+}
 namespace {
 
 /// A chain of cells or a polyline (cell (i, j)'s centre at (i, j) in both).

@@ -25,6 +25,10 @@ struct PathLabels {
     std::string optimal = "exact optimum";  // the optimal path, when drawn
 };
 
+/// "length 23.4 cells = 1.17 m": a path's length in a legend, on a map with a world frame (docs/grid.md,
+/// "World coordinates"), the metres the cells times the resolution.
+std::string length_words(double cells, const grid::WorldFrame& frame);
+
 /// Writes the picture into `file` and closes it (it is in place once its OutputFiles commits).
 /// `path` (a chain's cells or a polyline planner's vertices) and `optimal` may be null. A legend
 /// under the map names start, goal and each path drawn. InputError naming the file when it cannot

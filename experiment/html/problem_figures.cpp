@@ -219,9 +219,7 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
     std::vector<Rgb> colours;
     for (const BestPath* b : best) {
         paths.push_back(b->polyline.empty() ? grid::polyline_of(b->path) : b->polyline);
-        std::string label = fmt::format("{}: {} (seed {})", b->algorithm, num(b->value), b->seed);
-        if (b->optimum) label += fmt::format(", exact optimum {}", num(*b->optimum));
-        labels.push_back(label);
+        labels.push_back(best_path_label(*b, *map));
         colours.push_back(page.colour(b->algorithm));
     }
     const std::string paths_file = page.file("paths", problem);
@@ -278,6 +276,20 @@ void problem_figures(Page& page, const std::string& problem, const std::vector<c
 }
 
 }  // namespace
+
+std::string best_path_label(const BestPath& b, const grid::GridMap& map) {
+    std::string label = fmt::format("{}: {} (seed {})", b.algorithm, num(b.value), b.seed);
+    if (b.optimum) label += fmt::format(", exact optimum {}", num(*b.optimum));
+    if (const auto& frame = map.frame()) {
+        // Its length in metres beside cells (the map's frame).
+        const grid::Polyline line = b.polyline.empty() ? grid::polyline_of(b.path) : b.polyline;
+        double length = 0.0;
+        for (std::size_t k = 1; k < line.size(); ++k)
+            length += std::hypot(line[k].x - line[k - 1].x, line[k].y - line[k - 1].y);
+        label += ", " + length_words(length, *frame);
+    }
+    return label;
+}
 
 void problem_section(Page& page, const std::string& problem, const std::vector<const StoredRun*>& runs,
                      const ReportData& r, const storage::CampaignStore& s, const PageStore& extra) {

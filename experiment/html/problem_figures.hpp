@@ -14,6 +14,10 @@ namespace pride::html {
 
 struct Page;
 
+/// The legend's words for an algorithm's best path on the map: its value, seed and exact optimum,
+/// and on a map with a world frame its length in cells and metres.
+std::string best_path_label(const BestPath& b, const grid::GridMap& map);
+
 /// The problem's heading, its figures (in a grid of two columns where the window is wide enough)
 /// and their notes under them, added to `page`; `runs` are the problem's runs in the store `s`.
 void problem_section(Page& page, const std::string& problem, const std::vector<const storage::StoredRun*>& runs,

@@ -218,19 +218,24 @@ std::string results_section(const ReportData& r) {
     }
     if (!r.paths.empty()) {
         // The markdown report's table of paths, the same rows.
+        const bool metres = report::paths_in_metres(r.paths);
         h += "<p>Paths on grids, per algorithm, scored alike whoever planned them (docs/grid.md, \"Polylines and "
-             "their metrics\"): the runs that found a path, then medians over them of the length, turns, total turn "
+             "their metrics\"): the runs that found a path, then medians over them of the length" +
+             std::string(metres ? " (in cells, then in metres on maps with a world frame)" : "") +
+             ", turns, total turn "
              "(degrees), angle over length (rad per cell), maximum curvature (1/cell), minimum and mean clearance "
              "(cells) and, with the problem's <code>path_gaps</code>, the gaps to the shortest grid and any-angle "
              "lengths; the median planning time over all runs.</p>\n<div class=\"wide\"><table>\n<tr><th>problem</th>"
-             "<th>algorithm</th><th class=\"n\">found</th><th class=\"n\">length</th><th class=\"n\">turns</th><th "
+             "<th>algorithm</th><th class=\"n\">found</th><th class=\"n\">length</th>" +
+             std::string(metres ? "<th class=\"n\">length (m)</th>" : "") +
+             "<th class=\"n\">turns</th><th "
              "class=\"n\">turn deg</th><th class=\"n\">AOL</th><th class=\"n\">max curv.</th><th class=\"n\">min "
              "clear.</th><th class=\"n\">mean clear.</th><th class=\"n\">grid gap</th><th class=\"n\">any-angle "
              "gap</th><th class=\"n\">median ms</th></tr>\n";
         for (const auto& x : r.paths) {
             h += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"n\">{}/{}</td>", escape(x.problem),
                              escape(x.algorithm), x.found, x.runs);
-            for (const auto& m : x.medians)
+            for (const auto& m : x.columns(metres))
                 h += m ? fmt::format("<td class=\"n\">{:.4g}</td>", *m) : std::string("<td class=\"n\">-</td>");
             h += fmt::format("<td class=\"n\">{:.3f}</td></tr>\n", x.median_wall_ms);
         }

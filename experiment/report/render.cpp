@@ -151,18 +151,24 @@ std::string render_table(const ReportData& report, bool md) {
                                            : "");
     }
     if (md && !report.paths.empty()) {
+        const bool metres = paths_in_metres(report.paths);
         text +=
             "\nPaths on grids, per algorithm, scored alike whoever planned them (docs/grid.md, \"Polylines and their "
-            "metrics\"): the runs that found a path, then medians over them of the length, turns, total turn "
+            "metrics\"): the runs that found a path, then medians over them of the length" +
+            std::string(metres ? " (in cells, then in metres on maps with a world frame)" : "") +
+            ", turns, total turn "
             "(degrees), angle over length (rad per cell), maximum curvature (1/cell), minimum and mean clearance "
             "(cells) and, with the problem's `path_gaps`, the gaps to the shortest grid and any-angle lengths; the "
             "median planning time over all runs.\n\n"
-            "| problem | algorithm | found | length | turns | turn deg | AOL | max curv. | min clear. | mean clear. | "
+            "| problem | algorithm | found | length | " +
+            std::string(metres ? "length (m) | " : "") +
+            "turns | turn deg | AOL | max curv. | min clear. | mean clear. | "
             "grid gap | any-angle gap | median ms |\n"
-            "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+            "|---|---|---:|---:|" +
+            std::string(metres ? "---:|" : "") + "---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const auto& r : report.paths) {
             text += fmt::format("| {} | {} | {}/{} |", markdown(r.problem), markdown(r.algorithm), r.found, r.runs);
-            for (const auto& m : r.medians) text += m ? fmt::format(" {:.4g} |", *m) : std::string(" - |");
+            for (const auto& m : r.columns(metres)) text += m ? fmt::format(" {:.4g} |", *m) : std::string(" - |");
             text += fmt::format(" {:.3f} |\n", r.median_wall_ms);
         }
     }

@@ -549,6 +549,10 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
                 for (std::size_t k = 0; k < values.size(); ++k)
                     if (run->path_metrics[k]) values[k].push_back(*run->path_metrics[k]);
             }
+            // Metres only where every run with a length has them too (a store resumed across the
+            // key's introduction has runs without): a median of some runs' lengths is not the column's.
+            if (values[storage::kPathLengthMetres].size() != values[0].size())
+                values[storage::kPathLengthMetres].clear();
             for (const auto& v : values) r.medians.push_back(v.empty() ? std::nullopt : std::optional(median_of(v)));
             r.median_wall_ms = median_of(wall);
             report.paths.push_back(std::move(r));
@@ -566,6 +570,24 @@ ReportData make_report(const storage::CampaignStore& store, const ReportOptions&
             list, fronts.size() == 1 ? "has" : "have", fronts.size() == 1 ? "its" : "their"));
     }
     return report;
+}
+
+std::vector<std::optional<double>> PathRow::columns(bool metres) const {
+    std::vector<std::optional<double>> out;
+    for (std::size_t k = 0; k < medians.size(); ++k) {
+        if (k == storage::kPathLengthMetres) continue;
+        out.push_back(medians[k]);
+        if (k == 0 && metres)
+            out.push_back(medians.size() > storage::kPathLengthMetres ? medians[storage::kPathLengthMetres]
+                                                                      : std::nullopt);
+    }
+    return out;
+}
+
+bool paths_in_metres(const std::vector<PathRow>& rows) {
+    return std::any_of(rows.begin(), rows.end(), [](const PathRow& r) {
+        return r.medians.size() > storage::kPathLengthMetres && r.medians[storage::kPathLengthMetres];
+    });
 }
 
 ReportData load_report(const std::string& path, const ReportOptions& options) {

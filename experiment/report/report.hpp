@@ -126,8 +126,15 @@ struct PathRow {
     std::size_t runs = 0, found = 0;
     // Medians in kPathMetricNames' order (empty where no run recorded the metric), and of wall_ms.
     std::vector<std::optional<double>> medians;
+    /// The medians in the tables' column order: length_m beside length when `metres` (some row
+    /// of the table has it: a map with a world frame), else left out.
+    std::vector<std::optional<double>> columns(bool metres) const;
     double median_wall_ms = 0;
 };
+
+/// Whether some row has a median length in metres (its map has a world frame): the tables of
+/// paths then show a column "length (m)" after "length".
+bool paths_in_metres(const std::vector<PathRow>& rows);
 
 struct ReportData {
     std::string campaign;

@@ -5,6 +5,7 @@
 // DamagedStore "STORE: damaged store: WHERE: WHAT" for one whose tables, columns or values are not
 // what pride bench writes. It lives beside the schema, not in report/, as the campaign and pride
 // merge check a store with it (check_store) before they trust one, and report/ reads with it.
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -100,10 +101,13 @@ struct StoredRun {
     std::optional<double> infeasible_f;
 };
 
-/// The keys of runs.path_metrics the report reads, in StoredRun::path_metrics' order.
+/// The keys of runs.path_metrics the report reads, in StoredRun::path_metrics' order. length_m,
+/// the length in metres, is there only for maps with a world frame (and runs stored since).
 inline constexpr const char* kPathMetricNames[] = {
     "length",        "turns",          "total_turn_deg", "angle_over_length", "max_curvature",
-    "min_clearance", "mean_clearance", "grid_gap",       "any_angle_gap"};
+    "min_clearance", "mean_clearance", "grid_gap",       "any_angle_gap",     "length_m"};
+/// The index of length_m in kPathMetricNames.
+inline constexpr std::size_t kPathLengthMetres = 9;
 
 struct StoredProblem {
     std::string id;

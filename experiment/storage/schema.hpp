@@ -18,6 +18,9 @@
 //      problems without constraints and for runs stored before
 //   7: table published, the provenance of published runs (published.hpp: source, SHA-256,
 //      citation, format); empty in a store migrated from before
+// Keys added inside a JSON column need no version: runs.path_metrics' length_m, min_clearance_m
+// and mean_clearance_m (maps with a world frame) are absent from the runs stored before, which
+// the report tells apart (reader.hpp: kPathMetricNames).
 namespace pride::storage {
 
 inline constexpr int schema_version = 7;

@@ -62,6 +62,23 @@ struct WorldPoint {
     double y = 0.0;
 };
 
+/// The index of the cell that holds world coordinate v along one axis, cells [k, k + 1) * resolution
+/// from `origin`, a border belonging to the cell after it (right, or above). The quotient
+/// (v - origin) / resolution carries the rounding of the decimal numbers the user wrote (x = 1.6,
+/// origin -10, resolution 0.05: 231.99999999999997, where the real quotient is the border 232), so
+/// a quotient within a tolerance of a whole number k is that border, cell k: 1e-9 of a cell, or
+/// when larger 8 units in the last place of the numbers involved, counted in cells (with
+/// GridMap::check_frame's least resolution, at most 4e-5 of a cell inside the map). Comparing v with the border
+/// recomputed, origin + k * resolution, does not help: that sum rounds too (to 1.6000000000000014).
+/// NaN for NaN.
+inline double world_index(double v, double origin, double resolution) {
+    const double q = (v - origin) / resolution;
+    const double k = std::round(q);
+    constexpr double eps = 2.220446049250313e-16;  // DBL_EPSILON
+    const double tolerance = std::max(1e-9, 8.0 * eps * ((std::abs(v) + std::abs(origin)) / resolution + std::abs(q)));
+    return std::abs(q - k) <= tolerance ? k : std::floor(q);
+}
+
 /// A world coordinate as printed (`pride path --json`'s path_world, Python's): rounded to 15
 /// significant digits, which drops the last bit of a sum (-10 + 0.5 * 0.05 is -9.975, not
 /// -9.975000000000001) and keeps any two distinct vertices apart: the frame's resolution is at least
@@ -141,11 +158,12 @@ class GridMap {
                 frame_->origin_y + (height_ - 1 - y + 0.5) * frame_->resolution};
     }
     /// The cell holding world point p (a point on a border between cells belongs to the cell
-    /// right of it or above it), or none when p is outside the map; the map must have a frame.
+    /// right of it or above it, world_index), or none when p is outside the map (the far right and
+    /// top edges included: no cell lies beyond them); the map must have a frame.
     std::optional<Cell> cell_at(WorldPoint p) const {
         require(frame_.has_value(), name_, "the map has no world frame (resolution and origin)");
-        const double col = std::floor((p.x - frame_->origin_x) / frame_->resolution);
-        const double row = std::floor((p.y - frame_->origin_y) / frame_->resolution);           // from the bottom
+        const double col = world_index(p.x, frame_->origin_x, frame_->resolution);
+        const double row = world_index(p.y, frame_->origin_y, frame_->resolution);              // from the bottom
         if (!(col >= 0.0 && col < width_ && row >= 0.0 && row < height_)) return std::nullopt;  // NaN too
         return Cell{static_cast<int>(col), height_ - 1 - static_cast<int>(row)};
     }

@@ -199,9 +199,13 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     spec.goal = endpoint(*g.map, goal, goal_world, "goal");
     const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     std::optional<engine::Problem> problem;
-    {
+    try {
         py::gil_scoped_release release;  // reachability and the encodings' tables
         problem.emplace(spec);
+    } catch (const InputError& e) {
+        // The goal unreachable from a world point's cell: named by the keyword that gave it.
+        throw engine::endpoint_error(e, start_world.is_none() ? "" : "start_world",
+                                     goal_world.is_none() ? "" : "goal_world");
     }
     const engine::Budget b = budget(evals, iters, std::nullopt, std::nullopt);
     engine::PlannerSettingNames names;
@@ -215,7 +219,21 @@ py::dict plan(const Grid& g, const py::object& start, const py::object& goal, co
     d["seed"] = seed;
     const auto& run = *r.grid;
     d["polyline"] = polyline_array(run.polyline);
-    d["path_metrics"] = run.feasible ? py::object(path_metrics_dict(run.metrics)) : py::object(py::none());
+    if (run.feasible) {
+        py::dict metrics = path_metrics_dict(run.metrics);
+        // As pride path --json: the lengths in metres too, on a map with a world frame.
+        if (const auto& frame = g.map->frame()) {
+            const auto metres = [&](const std::optional<double>& v) {
+                return optional_number(v ? std::optional(*v * frame->resolution) : std::nullopt);
+            };
+            metrics["length_m"] = run.metrics.length * frame->resolution;
+            metrics["min_clearance_m"] = metres(run.metrics.min_clearance);
+            metrics["mean_clearance_m"] = metres(run.metrics.mean_clearance);
+        }
+        d["path_metrics"] = metrics;
+    } else {
+        d["path_metrics"] = py::none();
+    }
     if (gaps) {
         d["shortest_grid_length"] = optional_number(run.shortest_grid_length);
         d["shortest_any_angle_length"] = optional_number(run.shortest_any_angle_length);

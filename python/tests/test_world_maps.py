@@ -70,8 +70,11 @@ def test_errors_name_the_keyword(tmp_path, sandbox):
     g = pride.Grid.load(sandbox)
     with pytest.raises(ValueError, match=r"^start_world: the point \(30, 0\) is outside the map: x in \[-10, 9.2\)"):
         pride.plan(g, start_world=(30.0, 0.0), goal_world=(0, 0), algo="astar")
+    # (0, 0) m is a blocked cell of the sandbox, (-2, -0.5) m a free one (where the robot starts).
+    with pytest.raises(ValueError, match=r"^start_world: the point \(0, 0\) is in cell \(200,183\), a blocked cell"):
+        pride.plan(g, start_world=(0, 0), goal_world=(-0.5, 0.5), algo="astar")
     with pytest.raises(TypeError, match="^goal_world: expected a number, got str"):
-        pride.plan(g, start_world=(0, 0), goal_world=("a", 0), algo="astar")
+        pride.plan(g, start_world=(-2, -0.5), goal_world=("a", 0), algo="astar")
     with pytest.raises(TypeError, match=r"^start_world: expected \(x, y\) in metres, got str"):
         pride.plan(g, start_world="0,0", goal_world=(0, 0), algo="astar")
     with pytest.raises(ValueError, match="^start_world: the point must be finite"):
@@ -79,7 +82,7 @@ def test_errors_name_the_keyword(tmp_path, sandbox):
     with pytest.raises(TypeError, match="^start_world: give start or start_world, not both"):
         pride.plan(g, (1, 1), start_world=(0, 0), goal_world=(0, 0), algo="astar")
     with pytest.raises(TypeError, match=r"^goal: give goal=\(x, y\) \(a cell\) or goal_world"):
-        pride.plan(g, start_world=(0, 0), algo="astar")
+        pride.plan(g, start_world=(-2, -0.5), algo="astar")
     with pytest.raises(ValueError, match="^start_world: the map array has no world frame"):
         pride.plan(pride.Grid(np.zeros((3, 4))), start_world=(0, 0), goal=(1, 1), algo="astar")
     (tmp_path / "y.yaml").write_text("image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0.3]\n")
@@ -87,3 +90,52 @@ def test_errors_name_the_keyword(tmp_path, sandbox):
         pride.Grid.load(str(tmp_path / "y.yaml"))
     assert str(e.value) == str(tmp_path / "y.yaml") + ":3:16: origin yaw 0.3 is not supported: rotate the image"
     assert "\n" not in str(e.value)
+
+
+def world_map(tmp_path):
+    """A 240 x 4 map_server map, origin (-10, -10) m, 0.05 m per cell: a wall at column 100 over
+    rows 0..2 and a full wall at column 235 (columns 236..239 cannot be reached from the left)."""
+    pixels = bytearray()
+    for y in range(4):
+        for x in range(240):
+            pixels.append(0 if (x == 100 and y <= 2) or x == 235 else 254)
+    (tmp_path / "w.pgm").write_bytes(b"P5\n240 4\n255\n" + bytes(pixels))
+    (tmp_path / "w.yaml").write_text("image: w.pgm\nresolution: 0.05\norigin: [-10, -10, 0]\n")
+    return pride.Grid.load(str(tmp_path / "w.yaml"))
+
+
+def test_a_point_on_a_border_lies_in_the_cell_after_it(tmp_path):
+    g = world_map(tmp_path)
+    # (1.6 + 10) / 0.05 is 232 in real numbers, 231.99999999999997 in floating point: the border
+    # between columns 231 and 232 belongs to 232 (docs/grid.md). y = -9.9: row 2 from the bottom.
+    r = pride.plan(g, start_world=(1.6, -9.9), goal_world=(-9.95, -10), algo="astar", objective="length")
+    assert tuple(r.path[0]) == (232, 1)
+    assert tuple(r.path[-1]) == (1, 3)
+    same = pride.plan(g, (232, 1), (1, 3), algo="astar", objective="length")
+    assert np.array_equal(same.path, r.path)
+
+
+def test_lengths_in_metres_beside_cells(tmp_path):
+    g = world_map(tmp_path)
+    m = pride.plan(g, (232, 1), (1, 3), algo="astar", objective="length").path_metrics
+    assert m["length_m"] == m["length"] * 0.05
+    assert m["min_clearance_m"] == m["min_clearance"] * 0.05
+    assert m["mean_clearance_m"] == m["mean_clearance"] * 0.05
+    plain = pride.plan(pride.Grid(np.zeros((3, 4))), (0, 0), (3, 2), algo="astar").path_metrics
+    assert not [k for k in plain if k.endswith("_m")]
+
+
+def test_errors_about_world_points_name_the_world_keyword(tmp_path):
+    g = world_map(tmp_path)
+    with pytest.raises(ValueError, match=r"^start_world: the point \(-4.99, -9.85\) is in cell \(100,0\), a blocked "
+                                         r"cell of "):
+        pride.plan(g, start_world=(-4.99, -9.85), goal_world=(-9.95, -10), algo="astar")
+    with pytest.raises(ValueError, match=r"^goal_world: \(238,3\) cannot be reached from the start \(232,1\)"):
+        pride.plan(g, start_world=(1.6, -9.9), goal_world=(1.9, -10), algo="astar")
+    with pytest.raises(ValueError, match=r"^start_world: the point \(1.6, -9.8\) is outside the map"):
+        pride.plan(g, start_world=(1.6, -9.8), goal_world=(1.6, -9.9), algo="astar")
+    # The cell keywords keep their names.
+    with pytest.raises(ValueError, match=r"^goal: \(238,3\) cannot be reached"):
+        pride.plan(g, start_world=(1.6, -9.9), goal=(238, 3), algo="astar")
+    with pytest.raises(ValueError, match=r"^start: \(100,0\) is a blocked cell"):
+        pride.plan(g, (100, 0), goal_world=(1.6, -9.9), algo="astar")
