@@ -104,8 +104,9 @@ TEST_CASE("ompl engine: refused without an evaluation budget and on objectives o
     const std::string map = std::string(PRIDE_SOURCE_DIR) + "/examples/maps/wan2022-10x10.map";
     test::expect_input_error("path --map '" + map + "' --start 0,0 --goal 9,9 --algo ompl:BITstar --objective length",
                              {"--evals", "needs an evaluation budget"});
-    test::expect_input_error("path --map '" + map + "' --start 0,0 --goal 9,9 --algo ompl:BITstar --evals 100",
-                             {"--objective", "plans polylines"});
+    test::expect_input_error(
+        "path --map '" + map + "' --start 0,0 --goal 9,9 --algo ompl:BITstar --evals 100 --objective cells",
+        {"--objective", "plans polylines"});
     const auto ok = test::run_pride("path --map '" + map +
                                     "' --start 0,0 --goal 9,9 --algo ompl:BITstar --objective length --evals 3000 "
                                     "--gaps --json");

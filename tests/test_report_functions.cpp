@@ -112,7 +112,7 @@ TEST_CASE("report: rows and functions in natural order", "[report][natural-order
     CHECK(report.rows.front().algorithm == "ga");
 }
 
-TEST_CASE("report: a function's instances are one sample; its table's numbers by hand", "[report][functions]") {
+TEST_CASE("report: a function's instances are one sample, its table's numbers by hand", "[report][functions]") {
     const auto s = hand_made();
     for (const bool raw : {false, true}) {
         INFO("raw " << raw);

@@ -1,6 +1,7 @@
 #include "experiment/campaign/toml.hpp"
 #include "experiment/campaign/identity.hpp"
 #include "experiment/campaign/prepare.hpp"
+#include "experiment/campaign/toml_nodes.hpp"
 #include "experiment/campaign/toml_seeds.hpp"
 
 #include <fmt/format.h>
@@ -37,76 +38,7 @@ using engine::ParamSpec;
 using engine::ParamType;
 namespace {
 
-std::string at(const std::string& file, const toml::node& node) {
-    return fmt::format("{}:{}", file, node.source().begin.line);
-}
-
-/// FILE:LINE:COLUMN of a node, for the newer checks (the older ones give the line).
-std::string at_column(const std::string& file, const toml::node& node) {
-    return fmt::format("{}:{}:{}", file, node.source().begin.line, node.source().begin.column);
-}
-
-[[noreturn]] void fail(const std::string& where, const std::string& what) {
-    throw InputError(where + ": " + what);
-}
-
-std::string need_string(const std::string& file, const toml::table& t, std::string_view key, const std::string& where) {
-    const toml::node* n = t.get(key);
-    if (!n) fail(where, "missing key '" + std::string(key) + "'");
-    if (!n->is_string()) fail(at(file, *n), "'" + std::string(key) + "' must be a string");
-    return std::string(**n->as_string());
-}
-
-/// A name the store keeps and summaries print (an id, the campaign's name): need_string, and not
-/// empty, without NUL or another control character (campaign.hpp: name_problem).
-std::string need_name(const std::string& file, const toml::table& t, std::string_view key, const std::string& where) {
-    std::string v = need_string(file, t, key, where);
-    if (const std::string why = name_problem(v); !why.empty())
-        fail(at_column(file, *t.get(key)), "'" + std::string(key) + "' " + why);
-    return v;
-}
-
-std::int64_t need_integer(const std::string& file, const toml::node& n, std::string_view key) {
-    if (!n.is_integer()) fail(at(file, n), "'" + std::string(key) + "' must be an integer");
-    return **n.as_integer();
-}
-
-double need_number(const std::string& file, const toml::node& n, std::string_view key) {
-    if (n.is_integer()) return static_cast<double>(**n.as_integer());
-    if (!n.is_floating_point()) fail(at(file, n), "'" + std::string(key) + "' must be a number");
-    return **n.as_floating_point();
-}
-
-/// An array of integers.
-std::vector<std::int64_t> need_integers(const std::string& file, const toml::node& n, std::string_view key) {
-    const toml::array* a = n.as_array();
-    if (!a) fail(at(file, n), "'" + std::string(key) + "' must be a list of integers");
-    std::vector<std::int64_t> out;
-    for (const toml::node& v : *a) out.push_back(need_integer(file, v, key));
-    return out;
-}
-
-/// [x, y] with two integers.
-grid::Cell need_cell(const std::string& file, const toml::node& n, std::string_view key) {
-    const toml::array* a = n.as_array();
-    if (!a || a->size() != 2 || !(*a)[0].is_integer() || !(*a)[1].is_integer())
-        fail(at(file, n), "'" + std::string(key) + "' must be [x, y] with two integers");
-    const std::int64_t x = **(*a)[0].as_integer(), y = **(*a)[1].as_integer();
-    if (std::abs(x) >= 1'000'000'000 || std::abs(y) >= 1'000'000'000)
-        fail(at(file, n), "'" + std::string(key) + "' is far outside any map");
-    return {static_cast<int>(x), static_cast<int>(y)};
-}
-
-/// [x, y] with two finite numbers: a world point in metres (start_world, goal_world).
-grid::WorldPoint need_point(const std::string& file, const toml::node& n, std::string_view key) {
-    const toml::array* a = n.as_array();
-    const auto number = [](const toml::node& v) { return v.is_integer() || v.is_floating_point(); };
-    if (!a || a->size() != 2 || !number((*a)[0]) || !number((*a)[1]))
-        fail(at(file, n), "'" + std::string(key) + "' must be [x, y] with two numbers (metres in the map's frame)");
-    const grid::WorldPoint p{need_number(file, (*a)[0], key), need_number(file, (*a)[1], key)};
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail(at(file, n), "'" + std::string(key) + "' must be finite");
-    return p;
-}
+using namespace toml_nodes;
 
 CampaignProblem read_problem(const std::string& file, const toml::table& t, const std::filesystem::path& folder,
                              std::vector<std::int64_t>& instances) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "experiment/campaign/prepare.hpp"
+#include "experiment/campaign/toml_nodes.hpp"
 #include "framework/error.hpp"
 
 namespace pride::campaign {
@@ -17,11 +18,9 @@ namespace pride::campaign {
 // seed's value).
 void read_seeds(Campaign& c, const std::string& file, const toml::node& value) {
     // FILE:LINE as the older keys say it (a count), FILE:LINE:COLUMN for the lists and ranges.
-    const auto at = [&](const toml::node& n) { return fmt::format("{}:{}", file, n.source().begin.line); };
-    const auto at_column = [&](const toml::node& n) {
-        return fmt::format("{}:{}:{}", file, n.source().begin.line, n.source().begin.column);
-    };
-    const auto fail = [](const std::string& where, const std::string& what) { throw InputError(where + ": " + what); };
+    const auto at = [&](const toml::node& n) { return toml_nodes::at(file, n); };
+    const auto at_column = [&](const toml::node& n) { return toml_nodes::at_column(file, n); };
+    using toml_nodes::fail;
     const auto in_range = [](std::int64_t s) { return s >= 1 && s <= max_campaign_seeds; };
     if (value.is_integer()) {
         c.seeds = **value.as_integer();

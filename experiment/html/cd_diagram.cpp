@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "experiment/html/cairo_output.hpp"
+#include "experiment/html/cairo_text.hpp"
 #include "experiment/html/font_session.hpp"
 
 namespace pride::html {
@@ -48,20 +49,6 @@ namespace cd_drawing {
 constexpr double kScaleWidth = 440, kTitleFont = 14, kFont = 12, kSmallFont = 11;
 constexpr double kAxisY = 104, kRowHeight = 21, kLevelHeight = 9, kMargin = 16;
 
-double text_width(cairo_t* cr, const std::string& s, double size) {
-    cairo_set_font_size(cr, size);
-    cairo_text_extents_t e;
-    cairo_text_extents(cr, s.c_str(), &e);
-    return e.x_advance;
-}
-
-/// Text at (x, y) (its baseline), aligned left (0), centred (0.5) or right (1).
-void show(cairo_t* cr, const std::string& s, double x, double y, double size, double align = 0) {
-    const double w = text_width(cr, s, size);
-    cairo_move_to(cr, x - align * w, y);
-    cairo_show_text(cr, s.c_str());
-}
-
 std::string label(const CdLayout::Name& n, const std::vector<std::string>& names) {
     return fmt::format("{} ({:.3g})", names.at(n.algorithm), n.rank);
 }
@@ -99,10 +86,10 @@ void draw(const CdLayout& layout, const std::vector<std::string>& names, const s
     cairo_paint(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-    show(cr, title, kMargin, 20, kTitleFont);
+    show_text(cr, title, kMargin, 20, kTitleFont);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
-    show(cr, subtitle, kMargin, 38, kSmallFont);
+    show_text(cr, subtitle, kMargin, 38, kSmallFont);
 
     // The critical difference at the axis' scale, from rank 1, with its name above it.
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
@@ -115,7 +102,7 @@ void draw(const CdLayout& layout, const std::vector<std::string>& names, const s
         cairo_line_to(cr, x(r), cd_y + 4);
     }
     cairo_stroke(cr);
-    show(cr, "CD", 0.5 * (x(layout.cd_from) + x(layout.cd_to)), cd_y - 7, kSmallFont, 0.5);
+    show_text(cr, "CD", 0.5 * (x(layout.cd_from) + x(layout.cd_to)), cd_y - 7, kSmallFont, 0.5);
 
     // The axis: whole ranks labelled above it, half ranks as shorter ticks.
     cairo_set_line_width(cr, 1.2);
@@ -125,7 +112,7 @@ void draw(const CdLayout& layout, const std::vector<std::string>& names, const s
         const bool whole = std::abs(r - std::round(r)) < 1e-9;
         cairo_move_to(cr, x(r), kAxisY);
         cairo_line_to(cr, x(r), kAxisY - (whole ? 7 : 4));
-        if (whole) show(cr, fmt::format("{:g}", r), x(r), kAxisY - 11, kSmallFont, 0.5);
+        if (whole) show_text(cr, fmt::format("{:g}", r), x(r), kAxisY - 11, kSmallFont, 0.5);
     }
     cairo_stroke(cr);
 
@@ -138,7 +125,7 @@ void draw(const CdLayout& layout, const std::vector<std::string>& names, const s
         cairo_line_to(cr, x(n.rank), y);
         cairo_line_to(cr, end, y);
         cairo_stroke(cr);
-        show(cr, label(n, names), n.left ? end - 4 : end + 4, y + 4, kFont, n.left ? 1 : 0);
+        show_text(cr, label(n, names), n.left ? end - 4 : end + 4, y + 4, kFont, n.left ? 1 : 0);
     }
 
     // The groups not significantly different: thick bars under the axis, a little past their ends.

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "experiment/html/cairo_output.hpp"
+#include "experiment/html/cairo_text.hpp"
 #include "experiment/html/font_session.hpp"
 #include "framework/error.hpp"
 
@@ -101,20 +102,6 @@ void set_dash(cairo_t* cr, int dash) {
 
 void set_colour(cairo_t* cr, Rgb c, double alpha = 1.0) {
     cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
-}
-
-double text_width(cairo_t* cr, const std::string& s, double size) {
-    cairo_set_font_size(cr, size);
-    cairo_text_extents_t e;
-    cairo_text_extents(cr, s.c_str(), &e);
-    return e.x_advance;
-}
-
-/// Text at (x, y) (its baseline), aligned left (0), centred (0.5) or right (1).
-void show(cairo_t* cr, const std::string& s, double x, double y, double size, double align = 0) {
-    const double w = text_width(cr, s, size);
-    cairo_move_to(cr, x - align * w, y);
-    cairo_show_text(cr, s.c_str());
 }
 
 void draw_marker(cairo_t* cr, Marker m, double x, double y, double r) {
@@ -286,11 +273,11 @@ void Figure::write(OutputFiles::File& file) const {
     cairo_paint(cr);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    show(cr, title_, left, 20, kTitleFont);
+    show_text(cr, title_, left, 20, kTitleFont);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     if (!subtitle_.empty()) {
         cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
-        show(cr, subtitle_, left, 38, kTickFont);
+        show_text(cr, subtitle_, left, 38, kTickFont);
     }
 
     // Grid lines and ticks.
@@ -311,7 +298,7 @@ void Figure::write(OutputFiles::File& file) const {
         const double y = ty(yt.major[i]);
         cairo_move_to(cr, left - 5, y);
         cairo_line_to(cr, left, y);
-        show(cr, yt.labels[i], left - 8, y + 4, kTickFont, 1);
+        show_text(cr, yt.labels[i], left - 8, y + 4, kTickFont, 1);
     }
     for (const double v : yt.minor) {
         cairo_move_to(cr, left - 3, ty(v));
@@ -328,7 +315,7 @@ void Figure::write(OutputFiles::File& file) const {
             cairo_show_text(cr, xt.labels[i].c_str());
             cairo_restore(cr);
         } else {
-            show(cr, xt.labels[i], x, y + 18, kTickFont, 0.5);
+            show_text(cr, xt.labels[i], x, y + 18, kTickFont, 0.5);
         }
     }
     for (const double v : xt.minor) {
@@ -337,7 +324,7 @@ void Figure::write(OutputFiles::File& file) const {
     }
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    show(cr, x_.label, left + kPlotWidth / 2, height - 12, kLabelFont, 0.5);
+    show_text(cr, x_.label, left + kPlotWidth / 2, height - 12, kLabelFont, 0.5);
     cairo_save(cr);
     cairo_move_to(cr, 18, kTop + kPlotHeight / 2 + text_width(cr, y_.label, kLabelFont) / 2);
     cairo_rotate(cr, -std::numbers::pi / 2);
@@ -460,7 +447,7 @@ void Figure::write(OutputFiles::File& file) const {
             }
         }
         cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-        show(cr, legend[i].words, legend_x + 34, y + 4, kTickFont);
+        show_text(cr, legend[i].words, legend_x + 34, y + 4, kTickFont);
     }
 
     cairo_destroy(cr);
