@@ -406,7 +406,7 @@ std::vector<std::vector<std::string>> table_rows(const std::vector<std::string>&
     return rows;
 }
 
-const std::vector<std::string> kTableHeader = {"problem", "algorithm", "runs",    "min",     "mean",     "std", "median",
+const std::vector<std::string> kTableHeader = {"problem", "algorithm", "runs", "min",     "mean",     "std", "median",
                                                "max",     "mean ms",   "gap",  "optimal", "p (Holm)", "A12"};
 
 }  // namespace
