@@ -87,9 +87,13 @@ run_one() {
     local found
     found=$(find "$build/findings/$t" -type f)
     [[ $(wc -l <<<"$found") == 1 && $(basename "$found") == timeout-* ]] || break
-    local ms
-    ms=$("$build/fuzz/fuzz_$t" "$found" 2>&1 | sed -n 's/^Executed .* in \([0-9]*\) ms$/\1/p')
+    # Run alone, an input that fails (a crash, a leak the timeout cut short) is a finding as it is.
+    local ms alone=0
+    "$build/fuzz/fuzz_$t" "$found" >"$build/logs/$t.alone.log" 2>&1 || alone=$?
+    ((alone == 0)) || break
+    ms=$(sed -n 's/^Executed .* in \([0-9]*\) ms$/\1/p' "$build/logs/$t.alone.log")
     [[ -n $ms ]] && ((ms < 1000)) || break
+    rm -f "$build/logs/$t.alone.log"
     # Out of the corpus too, or the next session times out again loading it.
     local sum
     sum=$(basename "$found")
@@ -117,21 +121,23 @@ found=0
 printf '%-10s %12s %8s %8s %10s %8s  %s\n' target executions cov ft corpus sessions findings
 for t in "${targets[@]}"; do
   logs=("$build/logs/$t".[0-9]*.log)
-  execs=$(cat "${logs[@]}" | sed -n 's/^stat::number_of_executed_units: \([0-9]*\)/\1/p' | awk '{n += $1} END {print n}')
+  execs=$(cat "${logs[@]}" 2>/dev/null | sed -n 's/^stat::number_of_executed_units: \([0-9]*\)/\1/p' | awk '{n += $1} END {print n}')
   # The largest coverage any session reached (a session cut short by the time left may end
   # before it has reloaded the whole corpus), and the corpus as the last line left it.
-  stats=$(cat "${logs[@]}" | grep -aE '^#[0-9]+.* cov: ')
+  stats=$(cat "${logs[@]}" 2>/dev/null | grep -aE '^#[0-9]+.* cov: ' || true)
   cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$stats" | sort -n | tail -1)
   ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$stats" | sort -n | tail -1)
-  corpus=$(ls -v "${logs[@]}" | tail -1 | xargs grep -aE '^#[0-9]+.* cov: ' | tail -1 |
-    sed -n 's/.* corp: \([0-9]*\/[0-9a-zA-Z]*\).*/\1/p')
+  corpus=$(ls -v "${logs[@]}" 2>/dev/null | tail -1 | xargs -r grep -aE '^#[0-9]+.* cov: ' | tail -1 |
+    sed -n 's/.* corp: \([0-9]*\/[0-9a-zA-Z]*\).*/\1/p' || true)
   n=$(find "$build/findings/$t" -type f | wc -l)
   what=$(find "$build/findings/$t" -type f -printf '%f ' | head -c 300)
   load=$(find "$build/findings-load/$t" -type f | wc -l)
-  status=$(cat "$build/logs/$t.status")
+  # No status: the target's loop stopped before its end, which is a failure too.
+  status=$(cat "$build/logs/$t.status" 2>/dev/null || echo "unknown (the target's loop stopped early)")
   if ((n > 0)) || [[ $status != 0 ]]; then
     found=1
     [[ -n $what ]] || what="exit status $status, see $build/logs/$t.*.log"
+    [[ -f $build/logs/$t.alone.log ]] && what+=" (the input run alone: $build/logs/$t.alone.log)"
   fi
   printf '%-10s %12s %8s %8s %10s %8s  %s\n' "$t" "${execs:-?}" "${cov:-?}" "${ft:-?}" "${corpus:-?}" "${#logs[@]}" \
     "${what:-none}$( ((load)) && echo " ($load timeouts under load, under 1 s when run alone)")"

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <numeric>
 #include <set>
 #include <string>
 #include <vector>
@@ -310,6 +311,17 @@ TEST_CASE("campaign seeds and shards in code: listed seeds checked, parts dealt 
           "campaign: seeds: 3 runs per problem and algorithm, but 2 seeds listed");
     CHECK(pride::test::input_error_message([&] { prepare(zero); }) ==
           "campaign: seeds: a seed must be in [1, 1000000], got 0");
+    Campaign apart = c;  // a seed twice, not side by side
+    apart.seed_list = {9, 3, 5, 3};
+    apart.seeds = 4;
+    CHECK(pride::test::input_error_message([&] { prepare(apart); }) == "campaign: seeds: seed 3 is listed twice");
+    Campaign million = c;  // the largest range, as the file's reader lists it
+    million.seed_list.resize(1'000'000);
+    std::iota(million.seed_list.begin(), million.seed_list.end(), std::int64_t{1});
+    million.seeds = 1'000'000;
+    prepare(million);
+    CHECK(million.seed_list.back() == 1'000'000);
+    CHECK(million.text.find("seeds = [1, 2, 3, ") != std::string::npos);
     prepare(c);
     CHECK(c.text.find("seeds = [7, 3]\n") != std::string::npos);  // the canonical text of a code-built campaign
     // Six runs, a7 a3 b7 b3 c7 c3; part 2 of 4 takes runs 1 and 5.

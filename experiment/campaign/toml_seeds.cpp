@@ -55,6 +55,7 @@ void read_seeds(Campaign& c, const std::string& file, const toml::node& value) {
             fail(at_column(value),
                  fmt::format("'seeds' from {} to {} is empty ('from' must be at most 'to': both are included)", first,
                              last));
+        seeds.reserve(static_cast<std::size_t>(last - first + 1));
         for (std::int64_t s = first; s <= last; ++s) seeds.push_back(s);
     } else {
         fail(at(value),
