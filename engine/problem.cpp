@@ -101,7 +101,8 @@ void require_problem_memory(const ContinuousSpec& c) {
     const auto* item = continuous::catalog().find(c.function);
     require(item != nullptr || !is_multiobjective_problem(c.function), "problem",
             c.function + " has several objectives: its runs are multi-objective ones (pride front, pride.front)");
-    require(item != nullptr, "problem", unknown_problem(c.function));
+    // Close names only for a name that is unknown: looking for them costs as much as building a problem.
+    if (item == nullptr) throw InputError("problem", unknown_problem(c.function));
     require(c.dim >= 1 && c.dim <= max_budget, "dim",
             fmt::format("must be an integer in [1, {}], got {}", max_budget, c.dim));
     // Bounds, an optimum and scratch vectors per coordinate, and a rotation (dim^2) for an
