@@ -126,6 +126,8 @@ def test_published_jso_beside_prides_jso_where_the_protocol_is_the_same(tmp_path
         s = pride.import_cec2017(store, results, name="jSO", citation=citation)
         # F1 and F5 in 10-D are the campaign's problems; the other 118 are added.
         assert (s["problems_matched"], s["problems_added"]) == (2, 118)
+        # The campaign resumed runs none of them: they are not its runs.
+        assert cli("bench", toml, "--out", store).stdout.startswith("jso-beside: 0 runs stored")
         runs[budget] = store
     same, other = runs[""], runs["[budget]\nevaluations_per_dim = 2000\n"]
 
