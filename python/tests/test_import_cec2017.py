@@ -148,6 +148,9 @@ def test_published_jso_beside_prides_jso_where_the_protocol_is_the_same(tmp_path
     assert ("published:jSO is left out of the comparison of final values on 2 problems (cec2017-f1-d10, "
             "cec2017-f5-d10)") in md
     assert "a mean of 100000 evaluations, the campaign's 20000" in md
+    compared = {(r["problem"], r["algorithm"]) for r in pride.report(other, dataframe=False)["rows"]}
+    assert ("cec2017-f1-d10", "jso") in compared and ("cec2017-f1-d10", "published:jSO") not in compared
+    assert ("published:cec2017-f3-d10", "published:jSO") in compared  # a problem the campaign did not run
 
 
 def test_bad_files_raise_one_value_error_naming_file_and_line(tmp_path):
