@@ -7,6 +7,7 @@
 #include "cli/output.hpp"
 #include "engine/json.hpp"
 #include "experiment/campaign/campaign.hpp"
+#include "experiment/report/cec2017_import.hpp"
 #include "experiment/report/coco_export.hpp"
 #include "experiment/report/coco_import.hpp"
 #include "experiment/report/ioh_export.hpp"
@@ -35,12 +36,15 @@ int export_command(const ExportOptions& o, std::ostream& out) {
 }
 
 int import_command(const ImportOptions& o, std::ostream& out) {
-    require(!o.coco.empty(), "import", "name the data set to read: --coco FOLDER");
-    report::CocoImportOptions options;
+    require(!o.coco.empty() || !o.cec2017.empty(), "import",
+            "name the data to read: --coco FOLDER (a COCO data set) or --cec2017 FOLDER (a CEC 2017 entrant's files)");
+    report::PublishedImportOptions options;
     options.name = o.name;
     options.citation = o.citation;
-    const auto s = report::import_coco(o.store, o.coco, options, campaign::coco_precisions(),
-                                       engine::json_array(campaign::coco_precisions()));
+    const auto precisions = campaign::coco_precisions();
+    const auto s = o.coco.empty()
+                       ? report::import_cec2017(o.store, o.cec2017, options, precisions, engine::json_array(precisions))
+                       : report::import_coco(o.store, o.coco, options, precisions, engine::json_array(precisions));
     out << fmt::format("{} runs of published:{} imported into {} ({} problems of the store, {} added)\n", s.runs,
                        o.name, o.store, s.problems_matched, s.problems_added);
     return 0;

@@ -21,6 +21,16 @@ TEST_CASE("statistics: average ranks share tied ranks", "[statistics]") {
     CHECK(r == std::vector<double>{4.0, 1.0, 4.0, 2.0, 4.0});
 }
 
+TEST_CASE("statistics: the sample standard deviation of values whose squares overflow", "[statistics]") {
+    // Deviations of 1e200 (CEC 2017's F2 early in a run reaches 1e166): the squares overflow, not the
+    // deviation. By hand: mean 0, deviations +-1e200 and 0, sum of squares 2e400 over n - 1 = 2.
+    const std::vector<double> v{1e200, -1e200, 0.0};
+    CHECK(pride::stats::sample_std(v) == Approx(1e200).epsilon(1e-15));
+    const std::vector<double> w{3e160, 3e160, 3e160, 3e160 + 4e160};
+    CHECK(pride::stats::sample_std(w) == Approx(2e160).epsilon(1e-15));  // sqrt((3 x 1e320 + 9e320) / 3)
+    CHECK(pride::stats::sample_std(std::vector<double>{1.0, 2.0, 4.0}) == Approx(std::sqrt(7.0 / 3.0)));
+}
+
 TEST_CASE("statistics: rank-sum test equals scipy's mannwhitneyu (asymptotic)", "[statistics]") {
     const auto a = pride::stats::rank_sum_test(x, y);
     CHECK(a.u == 20.0);

@@ -3,30 +3,22 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <tuple>
 
-#include "experiment/storage/digest.hpp"
-#include "experiment/storage/writer.hpp"
 #include "framework/error.hpp"
 
 namespace pride::report {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string trim(const std::string& s) {
-    const auto a = s.find_first_not_of(" \t\r\n");
-    if (a == std::string::npos) return "";
-    const auto b = s.find_last_not_of(" \t\r\n");
-    return s.substr(a, b - a + 1);
-}
+using published_files::number;
+using published_files::read_lines;
+using published_files::trim;
 
 std::vector<std::string> split(const std::string& s, char by) {
     std::vector<std::string> out;
@@ -36,16 +28,6 @@ std::vector<std::string> split(const std::string& s, char by) {
     return out;
 }
 
-/// A whole token as a number (C's strtod: COCO's 2009 files write exponents as "e+001"), or none.
-std::optional<double> number(const std::string& token) {
-    if (token.empty()) return std::nullopt;
-    errno = 0;
-    char* end = nullptr;
-    const double v = std::strtod(token.c_str(), &end);
-    if (end != token.c_str() + token.size() || errno == ERANGE) return std::nullopt;
-    return v;
-}
-
 /// A whole token as a count of at least `min` (written as an integer or, as some loggers do, as
 /// a number with an exponent), or none.
 std::optional<std::int64_t> count(const std::string& token, std::int64_t min) {
@@ -53,21 +35,6 @@ std::optional<std::int64_t> count(const std::string& token, std::int64_t min) {
     if (!v || !std::isfinite(*v) || *v != std::floor(*v) || *v < static_cast<double>(min) || *v > 9e15)
         return std::nullopt;
     return static_cast<std::int64_t>(*v);
-}
-
-std::vector<std::string> read_lines(const fs::path& file, const std::string& what) {
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec))
-        throw InputError(file.string(), fs::exists(file, ec) ? "not a regular file" : "no such file (" + what + ")");
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(file.string(), "cannot read the file");
-    std::vector<std::string> lines;
-    std::string line;
-    while (std::getline(in, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        lines.push_back(line);
-    }
-    return lines;
 }
 
 /// One run's block of a .dat or .tdat file.
@@ -151,28 +118,10 @@ std::map<std::string, std::string> header_fields(const std::string& line) {
     return out;
 }
 
-/// The SHA-256 of a folder's files: each one's path relative to it and its content, by path.
-std::string folder_sha256(const fs::path& folder) {
-    std::vector<fs::path> files;
-    for (const auto& e : fs::recursive_directory_iterator(folder))
-        if (e.is_regular_file()) files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    storage::Sha256 h;
-    for (const auto& f : files) {
-        std::ifstream in(f, std::ios::binary);
-        std::ostringstream content;
-        content << in.rdbuf();
-        h.field(fs::relative(f, folder).generic_string()).field(content.str());
-    }
-    return h.hex();
-}
-
 }  // namespace
 
 storage::PublishedSet read_coco(const std::string& folder, const CocoImportOptions& options) {
-    require(!options.name.empty() && options.name.find_first_of("\n\r\t") == std::string::npos, "--name",
-            "give the published algorithm a name (one line), e.g. DIRECT");
-    require(!options.citation.empty(), "--citation", "say whose runs these are and where they were published");
+    published_files::check_options(options);
     std::error_code ec;
     require(fs::is_directory(folder, ec), folder,
             fs::exists(folder, ec) ? "not a folder (extract a .tgz first: pride reads the folder of .info files)"
@@ -186,9 +135,7 @@ storage::PublishedSet read_coco(const std::string& folder, const CocoImportOptio
     storage::PublishedSet set;
     set.source.algorithm = storage::kPublishedPrefix + options.name;
     set.source.format = "coco-bbob";
-    fs::path named = fs::absolute(folder).lexically_normal();
-    if (!named.has_filename()) named = named.parent_path();  // "DIRECT/"
-    set.source.source = options.source.value_or(named.filename().string());
+    set.source.source = options.source.value_or(published_files::folder_name(folder));
     set.source.citation = options.citation;
     std::map<std::tuple<std::int64_t, std::int64_t, std::int64_t>, std::int64_t> trials;  // (fid, dim, instance)
     for (const fs::path& info : infos) {
@@ -288,7 +235,7 @@ storage::PublishedSet read_coco(const std::string& folder, const CocoImportOptio
         }
     }
     require(!set.runs.empty(), folder, "holds no run (its .info files list none)");
-    set.source.sha256 = options.sha256.value_or(folder_sha256(folder));
+    set.source.sha256 = options.sha256.value_or(published_files::folder_sha256(folder));
     return set;
 }
 
@@ -296,17 +243,7 @@ storage::ImportSummary import_coco(const std::string& store, const std::string& 
                                    const CocoImportOptions& options, const std::vector<double>& precisions,
                                    const std::string& precisions_json) {
     // Everything read and checked before the store is opened: a bad data set leaves no trace.
-    const storage::PublishedSet set = read_coco(folder, options);
-    std::error_code ec;
-    const bool existed = fs::exists(store, ec);
-    try {
-        storage::Writer writer(store);
-        return writer.import_published(set, precisions, precisions_json);
-    } catch (...) {
-        if (!existed)  // a store made for this import and left empty: removed with SQLite's files
-            for (const char* suffix : {"", "-wal", "-shm", "-journal"}) fs::remove(store + suffix, ec);
-        throw;
-    }
+    return published_files::add_to_store(store, read_coco(folder, options), precisions, precisions_json);
 }
 
 }  // namespace pride::report

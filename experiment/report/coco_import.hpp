@@ -15,23 +15,15 @@
 // A .tgz is not read here (no archive library is a dependency of pride): extract it first, or use
 // Python's pride.import_coco, which extracts it with the standard library and records the archive's
 // own name and SHA-256.
-#include <cstddef>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "experiment/report/published_files.hpp"
 #include "experiment/storage/published.hpp"
 
 namespace pride::report {
 
-struct CocoImportOptions {
-    std::string name;      // the published algorithm: stored as "published:NAME"
-    std::string citation;  // who published the runs, where
-    // The source as recorded: by default the folder's name and the SHA-256 of its files (each
-    // file's path relative to the folder and content, in order of path); Python gives an
-    // archive's name and its own SHA-256 instead.
-    std::optional<std::string> source, sha256;
-};
+using CocoImportOptions = PublishedImportOptions;
 
 /// The runs of the COCO bbob data set in `folder` (every .info file under it). InputError, naming
 /// the file and line, for a missing file, a malformed line, a suite other than bbob, or a data file

@@ -30,6 +30,15 @@ double sample_std(std::span<const double> values) {
     const double m = mean_of(values);
     double s = 0.0;
     for (const double x : values) s += (x - m) * (x - m);
+    if (std::isinf(s) && std::isfinite(m)) {
+        // Squares beyond the largest double (deviations over 1e154: CEC 2017's F2 early in a run)
+        // overflow though the deviation does not: summed again in units of the largest deviation.
+        double scale = 0.0;
+        for (const double x : values) scale = std::max(scale, std::abs(x - m));
+        s = 0.0;
+        for (const double x : values) s += ((x - m) / scale) * ((x - m) / scale);
+        return scale * std::sqrt(s / static_cast<double>(values.size() - 1));
+    }
     return std::sqrt(s / static_cast<double>(values.size() - 1));
 }
 

@@ -1,11 +1,13 @@
 #pragma once
 // Published runs in a store: another author's results, read from the files they published (COCO's
-// data sets: experiment/report/coco_import.hpp), kept beside the runs pride made so that one report
+// data sets: experiment/report/coco_import.hpp; the CEC 2017 entrants' result files:
+// experiment/report/cec2017_import.hpp), kept beside the runs pride made so that one report
 // compares both. They are read-only rows: their algorithm's id is "published:NAME", a prefix no
 // campaign's algorithm or problem may take (campaign/prepare.cpp refuses it); a campaign never runs
 // them (they are none of its runs) and never changes them; the table `published` (store schema 7)
 // keeps their provenance: the source file, its SHA-256, a citation, the format it was read from.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +19,7 @@ inline constexpr const char* kPublishedPrefix = "published:";
 /// Where a published algorithm's runs come from (one row of table `published`).
 struct PublishedSource {
     std::string algorithm;  // "published:NAME"
-    std::string format;     // "coco-bbob"
+    std::string format;     // "coco-bbob", "cec2017"
     std::string source;     // the file or folder name it was read from (no path)
     std::string sha256;     // of the source file; of a folder, of its files (coco_import.hpp)
     std::string citation;
@@ -31,15 +33,24 @@ struct PublishedPoint {
 
 /// One published run, as its files give it.
 struct PublishedRun {
-    std::string suite;  // "bbob"
-    std::int64_t fid = 0, dim = 0, instance = 0;
-    std::int64_t trial = 0;  // 1, 2, ...: the repeats of one instance, in the files' order
-    double f_opt = 0;        // as the run's data gives it
+    std::string suite;                            // "bbob", "cec2017"
+    std::int64_t fid = 0, dim = 0, instance = 0;  // instance 0: a CEC function, which has none
+    std::int64_t trial = 0;                       // 1, 2, ...: the repeats of one instance, in the files' order
+    double f_opt = 0;                             // as the run's data gives it
     std::int64_t evaluations = 0;
     double final_precision = 0;  // best - f_opt at the end
     // Where the best value improved at COCO's target triggers (.dat) and at its evaluation triggers
     // (.tdat), each with evaluations increasing.
     std::vector<PublishedPoint> targets, values;
+    // Whether `targets` give the runtimes to the store's target precisions (COCO's .dat lines). A
+    // CEC file records errors at checkpoints only, which bound a runtime without giving it: its runs
+    // store none (target_hits "[]"), so the ERT and ECDFs leave them out.
+    bool runtimes = true;
+    // The CEC files' protocol: the evaluation budget (MaxFES) and the best f - f_opt after each of
+    // its checkpoints (the store's `checkpoints`, read by `pride report --format cec`); COCO's data
+    // sets record neither.
+    std::optional<std::int64_t> max_evaluations;
+    std::vector<PublishedPoint> checkpoints;
     std::string where;  // the file and line the run starts at, for messages
 };
 

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -81,7 +82,9 @@ ImportSummary Writer::add_published(const PublishedSet& set, const std::vector<d
                 "'published runs', '', NULL, ?, NULL, 'published runs only')");
             sqlite3_bind_text(u, 1, precisions_json.c_str(), -1, SQLITE_TRANSIENT);
             step_done(u, "cannot write the store");
-        } else if (stored != precisions_json) {
+        } else if (stored != precisions_json &&
+                   std::any_of(set.runs.begin(), set.runs.end(), [](const PublishedRun& r) { return r.runtimes; })) {
+            // Runs without runtimes (CEC files) record no target precisions: any store takes them.
             throw InputError(path_ + ": its runs record the target precisions " + stored.value_or("(none)") +
                              ", published runs are read at COCO's 51 (10^2 ... 10^-8); import into a new store; "
                              "nothing was imported");
@@ -119,15 +122,20 @@ ImportSummary Writer::add_published(const PublishedSet& set, const std::vector<d
                 ++summary.problems_matched;
             } else {
                 ProblemRow p;
-                p.id = fmt::format("{}{}-f{}-i{}-d{}", kPublishedPrefix, run.suite, run.fid, run.instance, run.dim);
+                // Named as a campaign names its problems: a CEC function has no instance (0).
+                p.id = run.instance == 0 ? fmt::format("{}{}-f{}-d{}", kPublishedPrefix, run.suite, run.fid, run.dim)
+                                         : fmt::format("{}{}-f{}-i{}-d{}", kPublishedPrefix, run.suite, run.fid,
+                                                       run.instance, run.dim);
                 p.type = fmt::format("{}-f{}", run.suite, run.fid);
                 p.dim = run.dim;
                 p.instance = run.instance;
                 p.f_opt = run.f_opt;
                 p.suite = run.suite;
                 p.fid = run.fid;
-                p.definition = fmt::format("published {} f{}, dimension {}, instance {}", run.suite, run.fid, run.dim,
-                                           run.instance);
+                p.definition = run.instance == 0
+                                   ? fmt::format("published {} f{}, dimension {}", run.suite, run.fid, run.dim)
+                                   : fmt::format("published {} f{}, dimension {}, instance {}", run.suite, run.fid,
+                                                 run.dim, run.instance);
                 p.digest = "published";
                 record_problem(p);
                 found.emplace(p.id, run.f_opt);
@@ -145,6 +153,11 @@ ImportSummary Writer::add_published(const PublishedSet& set, const std::vector<d
         r.solution = "[]";
         r.history = "[]";
         r.history_evaluations = "[]";
+        r.max_evaluations = run.max_evaluations;
+        r.checkpoints = trace_json(run.checkpoints, f_opt);
+        r.trace_targets = trace_json(run.targets, f_opt);
+        r.trace_evaluations = trace_json(run.values, f_opt);
+        if (!run.runtimes) continue;  // target_hits "[]": no runtimes known
         // COCO's runtime to each target: the first .dat line whose best is within it (as cocopp's
         // DataSet.detEvals reads the same lines).
         std::string hits = "[";
@@ -158,8 +171,6 @@ ImportSummary Writer::add_published(const PublishedSet& set, const std::vector<d
             hits += (k ? ", " : "") + (hit ? std::to_string(*hit) : std::string("null"));
         }
         r.target_hits = hits + "]";
-        r.trace_targets = trace_json(run.targets, f_opt);
-        r.trace_evaluations = trace_json(run.values, f_opt);
     }
     {
         AlgorithmRow a;

@@ -26,7 +26,7 @@ __all__ = [
     "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
     "exact", "pareto", "roughset", "Campaign", "read_store", "report", "hypervolume", "hypervolume_contributions",
     "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance", "attainment_surface", "front", "plan_front",
-    "cec2020rw_score", "import_coco", "register_algorithm", "BudgetExhausted", "AlgorithmError", "__version__",
+    "cec2020rw_score", "import_coco", "import_cec2017", "register_algorithm", "BudgetExhausted", "AlgorithmError", "__version__",
 ]
 
 
@@ -615,6 +615,26 @@ def import_coco(store, path, *, name, citation):
         if not _os.path.isdir(root):
             root = folder
         return _pride.import_coco(store, root, name, citation, _os.path.basename(path), digest.hexdigest())
+
+
+def import_cec2017(store, path, *, name, citation):
+    """Adds one CEC 2017 entrant's published results to the campaign store ``store`` (created when
+    absent) as the published algorithm ``published:NAME`` (``pride import STORE --cec2017 PATH``):
+    ``path`` is the entrant's folder of NAME_F_D.txt files (14 checkpoints x 51 runs' errors f - f*
+    per function and dimension, as the competition collected them). Each run is stored as pride's
+    CEC 2017 campaigns store theirs (MaxFES = 10000 D, the final error, the 14 checkpoints), on the
+    store's own problem where it has the function and dimension. ``citation`` says whose runs they
+    are. Returns a dict: algorithm, runs, problems_matched, problems_added. Bad input raises
+    ValueError naming the file and line; then nothing is written."""
+    store = _path("store", store)
+    path = _path("path", path)
+    name = _str("name", name)
+    citation = _str("citation", citation)
+    if not name or any(c in name for c in "\n\r\t"):
+        raise ValueError(f"name: expected the published algorithm's name (one line), got {name!r}")
+    if not citation:
+        raise ValueError("citation: expected whose runs these are and where they were published, got ''")
+    return _pride.import_cec2017(store, path, name, citation)
 
 
 def report(path, *, raw=False, dataframe=None, html=None):

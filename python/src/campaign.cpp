@@ -17,6 +17,7 @@
 #include "experiment/campaign/run.hpp"
 #include "experiment/campaign/toml.hpp"
 #include "experiment/html/report_page.hpp"
+#include "experiment/report/cec2017_import.hpp"
 #include "experiment/report/coco_import.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/storage/reader.hpp"
@@ -433,6 +434,22 @@ py::dict import_coco(const std::string& store, const std::string& folder, const 
                     py::arg("problems_matched") = s.problems_matched, py::arg("problems_added") = s.problems_added);
 }
 
+/// pride.import_cec2017's work: a CEC 2017 entrant's folder into a store (experiment/report/cec2017_import.hpp).
+py::dict import_cec2017(const std::string& store, const std::string& folder, const std::string& name,
+                        const std::string& citation) {
+    report::PublishedImportOptions options;
+    options.name = name;
+    options.citation = citation;
+    storage::ImportSummary s;
+    {
+        py::gil_scoped_release release;
+        s = report::import_cec2017(store, folder, options, campaign::coco_precisions(),
+                                   engine::json_array(campaign::coco_precisions()));
+    }
+    return py::dict(py::arg("algorithm") = std::string(storage::kPublishedPrefix) + name, py::arg("runs") = s.runs,
+                    py::arg("problems_matched") = s.problems_matched, py::arg("problems_added") = s.problems_added);
+}
+
 py::dict report_data(const std::vector<std::string>& paths, bool raw) {
     report::ReportData r;
     {
@@ -528,6 +545,8 @@ void bind_campaign(py::module_& m) {
     m.def("read_store", &read_store, py::call_guard<Call>(), py::arg("path"));
     m.def("import_coco", &import_coco, py::call_guard<Call>(), py::arg("store"), py::arg("folder"), py::arg("name"),
           py::arg("citation"), py::arg("source"), py::arg("sha256"));
+    m.def("import_cec2017", &import_cec2017, py::call_guard<Call>(), py::arg("store"), py::arg("folder"),
+          py::arg("name"), py::arg("citation"));
     m.def("report", &report_data, py::call_guard<Call>(), py::arg("paths"), py::arg("raw") = false);
     m.def("report_html", &report_html, py::call_guard<Call>(), py::arg("path"), py::arg("dir"), py::arg("raw") = false);
 }

@@ -79,6 +79,14 @@ def coco_data_set(tmp_path):
     return str(folder)
 
 
+def cec2017_entrant(tmp_path):
+    """The smallest CEC 2017 entrant's folder: F1 in 10-D, one run's errors at the 14 checkpoints."""
+    folder = tmp_path / "cec2017"
+    folder.mkdir(exist_ok=True)
+    (folder / "x_1_10.txt").write_text("".join(f"{14 - k}.5\n" for k in range(14)))
+    return str(folder)
+
+
 # name -> (call(**overrides), {parameter: wrong values}); `call` passes valid values for the rest.
 def api(tmp_path):
     mfile = map_file(tmp_path)
@@ -140,6 +148,10 @@ def api(tmp_path):
                                                          "path": coco_data_set(tmp_path), "name": "x",
                                                          "citation": "c", **o}),
                         dict(store=PATH, path=PATH, name=TEXT, citation=TEXT)),
+        "import_cec2017": (lambda **o: pride.import_cec2017(**{"store": str(tmp_path / "j.sqlite"),
+                                                               "path": cec2017_entrant(tmp_path), "name": "x",
+                                                               "citation": "c", **o}),
+                           dict(store=PATH, path=PATH, name=TEXT, citation=TEXT)),
         "Result": (lambda **o: pride.Result(**o), dict(fields=[None, 5, "ab", [1, 2]])),
         "register_algorithm": (lambda **o: pride.register_algorithm(**{"name": "api-types", "function": lambda p, s: None,
                                                                        **o}),
