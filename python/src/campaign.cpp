@@ -415,6 +415,23 @@ py::dict read_store(const py::object& store) {
                     py::arg("precisions") = precisions, py::arg("problems") = problems, py::arg("runs") = runs);
 }
 
+/// What pride.import_coco and pride.import_cec2017 return: `import` (report::import_coco or
+/// report::import_cec2017) run without the GIL, and the summary of what it added.
+py::dict imported(storage::ImportSummary (*import)(const std::string&, const std::string&,
+                                                   const report::PublishedImportOptions&, const std::vector<double>&,
+                                                   const std::string&),
+                  const std::string& store, const std::string& folder, const report::PublishedImportOptions& options) {
+    storage::ImportSummary s;
+    {
+        py::gil_scoped_release release;
+        s = import(store, folder, options, campaign::coco_precisions(),
+                   engine::json_array(campaign::coco_precisions()));
+    }
+    return py::dict(py::arg("algorithm") = std::string(storage::kPublishedPrefix) + options.name,
+                    py::arg("runs") = s.runs, py::arg("problems_matched") = s.problems_matched,
+                    py::arg("problems_added") = s.problems_added);
+}
+
 /// pride.import_coco's work: a COCO data set's folder into a store (experiment/report/coco_import.hpp).
 py::dict import_coco(const std::string& store, const std::string& folder, const std::string& name,
                      const std::string& citation, const std::optional<std::string>& source,
@@ -424,14 +441,7 @@ py::dict import_coco(const std::string& store, const std::string& folder, const 
     options.citation = citation;
     options.source = source;
     options.sha256 = sha256;
-    storage::ImportSummary s;
-    {
-        py::gil_scoped_release release;
-        s = report::import_coco(store, folder, options, campaign::coco_precisions(),
-                                engine::json_array(campaign::coco_precisions()));
-    }
-    return py::dict(py::arg("algorithm") = std::string(storage::kPublishedPrefix) + name, py::arg("runs") = s.runs,
-                    py::arg("problems_matched") = s.problems_matched, py::arg("problems_added") = s.problems_added);
+    return imported(&report::import_coco, store, folder, options);
 }
 
 /// pride.import_cec2017's work: a CEC 2017 entrant's folder into a store (experiment/report/cec2017_import.hpp).
@@ -440,14 +450,7 @@ py::dict import_cec2017(const std::string& store, const std::string& folder, con
     report::PublishedImportOptions options;
     options.name = name;
     options.citation = citation;
-    storage::ImportSummary s;
-    {
-        py::gil_scoped_release release;
-        s = report::import_cec2017(store, folder, options, campaign::coco_precisions(),
-                                   engine::json_array(campaign::coco_precisions()));
-    }
-    return py::dict(py::arg("algorithm") = std::string(storage::kPublishedPrefix) + name, py::arg("runs") = s.runs,
-                    py::arg("problems_matched") = s.problems_matched, py::arg("problems_added") = s.problems_added);
+    return imported(&report::import_cec2017, store, folder, options);
 }
 
 py::dict report_data(const std::vector<std::string>& paths, bool raw) {
