@@ -175,7 +175,6 @@ const std::vector<NamedItem>& constrained_problems() {
                                        counts(p.constraint_counts()), p.best_known_value(), p.dimension())});
         }
         for (int k = 1; k <= continuous::cec2020rw::kProblems; ++k) {
-            if (!continuous::cec2020rw::implemented(k)) continue;  // RC24: see cec2020rw.hpp
             const continuous::cec2020rw::Problem p(k);
             out.push_back({fmt::format("cec2020rw-rc{:02}", k),
                            fmt::format("CEC 2020 real-world RC{:02} (Kumar et al. 2020): {}; best known {} (dim = {})",

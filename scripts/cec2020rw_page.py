@@ -5,7 +5,8 @@
         runs every configuration of CONFIGS on every CEC 2020 real-world problem pride has, at the
         competition's budgets with seeds 1-25 (`pride run`, two at a time), writes the final best
         f, violation and first feasible evaluation of each run to docs/results/data/cec2020rw.csv,
-        then the page. About 30 min per configuration on two cores.
+        then the page. Runs already in that file are kept, not run again (delete it to run them
+        all: about 80 min per configuration on two cores).
     PRIDE_DATA=... PYTHONPATH=build/python /usr/bin/python3 scripts/cec2020rw_page.py render
         rewrites the page's generated blocks from the data and the entrants' published results.
     PRIDE_DATA=... PYTHONPATH=build/python /usr/bin/python3 scripts/cec2020rw_page.py check
@@ -15,7 +16,8 @@
 The published results are the eight entrants' workbooks of the competition ($PRIDE_DATA/
 cec2020-rw-results/ranking/*.xlsx: Sheet1 the final f, Sheet2 the violation, 25 runs x 57
 problems) and its scores (Scoring.txt), read where they are, never copied. The scoring is
-pride's (pride.cec2020rw_score, experiment/report/cec2020rw_score.hpp: the guidelines' eq. 4-9).
+pride's (pride.cec2020rw_score, experiment/report/cec2020rw_score.hpp: the guidelines' eq. 4-9, as
+the organisers' ranking script Score.m computes them).
 """
 import csv
 import json
@@ -41,10 +43,15 @@ CONFIGS = {
 }
 # The entrants' workbooks, by the names the competition's repository gives them.
 ENTRANTS = ["BiPop", "COLSHADE", "DEQL", "EnMODE", "FCHA", "SASS", "VMCH", "sCMAgES"]
-# The 57 problems' dimensions (the guidelines' Table 4; RC24's too, which pride does not have).
+# Scoring.txt's code of each workbook: the organisers' ranking script (Score.m, in "Code used For
+# Ranking.zip" of P-N-Suganthan/2020-RW-Constrained-Optimisation) reads the workbooks in the order
+# VMCH, sCMAgES, SASS, EnMODE, COLSHADE, BiPop, FCHA, DEQL and prints these codes in the same order.
+CODES = {"VMCH": "E24594", "sCMAgES": "COM108", "SASS": "COM109", "EnMODE": "E24363", "COLSHADE": "E24586",
+         "BiPop": "E24443", "FCHA": "E24191", "DEQL": "E24537"}
+# The 57 problems' dimensions (the guidelines' Table 4).
 DIMS = [9, 11, 7, 6, 9, 38, 48, 2, 3, 3, 7, 7, 5, 10, 7, 14, 3, 4, 4, 2, 5, 9, 5, 7, 4, 22, 10, 10, 4, 3, 4, 5, 30,
         118, 153, 158, 126, 126, 126, 76, 74, 86, 86, 30, 25, 25, 25, 30, 30, 30, 59, 59, 59, 59, 64, 64, 64]
-MISSING = {24}  # RC24: not in pride (problems/continuous/cec2020rw/cec2020rw.hpp says why)
+MISSING = set()  # problems pride does not have (none)
 SHEET = {"m": "http://schemas.openxmlformats.org/spreadsheetml/2006/main"}
 
 
@@ -60,17 +67,20 @@ def results_folder():
 
 
 def workbook_sheet(path, number):
-    """The 25 x 57 values of one sheet, runs by problems (an .xlsx is zipped XML; cells A1 .. BE25)."""
-    root = ET.fromstring(zipfile.ZipFile(path).read(f"xl/worksheets/sheet{number}.xml"))
+    """The 25 x 57 values of one sheet, runs by problems (an .xlsx is zipped XML; cells A1 .. BE25).
+    A text cell (one workbook writes "nan" where it has no result) is NaN, as MATLAB's xlsread,
+    which the competition's script used, reads it; an empty cell is NaN too."""
+    book = zipfile.ZipFile(path)
     rows = []
-    for row in root.find("m:sheetData", SHEET):
+    for row in ET.fromstring(book.read(f"xl/worksheets/sheet{number}.xml")).find("m:sheetData", SHEET):
         values = [float("nan")] * 57
         for cell in row:
             column = 0
             for letter in re.match(r"[A-Z]+", cell.get("r")).group(0):
                 column = column * 26 + ord(letter) - 64
             v = cell.find("m:v", SHEET)
-            if v is not None and column <= 57:
+            # t="s" (a shared string), "str" or "inlineStr": text; no t or t="n": a number.
+            if v is not None and column <= 57 and cell.get("t", "n") == "n":
                 values[column - 1] = float(v.text)
         rows.append(values)
     return rows
@@ -97,9 +107,18 @@ def run_all(pride=REPO / "build" / "cli" / "pride", jobs=2):
     problems = sorted(int(m.group(1)) for m in (re.match(r"cec2020rw-rc(\d+)$", p["name"]) for p in listed) if m)
     assert set(range(1, 58)) - set(problems) == MISSING, problems
     todo = [(label, k, s) for label in CONFIGS for k in problems for s in range(1, RUNS + 1)]
+    done = {}
+    if (DATA / "cec2020rw.csv").is_file():
+        with open(DATA / "cec2020rw.csv", newline="") as fh:
+            for r in csv.DictReader(fh):
+                done[(r["config"], int(r["problem"][2:]), int(r["seed"]))] = (
+                    float(r["f"]), float(r["violation"]), int(r["first_feasible"]) if r["first_feasible"] else None,
+                    int(r["evaluations"]))
 
     def run(job):
         label, k, seed = job
+        if job in done:
+            return done[job]
         out = subprocess.check_output([str(pride), "run", *CONFIGS[label], "--problem", f"cec2020rw-rc{k:02}",
                                        "--dim", str(DIMS[k - 1]), "--evals", str(budget(DIMS[k - 1])), "--seed",
                                        str(seed), "--json"], text=True)
@@ -137,27 +156,41 @@ def eight_digits(values):
 
 
 def score(pride, results, problems):
+    """PM of `results` {name: (f, violation)} on `problems`, each run list taken in the order given,
+    as the competition's script reads the workbooks (rows 1 and 13: best and median)."""
     return pride.cec2020rw_score({n: ([f[j] for j in problems], [v[j] for j in problems])
-                                  for n, (f, v) in results.items()}, [DIMS[j] for j in problems])
+                                  for n, (f, v) in results.items()}, [DIMS[j] for j in problems], order="given")
+
+
+def in_guidelines_order(runs):
+    """pride's runs (seed order) sorted as the entrants sorted their workbooks: the guidelines' order."""
+    f, v = runs
+    out = ([], [])
+    for j in range(57):
+        pairs = sorted(zip(f[j], v[j]), key=lambda p: (p[1] != 0, p[0] if p[1] == 0 else p[1]))
+        out[0].append([p[0] for p in pairs])
+        out[1].append([p[1] for p in pairs])
+    return out
 
 
 def published_block(pride, folder):
-    """The eight entrants scored by pride from their workbooks, and Scoring.txt's rows."""
+    """The eight entrants scored by pride from their workbooks, beside Scoring.txt's rows."""
     books = {n: entrant(folder, n) for n in ENTRANTS}
     ours = score(pride, books, range(57))
-    rows = [[n, f"{s['best']:.4f}", f"{s['mean']:.4f}", f"{s['median']:.4f}", f"{s['total']:.4f}", s["rank"]]
-            for n, s in sorted(ours.items(), key=lambda kv: kv[1]["total"])]
-    theirs = [[code, f"{a:.4f}", f"{b:.4f}", f"{c:.4f}", f"{t:.4f}", rank]
-              for code, a, b, c, t, rank in sorted(published_scores(folder), key=lambda r: r[5])]
-    header = ["best", "mean", "median", "PM", "rank"]
-    return ("Scored by pride from the workbooks:\n\n" + rp.table(["entrant"] + header, rows, "lrrrrr") +
-            "\n\nThe competition's scores (`Scoring.txt`):\n\n" + rp.table(["code"] + header, theirs, "lrrrrr"))
+    theirs = {row[0]: row for row in published_scores(folder)}
+    rows = []
+    for n, s in sorted(ours.items(), key=lambda kv: kv[1]["total"]):
+        _, a, b, c, t, rank = theirs[CODES[n]]
+        rows.append([n, f"{s['best']:.4f}", f"{s['mean']:.4f}", f"{s['median']:.4f}", f"{s['total']:.4f}", s["rank"],
+                     CODES[n], f"{a:.4f}", f"{b:.4f}", f"{c:.4f}", f"{t:.4f}", rank])
+    return rp.table(["entrant", "best", "mean", "median", "PM", "rank", "code", "best", "mean", "median", "PM",
+                     "rank"], rows, "lrrrrrlrrrrr")
 
 
 def score_block(pride, folder, runs):
     problems = [j for j in range(57) if j + 1 not in MISSING]
     results = {n: entrant(folder, n) for n in ENTRANTS}
-    results.update({f"pride {label}": fv for label, fv in runs.items()})
+    results.update({f"pride {label}": in_guidelines_order(fv) for label, fv in runs.items()})
     s = score(pride, results, problems)
     rows = [[n, f"{x['best']:.4f}", f"{x['mean']:.4f}", f"{x['median']:.4f}", f"{x['total']:.4f}", x["rank"]]
             for n, x in sorted(s.items(), key=lambda kv: (kv[1]["total"], kv[0]))]

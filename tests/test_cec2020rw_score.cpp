@@ -5,7 +5,9 @@
 #include <fmt/format.h>
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -109,10 +111,56 @@ TEST_CASE("cec2020rw score: no feasible solution, equal values, bad input", "[ce
     // Errors name what.
     CHECK_THROWS_WITH(summarise(std::vector<Outcome>{}, "colshade on RC01"),
                       Contains("colshade on RC01") && Contains("no runs"));
-    CHECK_THROWS_WITH(summarise(std::vector<Outcome>{{std::nan(""), 0}}, "RC02"),
+    CHECK_THROWS_WITH(summarise(std::vector<Outcome>{{std::numeric_limits<double>::infinity(), 0}}, "RC02"),
                       Contains("RC02") && Contains("finite"));
     CHECK_THROWS_WITH(summarise(std::vector<Outcome>{{1, -1}}, "RC03"), Contains("RC03"));
     CHECK_THROWS_AS(score(s, std::vector<std::int64_t>{1, 2}), pride::InputError);
+}
+
+TEST_CASE("cec2020rw score: no result (NaN) counts as MATLAB counts it in the organisers' script",
+          "[cec2020rw-score]") {
+    // Two problems (D = 5 and D = 60, weights 0.008 and 0.032). C has no result on the first (NaN f
+    // and violation, as the text "nan" of an entrant's workbook reads): it is left out of that
+    // problem's worst feasible f and range, and scores 1 there in every kind.
+    const double nan = std::nan("");
+    const std::vector<Outcome> a1{{1, 0}}, b1{{3, 0}}, c1{{nan, nan}}, a2{{5, 0}}, b2{{5, 0}}, c2{{1, 2}};
+    const Summary none = summarise(c1, "c");
+    CHECK(std::isnan(none.best.f));
+    CHECK(std::isnan(none.mean.violation));
+    std::vector<std::vector<Summary>> s{{summarise(a1, "a"), summarise(a2, "a")},
+                                        {summarise(b1, "b"), summarise(b2, "b")},
+                                        {none, summarise(c2, "c")}};
+    const std::vector<std::int64_t> dims{5, 60};
+    auto scores = score(s, dims);
+    // Problem 1: A 0, B 1 (range 1..3), C 1. Problem 2: worst feasible f 5, so C's 5 + 2 = 7:
+    // A and B 0, C 1.
+    CHECK(scores[0].best == 0);
+    CHECK(scores[1].best == Approx(0.008));
+    CHECK(scores[2].best == Approx(0.008 + 0.032));
+    CHECK(scores[2].total == Approx(0.040));
+    CHECK(ranks(scores) == std::vector<int>{1, 2, 3});
+    // A NaN f with a violation (the workbook's 12345 beside "nan") is infeasible, so it counts as
+    // the worst feasible f plus the violation, a number: on problem 1, 3 + 12345 widens the range.
+    s[2][0] = summarise(std::vector<Outcome>{{nan, 12345}}, "c");
+    scores = score(s, dims);
+    CHECK(scores[1].best == Approx(0.008 * 2.0 / 12347.0));
+    CHECK(scores[2].best == Approx(0.040));
+    // A feasible NaN f is left out of the worst feasible f and scores 1.
+    s[2][0] = summarise(std::vector<Outcome>{{nan, 0}}, "c");
+    scores = score(s, dims);
+    CHECK(scores[1].best == Approx(0.008));
+    CHECK(scores[2].best == Approx(0.040));
+    // Everyone else equal on a problem: they add 0 there, the one without a result still 1.
+    s = {{summarise(a1, "a")}, {summarise(a1, "a")}, {none}};
+    const auto equal = score(s, std::vector<std::int64_t>{5});
+    CHECK(equal[0].total == 0);
+    CHECK(equal[2].total == Approx(0.008));
+    // In the footnote's order a run with a NaN comes last; in the order given it stays where it is.
+    const std::vector<Outcome> runs{{nan, 0}, {4, 0}, {2, 1}};
+    CHECK(summarise(runs, "r").best.f == 4);
+    CHECK(summarise(runs, "r").median.violation == 1);
+    CHECK(std::isnan(summarise(runs, "r", pride::report::cec2020rw::Order::given).best.f));
+    CHECK(std::isnan(summarise(runs, "r").mean.f));
 }
 
 namespace {
@@ -144,17 +192,17 @@ TEST_CASE("cec2020rw suite: [[suite]] expands to pride's problems with the compe
     // The guidelines' eq. 1 and 25 runs.
     CHECK(evaluations == std::vector<std::int64_t>{100000, 100000, 1000000});
     CHECK(c.seeds == 25);
-    // Without `functions`: every problem pride has, RC24 left out.
+    // Without `functions`: all 57.
     auto all = pride::campaign::parse_campaign(
         dir.write("a.toml",
                   "name = \"rw\"\nseeds = 2\n[budget]\nevaluations = 10\n[[suite]]\nname = "
                   "\"cec2020rw\"\nid = \"rw\"\n[[algorithm]]\nid = \"de\"\ntype = \"de\"\n"));
-    REQUIRE(all.problems.size() == 56);
-    CHECK(all.problems[22].id == "rw-rc23");
-    CHECK(all.problems[23].id == "rw-rc25");
+    REQUIRE(all.problems.size() == 57);
+    CHECK(all.problems[23].id == "rw-rc24");
+    CHECK(all.problems[56].id == "rw-rc57");
 }
 
-TEST_CASE("cec2020rw suite: dimensions, instances and problems pride lacks are refused by pride bench",
+TEST_CASE("cec2020rw suite: dimensions, instances and problems outside the suite are refused by pride bench",
           "[cec2020rw-score]") {
     const pride::test::TempDir dir;
     const auto refused = [&](const std::string& body, const std::vector<std::string>& words) {
@@ -168,8 +216,6 @@ TEST_CASE("cec2020rw suite: dimensions, instances and problems pride lacks are r
     refused("[[suite]]\nname = \"cec2020rw\"\ndimensions = [10]\n",
             {"c.toml:7:14: 'dimensions': each cec2020rw problem has one dimension of its own and no instances"});
     refused("[[suite]]\nname = \"cec2020rw\"\ninstances = [1]\n", {"c.toml:7:13: 'instances'"});
-    refused("[[suite]]\nname = \"cec2020rw\"\nfunctions = [1, 24]\n",
-            {"c.toml:7:13: problem 24 of the cec2020rw suite is not in pride"});
     refused("[[suite]]\nname = \"cec2020rw\"\nfunctions = [58]\n",
             {"c.toml:7:13: problem 58 is not in the cec2020rw suite (1-57)"});
     refused("[[suite]]\nname = \"cec2020rw\"\nfunctions = []\n", {"c.toml:5", "must not be empty"});

@@ -260,8 +260,8 @@ void add_cec_suite(std::vector<CampaignProblem>& out, const std::string& file, c
         }
 }
 
-/// [[suite]] name = "cec2020rw": the CEC 2020 real-world constrained problems (RC01-RC57 but RC24,
-/// which pride does not have), with `functions` (default: every one pride has); each problem has its
+/// [[suite]] name = "cec2020rw": the CEC 2020 real-world constrained problems RC01-RC57, with
+/// `functions` (default: all 57); each problem has its
 /// own dimension (the key `dimensions` is refused) and no instances. Ids "PREFIX-rcNN".
 void add_rw_suite(std::vector<CampaignProblem>& out, const std::string& file, const toml::table& t,
                   Expansion& expansion) {
@@ -275,16 +275,13 @@ void add_rw_suite(std::vector<CampaignProblem>& out, const std::string& file, co
                                                   key));
     const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : std::string("cec2020rw");
     std::vector<std::int64_t> functions;
-    for (int k = 1; k <= rw::kProblems; ++k)
-        if (rw::implemented(k)) functions.push_back(k);
+    for (int k = 1; k <= rw::kProblems; ++k) functions.push_back(k);
     if (const auto* n = t.get("functions")) functions = need_integers(file, *n, "functions");
     if (functions.empty()) fail(where, "the lists of a [[suite]] must not be empty");
     for (const std::int64_t f : functions)
-        if (f < 1 || f > rw::kProblems || !rw::implemented(static_cast<int>(f)))
+        if (f < 1 || f > rw::kProblems)
             fail(at_column(file, *t.get("functions")),
-                 f >= 1 && f <= rw::kProblems
-                     ? fmt::format("problem {} of the cec2020rw suite is not in pride (see pride list)", f)
-                     : fmt::format("problem {} is not in the cec2020rw suite (1-{})", f, rw::kProblems));
+                 fmt::format("problem {} is not in the cec2020rw suite (1-{})", f, rw::kProblems));
     double memory = 0.0;
     std::vector<std::int64_t> dims;
     for (const std::int64_t f : functions) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "experiment/report/statistics.hpp"
 #include "framework/error.hpp"
@@ -17,28 +18,35 @@ const Outcome& of(const Summary& s, Kind k) {
     return k == Kind::best ? s.best : k == Kind::mean ? s.mean : s.median;
 }
 
-/// sum_j w_j A^kind_ij (eq. 6-9) for every algorithm i.
+/// sum_j w_j A^kind_ij (eq. 6-9) for every algorithm i, NaNs as MATLAB treats them (the header says).
 std::vector<double> weighted_sum(const std::vector<std::vector<Summary>>& summaries, std::span<const std::int64_t> dims,
                                  Kind kind) {
     std::vector<double> sums(summaries.size(), 0.0), adjusted(summaries.size());
     for (std::size_t j = 0; j < dims.size(); ++j) {
-        // Eq. 6's f^{F,kind}_{worst,j}: the worst feasible f among the algorithms' solutions, or 0.
+        // Eq. 6's f^{F,kind}_{worst,j}: the worst feasible f among the algorithms' solutions (NaN when
+        // every feasible one has a NaN f); without any feasible solution the violations alone count.
         bool any = false;
-        double worst = 0.0;
+        double worst = std::numeric_limits<double>::quiet_NaN();
         for (const auto& row : summaries) {
             const Outcome& o = of(row[j], kind);
             if (o.violation != 0.0) continue;
-            worst = any ? std::max(worst, o.f) : o.f;
             any = true;
+            if (!std::isnan(o.f)) worst = std::isnan(worst) ? o.f : std::max(worst, o.f);
         }
+        bool seen = false;
+        double lo = 0.0, hi = 0.0;
         for (std::size_t i = 0; i < summaries.size(); ++i) {
             const Outcome& o = of(summaries[i][j], kind);
-            adjusted[i] = o.violation > 0.0 ? worst + o.violation : o.f;
+            adjusted[i] = !any ? o.violation : o.violation == 0.0 ? o.f : worst + o.violation;
+            if (std::isnan(adjusted[i])) continue;
+            lo = seen ? std::min(lo, adjusted[i]) : adjusted[i];
+            hi = seen ? std::max(hi, adjusted[i]) : adjusted[i];
+            seen = true;
         }
-        const auto [lo, hi] = std::minmax_element(adjusted.begin(), adjusted.end());
-        if (*hi == *lo) continue;
-        for (std::size_t i = 0; i < summaries.size(); ++i)
-            sums[i] += weight(dims[j]) * (adjusted[i] - *lo) / (*hi - *lo);
+        for (std::size_t i = 0; i < summaries.size(); ++i) {
+            const double normalised = std::isnan(adjusted[i]) ? 1.0 : hi == lo ? 0.0 : (adjusted[i] - lo) / (hi - lo);
+            sums[i] += weight(dims[j]) * normalised;
+        }
     }
     return sums;
 }
@@ -46,19 +54,23 @@ std::vector<double> weighted_sum(const std::vector<std::vector<Summary>>& summar
 }  // namespace
 
 bool precedes(const Outcome& a, const Outcome& b) {
+    const bool ra = !std::isnan(a.f) && !std::isnan(a.violation), rb = !std::isnan(b.f) && !std::isnan(b.violation);
+    if (ra != rb) return ra;
+    if (!ra) return false;
     const bool fa = a.violation == 0.0, fb = b.violation == 0.0;
     if (fa != fb) return fa;
     return fa ? a.f < b.f : a.violation < b.violation;
 }
 
-Summary summarise(std::span<const Outcome> runs, const std::string& what) {
+Summary summarise(std::span<const Outcome> runs, const std::string& what, Order order) {
     require(!runs.empty(), what, "no runs");
     for (const Outcome& o : runs)
-        require(std::isfinite(o.f) && std::isfinite(o.violation) && o.violation >= 0.0, what,
-                fmt::format("a run's f {} and violation {}: expected finite numbers, the violation >= 0", o.f,
-                            o.violation));
+        require(!std::isinf(o.f) && !std::isinf(o.violation) && !(o.violation < 0.0), what,
+                fmt::format("a run's f {} and violation {}: expected finite numbers (NaN for no result), the "
+                            "violation >= 0",
+                            o.f, o.violation));
     std::vector<Outcome> sorted(runs.begin(), runs.end());
-    std::stable_sort(sorted.begin(), sorted.end(), precedes);
+    if (order == Order::guidelines) std::stable_sort(sorted.begin(), sorted.end(), precedes);
     std::vector<double> f, v;
     for (const Outcome& o : runs) f.push_back(o.f), v.push_back(o.violation);
     Summary s;

@@ -12,12 +12,25 @@
 //   feasible, else the worst feasible f among the algorithms' solutions of that kind on problem j,
 //   or 0 when none is feasible, plus nu), normalised over the algorithms (eq. 7-9). Lower is better.
 //
-// Where the guidelines are silent, pride decides (and the competition's own ranking script is not
-// public, so these choices are checked only against its published scores, docs/results/cec2020rw.md):
-// - The "mean solution" is the mean f and the mean nu of the runs; the "median solution" is the run at
-//   position floor((n - 1) / 2) in the footnote's order (the 13th of 25).
-// - A problem on which every algorithm has the same adjusted value adds 0 (eq. 7 would divide 0 by 0).
-// - A solution is feasible when nu = 0 (eq. 2 already counts an equality within 1e-4 as met).
+// The organisers' ranking script (Score.m, in "Code used For Ranking.zip" of the competition's
+// repository P-N-Suganthan/2020-RW-Constrained-Optimisation) computes the same, and pride's scoring of
+// the published workbooks equals its output (Scoring.txt) in every printed digit when the runs are
+// taken in the workbooks' order (docs/results/cec2020rw.md). What pride decides where the guidelines
+// are silent, each as the script does:
+// - The "mean solution" is the mean f and the mean nu of the runs.
+// - The "best" and "median" solutions are the first run and the one at floor((n - 1) / 2) (the 13th of
+//   25) in the footnote's order (Order::guidelines, the default), or in the order given
+//   (Order::given: the script takes rows 1 and 13 of each workbook, which their authors sorted,
+//   nearly always as the footnote says).
+// - A solution is feasible when nu = 0 exactly (eq. 2 already counts an equality within 1e-4 as met).
+// - A problem on which every algorithm has the same adjusted value adds 0 (eq. 7 would divide 0 by 0;
+//   the script divides by 1e-8).
+// - No result: one entrant's workbook holds the text "nan" where it has none (the script reads NaN)
+//   and 12345 as the violation of two of those. A NaN is what MATLAB makes of it: a mean over a NaN
+//   is NaN; a NaN nu is infeasible; a NaN f is left out of the worst feasible f; an adjusted value
+//   that is NaN is left out of the minimum and maximum and scores 1, the worst. (The script scores
+//   1 only for that entrant, the only one with NaNs; pride does for any.) In the footnote's order a
+//   run with a NaN comes last.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -31,8 +44,12 @@ struct Outcome {
     double violation = 0;
 };
 
-/// The guidelines' order: feasible before infeasible, feasible by f, infeasible by nu.
+/// The guidelines' order: feasible before infeasible, feasible by f, infeasible by nu; a run with a
+/// NaN after all others.
 bool precedes(const Outcome& a, const Outcome& b);
+
+/// Which runs are the best and the median: the footnote's order, or the order given.
+enum class Order { guidelines, given };
 
 /// Section 3.1's statistics of one algorithm's runs on one problem.
 struct Summary {
@@ -43,8 +60,8 @@ struct Summary {
 };
 
 /// The statistics of `runs`: InputError naming `what` when there are none, or when an f or a
-/// violation is not a finite number or a violation is negative.
-Summary summarise(std::span<const Outcome> runs, const std::string& what);
+/// violation is infinite or a violation is negative (NaN is allowed: no result).
+Summary summarise(std::span<const Outcome> runs, const std::string& what, Order order = Order::guidelines);
 
 /// Eq. 5: the weight of a problem of `dim` variables (0.008 up to 10, 0.016 up to 30, 0.024 up
 /// to 50, 0.032 up to 150, 0.040 above).

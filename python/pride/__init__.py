@@ -384,14 +384,17 @@ def pareto(grid, start, goal, *, objectives="length,turns", corner_cutting=False
     return _pride.pareto(_grid(grid), start, goal, objectives, _bool("corner_cutting", corner_cutting))
 
 
-def cec2020rw_score(results, dims):
+def cec2020rw_score(results, dims, order="guidelines"):
     """The CEC 2020 real-world constrained competition's ranking (Kumar et al. 2020, the guidelines'
-    eq. 4-9) of ``results``, a dict {name: (f, violation)} whose arrays are (problems, runs): each
-    run's final best f and its violation (0 when feasible), one row per problem, ``dims`` the
-    problems' dimensions (they set eq. 5's weights). Returns {name: {"best", "mean", "median",
-    "total", "rank"}}: the three weighted sums of normalised adjusted values, PM (``total``, lower is
-    better) and its rank. Works on published results as on pride's (docs/constraints.md)."""
-    return _pride.cec2020rw_score(results, dims)
+    eq. 4-9, as the organisers' ranking script computes them) of ``results``, a dict {name: (f,
+    violation)} whose arrays are (problems, runs): each run's final best f and its violation (0 when
+    feasible; NaN where there is no result), one row per problem, ``dims`` the problems' dimensions
+    (they set eq. 5's weights). The best and median runs are taken in the guidelines' order
+    (``order="guidelines"``) or in the order given (``order="given"``, as the script reads the
+    entrants' sorted workbooks). Returns {name: {"best", "mean", "median", "total", "rank"}}: the
+    three weighted sums of normalised adjusted values, PM (``total``, lower is better) and its rank.
+    Works on published results as on pride's (docs/constraints.md)."""
+    return _pride.cec2020rw_score(results, dims, _str("order", order))
 
 
 def hypervolume(points, ref):

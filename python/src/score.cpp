@@ -14,7 +14,11 @@ namespace {
 namespace rw = report::cec2020rw;
 
 /// results: {name: (f, violation)}, each a (problems, runs) array; dims: one integer per problem.
-py::dict cec2020rw_score(const py::object& results, const py::object& dims) {
+py::dict cec2020rw_score(const py::object& results, const py::object& dims, const py::object& order) {
+    if (!py::isinstance<py::str>(order)) throw py::type_error("order: expected 'guidelines' or 'given'");
+    const std::string how = order.cast<std::string>();
+    require(how == "guidelines" || how == "given", "order", "expected 'guidelines' or 'given', got '" + how + "'");
+    const auto run_order = how == "given" ? rw::Order::given : rw::Order::guidelines;
     if (!py::isinstance<py::dict>(results))
         throw py::type_error("results: expected a dict {name: (f, violation)}, got " +
                              std::string(py::str(py::type::of(results).attr("__name__"))));
@@ -52,7 +56,7 @@ py::dict cec2020rw_score(const py::object& results, const py::object& dims) {
         std::vector<rw::Outcome> outcomes(static_cast<std::size_t>(runs));
         for (py::ssize_t j = 0; j < f.shape(0); ++j) {
             for (py::ssize_t r = 0; r < runs; ++r) outcomes[static_cast<std::size_t>(r)] = {f.at(j, r), v.at(j, r)};
-            summaries.back().push_back(rw::summarise(outcomes, fmt::format("{}, problem {}", where, j)));
+            summaries.back().push_back(rw::summarise(outcomes, fmt::format("{}, problem {}", where, j), run_order));
         }
     }
     const auto scores = rw::score(summaries, d);
@@ -73,7 +77,7 @@ py::dict cec2020rw_score(const py::object& results, const py::object& dims) {
 }  // namespace
 
 void bind_score(py::module_& m) {
-    m.def("cec2020rw_score", &cec2020rw_score, py::arg("results"), py::arg("dims"));
+    m.def("cec2020rw_score", &cec2020rw_score, py::arg("results"), py::arg("dims"), py::arg("order"));
 }
 
 }  // namespace pride::python

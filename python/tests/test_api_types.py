@@ -171,7 +171,8 @@ def api(tmp_path):
         "cec2020rw_score": (lambda **o: pride.cec2020rw_score(**{"results": {"a": (np.ones((1, 3)), np.zeros((1, 3)))},
                                                                  "dims": [5], **o}),
                             dict(results=[None, 5, "ab", [1], {"a": 5}, {5: (1, 2)}, {"a": ("x", [0.0])}],
-                                 dims=[None, 5, "ab", [1.5], [None], [True], [0], []])),
+                                 dims=[None, 5, "ab", [1.5], [None], [True], [0], []],
+                                 order=[None, 5, "sorted", b"given"])),
     }
 
 

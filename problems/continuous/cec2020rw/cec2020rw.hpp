@@ -30,11 +30,10 @@
 // - RC44's cosd and sind are Octave's, cos(theta / 180 * pi) and sin(theta / 180 * pi) (MATLAB's
 //   reduce the angle first: the last bits may differ).
 // - RC34-RC43 read the organisers' data files' tables, restated in cec2020rw_tables.cpp.
-// - Not implemented, refused by the constructor in one line: RC24, the robot gripper. Its f is
-//   the difference of a maximum and a minimum over z that the code finds with MATLAB's fminbnd
-//   (and sets to 1e4 where they come out complex); Brent's method as MATLAB's fminbnd states it
-//   and Octave's fminbnd stop at other local optima at 3 of the test's 4 points (RC24 point 1:
-//   71.97 and 71.05), so no implementation could be checked against the code.
+// - RC24, the robot gripper: its f is the difference of a maximum and a minimum over z that the
+//   code finds with fminbnd (1e4 where they come out complex); pride follows Octave's fminbnd step
+//   by step, with Octave's complex arithmetic and ordering (cec2020rw_gripper.cpp says where
+//   MATLAB's can differ).
 // - The violation is the framework's mean_violation, the guidelines' eq. 2.
 #include <cstddef>
 #include <span>
@@ -47,14 +46,11 @@ namespace pride::continuous::cec2020rw {
 /// How many problems the suite has: RC01 ... RC57.
 inline constexpr int kProblems = 57;
 
-/// Whether problem `number` (1..57) is implemented; the others are refused by Problem's constructor.
-bool implemented(int number) noexcept;
-
 /// One problem of the suite. A copy is a few views of constant tables: copying is free, and
 /// evaluation neither allocates nor touches shared mutable state.
 class Problem {
   public:
-    /// `number` 1..57 (RC01..RC57); InputError("problem", ...) otherwise or when not implemented.
+    /// `number` 1..57 (RC01..RC57); InputError("problem", ...) otherwise.
     explicit Problem(int number);
 
     int number() const noexcept { return number_; }

@@ -52,7 +52,7 @@ double rc12(const double* x, double* c) noexcept;
 double rc13(const double* x, double* c) noexcept;
 double rc14(const double* x, double* c) noexcept;
 
-// RC15-RC33: mechanical engineering (cec2020rw_mechanical.cpp; RC24 is not implemented).
+// RC15-RC33: mechanical engineering (cec2020rw_mechanical.cpp; RC24 in cec2020rw_gripper.cpp).
 double rc15(const double* x, double* c) noexcept;
 double rc16(const double* x, double* c) noexcept;
 double rc17(const double* x, double* c) noexcept;
@@ -62,6 +62,7 @@ double rc20(const double* x, double* c) noexcept;
 double rc21(const double* x, double* c) noexcept;
 double rc22(const double* x, double* c) noexcept;
 double rc23(const double* x, double* c) noexcept;
+double rc24(const double* x, double* c) noexcept;  // cec2020rw_gripper.cpp
 double rc25(const double* x, double* c) noexcept;
 double rc26(const double* x, double* c) noexcept;
 double rc27(const double* x, double* c) noexcept;
