@@ -88,6 +88,9 @@ struct Campaign {
     // The same as a precision: the threshold f_opt + precision of each problem with a known
     // optimum (the other problems have none). At most one of target and target_precision.
     std::optional<double> target_precision;
+    // A published comparison's runs (experiment/campaign/protocol.hpp), or empty; its line in the file.
+    std::string protocol;
+    int protocol_line = 0;
     std::vector<CampaignProblem> problems;
     std::vector<CampaignAlgorithm> algorithms;
 };

@@ -1,4 +1,5 @@
 #include "experiment/campaign/prepare.hpp"
+#include "experiment/campaign/protocol.hpp"
 
 #include <fmt/format.h>
 
@@ -234,6 +235,7 @@ void prepare(Campaign& c) {
     require(!(c.budget.evaluations && c.evaluations_per_dim), file,
             "[budget]: give evaluations or evaluations_per_dim, not both");
     require(!c.problems.empty(), file, "no [[problem]]");
+    apply_protocol(c);
     apply_suite_rules(c);
     require(c.seeds >= 1 && c.seeds <= max_campaign_seeds, file, "seeds " + seeds_range_message(c.seeds));
     if (!c.seed_list.empty()) {

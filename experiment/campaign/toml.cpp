@@ -1,6 +1,7 @@
 #include "experiment/campaign/toml.hpp"
 #include "experiment/campaign/identity.hpp"
 #include "experiment/campaign/prepare.hpp"
+#include "experiment/campaign/protocol.hpp"
 #include "experiment/campaign/toml_nodes.hpp"
 #include "experiment/campaign/toml_seeds.hpp"
 
@@ -603,6 +604,12 @@ Campaign parse_campaign(const std::string& path) {
                 fail(at(path, value),
                      "[budget]: give target (an absolute value) or precision (f_opt + precision), "
                      "not both");
+        } else if (k == "protocol") {
+            if (!value.is_string()) fail(at(path, value), "'protocol' must be a string");
+            c.protocol = std::string(**value.as_string());
+            c.protocol_line = static_cast<int>(value.source().begin.line);
+            if (!is_protocol(c.protocol))
+                fail(at_column(path, value), "unknown protocol '" + c.protocol + "' (" + protocol_names + ")");
         } else if (k == "threads") {  // evaluation threads per run (Budget::threads; results unchanged)
             c.threads_line = static_cast<int>(value.source().begin.line);
             c.budget.threads = need_integer(path, value, k);
@@ -622,7 +629,8 @@ Campaign parse_campaign(const std::string& path) {
                     c.algorithms.push_back(read_algorithm(path, *n.as_table()));
             }
         } else {
-            fail(at(path, value), "unknown key '" + k + "' (name, seeds, budget, threads, problem, suite, algorithm)");
+            fail(at(path, value),
+                 "unknown key '" + k + "' (name, seeds, budget, threads, protocol, problem, suite, algorithm)");
         }
     }
     // toml++ visits keys in name order; problems and suites run in the order the file gives them.

@@ -211,3 +211,19 @@ def test_read_store_gives_cocos_trace_of_each_run(tmp_path):
         f_opt = 79.48  # bbob-f1, instance 1
         last, best = run["trace_targets"][-1, 1] - f_opt, run["best"] - f_opt
         assert last < 10 ** (1 / 20) * best or last <= 1e-8
+
+
+def test_a_campaign_file_with_a_published_protocol(tmp_path):
+    # protocol = "bbob-2009": instances 1-5, 3 trials each (docs/campaigns.md, "Published protocols").
+    path = tmp_path / "p.toml"
+    path.write_text('name = "p"\nprotocol = "bbob-2009"\n[budget]\nevaluations_per_dim = 20\n'
+                    '[[suite]]\nname = "bbob"\nfunctions = [1]\ndimensions = [2]\n'
+                    '[[algorithm]]\nid = "pso"\ntype = "pso"\n')
+    c = pride.Campaign.load(path)
+    assert c.seeds == 3
+    assert c.runs == 5 * 3
+    counts = c.run(tmp_path / "p.sqlite")
+    assert (counts["already"], counts["total"]) == (0, 15)
+    path.write_text(path.read_text().replace('protocol = "bbob-2009"\n', 'protocol = "bbob-2009"\nseeds = 2\n'))
+    with pytest.raises(ValueError, match=r"p\.toml:2: protocol 'bbob-2009': BBOB 2009 ran 3 trials per instance"):
+        pride.Campaign.load(path)
