@@ -281,6 +281,8 @@ TEST_CASE("import --ioh: bad input is one line naming file and line, exit 2, not
     expect_input_error(Exported::import(e.tmp.file("none.sqlite"), e.ioh / "pso", "x"), {"none.sqlite"});
     CHECK(!fs::exists(e.tmp.file("none.sqlite")));
     expect_input_error("import '" + store + "' --ioh '" + (e.ioh / "pso").string() + "' --name x", {"--citation"});
+    expect_input_error("import '" + store + "' --name x --citation c",
+                       {"import: name the data to read", "--cec2017 FOLDER", "--ioh FOLDER"});
     CHECK(slurp(store) == bytes);
 
     const fs::path info = bad / "IOHprofiler_f1_Sphere.info";
