@@ -192,6 +192,11 @@ TEST_CASE("import --ioh: pride's own IOH export read back equals the runs it cam
                                        source.sha256 + "); imported, never run by pride."));
     CHECK_THAT(md.out, !Catch::Contains("is left out"));
 
+    // The campaign resumed runs none of them: they are not its runs.
+    const auto resumed = run_pride("bench '" + e.toml + "' --out '" + store + "'");
+    REQUIRE(resumed.status == 0);
+    CHECK_THAT(resumed.out, Catch::Contains("0 runs stored in " + store + " (36 were there already, 36 in all)"));
+
     // Exported again, the imported runs give the same .dat files.
     const fs::path again = e.tmp.path() / "again";
     REQUIRE(run_pride("export '" + store + "' --ioh '" + again.string() + "'").status == 0);

@@ -113,3 +113,25 @@ def test_bad_input_raises_one_error_naming_file_line_or_argument(exported, tmp_p
     with pytest.raises(TypeError, match="^path: "):
         pride.import_ioh(store, 3, name="x", citation="c")
     assert store.read_bytes() == before
+
+
+def _bowl(x):
+    return float(sum((v - 0.25) ** 2 for v in x)) + 1.0
+
+
+def test_a_problem_without_a_known_optimum_keeps_its_values_and_gets_no_runtimes(tmp_path):
+    # A Python function without f_opt: pride's own runs on it record no runtimes, nor do the imported.
+    campaign = pride.Campaign("bowl", seeds=2, evals=100, algorithms=["pso"],
+                              problems=[{"id": "bowl", "function": _bowl, "bounds": (-1, 1), "dim": 2}])
+    store = tmp_path / "b.sqlite"
+    campaign.run(store)
+    cli("export", store, "--ioh", tmp_path / "ioh")
+    s = pride.import_ioh(store, tmp_path / "ioh" / "pso", name="pso-ioh", citation="c")
+    assert (s["runs"], s["problems_matched"]) == (2, 1)
+    assert [p["f_opt"] for p in pride._pride.read_store(str(store))["problems"]] == [None]
+    runs = {(r["algorithm"], r["seed"]): r for r in pride.read_store(store, dataframe=False)}
+    for seed in (1, 2):
+        mine, theirs = runs[("published:pso-ioh", seed)], runs[("pso", seed)]
+        assert mine["best"] == theirs["best"]  # the value as written: no optimum added or taken
+        assert mine["target_hits"] == theirs["target_hits"] == {}
+        assert list(mine["history"]) == list(theirs["history"])
