@@ -11,6 +11,7 @@
 #include "experiment/report/coco_export.hpp"
 #include "experiment/report/coco_import.hpp"
 #include "experiment/report/ioh_export.hpp"
+#include "experiment/report/ioh_import.hpp"
 #include "framework/error.hpp"
 #include "framework/output_files.hpp"
 
@@ -36,15 +37,17 @@ int export_command(const ExportOptions& o, std::ostream& out) {
 }
 
 int import_command(const ImportOptions& o, std::ostream& out) {
-    require(!o.coco.empty() || !o.cec2017.empty(), "import",
-            "name the data to read: --coco FOLDER (a COCO data set) or --cec2017 FOLDER (a CEC 2017 entrant's files)");
+    require(!o.coco.empty() || !o.cec2017.empty() || !o.ioh.empty(), "import",
+            "name the data to read: --coco FOLDER (a COCO data set), --cec2017 FOLDER (a CEC 2017 entrant's files) "
+            "or --ioh FOLDER (an algorithm's IOHprofiler files)");
     report::PublishedImportOptions options;
     options.name = o.name;
     options.citation = o.citation;
     const auto precisions = campaign::coco_precisions();
-    const auto s = o.coco.empty()
-                       ? report::import_cec2017(o.store, o.cec2017, options, precisions, engine::json_array(precisions))
-                       : report::import_coco(o.store, o.coco, options, precisions, engine::json_array(precisions));
+    const bool coco = !o.coco.empty(), ioh = !o.ioh.empty();
+    const auto import = coco ? &report::import_coco : ioh ? &report::import_ioh : &report::import_cec2017;
+    const std::string& folder = coco ? o.coco : ioh ? o.ioh : o.cec2017;
+    const auto s = import(o.store, folder, options, precisions, engine::json_array(precisions));
     out << fmt::format("{} runs of published:{} imported into {} ({} problems of the store, {} added)\n", s.runs,
                        o.name, o.store, s.problems_matched, s.problems_added);
     return 0;

@@ -322,8 +322,8 @@ int run_main(int argc, char** argv) {
     ImportOptions importing;
     auto* import_cmd =
         app.add_subcommand("import",
-                           "published runs (a COCO bbob data set, a CEC 2017 entrant's result files) into a "
-                           "store, beside its campaign's runs");
+                           "published runs (a COCO bbob data set, a CEC 2017 entrant's result files, IOHprofiler "
+                           "files) into a store, beside its campaign's runs");
     import_cmd->add_option("store", importing.store, "the SQLite store (created when absent)")
         ->required()
         ->check(a_path());
@@ -331,10 +331,18 @@ int run_main(int argc, char** argv) {
         import_cmd
             ->add_option("--coco", importing.coco, "the COCO data set's folder (.info, .dat, .tdat; a .tgz extracted)")
             ->check(a_path());
+    auto* cec2017_option =
+        import_cmd
+            ->add_option("--cec2017", importing.cec2017,
+                         "one CEC 2017 entrant's folder (NAME_F_D.txt: 14 checkpoints x 51 runs' errors)")
+            ->excludes(coco_option)
+            ->check(a_path());
     import_cmd
-        ->add_option("--cec2017", importing.cec2017,
-                     "one CEC 2017 entrant's folder (NAME_F_D.txt: 14 checkpoints x 51 runs' errors)")
+        ->add_option("--ioh", importing.ioh,
+                     "one algorithm's folder of IOHprofiler files (.info, .dat), as pride export --ioh writes it, "
+                     "onto the store's problems")
         ->excludes(coco_option)
+        ->excludes(cec2017_option)
         ->check(a_path());
     import_cmd->add_option("--name", importing.name, "the published algorithm's name: stored as published:NAME")
         ->required();

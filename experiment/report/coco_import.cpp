@@ -16,6 +16,7 @@ namespace pride::report {
 namespace {
 
 namespace fs = std::filesystem;
+using published_files::count;
 using published_files::number;
 using published_files::read_lines;
 using published_files::trim;
@@ -26,15 +27,6 @@ std::vector<std::string> split(const std::string& s, char by) {
     std::istringstream in(s);
     while (std::getline(in, part, by)) out.push_back(part);
     return out;
-}
-
-/// A whole token as a count of at least `min` (written as an integer or, as some loggers do, as
-/// a number with an exponent), or none.
-std::optional<std::int64_t> count(const std::string& token, std::int64_t min) {
-    const auto v = number(token);
-    if (!v || !std::isfinite(*v) || *v != std::floor(*v) || *v < static_cast<double>(min) || *v > 9e15)
-        return std::nullopt;
-    return static_cast<std::int64_t>(*v);
 }
 
 /// One run's block of a .dat or .tdat file.

@@ -19,13 +19,6 @@
 namespace pride::report {
 namespace {
 
-/// A name inside the .info file's double quotes.
-std::string quoted(const std::string& name) {
-    std::string s;
-    for (const char c : name) s += c == '"' || c == '\n' || c == '\r' ? '_' : c;
-    return s;
-}
-
 /// A value as IOHexperimenter's FlatFile logger writes it: "None" where it has none (its RawY
 /// property gives no value for an infinite f(x), and the logger writes its no-value text, "None").
 std::string value(double v) {
@@ -56,14 +49,31 @@ std::int64_t suite_ids(const std::string& suite) {
 
 /// One IOHprofiler function: a .info file and, per dimension, a .dat file.
 struct Function {
-    std::int64_t id = 0;
-    std::string name, suite;
-    bool in_suite = false;  // runs named by instance (IOH) rather than by seed
+    IohFunction fn;
     // dim -> the runs, each with the instance it names
     std::map<std::int64_t, std::vector<std::pair<std::int64_t, const storage::StoredRun*>>> runs;
 };
 
 }  // namespace
+
+std::string ioh_quoted(const std::string& name) {
+    std::string s;
+    for (const char c : name) s += c == '"' || c == '\n' || c == '\r' ? '_' : c;
+    return s;
+}
+
+IohFunction ioh_function(const storage::StoredProblem& p, std::size_t position) {
+    IohFunction fn;
+    fn.in_suite = p.suite && p.fid;
+    const bool bbob = fn.in_suite && *p.suite == "bbob" && ioh_bbob_name(*p.fid);
+    fn.id = bbob          ? *p.fid
+            : fn.in_suite ? suite_ids(*p.suite) + *p.fid
+                          : other_ids + static_cast<std::int64_t>(position + 1);
+    fn.name = bbob ? ioh_bbob_name(*p.fid) : fn.in_suite ? p.function.value_or(p.id) : p.id;
+    // IOHexperimenter's name of the BBOB suite; problems outside a suite are pride's.
+    fn.suite = !fn.in_suite ? "pride" : *p.suite == "bbob" ? "BBOB" : *p.suite;
+    return fn;
+}
 
 ExportSummary export_ioh(const std::string& store_path, const std::string& folder) {
     OutputFiles files;
@@ -98,30 +108,22 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
             const storage::StoredProblem& p = (*store.problems)[f];
             const auto it = by_problem.find(p.id);
             if (it == by_problem.end()) continue;
-            const bool in_suite = p.suite && p.fid;
-            const bool bbob = in_suite && *p.suite == "bbob" && ioh_bbob_name(*p.fid);
-            const std::int64_t id = bbob       ? *p.fid
-                                    : in_suite ? suite_ids(*p.suite) + *p.fid
-                                               : other_ids + static_cast<std::int64_t>(f + 1);
-            const std::string name = bbob ? ioh_bbob_name(*p.fid) : in_suite ? p.function.value_or(p.id) : p.id;
-            Function& fn = functions[{in_suite ? 0 : 1, id, name}];
-            fn.id = id;
-            fn.name = name;
-            fn.in_suite = in_suite;
-            // IOHexperimenter's name of the BBOB suite; problems outside a suite are pride's.
-            fn.suite = !in_suite ? "pride" : *p.suite == "bbob" ? "BBOB" : *p.suite;
+            const IohFunction id = ioh_function(p, f);
+            Function& fn = functions[{id.in_suite ? 0 : 1, id.id, id.name}];
+            fn.fn = id;
             for (const storage::StoredRun* r : it->second)
-                fn.runs[p.dim].emplace_back(in_suite ? p.instance : r->seed, r);
+                fn.runs[p.dim].emplace_back(id.in_suite ? p.instance : r->seed, r);
         }
         const std::filesystem::path dir = std::filesystem::path(folder) / folders.at(algorithm);
         files.make_folder(dir);
-        for (const auto& [key, fn] : functions) {
+        for (const auto& [key, function] : functions) {
+            const IohFunction& fn = function.fn;
             const std::string stem = fmt::format("f{}_{}", fn.id, storage::file_name(fn.name));
             const std::string data_folder = "data_" + stem;
             files.make_folder(dir / data_folder);
             std::string info;
             bool first = true;
-            for (const auto& [dim, dim_runs] : fn.runs) {
+            for (const auto& [dim, dim_runs] : function.runs) {
                 const std::string dat = fmt::format("IOHprofiler_f{}_DIM{}.dat", fn.id, dim);
                 OutputFiles::File& d = files.create(dir / data_folder / dat);
                 std::string block;
@@ -130,8 +132,8 @@ ExportSummary export_ioh(const std::string& store_path, const std::string& folde
                 info += fmt::format(
                     "{}suite = \"{}\", funcId = {}, funcName = \"{}\", DIM = {}, maximization = \"F\", algId = "
                     "\"{}\", algInfo = \"campaign {}\"\n%\n{}/{}",
-                    first ? "" : "\n", quoted(fn.suite), fn.id, quoted(fn.name), dim, quoted(algorithm),
-                    quoted(store.name), data_folder, dat);
+                    first ? "" : "\n", ioh_quoted(fn.suite), fn.id, ioh_quoted(fn.name), dim, ioh_quoted(algorithm),
+                    ioh_quoted(store.name), data_folder, dat);
                 first = false;
                 for (const auto& [number, r] : dim_runs) {
                     // One block per run: the best value after each iteration, at its evaluation

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -28,6 +29,13 @@ std::optional<double> number(const std::string& token) {
     const double v = std::strtod(token.c_str(), &end);
     if (end != token.c_str() + token.size() || errno == ERANGE) return std::nullopt;
     return v;
+}
+
+std::optional<std::int64_t> count(const std::string& token, std::int64_t min) {
+    const auto v = number(token);
+    if (!v || !std::isfinite(*v) || *v != std::floor(*v) || *v < static_cast<double>(min) || *v > 9e15)
+        return std::nullopt;
+    return static_cast<std::int64_t>(*v);
 }
 
 std::vector<std::string> read_lines(const fs::path& file, const std::string& what) {

@@ -1,7 +1,8 @@
 #pragma once
 // What the imports of published runs share (`pride import`: COCO's data sets, coco_import.hpp; the
-// CEC 2017 entrants' files, cec2017_import.hpp): the options naming the runs, the reading of text
-// files and numbers, the SHA-256 of a folder, and the one transaction that adds a set to a store.
+// CEC 2017 entrants' files, cec2017_import.hpp; IOHprofiler files, ioh_import.hpp): the options naming the runs, the
+// reading of text files and numbers, the SHA-256 of a folder, and the one transaction that adds a set to a store.
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -28,6 +29,10 @@ std::string trim(const std::string& s);
 /// A whole token as a number (C's strtod: COCO's 2009 files and CEC 2017's IDEbestNsize write
 /// exponents as "e+001"), or none.
 std::optional<double> number(const std::string& token);
+
+/// A whole token as a count of at least `min` (written as an integer or, as some loggers do, as a
+/// number with an exponent), or none.
+std::optional<std::int64_t> count(const std::string& token, std::int64_t min);
 
 /// The lines of `file`, a trailing CR dropped; InputError naming the file when it is missing (`what`
 /// says what it was wanted as), not a regular file or unreadable.

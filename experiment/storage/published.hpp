@@ -1,11 +1,11 @@
 #pragma once
 // Published runs in a store: another author's results, read from the files they published (COCO's
 // data sets: experiment/report/coco_import.hpp; the CEC 2017 entrants' result files:
-// experiment/report/cec2017_import.hpp), kept beside the runs pride made so that one report
-// compares both. They are read-only rows: their algorithm's id is "published:NAME", a prefix no
-// campaign's algorithm or problem may take (campaign/prepare.cpp refuses it); a campaign never runs
-// them (they are none of its runs) and never changes them; the table `published` (store schema 7)
-// keeps their provenance: the source file, its SHA-256, a citation, the format it was read from.
+// experiment/report/cec2017_import.hpp; IOHprofiler files: experiment/report/ioh_import.hpp), kept beside the runs
+// pride made so that one report compares both. They are read-only rows: their algorithm's id is "published:NAME", a
+// prefix no campaign's algorithm or problem may take (campaign/prepare.cpp refuses it); a campaign never runs them
+// (they are none of its runs) and never changes them; the table `published` (store schema 7) keeps their provenance:
+// the source file, its SHA-256, a citation, the format it was read from.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -19,7 +19,7 @@ inline constexpr const char* kPublishedPrefix = "published:";
 /// Where a published algorithm's runs come from (one row of table `published`).
 struct PublishedSource {
     std::string algorithm;  // "published:NAME"
-    std::string format;     // "coco-bbob", "cec2017"
+    std::string format;     // "coco-bbob", "cec2017", "iohprofiler"
     std::string source;     // the file or folder name it was read from (no path)
     std::string sha256;     // of the source file; of a folder, of its files (coco_import.hpp)
     std::string citation;
@@ -51,6 +51,15 @@ struct PublishedRun {
     // sets record neither.
     std::optional<std::int64_t> max_evaluations;
     std::vector<PublishedPoint> checkpoints;
+    // The store's problem the run is of, when its files name the store's own problems (IOH files
+    // written by `pride export --ioh`, ioh_import.hpp): used as it is, never added; f_opt is then
+    // the problem's (0 where it has none, and `runtimes` false). Else the problem is found, or
+    // added, by suite, fid, dim and instance.
+    std::optional<std::string> problem;
+    // The best value after each iteration and the evaluations by then, as IOH's .dat files give
+    // them (the store's `history`); empty for the other formats.
+    std::vector<double> history;
+    std::vector<std::int64_t> history_evaluations;
     std::string where;  // the file and line the run starts at, for messages
 };
 

@@ -60,8 +60,9 @@ class Writer {
     /// holds the algorithm already, when a run's problem (suite, function, dimension, instance) is
     /// stored with another optimum (another instance: not the same protocol), or when the store's
     /// campaign records target precisions other than `precisions` (JSON). A run's problem is the
-    /// store's own where it has it, else a problem row of its own ("published:bbob-f6-i3-d20"). A
-    /// store without a campaign gets one named "published runs", which no campaign grows.
+    /// store's own where it has it (or the one the run names, PublishedRun::problem), else a problem
+    /// row of its own ("published:bbob-f6-i3-d20"). A store without a campaign gets one named
+    /// "published runs", which no campaign grows.
     ImportSummary import_published(const PublishedSet& set, const std::vector<double>& precisions,
                                    const std::string& precisions_json);
 

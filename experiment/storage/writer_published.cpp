@@ -93,12 +93,20 @@ ImportSummary Writer::add_published(const PublishedSet& set, const std::vector<d
     ImportSummary summary;
     // (suite, fid, dim, instance) -> the problem's id and optimum, the store's or a new one.
     std::map<std::tuple<std::string, std::int64_t, std::int64_t, std::int64_t>, std::pair<std::string, double>> ids;
+    // The same for runs that name the store's problem (PublishedRun::problem), by its id.
+    std::map<std::string, std::pair<std::string, double>> named;
     std::vector<RunRecord> records;
     records.reserve(set.runs.size());
     for (const PublishedRun& run : set.runs) {
         const auto key = std::tuple{run.suite, run.fid, run.dim, run.instance};
         auto it = ids.find(key);
-        if (it == ids.end()) {
+        const std::pair<std::string, double>* to = nullptr;
+        if (run.problem) {
+            // The store's own problem, as the reader of the run's files found it there.
+            auto [n, added] = named.emplace(*run.problem, std::pair{*run.problem, run.f_opt});
+            summary.problems_matched += added;
+            to = &n->second;
+        } else if (it == ids.end()) {
             sqlite3_stmt* s = prepare(
                 "SELECT id, f_opt FROM problems WHERE suite = ? AND fid = ? AND dim = ? AND instance = ? AND f_opt "
                 "IS NOT NULL ORDER BY rowid LIMIT 1");
@@ -143,7 +151,7 @@ ImportSummary Writer::add_published(const PublishedSet& set, const std::vector<d
             }
             it = ids.emplace(key, *found).first;
         }
-        const auto& [problem, f_opt] = it->second;
+        const auto& [problem, f_opt] = to ? *to : it->second;
         RunRecord& r = records.emplace_back();
         r.problem = problem;
         r.algorithm = src.algorithm;
@@ -151,8 +159,14 @@ ImportSummary Writer::add_published(const PublishedSet& set, const std::vector<d
         r.best = f_opt + run.final_precision;
         r.evaluations = run.evaluations;
         r.solution = "[]";
-        r.history = "[]";
-        r.history_evaluations = "[]";
+        r.history = "[";
+        r.history_evaluations = "[";
+        for (std::size_t k = 0; k < run.history.size() && k < run.history_evaluations.size(); ++k) {
+            r.history += fmt::format("{}{:.17g}", k ? ", " : "", run.history[k]);
+            r.history_evaluations += fmt::format("{}{}", k ? ", " : "", run.history_evaluations[k]);
+        }
+        r.history += "]";
+        r.history_evaluations += "]";
         r.max_evaluations = run.max_evaluations;
         r.checkpoints = trace_json(run.checkpoints, f_opt);
         r.trace_targets = trace_json(run.targets, f_opt);

@@ -26,7 +26,7 @@ __all__ = [
     "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
     "exact", "pareto", "roughset", "Campaign", "read_store", "report", "hypervolume", "hypervolume_contributions",
     "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance", "attainment_surface", "front", "plan_front",
-    "cec2020rw_score", "import_coco", "import_cec2017", "register_algorithm", "BudgetExhausted", "AlgorithmError", "__version__",
+    "cec2020rw_score", "import_coco", "import_cec2017", "import_ioh", "register_algorithm", "BudgetExhausted", "AlgorithmError", "__version__",
 ]
 
 
@@ -638,6 +638,26 @@ def import_cec2017(store, path, *, name, citation):
     if not citation:
         raise ValueError("citation: expected whose runs these are and where they were published, got ''")
     return _pride.import_cec2017(store, path, name, citation)
+
+
+def import_ioh(store, path, *, name, citation):
+    """Adds one algorithm's IOHprofiler files, as ``pride export --ioh`` writes them (its folder of
+    .info and .dat files), to the campaign store ``store`` as the published algorithm
+    ``published:NAME`` (``pride import STORE --ioh PATH``): read-only runs on the store's own
+    problems, which reports compare with the campaign's where the protocol is the same. The store
+    must hold the campaign the files were exported from (its problems: a function, dimension or
+    instance it has not is refused). ``citation`` says whose runs they are. Returns a dict:
+    algorithm, runs, problems_matched, problems_added (0). Bad input raises ValueError naming the
+    file and line; then nothing is written."""
+    store = _path("store", store)
+    path = _path("path", path)
+    name = _str("name", name)
+    citation = _str("citation", citation)
+    if not name or any(c in name for c in "\n\r\t"):
+        raise ValueError(f"name: expected the published algorithm's name (one line), got {name!r}")
+    if not citation:
+        raise ValueError("citation: expected whose runs these are and where they were published, got ''")
+    return _pride.import_ioh(store, path, name, citation)
 
 
 def report(path, *, raw=False, dataframe=None, html=None):

@@ -19,6 +19,7 @@
 #include "experiment/html/report_page.hpp"
 #include "experiment/report/cec2017_import.hpp"
 #include "experiment/report/coco_import.hpp"
+#include "experiment/report/ioh_import.hpp"
 #include "experiment/report/report.hpp"
 #include "experiment/storage/reader.hpp"
 
@@ -415,8 +416,8 @@ py::dict read_store(const py::object& store) {
                     py::arg("precisions") = precisions, py::arg("problems") = problems, py::arg("runs") = runs);
 }
 
-/// What pride.import_coco and pride.import_cec2017 return: `import` (report::import_coco or
-/// report::import_cec2017) run without the GIL, and the summary of what it added.
+/// What pride.import_coco, pride.import_cec2017 and pride.import_ioh return: `import`
+/// (report::import_coco, import_cec2017 or import_ioh) run without the GIL, and the summary of what it added.
 py::dict imported(storage::ImportSummary (*import)(const std::string&, const std::string&,
                                                    const report::PublishedImportOptions&, const std::vector<double>&,
                                                    const std::string&),
@@ -451,6 +452,16 @@ py::dict import_cec2017(const std::string& store, const std::string& folder, con
     options.name = name;
     options.citation = citation;
     return imported(&report::import_cec2017, store, folder, options);
+}
+
+/// pride.import_ioh's work: an algorithm's IOHprofiler folder onto a store's problems
+/// (experiment/report/ioh_import.hpp).
+py::dict import_ioh(const std::string& store, const std::string& folder, const std::string& name,
+                    const std::string& citation) {
+    report::PublishedImportOptions options;
+    options.name = name;
+    options.citation = citation;
+    return imported(&report::import_ioh, store, folder, options);
 }
 
 py::dict report_data(const std::vector<std::string>& paths, bool raw) {
@@ -550,6 +561,8 @@ void bind_campaign(py::module_& m) {
           py::arg("citation"), py::arg("source"), py::arg("sha256"));
     m.def("import_cec2017", &import_cec2017, py::call_guard<Call>(), py::arg("store"), py::arg("folder"),
           py::arg("name"), py::arg("citation"));
+    m.def("import_ioh", &import_ioh, py::call_guard<Call>(), py::arg("store"), py::arg("folder"), py::arg("name"),
+          py::arg("citation"));
     m.def("report", &report_data, py::call_guard<Call>(), py::arg("paths"), py::arg("raw") = false);
     m.def("report_html", &report_html, py::call_guard<Call>(), py::arg("path"), py::arg("dir"), py::arg("raw") = false);
 }

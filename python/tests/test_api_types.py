@@ -87,11 +87,26 @@ def cec2017_entrant(tmp_path):
     return str(folder)
 
 
+def ioh_folder(tmp_path):
+    """The smallest IOHprofiler folder of campaign()'s problem (its first: funcId 1001): one run."""
+    folder = tmp_path / "ioh"
+    (folder / "data_f1001_a").mkdir(parents=True, exist_ok=True)
+    (folder / "IOHprofiler_f1001_a.info").write_text(
+        'suite = "pride", funcId = 1001, funcName = "a", DIM = 2, maximization = "F", algId = "x"\n%\n'
+        "data_f1001_a/IOHprofiler_f1001_DIM2.dat, 1:10|0.5\n")
+    (folder / "data_f1001_a" / "IOHprofiler_f1001_DIM2.dat").write_text(
+        '"function evaluation" "current f(x)" "best-so-far f(x)" "current af(x)+b" "best af(x)+b"\n'
+        "10 0.5 0.5 0.5 0.5\n")
+    return str(folder)
+
+
 # name -> (call(**overrides), {parameter: wrong values}); `call` passes valid values for the rest.
 def api(tmp_path):
     mfile = map_file(tmp_path)
     store = str(tmp_path / "s.sqlite")
     campaign().run(store)
+    ioh_store = str(tmp_path / "k.sqlite")  # a copy of the campaign's store, for pride.import_ioh
+    campaign().run(ioh_store)
     opt = lambda: pride.Optimizer("pso", bounds=(-1, 1), dim=2, evals=20)
 
     return {
@@ -152,6 +167,9 @@ def api(tmp_path):
                                                                "path": cec2017_entrant(tmp_path), "name": "x",
                                                                "citation": "c", **o}),
                            dict(store=PATH, path=PATH, name=TEXT, citation=TEXT)),
+        "import_ioh": (lambda **o: pride.import_ioh(**{"store": ioh_store, "path": ioh_folder(tmp_path), "name": "x",
+                                                       "citation": "c", **o}),
+                       dict(store=PATH, path=PATH, name=TEXT, citation=TEXT)),
         "Result": (lambda **o: pride.Result(**o), dict(fields=[None, 5, "ab", [1, 2]])),
         "register_algorithm": (lambda **o: pride.register_algorithm(**{"name": "api-types", "function": lambda p, s: None,
                                                                        **o}),
