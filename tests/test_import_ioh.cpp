@@ -216,7 +216,7 @@ TEST_CASE("import --ioh: pride's own IOH export read back equals the runs it cam
     CHECK(dats == 5);
 }
 
-TEST_CASE("import --ioh: merges keep one source; other budgets are left out of the final values, named",
+TEST_CASE("import --ioh: merges keep one source, other budgets are left out of the final values, named",
           "[import][ioh]") {
     const Exported e;
     // A store with the same published runs merges; one where the name holds other runs does not.
