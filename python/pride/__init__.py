@@ -629,6 +629,11 @@ def import_cec2017(store, path, *, name, citation):
     store's own problem where it has the function and dimension. ``citation`` says whose runs they
     are. Returns a dict: algorithm, runs, problems_matched, problems_added. Bad input raises
     ValueError naming the file and line; then nothing is written."""
+    return _pride.import_cec2017(*_published_arguments(store, path, name, citation))
+
+
+def _published_arguments(store, path, name, citation):
+    """The arguments of an import of published files, checked: (store, path, name, citation)."""
     store = _path("store", store)
     path = _path("path", path)
     name = _str("name", name)
@@ -637,7 +642,7 @@ def import_cec2017(store, path, *, name, citation):
         raise ValueError(f"name: expected the published algorithm's name (one line), got {name!r}")
     if not citation:
         raise ValueError("citation: expected whose runs these are and where they were published, got ''")
-    return _pride.import_cec2017(store, path, name, citation)
+    return store, path, name, citation
 
 
 def import_ioh(store, path, *, name, citation):
@@ -649,15 +654,7 @@ def import_ioh(store, path, *, name, citation):
     instance it has not is refused). ``citation`` says whose runs they are. Returns a dict:
     algorithm, runs, problems_matched, problems_added (0). Bad input raises ValueError naming the
     file and line; then nothing is written."""
-    store = _path("store", store)
-    path = _path("path", path)
-    name = _str("name", name)
-    citation = _str("citation", citation)
-    if not name or any(c in name for c in "\n\r\t"):
-        raise ValueError(f"name: expected the published algorithm's name (one line), got {name!r}")
-    if not citation:
-        raise ValueError("citation: expected whose runs these are and where they were published, got ''")
-    return _pride.import_ioh(store, path, name, citation)
+    return _pride.import_ioh(*_published_arguments(store, path, name, citation))
 
 
 def report(path, *, raw=False, dataframe=None, html=None):
