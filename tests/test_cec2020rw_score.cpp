@@ -16,6 +16,7 @@
 #include "experiment/campaign/prepare.hpp"
 #include "experiment/campaign/run.hpp"
 #include "experiment/campaign/toml.hpp"
+#include "experiment/report/cec2017_score.hpp"
 #include "experiment/report/cec2020rw_score.hpp"
 #include "experiment/report/cec2020rw_table.hpp"
 #include "experiment/storage/reader.hpp"
@@ -127,9 +128,8 @@ TEST_CASE("cec2020rw score: no result (NaN) counts as MATLAB counts it in the or
     const Summary none = summarise(c1, "c");
     CHECK(std::isnan(none.best.f));
     CHECK(std::isnan(none.mean.violation));
-    std::vector<std::vector<Summary>> s{{summarise(a1, "a"), summarise(a2, "a")},
-                                        {summarise(b1, "b"), summarise(b2, "b")},
-                                        {none, summarise(c2, "c")}};
+    std::vector<std::vector<Summary>> s{
+        {summarise(a1, "a"), summarise(a2, "a")}, {summarise(b1, "b"), summarise(b2, "b")}, {none, summarise(c2, "c")}};
     const std::vector<std::int64_t> dims{5, 60};
     auto scores = score(s, dims);
     // Problem 1: A 0, B 1 (range 1..3), C 1. Problem 2: worst feasible f 5, so C's 5 + 2 = 7:
@@ -273,4 +273,27 @@ TEST_CASE("cec2020rw report: the tables and the score of a campaign's store", "[
     pride::test::check_input_error(
         pride::test::run_pride("report " + quoted(dir.file("o.sqlite")) + " --format cec2020rw"),
         {"o.sqlite", "has no run on a CEC 2020 real-world problem"});
+}
+
+TEST_CASE("cec2017 score: Score1, Score2 and ranks of an example worked by hand", "[cec2020rw-score]") {
+    namespace c17 = pride::report::cec2017;
+    // F1 at D = 10 and 30: A 1 and 4, B 3 and 2. SE: A 0.9, B 0.7; SR: A 0.1 + 0.4, B 0.2 + 0.2.
+    const std::vector<c17::Cell> cells{{1, 10}, {1, 30}};
+    const auto s = c17::score({{1.0, 4.0}, {3.0, 2.0}}, cells);
+    CHECK(s[0].se == Approx(0.9));
+    CHECK(s[1].sr == Approx(0.4));
+    CHECK(s[0].score1 == Approx(50.0 * 0.7 / 0.9));
+    CHECK(s[0].score2 == Approx(40.0));
+    CHECK(s[1].total == 100.0);
+    CHECK(s[1].rank == 1);
+    CHECK(s[0].rank == 2);
+    // Ties share their mean rank: both 1.5, both Score2 50.
+    const auto tied = c17::score({{1.0, 4.0}, {1.0, 4.0}}, cells);
+    CHECK(tied[0].sr == Approx(0.1 * 1.5 + 0.2 * 1.5));
+    CHECK(tied[0].rank == 1);
+    CHECK(tied[1].rank == 1);
+    CHECK_THROWS_WITH(c17::weight(20), Contains("D = 10, 30, 50 and 100, got 20"));
+    CHECK_THROWS_WITH(c17::score({{1.0}}, cells), Contains("1 mean errors for 2 cells"));
+    CHECK_THROWS_WITH(c17::score({{1.0, -2.0}}, cells), Contains("F1 at D = 30"));
+    CHECK_THROWS_AS(c17::score({}, cells), pride::InputError);
 }

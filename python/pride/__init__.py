@@ -26,7 +26,7 @@ __all__ = [
     "algorithms", "problems", "grid_names", "minimize", "Result", "Optimizer", "Problem", "Grid", "plan", "astar",
     "exact", "pareto", "roughset", "Campaign", "read_store", "report", "hypervolume", "hypervolume_contributions",
     "igd", "igd_plus", "epsilon_additive", "nondominated_sort", "crowding_distance", "attainment_surface", "front", "plan_front",
-    "cec2020rw_score", "import_coco", "import_cec2017", "import_ioh", "register_algorithm", "BudgetExhausted", "AlgorithmError", "__version__",
+    "cec2020rw_score", "cec2017_score", "import_coco", "import_cec2017", "import_ioh", "register_algorithm", "BudgetExhausted", "AlgorithmError", "__version__",
 ]
 
 
@@ -382,6 +382,17 @@ def pareto(grid, start, goal, *, objectives="length,turns", corner_cutting=False
         objectives = ",".join(_str("objectives", o) for o in _list("objectives", objectives))
     objectives = _str("objectives", objectives)
     return _pride.pareto(_grid(grid), start, goal, objectives, _bool("corner_cutting", corner_cutting))
+
+
+def cec2017_score(results, dims=(10, 30, 50, 100), exclude=(2,)):
+    """The CEC 2017 bound-constrained competition's score of ``results``, a dict {name: mean
+    errors}, each a (functions, dims) array: an algorithm's mean error at MaxFES over its runs
+    (errors below 1e-8 as 0) on F1, F2, ... (rows) in each dimension of ``dims`` (columns; 10, 30,
+    50, 100 weigh 0.1 to 0.4). The functions of ``exclude`` are left out (F2, as the organisers
+    did). Returns {name: {"se", "sr", "score1", "score2", "total", "rank"}}: SE, the weighted sum of
+    mean errors, and SR, of ranks by mean error; Score1 = 50 SE_min / SE and Score2 = 50 SR_min /
+    SR; total = Score1 + Score2 (higher is better) and its rank (docs/import.md)."""
+    return _pride.cec2017_score(results, dims, exclude)
 
 
 def cec2020rw_score(results, dims, order="guidelines"):

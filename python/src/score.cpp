@@ -2,10 +2,12 @@
 // (experiment/report/cec2020rw_score.hpp) of runs given as arrays, pride's or published ones.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "common.hpp"
+#include "experiment/report/cec2017_score.hpp"
 #include "experiment/report/cec2020rw_score.hpp"
 
 namespace pride::python {
@@ -74,9 +76,74 @@ py::dict cec2020rw_score(const py::object& results, const py::object& dims, cons
     return out;
 }
 
+/// dims: a sequence of integers (each 10, 30, 50 or 100), or of function numbers for `exclude`.
+std::vector<std::int64_t> integers(const py::object& o, const char* what) {
+    if (!py::isinstance<py::sequence>(o) || py::isinstance<py::str>(o))
+        throw py::type_error(std::string(what) + ": expected a sequence of integers");
+    std::vector<std::int64_t> out;
+    for (const py::handle item : py::reinterpret_borrow<py::sequence>(o)) {
+        if (!py::isinstance<py::int_>(item) || py::isinstance<py::bool_>(item))
+            throw py::type_error(std::string(what) + ": expected integers, got " +
+                                 std::string(py::str(py::type::of(item).attr("__name__"))));
+        out.push_back(item.cast<std::int64_t>());
+    }
+    return out;
+}
+
+/// results: {name: (functions, dims) array of mean errors, F1 in row 0}; the rows of `exclude` left out.
+py::dict cec2017_score(const py::object& results, const py::object& dims, const py::object& exclude) {
+    if (!py::isinstance<py::dict>(results))
+        throw py::type_error("results: expected a dict {name: mean errors}, got " +
+                             std::string(py::str(py::type::of(results).attr("__name__"))));
+    const auto d = integers(dims, "dims");
+    require(!d.empty(), "dims", "no dimensions");
+    for (const std::int64_t dim : d) report::cec2017::weight(dim);  // refuses another dimension, naming it
+    const auto left_out = integers(exclude, "exclude");
+    const auto& table = results.cast<py::dict>();
+    require(!table.empty(), "results", "no algorithms");
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> means;
+    std::vector<report::cec2017::Cell> cells;
+    for (const auto& [key, value] : table) {
+        if (!py::isinstance<py::str>(key)) throw py::type_error("results: expected names (str) as keys");
+        const std::string where = "results['" + key.cast<std::string>() + "']";
+        const auto a = real_array(py::reinterpret_borrow<py::object>(value), where);
+        require(
+            a.ndim() == 2 && a.shape(1) == static_cast<py::ssize_t>(d.size()) && a.shape(0) >= 1, where,
+            fmt::format("expected a (functions, {}) array of mean errors, one column per dimension of dims", d.size()));
+        std::vector<double> row;
+        std::vector<report::cec2017::Cell> these;
+        for (py::ssize_t f = 0; f < a.shape(0); ++f) {
+            if (std::find(left_out.begin(), left_out.end(), f + 1) != left_out.end()) continue;
+            for (std::size_t k = 0; k < d.size(); ++k) {
+                row.push_back(a.at(f, static_cast<py::ssize_t>(k)));
+                these.push_back({static_cast<int>(f + 1), d[k]});
+            }
+        }
+        if (names.empty()) cells = these;
+        require(these.size() == cells.size(), where, "every algorithm must have the same functions");
+        names.push_back(key.cast<std::string>());
+        means.push_back(std::move(row));
+    }
+    const auto scores = report::cec2017::score(means, cells);
+    py::dict out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        py::dict s;
+        s["se"] = scores[i].se;
+        s["sr"] = scores[i].sr;
+        s["score1"] = scores[i].score1;
+        s["score2"] = scores[i].score2;
+        s["total"] = scores[i].total;
+        s["rank"] = scores[i].rank;
+        out[py::str(names[i])] = s;
+    }
+    return out;
+}
+
 }  // namespace
 
 void bind_score(py::module_& m) {
+    m.def("cec2017_score", &cec2017_score, py::arg("results"), py::arg("dims"), py::arg("exclude"));
     m.def("cec2020rw_score", &cec2020rw_score, py::arg("results"), py::arg("dims"), py::arg("order"));
 }
 
