@@ -9,7 +9,7 @@ include(CMakePackageConfigHelpers)
 
 set(PRIDE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/pride)
 
-set(pride_exported pride_framework pride_roughset pride_bbob pride_cec pride_cec2006 pride_cec2020rw pride_bbob_constrained pride_continuous pride_problems pride_grid pride_algorithms
+set(pride_exported pride_framework pride_roughset pride_bbob pride_cec pride_cec2006 pride_cec2020rw pride_bbob_constrained pride_bbob_mixint pride_continuous pride_problems pride_grid pride_algorithms
                    pride_engine pride_storage pride_experiment)
 set(PRIDE_NEEDS_BOOST OFF)
 foreach(t IN ITEMS pride_report pride_statistics)
