@@ -46,7 +46,7 @@ install(DIRECTORY framework roughset problems algorithms engine experiment
         REGEX "/experiment/html$" EXCLUDE  # pride_html (the report page, cairo) is the command's and Python's
         REGEX "/experiment/store.hpp$" EXCLUDE  # the campaign runner's own, not an interface
         # the campaign file reader's own (toml++)
-        REGEX "/experiment/campaign/toml_(seeds|nodes).hpp$" EXCLUDE)
+        REGEX "/experiment/campaign/toml_(seeds|nodes|mixint).hpp$" EXCLUDE)
 
 set(PRIDE_CONFIG_MPI OFF)  # MPI is a dependency only when pride_engine was built with it
 if(PRIDE_MPI)

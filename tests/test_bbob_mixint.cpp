@@ -3,6 +3,7 @@
 // the box and f at six points of each problem, as 64-bit hashes of their bits over every function,
 // the suite's dimensions below its largescale ones (5, 10, 20, 40) and instances 1-15 (and a few
 // others), and in full for instance 1 in D = 5. Every comparison is bit for bit.
+#include <fmt/format.h>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <span>
@@ -19,6 +21,7 @@
 
 #include "engine/problem.hpp"
 #include "engine/run.hpp"
+#include "experiment/storage/reader.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/bbob_mixint/bbob_mixint.hpp"
 #include "problems/continuous/catalog.hpp"
@@ -241,6 +244,51 @@ TEST_CASE("bbob-mixint: by name in the catalog, the engine and pride run", "[bbo
         test::run_pride("run --algo de --problem bbob-mixint-f7 --dim 10 --instance 3 --evals 500 --json");
     REQUIRE(text.status == 0);
     CHECK(text.out.find("\"instance\": 3,") != std::string::npos);
+}
+
+TEST_CASE("campaigns: [[suite]] name = \"bbob-mixint\", and its refusals at the key", "[campaign][bbob_mixint]") {
+    const test::TempDir tmp("pride-mixint-suite");
+    const std::filesystem::path& dir = tmp.path();
+    const auto campaign = [](const std::string& suite) {
+        return "name = \"s\"\nseeds = 1\n[budget]\nevaluations_per_dim = 10\n[[suite]]\nname = \"bbob-mixint\"\n" +
+               suite + "[[algorithm]]\nid = \"de\"\ntype = \"de\"\npop = 10\n";
+    };
+    const auto refused = [&](const std::string& suite, const std::vector<std::string>& words) {
+        std::ofstream(dir / "c.toml") << campaign(suite);
+        INFO(suite);
+        test::expect_input_error(
+            "bench '" + (dir / "c.toml").string() + "' --out '" + (dir / "c.sqlite").string() + "'", words);
+        CHECK(!std::filesystem::exists(dir / "c.sqlite"));  // refused before anything ran
+    };
+    refused("functions = [1, 25]\ndimensions = [5]\n",
+            {"c.toml:7:", "function 25 is not in the bbob-mixint suite (1-24)"});
+    refused("instances = [0]\ndimensions = [5]\n", {"c.toml:7:", "bbob-mixint: COCO's instances are 1 to"});
+    refused("dimensions = [5, 7]\n", {"c.toml:7:", "dimension 7: the bbob-mixint functions take a multiple of 5"});
+    refused("dimensions = [80]\n", {"c.toml:7:", "dimension 80:", "bbob-largescale"});
+    refused("functions = [1]\n", {"c.toml:5", "a [[suite]] needs 'dimensions'"});
+
+    // The default instances (1-5), one problem per (function, dimension, instance), in that order,
+    // with COCO's best value and the suite's function number in the store.
+    std::ofstream(dir / "c.toml") << campaign("id = \"mi\"\nfunctions = [1, 20]\ndimensions = [5, 10]\n");
+    const std::string store = (dir / "c.sqlite").string();
+    REQUIRE(test::run_pride("bench '" + (dir / "c.toml").string() + "' --jobs 2 --out '" + store + "'").status == 0);
+    const auto s = pride::storage::read_store(store);
+    REQUIRE(s.problems);
+    REQUIRE(s.problems->size() == 2u * 2u * 5u);
+    CHECK(s.runs.size() == 2u * 2u * 5u);
+    std::size_t k = 0;
+    for (const int f : {1, 20})
+        for (const int d : {5, 10})
+            for (int i = 1; i <= 5; ++i) {
+                const auto& p = (*s.problems)[k++];
+                CHECK(p.id == fmt::format("mi-f{}-i{}-d{}", f, i, d));
+                CHECK(p.suite == "bbob-mixint");
+                CHECK(p.fid == f);
+                CHECK(p.instance == i);
+                CHECK(p.dim == d);
+                REQUIRE(p.f_opt);
+                CHECK(*p.f_opt == Problem(f, static_cast<std::size_t>(d), i).optimum_value());
+            }
 }
 
 }  // namespace bbob_mixint_test
