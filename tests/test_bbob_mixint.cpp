@@ -25,6 +25,7 @@
 #include "framework/error.hpp"
 #include "problems/continuous/bbob_mixint/bbob_mixint.hpp"
 #include "problems/continuous/catalog.hpp"
+#include "problems/continuous/integer_variables.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 
@@ -225,6 +226,19 @@ TEST_CASE("bbob-mixint: by name in the catalog, the engine and pride run", "[bbo
     REQUIRE(item != nullptr);
     CHECK(item->entry.suite == "bbob-mixint");
     CHECK(item->entry.number == 7);
+    // The function the engine holds says which variables are integer (bbob-mixint's only).
+    auto function = pride::continuous::make_function("bbob-mixint-f7", 10, 3);
+    CHECK(pride::continuous::integer_variables(function) == 8);
+    CHECK(function.lower()[7] == 0.0);
+    CHECK(function.upper()[7] == 15.0);
+    CHECK(pride::continuous::integer_variables(pride::continuous::make_function("bbob-f7", 10, 3)) == 0);
+    CHECK(pride::continuous::integer_variables(pride::continuous::make_function("sphere", 10)) == 0);
+    Problem direct(7, 10, 3);
+    const std::vector<double> x_star = direct.optimum_point();
+    CHECK(function.evaluate(x_star) == direct.evaluate(x_star));
+    CHECK(function.optimum_value() == direct.optimum_value());
+    CHECK(function.optimum_point() == x_star);
+
     const engine::Problem f7(engine::ContinuousSpec{"bbob-mixint-f7", 10, 3});
     const Problem reference(7, 10, 3);
     CHECK(f7.dimension() == 10);

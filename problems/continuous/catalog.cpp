@@ -13,6 +13,7 @@
 #include "problems/continuous/bbob/instance.hpp"
 #include "problems/continuous/bbob_mixint/bbob_mixint.hpp"
 #include "problems/continuous/function_variant.hpp"
+#include "problems/continuous/integer_variables.hpp"
 
 namespace pride::continuous {
 
@@ -320,6 +321,11 @@ Function make_function(std::string_view name, std::int64_t dim, std::optional<st
             break;
     }
     return e.make(static_cast<std::size_t>(dim), k);
+}
+
+std::size_t integer_variables(const Function& f) noexcept {
+    // Only the catalog makes a bbob-mixint function, under its suite's name.
+    return f.name().starts_with(bbob_mixint::kPrefix) ? f.dimension() / 5 * 4 : 0;
 }
 
 }  // namespace pride::continuous
