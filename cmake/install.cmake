@@ -9,7 +9,7 @@ include(CMakePackageConfigHelpers)
 
 set(PRIDE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/pride)
 
-set(pride_exported pride_framework pride_roughset pride_bbob pride_cec pride_cec2006 pride_cec2020rw pride_bbob_constrained pride_continuous pride_problems pride_grid pride_algorithms
+set(pride_exported pride_framework pride_roughset pride_bbob pride_cec pride_cec2006 pride_cec2020rw pride_bbob_constrained pride_bbob_mixint pride_continuous pride_problems pride_grid pride_algorithms
                    pride_engine pride_storage pride_experiment)
 set(PRIDE_NEEDS_BOOST OFF)
 foreach(t IN ITEMS pride_report pride_statistics)
@@ -46,7 +46,7 @@ install(DIRECTORY framework roughset problems algorithms engine experiment
         REGEX "/experiment/html$" EXCLUDE  # pride_html (the report page, cairo) is the command's and Python's
         REGEX "/experiment/store.hpp$" EXCLUDE  # the campaign runner's own, not an interface
         # the campaign file reader's own (toml++)
-        REGEX "/experiment/campaign/toml_(seeds|nodes).hpp$" EXCLUDE)
+        REGEX "/experiment/campaign/toml_(seeds|nodes|mixint).hpp$" EXCLUDE)
 
 set(PRIDE_CONFIG_MPI OFF)  # MPI is a dependency only when pride_engine was built with it
 if(PRIDE_MPI)

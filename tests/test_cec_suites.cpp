@@ -253,7 +253,8 @@ TEST_CASE("cec suites: instances, dimensions without data and unknown functions 
     refused("[[suite]]\nname = \"cec2022\"\nfunctions = [0]\ndimensions = [10]\n",
             {"c.toml:7:13: function 0 is not in the cec2022 suite (1-12)"});
     refused("[[suite]]\nname = \"cec2021\"\ndimensions = [10]\n",
-            {"c.toml:5: unknown suite 'cec2021' (bbob, bbob-constrained, classic, cec2017, cec2022, cec2020rw)"});
+            {"c.toml:5: unknown suite 'cec2021' (bbob, bbob-constrained, bbob-mixint, classic, cec2017, cec2022, "
+             "cec2020rw)"});
     // A [[problem]] on a CEC function: the catalog's own refusals, naming the problem.
     refused("[[problem]]\nid = \"p\"\ntype = \"cec2017-f3\"\ndim = 10\ninstance = 2\n",
             {"c.toml:5", "problem 'p'", "CEC functions have no instances"});

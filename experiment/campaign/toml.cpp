@@ -2,6 +2,7 @@
 #include "experiment/campaign/identity.hpp"
 #include "experiment/campaign/prepare.hpp"
 #include "experiment/campaign/protocol.hpp"
+#include "experiment/campaign/toml_mixint.hpp"
 #include "experiment/campaign/toml_nodes.hpp"
 #include "experiment/campaign/toml_seeds.hpp"
 
@@ -388,12 +389,20 @@ void add_suite(std::vector<CampaignProblem>& out, const std::string& file, const
         add_bbob_constrained_suite(out, file, t, expansion);
         return;
     }
+    if (name == "bbob-mixint") {
+        add_bbob_mixint_suite(out, file, t,
+                              [&](std::size_t n, double memory, const std::string& at, const std::string& what) {
+                                  expansion.add(n, memory, at, what);
+                              });
+        return;
+    }
     if (continuous::cec::suite_rules(name)) {
         add_cec_suite(out, file, t, *continuous::cec::suite_rules(name), expansion);
         return;
     }
     if (name != "bbob" && name != "classic")
-        fail(where, "unknown suite '" + name + "' (bbob, bbob-constrained, classic, cec2017, cec2022, cec2020rw)");
+        fail(where, "unknown suite '" + name +
+                        "' (bbob, bbob-constrained, bbob-mixint, classic, cec2017, cec2022, cec2020rw)");
     const bool bbob = name == "bbob";
     const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : name;
     std::vector<std::int64_t> functions, instances, dimensions;

@@ -11,7 +11,9 @@
 #include "framework/close_names.hpp"
 #include "framework/error.hpp"
 #include "problems/continuous/bbob/instance.hpp"
+#include "problems/continuous/bbob_mixint/bbob_mixint.hpp"
 #include "problems/continuous/function_variant.hpp"
+#include "problems/continuous/integer_variables.hpp"
 
 namespace pride::continuous {
 
@@ -158,6 +160,30 @@ void add_bbob_suite(Registry<CatalogEntry>& r, std::tuple<F...>*) {
     (add_bbob<F>(r), ...);
 }
 
+/// bbob-mixint-fN: COCO's mixed-integer function N (bbob-fN with integer variables), in its
+/// dimensions below the largescale ones (bbob_mixint.hpp), instances from 1.
+template <class F>
+void add_bbob_mixint(Registry<CatalogEntry>& r) {
+    CatalogEntry e;
+    for (std::size_t d = bbob_mixint::kMinDimension; d <= bbob_mixint::kMaxDimension; d += 5) e.dims.push_back(d);
+    e.min_dim = e.dims.front();
+    e.instances = Instances::coco;
+    e.suite = "bbob-mixint";
+    e.number = F::id;
+    e.make = [](std::size_t dim, std::int64_t instance) {
+        return wrap(bbob_mixint::Problem(F::id, dim, instance), bbob_mixint::name_of(F::id), instance);
+    };
+    r.add(bbob_mixint::name_of(F::id),
+          "COCO bbob-mixint: BBOB " + std::string(F::info.summary) +
+              " with 4D/5 integer variables (2, 4, 8, 16 values); COCO's instances",
+          std::move(e));
+}
+
+template <class... F>
+void add_bbob_mixint_suite(Registry<CatalogEntry>& r, std::tuple<F...>*) {
+    (add_bbob_mixint<F>(r), ...);
+}
+
 /// cecYYYY-fN: the CEC suites' functions, in the dimensions of the official data, one instance.
 void add_cec_suite(Registry<CatalogEntry>& r, cec::Suite suite) {
     for (int k = 1; k <= cec::size(suite); ++k) {
@@ -239,6 +265,7 @@ const Registry<CatalogEntry>& catalog() {
         add_yao<Shekel7>(reg, 22);
         add_yao<Shekel10>(reg, 23);
         add_bbob_suite(reg, static_cast<bbob::All*>(nullptr));
+        add_bbob_mixint_suite(reg, static_cast<bbob::All*>(nullptr));
         add_cec_suite(reg, cec::Suite::y2017);
         add_cec_suite(reg, cec::Suite::y2022);
         return reg;
@@ -260,6 +287,10 @@ Function make_function(std::string_view name, std::int64_t dim, std::optional<st
     }
     const auto& e = item->entry;
     require(dim >= 1, dim_source, "dimension must be >= 1, got " + std::to_string(dim));
+    // bbob-mixint's dimensions are COCO's multiples of 5, below its largescale ones: said in full.
+    if (e.suite == "bbob-mixint" &&
+        std::find(e.dims.begin(), e.dims.end(), static_cast<std::size_t>(dim)) == e.dims.end())
+        throw InputError(dim_source, bbob_mixint::dimension_message(e.number, dim));
     require(static_cast<std::size_t>(dim) >= e.min_dim, dim_source,
             std::string(name) + " needs dimension >= " + std::to_string(e.min_dim) + ", got " + std::to_string(dim));
     require(e.fixed_dim == 0 || static_cast<std::size_t>(dim) == e.fixed_dim, dim_source,
@@ -290,6 +321,11 @@ Function make_function(std::string_view name, std::int64_t dim, std::optional<st
             break;
     }
     return e.make(static_cast<std::size_t>(dim), k);
+}
+
+std::size_t integer_variables(const Function& f) noexcept {
+    // Only the catalog makes a bbob-mixint function, under its suite's name.
+    return f.name().starts_with(bbob_mixint::kPrefix) ? f.dimension() / 5 * 4 : 0;
 }
 
 }  // namespace pride::continuous

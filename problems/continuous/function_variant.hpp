@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "problems/continuous/bbob/suite.hpp"
+#include "problems/continuous/bbob_mixint/bbob_mixint.hpp"
 #include "problems/continuous/cec/functions.hpp"
 #include "problems/continuous/extras.hpp"
 #include "problems/continuous/function.hpp"
@@ -24,8 +25,8 @@ template <class... F>
 using WithInstances = std::variant<F..., Transformed<F>...>;
 
 // Scalable functions appear plain and transformed (instances k >= 1, shifted-*); fixed-dimension
-// ones (Yao's F14-F23), BBOB's (which build their own instances) and CEC's (one class for each
-// suite's functions, numbered) plain only.
+// ones (Yao's F14-F23), BBOB's and bbob-mixint's (which build their own instances) and CEC's (one
+// class for each suite's functions, numbered) plain only.
 using Scalable =
     WithInstances<Sphere, Rastrigin, Rosenbrock, Ackley, Griewank, Schwefel, Schwefel222, Schwefel12, Schwefel221, Step,
                   QuarticNoise, Schwefel226, Penalized1, Penalized2, Ellipsoid, Levy, Zakharov, StyblinskiTang>;
@@ -43,7 +44,7 @@ template <class V, class... T>
 struct AppendTuple<V, std::tuple<T...>> : Append<V, T...> {};
 
 using Any = AppendTuple<Append<Scalable, ShekelFoxholes, Kowalik, SixHumpCamel, Branin, GoldsteinPrice, Hartman3,
-                               Hartman6, Shekel5, Shekel7, Shekel10, cec::CecFunction>::type,
+                               Hartman6, Shekel5, Shekel7, Shekel10, cec::CecFunction, bbob_mixint::Problem>::type,
                         bbob::All>::type;
 
 }  // namespace detail
