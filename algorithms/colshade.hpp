@@ -13,8 +13,9 @@
 // there) differs, the code is followed: the paper updates the tolerance (its eq. 9) only when 0.2 N
 // individuals meet it and with exponent 1 / (FEs_eps - FEs); its tournament's third case (eq. 10)
 // asks both points to meet the tolerance; it clips F to F_crit where the code draws again; its CR
-// has no terminal value. The step labels (S1)-(S10) are this file's, not the paper's numbers. The parts shared with
-// L-SHADE (Tanabe and Fukunaga 2014) are algorithms/parts/de/'s: the archive, the weighted Lehmer mean.
+// has no terminal value. The step labels (S1)-(S10) are this file's, not the paper's numbers. The
+// parts shared with L-SHADE (Tanabe and Fukunaga 2014) are algorithms/parts/de/'s: the archive, the
+// weighted Lehmer mean.
 //
 // A point's violation inside the algorithm is svc(x; eps) = sum_i max(g_i, 0) + sum_j max(|h_j| -
 // eps_j, 0), with one tolerance eps_j per equality constraint; svc_abs is svc at eps_j = 1e-4
