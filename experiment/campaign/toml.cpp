@@ -313,32 +313,13 @@ void add_bbob_constrained_suite(std::vector<CampaignProblem>& out, const std::st
     const std::string where = fmt::format("{}:{}", file, line);
     const std::string name = "bbob-constrained";
     const std::string prefix = t.get("id") ? need_name(file, t, "id", where) : name;
-    std::vector<std::int64_t> functions, instances{1, 2, 3, 4, 5}, dimensions;
-    for (std::int64_t f = 1; f <= bc::kFunctions; ++f) functions.push_back(f);
-    if (const auto* n = t.get("functions")) functions = need_integers(file, *n, "functions");
-    if (const auto* n = t.get("instances")) instances = need_integers(file, *n, "instances");
-    if (const auto* n = t.get("dimensions"))
-        dimensions = need_integers(file, *n, "dimensions");
-    else
-        fail(where, "a [[suite]] needs 'dimensions' (a list of integers)");
-    for (auto* list : {&functions, &instances, &dimensions})
-        if (list->empty()) fail(where, "the lists of a [[suite]] must not be empty");
-    for (const std::int64_t f : functions)
-        if (f < 1 || f > bc::kFunctions)
-            fail(at(file, *t.get("functions")),
-                 fmt::format("function {} is not in the {} suite (1-{})", f, name, bc::kFunctions));
-    for (const std::int64_t k : instances)
-        if (k < 1 || k > continuous::bbob::kMaxInstance)
-            fail(at(file, *t.get("instances")), continuous::bbob::instance_range_message(name, k));
+    const auto [functions, instances, dimensions, dims] = read_suite_lists(file, t, name, bc::kFunctions);
     for (const std::int64_t d : dimensions)
         if (d < 2 || d > static_cast<std::int64_t>(bc::kMaxDimension))
             fail(at(file, *t.get("dimensions")),
                  fmt::format("dimension {}: the {} functions take a dimension from 2 to {} (the suite's: 2, 3, 5, "
                              "10, 20, 40)",
                              d, name, bc::kMaxDimension));
-    std::vector<std::int64_t> dims;
-    for (const std::int64_t d : dimensions)
-        if (std::find(dims.begin(), dims.end(), d) == dims.end()) dims.push_back(d);
     {
         // A rotation, and up to 6 + 3D active constraints and half as many inactive ones, of D values each.
         double memory = 0.0;
@@ -347,11 +328,7 @@ void add_bbob_constrained_suite(std::vector<CampaignProblem>& out, const std::st
             memory +=
                 static_cast<double>(functions.size() * instances.size()) * (16e3 + 8.0 * (20.0 * n * n + 8.0 * n));
         }
-        const char* key = "dimensions";
-        for (const char* other : {"instances", "functions"})
-            if (const auto* node = t.get(other);
-                node && node->as_array() && node->as_array()->size() > t.get(key)->as_array()->size())
-                key = other;
+        const char* key = longest_list(t);
         expansion.add(functions.size() * instances.size() * dims.size(), memory, at_column(file, *t.get(key)),
                       fmt::format("'{}': this [[suite]] expands to {} functions x {} instances x {} dimensions, or",
                                   key, functions.size(), instances.size(), dims.size()));
