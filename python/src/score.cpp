@@ -15,6 +15,20 @@ namespace {
 
 namespace rw = report::cec2020rw;
 
+/// A sequence of integers (dims, exclude): TypeError naming `what` otherwise.
+std::vector<std::int64_t> integers(const py::object& o, const char* what) {
+    if (!py::isinstance<py::sequence>(o) || py::isinstance<py::str>(o))
+        throw py::type_error(std::string(what) + ": expected a sequence of integers");
+    std::vector<std::int64_t> out;
+    for (const py::handle item : py::reinterpret_borrow<py::sequence>(o)) {
+        if (!py::isinstance<py::int_>(item) || py::isinstance<py::bool_>(item))
+            throw py::type_error(std::string(what) + ": expected integers, got " +
+                                 std::string(py::str(py::type::of(item).attr("__name__"))));
+        out.push_back(item.cast<std::int64_t>());
+    }
+    return out;
+}
+
 /// results: {name: (f, violation)}, each a (problems, runs) array; dims: one integer per problem.
 py::dict cec2020rw_score(const py::object& results, const py::object& dims, const py::object& order) {
     if (!py::isinstance<py::str>(order)) throw py::type_error("order: expected 'guidelines' or 'given'");
@@ -24,16 +38,8 @@ py::dict cec2020rw_score(const py::object& results, const py::object& dims, cons
     if (!py::isinstance<py::dict>(results))
         throw py::type_error("results: expected a dict {name: (f, violation)}, got " +
                              std::string(py::str(py::type::of(results).attr("__name__"))));
-    std::vector<std::int64_t> d;
-    if (!py::isinstance<py::sequence>(dims) || py::isinstance<py::str>(dims))
-        throw py::type_error("dims: expected a sequence of integers, one per problem");
-    for (const py::handle item : py::reinterpret_borrow<py::sequence>(dims)) {
-        if (!py::isinstance<py::int_>(item) || py::isinstance<py::bool_>(item))
-            throw py::type_error("dims: expected integers, got " +
-                                 std::string(py::str(py::type::of(item).attr("__name__"))));
-        d.push_back(item.cast<std::int64_t>());
-        require(d.back() >= 1, "dims", fmt::format("a dimension must be >= 1, got {}", d.back()));
-    }
+    const auto d = integers(dims, "dims");
+    for (const std::int64_t dim : d) require(dim >= 1, "dims", fmt::format("a dimension must be >= 1, got {}", dim));
     require(!d.empty(), "dims", "no problems");
     const auto& table = results.cast<py::dict>();
     require(!table.empty(), "results", "no algorithms");
@@ -72,20 +78,6 @@ py::dict cec2020rw_score(const py::object& results, const py::object& dims, cons
         s["total"] = scores[i].total;
         s["rank"] = ranks[i];
         out[py::str(names[i])] = s;
-    }
-    return out;
-}
-
-/// dims: a sequence of integers (each 10, 30, 50 or 100), or of function numbers for `exclude`.
-std::vector<std::int64_t> integers(const py::object& o, const char* what) {
-    if (!py::isinstance<py::sequence>(o) || py::isinstance<py::str>(o))
-        throw py::type_error(std::string(what) + ": expected a sequence of integers");
-    std::vector<std::int64_t> out;
-    for (const py::handle item : py::reinterpret_borrow<py::sequence>(o)) {
-        if (!py::isinstance<py::int_>(item) || py::isinstance<py::bool_>(item))
-            throw py::type_error(std::string(what) + ": expected integers, got " +
-                                 std::string(py::str(py::type::of(item).attr("__name__"))));
-        out.push_back(item.cast<std::int64_t>());
     }
     return out;
 }
