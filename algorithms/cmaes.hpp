@@ -41,6 +41,11 @@
 // coefficients are updated after each generation and start afresh with each run of a restart
 // sequence. The run's best point is Deb's best over the true (f, v) either way; without
 // constraints the run is the same, bit for bit, as before constraints were handled.
+// Integer variables (framework/variables.hpp): with `margin`, CMA-ES with margin (Hamano, Saito,
+// Nomura, Shirakawa 2022; parts/cma/margin.hpp) encodes them and bounds their marginal
+// probabilities; without it they are real coordinates, which the problem rounds. `unit_covariance`
+// and `centre_start` give the start Optuna's CmaEsSampler uses (mean at the centre, C = I with
+// sigma0 a share of the smallest range), for comparisons with it.
 // Decided by this project where the tutorial is open: stochastic ranking sweeps at most lambda
 // times (Runarsson and Yao's N, their number of individuals ranked), from the points in the
 // order they were drawn, with one draw of the run's Rng per comparison, taken after the
@@ -77,6 +82,7 @@
 #include "framework/result.hpp"
 #include "framework/run_state.hpp"
 #include "framework/termination.hpp"
+#include "framework/variables.hpp"
 
 namespace pride {
 namespace cma {
@@ -120,6 +126,10 @@ class Cmaes {
     ConstraintHandling constraints{};   // constrained problems only: the order the points rank by
     bool augmented_lagrangian = false;  // constrained problems only: rank by f + the AL's penalty
     cma::AlSettings al{};               // its parameters
+    bool margin = false;                // CMA-ES with margin on integer variables (margin.hpp)
+    double margin_alpha = 0.0;          // its alpha; 0: 1 / (n lambda)
+    bool unit_covariance = false;       // C starts as (min range)^2 I instead of diag(range^2)
+    bool centre_start = false;          // each run's mean starts at the box's centre, not at Init's point
 
     std::string name() const { return id; }
 
@@ -133,6 +143,8 @@ class Cmaes {
         boundary.validate(name());
         constraints.validate(name(), false, true);
         al.validate(name());
+        require(margin_alpha >= 0.0 && margin_alpha < 0.5, name(),
+                "margin alpha must be in [0, 0.5), got " + std::to_string(margin_alpha));
     }
 
     /// The first run's lambda in dimension n.
@@ -157,6 +169,15 @@ class Cmaes {
         Matrix mean(static_cast<Eigen::Index>(n), 1);
         auto sequence = visit_policy(restarts, [&](const auto& r) { return AnySequence(r.sequence(first_lambda(n))); });
         cma::RunPlan plan;
+        std::vector<std::size_t> integers;  // the margin's coordinates
+        if (margin)
+            for (std::size_t i = 0; i < n; ++i) {
+                const VariableType type = variable_type(problem, i);
+                require(type != VariableType::categorical, name(),
+                        "the margin takes integer and real variables; variable " + std::to_string(i + 1) +
+                            " is categorical");
+                if (type == VariableType::integer) integers.push_back(i);
+            }
         constexpr bool constrained = ConstrainedProblem<P>;
         [[maybe_unused]] auto order = order_for<P>(constraints);
         [[maybe_unused]] const bool lagrangian = constrained && augmented_lagrangian;
@@ -176,12 +197,18 @@ class Cmaes {
         auto go_on = [&] { return first ? !state.exhausted() : !state.done(); };
         while (go_on() && sequence.next(rng, plan)) {
             const std::int64_t before = state.progress().evaluations;
-            // The mean: one point of the Init policy, for the first run and every restart.
-            init(problem, rng, mean);
+            // The mean: one point of the Init policy (or the centre), for the first run and every restart.
+            if (centre_start) {
+                for (std::size_t i = 0; i < n; ++i)
+                    mean(static_cast<Eigen::Index>(i), 0) = 0.5 * (problem.lower()[i] + problem.upper()[i]);
+            } else {
+                init(problem, rng, mean);
+            }
             // Only the points the budget allows are drawn (a last run of a huge lambda needs no
             // more memory than its evaluations); a generation short of lambda ends the run.
             const auto columns = static_cast<Eigen::Index>(std::min(plan.lambda, state.remaining()));
-            search.begin(column(mean, 0), sigma0 * plan.sigma_factor, plan.lambda, columns, active);
+            search.begin(column(mean, 0), sigma0 * plan.sigma_factor, plan.lambda, columns, active, unit_covariance);
+            if (!integers.empty()) search.use_margin(integers, margin_alpha);
             if constexpr (constrained) {
                 const auto c = static_cast<std::size_t>(columns);
                 violations.resize(c);

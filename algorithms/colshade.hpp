@@ -10,10 +10,15 @@
 // codes and results.zip" in P-N-Suganthan/2020-RW-Constrained-Optimisation: colshade.m,
 // get_cx_params.m, crossover.m, deb_tournament.m, get_tolerance.m, update_memory.m, sort_pop.m),
 // read for its behaviour; an audit found no step that differs. Where the paper (E-24586-Final.pdf
-// there) differs, the code is followed: the paper updates the tolerance (its eq. 9) only when 0.2 N
-// individuals meet it and with exponent 1 / (FEs_eps - FEs); its tournament's third case (eq. 10)
-// asks both points to meet the tolerance; it clips F to F_crit where the code draws again; its CR
-// has no terminal value. The step labels (S1)-(S10) are this file's, not the paper's numbers. The
+// there) differs, the code is followed by default and the paper is `paper_reading`: the paper
+// updates the tolerance (its eq. 9) only when p_G = 0.2 N individuals meet it (counted per
+// equality, as the code tests each equality) and with exponent 1 / (FEs_eps - FEs); its
+// tournament's third case (eq. 10) asks both points to meet the tolerance; it clips F to F_crit
+// (Algorithm 2, line 2) where the code draws again; its CR (eq. 4) is 0 while M_CR is 0 and has no
+// terminal value (a memory slot whose successes all had CR = 0 holds 0, and later successes raise
+// it again). The best individual's rule in (S7) is the code's in both readings (the paper exempts
+// it from the first case only, which would let an epsilon-feasible trial replace a feasible best).
+// The step labels (S1)-(S10) are this file's, not the paper's numbers. The
 // parts shared with L-SHADE (Tanabe and Fukunaga 2014) are algorithms/parts/de/'s: the archive, the
 // weighted Lehmer mean.
 //
@@ -145,6 +150,8 @@ class Colshade {
     bool dynamic_tolerance = true;          // (S1); false: eps_j = `tolerance` throughout
     double cut = 0.6;                       // share of the budget after which eps_j = `tolerance`
     double tolerance = kEqualityTolerance;  // the final tolerance of the equalities
+    bool paper_reading = false;             // the paper's eq. 4, 9, 10 and F clip instead of the code's
+    double feasible_share = 0.2;            // paper reading: p_G / N, the share that must meet eps_j
     Init init{};
 
     std::string name() const { return id; }
@@ -171,6 +178,8 @@ class Colshade {
         require(cut >= 0.0 && cut <= 1.0, name(), "cut must be in [0, 1], got " + std::to_string(cut));
         require(std::isfinite(tolerance) && tolerance >= 0.0, name(),
                 "tolerance must be a finite number >= 0, got " + std::to_string(tolerance));
+        require(feasible_share >= 0.0 && feasible_share <= 1.0, name(),
+                "feasible_share must be in [0, 1], got " + std::to_string(feasible_share));
     }
 
     /// N_init on a problem of dimension `dim`.
@@ -297,14 +306,18 @@ class Colshade {
             violations(cx, n, eps, svc);
             if (q > 0 && dynamic_tolerance) {
                 bool any_met = false;
+                // The code: some individual meets eps_j; the paper: p_G = 0.2 N of them.
+                const double needed = paper_reading ? feasible_share * static_cast<double>(n) : 1.0;
                 for (std::size_t j = 0; j < q; ++j) {
-                    met[j] = 0;
-                    for (std::size_t i = 0; i < n && !met[j]; ++i)
-                        met[j] = std::abs(cx[i * k + m + j]) - eps[j] <= 0.0 ? 1 : 0;
+                    std::size_t meeting = 0;
+                    for (std::size_t i = 0; i < n; ++i)
+                        if (std::abs(cx[i * k + m + j]) - eps[j] <= 0.0) ++meeting;
+                    met[j] = meeting > 0 && static_cast<double>(meeting) >= needed ? 1 : 0;
                     any_met = any_met || met[j];
                 }
                 if (any_met && loose() && fes < cut_fes) {
-                    colshade::shrink_tolerances(eps, met, tolerance, static_cast<double>(n), cut_fes - fes);
+                    colshade::shrink_tolerances(eps, met, tolerance, paper_reading ? 1.0 : static_cast<double>(n),
+                                                cut_fes - fes);
                     violations(cx, n, eps, svc);
                 }
                 if (fes >= cut_fes && loose()) {
@@ -320,10 +333,16 @@ class Colshade {
                 levy_kind[i] = levy ? 1 : 0;
                 const Memory& mem = levy ? levy_memory : pbest_memory;
                 const auto r = static_cast<std::size_t>(rng.below(static_cast<std::uint64_t>(memory)));
-                double cr = mem.cr[r] < 0.0 ? 0.0 : mem.cr[r] + 0.1 * rng.normal();
+                const bool cr_zero = paper_reading ? !(mem.cr[r] > 0.0) : mem.cr[r] < 0.0;
+                double cr = cr_zero ? 0.0 : mem.cr[r] + 0.1 * rng.normal();
                 const double critical = std::sqrt(std::max(0.0, 1.0 - cr / 2.0) / static_cast<double>(n));
                 double f = 0.0;
-                while (!(f > critical)) f = mem.f[r] + 0.1 * std::tan(std::numbers::pi * (rng.uniform() - 0.5));
+                if (paper_reading) {
+                    f = mem.f[r] + 0.1 * std::tan(std::numbers::pi * (rng.uniform() - 0.5));
+                    if (!(f > critical)) f = critical;
+                } else {
+                    while (!(f > critical)) f = mem.f[r] + 0.1 * std::tan(std::numbers::pi * (rng.uniform() - 0.5));
+                }
                 cr = std::clamp(cr, 0.0, 1.0);
                 f = std::min(f, 1.0);
                 params[i] = {f, cr, f};
@@ -384,7 +403,7 @@ class Colshade {
                     fall_v[i] = svc[i] - su[i];
                 } else if (su[i] == 0.0 && svc[i] == 0.0 && fu[i] < fx[i]) {
                     fall_f[i] = fx[i] - fu[i];
-                } else if (loose_now && su_abs[i] < svc_abs[i]) {
+                } else if ((paper_reading ? su[i] == 0.0 && svc[i] == 0.0 : loose_now) && su_abs[i] < svc_abs[i]) {
                     fall_v[i] = svc_abs[i] - su_abs[i];
                 }
                 largest_f = std::max(largest_f, fall_f[i]);
@@ -419,8 +438,12 @@ class Colshade {
                 if (s.empty()) return;
                 if (std::all_of(s.gain.begin(), s.gain.end(), [](double g) { return g == 0.0; }))
                     std::fill(s.gain.begin(), s.gain.end(), 1.0);
-                const bool terminal = mem.cr[mem.next] < 0.0 || *std::max_element(s.cr.begin(), s.cr.end()) == 0.0;
-                mem.cr[mem.next] = terminal ? -1.0 : de::weighted_lehmer_mean(s.cr, s.gain);
+                const bool all_zero = *std::max_element(s.cr.begin(), s.cr.end()) == 0.0;
+                if (paper_reading)
+                    mem.cr[mem.next] = all_zero ? 0.0 : de::weighted_lehmer_mean(s.cr, s.gain);
+                else
+                    mem.cr[mem.next] =
+                        mem.cr[mem.next] < 0.0 || all_zero ? -1.0 : de::weighted_lehmer_mean(s.cr, s.gain);
                 mem.f[mem.next] = de::weighted_lehmer_mean(s.f, s.gain);
                 mem.next = (mem.next + 1) % mem.f.size();
             };

@@ -16,6 +16,7 @@
 #include "engine/run_checks.hpp"
 #include "framework/error.hpp"
 #include "framework/parallel.hpp"
+#include "framework/variables.hpp"
 
 namespace pride::engine {
 
@@ -151,6 +152,8 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
         Result r = box_run();
         copy_run(out, r);
         out.best_x = std::move(r.best_x);
+        if (const BoxTarget* box = p.box())  // integer coordinates reported as integers
+            std::visit([&](const auto& problem) { round_to_types(problem, out.best_x); }, box->problem);
         if (p.constrained()) {
             out.best_violation = r.best_violation;
             out.first_feasible = r.first_feasible;

@@ -27,6 +27,14 @@ std::vector<ParamSpec> common_params(const char* boundary_default = "resample") 
             flag("equal_fun_values", true,
                  "EqualFunVals: a run stops when its best and (1 + ceil(0.1 + lambda / 4))-th best values are equal "
                  "in more than a third of the last D generations"),
+            flag("margin", false,
+                 "CMA-ES with margin (Hamano et al. 2022, as python3-cmaes's CMAwM) on integer variables; 0: they are "
+                 "real coordinates the problem rounds"),
+            real("margin_alpha", 0.0, 0.0, 0.5, "the margin's alpha; 0: 1 / (D lambda)").open_above(),
+            choice("c0", {"range", "unit"}, "range",
+                   "the initial C: diag(range^2), sigma0 a share of each range, or (min range)^2 I (Optuna's)"),
+            choice("mean0", {"random", "centre"}, "random",
+                   "each run's initial mean: a point of the initialiser, or the centre of the box (Optuna's)"),
             walk_init_param(false)};
 }
 
@@ -52,6 +60,10 @@ Family<Covariance> configure(const Params& p, std::string id, cma::SelectableRes
         a.boundary = cma::Resample{};
     }
     a.restarts = std::move(restarts);
+    a.margin = p.flag("margin");
+    a.margin_alpha = p.real("margin_alpha");
+    a.unit_covariance = p.choice("c0") == "unit";
+    a.centre_start = p.choice("mean0") == "centre";
     a.init.suggestions = p.flag("walk_init");
     return a;
 }

@@ -147,6 +147,7 @@ Colshade<SelectableInit> configure_colshade(const Params& p) {
     a.levy_start = p.real("p_levy");
     a.dynamic_tolerance = p.flag("dynamic");
     a.cut = p.real("cut");
+    a.paper_reading = p.choice("reading") == "paper";
     a.init.suggestions = p.flag("walk_init");
     return a;
 }
@@ -164,6 +165,10 @@ void register_colshade(AlgorithmRegistry& registry) {
              .only_with_constraints(),
          real("cut", 0.6, 0.0, 1.0, "share of the budget after which the equality tolerances are 1e-4")
              .only_with_constraints(),
+         choice("reading", {"code", "paper"}, "code",
+                "where the paper and the authors' submitted code differ: the code, or the paper (tolerance falls "
+                "when 0.2 N meet it, eq. 10's third case between epsilon-feasible points, F clipped to F_crit, "
+                "no terminal CR)"),
          walk_init_param(false)},
         configure_colshade);
     add_runner<ConstrainedBoxTarget>(

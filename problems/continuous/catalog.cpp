@@ -324,8 +324,9 @@ Function make_function(std::string_view name, std::int64_t dim, std::optional<st
 }
 
 std::size_t integer_variables(const Function& f) noexcept {
-    // Only the catalog makes a bbob-mixint function, under its suite's name.
-    return f.name().starts_with(bbob_mixint::kPrefix) ? f.dimension() / 5 * 4 : 0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < f.dimension(); ++i) count += f.variable_type(i) == VariableType::integer ? 1 : 0;
+    return count;
 }
 
 }  // namespace pride::continuous

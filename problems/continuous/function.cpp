@@ -13,11 +13,15 @@ Function::Function(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {
         [&](const auto& f) {
             lower_.assign(f.lower().begin(), f.lower().end());
             upper_.assign(f.upper().begin(), f.upper().end());
+            if constexpr (requires { f.integer_variables(); }) integers_ = f.integer_variables();
         },
         impl_->function);
 }
 Function::Function(const Function& other)
-    : impl_(std::make_unique<Impl>(*other.impl_)), lower_(other.lower_), upper_(other.upper_) {}
+    : impl_(std::make_unique<Impl>(*other.impl_)),
+      lower_(other.lower_),
+      upper_(other.upper_),
+      integers_(other.integers_) {}
 Function& Function::operator=(const Function& other) {
     if (this != &other) *this = Function(other);
     return *this;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "framework/problem.hpp"
+#include "framework/variables.hpp"
 
 namespace pride::continuous {
 
@@ -32,6 +33,11 @@ class Function {
     std::size_t dimension() const noexcept { return lower_.size(); }
     std::span<const double> lower() const noexcept { return lower_; }
     std::span<const double> upper() const noexcept { return upper_; }
+    /// The type of variable i (framework/variables.hpp): integer on bbob-mixint's integer
+    /// coordinates, real everywhere else.
+    VariableType variable_type(std::size_t i) const noexcept {
+        return i < integers_ ? VariableType::integer : VariableType::real;
+    }
     /// The catalog name it was made from (an alias such as yao-f9 keeps its own name).
     std::string_view name() const noexcept;
     /// 0: the function as defined; k >= 1: instance k (instance.hpp; BBOB: COCO's instance k).
@@ -51,6 +57,7 @@ class Function {
   private:
     std::unique_ptr<Impl> impl_;
     std::vector<double> lower_, upper_;  // copies, so that the box is read without indirection
+    std::size_t integers_ = 0;           // variables 0 .. integers_ - 1 are integer (bbob-mixint)
 };
 
 }  // namespace pride::continuous

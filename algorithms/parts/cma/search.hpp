@@ -14,6 +14,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "algorithms/parts/cma/margin.hpp"
 #include "algorithms/parts/cma/stopping.hpp"
 #include "algorithms/parts/cma/strategy.hpp"
 #include "framework/constraint_order.hpp"
@@ -62,8 +63,10 @@ class Search {
     }
 
     /// A new run from mean `m0` with step sigma0 (a share of each range), population lambda; the
-    /// buffers hold `columns` <= lambda points (what the budget allows).
-    void begin(std::span<const double> m0, double sigma0, std::int64_t lambda, Eigen::Index columns, bool active) {
+    /// buffers hold `columns` <= lambda points (what the budget allows). `unit`: C starts as
+    /// (min range)^2 I instead of diag(range^2), the same step on every coordinate.
+    void begin(std::span<const double> m0, double sigma0, std::int64_t lambda, Eigen::Index columns, bool active,
+               bool unit = false) {
         const auto N = static_cast<Eigen::Index>(n_);
         s_ = make_strategy(n_, lambda, active, Separable);
         if (X_.cols() != columns) {
@@ -76,19 +79,31 @@ class Search {
         sigma_ = sigma_start_ = sigma0;
         ps_.setZero();
         pc_.setZero();
-        d_ = range_;  // C = diag(range^2): B = I, D = range
+        if (unit)
+            d_.setConstant(range_.minCoeff());
+        else
+            d_ = range_;  // C = diag(range^2): B = I, D = range
         if constexpr (Separable) {
-            diag_c_ = range_.array().square().matrix();
+            diag_c_ = d_.array().square().matrix();
         } else {
-            C_ = range_.array().square().matrix().asDiagonal();
+            C_ = d_.array().square().matrix().asDiagonal();
             B_.setIdentity(N, N);
         }
-        max_d0_ = range_.maxCoeff();
+        max_d0_ = d_.maxCoeff();
         eigen_interval_ = std::max(1.0, std::floor(1.0 / (10.0 * static_cast<double>(n_) * (s_.c1 + s_.cmu))));
         last_eigen_ = 0;
         generation_ = 0;
         hs_threshold_ = (1.4 + 2.0 / (static_cast<double>(n_) + 1.0)) * s_.chi_n;
         history_.reset(n_, lambda);
+        discrete_.assign(n_, 0);
+        margin_ = Margin{};
+    }
+
+    /// CMA-ES with margin for this run (margin.hpp): `integers` are the integer coordinates, their
+    /// values the box's integers; alpha <= 0: 1 / (n lambda). Call after begin().
+    void use_margin(std::span<const std::size_t> integers, double alpha) {
+        margin_.reset(integers, lo_, hi_, alpha, n_, s_.lambda);
+        for (const std::size_t j : integers) discrete_[j] = 1;
     }
 
     /// (38)-(40) for every column, with the boundary policy; Xeval() is then what to evaluate.
@@ -106,7 +121,7 @@ class Search {
                 bool clamped = false;
                 for (Eigen::Index i = 0; i < N; ++i) {
                     const auto u = static_cast<std::size_t>(i);
-                    const double c = std::max(lo_[u], std::min(x[i], hi_[u]));
+                    const double c = discrete_[u] ? x[i] : std::max(lo_[u], std::min(x[i], hi_[u]));
                     clamped = clamped || c != x[i];
                     Xeval_(i, k) = c;
                 }
@@ -117,6 +132,7 @@ class Search {
                         y = (x - m_) / sigma_;
                     }
                 }
+                if (margin_.active()) margin_.encode(x, m_, Xeval_.col(k));
             }
         });
     }
@@ -139,9 +155,19 @@ class Search {
         for (std::size_t k = 0; k < added.size(); ++k) rank_[k] += added[k];
         visit_policy(boundary, [&](const auto& b) {
             if constexpr (std::is_same_v<std::decay_t<decltype(b)>, Penalty>)
-                for (Eigen::Index k = 0; k < L; ++k)
-                    rank_[static_cast<std::size_t>(k)] +=
-                        b.weight * (X_.col(k) - Xeval_.col(k)).cwiseQuotient(range_).squaredNorm();
+                for (Eigen::Index k = 0; k < L; ++k) {
+                    double distance = 0.0;
+                    if (!margin_.active()) {
+                        distance = (X_.col(k) - Xeval_.col(k)).cwiseQuotient(range_).squaredNorm();
+                    } else {  // over the continuous coordinates: the integer ones are encoded, not clamped
+                        for (Eigen::Index i = 0; i < X_.rows(); ++i)
+                            if (!discrete_[static_cast<std::size_t>(i)]) {
+                                const double d = (X_(i, k) - Xeval_(i, k)) / range_[i];
+                                distance += d * d;
+                            }
+                    }
+                    rank_[static_cast<std::size_t>(k)] += b.weight * distance;
+                }
         });
         std::iota(order_.begin(), order_.end(), Eigen::Index{0});
         if constexpr (std::is_same_v<Order, PlainOrder>) {
@@ -200,6 +226,12 @@ class Search {
         }
         ++generation_;
         const bool definite = decompose();
+        if (margin_.active()) {
+            if constexpr (Separable)
+                margin_.correct(m_, sigma_, diag_c_);
+            else
+                margin_.correct(m_, sigma_, C_.diagonal());
+        }
         history_.record(sorted_, sorted_.size());
         return stopping(tolerances, definite);
     }
@@ -231,7 +263,7 @@ class Search {
     bool inside(const X& x) const {
         for (Eigen::Index i = 0; i < x.size(); ++i) {
             const auto u = static_cast<std::size_t>(i);
-            if (!(x[i] >= lo_[u] && x[i] <= hi_[u])) return false;
+            if (!discrete_[u] && !(x[i] >= lo_[u] && x[i] <= hi_[u])) return false;
         }
         return true;
     }
@@ -310,6 +342,8 @@ class Search {
     std::vector<Eigen::Index> order_;
     Eigen::SelfAdjointEigenSolver<Matrix> eigen_;
     ValueHistory history_;
+    std::vector<char> discrete_;  // the margin's integer coordinates: not clamped, encoded
+    Margin margin_;
     double sigma_ = 0.0, sigma_start_ = 0.0, max_d0_ = 0.0, eigen_interval_ = 1.0, hs_threshold_ = 0.0;
     std::int64_t last_eigen_ = 0, generation_ = 0;
 };
