@@ -7,16 +7,18 @@ ships it: ``optuna.samplers.CmaEsSampler(with_margin=True, seed=s)``, which buil
 with Optuna's as distributions of runtimes (evaluations to each target).
 
 Optuna 3.1 re-reads every trial on every sample, so one run costs time quadratic
-in its evaluations (measured: 10,000 trials of f1 in D = 20 took 47 s, 20,000
-about four times that); the whole table at 1,000 D evaluations per run would take
-well over an hour and a half of CPU. The table is therefore produced by driving
+in its evaluations (measured here: 10,000 trials of f1 in D = 20 took 47 s, the
+last 2,000 of them 20 s); the 30 runs of f10 and f15 in D = 20 alone, which use
+their whole budget, would take over an hour of CPU at 1,000 D evaluations each.
+The table is therefore produced by driving
 ``cmaes.CMAwM`` directly, doing exactly what the sampler does (optuna/samplers/
 _cmaes.py, ``sample_relative`` and ``_init_optimizer``):
 
 * trial 0 is Optuna's start-up trial, drawn by ``RandomSampler(seed=s)``: each
   integer uniform on [lo - 0.5, hi + 0.5] then rounded, each float uniform on
   [-5, 5]; it counts as one evaluation and is never told to CMAwM;
-* CMAwM gets mean = middle of the bounds, sigma0 = min(upper - lower) / 6,
+* CMAwM gets mean = middle of the bounds, sigma0 = min(upper - lower) / 6
+  (= 1/6 here: the binary variables have the narrowest range),
   bounds = [lo, hi] per variable (no half steps: ``transform_step=False``),
   steps 1 for integers and 0 for floats, ``n_max_resampling`` = 10 D and the
   default population size; no restarts (Optuna's default ``restart_strategy``);
@@ -26,6 +28,10 @@ _cmaes.py, ``sample_relative`` and ``_init_optimizer``):
   then reseeds the optimizer's generator with ``randint(1, 2**16) + trial``
   before its single ``ask``; a generation is told at the first trial after its
   lambda points were evaluated, with the ``x_for_tell`` values;
+* the optimizer is pickled after each tell and every trial asks a fresh
+  unpickled copy, as Optuna restores it from the trial's system attributes
+  (asking one live object gives other points in the last bits after a few
+  generations);
 * the point evaluated is ``x_for_eval`` with integers as integers and floats
   passed through Optuna's untransform (which maps 5.0 to the float below it).
 
@@ -38,7 +44,7 @@ run s uses instance s and seed s, and stops when f - f* <= 1e-8 or at the budget
 
 Usage (from the repository root, with the Python module built):
 
-    PYTHONPATH=build/python /usr/bin/python3 scripts/margin_reference.py \\
+    PYTHONPATH=build/python /usr/bin/python3 scripts/margin_reference.py --budget-per-dim 2000 \\
         > tests/data/cmawm/optuna_bbob_mixint.tsv
     PYTHONPATH=build/python /usr/bin/python3 scripts/margin_reference.py --check
 
@@ -214,6 +220,29 @@ def check(evals=300, seeds=(1, 2, 3), function=1, dim=10):
     return ok
 
 
+def header(budget_per_dim, options=""):
+    """The '#' lines that say what produced the table."""
+    import datetime
+
+    import cmaes
+    import optuna
+
+    command = "PYTHONPATH=build/python /usr/bin/python3 scripts/margin_reference.py"
+    command += f" {options}" if options else ""
+    today = datetime.datetime.now(datetime.timezone.utc).date().isoformat()
+    return "\n".join(
+        [
+            f"# Optuna {optuna.__version__} CmaEsSampler(with_margin=True, seed=s) replayed on cmaes "
+            f"{cmaes.__version__} CMAwM (Debian 12 packages; see the script's docstring and --check),",
+            f"# on pride's bbob-mixint: run s = instance s = seed s; budget {budget_per_dim} D evaluations "
+            "or until f - f* <= 1e-8.",
+            "# evals_1eK: evaluation at which f - f* first was <= 1eK (empty: never); final_best: "
+            "best f - f* of the run.",
+            f"# Produced {today} by: {command}",
+        ]
+    )
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--functions", default="1,2,10,15")
@@ -226,10 +255,11 @@ def main():
         functions = [int(v) for v in args.functions.split(",")]
         dims = [int(v) for v in args.dims.split(",")]
     except ValueError:
-        raise SystemExit("margin_reference.py: --functions and --dims take comma-separated integers")
+        parser.error("--functions and --dims take comma-separated integers")
     if args.check:
         sys.exit(0 if check() else 1)
 
+    print(header(args.budget_per_dim, " ".join(sys.argv[1:])))
     cols = ["function", "dim", "instance", "seed"]
     cols += [f"evals_1e{int(round(math.log10(t))):+d}" for t in TARGETS]
     cols += ["final_best", "evals_used"]
