@@ -75,6 +75,7 @@ class Run:
         self.best = math.inf
         self.hits = [None] * len(TARGETS)
         self.points = []  # kept only when comparing with Optuna
+        self.end = None  # why the run stopped: "target", "budget" or "diverged"
 
     def __call__(self, x, keep=False):
         value = float(self.problem(np.asarray(x, dtype=float))) - self.problem.optimum
@@ -89,7 +90,11 @@ class Run:
         return value
 
     def done(self):
-        return self.best <= FINAL_TARGET or self.evals >= self.budget
+        if self.best <= FINAL_TARGET:
+            self.end = "target"
+        elif self.evals >= self.budget:
+            self.end = "budget"
+        return self.end is not None
 
 
 def integer_count(dim):
@@ -162,12 +167,18 @@ def direct_run(run, seed, keep=False):
             optimizer = new_optimizer()
         else:
             optimizer = pickle.loads(stored)
-        if len(pending) >= optimizer.population_size:
-            optimizer.tell(pending[: optimizer.population_size])
-            pending = pending[optimizer.population_size :]
-            stored = pickle.dumps(optimizer)
-        optimizer._rng.seed(cma_rng.randint(1, 2**16) + trial)
-        x_eval, x_tell = optimizer.ask()
+        try:
+            if len(pending) >= optimizer.population_size:
+                optimizer.tell(pending[: optimizer.population_size])
+                pending = pending[optimizer.population_size :]
+                stored = pickle.dumps(optimizer)
+            optimizer._rng.seed(cma_rng.randint(1, 2**16) + trial)
+            x_eval, x_tell = optimizer.ask()
+        except AssertionError:
+            # cmaes refuses points beyond 1e32 once the search has diverged; Optuna's
+            # study.optimize raises the same error there, which ends the run.
+            run.end = "diverged"
+            break
         pending.append((x_tell, run(untransform(x_eval, dim), keep)))
         trial += 1
     return run
@@ -237,7 +248,9 @@ def header(budget_per_dim, options=""):
             f"# on pride's bbob-mixint: run s = instance s = seed s; budget {budget_per_dim} D evaluations "
             "or until f - f* <= 1e-8.",
             "# evals_1eK: evaluation at which f - f* first was <= 1eK (empty: never); final_best: "
-            "best f - f* of the run.",
+            "best f - f* of the run;",
+            "# end: target (1e-8 reached), budget, or diverged (cmaes's assertion that points stay "
+            "below 1e32 failed, as it would inside Optuna).",
             f"# Produced {today} by: {command}",
         ]
     )
@@ -262,7 +275,7 @@ def main():
     print(header(args.budget_per_dim, " ".join(sys.argv[1:])))
     cols = ["function", "dim", "instance", "seed"]
     cols += [f"evals_1e{int(round(math.log10(t))):+d}" for t in TARGETS]
-    cols += ["final_best", "evals_used"]
+    cols += ["final_best", "evals_used", "end"]
     print("\t".join(cols))
     for function in functions:
         for dim in dims:
@@ -271,7 +284,7 @@ def main():
                 run = direct_run(Run(function, dim, s, args.budget_per_dim * dim), s)
                 row = [f"f{function}", str(dim), str(s), str(s)]
                 row += ["" if h is None else str(h) for h in run.hits]
-                row += [f"{run.best:.6e}", str(run.evals)]
+                row += [f"{run.best:.6e}", str(run.evals), run.end]
                 print("\t".join(row), flush=True)
                 print(
                     f"f{function} D={dim} s={s}: {run.evals} evals, best {run.best:.3e}, "
