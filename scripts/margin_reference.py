@@ -37,7 +37,9 @@ _cmaes.py, ``sample_relative`` and ``_init_optimizer``):
 
 ``--check`` shows that this is the same algorithm: for f1, D = 10, seeds 1-3 and
 300 evaluations it runs Optuna's sampler itself and the direct loop and compares
-every evaluated point and value (exit status 1 on any difference).
+every evaluated point and value (exit status 1 on any difference). Run whole,
+Optuna's sampler on f2, D = 10, seed 14 stopped, like the replay, with cmaes's
+1e32 assertion after 14,921 evaluations with the same hitting times (142 s CPU).
 
 The objective is f(x) - f* with f = pride.Problem("bbob-mixint-fN", D, instance=s);
 run s uses instance s and seed s, and stops when f - f* <= 1e-8 or at the budget.
