@@ -9,7 +9,8 @@
 namespace pride::engine {
 
 AskTell::AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector<double> upper, Budget budget,
-                 std::uint64_t seed, std::int64_t objectives, AskTellConstraints constraints) {
+                 std::uint64_t seed, std::int64_t objectives, AskTellConstraints constraints,
+                 std::vector<VariableType> types) {
     dimension_ = lower.size();
     const bool several = algorithms().at(algorithm.name).multiobjective();
     require(several ? objectives >= 2 : objectives == 1, "objectives",
@@ -28,6 +29,7 @@ AskTell::AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector
     spec.inequalities = constraints.inequalities;
     spec.equalities = constraints.equalities;
     spec.tolerance = constraints.tolerance;
+    spec.types = std::move(types);
     if (constrained)
         // One point per batch: the engine evaluates constrained points one at a time.
         spec.constrained = [this](std::span<const double> x, std::span<double> c) -> double {

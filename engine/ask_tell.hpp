@@ -40,9 +40,11 @@ class AskTell {
     /// `objectives` M: 1 for a single-objective algorithm, at least 2 for a multi-objective one
     /// (engine/multiobjective.hpp; InputError("objectives", ...) otherwise). `constraints`: the
     /// counts and tolerance the engine checks for a user's function (InputError "inequalities",
-    /// "equalities", "tolerance"), one objective only, an algorithm that handles them.
+    /// "equalities", "tolerance"), one objective only, an algorithm that handles them. `types`:
+    /// the variables' types (CallbackSpec::types; the points asked for have them).
     AskTell(AlgorithmSpec algorithm, std::vector<double> lower, std::vector<double> upper, Budget budget,
-            std::uint64_t seed, std::int64_t objectives = 1, AskTellConstraints constraints = {});
+            std::uint64_t seed, std::int64_t objectives = 1, AskTellConstraints constraints = {},
+            std::vector<VariableType> types = {});
     /// A run still going is stopped at its pending batch and its thread joined.
     ~AskTell();
     AskTell(const AskTell&) = delete;

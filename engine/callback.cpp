@@ -20,18 +20,48 @@ void check_box(const std::string& name, const std::vector<double>& lower, const 
                 "bounds " + std::to_string(i) + " must be finite with lower <= upper");
 }
 
+/// The declared types: one per coordinate, with the bounds each type needs.
+void check_types(const std::string& name, const std::vector<double>& lower, const std::vector<double>& upper,
+                 const std::vector<VariableType>& types) {
+    if (types.empty()) return;
+    require(
+        types.size() == lower.size(), name,
+        "types has " + std::to_string(types.size()) + " entries for " + std::to_string(lower.size()) + " coordinates");
+    for (std::size_t i = 0; i < types.size(); ++i) {
+        if (types[i] == VariableType::real) continue;
+        const std::string which = "variable " + std::to_string(i) + " (" + std::string(type_name(types[i])) + ")";
+        require(
+            std::floor(lower[i]) == lower[i] && std::floor(upper[i]) == upper[i], name,
+            which + " needs integer bounds, got [" + std::to_string(lower[i]) + ", " + std::to_string(upper[i]) + "]");
+        if (types[i] == VariableType::categorical)
+            require(lower[i] == 0.0 && upper[i] >= 1.0, name,
+                    which + " needs bounds 0 and k - 1 with k >= 2 choices, got [" + std::to_string(lower[i]) + ", " +
+                        std::to_string(upper[i]) + "]");
+    }
+}
+
 }  // namespace
 
 CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
-                                 Batch batch, bool thread_safe, Starts starts) {
+                                 Batch batch, bool thread_safe, Starts starts, std::vector<VariableType> types) {
     check_box(name, lower, upper);
     require(static_cast<bool>(scalar) || static_cast<bool>(batch), name, "no function to evaluate");
+    check_types(name, lower, upper, types);
+    if (std::all_of(types.begin(), types.end(), [](VariableType t) { return t == VariableType::real; })) types.clear();
     shared_ =
         std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar),
-                                              std::move(batch), thread_safe, std::move(starts)});
+                                              std::move(batch), thread_safe, std::move(starts), std::move(types)});
 }
 
 double CallbackProblem::evaluate(std::span<const double> x) {
+    if (!shared_->types.empty()) {
+        // The user's function sees its types: a copy with the integer coordinates rounded (one
+        // buffer per thread, so no allocation per call once it has grown).
+        thread_local std::vector<double> typed;
+        typed.assign(x.begin(), x.end());
+        round_to_types(*this, typed);
+        x = typed;
+    }
     if (shared_->scalar) return shared_->scalar(x);
     double f = 0.0;
     const Eigen::Map<const Matrix> point(x.data(), static_cast<Eigen::Index>(x.size()), 1);
@@ -40,6 +70,18 @@ double CallbackProblem::evaluate(std::span<const double> x) {
 }
 
 void CallbackProblem::evaluate_batch(MatrixView points, std::span<double> values) {
+    if (!shared_->types.empty()) {
+        thread_local Matrix typed;
+        typed = points;
+        for (Eigen::Index j = 0; j < typed.cols(); ++j)
+            round_to_types(*this, std::span<double>(typed.col(j).data(), static_cast<std::size_t>(typed.rows())));
+        evaluate_typed(typed, values);
+        return;
+    }
+    evaluate_typed(points, values);
+}
+
+void CallbackProblem::evaluate_typed(MatrixView points, std::span<double> values) {
     if (shared_->batch) {
         shared_->batch(points, values);
         return;

@@ -13,6 +13,7 @@
 
 #include "framework/constraints.hpp"
 #include "framework/problem.hpp"
+#include "framework/variables.hpp"
 
 namespace pride::engine {
 
@@ -27,13 +28,19 @@ class CallbackProblem {
     /// `thread_safe`: the functions may be called from several threads at once (RunSettings'
     /// threads); `starts`: the problem's own starting points (empty: uniform in the box).
     CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
-                    Batch batch = {}, bool thread_safe = false, Starts starts = {});
+                    Batch batch = {}, bool thread_safe = false, Starts starts = {},
+                    std::vector<VariableType> types = {});
 
     std::size_t dimension() const noexcept { return shared_->lower.size(); }
     std::span<const double> lower() const noexcept { return shared_->lower; }
     std::span<const double> upper() const noexcept { return shared_->upper; }
     std::string_view name() const noexcept { return shared_->name; }
     bool thread_safe() const noexcept { return shared_->thread_safe; }
+    /// The declared type of variable i (real when none was declared). The function receives the
+    /// integer and categorical coordinates rounded to their values (round_to_types).
+    VariableType variable_type(std::size_t i) const noexcept {
+        return shared_->types.empty() ? VariableType::real : shared_->types[i];
+    }
 
     double evaluate(std::span<const double> x);
     void evaluate_batch(MatrixView points, std::span<double> values);
@@ -42,6 +49,9 @@ class CallbackProblem {
     void starting_points(Rng& rng, Matrix& out) const;
 
   private:
+    /// evaluate_batch on points already in the declared types.
+    void evaluate_typed(MatrixView points, std::span<double> values);
+
     struct Shared {
         std::string name;
         std::vector<double> lower, upper;
@@ -49,6 +59,7 @@ class CallbackProblem {
         Batch batch;
         bool thread_safe = false;
         Starts starts;
+        std::vector<VariableType> types;  // empty: all real
     };
     std::shared_ptr<const Shared> shared_;  // copies per run share the function and the box
 };

@@ -143,6 +143,7 @@ void prepare_callback(Prepared& out, const CallbackSpec& s) {
     require(!s.f_opt, "f_opt", "a function of several objectives has no single minimum");
     require(s.inequalities == 0 && s.equalities == 0 && !s.constrained, "constraints",
             "a function of several objectives takes no constraints");
+    require(s.types.empty(), "types", "a function of several objectives takes real variables only, for now");
     out.name = s.name;
     for (std::int64_t i = 1; i <= s.objectives; ++i) out.objective_names.push_back(fmt::format("f{}", i));
     out.searched.emplace(std::in_place_type<MoBoxTarget>,

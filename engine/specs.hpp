@@ -16,6 +16,7 @@
 #include "engine/params.hpp"
 #include "framework/problem.hpp"
 #include "framework/termination.hpp"
+#include "framework/variables.hpp"
 #include "problems/grid/map.hpp"
 #include "problems/grid/map_io.hpp"
 
@@ -101,6 +102,10 @@ struct CallbackSpec {
     /// The function's minimum, when the user knows it: reports then give precisions f - f_opt,
     /// and campaigns record when runs reach f_opt + 10^k (ERT, ECDF), as for the catalog's.
     std::optional<double> f_opt = std::nullopt;
+    /// The variables' types (framework/variables.hpp), one per coordinate; empty: all real. An
+    /// integer variable has integer bounds; a categorical one bounds 0 and k - 1 (k >= 2 choices,
+    /// the function receives the index). The function receives integer values on them.
+    std::vector<VariableType> types = {};
 };
 
 using ProblemSpec = std::variant<ContinuousSpec, GridSpec, CallbackSpec>;

@@ -168,6 +168,13 @@ def _list(name, value):
     return list(value)
 
 
+def _integers(value):
+    """The ``integers`` keyword: None, or a list of coordinate indices (from 0)."""
+    if value is None:
+        return None
+    return [_int("integers", i, False) for i in _list("integers", value)]
+
+
 def _grid(value):
     if not isinstance(value, Grid):
         raise TypeError(f"grid: expected a pride.Grid, got {type(value).__name__}")
@@ -198,7 +205,7 @@ class Result:
 
 def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, target=None, wall_ms=None,
              seed=1, instance=None, callback=None, vectorized=False, subject_to=None, inequalities=None,
-             equalities=None, tolerance=None, **params):
+             equalities=None, tolerance=None, integers=None, **params):
     """One run of ``algo`` on ``problem``: a registered problem's name (with ``dim``, and
     ``instance``) or a Python function with ``bounds=(lower, upper)``, called as ``f(x)`` with x
     of shape (dim,), or, with ``vectorized=True``, as ``f(X)`` with X of shape (n, dim) returning n
@@ -214,13 +221,19 @@ def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, ta
     Either way one point is one evaluation. A NaN constraint value makes the point infeasible. The
     result then has ``violation``, ``feasible`` and ``first_feasible``; the algorithm's parameter
     ``constraints`` (deb, epsilon, penalty) chooses how points compare. The CEC 2006 problems
-    ``cec2006-g01`` to ``cec2006-g24`` are taken by name, in their own dimension."""
+    ``cec2006-g01`` to ``cec2006-g24`` are taken by name, in their own dimension.
+
+    Integer variables: ``integers`` lists the coordinates (from 0) of a Python function whose
+    values are integers, with integer bounds; the function receives them as integral floats, the
+    result's ``x`` has them, and CMA-ES with ``margin=1`` searches them as integers (any other
+    algorithm searches the box and its points are rounded before the call). A registered problem
+    declares its own (``bbob-mixint-fN``)."""
     return Result(_pride.minimize(_str("algo", algo), problem, _int("dim", dim), bounds, _int("evals", evals),
                                   _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
                                   _seed(seed), _int("instance", instance), _callable("callback", callback),
                                   _bool("vectorized", vectorized), _callable("subject_to", subject_to),
                                   _int("inequalities", inequalities), _int("equalities", equalities),
-                                  _real("tolerance", tolerance), params))
+                                  _real("tolerance", tolerance), _integers(integers), params))
 
 
 def front(algo, problem, *, dim=None, objectives=None, bounds=None, evals=None, iters=None, wall_ms=None, seed=1,
@@ -284,14 +297,16 @@ class Optimizer:
     values per point; its ``result`` is the front, as from ``front``. With ``inequalities=m``
     and/or ``equalities=p`` (and ``tolerance``), an algorithm that handles constraints (pso,
     pso-constriction, the DE family) is told ``tell(values, g)``, g of shape (n, m + p); the
-    engine evaluates a constrained point at a time, so such a run asks for one point per batch."""
+    engine evaluates a constrained point at a time, so such a run asks for one point per batch.
+    ``integers`` as in ``minimize``: the points asked for have integer values there."""
 
     def __init__(self, algo, *, bounds, dim=None, evals=None, iters=None, target=None, wall_ms=None, seed=1,
-                 objectives=None, inequalities=None, equalities=None, tolerance=None, **params):
+                 objectives=None, inequalities=None, equalities=None, tolerance=None, integers=None, **params):
         self._run = _pride.Optimizer(_str("algo", algo), bounds, _int("dim", dim), _int("evals", evals),
                                      _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
                                      _seed(seed), _int("objectives", objectives), _int("inequalities", inequalities),
-                                     _int("equalities", equalities), _real("tolerance", tolerance), params)
+                                     _int("equalities", equalities), _real("tolerance", tolerance),
+                                     _integers(integers), params)
         self.algo = algo
 
     def ask(self):

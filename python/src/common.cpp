@@ -199,6 +199,19 @@ std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::objec
     return {coordinates(lower), coordinates(upper)};
 }
 
+std::vector<VariableType> integer_types(const std::optional<std::vector<std::int64_t>>& integers, std::size_t dim) {
+    if (!integers) return {};
+    std::vector<VariableType> types(dim, VariableType::real);
+    for (const std::int64_t i : *integers) {
+        require(i >= 0 && static_cast<std::size_t>(i) < dim, "integers",
+                fmt::format("{} is not a coordinate of the box (0 to {})", i, dim - 1));
+        const auto u = static_cast<std::size_t>(i);
+        require(types[u] == VariableType::real, "integers", fmt::format("{} is listed twice", i));
+        types[u] = VariableType::integer;
+    }
+    return types;
+}
+
 engine::CallbackSpec callback_spec(const py::object& fn, bool vectorized, std::vector<double> lower,
                                    std::vector<double> upper, const std::shared_ptr<UserError>& errors,
                                    std::string name) {
