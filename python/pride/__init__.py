@@ -283,7 +283,7 @@ def Problem(name, dim=None, *, instance=None, seed=1):
     """A registered continuous problem to evaluate: ``f = pride.Problem("bbob-f10", 10,
     instance=1)``; ``f(x)`` for a point of shape (dim,) gives a float, ``f(X)`` for an (n, dim)
     batch n values. ``f.lower``, ``f.upper``, ``f.optimum`` (f*, None when unknown), ``f.name``,
-    ``f.dim``, ``f.instance``. The values are the ones pride's runs see, bit for bit; ``seed``
+    ``f.dim``, ``f.instance``, ``f.types`` (each variable's, "real" or "integer"). The values are the ones pride's runs see, bit for bit; ``seed``
     seeds a noisy function's noise."""
     return _pride.Problem(_str("name", name), _int("dim", dim), _int("instance", instance), _seed(seed))
 

@@ -1,5 +1,7 @@
 // pride.Problem: a registered continuous function evaluated from Python.
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "common.hpp"
 #include "engine/problem_names.hpp"
@@ -51,6 +53,13 @@ class PyProblem {
     std::int64_t instance() const { return function_->instance(); }
     py::array_t<double> lower() const { return vector_array(function_->lower()); }
     py::array_t<double> upper() const { return vector_array(function_->upper()); }
+    /// Each variable's type: "real" or "integer" (bbob-mixint's first 4D/5).
+    std::vector<std::string> types() const {
+        std::vector<std::string> out;
+        for (std::size_t i = 0; i < function_->dimension(); ++i)
+            out.emplace_back(pride::type_name(function_->variable_type(i)));
+        return out;
+    }
     py::object optimum() const {
         const double v = function_->optimum_value();
         return std::isnan(v) ? py::object(py::none()) : py::object(py::float_(v));
@@ -77,7 +86,8 @@ void bind_problem(py::module_& m) {
         .def_property_readonly("instance", &PyProblem::instance)
         .def_property_readonly("lower", &PyProblem::lower)
         .def_property_readonly("upper", &PyProblem::upper)
-        .def_property_readonly("optimum", &PyProblem::optimum);
+        .def_property_readonly("optimum", &PyProblem::optimum)
+        .def_property_readonly("types", &PyProblem::types);
 }
 
 }  // namespace pride::python

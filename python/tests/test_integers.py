@@ -33,6 +33,8 @@ def test_ask_returns_integers_and_equals_minimize():
 
 
 def test_a_registered_problem_declares_its_own_integers():
+    assert pride.Problem("bbob-mixint-f2", 10).types == ["integer"] * 8 + ["real"] * 2
+    assert pride.Problem("sphere", 2).types == ["real", "real"]
     r = pride.minimize("cmaes", "bbob-mixint-f2", dim=10, evals=4000, seed=1, margin=1)
     assert all(v == round(v) for v in r.best_x[:8])
     with pytest.raises(ValueError, match="^integers: only for Python functions"):
