@@ -314,8 +314,9 @@ int run_main(int argc, char** argv) {
     auto* ioh_option =
         export_cmd->add_option("--ioh", exporting.ioh, "the folder to write IOHprofiler files to")->check(a_path());
     export_cmd
-        ->add_option("--coco", exporting.coco,
-                     "the folder to write COCO's data (.info, .dat, .tdat) of bbob or bbob-constrained runs to")
+        ->add_option(
+            "--coco", exporting.coco,
+            "the folder to write COCO's data (.info, .dat, .tdat) of bbob, bbob-mixint or bbob-constrained runs to")
         ->excludes(ioh_option)
         ->check(a_path());
 

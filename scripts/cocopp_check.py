@@ -12,7 +12,7 @@ With ERT_CSV, what `pride report STORE --format ert-csv` printed (bbob campaigns
 must equal pride's ERT exactly (both are Price's ERT over the same runs), and cocopp must read
 every run with its evaluations.
 
-With --store, the campaign store itself (bbob or bbob-constrained runs), read with sqlite3: cocopp
+With --store, the campaign store itself (bbob, bbob-mixint or bbob-constrained runs), read with sqlite3: cocopp
 must read each data set as the suite's (bbob-constrained: constraints counted), with one run per
 stored run in the store's order (instance, then seed): its instance, its evaluations (f
 evaluations, plus as many constraint evaluations on bbob-constrained, as cocopp sums them), and at
@@ -72,7 +72,7 @@ def stored_runs(store):
     db = sqlite3.connect(f"file:{store}?mode=ro", uri=True)
     rows = db.execute(
         "SELECT r.algorithm, p.fid, p.dim, p.instance, r.seed, r.evaluations, p.f_opt, r.trace_targets, p.suite "
-        "FROM runs r JOIN problems p ON p.id = r.problem WHERE p.suite IN ('bbob', 'bbob-constrained') "
+        "FROM runs r JOIN problems p ON p.id = r.problem WHERE p.suite IN ('bbob', 'bbob-mixint', 'bbob-constrained') "
         "ORDER BY r.algorithm, p.fid, p.dim, p.instance, r.seed").fetchall()
     db.close()
     runs, suites = {}, set()

@@ -202,7 +202,7 @@ TEST_CASE("export --coco: bad input is one line, exit 2", "[coco][export]") {
     const std::string other = (dir / "r.sqlite").string();
     REQUIRE(run_pride("bench '" + (dir / "r.toml").string() + "' --out '" + other + "'").status == 0);
     expect_input_error("export '" + other + "' --coco '" + (dir / "r").string() + "'",
-                       {"r.sqlite", "no run on the bbob suite or the bbob-constrained suite"});
+                       {"r.sqlite", "no run on the bbob, bbob-mixint or bbob-constrained suites"});
 
     // Runs stored before pride kept a trace cannot be written as COCO's data.
     exec_sql(store, "UPDATE runs SET trace_targets = '[]' WHERE seed = 2");
@@ -432,7 +432,7 @@ TEST_CASE("export --coco: a store of two COCO suites, or of neither, is one line
     const std::string other = (dir / "g.sqlite").string();
     REQUIRE(run_pride("bench '" + (dir / "g.toml").string() + "' --out '" + other + "'").status == 0);
     expect_input_error("export '" + other + "' --coco '" + (dir / "g").string() + "'",
-                       {"g.sqlite", "no run on the bbob suite or the bbob-constrained suite"});
+                       {"g.sqlite", "no run on the bbob, bbob-mixint or bbob-constrained suites"});
     CHECK(!fs::exists(dir / "g"));
 
     // A constrained run whose trace does not end at its last evaluation was stored before pride

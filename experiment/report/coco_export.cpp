@@ -33,11 +33,11 @@ double precision(double best, double f_opt) {
     return std::isfinite(best) ? std::max(best, f_opt) - f_opt : best;
 }
 
-/// The COCO suites a run can be written for: bbob, and bbob-constrained, whose runs' traces hold
-/// COCO's logged value max(f, f_opt) + sum g_i+ (framework/run_state.hpp) and count one f and one
-/// constraint evaluation per evaluation.
+/// The COCO suites a run can be written for: bbob and bbob-mixint (whose logger is bbob's), and
+/// bbob-constrained, whose runs' traces hold COCO's logged value max(f, f_opt) + sum g_i+
+/// (framework/run_state.hpp) and count one f and one constraint evaluation per evaluation.
 bool coco_suite(const std::string& suite) {
-    return suite == "bbob" || suite == "bbob-constrained";
+    return suite == "bbob" || suite == "bbob-mixint" || suite == "bbob-constrained";
 }
 
 /// One data line as logger_bbob_output writes it without x, on a line COCO writes without
@@ -118,8 +118,8 @@ CocoExportSummary export_coco(const std::string& store_path, const std::string& 
         runs[r.algorithm][*p->fid][p->dim].push_back({p->instance, r.seed, &r, *p->f_opt});
     }
     require(!runs.empty(), store_path,
-            "holds no run on the bbob suite or the bbob-constrained suite (COCO's data format is for their campaigns: "
-            "[[suite]] name = \"bbob\" or \"bbob-constrained\")");
+            "holds no run on the bbob, bbob-mixint or bbob-constrained suites (COCO's data format is for their "
+            "campaigns: [[suite]] name = \"bbob\", \"bbob-mixint\" or \"bbob-constrained\")");
     const bool constrained = summary.suite == "bbob-constrained";
 
     std::vector<std::string> ids;

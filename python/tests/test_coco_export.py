@@ -1,5 +1,5 @@
-"""cocopp, run from its source, reads what `pride export STORE --coco DIR` wrote of a bbob and of a
-bbob-constrained campaign as the store holds the runs (scripts/cocopp_check.py --store): each run
+"""cocopp, run from its source, reads what `pride export STORE --coco DIR` wrote of a bbob, a
+bbob-mixint and a bbob-constrained campaign as the store holds the runs (scripts/cocopp_check.py --store): each run
 one .info entry with its instance and evaluations, paired with its blocks, and at every target
 of cocopp the evaluations of the run's COCO trace (bbob-constrained: f and constraint evaluations
 summed, as cocopp counts them). PRIDE_COCOPP_SRC names the src/cocopp folder of a
@@ -19,7 +19,7 @@ evaluations_per_dim = 200
 name = "{suite}"
 functions = [{functions}]
 instances = [1, 2, 3]
-dimensions = [2, 3]
+dimensions = [{dims}]
 [[algorithm]]
 id = "de"
 type = "de"
@@ -31,13 +31,14 @@ pop = 10
 """
 
 
-@pytest.mark.parametrize("suite, functions", [("bbob", "1, 8"), ("bbob-constrained", "1, 43")])
-def test_cocopp_reads_the_export_as_the_store_holds_it(tmp_path, suite, functions):
+@pytest.mark.parametrize("suite, functions, dims", [("bbob", "1, 8", "2, 3"), ("bbob-mixint", "2, 15", "5, 10"),
+                                                    ("bbob-constrained", "1, 43", "2, 3")])
+def test_cocopp_reads_the_export_as_the_store_holds_it(tmp_path, suite, functions, dims):
     source = os.environ.get("PRIDE_COCOPP_SRC")
     if not source or not os.path.isdir(source):
         pytest.skip("needs PRIDE_COCOPP_SRC, the src/cocopp folder of a numbbo/coco-postprocess checkout")
     toml = tmp_path / "c.toml"
-    toml.write_text(CAMPAIGN.format(suite=suite, functions=functions))
+    toml.write_text(CAMPAIGN.format(suite=suite, functions=functions, dims=dims))
     store, coco = tmp_path / "c.sqlite", tmp_path / "coco"
     cli("bench", toml, "--out", store)
     cli("export", store, "--coco", coco)
