@@ -41,6 +41,10 @@
 // of generation G, or a static penalty), and the gains of (5) are combine_gains()'s, after
 // COLSHADE (Gurrola-Ramos et al. 2020); without constraints the run is the same, bit for bit, as
 // before constraints existed.
+// Integer variables (framework/variables.hpp), which the papers do not treat: with
+// `round_integers` each trial's integer coordinates are rounded after the Repair policy (the
+// common rounding of the mutant: a crossed coordinate is the mutant's or the integer target's),
+// the initial population too.
 // Decided by this project where the papers are silent: DE's NP rule is 10 D (Storn and Price
 // recommend 5 D to 10 D); ties replace in DE and jDE (Storn's and Tanabe's codes take u when
 // f(u) <= f(x)), not in JADE (its pseudo-code keeps x_i when f(x_i) <= f(u_i)); the bound
@@ -95,6 +99,7 @@ struct Start {
     std::int64_t population;
     Init init;
     Clamp bounds{};  // Init draws inside the box; this only guards the problem's own suggestions
+    bool round_integers = true;
     std::string name() const { return id; }
     void validate() const {}
 };
@@ -184,6 +189,7 @@ class De {
     Reduction reduction{};
     Init init{};
     ConstraintHandling constraints{};  // constrained problems only
+    bool round_integers = true;        // integer coordinates: trials rounded (framework/variables.hpp)
 
     std::string name() const { return id; }
 
@@ -260,7 +266,8 @@ class De {
                     "evaluation budget");
         const std::int64_t n_init = initial_population(problem.dimension());
         // Checks, the initial population (Init) evaluated and recorded as iteration 0.
-        auto run = start_box_run(de::Start<Init>{id, n_init, init}, problem, termination, seed, observer);
+        auto run =
+            start_box_run(de::Start<Init>{id, n_init, init, {}, round_integers}, problem, termination, seed, observer);
         const auto lo = run.lo, hi = run.hi;
         const std::size_t dim = run.dim;
         Rng& rng = run.rng;
@@ -313,6 +320,7 @@ class De {
                 for (std::size_t i = 0; i < n; ++i) {
                     const auto k = static_cast<Eigen::Index>(i);
                     r(column(u, k), column(std::as_const(x), k), lo, hi);
+                    if (!run.discrete.empty()) run.round(column(u, k));  // rounded trials
                 }
             });
             const auto evaluated = static_cast<std::size_t>(state.evaluate_population(

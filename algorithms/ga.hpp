@@ -53,6 +53,9 @@
 // Runarsson and Yao's (2000) stochastic ranking is not offered: it orders a population for a
 // rank-based selection, and this GA's parent selection is a tournament, which compares two members
 // at a time. Without constraints the run is the same, bit for bit, as before constraints existed.
+// Integer variables (framework/variables.hpp), which the papers do not treat: with
+// `round_integers` each child's integer coordinates are rounded after SBX and the mutation (the
+// rounding repair pymoo's mixed-variable GA gives its integer variables), the initial population too.
 // Decided by this project where the papers are silent: Deb's tournament is used without the
 // niching its paper adds among feasible members (sigma_share; a distance per comparison) and
 // without its mutation of infeasible members; under apm the plus replacement (absent from the
@@ -111,6 +114,7 @@ class Ga {
     Init init{};
     Hook hook{};
     ConstraintHandling constraints{};  // constrained problems only (deb, epsilon, penalty, apm)
+    bool round_integers = true;        // integer coordinates: children rounded (framework/variables.hpp)
 
     std::string name() const { return id; }
 

@@ -23,6 +23,9 @@
 // a static penalty), on (f, v) pairs; the epsilon level's generation is the iteration.
 // Defaults (docs/algorithms.md): w 0.9 -> 0.4 linearly, c1 = c2 = 2, vmax = 0.2 (high - low),
 // clamping to the box.
+// Integer variables (framework/variables.hpp), which the papers do not treat: with
+// `round_integers` the positions are rounded on those coordinates after each move (rounded
+// positions, the common treatment; the velocities stay real), the initial swarm too.
 // Decided by this project where the papers are silent: initial velocities are U(-vmax, vmax);
 // w(t) runs over the horizon T = the iteration limit, or the iterations the evaluation budget
 // allows, reaching w_end on the last one; when the budget ends inside a sweep the remaining
@@ -110,6 +113,7 @@ class Pso {
     Bounds bounds{};
     Init init{};
     ConstraintHandling constraints{};  // constrained problems only
+    bool round_integers = true;        // integer coordinates: rounded positions (framework/variables.hpp)
 
     std::string name() const { return id; }
 
@@ -173,6 +177,7 @@ class Pso {
                     if constexpr (clamp) xi[d] = std::max(lo[d], std::min(xi[d], hi[d]));  // Clamp's own formula
                 }
                 if constexpr (!clamp) bounds(column(x, i), lo, hi);
+                if (!run.discrete.empty()) run.round(column(x, i));
             }
             rng = local;
             state.evaluate_population(problem, x.leftCols(moving),

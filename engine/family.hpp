@@ -27,6 +27,16 @@ inline ParamSpec walk_init_param(bool default_value) {
                 "start from the problem's suggestions (grids: feasible walks, as the grid spec's init sets it)");
 }
 
+/// The typed space's rounding operator (framework/variables.hpp) on a problem with integer
+/// variables: `what` put on integer values, or the coordinates searched as reals that the
+/// problem rounds when it evaluates them.
+inline ParamSpec integers_param(const std::string& what) {
+    return choice("integers", {"round", "relax"}, "round",
+                  "integer variables (bbob-mixint, functions given integers): " + what +
+                      " rounded to their values, or searched as reals the problem rounds")
+        .only_on_boxes();
+}
+
 /// Memory of a population algorithm holding `matrices` population-sized matrices of points (and a
 /// few vectors): 8 bytes per number.
 inline auto population_memory(double matrices) {

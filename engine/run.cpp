@@ -94,13 +94,16 @@ std::optional<Target> threaded_box(const BoxTarget& target, const std::string& n
                 if constexpr (SuggestsStartingPoints<P>)
                     starts = [parallel](Rng& rng, Matrix& out) { parallel.first().starting_points(rng, out); };
                 const auto lo = problem.lower(), hi = problem.upper();
+                // The types too, so that a run on threads is the run on one thread.
+                std::vector<VariableType> types;
+                for (std::size_t i = 0; i < problem.dimension(); ++i) types.push_back(variable_type(problem, i));
                 return Target(BoxTarget{CallbackProblem(
                     name, std::vector<double>(lo.begin(), lo.end()), std::vector<double>(hi.begin(), hi.end()),
                     [parallel](std::span<const double> x) mutable { return parallel.evaluate(x); },
                     [parallel](MatrixView points, std::span<double> values) mutable {
                         parallel.evaluate_batch(points, values);
                     },
-                    true, std::move(starts))});
+                    true, std::move(starts), std::move(types))});
             }
         },
         target.problem);

@@ -1,7 +1,9 @@
-// CMA-ES with margin (algorithms/parts/cma/margin.hpp, Hamano et al. 2022): the margin's two
-// corrections hold the probability of leaving the mean's integer value at alpha, every evaluated
-// point has its integer coordinates on their lattice, and on bbob-mixint's ellipsoid the margin
-// finds the optimum where plain CMA-ES stalls on the integer plateaus.
+// Integer variables (framework/variables.hpp). CMA-ES with margin (algorithms/parts/cma/margin.hpp,
+// Hamano et al. 2022): the margin's two corrections hold the probability of leaving the mean's
+// integer value at alpha, every evaluated point has its integer coordinates on their lattice, on
+// bbob-mixint's ellipsoid it finds the optimum where plain CMA-ES stalls, and it takes Optuna's
+// evaluations to the targets. The rounding operator of PSO, DE and the GA keeps their populations
+// on the lattice; a user's function receives integers.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -19,7 +21,10 @@
 #include <boost/math/distributions/normal.hpp>
 
 #include "algorithms/cmaes.hpp"
+#include "algorithms/de.hpp"
+#include "algorithms/ga.hpp"
 #include "algorithms/parts/cma/margin.hpp"
+#include "algorithms/pso.hpp"
 #include "engine/problem.hpp"
 #include "engine/run.hpp"
 #include "framework/variables.hpp"
@@ -154,6 +159,45 @@ TEST_CASE("cmaes margin: every evaluated point has its integers on their values"
     Recording with_category;
     with_category.categorical = true;
     CHECK_THROWS_WITH(a.run(with_category, t, 7), Catch::Contains("variable 1 is categorical"));
+}
+
+template <class A>
+std::int64_t off_lattice_points(A algorithm, bool round) {
+    algorithm.round_integers = round;
+    Termination t;
+    t.max_evaluations = 2000;
+    Recording problem;
+    const Result r = algorithm.run(problem, t, 5);
+    CHECK(*problem.calls == 2000);
+    if (round)
+        for (std::size_t i = 0; i < problem.integers; ++i) CHECK(r.best_x[i] == std::round(r.best_x[i]));
+    return *problem.off_lattice;
+}
+
+TEST_CASE("typed variables: PSO, DE and the GA round what they make on integer coordinates", "[margin][typed]") {
+    // With the rounding operator every point evaluated has integer values there (the initial
+    // population too); without it the problem gets reals, which it would round itself.
+    Pso<> pso;
+    De<> de;
+    Ga<> ga;
+    CHECK(off_lattice_points(pso, true) == 0);
+    CHECK(off_lattice_points(de, true) == 0);
+    CHECK(off_lattice_points(ga, true) == 0);
+    CHECK(off_lattice_points(pso, false) > 0);
+    CHECK(off_lattice_points(de, false) > 0);
+    CHECK(off_lattice_points(ga, false) > 0);
+    // On a problem of real variables the operator is no operator: the same bits either way.
+    const engine::Problem sphere(engine::ContinuousSpec{"sphere", 4});
+    engine::Budget budget;
+    budget.evaluations = 1500;
+    for (const char* algo : {"pso", "de", "jade", "ga", "ga-plus", "iaga"}) {
+        INFO(algo);
+        engine::AlgorithmSpec relaxed{algo, {}};
+        relaxed.params.set_name("integers", "relax");
+        const auto a = engine::run({algo, {}}, sphere, budget, 9), b = engine::run(relaxed, sphere, budget, 9);
+        CHECK(a.best_x == b.best_x);
+        CHECK(a.history == b.history);
+    }
 }
 
 TEST_CASE("cmaes margin: a problem without integer variables runs as without the margin", "[cmaes][margin]") {

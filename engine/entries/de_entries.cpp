@@ -47,6 +47,7 @@ Family common(const std::string& id, const Params& p, de::SelectableSize size) {
     a.size = std::move(size);
     if (p.choice("bounds") == "clamp") a.repair = de::ClampRepair{};
     a.init.suggestions = p.flag("walk_init");
+    a.round_integers = p.choice("integers") == "round";
     return a;
 }
 
@@ -55,6 +56,7 @@ void add(AlgorithmRegistry& registry, const std::string& name, const std::string
          std::vector<ParamSpec> params, Configure configure) {
     params.push_back(bounds());
     params.push_back(walk_init_param(false));
+    params.push_back(integers_param("the trials' integer coordinates"));
     auto e = box_algorithm(name, "de", summary, std::move(params), configure);
     add_constrained_runner(e, configure);
     // The population and the trials, the archive (each entry's own size), the per-individual

@@ -36,6 +36,7 @@ void common(G& a, const Params& p, bool plus) {
 template <class G>
 void box_operators(G& a, const Params& p) {
     a.init.suggestions = p.flag("walk_init");
+    a.round_integers = p.choice("integers") == "round";
     a.crossover.eta = p.real("eta_c");
     a.mutation.eta = p.real("eta_m");
 }
@@ -67,6 +68,7 @@ std::vector<ParamSpec> params(bool plus) {
                      "(default 0.1)")
                     .no_default());
     v.push_back(walk_init_param(false).only_on_boxes());
+    v.push_back(integers_param("the children's integer coordinates"));
     return v;
 }
 
@@ -97,7 +99,8 @@ std::vector<ParamSpec> iaga_params() {
         real("k3", 1.0, 0.0, 1.0, "pc for a pair worse than average"),
         real("k4", 0.5, 0.0, 1.0, "pm for a member worse than average (per gene on boxes, per child on chains)"),
         real("pm_min", 0.005, 0.0, 1.0, "least pm of any member (Srinivas-Patnaik's default mutation rate)"),
-        walk_init_param(false).only_on_boxes()};
+        walk_init_param(false).only_on_boxes(),
+        integers_param("the children's integer coordinates")};
 }
 
 void add_iaga(AlgorithmRegistry& registry) {
@@ -182,7 +185,8 @@ void add_ga_q(AlgorithmRegistry& registry) {
         real("epsilon", 0.1, 0.0, 1.0, "Q-learning: probability of a random action"),
         real("alpha", 0.1, 0.0, 1.0, "Q-learning: learning rate"),
         real("gamma", 0.9, 0.0, 1.0, "Q-learning: discount factor"),
-        walk_init_param(false)};
+        walk_init_param(false),
+        integers_param("the children's integer coordinates")};
     auto e =
         box_algorithm("ga-q", "ga",
                       "GA whose mutation is polynomial, uniform or Gaussian by probabilities (0.6/0.2/0.2 in "
@@ -194,6 +198,7 @@ void add_ga_q(AlgorithmRegistry& registry) {
                           a.replacement.elitism = p.integer("elitism");
                           a.selection.size = p.integer("tournament");
                           a.init.suggestions = p.flag("walk_init");
+                          a.round_integers = p.choice("integers") == "round";
                           a.crossover.eta = p.real("eta_c");
                           a.crossover.probability = p.real("pc");
                           auto& [polynomial, uniform, gaussian] = a.mutation.operators;
@@ -277,7 +282,8 @@ std::vector<ParamSpec> sga_params() {
             real("pc", 0.9, 0.0, 1.0, "crossover probability per pair"),
             real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
             real("pm", 0.0, 0.0, 1.0, "mutation probability per gene (default 1/D)").no_default(),
-            walk_init_param(false)};
+            walk_init_param(false),
+            integers_param("the children's integer coordinates")};
 }
 
 void add_ga_sga(AlgorithmRegistry& registry) {

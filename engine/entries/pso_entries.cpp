@@ -13,6 +13,7 @@ Family configure(const Params& p) {
     Family a;
     a.population = p.integer("pop");
     a.init.suggestions = p.flag("walk_init");
+    a.round_integers = p.choice("integers") == "round";
     a.velocity_clamp.fraction = p.real("vmax");
     return a;
 }
@@ -39,7 +40,8 @@ void register_pso(AlgorithmRegistry& registry) {
         {population_param(50, 2), real("w_start", 0.9, 0.0, 1.5, "inertia weight at the first iteration"),
          real("w_end", 0.4, 0.0, 1.5, "inertia weight at the last iteration"),
          real("c1", 2.0, 0.0, 10.0, "cognitive coefficient (towards the personal best)"),
-         real("c2", 2.0, 0.0, 10.0, "social coefficient (towards the global best)"), vmax(), walk_init_param(false)},
+         real("c2", 2.0, 0.0, 10.0, "social coefficient (towards the global best)"), vmax(), walk_init_param(false),
+         integers_param("the particles' integer coordinates (rounded positions)")},
         configure_pso);
     add_constrained_runner(pso, configure_pso);
     pso.memory = population_memory(3);  // positions, velocities, personal bests
@@ -58,7 +60,7 @@ void register_pso(AlgorithmRegistry& registry) {
         "pso-constriction", "pso", "particle swarm with Clerc-Kennedy constriction chi 0.7298, c 2.05",
         {population_param(50, 2), real("chi", 0.7298, 0.0, 1.0, "constriction factor").open_below().open_above(),
          real("c", 2.05, 0.0, 10.0, "acceleration coefficient (both attractions)").open_below(), vmax(),
-         walk_init_param(false)},
+         walk_init_param(false), integers_param("the particles' integer coordinates (rounded positions)")},
         configure_constriction);
     add_constrained_runner(constriction, configure_constriction);
     constriction.memory = population_memory(3);

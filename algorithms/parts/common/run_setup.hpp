@@ -19,6 +19,7 @@
 #include "framework/random.hpp"
 #include "framework/run_state.hpp"
 #include "framework/termination.hpp"
+#include "framework/variables.hpp"
 
 namespace pride {
 
@@ -62,6 +63,11 @@ struct BoxRun : RunStart<> {
     Matrix x;
     std::vector<double> fx, vx;
     std::vector<double> cx;  // constrained problems, when asked for: the m + p values of each point in turn
+    // The integer and categorical coordinates the algorithm rounds (its `round_integers`; empty
+    // on a problem of real variables): the typed space's rounding operator.
+    std::vector<std::size_t> discrete = {};
+    /// Coordinates `discrete` of x put on their values.
+    void round(std::span<double> x) const noexcept { round_coordinates(x, discrete, lo, hi); }
 };
 
 /// `constraint_values`: on a constrained problem, keep the initial points' constraint values in cx.
@@ -79,7 +85,12 @@ BoxRun start_box_run(const Algorithm& algorithm, P& problem, const Termination& 
                {}};
     seed_noise(problem, seed);
     algorithm.init(problem, run.rng, run.x);
-    for (Eigen::Index i = 0; i < run.x.cols(); ++i) algorithm.bounds(column(run.x, i), run.lo, run.hi);
+    if constexpr (requires { algorithm.round_integers; })
+        if (algorithm.round_integers) run.discrete = discrete_coordinates(problem);
+    for (Eigen::Index i = 0; i < run.x.cols(); ++i) {
+        algorithm.bounds(column(run.x, i), run.lo, run.hi);
+        run.round(column(run.x, i));
+    }
     if constexpr (ConstrainedProblem<P>) {
         if (constraint_values) {
             run.cx.assign(problem.constraint_counts().total() * run.fx.size(), 0.0);

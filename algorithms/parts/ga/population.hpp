@@ -100,7 +100,10 @@ class BoxPopulation {
     void mutate(std::span<double> c, const GenerationContext& context) {
         with_context(mutate_, context, c, run_.lo, run_.hi, run_.rng);
     }
-    void repair(std::span<double> c) const { ga_.bounds(c, run_.lo, run_.hi); }
+    void repair(std::span<double> c) const {
+        ga_.bounds(c, run_.lo, run_.hi);
+        run_.round(c);  // rounded children on integer coordinates (empty: none)
+    }
 
     /// The children in order; +inf past the budget.
     void evaluate_children() {
