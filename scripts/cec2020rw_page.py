@@ -26,6 +26,7 @@ import pathlib
 import re
 import subprocess
 import sys
+import threading
 import xml.etree.ElementTree as ET
 import zipfile
 from concurrent.futures import ThreadPoolExecutor
@@ -40,6 +41,7 @@ RUNS = 25
 # label -> `pride run` arguments: pride's configurations on the page.
 CONFIGS = {
     "colshade": ["--algo", "colshade"],
+    "colshade-paper": ["--algo", "colshade", "--param", "reading=paper"],
 }
 # The entrants' workbooks, by the names the competition's repository gives them.
 ENTRANTS = ["BiPop", "COLSHADE", "DEQL", "EnMODE", "FCHA", "SASS", "VMCH", "sCMAgES"]
@@ -107,13 +109,25 @@ def run_all(pride=REPO / "build" / "cli" / "pride", jobs=2):
     problems = sorted(int(m.group(1)) for m in (re.match(r"cec2020rw-rc(\d+)$", p["name"]) for p in listed) if m)
     assert set(range(1, 58)) - set(problems) == MISSING, problems
     todo = [(label, k, s) for label in CONFIGS for k in problems for s in range(1, RUNS + 1)]
+    header = ["config", "problem", "seed", "f", "violation", "first_feasible", "evaluations"]
+    # Rows already made: the data file's, and those of an interrupted run (appended one by one to
+    # the .partial file, so that a stopped run resumes where it was).
     done = {}
-    if (DATA / "cec2020rw.csv").is_file():
-        with open(DATA / "cec2020rw.csv", newline="") as fh:
-            for r in csv.DictReader(fh):
-                done[(r["config"], int(r["problem"][2:]), int(r["seed"]))] = (
-                    float(r["f"]), float(r["violation"]), int(r["first_feasible"]) if r["first_feasible"] else None,
-                    int(r["evaluations"]))
+    partial = DATA / "cec2020rw.csv.partial"
+    for path in (DATA / "cec2020rw.csv", partial):
+        if path.is_file():
+            with open(path, newline="") as fh:
+                for r in csv.DictReader(fh):
+                    done[(r["config"], int(r["problem"][2:]), int(r["seed"]))] = (
+                        float(r["f"]), float(r["violation"]),
+                        int(r["first_feasible"]) if r["first_feasible"] else None, int(r["evaluations"]))
+    if not partial.is_file():
+        partial.write_text(",".join(header) + "\n")
+    lock = threading.Lock()
+
+    def row(job, result):
+        (label, k, seed), (f, v, first, evals) = job, result
+        return [label, f"RC{k:02}", seed, repr(float(f)), repr(float(v)), "" if first is None else first, evals]
 
     def run(job):
         label, k, seed = job
@@ -123,15 +137,21 @@ def run_all(pride=REPO / "build" / "cli" / "pride", jobs=2):
                                        "--dim", str(DIMS[k - 1]), "--evals", str(budget(DIMS[k - 1])), "--seed",
                                        str(seed), "--json"], text=True)
         r = json.loads(out)
-        return r["best_f"], r["best_violation"], r["first_feasible"], r["evaluations"]
+        result = r["best_f"], r["best_violation"], r["first_feasible"], r["evaluations"]
+        with lock, open(partial, "a", newline="") as fh:
+            csv.writer(fh, lineterminator="\n").writerow(row(job, result))
+        return result
 
     with ThreadPoolExecutor(jobs) as pool:
         results = list(pool.map(run, todo))
-    with open(DATA / "cec2020rw.csv", "w", newline="") as fh:
+    written = DATA / "cec2020rw.csv.tmp"
+    with open(written, "w", newline="") as fh:
         w = csv.writer(fh, lineterminator="\n")
-        w.writerow(["config", "problem", "seed", "f", "violation", "first_feasible", "evaluations"])
-        for (label, k, seed), (f, v, first, evals) in zip(todo, results):
-            w.writerow([label, f"RC{k:02}", seed, repr(float(f)), repr(float(v)), "" if first is None else first, evals])
+        w.writerow(header)
+        for job, result in zip(todo, results):
+            w.writerow(row(job, result))
+    written.replace(DATA / "cec2020rw.csv")
+    partial.unlink()
 
 
 def read(data=DATA):
@@ -197,37 +217,43 @@ def score_block(pride, folder, runs):
     return rp.table(["algorithm", "best", "mean", "median", "PM", "rank"], rows, "lrrrrr")
 
 
-def colshade_block(folder, runs, label="colshade"):
-    """pride's colshade beside the published COLSHADE, problem by problem: rank-sum tests on the
-    guidelines' order, Holm's correction over the problems."""
+def colshade_block(folder, runs, labels=("colshade", "colshade-paper")):
+    """pride's colshade readings beside the published COLSHADE, problem by problem: rank-sum tests
+    on the guidelines' order, Holm's correction over the problems, for each reading apart."""
     pf, pv = entrant(folder, "COLSHADE")
-    of, ov = runs[label]
+    labels = [label for label in labels if label in runs]
     problems = [j for j in range(57) if j + 1 not in MISSING]
-    ps = []
-    for j in problems:
-        ranks = deb_ranks(pf[j] + eight_digits(of[j]), pv[j] + ov[j])
-        ps.append(rp.rank_sum(ranks[:len(pf[j])], ranks[len(pf[j]):]))
-    adjusted = rp.holm(ps)
 
     def median(f, v):
         feasible = [x for x, y in zip(f, v) if y <= 0]
         return f"{rp.median(feasible):.8g}" if feasible else "-"
 
-    rows, apart, better = [], 0, 0
-    for j, p, q in zip(problems, ps, adjusted):
-        ranks = deb_ranks(pf[j] + eight_digits(of[j]), pv[j] + ov[j])
-        ours = rp.mean(ranks[len(pf[j]):]) < rp.mean(ranks[:len(pf[j])])
-        verdict = ("pride better" if ours else "pride worse") if q < 0.05 else ""
-        apart += q < 0.05
-        better += q < 0.05 and ours
-        rows.append([f"RC{j + 1:02}", DIMS[j], f"{budget(DIMS[j]):,}",
-                     f"{sum(y <= 0 for y in pv[j])}/{len(pv[j])}", median(pf[j], pv[j]),
-                     f"{sum(y <= 0 for y in ov[j])}/{len(ov[j])}", median(of[j], ov[j]), rp.fmt_p(p), rp.fmt_p(q),
-                     verdict])
-    summary = (f"Told apart (Holm-adjusted p < 0.05) on {apart} of {len(problems)} problems ({better} with pride "
-               f"better); not told apart on {len(problems) - apart}.")
-    return summary + "\n\n" + rp.table(["problem", "D", "MaxFEs", "published: feasible", "median f",
-                                        "pride: feasible", "median f", "p", "Holm p", ""], rows, "lrrrrrrrrl")
+    columns = {}
+    summaries = []
+    for label in labels:
+        of, ov = runs[label]
+        ranks = [deb_ranks(pf[j] + eight_digits(of[j]), pv[j] + ov[j]) for j in problems]
+        ps = [rp.rank_sum(r[:len(pf[j])], r[len(pf[j]):]) for j, r in zip(problems, ranks)]
+        apart = better = 0
+        cells = []
+        for j, r, q in zip(problems, ranks, rp.holm(ps)):
+            ours = rp.mean(r[len(pf[j]):]) < rp.mean(r[:len(pf[j])])
+            apart += q < 0.05
+            better += q < 0.05 and ours
+            cells.append([f"{sum(y <= 0 for y in ov[j])}/{len(ov[j])}", median(of[j], ov[j]), rp.fmt_p(q),
+                          ("better" if ours else "worse") if q < 0.05 else ""])
+        columns[label] = cells
+        summaries.append(f"pride {label}: told apart (Holm-adjusted p < 0.05) on {apart} of {len(problems)} "
+                         f"problems ({better} with pride better); not told apart on {len(problems) - apart}.")
+    rows = []
+    for i, j in enumerate(problems):
+        rows.append([f"RC{j + 1:02}", DIMS[j], f"{budget(DIMS[j]):,}", f"{sum(y <= 0 for y in pv[j])}/{len(pv[j])}",
+                     median(pf[j], pv[j])] + [c for label in labels for c in columns[label][i]])
+    head = ["problem", "D", "MaxFEs", "published: feasible", "median f"]
+    for label in labels:
+        head += [f"{label}: feasible", "median f", "Holm p", ""]
+    return "\n".join(f"- {line}" for line in summaries) + "\n\n" + rp.table(
+        head, rows, "lrrrr" + "rrrl" * len(labels))
 
 
 def blocks(data=DATA):

@@ -41,11 +41,13 @@ def test_the_stored_runs_are_what_pride_computes_today():
     from conftest import cli
     with open(REPO / "docs" / "results" / "data" / "cec2020rw.csv", newline="") as fh:
         rows = {(r["config"], r["problem"], r["seed"]): r for r in csv.DictReader(fh)}
-    for problem, seed in (("RC08", "1"), ("RC17", "2"), ("RC10", "25"), ("RC24", "3")):
+    for config, problem, seed in (("colshade", "RC08", "1"), ("colshade", "RC17", "2"), ("colshade", "RC10", "25"),
+                                  ("colshade", "RC24", "3"), ("colshade-paper", "RC04", "7"),
+                                  ("colshade-paper", "RC12", "11")):
         k = int(problem[2:])
-        got = cli("run", *page.CONFIGS["colshade"], "--problem", f"cec2020rw-rc{k:02}", "--dim", page.DIMS[k - 1],
+        got = cli("run", *page.CONFIGS[config], "--problem", f"cec2020rw-rc{k:02}", "--dim", page.DIMS[k - 1],
                   "--evals", page.budget(page.DIMS[k - 1]), "--seed", seed, "--json")
-        want = rows[("colshade", problem, seed)]
+        want = rows[(config, problem, seed)]
         assert repr(float(got["best_f"])) == want["f"]
         assert repr(float(got["best_violation"])) == want["violation"]
         assert str(got["first_feasible"] or "") == want["first_feasible"]
