@@ -161,6 +161,43 @@ TEST_CASE("cmaes margin: every evaluated point has its integers on their values"
     CHECK_THROWS_WITH(a.run(with_category, t, 7), Catch::Contains("variable 1 is categorical"));
 }
 
+TEST_CASE("typed variables: the rounding operator rounds as the problems do", "[margin][typed]") {
+    // Half-way cases up, then clamped (COCO's rule, round_to_value), on runs of consecutive
+    // coordinates and single ones; NaN goes to the lower bound.
+    struct Mixed : Recording {
+        VariableType variable_type(std::size_t i) const {
+            return i == 3 || i == 6 ? VariableType::real : VariableType::integer;
+        }
+    };
+    for (const double wide : {50.0, 1e300}) {  // the vectorised path, and the one for huge bounds
+        INFO(wide);
+        Mixed mixed;
+        mixed.n = 7;
+        mixed.lo = {-6, -6, -6, -3, 0, -wide, -2};
+        mixed.hi = {6, 6, 6, 3, 9, wide, 2};
+        const Rounding rounding(mixed);
+        Rng rng(3);
+        std::vector<double> x(7), want(7);
+        for (int k = 0; k < 20000; ++k) {
+            for (std::size_t i = 0; i < 7; ++i) {
+                const double r = rng.uniform(-8.0, 11.0);
+                x[i] = k % 3 == 0 ? std::round(r * 2.0) / 2.0 : r;  // half-way cases often
+            }
+            if (k % 97 == 0) x[5] = 4.5 * wide * (k % 2 ? 1 : -1);
+            want = x;
+            for (std::size_t i = 0; i < 7; ++i)
+                if (mixed.variable_type(i) != VariableType::real)
+                    want[i] = round_to_value(x[i], mixed.lo[i], mixed.hi[i]);
+            rounding(x, mixed.lo, mixed.hi);
+            REQUIRE(x == want);
+        }
+        x.assign(7, std::nan(""));
+        rounding(x, mixed.lo, mixed.hi);
+        CHECK(x[0] == -6.0);
+        CHECK(std::isnan(x[3]));
+    }
+}
+
 template <class A>
 std::int64_t off_lattice_points(A algorithm, bool round) {
     algorithm.round_integers = round;

@@ -65,9 +65,9 @@ struct BoxRun : RunStart<> {
     std::vector<double> cx;  // constrained problems, when asked for: the m + p values of each point in turn
     // The integer and categorical coordinates the algorithm rounds (its `round_integers`; empty
     // on a problem of real variables): the typed space's rounding operator.
-    std::vector<std::size_t> discrete = {};
-    /// Coordinates `discrete` of x put on their values.
-    void round(std::span<double> x) const noexcept { round_coordinates(x, discrete, lo, hi); }
+    Rounding discrete = {};
+    /// The integer coordinates of x put on their values (nothing on a problem of real variables).
+    void round(std::span<double> x) const noexcept { discrete(x, lo, hi); }
 };
 
 /// `constraint_values`: on a constrained problem, keep the initial points' constraint values in cx.
@@ -86,7 +86,7 @@ BoxRun start_box_run(const Algorithm& algorithm, P& problem, const Termination& 
     seed_noise(problem, seed);
     algorithm.init(problem, run.rng, run.x);
     if constexpr (requires { algorithm.round_integers; })
-        if (algorithm.round_integers) run.discrete = discrete_coordinates(problem);
+        if (algorithm.round_integers) run.discrete = Rounding(problem);
     for (Eigen::Index i = 0; i < run.x.cols(); ++i) {
         algorithm.bounds(column(run.x, i), run.lo, run.hi);
         run.round(column(run.x, i));
