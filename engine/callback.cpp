@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"
@@ -53,15 +54,49 @@ CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, st
                                               std::move(batch), thread_safe, std::move(starts), std::move(types)});
 }
 
+namespace {
+
+/// One buffer per thread and nesting depth for the typed copies of the points: no allocation per
+/// call once it has grown, and a function that runs another typed problem inside keeps its point.
+template <class Buffer>
+struct TypedBuffers {
+    std::deque<Buffer> depth;  // a deque: taking one more keeps the others in place
+    std::size_t used = 0;
+    Buffer& take() {
+        if (used == depth.size()) depth.emplace_back();
+        return depth[used++];
+    }
+};
+/// One buffer taken for a call, given back when the call returns (or throws).
+template <class Buffer>
+class Taken {
+  public:
+    explicit Taken(TypedBuffers<Buffer>& b) : buffers_(&b), buffer_(&b.take()) {}
+    ~Taken() { --buffers_->used; }
+    Taken(const Taken&) = delete;
+    Taken& operator=(const Taken&) = delete;
+    Buffer& get() const noexcept { return *buffer_; }
+
+  private:
+    TypedBuffers<Buffer>* buffers_;
+    Buffer* buffer_;
+};
+}  // namespace
+
 double CallbackProblem::evaluate(std::span<const double> x) {
     if (!shared_->types.empty()) {
-        // The user's function sees its types: a copy with the integer coordinates rounded (one
-        // buffer per thread, so no allocation per call once it has grown).
-        thread_local std::vector<double> typed;
-        typed.assign(x.begin(), x.end());
-        round_to_types(*this, typed);
-        x = typed;
+        // The user's function sees its types: a copy with the integer coordinates rounded.
+        thread_local TypedBuffers<std::vector<double>> buffers;
+        const Taken<std::vector<double>> typed(buffers);
+        std::vector<double>& point = typed.get();
+        point.assign(x.begin(), x.end());
+        round_to_types(*this, point);
+        return evaluate_point(point);
     }
+    return evaluate_point(x);
+}
+
+double CallbackProblem::evaluate_point(std::span<const double> x) {
     if (shared_->scalar) return shared_->scalar(x);
     double f = 0.0;
     const Eigen::Map<const Matrix> point(x.data(), static_cast<Eigen::Index>(x.size()), 1);
@@ -71,11 +106,13 @@ double CallbackProblem::evaluate(std::span<const double> x) {
 
 void CallbackProblem::evaluate_batch(MatrixView points, std::span<double> values) {
     if (!shared_->types.empty()) {
-        thread_local Matrix typed;
-        typed = points;
-        for (Eigen::Index j = 0; j < typed.cols(); ++j)
-            round_to_types(*this, std::span<double>(typed.col(j).data(), static_cast<std::size_t>(typed.rows())));
-        evaluate_typed(typed, values);
+        thread_local TypedBuffers<Matrix> buffers;
+        const Taken<Matrix> typed(buffers);
+        Matrix& batch = typed.get();
+        batch = points;
+        for (Eigen::Index j = 0; j < batch.cols(); ++j)
+            round_to_types(*this, std::span<double>(batch.col(j).data(), static_cast<std::size_t>(batch.rows())));
+        evaluate_typed(batch, values);
         return;
     }
     evaluate_typed(points, values);

@@ -49,7 +49,8 @@ class CallbackProblem {
     void starting_points(Rng& rng, Matrix& out) const;
 
   private:
-    /// evaluate_batch on points already in the declared types.
+    /// evaluate and evaluate_batch on points already in the declared types.
+    double evaluate_point(std::span<const double> x);
     void evaluate_typed(MatrixView points, std::span<double> values);
 
     struct Shared {

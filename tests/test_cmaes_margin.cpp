@@ -25,6 +25,7 @@
 #include "algorithms/ga.hpp"
 #include "algorithms/parts/cma/margin.hpp"
 #include "algorithms/pso.hpp"
+#include "engine/callback.hpp"
 #include "engine/problem.hpp"
 #include "engine/run.hpp"
 #include "framework/variables.hpp"
@@ -314,6 +315,22 @@ TEST_CASE("cmaes margin: a user's function with integer variables receives integ
         Catch::Contains("k >= 2 choices"));
     CHECK_THAT(refused({-3.0, 0.0, -2.0}, {3.0, 5.0, 2.0}, {VariableType::integer}),
                Catch::Contains("types has 1 entries for 3 coordinates"));
+    // A function that evaluates another typed problem inside keeps its own point.
+    const std::vector<VariableType> one_integer{VariableType::integer, VariableType::real};
+    engine::CallbackProblem inner(
+        "inner", {0.0, 0.0}, {9.0, 1.0}, [](std::span<const double> x) { return x[0]; }, {}, false, {}, one_integer);
+    engine::CallbackProblem outer(
+        "outer", {0.0, 0.0}, {9.0, 1.0},
+        [inner](std::span<const double> x) mutable {
+            const double first = x[0];
+            const std::vector<double> other{7.4, 0.5};
+            const double seen = inner.evaluate(other);
+            return first * 100.0 + seen + (x[0] == first ? 0.0 : 1e6);
+        },
+        {}, false, {}, one_integer);
+    const std::vector<double> point{2.6, 0.25};
+    CHECK(outer.evaluate(point) == 307.0);
+
     engine::CallbackSpec constrained = spec;
     constrained.inequalities = 1;
     constrained.constrained = [](std::span<const double> x, std::span<double> c) {

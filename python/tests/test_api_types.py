@@ -51,6 +51,7 @@ WEIGHTS = [5, "ab", ["x", 1, 1], [None, 1, 1]]
 OBJECTIVE = [5, object()]  # None is "the algorithm's default objective"
 PROBLEM = [5, None, object()]
 BOUNDS = [5, "ab", None, (None, 1), ("a", 1)]
+INTEGERS = [5, "ab", object(), [0.5], [True]]  # None is "all real"
 TABLE = [None, 5, object()]
 OBJECTIVES = [5, None, [1, 2], object()]
 
@@ -114,10 +115,11 @@ def api(tmp_path):
                                                    "evals": 20, **o}),
                      dict(algo=TEXT, problem=PROBLEM, dim=INT, bounds=BOUNDS, evals=INT, iters=INT, target=REAL,
                           wall_ms=REAL, seed=SEED, instance=INT, callback=CALLABLE, vectorized=FLAG,
-                          subject_to=CALLABLE, inequalities=INT, equalities=INT, tolerance=REAL)),
+                          subject_to=CALLABLE, inequalities=INT, equalities=INT, tolerance=REAL, integers=INTEGERS)),
         "Optimizer": (lambda **o: pride.Optimizer(**{"algo": "pso", "bounds": (-1, 1), "dim": 2, "evals": 20, **o}),
                       dict(algo=TEXT, bounds=BOUNDS, dim=INT, evals=INT, iters=INT, target=REAL, wall_ms=REAL,
-                           seed=SEED, objectives=INT, inequalities=INT, equalities=INT, tolerance=REAL)),
+                           seed=SEED, objectives=INT, inequalities=INT, equalities=INT, tolerance=REAL,
+                           integers=INTEGERS)),
         "front": (lambda **o: pride.front(**{"algo": "nsga2", "problem": f2, "bounds": (-1, 1), "dim": 2,
                                              "objectives": 2, "evals": 20, **o}),
                   dict(algo=TEXT, problem=PROBLEM, dim=INT, objectives=INT, bounds=BOUNDS, evals=INT, iters=INT,
