@@ -91,8 +91,9 @@ std::vector<std::size_t> discrete_coordinates(const P& p) {
 class Rounding {
   public:
     Rounding() = default;
-    template <BoxProblem P>
-    explicit Rounding(const P& p) {
+    template <class P>
+    requires(!std::same_as<P, Rounding> && BoxProblem<P>)  // not a copy: the check would recurse
+        explicit Rounding(const P& p) {
         const auto which = discrete_coordinates(p);
         for (std::size_t k = 0; k < which.size(); ++k) {
             if (k == 0 || which[k] != which[k - 1] + 1)
