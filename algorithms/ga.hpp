@@ -55,7 +55,12 @@
 // at a time. Without constraints the run is the same, bit for bit, as before constraints existed.
 // Integer variables (framework/variables.hpp), which the papers do not treat: with
 // `round_integers` each child's integer coordinates are rounded after SBX and the mutation (the
-// rounding repair pymoo's mixed-variable GA gives its integer variables), the initial population too.
+// rounding repair pymoo's mixed-variable GA gives its integer variables), the initial population too;
+// categorical coordinates keep their values through SBX and the mutation and get uniform crossover
+// and random resetting instead, as pymoo's mixed-variable GA gives its Choice variables
+// (algorithms/parts/variation/categorical.hpp, `categorical`; where pride differs from pymoo: its
+// tournament selection, not pymoo's random one, and p_m = 1/D over all the real-coded
+// coordinates, where pymoo takes 1 / (the number of variables of each type)).
 // Decided by this project where the papers are silent: Deb's tournament is used without the
 // niching its paper adds among feasible members (sigma_share; a distance per comparison) and
 // without its mutation of infeasible members; under apm the plus replacement (absent from the
@@ -82,6 +87,7 @@
 #include "algorithms/parts/ga/selection.hpp"
 #include "algorithms/parts/iqga/operators.hpp"
 #include "algorithms/parts/iqga/q_learning.hpp"
+#include "algorithms/parts/variation/categorical.hpp"
 #include "algorithms/parts/variation/chain_operators.hpp"
 #include "algorithms/parts/variation/crossover.hpp"
 #include "algorithms/parts/variation/mutation.hpp"
@@ -115,6 +121,7 @@ class Ga {
     Hook hook{};
     ConstraintHandling constraints{};  // constrained problems only (deb, epsilon, penalty, apm)
     bool round_integers = true;        // integer coordinates: children rounded (framework/variables.hpp)
+    CategoricalRates categorical{};    // categorical coordinates (with round_integers): categorical.hpp
 
     std::string name() const { return id; }
 
@@ -129,6 +136,7 @@ class Ga {
         else if constexpr (requires { hook.validate(name()); })
             hook.validate(name());
         constraints.validate(name(), true, false);
+        categorical.validate(name());
     }
 
     /// Real-coded, on the box of a BoxProblem.

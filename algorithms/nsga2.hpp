@@ -23,6 +23,14 @@
 // algorithms/parts/variation/chain_operators.hpp). The paper's p_m = 1/n per variable has no chain form;
 // decided by this project: p_m per child (the registry's default says which value).
 // The result: the non-dominated members of the final population.
+// Typed spaces (framework/variables.hpp), which the paper does not treat: with `round_integers`
+// every member's integer and categorical coordinates are on their values (the initial ones, and
+// the children after the variation), and the categorical coordinates get uniform crossover and
+// random resetting instead of SBX and the mutation (categorical.hpp): the operators of pymoo's
+// mixed-variable GA, which pymoo runs as NSGA-II with its RankAndCrowding survival. Where pride
+// differs from that: NSGA-II's crowded tournament here, pymoo's random mating there; p_m = 1/n over
+// all the real-coded coordinates, pymoo's 1 / (the number of variables of each type); no
+// elimination of duplicates (pymoo's MixedVariableDuplicateElimination).
 //
 // Where the paper is silent this follows Deb's reference code (nsga2-gnu, revision 1.1.6), as
 // pagmo2 does: the parents of the N children come from two random permutations of the population,
@@ -44,6 +52,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/parts/variation/categorical.hpp"
 #include "algorithms/parts/variation/chain_operators.hpp"
 #include "algorithms/parts/variation/crossover.hpp"
 #include "algorithms/parts/variation/mutation.hpp"
@@ -56,6 +65,7 @@
 #include "framework/pareto/sorting.hpp"
 #include "framework/random.hpp"
 #include "framework/termination.hpp"
+#include "framework/variables.hpp"
 
 namespace pride {
 
@@ -158,6 +168,8 @@ struct Nsga2 {
     Mutation mutation = nsga::default_operator<Mutation>();
     Survival survival{};
     nsga::Tournament tournament = nsga::Tournament::paper;
+    bool round_integers = true;      // typed spaces: integer and categorical coordinates on their values
+    CategoricalRates categorical{};  // and the categorical operators (categorical.hpp)
 
     /// nsga2, or nsga3 with NSGA-III's survival (algorithms/nsga3.hpp).
     static std::string name() { return Survival::algorithm; }
@@ -168,6 +180,7 @@ struct Nsga2 {
                     std::to_string(population));
         crossover.validate(name());
         mutation.validate(name());
+        categorical.validate(name());
     }
 
     /// On boxes: SBX and polynomial mutation (the Crossover and Mutation policies' defaults).
@@ -175,6 +188,7 @@ struct Nsga2 {
     MultiObjectiveResult run(P problem, const Termination& termination, std::uint64_t seed, O&& observer = O{}) const {
         auto start = begin(problem, termination, seed);
         BoxPopulation<P> population(problem, static_cast<std::size_t>(this->population), crossover, mutation);
+        if (round_integers) population.typed(categorical);
         return generations(population, start, observer);
     }
 
@@ -254,9 +268,24 @@ struct Nsga2 {
               cross(crossover.prepare(dim)),
               mutate(mutation.prepare(dim)) {}
 
+        Rounding discrete{};                // the typed space's rounding operator (empty: none)
+        CategoricalVariation categories{};  // empty unless typed with categorical coordinates
+        std::vector<std::size_t> categorical_index;
+
+        /// The population in the problem's types (integer and categorical coordinates).
+        void typed(CategoricalRates rates) {
+            discrete = Rounding(problem);
+            categories = CategoricalVariation(problem, rates);
+            categorical_index = categorical_coordinates(problem);
+        }
+
         void initialise(Rng& rng, MultiObjectiveRunState& state, Matrix& f, std::span<double> v) {
-            for (Eigen::Index j = 0; j < cols; ++j)
+            for (Eigen::Index j = 0; j < cols; ++j) {
                 for (std::size_t i = 0; i < dim; ++i) r(static_cast<Eigen::Index>(i), j) = rng.uniform(lo[i], hi[i]);
+                const std::span<double> x = column(r, j);
+                for (const std::size_t c : categorical_index) x[c] = choice_of_start(x[c], lo[c], hi[c]);
+                discrete(x, lo, hi);
+            }
             evaluate(state, r.leftCols(cols), f, v);
         }
         void evaluate(MultiObjectiveRunState& state, MatrixView points, Matrix& f, std::span<double> v) {
@@ -270,9 +299,12 @@ struct Nsga2 {
             const auto c1 = cols + static_cast<Eigen::Index>(child), c2 = c1 + 1;
             r.col(c1) = r.col(static_cast<Eigen::Index>(a));
             r.col(c2) = r.col(static_cast<Eigen::Index>(b));
-            cross(column(r, c1), column(r, c2), lo, hi, rng);
-            mutate(column(r, c1), lo, hi, rng);
-            mutate(column(r, c2), lo, hi, rng);
+            const std::span<double> x1 = column(r, c1), x2 = column(r, c2);
+            categories.cross(x1, x2, rng, [&] { cross(x1, x2, lo, hi, rng); });
+            categories.mutate(x1, rng, [&] { mutate(x1, lo, hi, rng); });
+            categories.mutate(x2, rng, [&] { mutate(x2, lo, hi, rng); });
+            discrete(x1, lo, hi);
+            discrete(x2, lo, hi);
         }
         void evaluate_children(MultiObjectiveRunState& state, Matrix& f, std::span<double> v) {
             evaluate(state, r.rightCols(cols), f, v);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "framework/error.hpp"
 #include "framework/initializer.hpp"
@@ -31,30 +34,14 @@ void check_types(const std::string& name, const std::vector<double>& lower, cons
     for (std::size_t i = 0; i < types.size(); ++i) {
         if (types[i] == VariableType::real) continue;
         const std::string which = "variable " + std::to_string(i) + " (" + std::string(type_name(types[i])) + ")";
-        require(
-            std::floor(lower[i]) == lower[i] && std::floor(upper[i]) == upper[i], name,
-            which + " needs integer bounds, got [" + std::to_string(lower[i]) + ", " + std::to_string(upper[i]) + "]");
+        require(std::floor(lower[i]) == lower[i] && std::floor(upper[i]) == upper[i], name,
+                which + fmt::format(" needs integer bounds, got [{}, {}]", lower[i], upper[i]));
         if (types[i] == VariableType::categorical)
-            require(lower[i] == 0.0 && upper[i] >= 1.0, name,
-                    which + " needs bounds 0 and k - 1 with k >= 2 choices, got [" + std::to_string(lower[i]) + ", " +
-                        std::to_string(upper[i]) + "]");
+            require(
+                lower[i] == 0.0 && upper[i] >= 1.0, name,
+                which + fmt::format(" needs bounds 0 and k - 1 with k >= 2 choices, got [{}, {}]", lower[i], upper[i]));
     }
 }
-
-}  // namespace
-
-CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
-                                 Batch batch, bool thread_safe, Starts starts, std::vector<VariableType> types) {
-    check_box(name, lower, upper);
-    require(static_cast<bool>(scalar) || static_cast<bool>(batch), name, "no function to evaluate");
-    check_types(name, lower, upper, types);
-    if (std::all_of(types.begin(), types.end(), [](VariableType t) { return t == VariableType::real; })) types.clear();
-    shared_ =
-        std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar),
-                                              std::move(batch), thread_safe, std::move(starts), std::move(types)});
-}
-
-namespace {
 
 /// One buffer per thread and nesting depth for the typed copies of the points: no allocation per
 /// call once it has grown, and a function that runs another typed problem inside keeps its point.
@@ -81,18 +68,47 @@ class Taken {
     TypedBuffers<Buffer>* buffers_;
     Buffer* buffer_;
 };
+
+/// `f(point)` on a copy of x with the integer and categorical coordinates of `p` rounded: what
+/// a user's function of declared types receives.
+template <class P, class F>
+decltype(auto) on_typed_point(const P& p, std::span<const double> x, F&& f) {
+    thread_local TypedBuffers<std::vector<double>> buffers;
+    const Taken<std::vector<double>> typed(buffers);
+    std::vector<double>& point = typed.get();
+    point.assign(x.begin(), x.end());
+    round_to_types(p, point);
+    return std::forward<F>(f)(std::span<const double>(point));
+}
+
+/// `f(batch)` on a copy of the points with their integer and categorical coordinates rounded.
+template <class P, class F>
+void on_typed_batch(const P& p, MatrixView points, F&& f) {
+    thread_local TypedBuffers<Matrix> buffers;
+    const Taken<Matrix> typed(buffers);
+    Matrix& batch = typed.get();
+    batch = points;
+    for (Eigen::Index j = 0; j < batch.cols(); ++j)
+        round_to_types(p, std::span<double>(batch.col(j).data(), static_cast<std::size_t>(batch.rows())));
+    std::forward<F>(f)(MatrixView(batch));
+}
+
 }  // namespace
 
+CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Scalar scalar,
+                                 Batch batch, bool thread_safe, Starts starts, std::vector<VariableType> types) {
+    check_box(name, lower, upper);
+    require(static_cast<bool>(scalar) || static_cast<bool>(batch), name, "no function to evaluate");
+    check_types(name, lower, upper, types);
+    if (std::all_of(types.begin(), types.end(), [](VariableType t) { return t == VariableType::real; })) types.clear();
+    shared_ =
+        std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar),
+                                              std::move(batch), thread_safe, std::move(starts), std::move(types)});
+}
+
 double CallbackProblem::evaluate(std::span<const double> x) {
-    if (!shared_->types.empty()) {
-        // The user's function sees its types: a copy with the integer coordinates rounded.
-        thread_local TypedBuffers<std::vector<double>> buffers;
-        const Taken<std::vector<double>> typed(buffers);
-        std::vector<double>& point = typed.get();
-        point.assign(x.begin(), x.end());
-        round_to_types(*this, point);
-        return evaluate_point(point);
-    }
+    if (!shared_->types.empty())
+        return on_typed_point(*this, x, [&](std::span<const double> point) { return evaluate_point(point); });
     return evaluate_point(x);
 }
 
@@ -105,16 +121,8 @@ double CallbackProblem::evaluate_point(std::span<const double> x) {
 }
 
 void CallbackProblem::evaluate_batch(MatrixView points, std::span<double> values) {
-    if (!shared_->types.empty()) {
-        thread_local TypedBuffers<Matrix> buffers;
-        const Taken<Matrix> typed(buffers);
-        Matrix& batch = typed.get();
-        batch = points;
-        for (Eigen::Index j = 0; j < batch.cols(); ++j)
-            round_to_types(*this, std::span<double>(batch.col(j).data(), static_cast<std::size_t>(batch.rows())));
-        evaluate_typed(batch, values);
-        return;
-    }
+    if (!shared_->types.empty())
+        return on_typed_batch(*this, points, [&](MatrixView batch) { evaluate_typed(batch, values); });
     evaluate_typed(points, values);
 }
 
@@ -140,11 +148,27 @@ void CallbackProblem::starting_points(Rng& rng, Matrix& out) const {
 }
 
 MoCallbackProblem::MoCallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper,
-                                     std::size_t objectives, Scalar scalar, Batch batch)
-    : shared_(std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), objectives,
-                                                    std::move(scalar), std::move(batch)})) {}
+                                     std::size_t objectives, Scalar scalar, Batch batch,
+                                     std::vector<VariableType> types) {
+    check_types(name, lower, upper, types);
+    if (std::all_of(types.begin(), types.end(), [](VariableType t) { return t == VariableType::real; })) types.clear();
+    shared_ = std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), objectives,
+                                                    std::move(scalar), std::move(batch), std::move(types)});
+}
 
 void MoCallbackProblem::evaluate(std::span<const double> x, std::span<double> f) {
+    if (!shared_->types.empty())
+        return on_typed_point(*this, x, [&](std::span<const double> point) { evaluate_typed(point, f); });
+    evaluate_typed(x, f);
+}
+
+void MoCallbackProblem::evaluate_batch(MatrixView points, Matrix& values) {
+    if (!shared_->types.empty())
+        return on_typed_batch(*this, points, [&](MatrixView batch) { evaluate_batch_typed(batch, values); });
+    evaluate_batch_typed(points, values);
+}
+
+void MoCallbackProblem::evaluate_typed(std::span<const double> x, std::span<double> f) {
     if (shared_->scalar) {
         shared_->scalar(x, f);
         return;
@@ -156,7 +180,7 @@ void MoCallbackProblem::evaluate(std::span<const double> x, std::span<double> f)
     std::copy(one_.data(), one_.data() + f.size(), f.begin());
 }
 
-void MoCallbackProblem::evaluate_batch(MatrixView points, Matrix& values) {
+void MoCallbackProblem::evaluate_batch_typed(MatrixView points, Matrix& values) {
     if (shared_->batch) {
         shared_->batch(points, values);
         return;
@@ -168,22 +192,28 @@ void MoCallbackProblem::evaluate_batch(MatrixView points, Matrix& values) {
 
 ConstrainedCallbackProblem::ConstrainedCallbackProblem(std::string name, std::vector<double> lower,
                                                        std::vector<double> upper, ConstraintCounts counts,
-                                                       double tolerance, Function function) {
+                                                       double tolerance, Function function,
+                                                       std::vector<VariableType> types) {
     check_box(name, lower, upper);
+    check_types(name, lower, upper, types);
+    if (std::all_of(types.begin(), types.end(), [](VariableType t) { return t == VariableType::real; })) types.clear();
     require(counts.total() > 0, name, "no constraint declared");
     require(std::isfinite(tolerance) && tolerance >= 0.0, "tolerance",
             "must be a finite number >= 0, got " + std::to_string(tolerance));
     require(static_cast<bool>(function), name, "no function to evaluate");
-    shared_ = std::make_shared<const Shared>(
-        Shared{std::move(name), std::move(lower), std::move(upper), counts, tolerance, std::move(function)});
+    shared_ = std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), counts,
+                                                    tolerance, std::move(function), std::move(types)});
     scratch_.assign(counts.total(), 0.0);
 }
 
 double ConstrainedCallbackProblem::evaluate(std::span<const double> x) {
-    return shared_->function(x, scratch_);
+    return evaluate_constrained(x, scratch_);
 }
 
 double ConstrainedCallbackProblem::evaluate_constrained(std::span<const double> x, std::span<double> constraints) {
+    if (!shared_->types.empty())
+        return on_typed_point(*this, x,
+                              [&](std::span<const double> point) { return shared_->function(point, constraints); });
     return shared_->function(x, constraints);
 }
 

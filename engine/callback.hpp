@@ -72,25 +72,33 @@ class MoCallbackProblem {
     using Scalar = std::function<void(std::span<const double>, std::span<double>)>;
     using Batch = std::function<void(MatrixView, Matrix&)>;
 
+    /// `types` as CallbackProblem's (checked as there).
     MoCallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper, std::size_t objectives,
-                      Scalar scalar, Batch batch);
+                      Scalar scalar, Batch batch, std::vector<VariableType> types = {});
 
     std::size_t dimension() const noexcept { return shared_->lower.size(); }
     std::span<const double> lower() const noexcept { return shared_->lower; }
     std::span<const double> upper() const noexcept { return shared_->upper; }
     std::size_t objectives() const noexcept { return shared_->objectives; }
     const std::string& name() const noexcept { return shared_->name; }
+    VariableType variable_type(std::size_t i) const noexcept {
+        return shared_->types.empty() ? VariableType::real : shared_->types[i];
+    }
 
     void evaluate(std::span<const double> x, std::span<double> f);
     void evaluate_batch(MatrixView points, Matrix& values);
 
   private:
+    void evaluate_typed(std::span<const double> x, std::span<double> f);
+    void evaluate_batch_typed(MatrixView points, Matrix& values);
+
     struct Shared {
         std::string name;
         std::vector<double> lower, upper;
         std::size_t objectives;
         Scalar scalar;
         Batch batch;
+        std::vector<VariableType> types;  // empty: all real
     };
     std::shared_ptr<const Shared> shared_;
     Matrix one_;  // scratch of the batch-only route
@@ -104,14 +112,20 @@ class ConstrainedCallbackProblem {
 
     /// Throws InputError as CallbackProblem does, and for no constraint or a tolerance that is not a
     /// finite number >= 0.
+    /// `types` as CallbackProblem's: the function receives the integer and categorical
+    /// coordinates rounded to their values.
     ConstrainedCallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper,
-                               ConstraintCounts counts, double tolerance, Function function);
+                               ConstraintCounts counts, double tolerance, Function function,
+                               std::vector<VariableType> types = {});
 
     std::size_t dimension() const noexcept { return shared_->lower.size(); }
     std::span<const double> lower() const noexcept { return shared_->lower; }
     std::span<const double> upper() const noexcept { return shared_->upper; }
     std::string_view name() const noexcept { return shared_->name; }
     ConstraintCounts constraint_counts() const noexcept { return shared_->counts; }
+    VariableType variable_type(std::size_t i) const noexcept {
+        return shared_->types.empty() ? VariableType::real : shared_->types[i];
+    }
 
     /// f alone (the constraints' values computed and dropped): what an algorithm without
     /// constraint handling would see; the engine never runs one on this problem.
@@ -128,6 +142,7 @@ class ConstrainedCallbackProblem {
         ConstraintCounts counts;
         double tolerance = kEqualityTolerance;
         Function function;
+        std::vector<VariableType> types;  // empty: all real
     };
     std::shared_ptr<const Shared> shared_;
     std::vector<double> scratch_;  // evaluate()'s constraint values, per copy

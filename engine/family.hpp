@@ -37,6 +37,31 @@ inline ParamSpec integers_param(const std::string& what) {
         .only_on_boxes();
 }
 
+/// The GA family's operators on categorical variables (algorithms/parts/variation/categorical.hpp).
+inline std::vector<ParamSpec> categorical_params() {
+    return {real("cat_swap", 0.45, 0.0, 1.0,
+                 "categorical variables: probability that the two children exchange one (uniform crossover; "
+                 "pymoo's mixed-variable GA: 0.9 per pair x 0.5)")
+                .only_on_boxes(),
+            real("cat_reset", 0.5, 0.0, 1.0,
+                 "categorical variables: probability that a child's one is drawn anew among its choices (random "
+                 "resetting, as pymoo's)")
+                .only_on_boxes()};
+}
+
+/// `params` and the categorical ones.
+inline std::vector<ParamSpec> with_categorical(std::vector<ParamSpec> params) {
+    for (auto& c : categorical_params()) params.push_back(std::move(c));
+    return params;
+}
+
+/// What `integers`, `cat_swap` and `cat_reset` set on an algorithm with categorical rates.
+template <class A>
+void typed_operators(A& a, const Params& p) {
+    a.round_integers = p.choice("integers") == "round";
+    a.categorical = {p.real("cat_swap"), p.real("cat_reset")};
+}
+
 /// Memory of a population algorithm holding `matrices` population-sized matrices of points (and a
 /// few vectors): 8 bytes per number.
 inline auto population_memory(double matrices) {

@@ -143,12 +143,11 @@ void prepare_callback(Prepared& out, const CallbackSpec& s) {
     require(!s.f_opt, "f_opt", "a function of several objectives has no single minimum");
     require(s.inequalities == 0 && s.equalities == 0 && !s.constrained, "constraints",
             "a function of several objectives takes no constraints");
-    require(s.types.empty(), "types", "a function of several objectives takes real variables only, for now");
     out.name = s.name;
     for (std::int64_t i = 1; i <= s.objectives; ++i) out.objective_names.push_back(fmt::format("f{}", i));
     out.searched.emplace(std::in_place_type<MoBoxTarget>,
                          MoBoxTarget{MoCallbackProblem(s.name, s.lower, s.upper, static_cast<std::size_t>(s.objectives),
-                                                       s.values, s.values_batch)});
+                                                       s.values, s.values_batch, s.types)});
 }
 
 /// The grid's exact front over the same criteria (ParetoSearch within the machine's memory).
@@ -368,6 +367,9 @@ RunResult run_several(const AlgorithmSpec& algorithm, const Prepared& p, const B
                     front.paths.push_back(std::move(path));
                     front.feasible.push_back(legal ? 1 : 0);
                 }
+            } else if constexpr (TypedVariables<T>) {  // integer coordinates reported as integers
+                for (Eigen::Index j = 0; j < front.x.cols(); ++j)
+                    round_to_types(problem, std::span<double>(front.x.col(j).data(), front.x.col(j).size()));
             }
         },
         p.mo_box()->problem);

@@ -273,13 +273,12 @@ std::shared_ptr<const Prepared> prepare(const ProblemSpec& spec) {
         out->name = cb.name;
         out->dimension = cb.lower.size();
         if (has_constraints(cb)) {
-            require(cb.types.empty(), "types", "variables of declared types with constraints are not supported yet");
             out->searched.emplace(
                 std::in_place_type<ConstrainedBoxTarget>,
                 ConstrainedBoxTarget{ConstrainedCallbackProblem(
                     cb.name, cb.lower, cb.upper,
                     {static_cast<std::size_t>(cb.inequalities), static_cast<std::size_t>(cb.equalities)}, cb.tolerance,
-                    cb.constrained)});
+                    cb.constrained, cb.types)});
         } else {
             out->searched.emplace(std::in_place_type<BoxTarget>,
                                   BoxTarget{CallbackProblem(cb.name, cb.lower, cb.upper, cb.scalar, cb.batch,

@@ -155,8 +155,11 @@ RunResult run_observed(const AlgorithmSpec& algorithm, const Problem& problem, c
         Result r = box_run();
         copy_run(out, r);
         out.best_x = std::move(r.best_x);
-        if (const BoxTarget* box = p.box())  // integer coordinates reported as integers
+        // Integer and categorical coordinates reported in their types.
+        if (const BoxTarget* box = p.box())
             std::visit([&](const auto& problem) { round_to_types(problem, out.best_x); }, box->problem);
+        if (const ConstrainedBoxTarget* c = p.constrained())
+            std::visit([&](const auto& problem) { round_to_types(problem, out.best_x); }, c->problem);
         if (p.constrained()) {
             out.best_violation = r.best_violation;
             out.first_feasible = r.first_feasible;

@@ -29,14 +29,22 @@ constexpr std::string_view type_name(VariableType t) noexcept {
     return t == VariableType::integer ? "integer" : t == VariableType::categorical ? "categorical" : "real";
 }
 
+/// A problem on a box, of one objective or several: what the types are declared over.
+template <class P>
+concept Boxed = requires(const P& cp) {
+    { cp.dimension() } -> std::convertible_to<std::size_t>;
+    { cp.lower() } -> std::convertible_to<std::span<const double>>;
+    { cp.upper() } -> std::convertible_to<std::span<const double>>;
+};
+
 /// A box problem that declares its variables' types (all real when it does not).
 template <class P>
-concept TypedVariables = BoxProblem<P> && requires(const P& p, std::size_t i) {
+concept TypedVariables = Boxed<P> && requires(const P& p, std::size_t i) {
     { p.variable_type(i) } -> std::same_as<VariableType>;
 };
 
 /// The type of variable i of `p`: its declaration, or real.
-template <BoxProblem P>
+template <Boxed P>
 VariableType variable_type(const P& p, std::size_t i) {
     if constexpr (TypedVariables<P>)
         return p.variable_type(i);
@@ -45,7 +53,7 @@ VariableType variable_type(const P& p, std::size_t i) {
 }
 
 /// Whether some variable of `p` is not real.
-template <BoxProblem P>
+template <Boxed P>
 bool has_discrete_variables(const P& p) {
     if constexpr (TypedVariables<P>) {
         for (std::size_t i = 0; i < p.dimension(); ++i)
@@ -62,7 +70,7 @@ inline double round_to_value(double v, double lo, double hi) noexcept {
 
 /// x with its integer and categorical coordinates put on their values: the point a result
 /// reports, in the problem's types, with the same f.
-template <BoxProblem P>
+template <Boxed P>
 void round_to_types(const P& p, std::span<double> x) {
     if constexpr (TypedVariables<P>) {
         for (std::size_t i = 0; i < x.size() && i < p.dimension(); ++i)
@@ -71,7 +79,7 @@ void round_to_types(const P& p, std::span<double> x) {
 }
 
 /// The coordinates of `p` that are not real, in order (computed once per run).
-template <BoxProblem P>
+template <Boxed P>
 std::vector<std::size_t> discrete_coordinates(const P& p) {
     std::vector<std::size_t> out;
     if constexpr (TypedVariables<P>) {
@@ -79,6 +87,26 @@ std::vector<std::size_t> discrete_coordinates(const P& p) {
             if (p.variable_type(i) != VariableType::real) out.push_back(i);
     }
     return out;
+}
+
+/// The coordinates of `p` that are categorical, in order (computed once per run).
+template <Boxed P>
+std::vector<std::size_t> categorical_coordinates(const P& p) {
+    std::vector<std::size_t> out;
+    if constexpr (TypedVariables<P>) {
+        for (std::size_t i = 0; i < p.dimension(); ++i)
+            if (p.variable_type(i) == VariableType::categorical) out.push_back(i);
+    }
+    return out;
+}
+
+/// A starting value v in [lo, hi] of a categorical coordinate made one of its k = hi - lo + 1
+/// choices by cutting the range in k equal parts: a uniform start then draws every choice alike
+/// (rounding would give the first and the last half the chance of the others).
+inline double choice_of_start(double v, double lo, double hi) noexcept {
+    const double k = hi - lo + 1.0;
+    const double part = std::floor((v - lo) / (hi - lo) * k);
+    return part >= 0.0 ? lo + std::min(part, k - 1.0) : lo;  // below the range or NaN: the first
 }
 
 /// The rounding operator of a typed space: the integer and categorical coordinates of a point put
@@ -92,7 +120,7 @@ class Rounding {
   public:
     Rounding() = default;
     template <class P>
-    requires(!std::same_as<P, Rounding> && BoxProblem<P>)  // not a copy: the check would recurse
+    requires(!std::same_as<P, Rounding> && Boxed<P>)  // not a copy: the check would recurse
         explicit Rounding(const P& p) {
         const auto which = discrete_coordinates(p);
         for (std::size_t k = 0; k < which.size(); ++k) {

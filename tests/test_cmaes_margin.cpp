@@ -330,15 +330,6 @@ TEST_CASE("cmaes margin: a user's function with integer variables receives integ
         {}, false, {}, one_integer);
     const std::vector<double> point{2.6, 0.25};
     CHECK(outer.evaluate(point) == 307.0);
-
-    engine::CallbackSpec constrained = spec;
-    constrained.inequalities = 1;
-    constrained.constrained = [](std::span<const double> x, std::span<double> c) {
-        c[0] = x[2];
-        return x[0];
-    };
-    CHECK_THAT(test::input_error_message([&] { (void)engine::Problem(constrained); }),
-               Catch::Contains("types: variables of declared types with constraints are not supported yet"));
 }
 
 /// The median of `v` (not empty).

@@ -36,7 +36,7 @@ void common(G& a, const Params& p, bool plus) {
 template <class G>
 void box_operators(G& a, const Params& p) {
     a.init.suggestions = p.flag("walk_init");
-    a.round_integers = p.choice("integers") == "round";
+    typed_operators(a, p);
     a.crossover.eta = p.real("eta_c");
     a.mutation.eta = p.real("eta_m");
 }
@@ -69,6 +69,7 @@ std::vector<ParamSpec> params(bool plus) {
                     .no_default());
     v.push_back(walk_init_param(false).only_on_boxes());
     v.push_back(integers_param("the children's integer coordinates"));
+    for (auto& c : categorical_params()) v.push_back(std::move(c));
     return v;
 }
 
@@ -88,19 +89,17 @@ void iaga_common(G& a, const Params& p) {
 }
 
 std::vector<ParamSpec> iaga_params() {
-    return {
-        population_param(50, 2),
-        integer("elitism", 1, 0, 100'000'000, "best parents kept unchanged, fewer than pop"),
-        integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
-        real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index").only_on_boxes(),
-        real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index").only_on_boxes(),
-        real("k1", 1.0, 0.0, 1.0, "pc = k1 (f' - best)/(mean - best) for a pair at least average (Srinivas-Patnaik)"),
-        real("k2", 0.5, 0.0, 1.0, "pm = k2 (f - best)/(mean - best) for a member at least average"),
-        real("k3", 1.0, 0.0, 1.0, "pc for a pair worse than average"),
-        real("k4", 0.5, 0.0, 1.0, "pm for a member worse than average (per gene on boxes, per child on chains)"),
-        real("pm_min", 0.005, 0.0, 1.0, "least pm of any member (Srinivas-Patnaik's default mutation rate)"),
-        walk_init_param(false).only_on_boxes(),
-        integers_param("the children's integer coordinates")};
+    return with_categorical(
+        {population_param(50, 2), integer("elitism", 1, 0, 100'000'000, "best parents kept unchanged, fewer than pop"),
+         integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
+         real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index").only_on_boxes(),
+         real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index").only_on_boxes(),
+         real("k1", 1.0, 0.0, 1.0, "pc = k1 (f' - best)/(mean - best) for a pair at least average (Srinivas-Patnaik)"),
+         real("k2", 0.5, 0.0, 1.0, "pm = k2 (f - best)/(mean - best) for a member at least average"),
+         real("k3", 1.0, 0.0, 1.0, "pc for a pair worse than average"),
+         real("k4", 0.5, 0.0, 1.0, "pm for a member worse than average (per gene on boxes, per child on chains)"),
+         real("pm_min", 0.005, 0.0, 1.0, "least pm of any member (Srinivas-Patnaik's default mutation rate)"),
+         walk_init_param(false).only_on_boxes(), integers_param("the children's integer coordinates")});
 }
 
 void add_iaga(AlgorithmRegistry& registry) {
@@ -187,6 +186,7 @@ void add_ga_q(AlgorithmRegistry& registry) {
         real("gamma", 0.9, 0.0, 1.0, "Q-learning: discount factor"),
         walk_init_param(false),
         integers_param("the children's integer coordinates")};
+    for (auto& c : categorical_params()) v.push_back(std::move(c));
     auto e =
         box_algorithm("ga-q", "ga",
                       "GA whose mutation is polynomial, uniform or Gaussian by probabilities (0.6/0.2/0.2 in "
@@ -198,7 +198,7 @@ void add_ga_q(AlgorithmRegistry& registry) {
                           a.replacement.elitism = p.integer("elitism");
                           a.selection.size = p.integer("tournament");
                           a.init.suggestions = p.flag("walk_init");
-                          a.round_integers = p.choice("integers") == "round";
+                          typed_operators(a, p);
                           a.crossover.eta = p.real("eta_c");
                           a.crossover.probability = p.real("pc");
                           auto& [polynomial, uniform, gaussian] = a.mutation.operators;
@@ -276,14 +276,13 @@ void add_iqga(AlgorithmRegistry& registry) {
 using SgaBox = Ga<TournamentSelection, SbxCrossover, SimplePolynomialMutation, Clamp, SelectableInit, PlusReplacement>;
 
 std::vector<ParamSpec> sga_params() {
-    return {population_param(50, 2),
-            integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
-            real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index"),
-            real("pc", 0.9, 0.0, 1.0, "crossover probability per pair"),
-            real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
-            real("pm", 0.0, 0.0, 1.0, "mutation probability per gene (default 1/D)").no_default(),
-            walk_init_param(false),
-            integers_param("the children's integer coordinates")};
+    return with_categorical({population_param(50, 2),
+                             integer("tournament", 2, 1, 100'000'000, "tournament size of parent selection"),
+                             real("eta_c", 15.0, 0.0, 1000.0, "SBX distribution index"),
+                             real("pc", 0.9, 0.0, 1.0, "crossover probability per pair"),
+                             real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
+                             real("pm", 0.0, 0.0, 1.0, "mutation probability per gene (default 1/D)").no_default(),
+                             walk_init_param(false), integers_param("the children's integer coordinates")});
 }
 
 void add_ga_sga(AlgorithmRegistry& registry) {

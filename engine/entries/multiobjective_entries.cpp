@@ -168,12 +168,13 @@ void register_multiobjective(AlgorithmRegistry& registry) {
     auto nsga2_params = std::vector<ParamSpec>{integer("pop", 100, 4, 10'000'000, "population N, a multiple of 4")};
     for (auto& s : variation_params(20.0, 0.9)) nsga2_params.push_back(std::move(s));
     nsga2_params.push_back(tournament_param());
+    nsga2_params.push_back(integers_param("the children's integer and categorical coordinates"));
+    for (auto& c : categorical_params()) nsga2_params.push_back(std::move(c));
     const auto nsga2 = [](const Params& p, std::size_t) {
         Nsga2<> a;
         a.population = p.integer("pop");
-        if (!p.given("eta_c") && !p.given("eta_m") && false) {
-        }
         configure_variation(a, p);
+        typed_operators(a, p);
         a.tournament = tournament(p);
         return a;
     };
@@ -210,12 +211,15 @@ void register_multiobjective(AlgorithmRegistry& registry) {
         integer("inner_divisions", 0, 0, 1'000'000, "H2 of an inner layer (0: one layer)")};
     for (auto& s : variation_params(30.0, 1.0)) nsga3_params.push_back(std::move(s));
     nsga3_params.push_back(tournament_param());
+    nsga3_params.push_back(integers_param("the children's integer and categorical coordinates"));
+    for (auto& c : categorical_params()) nsga3_params.push_back(std::move(c));
     const auto nsga3 = [](const Params& p, std::size_t m) {
         require(p.integer("inner_divisions") == 0 || p.integer("divisions") > 0, "nsga3",
                 "inner_divisions needs divisions");
         Nsga3<> a = make_nsga3(nsga3_directions(m, p.integer("divisions"), p.integer("inner_divisions")));
         if (p.integer("pop") > 0) a.population = p.integer("pop");
         configure_variation(a, p);
+        typed_operators(a, p);
         a.tournament = tournament(p);
         return a;
     };

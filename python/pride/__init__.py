@@ -168,11 +168,11 @@ def _list(name, value):
     return list(value)
 
 
-def _integers(value):
-    """The ``integers`` keyword: None, or a list of coordinate indices (from 0)."""
+def _indices(name, value):
+    """The ``integers`` or ``categorical`` keyword: None, or a list of coordinate indices (from 0)."""
     if value is None:
         return None
-    return [_int("integers", i, False) for i in _list("integers", value)]
+    return [_int(name, i, False) for i in _list(name, value)]
 
 
 def _grid(value):
@@ -205,7 +205,7 @@ class Result:
 
 def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, target=None, wall_ms=None,
              seed=1, instance=None, callback=None, vectorized=False, subject_to=None, inequalities=None,
-             equalities=None, tolerance=None, integers=None, **params):
+             equalities=None, tolerance=None, integers=None, categorical=None, **params):
     """One run of ``algo`` on ``problem``: a registered problem's name (with ``dim``, and
     ``instance``) or a Python function with ``bounds=(lower, upper)``, called as ``f(x)`` with x
     of shape (dim,), or, with ``vectorized=True``, as ``f(X)`` with X of shape (n, dim) returning n
@@ -226,18 +226,21 @@ def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, ta
     Integer variables: ``integers`` lists the coordinates (from 0) of a Python function whose
     values are integers, with integer bounds; the function receives them as integral floats, the
     result's ``x`` has them, and CMA-ES with ``margin=1`` searches them as integers (any other
-    algorithm searches the box and its points are rounded before the call). A registered problem
-    declares its own (``bbob-mixint-fN``)."""
+    algorithm searches the box and its points are rounded before the call). ``categorical`` lists
+    coordinates whose values are unordered choices, numbered 0 to k - 1 by their bounds (0, k - 1);
+    the GA family and NSGA-II vary them by uniform crossover and random resetting. Both work with
+    constraints too. A registered problem declares its own (``bbob-mixint-fN``)."""
     return Result(_pride.minimize(_str("algo", algo), problem, _int("dim", dim), bounds, _int("evals", evals),
                                   _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
                                   _seed(seed), _int("instance", instance), _callable("callback", callback),
                                   _bool("vectorized", vectorized), _callable("subject_to", subject_to),
                                   _int("inequalities", inequalities), _int("equalities", equalities),
-                                  _real("tolerance", tolerance), _integers(integers), params))
+                                  _real("tolerance", tolerance), _indices("integers", integers),
+                                  _indices("categorical", categorical), params))
 
 
 def front(algo, problem, *, dim=None, objectives=None, bounds=None, evals=None, iters=None, wall_ms=None, seed=1,
-          vectorized=False, reference=True, **params):
+          vectorized=False, reference=True, integers=None, categorical=None, **params):
     """One run of a multi-objective ``algo`` (nsga2, nsga3, moead, smsemoa) on ``problem``: a
     catalog problem's name (zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7; ``dim`` its number of
     variables n and ``objectives`` DTLZ's M, both defaulting to the papers') or a Python function
@@ -250,10 +253,12 @@ def front(algo, problem, *, dim=None, objectives=None, bounds=None, evals=None, 
     problems ``constr``, ``srn``, ``tnk``, ``c1-dtlz1`` and ``c2-dtlz2`` run by constrained
     domination (docs/constraints.md); their result also has ``violation``, one per point (0:
     feasible), and ``first_feasible``, and ``quality`` counts feasible points only. The same bits
-    as ``pride front`` with the same seed."""
+    as ``pride front`` with the same seed. ``integers`` and ``categorical`` declare a Python
+    function's integer and categorical coordinates, as in ``minimize``."""
     return Result(_pride.front(_str("algo", algo), problem, _int("dim", dim), _int("objectives", objectives), bounds,
                                _int("evals", evals), _int("iters", iters), _real("wall_ms", wall_ms), _seed(seed),
-                               _bool("vectorized", vectorized), _bool("reference", reference), params))
+                               _bool("vectorized", vectorized), _bool("reference", reference),
+                               _indices("integers", integers), _indices("categorical", categorical), params))
 
 
 def plan_front(grid, start, goal, *, algo="nsga2", objectives="length,turns", encoding="line", init=None,
@@ -298,15 +303,17 @@ class Optimizer:
     and/or ``equalities=p`` (and ``tolerance``), an algorithm that handles constraints (pso,
     pso-constriction, the DE family) is told ``tell(values, g)``, g of shape (n, m + p); the
     engine evaluates a constrained point at a time, so such a run asks for one point per batch.
-    ``integers`` as in ``minimize``: the points asked for have integer values there."""
+    ``integers`` and ``categorical`` as in ``minimize``: the points asked for have integer values
+    there."""
 
     def __init__(self, algo, *, bounds, dim=None, evals=None, iters=None, target=None, wall_ms=None, seed=1,
-                 objectives=None, inequalities=None, equalities=None, tolerance=None, integers=None, **params):
+                 objectives=None, inequalities=None, equalities=None, tolerance=None, integers=None, categorical=None,
+                 **params):
         self._run = _pride.Optimizer(_str("algo", algo), bounds, _int("dim", dim), _int("evals", evals),
                                      _int("iters", iters), _real("target", target), _real("wall_ms", wall_ms),
                                      _seed(seed), _int("objectives", objectives), _int("inequalities", inequalities),
                                      _int("equalities", equalities), _real("tolerance", tolerance),
-                                     _integers(integers), params)
+                                     _indices("integers", integers), _indices("categorical", categorical), params)
         self.algo = algo
 
     def ask(self):

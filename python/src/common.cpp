@@ -199,16 +199,23 @@ std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::objec
     return {coordinates(lower), coordinates(upper)};
 }
 
-std::vector<VariableType> integer_types(const std::optional<std::vector<std::int64_t>>& integers, std::size_t dim) {
-    if (!integers) return {};
+std::vector<VariableType> variable_types(const std::optional<std::vector<std::int64_t>>& integers,
+                                         const std::optional<std::vector<std::int64_t>>& categorical, std::size_t dim) {
+    if (!integers && !categorical) return {};
     std::vector<VariableType> types(dim, VariableType::real);
-    for (const std::int64_t i : *integers) {
-        require(i >= 0 && static_cast<std::size_t>(i) < dim, "integers",
-                fmt::format("{} is not a coordinate of the box (0 to {})", i, dim - 1));
-        const auto u = static_cast<std::size_t>(i);
-        require(types[u] == VariableType::real, "integers", fmt::format("{} is listed twice", i));
-        types[u] = VariableType::integer;
-    }
+    const auto mark = [&](const std::optional<std::vector<std::int64_t>>& list, VariableType type, const char* name) {
+        if (!list) return;
+        for (const std::int64_t i : *list) {
+            require(i >= 0 && static_cast<std::size_t>(i) < dim, name,
+                    fmt::format("{} is not a coordinate of the box (0 to {})", i, dim - 1));
+            const auto u = static_cast<std::size_t>(i);
+            require(types[u] != type, name, fmt::format("{} is listed twice", i));
+            require(types[u] == VariableType::real, name, fmt::format("{} is also listed in integers", i));
+            types[u] = type;
+        }
+    };
+    mark(integers, VariableType::integer, "integers");
+    mark(categorical, VariableType::categorical, "categorical");
     return types;
 }
 

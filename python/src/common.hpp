@@ -206,10 +206,11 @@ std::pair<std::vector<double>, std::vector<double>> parse_bounds(const py::objec
                                                                  std::optional<std::int64_t> dim,
                                                                  const std::function<void(std::int64_t)>& check_size);
 
-/// The types of a box of `dim` coordinates whose `integers` (indices from 0) are integer, the
-/// others real; empty when `integers` is not given. ValueError naming `integers` for an index
-/// outside the box or listed twice.
-std::vector<VariableType> integer_types(const std::optional<std::vector<std::int64_t>>& integers, std::size_t dim);
+/// The types of a box of `dim` coordinates whose `integers` (indices from 0) are integer, whose
+/// `categorical` ones categorical (bounds 0 and k - 1: k choices), the others real; empty when
+/// neither is given. ValueError naming the argument for an index outside the box or listed twice.
+std::vector<VariableType> variable_types(const std::optional<std::vector<std::int64_t>>& integers,
+                                         const std::optional<std::vector<std::int64_t>>& categorical, std::size_t dim);
 
 /// The algorithm without the parameters that choose a constraint handler: what the size checks
 /// before building see, since a box not built yet has no constraints to allow them (engine::check

@@ -121,7 +121,8 @@ py::dict finish(const engine::RunResult& r, const engine::Problem& problem, bool
 py::dict front(const std::string& algo, const py::object& problem, std::optional<std::int64_t> dim,
                std::optional<std::int64_t> objectives, const py::object& bounds, std::optional<std::int64_t> evals,
                std::optional<std::int64_t> iters, std::optional<double> wall_ms, std::uint64_t seed, bool vectorized,
-               bool reference, const py::dict& params) {
+               bool reference, const std::optional<std::vector<std::int64_t>>& integers,
+               const std::optional<std::vector<std::int64_t>>& categorical, const py::dict& params) {
     auto errors = std::make_shared<UserError>();
     // `pride front --dim`'s range: 0 is no default here (it ran the paper's n).
     require(!dim || (*dim >= 1 && *dim <= engine::max_budget), "dim",
@@ -134,6 +135,8 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
         require(bounds.is_none(), "bounds",
                 "only for Python functions: " + utf8_arg(problem, "problem") + " has its own box");
         require(!vectorized, "vectorized", "only for Python functions");
+        require(!integers && !categorical, integers ? "integers" : "categorical",
+                "only for Python functions: " + utf8_arg(problem, "problem") + " has real variables");
         const auto name = utf8_arg(problem, "problem");
         require(engine::is_multiobjective_problem(name), "problem",
                 "unknown multi-objective problem '" + name + "' (known: " + multiobjective::problem_names() + ")");
@@ -152,7 +155,10 @@ py::dict front(const std::string& algo, const py::object& problem, std::optional
                 "must be in [2, 10000], got " + std::to_string(*objectives));
         const auto m = *objectives;
         auto [lower, upper] = parse_bounds(bounds, dim, multiobjective_box_check(m));
-        spec = mo_callback(problem, vectorized, std::move(lower), std::move(upper), m, errors);
+        auto types = variable_types(integers, categorical, lower.size());
+        auto cb = mo_callback(problem, vectorized, std::move(lower), std::move(upper), m, errors);
+        cb.types = std::move(types);
+        spec = std::move(cb);
         reference = false;  // a function has no reference front
     }
     std::optional<engine::Problem> prepared;
@@ -222,7 +228,8 @@ py::dict front_result_dict(const engine::RunResult& r, std::size_t objectives) {
 void bind_front(py::module_& m) {
     m.def("front", &front, py::call_guard<Call>(), py::arg("algo"), py::arg("problem"), py::arg("dim"),
           py::arg("objectives"), py::arg("bounds"), py::arg("evals"), py::arg("iters"), py::arg("wall_ms"),
-          py::arg("seed"), py::arg("vectorized"), py::arg("reference"), py::arg("params"));
+          py::arg("seed"), py::arg("vectorized"), py::arg("reference"), py::arg("integers"), py::arg("categorical"),
+          py::arg("params"));
     m.def("plan_front", &plan_front, py::call_guard<Call>(), py::arg("grid"), py::arg("start"), py::arg("goal"),
           py::arg("algo"), py::arg("objectives"), py::arg("encoding"), py::arg("init"), py::arg("connector"),
           py::arg("waypoints"), py::arg("corner_cutting"), py::arg("clearance_bands"), py::arg("clearance_width"),

@@ -96,12 +96,15 @@ engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::i
                                  std::optional<std::int64_t> instance, bool vectorized,
                                  const ConstraintArgs& constraints, const std::shared_ptr<UserError>& errors,
                                  const engine::AlgorithmSpec& algorithm, const engine::Budget& budget,
-                                 const std::optional<std::vector<std::int64_t>>& integers) {
+                                 const std::optional<std::vector<std::int64_t>>& integers,
+                                 const std::optional<std::vector<std::int64_t>>& categorical) {
     if (py::isinstance<py::str>(problem)) {
         const auto name = utf8_arg(problem, "problem");
         require(bounds.is_none(), "bounds",
                 "only for Python functions: problem '" + name + "' has its own box (see pride.problems())");
         require(!integers, "integers",
+                "only for Python functions: problem '" + name + "' declares its own variables' types");
+        require(!categorical, "categorical",
                 "only for Python functions: problem '" + name + "' declares its own variables' types");
         require(!vectorized, "vectorized", "only for Python functions");
         for (const auto& [given, what] : {std::pair{!constraints.subject_to.is_none(), "subject_to"},
@@ -141,7 +144,7 @@ engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::i
         require(!constraints.tolerance, "tolerance",
                 "only with constraints: give subject_to and inequalities or equalities");
         auto [lower, upper] = parse_bounds(bounds, dim, box_check(algorithm, "bounds", budget));
-        auto types = integer_types(integers, lower.size());
+        auto types = variable_types(integers, categorical, lower.size());
         auto spec = callback_spec(problem, vectorized, std::move(lower), std::move(upper), errors);
         spec.types = std::move(types);
         return spec;
@@ -153,6 +156,7 @@ engine::ProblemSpec problem_spec(const py::object& problem, std::optional<std::i
     auto [lower, upper] = parse_bounds(bounds, dim, box_check(unconstrained, "bounds", budget));
     engine::CallbackSpec spec;
     spec.name = "bounds";
+    spec.types = variable_types(integers, categorical, lower.size());
     spec.lower = std::move(lower);
     spec.upper = std::move(upper);
     set_constraints(spec, problem, constraints, errors);
@@ -165,14 +169,16 @@ py::dict minimize(const std::string& algo, const py::object& problem, std::optio
                   std::optional<std::int64_t> instance, const py::object& callback, bool vectorized,
                   const py::object& subject_to, std::optional<std::int64_t> inequalities,
                   std::optional<std::int64_t> equalities, std::optional<double> tolerance,
-                  const std::optional<std::vector<std::int64_t>>& integers, const py::dict& params) {
+                  const std::optional<std::vector<std::int64_t>>& integers,
+                  const std::optional<std::vector<std::int64_t>>& categorical, const py::dict& params) {
     auto errors = std::make_shared<UserError>();
     const engine::AlgorithmSpec algorithm{algo, param_values(algo, params)};
     const engine::Budget b = budget(evals, iters, target, wall_ms);
     const ConstraintArgs constraints{subject_to, inequalities, equalities, tolerance};
     std::optional<engine::Problem> prepared;
     prepared.emplace(
-        problem_spec(problem, dim, bounds, instance, vectorized, constraints, errors, algorithm, b, integers));
+        problem_spec(problem, dim, bounds, instance, vectorized, constraints, errors, algorithm, b, integers,
+                     categorical));
     engine::check(algorithm, *prepared, b);
     const engine::RunResult r = run_released(algorithm, *prepared, b, seed, callback, errors);
     py::dict d = result_dict(r);
@@ -187,7 +193,8 @@ void bind_minimize(py::module_& m) {
     m.def("minimize", &minimize, py::call_guard<Call>(), py::arg("algo"), py::arg("problem"), py::arg("dim"),
           py::arg("bounds"), py::arg("evals"), py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"),
           py::arg("instance"), py::arg("callback"), py::arg("vectorized"), py::arg("subject_to"),
-          py::arg("inequalities"), py::arg("equalities"), py::arg("tolerance"), py::arg("integers"), py::arg("params"));
+          py::arg("inequalities"), py::arg("equalities"), py::arg("tolerance"), py::arg("integers"), py::arg("categorical"),
+          py::arg("params"));
 }
 
 }  // namespace pride::python

@@ -28,7 +28,7 @@ class Optimizer {
               std::optional<double> wall_ms, std::uint64_t seed, std::optional<std::int64_t> objectives,
               std::optional<std::int64_t> inequalities, std::optional<std::int64_t> equalities,
               std::optional<double> tolerance, const std::optional<std::vector<std::int64_t>>& integers,
-              const py::dict& params) {
+              const std::optional<std::vector<std::int64_t>>& categorical, const py::dict& params) {
         require(!is_python_algorithm(algo), "algo",
                 "'" + algo + "' is written in Python and drives its own loop: run it with minimize or a campaign");
         require(!bounds.is_none(), "bounds", "the Optimizer needs bounds=(lower, upper)");
@@ -59,7 +59,7 @@ class Optimizer {
             inequalities || equalities ? without_constraint_params(algorithm) : algorithm;
         auto [lower, upper] = parse_bounds(
             bounds, dim, entry.multiobjective() ? multiobjective_box_check(m) : box_check(sized, "bounds", b));
-        auto types = integer_types(integers, lower.size());
+        auto types = variable_types(integers, categorical, lower.size());
         py::gil_scoped_release release;
         run_ = std::make_unique<engine::AskTell>(std::move(algorithm), std::move(lower), std::move(upper), b, seed, m,
                                                  constraints, std::move(types));
@@ -167,11 +167,12 @@ void bind_optimizer(py::module_& m) {
         .def(py::init<const std::string&, const py::object&, std::optional<std::int64_t>, std::optional<std::int64_t>,
                       std::optional<std::int64_t>, std::optional<double>, std::optional<double>, std::uint64_t,
                       std::optional<std::int64_t>, std::optional<std::int64_t>, std::optional<std::int64_t>,
-                      std::optional<double>, const std::optional<std::vector<std::int64_t>>&, const py::dict&>(),
+                      std::optional<double>, const std::optional<std::vector<std::int64_t>>&,
+                      const std::optional<std::vector<std::int64_t>>&, const py::dict&>(),
              py::call_guard<Call>(), py::arg("algo"), py::arg("bounds"), py::arg("dim"), py::arg("evals"),
              py::arg("iters"), py::arg("target"), py::arg("wall_ms"), py::arg("seed"), py::arg("objectives"),
              py::arg("inequalities"), py::arg("equalities"), py::arg("tolerance"), py::arg("integers"),
-             py::arg("params"))
+             py::arg("categorical"), py::arg("params"))
         .def("ask", &Optimizer::ask, py::call_guard<Call>())
         .def("tell", &Optimizer::tell, py::call_guard<Call>(), py::arg("values"), py::arg("g"))
         .def("done", &Optimizer::done, py::call_guard<Call>())

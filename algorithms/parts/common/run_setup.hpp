@@ -85,11 +85,17 @@ BoxRun start_box_run(const Algorithm& algorithm, P& problem, const Termination& 
                {}};
     seed_noise(problem, seed);
     algorithm.init(problem, run.rng, run.x);
+    std::vector<std::size_t> categorical;
     if constexpr (requires { algorithm.round_integers; })
-        if (algorithm.round_integers) run.discrete = Rounding(problem);
+        if (algorithm.round_integers) {
+            run.discrete = Rounding(problem);
+            categorical = categorical_coordinates(problem);
+        }
     for (Eigen::Index i = 0; i < run.x.cols(); ++i) {
-        algorithm.bounds(column(run.x, i), run.lo, run.hi);
-        run.round(column(run.x, i));
+        const std::span<double> x = column(run.x, i);
+        algorithm.bounds(x, run.lo, run.hi);
+        for (const std::size_t c : categorical) x[c] = choice_of_start(x[c], run.lo[c], run.hi[c]);
+        run.round(x);
     }
     if constexpr (ConstrainedProblem<P>) {
         if (constraint_values) {

@@ -23,6 +23,7 @@
 #include "algorithms/parts/common/adaptive_penalty.hpp"
 #include "algorithms/parts/common/run_setup.hpp"
 #include "algorithms/parts/ga/generation_context.hpp"
+#include "algorithms/parts/variation/categorical.hpp"
 #include "framework/chain.hpp"
 #include "framework/constraints.hpp"
 #include "framework/counted_chain.hpp"
@@ -61,6 +62,7 @@ class BoxPopulation {
           fy_(kids_),
           cross_(detail::prepared(ga.crossover, run_.dim)),
           mutate_(detail::prepared(ga.mutation, run_.dim)) {
+        if (ga.round_integers) categories_ = CategoricalVariation(problem, ga.categorical);
         if constexpr (constrained) {
             k_ = problem.constraint_counts().total();
             vnext_.assign(run_.fx.size(), 0.0);
@@ -94,11 +96,12 @@ class BoxPopulation {
         detail::begin_generation(cross_, context, run_.rng);
         detail::begin_generation(mutate_, context, run_.rng);
     }
+    // The real-coded operators; categorical coordinates by their own (nothing without them).
     void cross(std::span<double> a, std::span<double> b, const GenerationContext& context) {
-        with_context(cross_, context, a, b, run_.lo, run_.hi, run_.rng);
+        categories_.cross(a, b, run_.rng, [&] { with_context(cross_, context, a, b, run_.lo, run_.hi, run_.rng); });
     }
     void mutate(std::span<double> c, const GenerationContext& context) {
-        with_context(mutate_, context, c, run_.lo, run_.hi, run_.rng);
+        categories_.mutate(c, run_.rng, [&] { with_context(mutate_, context, c, run_.lo, run_.hi, run_.rng); });
     }
     void repair(std::span<double> c) const {
         ga_.bounds(c, run_.lo, run_.hi);
@@ -186,6 +189,7 @@ class BoxPopulation {
     std::vector<double> fnext_, fy_;
     detail::Prepared<decltype(Algorithm::crossover)> cross_;
     detail::Prepared<decltype(Algorithm::mutation)> mutate_;
+    CategoricalVariation categories_;  // empty unless the problem has categorical coordinates
     // Constrained problems only: k_ = m + p; the next population's and the children's violations
     // and constraint values (the current ones are run_.vx, run_.cx); APM's pool and scratch.
     std::size_t k_ = 0;
