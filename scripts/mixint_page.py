@@ -46,6 +46,7 @@ GROUPS = [("separable", range(1, 6)), ("moderate", range(6, 10)), ("ill-conditio
 # (f_opt up to about 10^3) would rank runs by rounding.
 FINAL_TARGET = 1e-8
 ECDF_AT = [100, 1000]  # evaluations / D at which the ECDF is read, besides the budget
+ERT_EXPONENT = -2  # the ERT tables' target: f_opt + 1e-2
 
 
 def campaign_text(campaign=CAMPAIGN):
@@ -130,7 +131,7 @@ def fmt(x):
 
 
 def hit_times(rows):
-    """Evaluations / D at which each (run, target) pair was first reached (inf: never)."""
+    """The evaluations at which each (run, target) pair was first reached (inf: never)."""
     return [int(r[f"hit_1e{e}"]) if r[f"hit_1e{e}"] else math.inf for r in rows for e in EXPONENTS]
 
 
@@ -171,6 +172,30 @@ def ecdf_block(data):
             row += [rp.pct(reached(rs, b * d)) for b in budgets]
         out.append(row)
     return rp.table(header, out, "l" + "r" * (len(header) - 1))
+
+
+def ert(rows, exponent):
+    """COCO's expected running time to f_opt + 10^exponent: the evaluations of every run (to the
+    hit, or all it spent) over the number of runs that hit; inf when none did. And the hits."""
+    key = f"hit_1e{exponent}"
+    hits = [r for r in rows if r[key]]
+    spent = sum(int(r[key]) if r[key] else int(r["evaluations"]) for r in rows)
+    return (spent / len(hits) if hits else math.inf), len(hits)
+
+
+def ert_block(data, dim):
+    """ERT / D to f_opt + 10^ERT_EXPONENT per function, with the runs that reached it."""
+    rows = read(dim, data)
+    functions, instances, _ = suite()
+    out = []
+    for fn in functions:
+        row = [f"f{fn}"]
+        for a in algorithms():
+            e, k = ert([r for r in rows if r["algorithm"] == a and int(r["function"]) == fn], ERT_EXPONENT)
+            v = e / dim
+            row.append(("inf" if not k else f"{v:,.0f}" if v >= 100 else f"{v:.3g}") + f" ({k}/{len(instances)})")
+        out.append(row)
+    return rp.table(["function"] + [f"`{a}`" for a in algorithms()], out, "l" + "r" * len(algorithms()))
 
 
 def groups_block(data, dim):
@@ -269,6 +294,7 @@ def blocks(data=DATA):
     for d in dims:
         b[f"mi-groups-d{d}"] = groups_block(data, d)
         b[f"mi-tests-d{d}"] = tests_block(data, d)
+        b[f"mi-ert-d{d}"] = ert_block(data, d)
     return b
 
 
