@@ -173,9 +173,11 @@ class Cmaes {
         if (margin)
             for (std::size_t i = 0; i < n; ++i) {
                 const VariableType type = variable_type(problem, i);
+                // Hamano et al. (2022) treat integer (and binary) variables; unordered choices are
+                // CatCMA's (Hamano et al. 2024), another algorithm.
                 require(type != VariableType::categorical, name(),
-                        "the margin takes integer and real variables; variable " + std::to_string(i + 1) +
-                            " is categorical");
+                        "the margin takes integer and real variables; variable " + std::to_string(i) +
+                            " is categorical (the GA family and NSGA-II vary unordered choices)");
                 if (type == VariableType::integer) integers.push_back(i);
             }
         constexpr bool constrained = ConstrainedProblem<P>;

@@ -159,7 +159,7 @@ TEST_CASE("cmaes margin: every evaluated point has its integers on their values"
     a.margin = true;
     Recording with_category;
     with_category.categorical = true;
-    CHECK_THROWS_WITH(a.run(with_category, t, 7), Catch::Contains("variable 1 is categorical"));
+    CHECK_THROWS_WITH(a.run(with_category, t, 7), Catch::Contains("variable 0 is categorical"));
 }
 
 TEST_CASE("typed variables: the rounding operator rounds as the problems do", "[margin][typed]") {

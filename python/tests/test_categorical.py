@@ -80,3 +80,12 @@ def test_bad_categorical_declarations_are_refused_by_name(kw, error, match):
         pride.minimize("ga", "sphere", dim=2, evals=100, categorical=[0])
     with pytest.raises(ValueError, match="^integers: only for Python functions"):
         pride.front("nsga2", "zdt1", evals=100, integers=[0])
+
+
+def test_the_margin_refuses_categorical_variables():
+    with pytest.raises(ValueError, match=r"^cmaes: the margin takes integer and real variables; variable 0 is "
+                                         r"categorical"):
+        pride.minimize("cmaes", f, bounds=BOUNDS, integers=[1], categorical=[0], evals=100, margin=1)
+    # Without the margin CMA-ES searches the box, and the function still receives choices.
+    r = pride.minimize("cmaes", f, bounds=BOUNDS, integers=[1], categorical=[0], evals=300, seed=1)
+    assert r.best_x[0] == int(r.best_x[0])
