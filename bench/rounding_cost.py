@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """What the typed space's rounding operator costs per evaluation: `pride run` of each algorithm on
 bbob-mixint-f1 (D = 40: 32 integer coordinates, the cheapest function of the suite, so that the
-operator's share is the largest) with `integers=round` and with `integers=relax`, 200,000
+operator's share is the largest) with `discrete=round` and with `discrete=relax`, 200,000
 evaluations, seeds 1-3 in turn, the least wall time of `--reps` runs of each; prints ns per
 evaluation and the ratio round / relax.
 
@@ -28,7 +28,7 @@ def main():
     for rep in range(args.reps):
         for algo in algos:  # interleaved, so that a busy moment weighs on both sides
             for mode in ("round", "relax"):
-                out = subprocess.run([args.pride, "run", "--algo", algo, "--param", f"integers={mode}", "--problem",
+                out = subprocess.run([args.pride, "run", "--algo", algo, "--param", f"discrete={mode}", "--problem",
                                       "bbob-mixint-f1", "--dim", "40", "--evals", str(evaluations), "--seed",
                                       str(rep % 3 + 1), "--json"], capture_output=True, text=True)
                 if out.returncode != 0:

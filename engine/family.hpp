@@ -27,12 +27,13 @@ inline ParamSpec walk_init_param(bool default_value) {
                 "start from the problem's suggestions (grids: feasible walks, as the grid spec's init sets it)");
 }
 
-/// The typed space's rounding operator (framework/variables.hpp) on a problem with integer
-/// variables: `what` put on integer values, or the coordinates searched as reals that the
-/// problem rounds when it evaluates them.
+/// The typed space's rounding operator (framework/variables.hpp) on a problem with integer or
+/// categorical variables: `what` put on their values, or the coordinates searched as reals that
+/// the problem rounds when it evaluates them. Named `discrete`, not `integers`: Python's
+/// `integers=` declares a function's integer coordinates.
 inline ParamSpec integers_param(const std::string& what) {
-    return choice("integers", {"round", "relax"}, "round",
-                  "integer variables (bbob-mixint, functions given integers): " + what +
+    return choice("discrete", {"round", "relax"}, "round",
+                  "integer and categorical variables (bbob-mixint, functions given types): " + what +
                       " rounded to their values, or searched as reals the problem rounds")
         .only_on_boxes();
 }
@@ -55,10 +56,10 @@ inline std::vector<ParamSpec> with_categorical(std::vector<ParamSpec> params) {
     return params;
 }
 
-/// What `integers`, `cat_swap` and `cat_reset` set on an algorithm with categorical rates.
+/// What `discrete`, `cat_swap` and `cat_reset` set on an algorithm with categorical rates.
 template <class A>
 void typed_operators(A& a, const Params& p) {
-    a.round_integers = p.choice("integers") == "round";
+    a.round_integers = p.choice("discrete") == "round";
     a.categorical = {p.real("cat_swap"), p.real("cat_reset")};
 }
 

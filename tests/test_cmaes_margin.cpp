@@ -231,7 +231,7 @@ TEST_CASE("typed variables: PSO, DE and the GA round what they make on integer c
     for (const char* algo : {"pso", "de", "jade", "ga", "ga-plus", "iaga"}) {
         INFO(algo);
         engine::AlgorithmSpec relaxed{algo, {}};
-        relaxed.params.set_name("integers", "relax");
+        relaxed.params.set_name("discrete", "relax");
         const auto a = engine::run({algo, {}}, sphere, budget, 9), b = engine::run(relaxed, sphere, budget, 9);
         CHECK(a.best_x == b.best_x);
         CHECK(a.history == b.history);

@@ -47,7 +47,7 @@ Family common(const std::string& id, const Params& p, de::SelectableSize size) {
     a.size = std::move(size);
     if (p.choice("bounds") == "clamp") a.repair = de::ClampRepair{};
     a.init.suggestions = p.flag("walk_init");
-    a.round_integers = p.choice("integers") == "round";
+    a.round_integers = p.choice("discrete") == "round";
     return a;
 }
 

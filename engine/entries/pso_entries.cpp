@@ -13,7 +13,7 @@ Family configure(const Params& p) {
     Family a;
     a.population = p.integer("pop");
     a.init.suggestions = p.flag("walk_init");
-    a.round_integers = p.choice("integers") == "round";
+    a.round_integers = p.choice("discrete") == "round";
     a.velocity_clamp.fraction = p.real("vmax");
     return a;
 }

@@ -89,3 +89,20 @@ def test_the_margin_refuses_categorical_variables():
     # Without the margin CMA-ES searches the box, and the function still receives choices.
     r = pride.minimize("cmaes", f, bounds=BOUNDS, integers=[1], categorical=[0], evals=300, seed=1)
     assert r.best_x[0] == int(r.best_x[0])
+
+
+def test_the_rounding_operator_is_set_from_python():
+    # The algorithms' parameter `discrete` is not the keyword `integers` that declares coordinates.
+    seen = []
+
+    def g(x):
+        seen.append(x[1])
+        return f(x)
+
+    relaxed = pride.minimize("de", g, bounds=BOUNDS, integers=[1], categorical=[0], evals=300, seed=1,
+                             discrete="relax")
+    rounded = pride.minimize("de", g, bounds=BOUNDS, integers=[1], categorical=[0], evals=300, seed=1)
+    assert all(v == int(v) for v in seen)  # the function gets integers either way
+    assert relaxed.best_f != rounded.best_f or list(relaxed.best_x) != list(rounded.best_x)
+    with pytest.raises(ValueError, match="^de: discrete must be round or relax"):
+        pride.minimize("de", g, bounds=BOUNDS, evals=300, discrete="floor")
