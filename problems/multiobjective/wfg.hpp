@@ -31,9 +31,13 @@
 // - r_nonsep's normalisation (followed: the paper): pagmo2 computes ceil(A / 2) as an integer
 //   division, so for odd A (WFG6, WFG9 with k / (M - 1) or l odd) its t exceeds [0, 1]; here
 //   ceil(A / 2) is the paper's. For even A (the defaults) the two are the same operations.
-// - WFG1's b_flat (followed: the WFG reference code's correct_to_01): at the optimum b_flat's
-//   rounding can fall just below 0 and pagmo2's b_poly(y, 0.02) of it is NaN; here b_flat's value
-//   is clamped to [0, 1], which changes nothing where it is already inside.
+// - WFG1's b_flat (followed: neither): at the optimum, y = 0.35, b_flat's formula rounds to
+//   -1.1e-16 and pagmo2's b_poly(y, 0.02) of it is NaN; where no double z_i has z_i / 2i = 0.35
+//   exactly (i = 3, 6, 12, 24, 48, 53 among 1..60: the defaults' n holds some) the nearest z_i
+//   leaves +1.1e-16, and b_poly makes it 0.48, so the front is out of reach in double precision
+//   (at the defaults x_M >= 0.040 for M = 2, 0.069 for M = 3, in every f_m). Here b_flat's values below 1e-15, rounding
+//   at its zero, are 0 (and above 1, 1, as the WFG toolkit's reference code corrects them), which changes nothing
+//   elsewhere: no other point gives b_flat a value in (0, 1e-15).
 // pagmo2's order of operations is kept (sums left to right, weights summed as it sums them), which
 // is why WFG7-9's r_sum over the other parameters costs O(n^2) per evaluation, as the definition.
 #include <algorithm>
@@ -63,7 +67,9 @@ inline double b_poly(double y, double alpha) {
 inline double b_flat(double y, double a, double b, double c) {
     const double v = a + std::min(0.0, std::floor(y - b)) * a * (b - y) / b -
                      std::min(0.0, std::floor(c - y)) * (1.0 - a) * (y - c) / (1.0 - c);
-    return std::clamp(v, 0.0, 1.0);  // the file's note: rounding below 0 would make b_poly NaN
+    // The file's note: at its zero the formula's rounding leaves up to a few 1e-16 either side, which
+    // WFG1's b_poly(., 0.02) would make NaN (below 0) or 0.48 (above).
+    return v < 1e-15 ? 0.0 : std::min(v, 1.0);
 }
 inline double b_param(double y, double u, double a, double b, double c) {
     const double v = a - (1.0 - 2.0 * u) * std::abs(std::floor(0.5 - u) + a);
@@ -73,9 +79,9 @@ inline double s_linear(double y, double a) {
     return std::abs(y - a) / std::abs(std::floor(a - y) + a);
 }
 inline double s_decept(double y, double a, double b, double c) {
-    return 1.0 + (std::abs(y - a) - b) * ((std::floor(y - a + b) * (1.0 - c + (a - b) / b)) / (a - b) +
-                                          (std::floor(a + b - y) * (1.0 - c + (1.0 - a - b) / b)) / (1.0 - a - b) +
-                                          1.0 / b);
+    return 1.0 +
+           (std::abs(y - a) - b) * ((std::floor(y - a + b) * (1.0 - c + (a - b) / b)) / (a - b) +
+                                    (std::floor(a + b - y) * (1.0 - c + (1.0 - a - b) / b)) / (1.0 - a - b) + 1.0 / b);
 }
 inline double s_multi(double y, double a, double b, double c) {
     const double r = std::abs(y - c) / (2.0 * (std::floor(c - y) + c));
@@ -205,10 +211,10 @@ class Wfg : public MultiObjectiveBox {
                 "needs 2 <= M <= " + std::to_string(kMaxObjectives) + " objectives, got " + std::to_string(m));
         const std::size_t kk = k == 0 ? 2 * (m - 1) : k, ll = l == 0 ? 20 : l;
         require(kk % (m - 1) == 0, w,
-                "needs k (position parameters) a multiple of M - 1 = " + std::to_string(m - 1) + ", got k = " +
-                    std::to_string(kk));
+                "needs k (position parameters) a multiple of M - 1 = " + std::to_string(m - 1) +
+                    ", got k = " + std::to_string(kk));
         require((problem != 2 && problem != 3) || ll % 2 == 0, w,
-                "needs an even l (distance parameters), got l = " + std::to_string(ll));
+                "needs an even l = n - k (distance parameters), got l = " + std::to_string(ll));
         require(kk <= kMaxVariables && ll <= kMaxVariables - kk, w,
                 "is built up to n = k + l = " + std::to_string(kMaxVariables) + " variables");
         return kk + ll;
@@ -239,8 +245,8 @@ class Wfg : public MultiObjectiveBox {
                 break;
             case 7:  // u from the untransformed y_{i+1}..y_n: left to right, so i ascending
                 for (std::size_t i = 0; i < k; ++i)
-                    y[i] = wfg::b_param(y[i], wfg::r_sum(std::span<const double>(y).subspan(i + 1)), kParamA, 0.02,
-                                        50.0);
+                    y[i] =
+                        wfg::b_param(y[i], wfg::r_sum(std::span<const double>(y).subspan(i + 1)), kParamA, 0.02, 50.0);
                 for (std::size_t i = k; i < n; ++i) y[i] = wfg::s_linear(y[i], 0.35);
                 break;
             case 8:  // u from y_1..y_{i-1}, those beyond k already transformed (the file's note)
@@ -250,8 +256,8 @@ class Wfg : public MultiObjectiveBox {
                 break;
             default:  // 9: u from the untransformed y_{i+1}..y_n, so i ascending
                 for (std::size_t i = 0; i + 1 < n; ++i)
-                    y[i] = wfg::b_param(y[i], wfg::r_sum(std::span<const double>(y).subspan(i + 1)), kParamA, 0.02,
-                                        50.0);
+                    y[i] =
+                        wfg::b_param(y[i], wfg::r_sum(std::span<const double>(y).subspan(i + 1)), kParamA, 0.02, 50.0);
                 for (std::size_t i = 0; i < n; ++i)
                     y[i] = i < k ? wfg::s_decept(y[i], 0.35, 0.001, 0.05) : wfg::s_multi(y[i], 30.0, 95.0, 0.35);
         }
@@ -267,7 +273,8 @@ class Wfg : public MultiObjectiveBox {
         for (std::size_t i = 0; i + 1 < mm; ++i) {
             switch (problem_) {
                 case 1:
-                    t[i] = wfg::r_sum(pos(i), [&](std::size_t j) { return 2.0 * static_cast<double>(i * group + j + 1); });
+                    t[i] =
+                        wfg::r_sum(pos(i), [&](std::size_t j) { return 2.0 * static_cast<double>(i * group + j + 1); });
                     break;
                 case 6:
                 case 9:
@@ -308,15 +315,21 @@ inline std::vector<double> Wfg::optimal_solution(std::span<const double> positio
     };
     std::vector<double> z(n);
     if (problem_ == 8) {  // u over y_1..y_{i-1} as evaluate() sees them: the transformed ones 0.35
-        for (std::size_t i = k_; i < n; ++i)
-            z[i] = inverse(wfg::r_sum(std::span<const double>(y).first(i)));
+        for (std::size_t i = k_; i < n; ++i) z[i] = inverse(wfg::r_sum(std::span<const double>(y).first(i)));
     } else if (problem_ == 9) {  // u over the untransformed y_{i+1}..y_n: from the last one back
         for (std::size_t i = n - 1; i-- > k_;) y[i] = inverse(wfg::r_sum(std::span<const double>(y).subspan(i + 1)));
         for (std::size_t i = k_; i < n; ++i) z[i] = y[i];
     } else {
         for (std::size_t i = k_; i < n; ++i) z[i] = 0.35;
     }
-    for (std::size_t i = 0; i < n; ++i) z[i] = (i < k_ ? position[i] : z[i]) * upper()[i];
+    for (std::size_t i = 0; i < n; ++i) {
+        // z_i with z_i / (2i) exactly the value wanted: WFG1's b_poly(., 0.02) turns the 1e-17 that a
+        // rounded z_i leaves after s_linear into 0.46.
+        const double want = i < k_ ? position[i] : z[i], box = upper()[i];
+        double v = want * box;
+        for (int step = 0; step < 8 && v / box != want; ++step) v = std::nextafter(v, v / box < want ? box : 0.0);
+        z[i] = v;
+    }
     return z;
 }
 
