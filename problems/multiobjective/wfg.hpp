@@ -1,26 +1,26 @@
 #pragma once
 // The nine problems of the WFG toolkit: S. Huband, P. Hingston, L. Barone, L. While, "A review of
 // multiobjective test problems and a scalable test problem toolkit", IEEE Transactions on
-// Evolutionary Computation 10(5), 2006, 477-506 ("the paper" below). The transformations are its
-// Table II (b_poly, b_flat, b_param, s_linear, s_decept, s_multi, r_sum, r_nonsep), the shapes its
-// Table I (linear, convex, concave, mixed, disconnected), the problems its Table V with the general
-// form of its Section VIII-A (equations 1-3):
+// Evolutionary Computation 10(5), 2006, 477-506 ("the paper" below): its transformation functions
+// (b_poly, b_flat, b_param, s_linear, s_decept, s_multi, r_sum, r_nonsep), its shape functions
+// (linear, convex, concave, mixed, disconnected) and its nine problems, in the toolkit's general
+// form:
 //
 //   f_m = D x_M + S_m h_m(x_1, ..., x_{M-1}),  D = 1, S_m = 2m,
 //   x_i = max(t_M, A_i) (t_i - 0.5) + 0.5 (i < M),  x_M = t_M,  A_i = 1 (WFG3: A_1 = 1, A_i = 0),
 //
 // t the last transition of z / (2, 4, ..., 2n). M >= 2 objectives; k position parameters (a
 // multiple of M - 1), l >= 1 distance parameters (even for WFG2 and WFG3); n = k + l variables,
-// z_i in [0, 2i]. Defaults k = 2 (M - 1), l = 20 (the paper's experiments: k = 4, l = 20 at M = 2,
-// i.e. k = 2 (M - 1) there too).
+// z_i in [0, 2i]. Defaults k = 2 (M - 1) and l = 20 (common in the literature; pagmo2's own
+// defaults, n = 5 and k = 4 at M = 3, are smaller).
 //
 //   problem  shape                         distance parameters at the optimum (z_i, i > k)
 //   WFG1     convex, mixed (alpha 1, A 5)  2i 0.35
 //   WFG2     convex, disconnected (A 5)    2i 0.35
 //   WFG3     linear, degenerate            2i 0.35
 //   WFG4-7   concave                       2i 0.35
-//   WFG8     concave                       wfg_optimal_solution(): b_param's inverse, in order
-//   WFG9     concave                       wfg_optimal_solution(): b_param's inverse, last first
+//   WFG8     concave                       Wfg::optimal_solution(): b_param's inverse, in order
+//   WFG9     concave                       Wfg::optimal_solution(): b_param's inverse, last first
 //
 // The oracle is pagmo2 2.18's `wfg` (tests/data/wfg/README.md); the values agree with it to the
 // last bit except where the paper and pagmo2 differ, where this file states which it follows:
@@ -35,9 +35,10 @@
 //   -1.1e-16 and pagmo2's b_poly(y, 0.02) of it is NaN; where no double z_i has z_i / 2i = 0.35
 //   exactly (i = 3, 6, 12, 24, 48, 53 among 1..60: the defaults' n holds some) the nearest z_i
 //   leaves +1.1e-16, and b_poly makes it 0.48, so the front is out of reach in double precision
-//   (at the defaults x_M >= 0.040 for M = 2, 0.069 for M = 3, in every f_m). Here b_flat's values below 1e-15, rounding
-//   at its zero, are 0 (and above 1, 1, as the WFG toolkit's reference code corrects them), which changes nothing
-//   elsewhere: no other point gives b_flat a value in (0, 1e-15).
+//   (at the defaults x_M >= 0.040 for M = 2, 0.069 for M = 3, in every f_m). Here b_flat's
+//   values below 1e-15, rounding at its zero, are 0 (and above 1, 1, as the WFG toolkit's
+//   reference code corrects them), which changes nothing elsewhere: no other point gives b_flat
+//   a value in (0, 1e-15).
 // pagmo2's order of operations is kept (sums left to right, weights summed as it sums them), which
 // is why WFG7-9's r_sum over the other parameters costs O(n^2) per evaluation, as the definition.
 #include <algorithm>
@@ -58,7 +59,7 @@
 
 namespace pride::multiobjective {
 
-/// The paper's transformations (Table II) and shapes (Table I), in pagmo2's order of operations.
+/// The paper's transformations and shapes, in pagmo2's order of operations.
 namespace wfg {
 
 inline double b_poly(double y, double alpha) {
@@ -141,7 +142,7 @@ inline double disconnected(double x0, double alpha, double beta, double a) {
     return 1.0 - std::pow(x0, alpha) * std::pow(std::cos(a * std::pow(x0, beta) * std::numbers::pi), 2.0);
 }
 
-/// The paper's Table V's shapes from the parameters x_1..x_M (x_M the distance): f_m = x_M + 2m h_m.
+/// The problems' shapes from the parameters x_1..x_M (x_M the distance): f_m = x_M + 2m h_m.
 inline void objectives(int problem, std::span<const double> x, std::span<double> f) {
     const std::size_t mm = f.size();
     for (std::size_t m = 1; m <= mm; ++m) {
@@ -333,8 +334,8 @@ inline std::vector<double> Wfg::optimal_solution(std::span<const double> positio
     return z;
 }
 
-/// The front of WFG`problem` with M objectives, at most `points` points (M rows): the shapes of the
-/// paper's Table V at x_M = 0, x_1..x_{M-1} (i.e. not z) sampled as follows. WFG4-9: the concave
+/// The front of WFG`problem` with M objectives, at most `points` points (M rows): the problem's
+/// shapes at x_M = 0, x_1..x_{M-1} (i.e. not z) sampled as follows. WFG4-9: the concave
 /// surface sum (f_m / 2m)^2 = 1 at the normalised Das-Dennis lattice (as DTLZ2's front); WFG3: the
 /// degenerate line (x_1 evenly in [0, 1], x_2..x_{M-1} = 0.5, where A_i = 0 puts them); WFG1 and
 /// WFG2: a grid of s^(M-1) points over [0, 1]^(M-1) (s the largest with s^(M-1) <= points), its
