@@ -18,6 +18,7 @@
 #include "framework/random.hpp"
 #include "problems/multiobjective/catalog.hpp"
 #include "problems/multiobjective/wfg.hpp"
+#include "tests/cli_runner.hpp"
 #include "tests/test_support.hpp"
 
 using namespace pride::multiobjective;
@@ -221,4 +222,11 @@ TEST_CASE("wfg: bad parameters are InputErrors naming what", "[wfg][errors]") {
     for (const auto& message :
          {input_error_message([] { (void)Benchmark("wfg2", 25, 3); }), input_error_message([] { (void)Wfg(4, 4, 4); })})
         CHECK(message.find('\n') == std::string::npos);
+    // Through the program: one line, exit status 2.
+    const auto r = pride::test::run_pride("front --algo nsga2 --problem wfg2 --dim 25 --evals 100");
+    CHECK(r.status == 2);
+    CHECK(r.err == "pride: wfg2: needs an even l = n - k (distance parameters), got l = 21\n");
+    const auto ok = pride::test::run_pride("front --algo nsga2 --problem wfg2 --dim 24 --objectives 2 --evals 100");
+    CHECK(ok.status == 0);
+    CHECK(ok.out.find("wfg2 (n = 24, M = 2)") != std::string::npos);
 }
