@@ -230,3 +230,32 @@ TEST_CASE("wfg: bad parameters are InputErrors naming what", "[wfg][errors]") {
     CHECK(ok.status == 0);
     CHECK(ok.out.find("wfg2 (n = 24, M = 2)") != std::string::npos);
 }
+
+#ifdef PRIDE_HAVE_PAGMO
+#include <pagmo/problem.hpp>
+#include <pagmo/problems/wfg.hpp>
+
+TEST_CASE("wfg: pagmo2 in process, at more sizes, bit for bit where A is even", "[wfg][pagmo]") {
+    pride::Rng rng(477);
+    struct Size {
+        std::size_t m, k, l;
+    };
+    // k / (M - 1) and l even (r_nonsep's A), l even for WFG2 and WFG3: where pride follows pagmo2.
+    for (const Size s : {Size{2, 2, 2}, Size{2, 4, 8}, Size{3, 4, 6}, Size{4, 6, 10}, Size{6, 10, 4}})
+        for (int problem = 1; problem <= 9; ++problem) {
+            INFO("wfg" << problem << " M = " << s.m << " k = " << s.k << " l = " << s.l);
+            const Wfg ours(problem, s.m, s.k, s.l);
+            const pagmo::problem theirs{pagmo::wfg(static_cast<unsigned>(problem), s.k + s.l, s.m, s.k)};
+            for (int rep = 0; rep < 50; ++rep) {
+                std::vector<double> z(s.k + s.l);
+                for (std::size_t i = 0; i < z.size(); ++i) z[i] = rng.uniform(0.0, ours.upper()[i]);
+                CHECK(eval(ours, z) == theirs.fitness(z));
+            }
+        }
+    // Odd A: pagmo2's r_nonsep normalisation puts WFG6 below its front (the header's note).
+    const std::vector<double> z{2.0, 0.0, 6.0, 2.8, 3.5, 4.2};  // x = (1, 0, 1), distance optimal
+    const auto f = pagmo::problem{pagmo::wfg(6, 6, 2, 3)}.fitness(z);
+    CHECK(f[1] < 0.0);
+    CHECK(shape_gap(6, eval(Wfg(6, 2, 3, 3), z)) < 1e-12);
+}
+#endif
