@@ -156,6 +156,23 @@ TEST_CASE("wfg: the sampled fronts lie on the shapes and are non-dominated", "[w
     }
 }
 
+TEST_CASE("wfg: WFG3's front is more than its degenerate line for M = 3", "[wfg]") {
+    // t = (0.7, 1, 0.1): x = (0.7, 0.55, 0.1), f = 0.1 + (2 0.385, 4 0.315, 6 0.3) = (0.87, 1.36, 1.9).
+    // A point (x_1, 2 x_1, 6 (1 - x_1)) of the line dominating it needs x_1 <= 0.68 and x_1 >= 0.6833.
+    const Wfg p(3, 3, 2, 2);
+    // y_3 = y_4 = 0.2975: s_linear gives 0.15 each, r_nonsep of the pair (0.15 + 0.15) / 3 = t_M.
+    const auto f = eval(p, {1.4, 4.0, 6.0 * 0.2975, 8.0 * 0.2975});
+    CHECK_THAT(f[0], Catch::Matchers::WithinAbs(0.87, 1e-12));
+    CHECK_THAT(f[1], Catch::Matchers::WithinAbs(1.36, 1e-12));
+    CHECK_THAT(f[2], Catch::Matchers::WithinAbs(1.9, 1e-12));
+    const Matrix line = wfg_reference_front(3, 3, 100'000);
+    int dominating = 0;
+    for (Eigen::Index j = 0; j < line.cols(); ++j)
+        dominating += pride::pareto::weakly_dominates(std::span<const double>(line.col(j).data(), 3), f) ? 1 : 0;
+    CHECK(line.cols() == 100'000);
+    CHECK(dominating == 0);
+}
+
 TEST_CASE("wfg: the catalog maps n to k = 2 (M - 1) and l = n - k", "[wfg]") {
     const Benchmark b("wfg4");
     CHECK(b.objectives() == 3);

@@ -339,7 +339,9 @@ inline std::vector<double> Wfg::optimal_solution(std::span<const double> positio
 /// surface sum (f_m / 2m)^2 = 1 at the normalised Das-Dennis lattice (as DTLZ2's front); WFG3: the
 /// degenerate line (x_1 evenly in [0, 1], x_2..x_{M-1} = 0.5, where A_i = 0 puts them); WFG1 and
 /// WFG2: a grid of s^(M-1) points over [0, 1]^(M-1) (s the largest with s^(M-1) <= points), its
-/// dominated points removed (WFG2's disconnected shape has dominated parts).
+/// dominated points removed (WFG2's disconnected shape has dominated parts). WFG3's line is the
+/// whole front only for M = 2: for M >= 3 points with t_M > 0 off the line are dominated by none of
+/// it (docs/multiobjective.md, "WFG"), so this front is then a part of the true one.
 /// InputError when `points` is below the smallest front (M for the lattice, 2 otherwise, 2^(M-1)
 /// for the grid) or M x points is beyond kMaxLatticeValues.
 inline Matrix wfg_reference_front(int problem, std::size_t objectives, std::size_t points) {
