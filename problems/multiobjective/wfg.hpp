@@ -324,8 +324,8 @@ inline std::vector<double> Wfg::optimal_solution(std::span<const double> positio
         for (std::size_t i = k_; i < n; ++i) z[i] = 0.35;
     }
     for (std::size_t i = 0; i < n; ++i) {
-        // z_i with z_i / (2i) exactly the value wanted: WFG1's b_poly(., 0.02) turns the 1e-17 that a
-        // rounded z_i leaves after s_linear into 0.46.
+        // z_i with z_i / (2i) exactly the value wanted where a double has it, so that s_linear gives
+        // 0 (where none has, b_flat's 1e-15 in WFG1 takes the rounding; the file's note).
         const double want = i < k_ ? position[i] : z[i], box = upper()[i];
         double v = want * box;
         for (int step = 0; step < 8 && v / box != want; ++step) v = std::nextafter(v, v / box < want ? box : 0.0);
