@@ -1,8 +1,8 @@
 #pragma once
-// The multi-objective box problems by name: ZDT1-4, 6 and DTLZ1-7 as one type, so that
+// The multi-objective box problems by name: ZDT1-4, 6, DTLZ1-7 and WFG1-9 as one type, so that
 // each multi-objective algorithm is compiled once for all of them (as continuous::Function is one
 // type for the single-objective catalog). The problem is chosen once, when it is built; a batch
-// dispatches once, a single point once per evaluation (a switch over twelve cases, no virtual call).
+// dispatches once, a single point once per evaluation (a switch over the variant's cases, no virtual call).
 #include <array>
 #include <cstddef>
 #include <span>
@@ -15,6 +15,7 @@
 #include "framework/problem.hpp"
 #include "problems/multiobjective/dtlz.hpp"
 #include "problems/multiobjective/fronts.hpp"
+#include "problems/multiobjective/wfg.hpp"
 #include "problems/multiobjective/zdt.hpp"
 
 namespace pride::multiobjective {
@@ -22,12 +23,12 @@ namespace pride::multiobjective {
 struct CatalogEntry {
     std::string_view name;
     std::string_view summary;
-    std::size_t variables;   // the paper's n (ZDT) or k, the distance variables (DTLZ)
+    std::size_t variables;   // the paper's n (ZDT), k, the distance variables (DTLZ), n at the default M (WFG)
     std::size_t objectives;  // the default M (ZDT: always 2)
 };
 
-/// Every problem Benchmark builds, with its defaults (zdt.hpp's and dtlz.hpp's tables).
-inline constexpr std::array<CatalogEntry, 12> kCatalog{{
+/// Every problem Benchmark builds, with its defaults (zdt.hpp's, dtlz.hpp's and wfg.hpp's tables).
+inline constexpr std::array<CatalogEntry, 21> kCatalog{{
     {"zdt1", "ZDT T1: convex front f2 = 1 - sqrt(f1), n = 30", 30, 2},
     {"zdt2", "ZDT T2: concave front f2 = 1 - f1^2, n = 30", 30, 2},
     {"zdt3", "ZDT T3: five disconnected pieces, n = 30", 30, 2},
@@ -40,6 +41,15 @@ inline constexpr std::array<CatalogEntry, 12> kCatalog{{
     {"dtlz5", "DTLZ5: degenerate front (a curve), k = 10", 10, 3},
     {"dtlz6", "DTLZ6: degenerate front, harder g, k = 10", 10, 3},
     {"dtlz7", "DTLZ7: 2^(M-1) disconnected regions, k = 20", 20, 3},
+    {"wfg1", "WFG1: convex and mixed front, flat and polynomial bias, k = 2(M-1), l = 20", 24, 3},
+    {"wfg2", "WFG2: convex, disconnected front, non-separable, k = 2(M-1), l = 20", 24, 3},
+    {"wfg3", "WFG3: linear, degenerate front, non-separable, k = 2(M-1), l = 20", 24, 3},
+    {"wfg4", "WFG4: concave front, multimodal, k = 2(M-1), l = 20", 24, 3},
+    {"wfg5", "WFG5: concave front, deceptive, k = 2(M-1), l = 20", 24, 3},
+    {"wfg6", "WFG6: concave front, non-separable, k = 2(M-1), l = 20", 24, 3},
+    {"wfg7", "WFG7: concave front, parameter-dependent bias, k = 2(M-1), l = 20", 24, 3},
+    {"wfg8", "WFG8: concave front, parameter-dependent bias, non-separable, k = 2(M-1), l = 20", 24, 3},
+    {"wfg9", "WFG9: concave front, parameter-dependent, multimodal, deceptive, k = 2(M-1), l = 20", 24, 3},
 }};
 
 /// The entry of `name`, or nullptr.
@@ -59,9 +69,11 @@ inline std::string problem_names() {
 /// One of the catalog's problems, chosen by name at construction.
 class Benchmark {
   public:
-    /// `variables` n (0: the paper's default: n for ZDT, M + k - 1 with the default k for DTLZ);
-    /// `objectives` M (0: the default, 2 for ZDT and 3 for DTLZ). InputError naming `where` for an
-    /// unknown name, an M the problem does not have, or an n below M for DTLZ.
+    /// `variables` n (0: the paper's default: n for ZDT, M + k - 1 with the default k for DTLZ,
+    /// k + l with k = 2 (M - 1) and l = 20 for WFG); `objectives` M (0: the default, 2 for ZDT and 3
+    /// for DTLZ and WFG). WFG: n = k + l with k = 2 (M - 1), so l = n - k. InputError naming `where`
+    /// for an unknown name, an M the problem does not have, an n below M for DTLZ, or an n <= k (or
+    /// an odd l for WFG2 and WFG3) for WFG.
     Benchmark(std::string_view name, std::size_t variables = 0, std::size_t objectives = 0,
               std::string_view where = "problem")
         : problem_(make(name, variables, objectives, where)) {}
@@ -100,11 +112,12 @@ class Benchmark {
 
     /// The analytic front sampled with (at most) `points` points (fronts.hpp's reference_front).
     Matrix reference_front(std::size_t points) const {
+        if (const auto* w = std::get_if<Wfg>(&problem_)) return wfg_reference_front(w->problem(), objectives(), points);
         return multiobjective::reference_front(name(), objectives(), points);
     }
 
   private:
-    using Any = std::variant<Zdt1, Zdt2, Zdt3, Zdt4, Zdt6, Dtlz1, Dtlz2, Dtlz3, Dtlz4, Dtlz5, Dtlz6, Dtlz7>;
+    using Any = std::variant<Zdt1, Zdt2, Zdt3, Zdt4, Zdt6, Dtlz1, Dtlz2, Dtlz3, Dtlz4, Dtlz5, Dtlz6, Dtlz7, Wfg>;
 
     static Any make(std::string_view name, std::size_t n, std::size_t m, std::string_view where) {
         const CatalogEntry* e = find_problem(name);
@@ -122,6 +135,15 @@ class Benchmark {
             return Zdt6(v);
         }
         const std::size_t mm = m == 0 ? e->objectives : m;
+        if (name.starts_with("wfg")) {
+            require(mm >= 2 && mm <= kMaxObjectives, w,
+                    "needs 2 <= M <= " + std::to_string(kMaxObjectives) + " objectives, got " + std::to_string(mm));
+            const std::size_t k = 2 * (mm - 1);
+            require(n == 0 || n > k, w,
+                    "needs n > k = 2 (M - 1) = " + std::to_string(k) + " variables (l = n - k >= 1), got " +
+                        std::to_string(n));
+            return Wfg(name[3] - '0', mm, k, n == 0 ? 0 : n - k);
+        }
         require(mm >= 2 && mm <= kMaxObjectives, w,
                 "needs 2 <= M <= " + std::to_string(kMaxObjectives) + " objectives, got " + std::to_string(mm));
         require(n == 0 || n >= mm, w,

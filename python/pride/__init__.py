@@ -242,8 +242,8 @@ def minimize(algo, problem, *, dim=None, bounds=None, evals=None, iters=None, ta
 def front(algo, problem, *, dim=None, objectives=None, bounds=None, evals=None, iters=None, wall_ms=None, seed=1,
           vectorized=False, reference=True, integers=None, categorical=None, **params):
     """One run of a multi-objective ``algo`` (nsga2, nsga3, moead, smsemoa) on ``problem``: a
-    catalog problem's name (zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7; ``dim`` its number of
-    variables n and ``objectives`` DTLZ's M, both defaulting to the papers') or a Python function
+    catalog problem's name (zdt1, zdt2, zdt3, zdt4, zdt6, dtlz1-dtlz7, wfg1-wfg9; ``dim`` its number
+    of variables n and ``objectives`` DTLZ's and WFG's M, both defaulting to the papers') or a Python function
     with ``bounds=(lower, upper)`` and ``objectives=M``, called as ``f(x)`` returning M values or,
     with ``vectorized=True``, as ``f(X)`` with X of shape (n, dim) returning an (n, M) array. The
     result's ``f`` is the non-dominated set found, an (n, M) array (distinct points, in

@@ -108,7 +108,7 @@ campaign::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t 
     };
     if (d.contains("problem") && !d["problem"].is_none() && py::isinstance<py::str>(d["problem"]) &&
         engine::is_multiobjective_problem(utf8_arg(d["problem"], where + ": problem"))) {
-        // zdt1..dtlz7: several objectives, `objectives` M for DTLZ (default: the paper's n and M).
+        // zdt1..dtlz7, wfg1..wfg9: several objectives, `objectives` M for DTLZ and WFG (default: the paper's n and M).
         require(!d.contains("instance"), where, "a multi-objective problem has no instances");
         const auto m = get<std::int64_t>(d, "objectives", where);
         p.objectives = m ? std::to_string(*m) : std::string();
@@ -117,7 +117,7 @@ campaign::CampaignProblem problem(const py::dict& d, PyCampaign& c, std::size_t 
         return p;
     }
     require(!d.contains("objectives") || d.contains("grid") || d.contains("map"), where,
-            "objectives: only for multi-objective problems (zdt1-zdt6, dtlz1-dtlz7) and grids");
+            "objectives: only for multi-objective problems (zdt1-zdt6, dtlz1-dtlz7, wfg1-wfg9) and grids");
     if (d.contains("problem")) {
         const auto dim = get<std::int64_t>(d, "dim", where);
         require(dim.has_value(), where, "problem '" + p.id + "' needs dim");

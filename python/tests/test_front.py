@@ -37,6 +37,16 @@ def test_a_catalog_run_is_the_command_lines():
         assert doc["quality"]["hypervolume"] == r.quality["hypervolume"]
 
 
+def test_wfg_takes_n_as_dim_and_m_as_objectives():
+    # dim = n = k + l with k = 2 (M - 1): here k = 2 and l = 10; the front is f1^2 / 4 + f2^2 / 16 = 1.
+    r = pride.front("nsga2", "wfg4", objectives=2, dim=12, evals=2000, seed=1)
+    assert r.x.shape[1] == 12 and r.f.shape[1] == 2
+    assert r.quality["nadir"].tolist() == [2.0, 4.0]
+    assert 0.5 < r.quality["hypervolume_ratio"] <= 1.0
+    with pytest.raises(ValueError, match=r"^wfg3: needs an even l = n - k \(distance parameters\), got l = 21$"):
+        pride.front("nsga2", "wfg3", dim=25, evals=100)
+
+
 def test_every_algorithm_reaches_its_front():
     for algo, problem, evals, least in (("nsga2", "zdt2", 20000, 0.97), ("smsemoa", "zdt1", 10000, 0.97),
                                         ("moead", "zdt1", 25000, 0.95), ("nsga3", "dtlz2", 30000, 0.92)):
