@@ -179,11 +179,14 @@ class Wfg : public MultiObjectiveBox {
 
     void evaluate(std::span<const double> z, std::span<double> f) const {
         assert(z.size() == dimension() && f.size() == objectives());
-        std::vector<double> y(z.size());  // the transitions in place
+        // Scratch per thread, so that an evaluation allocates nothing once it has grown (a const
+        // problem may be evaluated from several threads).
+        thread_local std::vector<double> y, x;
+        y.resize(z.size());  // the transitions in place
         for (std::size_t i = 0; i < y.size(); ++i) y[i] = z[i] / upper()[i];
         transform(y);
         const std::size_t mm = f.size();
-        std::vector<double> x(mm);  // t_1..t_M, then x_1..x_M
+        x.assign(mm, 0.0);  // t_1..t_M, then x_1..x_M
         reduce(y, x);
         const double tm = x[mm - 1];
         for (std::size_t i = 0; i + 1 < mm; ++i) {
