@@ -40,6 +40,26 @@ inline std::size_t lattice_size(std::size_t m, std::size_t h, std::size_t cap) {
 }
 }  // namespace detail
 
+/// The largest full grid over the first M - 1 coordinates that `points` allows: its side s >= 2
+/// and its s^(M-1) points. InputError naming `who` when not even 2^(M-1) fit.
+struct GridSide {
+    std::size_t side, size;
+};
+inline GridSide grid_side(std::size_t m, std::size_t points, const std::string& who) {
+    require(m - 1 < 25 && (std::size_t{1} << (m - 1)) <= points, who,
+            "a front of M = " + std::to_string(m) + " objectives needs at least 2^(M-1) points, got " +
+                std::to_string(points));
+    const auto power = [&](std::size_t s) {  // s^(M-1), or points + 1 when larger
+        std::size_t p = 1;
+        for (std::size_t i = 0; i + 1 < m; ++i)
+            if ((p *= s) > points) return points + 1;
+        return p;
+    };
+    std::size_t s = 2;
+    while (power(s + 1) <= points) ++s;
+    return {s, power(s)};
+}
+
 /// The size of the simplex lattice of M objectives and H divisions, C(H + M - 1, M - 1), or
 /// kMaxLatticeValues + 1 when larger than kMaxLatticeValues.
 inline std::size_t simplex_lattice_size(std::size_t objectives, std::size_t divisions) {

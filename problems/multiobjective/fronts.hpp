@@ -295,20 +295,9 @@ inline Matrix reference_front(std::string_view name, std::size_t objectives, std
             return out;
         }
         case Family::dtlz7: {
-            // s^(M-1) <= points with s >= 2: 2^(M-1) <= points first (M - 1 < 64 then).
-            require(m - 1 < 25 && (std::size_t{1} << (m - 1)) <= points, w,
-                    "a front of M = " + std::to_string(m) + " objectives needs at least 2^(M-1) points, got " +
-                        std::to_string(points));
-            auto power = [&](std::size_t s) {  // s^(M-1), or points + 1 when larger
-                std::size_t p = 1;
-                for (std::size_t i = 0; i + 1 < m; ++i)
-                    if ((p *= s) > points) return points + 1;
-                return p;
-            };
-            std::size_t s = 2;
-            while (power(s + 1) <= points) ++s;
+            const auto [s, size] = pareto::grid_side(m, points, w);
             const std::vector<double> t = detail::spread_over(dtlz7_front_pieces(), s);
-            Matrix out(cols(m), cols(power(s)));
+            Matrix out(cols(m), cols(size));
             std::vector<std::size_t> digit(m - 1, 0);
             for (Eigen::Index col = 0; col < out.cols(); ++col) {
                 // As Dtlz7::evaluate with g = 1: h = M - sum f_i / 2 (1 + sin(3 pi f_i)), f_M = 2 h.

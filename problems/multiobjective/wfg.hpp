@@ -376,18 +376,8 @@ inline Matrix wfg_reference_front(int problem, std::size_t objectives, std::size
         }
         return out;
     }
-    require(m - 1 < 25 && (std::size_t{1} << (m - 1)) <= points, w,
-            "a front of M = " + std::to_string(m) + " objectives needs at least 2^(M-1) points, got " +
-                std::to_string(points));
-    const auto power = [&](std::size_t s) {  // s^(M-1), or points + 1 when larger
-        std::size_t p = 1;
-        for (std::size_t i = 0; i + 1 < m; ++i)
-            if ((p *= s) > points) return points + 1;
-        return p;
-    };
-    std::size_t s = 2;
-    while (power(s + 1) <= points) ++s;
-    Matrix grid(cols(m), cols(power(s)));
+    const auto [s, size] = pareto::grid_side(m, points, w);
+    Matrix grid(cols(m), cols(size));
     std::vector<std::size_t> digit(m - 1, 0);
     for (Eigen::Index col = 0; col < grid.cols(); ++col) {
         for (std::size_t i = 0; i + 1 < m; ++i) x[i] = static_cast<double>(digit[i]) / static_cast<double>(s - 1);
