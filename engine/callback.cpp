@@ -24,10 +24,11 @@ void check_box(const std::string& name, const std::vector<double>& lower, const 
                 "bounds " + std::to_string(i) + " must be finite with lower <= upper");
 }
 
-/// The declared types: one per coordinate, with the bounds each type needs.
-void check_types(const std::string& name, const std::vector<double>& lower, const std::vector<double>& upper,
-                 const std::vector<VariableType>& types) {
-    if (types.empty()) return;
+/// The declared types, checked (one per coordinate, with the bounds each type needs); empty when
+/// every variable is real, so that such a problem runs as one that declares nothing.
+std::vector<VariableType> checked_types(const std::string& name, const std::vector<double>& lower,
+                                        const std::vector<double>& upper, std::vector<VariableType> types) {
+    if (types.empty()) return types;
     require(
         types.size() == lower.size(), name,
         "types has " + std::to_string(types.size()) + " entries for " + std::to_string(lower.size()) + " coordinates");
@@ -41,6 +42,8 @@ void check_types(const std::string& name, const std::vector<double>& lower, cons
                 lower[i] == 0.0 && upper[i] >= 1.0, name,
                 which + fmt::format(" needs bounds 0 and k - 1 with k >= 2 choices, got [{}, {}]", lower[i], upper[i]));
     }
+    if (std::all_of(types.begin(), types.end(), [](VariableType t) { return t == VariableType::real; })) types.clear();
+    return types;
 }
 
 /// One buffer per thread and nesting depth for the typed copies of the points: no allocation per
@@ -99,8 +102,7 @@ CallbackProblem::CallbackProblem(std::string name, std::vector<double> lower, st
                                  Batch batch, bool thread_safe, Starts starts, std::vector<VariableType> types) {
     check_box(name, lower, upper);
     require(static_cast<bool>(scalar) || static_cast<bool>(batch), name, "no function to evaluate");
-    check_types(name, lower, upper, types);
-    if (std::all_of(types.begin(), types.end(), [](VariableType t) { return t == VariableType::real; })) types.clear();
+    types = checked_types(name, lower, upper, std::move(types));
     shared_ =
         std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), std::move(scalar),
                                               std::move(batch), thread_safe, std::move(starts), std::move(types)});
@@ -150,8 +152,7 @@ void CallbackProblem::starting_points(Rng& rng, Matrix& out) const {
 MoCallbackProblem::MoCallbackProblem(std::string name, std::vector<double> lower, std::vector<double> upper,
                                      std::size_t objectives, Scalar scalar, Batch batch,
                                      std::vector<VariableType> types) {
-    check_types(name, lower, upper, types);
-    if (std::all_of(types.begin(), types.end(), [](VariableType t) { return t == VariableType::real; })) types.clear();
+    types = checked_types(name, lower, upper, std::move(types));
     shared_ = std::make_shared<const Shared>(Shared{std::move(name), std::move(lower), std::move(upper), objectives,
                                                     std::move(scalar), std::move(batch), std::move(types)});
 }
@@ -195,8 +196,7 @@ ConstrainedCallbackProblem::ConstrainedCallbackProblem(std::string name, std::ve
                                                        double tolerance, Function function,
                                                        std::vector<VariableType> types) {
     check_box(name, lower, upper);
-    check_types(name, lower, upper, types);
-    if (std::all_of(types.begin(), types.end(), [](VariableType t) { return t == VariableType::real; })) types.clear();
+    types = checked_types(name, lower, upper, std::move(types));
     require(counts.total() > 0, name, "no constraint declared");
     require(std::isfinite(tolerance) && tolerance >= 0.0, "tolerance",
             "must be a finite number >= 0, got " + std::to_string(tolerance));
